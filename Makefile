@@ -1,0 +1,104 @@
+# facet: set-up, build and test. A new user needs two commands: `make run` and `make test`.
+#
+#   make deps           install the Debian 12 packages that are missing (apt-get; root or sudo)
+#   make build          configure a Release build in build/ (once) and build it
+#   make run            deps + build, then render the built-in shapes scene to shapes.png
+#   make test           deps + build, then run every test with ctest
+#   make test-sanitize  the tests under ASan+UBSan (build-asan/), the threaded raster tests
+#                       under TSan (build-tsan/); also separately: make test-asan, make test-tsan
+#   make install        cmake --install build --prefix $(PREFIX)   (PREFIX=/usr/local by default)
+#   make clean          remove the build trees and shapes.png
+
+# Debian 12 packages the build and the tests need. A new dependency is added here.
+PACKAGES := build-essential cmake pkg-config libglm-dev libpng-dev libtbb-dev libcli11-dev \
+  libgtest-dev libstb-dev
+
+BUILD_DIR ?= build
+ASAN_DIR ?= build-asan
+TSAN_DIR ?= build-tsan
+JOBS ?= $(shell nproc)
+PREFIX ?= /usr/local
+SCENE_IMAGE ?= shapes.png
+# ctest -R regex for the tests that run under ThreadSanitizer: the threaded raster tests.
+TSAN_TEST_REGEX ?= Determinism|Threads
+
+# Any sanitizer report fails the run, with a stack trace.
+ASAN_RUNTIME_OPTIONS := halt_on_error=1:detect_leaks=1:check_initialization_order=1:strict_init_order=1
+UBSAN_RUNTIME_OPTIONS := halt_on_error=1:print_stacktrace=1
+TSAN_RUNTIME_OPTIONS := halt_on_error=1:second_deadlock_stack=1:suppressions=$(CURDIR)/cmake/tsan.supp
+
+SHELL := /bin/bash
+.SHELLFLAGS := -eu -o pipefail -c
+.DEFAULT_GOAL := run
+# Targets run one after another; each build is parallel inside (cmake --build -j).
+.NOTPARALLEL:
+MAKEFLAGS += --no-print-directory
+.PHONY: help deps build run test test-sanitize test-asan test-tsan install clean
+
+help:
+	@sed -n '1,/^$$/p' $(firstword $(MAKEFILE_LIST)) | sed 's/^# \{0,1\}//'
+
+deps:
+	@command -v dpkg-query >/dev/null || { \
+	  echo "deps: not a Debian system; install these (or your system's equivalents): $(PACKAGES)" >&2; \
+	  exit 1; }
+	@missing=""; \
+	for package in $(PACKAGES); do \
+	  status=$$(dpkg-query -W -f='$${Status}' "$$package" 2>/dev/null || true); \
+	  [ "$$status" = "install ok installed" ] || missing="$$missing $$package"; \
+	done; \
+	if [ -z "$$missing" ]; then echo "deps: all Debian packages are installed"; exit 0; fi; \
+	sudo=""; \
+	if [ "$$(id -u)" -ne 0 ]; then \
+	  command -v sudo >/dev/null || { echo "deps: run as root or install sudo; missing:$$missing" >&2; exit 1; }; \
+	  sudo=sudo; \
+	fi; \
+	echo "deps: installing:$$missing"; \
+	$$sudo apt-get update; \
+	$$sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends $$missing
+
+build: deps
+	@if [ ! -f $(BUILD_DIR)/CMakeCache.txt ]; then \
+	  cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release; \
+	fi
+	cmake --build $(BUILD_DIR) -j$(JOBS)
+
+run: build
+	@start=$$(date +%s%N); \
+	$(BUILD_DIR)/facet render --scene shapes -o $(SCENE_IMAGE); \
+	ms=$$(( ($$(date +%s%N) - start) / 1000000 )); \
+	echo "Image: $$(realpath $(SCENE_IMAGE))"; \
+	printf 'Took %d.%03d s wall clock (start-up, render and writing the PNG)\n' $$((ms / 1000)) $$((ms % 1000))
+
+test: build
+	ctest --test-dir $(BUILD_DIR) --output-on-failure -j2 --no-tests=error
+
+test-sanitize: test-asan test-tsan
+
+# The whole suite under AddressSanitizer + UndefinedBehaviorSanitizer. The install test is off
+# (it links an unsanitized example against the library).
+test-asan: export ASAN_OPTIONS := $(ASAN_RUNTIME_OPTIONS)
+test-asan: export UBSAN_OPTIONS := $(UBSAN_RUNTIME_OPTIONS)
+test-asan: deps
+	@if [ ! -f $(ASAN_DIR)/CMakeCache.txt ]; then \
+	  cmake -S . -B $(ASAN_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFACET_SANITIZE=address \
+	    -DFACET_INSTALL_TEST=OFF; \
+	fi
+	cmake --build $(ASAN_DIR) -j$(JOBS)
+	ctest --test-dir $(ASAN_DIR) --output-on-failure -j2 --no-tests=error
+
+# Only the threaded raster tests under ThreadSanitizer, so only the test program is built.
+test-tsan: export TSAN_OPTIONS := $(TSAN_RUNTIME_OPTIONS)
+test-tsan: deps
+	@if [ ! -f $(TSAN_DIR)/CMakeCache.txt ]; then \
+	  cmake -S . -B $(TSAN_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFACET_SANITIZE=thread \
+	    -DFACET_INSTALL_TEST=OFF; \
+	fi
+	cmake --build $(TSAN_DIR) -j$(JOBS) --target facet_tests
+	ctest --test-dir $(TSAN_DIR) -R '$(TSAN_TEST_REGEX)' --output-on-failure -j2 --no-tests=error
+
+install: build
+	cmake --install $(BUILD_DIR) --prefix $(PREFIX)
+
+clean:
+	rm -rf $(BUILD_DIR) $(ASAN_DIR) $(TSAN_DIR) $(SCENE_IMAGE)

@@ -1,0 +1,77 @@
+// Value parsers for the command line (see arguments.hpp).
+#include "arguments.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <vector>
+
+#include "facet/error.hpp"
+#include "facet/framebuffer.hpp"
+#include "shading/color.hpp"
+
+namespace facet::cli {
+namespace {
+
+std::vector<std::string> split(const std::string& text, char separator) {
+  std::vector<std::string> parts;
+  std::size_t start = 0;
+  while (true) {
+    std::size_t end = text.find(separator, start);
+    parts.push_back(text.substr(start, end - start));
+    if (end == std::string::npos) return parts;
+    start = end + 1;
+  }
+}
+
+template <class T>
+bool parse_number(const std::string& text, T& out) {
+  const char* end = text.data() + text.size();
+  auto [ptr, ec] = std::from_chars(text.data(), end, out);
+  return ec == std::errc() && ptr == end;
+}
+
+}  // namespace
+
+ImageSize parse_size(const std::string& flag, const std::string& text) {
+  auto parts = split(text, 'x');
+  ImageSize size;
+  if (parts.size() != 2 || !parse_number(parts[0], size.width) ||
+      !parse_number(parts[1], size.height)) {
+    throw Error(flag + ": expected WIDTHxHEIGHT such as 1920x1080, got '" + text + "'");
+  }
+  if (size.width < 1 || size.height < 1 || size.width > Framebuffer::kMaxSize ||
+      size.height > Framebuffer::kMaxSize) {
+    throw Error(flag + ": " + text + " is outside 1x1 .. 8192x8192");
+  }
+  return size;
+}
+
+glm::vec3 parse_vec3(const std::string& flag, const std::string& text) {
+  auto parts = split(text, ',');
+  glm::vec3 v;
+  if (parts.size() != 3 || !parse_number(parts[0], v.x) || !parse_number(parts[1], v.y) ||
+      !parse_number(parts[2], v.z) || !std::isfinite(v.x) || !std::isfinite(v.y) ||
+      !std::isfinite(v.z)) {
+    throw Error(flag + ": expected three numbers x,y,z such as 0,1.5,-2, got '" + text + "'");
+  }
+  return v;
+}
+
+glm::vec3 parse_color(const std::string& flag, const std::string& text) {
+  glm::vec3 c;
+  try {
+    c = parse_vec3(flag, text);
+  } catch (const Error&) {
+    throw Error(flag + ": expected r,g,b with each in [0, 1] such as 0.1,0.2,0.3, got '" + text +
+                "'");
+  }
+  for (int i = 0; i < 3; ++i) {
+    if (c[i] < 0.0f || c[i] > 1.0f) {
+      throw Error(flag + ": color components must be in [0, 1], got '" + text + "'");
+    }
+    c[i] = shading::srgb_to_linear(c[i]);
+  }
+  return c;
+}
+
+}  // namespace facet::cli

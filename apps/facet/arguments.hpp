@@ -1,0 +1,20 @@
+// Parsing of the command line's value formats ("1920x1080", "x,y,z", "r,g,b"). Each parser
+// throws facet::Error with a message naming the flag and the bad text.
+#pragma once
+
+#include <glm/vec3.hpp>
+#include <string>
+
+namespace facet::cli {
+
+struct ImageSize {
+  int width = 1920;
+  int height = 1080;
+};
+
+ImageSize parse_size(const std::string& flag, const std::string& text);
+glm::vec3 parse_vec3(const std::string& flag, const std::string& text);
+// An sRGB color with components in [0, 1], returned as linear RGB.
+glm::vec3 parse_color(const std::string& flag, const std::string& text);
+
+}  // namespace facet::cli

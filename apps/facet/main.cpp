@@ -1,0 +1,43 @@
+// The facet program: parses the command line and runs a subcommand. Errors become one line
+// on stderr and exit code 2.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+
+#include "facet/error.hpp"
+#include "render_command.hpp"
+
+namespace {
+
+constexpr int kUsageError = 2;
+
+int fail(const std::string& message) {
+  std::fprintf(stderr, "facet: error: %s\n", message.c_str());
+  return kUsageError;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"facet: a CPU software rasterizer. Renders 3D scenes without a GPU."};
+  app.require_subcommand(1);
+  facet::cli::RenderOptions render_options;
+  CLI::App* render = facet::cli::add_render_command(app, render_options);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    return fail(std::string(e.what()) + " (see facet --help)");
+  }
+  try {
+    if (render->parsed()) return facet::cli::run_render(render_options);
+  } catch (const facet::Error& e) {
+    return fail(e.what());
+  } catch (const std::exception& e) {
+    return fail(std::string("unexpected: ") + e.what());
+  }
+  return 0;
+}

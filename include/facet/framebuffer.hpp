@@ -1,0 +1,48 @@
+// Framebuffer: the render target — a color image (RGBA8 sRGB or RGBA32F linear) and a 32-bit
+// float depth image of the same size, from 1x1 up to 8192x8192.
+#pragma once
+
+#include <cstdint>
+#include <glm/vec4.hpp>
+#include <vector>
+
+namespace facet {
+
+enum class ColorFormat {
+  rgba8_srgb,  // 8 bits per channel, sRGB-encoded color, linear alpha
+  rgba32f,     // linear float
+};
+
+class Framebuffer {
+ public:
+  static constexpr int kMaxSize = 8192;
+
+  // Throws facet::Error if a size is outside [1, kMaxSize].
+  Framebuffer(int width, int height, ColorFormat format = ColorFormat::rgba8_srgb);
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  ColorFormat format() const { return format_; }
+
+  // Row-major, top row first, 4 values per pixel. Only the one matching format() is non-empty.
+  std::vector<std::uint8_t>& rgba8() { return rgba8_; }
+  const std::vector<std::uint8_t>& rgba8() const { return rgba8_; }
+  std::vector<float>& rgba32f() { return rgba32f_; }
+  const std::vector<float>& rgba32f() const { return rgba32f_; }
+  std::vector<float>& depth() { return depth_; }
+  const std::vector<float>& depth() const { return depth_; }
+
+  // Linear color of one pixel, whatever the format (sRGB decoded).
+  glm::vec4 pixel(int x, int y) const;
+  float depth_at(int x, int y) const { return depth_[static_cast<size_t>(y) * width_ + x]; }
+
+ private:
+  int width_;
+  int height_;
+  ColorFormat format_;
+  std::vector<std::uint8_t> rgba8_;
+  std::vector<float> rgba32f_;
+  std::vector<float> depth_;
+};
+
+}  // namespace facet

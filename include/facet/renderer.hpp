@@ -1,0 +1,61 @@
+// Renderer: records draws for one frame, then runs the tiled pipeline
+// (geometry -> binning -> raster + shade per tile -> resolve) into a Framebuffer.
+#pragma once
+
+#include <cstdint>
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
+#include <memory>
+
+#include "facet/camera.hpp"
+#include "facet/framebuffer.hpp"
+#include "facet/light.hpp"
+#include "facet/material.hpp"
+#include "facet/mesh.hpp"
+
+namespace facet {
+
+struct RenderSettings {
+  int threads = 0;                                // worker threads; 0 = all cores
+  int tile_size = 64;                             // tile edge in pixels: 16, 32, 64 or 128
+  glm::vec4 clear_color{0.0f, 0.0f, 0.0f, 1.0f};  // linear RGBA
+};
+
+struct FrameStats {
+  std::uint64_t triangles_in = 0;  // primitives submitted (triangles, plus line segments)
+  std::uint64_t culled = 0;        // rejected: outside the frustum, back/front-facing, degenerate
+  std::uint64_t clipped = 0;       // needed clipping against a plane
+  std::uint64_t drawn = 0;         // triangles set up and binned (after clipping)
+  std::uint64_t pixels_shaded = 0;
+  double ms_geometry = 0;  // vertex transform, clip, cull, setup
+  double ms_binning = 0;
+  double ms_raster = 0;  // raster + shade + resolve, per tile
+  double ms_total = 0;
+};
+
+class Renderer {
+ public:
+  // Throws facet::Error for invalid settings (negative threads, unsupported tile size).
+  explicit Renderer(const RenderSettings& settings = {});
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  const RenderSettings& settings() const;
+
+  // Starts recording a frame seen from camera under lighting.
+  void begin_frame(const Camera& camera, const Lighting& lighting = {});
+  // Records a draw. The mesh is referenced, not copied: it must live until finish().
+  void draw(const Mesh& mesh, const Material& material, const glm::mat4& transform = glm::mat4(1));
+  // Runs the pipeline for everything recorded since begin_frame() into target.
+  void finish(Framebuffer& target);
+
+  const FrameStats& stats() const;
+
+ private:
+  friend struct RendererAccess;  // internal: tests record draws with their own shading models
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace facet

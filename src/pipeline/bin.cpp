@@ -1,0 +1,51 @@
+// Stage: binning (see bin.hpp).
+#include "pipeline/bin.hpp"
+
+#include <algorithm>
+
+#include "pipeline/fixed_point.hpp"
+
+namespace facet::pipeline {
+
+bool triangle_may_touch(const SetupTriangle& t, int x0, int y0, int x1, int y1) {
+  std::int64_t left = pixel_centre(x0), right = pixel_centre(x1 - 1);
+  std::int64_t top = pixel_centre(y0), bottom = pixel_centre(y1 - 1);
+  for (int i = 0; i < 3; ++i) {
+    // E is linear, so its maximum over the rectangle is at the corner its gradient points to.
+    std::int64_t x = t.a[i] >= 0 ? right : left;
+    std::int64_t y = t.b[i] >= 0 ? bottom : top;
+    if (t.a[i] * x + t.b[i] * y + t.c[i] + t.bias[i] < 0) return false;
+  }
+  return true;
+}
+
+void bin_primitives(Frame& frame) {
+  for (auto& bin : frame.bins) bin.clear();
+  const int ts = frame.tile_size;
+  for (std::uint32_t entry : frame.sequence) {
+    int min_x, min_y, max_x, max_y;
+    const SetupTriangle* tri = nullptr;
+    if (entry & kLineBit) {
+      const SetupLine& l = frame.lines[entry & ~kLineBit];
+      min_x = l.min_x, min_y = l.min_y, max_x = l.max_x, max_y = l.max_y;
+    } else {
+      tri = &frame.triangles[entry];
+      min_x = tri->min_x, min_y = tri->min_y, max_x = tri->max_x, max_y = tri->max_y;
+    }
+    int tx0 = min_x / ts, tx1 = max_x / ts, ty0 = min_y / ts, ty1 = max_y / ts;
+    bool single_tile = tx0 == tx1 && ty0 == ty1;
+    for (int ty = ty0; ty <= ty1; ++ty) {
+      for (int tx = tx0; tx <= tx1; ++tx) {
+        // Large triangles skip the tiles their bounding box touches but their edges exclude.
+        if (tri && !single_tile &&
+            !triangle_may_touch(*tri, tx * ts, ty * ts, std::min((tx + 1) * ts, frame.width),
+                                std::min((ty + 1) * ts, frame.height))) {
+          continue;
+        }
+        frame.bins[static_cast<std::size_t>(ty) * frame.tiles_x + tx].push_back(entry);
+      }
+    }
+  }
+}
+
+}  // namespace facet::pipeline

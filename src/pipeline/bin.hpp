@@ -1,0 +1,15 @@
+// Stage: binning. Reads the set-up primitives in submission order (Frame::sequence) and
+// appends each to the bin of every tile it may cover; raster.cpp and line.cpp read the bins.
+#pragma once
+
+#include "pipeline/frame.hpp"
+
+namespace facet::pipeline {
+
+void bin_primitives(Frame& frame);
+
+// True if the triangle may cover a pixel centre of the rectangle [x0, x1) x [y0, y1):
+// the edge functions' maxima over the rectangle's centres are all non-negative.
+bool triangle_may_touch(const SetupTriangle& t, int x0, int y0, int x1, int y1);
+
+}  // namespace facet::pipeline

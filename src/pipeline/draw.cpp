@@ -1,0 +1,214 @@
+// The frame, top to bottom: Renderer records draws, then finish() runs the stages in order —
+// vertex transform (vertex.cpp), primitive assembly + clip + setup (primitive.cpp, clip.cpp,
+// setup.cpp), binning (bin.cpp), then per tile in parallel: clear, raster + shade
+// (raster.hpp, line.cpp), resolve (output.cpp).
+#include "pipeline/draw.hpp"
+
+#include <tbb/info.h>
+#include <tbb/task_arena.h>
+
+#include <chrono>
+#include <glm/gtc/matrix_inverse.hpp>
+#include <string>
+
+#include "facet/error.hpp"
+#include "pipeline/bin.hpp"
+#include "pipeline/output.hpp"
+#include "pipeline/parallel.hpp"
+#include "pipeline/primitive.hpp"
+#include "pipeline/shade.hpp"
+#include "pipeline/vertex.hpp"
+
+namespace facet {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// A worker's tile buffers, reused for every tile it renders.
+struct TileBuffers {
+  std::vector<glm::vec4> color;
+  std::vector<float> depth;
+};
+
+}  // namespace
+
+struct Renderer::Impl {
+  RenderSettings settings;
+  int workers;
+  tbb::task_arena arena;
+  std::vector<TileBuffers> tile_buffers;  // one per worker
+  pipeline::Frame frame;
+  std::vector<std::uint64_t> tile_pixels_shaded;
+  Camera camera;
+  Lighting lighting;
+  bool recording = false;
+
+  explicit Impl(const RenderSettings& s)
+      : settings(s),
+        workers(s.threads == 0 ? tbb::info::default_concurrency() : s.threads),
+        arena(workers),
+        tile_buffers(workers) {}
+
+  void record(const Mesh& mesh, const Material& material, const glm::mat4& transform,
+              const pipeline::DrawPipeline& pipe);
+  void prepare_tiles(const Framebuffer& target);
+  void render_tile(int index, int worker, Framebuffer& target);
+  void run(Framebuffer& target);
+};
+
+Renderer::Renderer(const RenderSettings& settings) {
+  if (settings.threads < 0) {
+    throw Error("renderer: threads must be 0 (all cores) or positive, got " +
+                std::to_string(settings.threads));
+  }
+  int ts = settings.tile_size;
+  if (ts != 16 && ts != 32 && ts != 64 && ts != 128) {
+    throw Error("renderer: tile size must be 16, 32, 64 or 128, got " + std::to_string(ts));
+  }
+  impl_ = std::make_unique<Impl>(settings);
+}
+
+Renderer::~Renderer() = default;
+
+const RenderSettings& Renderer::settings() const { return impl_->settings; }
+const FrameStats& Renderer::stats() const { return impl_->frame.stats; }
+
+void Renderer::begin_frame(const Camera& camera, const Lighting& lighting) {
+  camera.validate();
+  impl_->camera = camera;
+  impl_->lighting = lighting;
+  impl_->frame.draws.clear();
+  impl_->frame.view_projection = camera.view_projection();
+  impl_->recording = true;
+}
+
+void Renderer::draw(const Mesh& mesh, const Material& material, const glm::mat4& transform) {
+  impl_->record(mesh, material, transform, pipeline::pipeline_for(material.shading));
+}
+
+void Renderer::Impl::record(const Mesh& mesh, const Material& material, const glm::mat4& transform,
+                            const pipeline::DrawPipeline& pipe) {
+  if (!recording) throw Error("renderer: draw() called before begin_frame()");
+  mesh.validate();
+  pipeline::DrawRecord record;
+  record.mesh = &mesh;
+  record.material = material;
+  record.pipeline = pipe;
+  shading::DrawUniforms& u = record.uniforms;
+  u.model = transform;
+  u.model_view_projection = frame.view_projection * transform;
+  u.normal_matrix = glm::inverseTranspose(glm::mat3(transform));
+  u.base_color = material.base_color;
+  u.wire_color = material.wire_color;
+  u.use_vertex_colors = material.use_vertex_colors;
+  float sun_length = glm::length(lighting.sun.direction);
+  u.to_sun = sun_length > 0.0f ? -lighting.sun.direction / sun_length : glm::vec3(0.0f);
+  u.sun_radiance = lighting.sun.color * lighting.sun.intensity;
+  u.ambient = lighting.ambient;
+  u.near_plane = camera.near_plane;
+  u.far_plane = camera.far_plane;
+  frame.draws.push_back(record);
+}
+
+void Renderer::finish(Framebuffer& target) {
+  if (!impl_->recording) throw Error("renderer: finish() called before begin_frame()");
+  impl_->arena.execute([&] { impl_->run(target); });
+  impl_->recording = false;
+}
+
+void Renderer::Impl::prepare_tiles(const Framebuffer& target) {
+  frame.width = target.width();
+  frame.height = target.height();
+  frame.tile_size = settings.tile_size;
+  frame.tiles_x = (frame.width + frame.tile_size - 1) / frame.tile_size;
+  frame.tiles_y = (frame.height + frame.tile_size - 1) / frame.tile_size;
+  std::size_t tiles = static_cast<std::size_t>(frame.tiles_x) * frame.tiles_y;
+  if (frame.bins.size() < tiles) frame.bins.resize(tiles);
+  tile_pixels_shaded.assign(tiles, 0);
+}
+
+void Renderer::Impl::run(Framebuffer& target) {
+  auto start = Clock::now();
+  frame.stats = {};
+  frame.triangles.clear();
+  frame.lines.clear();
+  frame.planes.clear();
+  frame.sequence.clear();
+  prepare_tiles(target);
+  if (frame.vertices.size() < frame.draws.size()) frame.vertices.resize(frame.draws.size());
+
+  // Geometry: transform, assemble, clip, cull, set up — draws in submission order.
+  for (std::uint32_t d = 0; d < frame.draws.size(); ++d) {
+    frame.stats.triangles_in += frame.draws[d].mesh->primitive_count();
+    pipeline::transform_vertices(frame.draws[d], workers, frame.vertices[d]);
+    pipeline::assemble_draw(frame, d);
+  }
+  frame.stats.drawn = frame.triangles.size();
+  frame.stats.ms_geometry = ms_since(start);
+
+  auto bin_start = Clock::now();
+  pipeline::bin_primitives(frame);
+  frame.stats.ms_binning = ms_since(bin_start);
+
+  // Raster + shade + resolve: one tile per task, so any thread count gives the same image.
+  auto raster_start = Clock::now();
+  int tiles = frame.tiles_x * frame.tiles_y;
+  pipeline::parallel_tasks(tiles, workers,
+                           [&](int tile, int worker) { render_tile(tile, worker, target); });
+  for (std::uint64_t n : tile_pixels_shaded) frame.stats.pixels_shaded += n;
+  frame.stats.ms_raster = ms_since(raster_start);
+  frame.stats.ms_total = ms_since(start);
+}
+
+void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
+  const int ts = frame.tile_size;
+  pipeline::TileContext tile;
+  tile.frame = &frame;
+  tile.x0 = (index % frame.tiles_x) * ts;
+  tile.y0 = (index / frame.tiles_x) * ts;
+  tile.x1 = std::min(tile.x0 + ts, frame.width);
+  tile.y1 = std::min(tile.y0 + ts, frame.height);
+  tile.stride = ts;
+  const auto& bin = frame.bins[index];
+  if (bin.empty()) {  // lazy clear: nothing drawn here, write the clear values directly
+    pipeline::resolve_cleared_tile(tile, settings.clear_color, target);
+    return;
+  }
+  TileBuffers& buffers = tile_buffers[worker];
+  std::size_t pixels = static_cast<std::size_t>(ts) * ts;
+  if (buffers.color.size() < pixels) {
+    buffers.color.resize(pixels);
+    buffers.depth.resize(pixels);
+  }
+  tile.color = buffers.color.data();
+  tile.depth = buffers.depth.data();
+  pipeline::clear_tile(tile, settings.clear_color);
+  for (std::uint32_t entry : bin) {
+    if (entry & pipeline::kLineBit) {
+      pipeline::raster_line(tile, frame.lines[entry & ~pipeline::kLineBit]);
+    } else {
+      const pipeline::SetupTriangle& t = frame.triangles[entry];
+      frame.draws[t.draw].pipeline.raster(tile, t);
+    }
+  }
+  pipeline::resolve_tile(tile, target);
+  tile_pixels_shaded[index] = tile.pixels_shaded;
+}
+
+struct RendererAccess {
+  static Renderer::Impl& impl(Renderer& renderer) { return *renderer.impl_; }
+};
+
+namespace pipeline {
+
+void draw_with_pipeline(Renderer& renderer, const Mesh& mesh, const Material& material,
+                        const glm::mat4& transform, const DrawPipeline& pipe) {
+  RendererAccess::impl(renderer).record(mesh, material, transform, pipe);
+}
+
+}  // namespace pipeline
+}  // namespace facet

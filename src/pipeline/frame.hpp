@@ -1,0 +1,106 @@
+// The data one frame passes between pipeline stages, in the order they run:
+//   draw.cpp records DrawRecords;
+//   vertex.cpp fills each draw's ClipVertex buffer (clip position + varyings);
+//   primitive.cpp assembles primitives, clip.cpp clips them, setup.cpp appends
+//   SetupTriangles/SetupLines (and their varying planes) to the Frame;
+//   bin.cpp appends primitive references to the tile bins;
+//   raster.cpp / line.cpp read them per tile; output.cpp resolves tiles to the framebuffer.
+// Every container is cleared, not freed, between frames, so steady-state frames reuse memory.
+#pragma once
+
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <vector>
+
+#include "facet/material.hpp"
+#include "facet/mesh.hpp"
+#include "facet/renderer.hpp"
+#include "shading/uniforms.hpp"
+
+namespace facet::pipeline {
+
+// Largest kVaryings of any shading model; the clipper's vertices have this many slots.
+inline constexpr int kMaxVaryings = 8;
+
+struct ClipVertex {
+  glm::vec4 clip;  // homogeneous clip-space position
+  float varyings[kMaxVaryings];
+};
+
+struct TileContext;
+struct SetupTriangle;
+using RasterTriangleFn = void (*)(TileContext&, const SetupTriangle&);
+
+// How a draw is shaded, fixed once per draw (see shading_table.cpp).
+struct DrawPipeline {
+  int varyings = 0;
+  int normal_slot = -1;
+  void (*vertex)(const shading::VertexInput&, const shading::DrawUniforms&, float*) = nullptr;
+  void (*face)(glm::vec3, const shading::DrawUniforms&, float* [3]) = nullptr;
+  RasterTriangleFn raster = nullptr;
+  bool fills_triangles = true;  // false for wireframe: edges only
+  bool draws_edges = false;     // wireframe: edges become lines (line.cpp)
+};
+
+struct DrawRecord {
+  const Mesh* mesh = nullptr;
+  Material material;
+  shading::DrawUniforms uniforms;
+  DrawPipeline pipeline;
+};
+
+// Value of an attribute across the screen: value(px, py) = at_ref + dx*(px-ref_x) +
+// dy*(py-ref_y), with (px, py) a pixel centre in pixels and ref the triangle's first vertex.
+struct Plane {
+  float at_ref = 0;
+  float dx = 0;
+  float dy = 0;
+};
+
+// A triangle ready to rasterize. Edge i is E_i(X, Y) = a[i]*X + b[i]*Y + c[i] in fixed-point
+// units (fixed_point.hpp), positive inside; a pixel is covered when E_i + bias[i] >= 0 for all
+// three edges, where bias is 0 for top-left edges and -1 otherwise (the fill rule).
+struct SetupTriangle {
+  std::int64_t a[3], b[3], c[3];
+  std::int64_t bias[3];
+  float edge_scale[3];             // E_i * edge_scale[i] = distance to edge i in pixels
+  int min_x, min_y, max_x, max_y;  // pixel bounding box, inclusive, inside the framebuffer
+  float ref_x, ref_y;              // first vertex, in pixels
+  Plane z;                         // window depth in [0, 1]
+  Plane inv_w;                     // 1 / clip w, for perspective correction
+  std::uint32_t varying_planes;    // index of the first of the draw's varying planes (v / w)
+  std::uint32_t draw;              // index into Frame::draws
+};
+
+// A line segment ready to rasterize (line.cpp says how lines cover pixels).
+struct SetupLine {
+  std::int32_t x0, y0, x1, y1;  // fixed point
+  float z0, z1;                 // window depth at the ends
+  int min_x, min_y, max_x, max_y;
+  glm::vec4 color;  // linear RGBA
+};
+
+struct Frame {
+  int width = 0;
+  int height = 0;
+  int tile_size = 64;
+  int tiles_x = 0;
+  int tiles_y = 0;
+  glm::mat4 view_projection{1.0f};
+  std::vector<DrawRecord> draws;
+  std::vector<std::vector<ClipVertex>> vertices;  // per draw slot, reused
+  std::vector<SetupTriangle> triangles;
+  std::vector<SetupLine> lines;
+  std::vector<Plane> planes;  // varying planes, referenced by SetupTriangle::varying_planes
+  // Every set-up primitive in submission order: a triangle index, or a line index with
+  // kLineBit set. Binning walks this so bins keep submission order.
+  std::vector<std::uint32_t> sequence;
+  // One bin per tile, in submission order. An entry is a triangle index, or a line index
+  // with kLineBit set.
+  std::vector<std::vector<std::uint32_t>> bins;
+  FrameStats stats;
+};
+
+inline constexpr std::uint32_t kLineBit = 0x80000000u;
+
+}  // namespace facet::pipeline

@@ -1,0 +1,158 @@
+// Stage: primitive assembly (see primitive.hpp).
+#include "pipeline/primitive.hpp"
+
+#include <cmath>
+
+#include "pipeline/clip.hpp"
+#include "pipeline/setup.hpp"
+
+namespace facet::pipeline {
+namespace {
+
+constexpr unsigned kFrustumSides = kClipLeft | kClipRight | kClipBottom | kClipTop;
+
+bool finite(const glm::vec4& c) {
+  return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && std::isfinite(c.w);
+}
+
+struct Assembler {
+  Frame& frame;
+  std::uint32_t draw_index;
+  const DrawRecord& draw;
+  const std::vector<ClipVertex>& vertices;
+  ClipBounds frustum{1.0f, 1.0f};
+  ClipBounds guard;
+
+  bool cull(bool front_facing) const {
+    switch (draw.material.cull) {
+      case CullMode::back:
+        return !front_facing;
+      case CullMode::front:
+        return front_facing;
+      default:
+        return false;
+    }
+  }
+
+  // Face normal in world space from object-space positions.
+  glm::vec3 face_normal(std::uint32_t i0, std::uint32_t i1, std::uint32_t i2) const {
+    const auto& p = draw.mesh->positions;
+    glm::vec3 n = glm::cross(p[i1] - p[i0], p[i2] - p[i0]);
+    n = draw.uniforms.normal_matrix * n;
+    float length = glm::length(n);
+    return length > 0.0f ? n / length : glm::vec3(0.0f);
+  }
+
+  void edge(const glm::vec4& a, const glm::vec4& b, const glm::vec4& color) {
+    glm::vec4 p = a, q = b;
+    unsigned planes = outcode(p, guard) | outcode(q, guard);
+    if (planes && !clip_segment(p, q, planes, guard)) return;
+    setup_line(frame, p, q, color);
+  }
+
+  void triangle(std::uint32_t i0, std::uint32_t i1, std::uint32_t i2) {
+    ClipPolygon polygon;
+    polygon.count = 3;
+    polygon.vertices[0] = vertices[i0];
+    polygon.vertices[1] = vertices[i1];
+    polygon.vertices[2] = vertices[i2];
+    ClipVertex* v = polygon.vertices;
+    if (!finite(v[0].clip) || !finite(v[1].clip) || !finite(v[2].clip)) {
+      ++frame.stats.culled;  // NaN/Inf positions: skipped, never rasterized
+      return;
+    }
+    unsigned out0 = outcode(v[0].clip, frustum), out1 = outcode(v[1].clip, frustum),
+             out2 = outcode(v[2].clip, frustum);
+    double orientation = homogeneous_orientation(v[0].clip, v[1].clip, v[2].clip);
+    bool front_facing = orientation > 0.0;
+    // Trivial reject: all three outside one frustum plane. Zero orientation: degenerate.
+    if ((out0 & out1 & out2) || orientation == 0.0 || cull(front_facing)) {
+      ++frame.stats.culled;
+      return;
+    }
+    const DrawPipeline& pipe = draw.pipeline;
+    bool needs_face_normal = pipe.face || (pipe.normal_slot >= 0 && draw.mesh->normals.empty());
+    if (needs_face_normal) {
+      glm::vec3 n = face_normal(i0, i1, i2);
+      if (pipe.normal_slot >= 0 && draw.mesh->normals.empty()) {
+        for (int i = 0; i < 3; ++i) {
+          for (int k = 0; k < 3; ++k) v[i].varyings[pipe.normal_slot + k] = n[k];
+        }
+      }
+      if (pipe.face) {
+        float* varyings[3] = {v[0].varyings, v[1].varyings, v[2].varyings};
+        pipe.face(n, draw.uniforms, varyings);
+      }
+    }
+    if (pipe.draws_edges) {
+      for (int i = 0; i < 3; ++i) edge(v[i].clip, v[(i + 1) % 3].clip, draw.uniforms.wire_color);
+    }
+    if (!pipe.fills_triangles) return;
+
+    unsigned planes =
+        outcode(v[0].clip, guard) | outcode(v[1].clip, guard) | outcode(v[2].clip, guard);
+    if (planes == 0) {
+      const ClipVertex* tri[3] = {&v[0], &v[1], &v[2]};
+      if (!setup_triangle(frame, draw_index, tri, pipe.varyings, front_facing))
+        ++frame.stats.culled;
+      return;
+    }
+    ++frame.stats.clipped;
+    clip_polygon(polygon, planes, guard, pipe.varyings);
+    // Fan re-triangulation of the convex clipped polygon.
+    for (int i = 1; i + 1 < polygon.count; ++i) {
+      const ClipVertex* tri[3] = {&v[0], &v[i], &v[i + 1]};
+      setup_triangle(frame, draw_index, tri, pipe.varyings, front_facing);
+    }
+  }
+
+  void line(std::uint32_t i0, std::uint32_t i1) {
+    const glm::vec4& a = vertices[i0].clip;
+    const glm::vec4& b = vertices[i1].clip;
+    if (!finite(a) || !finite(b) || (outcode(a, frustum) & outcode(b, frustum))) {
+      ++frame.stats.culled;
+      return;
+    }
+    edge(a, b, draw.uniforms.base_color);
+  }
+};
+
+}  // namespace
+
+double homogeneous_orientation(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c) {
+  // det | ax ay aw ; bx by bw ; cx cy cw |, equal to aw*bw*cw times twice the NDC area.
+  double ax = a.x, ay = a.y, aw = a.w, bx = b.x, by = b.y, bw = b.w, cx = c.x, cy = c.y, cw = c.w;
+  return ax * (by * cw - bw * cy) - ay * (bx * cw - bw * cx) + aw * (bx * cy - by * cx);
+}
+
+void assemble_draw(Frame& frame, std::uint32_t draw_index) {
+  const DrawRecord& draw = frame.draws[draw_index];
+  const Mesh& mesh = *draw.mesh;
+  Assembler assembler{frame,        draw_index,
+                      draw,         frame.vertices[draw_index],
+                      {1.0f, 1.0f}, guard_band_bounds(frame.width, frame.height)};
+  auto index = [&](std::size_t i) {
+    return mesh.indices.empty() ? static_cast<std::uint32_t>(i) : mesh.indices[i];
+  };
+  std::size_t n = mesh.element_count();
+  switch (mesh.topology) {
+    case Topology::triangles:
+      for (std::size_t i = 0; i + 2 < n; i += 3)
+        assembler.triangle(index(i), index(i + 1), index(i + 2));
+      break;
+    case Topology::triangle_strip:
+      // Odd triangles swap their first two vertices so every triangle keeps the strip's winding.
+      for (std::size_t i = 0; i + 2 < n; ++i) {
+        if (i % 2 == 0)
+          assembler.triangle(index(i), index(i + 1), index(i + 2));
+        else
+          assembler.triangle(index(i + 1), index(i), index(i + 2));
+      }
+      break;
+    case Topology::lines:
+      for (std::size_t i = 0; i + 1 < n; i += 2) assembler.line(index(i), index(i + 1));
+      break;
+  }
+}
+
+}  // namespace facet::pipeline

@@ -1,0 +1,107 @@
+// Stage: raster + shade. Reads one tile's bin (bin.cpp) and, for each triangle in submission
+// order, finds the covered pixel centres with the fixed-point edge functions set up in
+// setup.cpp, tests depth early, shades with the draw's shading model and writes the tile's
+// own color and depth buffers; output.cpp then resolves the tile to the framebuffer.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <glm/vec4.hpp>
+
+#include "pipeline/fixed_point.hpp"
+#include "pipeline/frame.hpp"
+#include "pipeline/setup.hpp"
+
+namespace facet::pipeline {
+
+// One tile being rendered: owned by one task for the whole frame, so nothing here is shared.
+struct TileContext {
+  const Frame* frame = nullptr;
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // pixel rectangle [x0, x1) x [y0, y1)
+  int stride = 0;                      // pixels per row of the tile buffers
+  glm::vec4* color = nullptr;          // linear RGBA
+  float* depth = nullptr;
+  std::uint64_t pixels_shaded = 0;
+};
+
+// Shading models may opt out of the depth test (debug counters) and blend additively.
+template <class Shading>
+constexpr bool depth_tested() {
+  if constexpr (requires { Shading::kDepthTest; }) return Shading::kDepthTest;
+  return true;
+}
+template <class Shading>
+constexpr bool additive() {
+  if constexpr (requires { Shading::kAdditive; }) return Shading::kAdditive;
+  return false;
+}
+// Models with kEdgeOverlay draw the triangle's edges over their shading: pixels closer to an
+// edge than kOverlayHalfWidth pixels take the draw's wire color. Measured from the edge
+// functions, so the edges sit exactly on the surface: no depth fighting with the fill.
+template <class Shading>
+constexpr bool edge_overlay() {
+  if constexpr (requires { Shading::kEdgeOverlay; }) return Shading::kEdgeOverlay;
+  return false;
+}
+inline constexpr float kOverlayHalfWidth = 0.5f;
+
+// Rasterizes one triangle into the tile; a template over the shading model so that the
+// per-pixel loop is specialised once per model (pipeline/shade.cpp builds the table).
+template <class Shading>
+void raster_triangle(TileContext& tile, const SetupTriangle& t) {
+  const int x0 = std::max(t.min_x, tile.x0), x1 = std::min(t.max_x, tile.x1 - 1);
+  const int y0 = std::max(t.min_y, tile.y0), y1 = std::min(t.max_y, tile.y1 - 1);
+  if (x0 > x1 || y0 > y1) return;
+  const shading::DrawUniforms& uniforms = tile.frame->draws[t.draw].uniforms;
+  const Plane* planes = tile.frame->planes.data() + t.varying_planes;
+  constexpr int kVaryings = Shading::kVaryings;
+  const std::int64_t step[3] = {t.a[0] * kSubpixelScale, t.a[1] * kSubpixelScale,
+                                t.a[2] * kSubpixelScale};
+  std::uint64_t shaded = 0;
+  for (int y = y0; y <= y1; ++y) {
+    const std::int64_t cy = pixel_centre(y);
+    const std::int64_t cx = pixel_centre(x0);
+    // Each row starts from an exact evaluation, then steps by a (integer, so exact too).
+    std::int64_t e0 = t.a[0] * cx + t.b[0] * cy + t.c[0] + t.bias[0];
+    std::int64_t e1 = t.a[1] * cx + t.b[1] * cy + t.c[1] + t.bias[1];
+    std::int64_t e2 = t.a[2] * cx + t.b[2] * cy + t.c[2] + t.bias[2];
+    const float py = static_cast<float>(y) + 0.5f;
+    float* depth_row =
+        tile.depth + static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride - tile.x0;
+    glm::vec4* color_row =
+        tile.color + static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride - tile.x0;
+    for (int x = x0; x <= x1; ++x, e0 += step[0], e1 += step[1], e2 += step[2]) {
+      if ((e0 | e1 | e2) < 0) continue;  // outside some edge (sign bit set)
+      const float px = static_cast<float>(x) + 0.5f;
+      const float z = evaluate(t.z, t.ref_x, t.ref_y, px, py);
+      if constexpr (depth_tested<Shading>()) {
+        if (!(z < depth_row[x])) continue;  // early depth test (less); NaN fails
+      }
+      const float w = 1.0f / evaluate(t.inv_w, t.ref_x, t.ref_y, px, py);
+      float varyings[kVaryings > 0 ? kVaryings : 1];
+      for (int k = 0; k < kVaryings; ++k) {
+        varyings[k] = evaluate(planes[k], t.ref_x, t.ref_y, px, py) * w;
+      }
+      glm::vec4 color = Shading::fragment(varyings, w, uniforms);
+      if constexpr (edge_overlay<Shading>()) {
+        float distance = std::min({static_cast<float>(e0) * t.edge_scale[0],
+                                   static_cast<float>(e1) * t.edge_scale[1],
+                                   static_cast<float>(e2) * t.edge_scale[2]});
+        if (distance < kOverlayHalfWidth) color = uniforms.wire_color;
+      }
+      if constexpr (additive<Shading>()) {
+        color_row[x] += color;
+      } else {
+        color_row[x] = color;
+      }
+      if constexpr (depth_tested<Shading>()) depth_row[x] = z;
+      ++shaded;
+    }
+  }
+  tile.pixels_shaded += shaded;
+}
+
+// Rasterizes one segment into the tile (line.cpp).
+void raster_line(TileContext& tile, const SetupLine& line);
+
+}  // namespace facet::pipeline

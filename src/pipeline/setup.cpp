@@ -1,0 +1,127 @@
+// Stage: setup (see setup.hpp).
+#include "pipeline/setup.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+#include "pipeline/fixed_point.hpp"
+
+namespace facet::pipeline {
+namespace {
+
+// Pixels whose centre may be covered by something spanning [lo, hi] (fixed point):
+// first centre >= lo and last centre <= hi.
+int first_centre_at_or_after(std::int64_t lo) {
+  return static_cast<int>(floor_div(lo - kHalfPixel + kSubpixelScale - 1, kSubpixelScale));
+}
+int last_centre_at_or_before(std::int64_t hi) {
+  return static_cast<int>(floor_div(hi - kHalfPixel, kSubpixelScale));
+}
+
+}  // namespace
+
+ScreenVertex to_screen(const glm::vec4& clip, int width, int height) {
+  float inv_w = 1.0f / clip.w;
+  float ndc_x = clip.x * inv_w;
+  float ndc_y = clip.y * inv_w;
+  float ndc_z = clip.z * inv_w;
+  float sx = (ndc_x * 0.5f + 0.5f) * static_cast<float>(width);
+  float sy = (0.5f - ndc_y * 0.5f) * static_cast<float>(height);
+  return {snap(sx), snap(sy), ndc_z * 0.5f + 0.5f, inv_w};
+}
+
+Plane make_plane(const float x[3], const float y[3], const float value[3]) {
+  // Solve value = at_ref + dx * (x - x0) + dy * (y - y0) through the three points (Cramer).
+  // Double precision: the 2x2 system can be badly conditioned for slivers.
+  double x1 = double{x[1]} - x[0], y1 = double{y[1]} - y[0];
+  double x2 = double{x[2]} - x[0], y2 = double{y[2]} - y[0];
+  double v1 = double{value[1]} - value[0], v2 = double{value[2]} - value[0];
+  double det = x1 * y2 - x2 * y1;
+  Plane p;
+  p.at_ref = value[0];
+  p.dx = static_cast<float>((v1 * y2 - v2 * y1) / det);
+  p.dy = static_cast<float>((v2 * x1 - v1 * x2) / det);
+  return p;
+}
+
+bool setup_triangle(Frame& frame, std::uint32_t draw, const ClipVertex* const v[3], int varyings,
+                    bool front_facing) {
+  ScreenVertex s[3];
+  int order[3] = {0, 1, 2};
+  for (int i = 0; i < 3; ++i) s[i] = to_screen(v[i]->clip, frame.width, frame.height);
+  std::int64_t area = signed_area(s[0], s[1], s[2]);
+  // Degenerate after snapping, or snapping flipped a sliver: no pixel centres to cover.
+  if (area == 0 || (area < 0) != front_facing) return false;
+  if (area < 0) {  // make the winding clockwise on screen (positive area) for the edge tests
+    std::swap(s[1], s[2]);
+    std::swap(order[1], order[2]);
+  }
+
+  SetupTriangle t;
+  std::int64_t min_x = std::min({s[0].x, s[1].x, s[2].x}),
+               max_x = std::max({s[0].x, s[1].x, s[2].x});
+  std::int64_t min_y = std::min({s[0].y, s[1].y, s[2].y}),
+               max_y = std::max({s[0].y, s[1].y, s[2].y});
+  t.min_x = std::max(0, first_centre_at_or_after(min_x));
+  t.min_y = std::max(0, first_centre_at_or_after(min_y));
+  t.max_x = std::min(frame.width - 1, last_centre_at_or_before(max_x));
+  t.max_y = std::min(frame.height - 1, last_centre_at_or_before(max_y));
+  if (t.min_x > t.max_x || t.min_y > t.max_y) return false;
+
+  for (int i = 0; i < 3; ++i) {
+    const ScreenVertex& p = s[i];
+    const ScreenVertex& q = s[(i + 1) % 3];
+    // E(X, Y) = (qx - px)(Y - py) - (qy - py)(X - px): positive inside a clockwise triangle.
+    t.a[i] = std::int64_t{p.y} - q.y;
+    t.b[i] = std::int64_t{q.x} - p.x;
+    t.c[i] = -(t.a[i] * p.x + t.b[i] * p.y);
+    t.bias[i] = is_top_left(q.x - p.x, q.y - p.y) ? 0 : -1;
+    double length = std::sqrt(double(t.a[i]) * t.a[i] + double(t.b[i]) * t.b[i]);
+    t.edge_scale[i] = static_cast<float>(1.0 / (length * kSubpixelScale));
+  }
+
+  float px[3], py[3], z[3], inv_w[3];
+  for (int i = 0; i < 3; ++i) {
+    px[i] = static_cast<float>(s[i].x) / kSubpixelScale;
+    py[i] = static_cast<float>(s[i].y) / kSubpixelScale;
+    z[i] = s[i].z;
+    inv_w[i] = s[i].inv_w;
+  }
+  t.ref_x = px[0];
+  t.ref_y = py[0];
+  t.z = make_plane(px, py, z);
+  t.inv_w = make_plane(px, py, inv_w);
+  t.varying_planes = static_cast<std::uint32_t>(frame.planes.size());
+  for (int k = 0; k < varyings; ++k) {
+    float value[3];
+    for (int i = 0; i < 3; ++i) value[i] = v[order[i]]->varyings[k] * inv_w[i];
+    frame.planes.push_back(make_plane(px, py, value));
+  }
+  t.draw = draw;
+  frame.sequence.push_back(static_cast<std::uint32_t>(frame.triangles.size()));
+  frame.triangles.push_back(t);
+  return true;
+}
+
+bool setup_line(Frame& frame, const glm::vec4& a, const glm::vec4& b, const glm::vec4& color) {
+  ScreenVertex s0 = to_screen(a, frame.width, frame.height);
+  ScreenVertex s1 = to_screen(b, frame.width, frame.height);
+  if (s0.x == s1.x && s0.y == s1.y) return false;
+  SetupLine l;
+  l.x0 = s0.x, l.y0 = s0.y, l.x1 = s1.x, l.y1 = s1.y;
+  l.z0 = s0.z, l.z1 = s1.z;
+  l.min_x = std::max(0, static_cast<int>(floor_div(std::min(l.x0, l.x1), kSubpixelScale)));
+  l.min_y = std::max(0, static_cast<int>(floor_div(std::min(l.y0, l.y1), kSubpixelScale)));
+  l.max_x =
+      std::min(frame.width - 1, static_cast<int>(floor_div(std::max(l.x0, l.x1), kSubpixelScale)));
+  l.max_y =
+      std::min(frame.height - 1, static_cast<int>(floor_div(std::max(l.y0, l.y1), kSubpixelScale)));
+  if (l.min_x > l.max_x || l.min_y > l.max_y) return false;
+  l.color = color;
+  frame.sequence.push_back(static_cast<std::uint32_t>(frame.lines.size()) | kLineBit);
+  frame.lines.push_back(l);
+  return true;
+}
+
+}  // namespace facet::pipeline

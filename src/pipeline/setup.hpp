@@ -1,0 +1,51 @@
+// Stage: setup. Reads clipped triangles/segments (clip space) from primitive.cpp, projects
+// them, snaps to fixed point (fixed_point.hpp), culls by facing, and writes SetupTriangle /
+// SetupLine records plus their plane equations into the Frame for binning (bin.cpp).
+#pragma once
+
+#include <cstdint>
+
+#include "pipeline/frame.hpp"
+
+namespace facet::pipeline {
+
+// A vertex after the perspective divide and viewport transform.
+struct ScreenVertex {
+  std::int32_t x, y;  // fixed point, y down
+  float z;            // window depth in [0, 1]
+  float inv_w;
+};
+
+ScreenVertex to_screen(const glm::vec4& clip, int width, int height);
+
+// Signed doubled area in fixed-point units. With y down, front faces (counter-clockwise in
+// OpenGL's y-up NDC) have negative area.
+inline std::int64_t signed_area(const ScreenVertex& v0, const ScreenVertex& v1,
+                                const ScreenVertex& v2) {
+  return std::int64_t{v1.x - v0.x} * (v2.y - v0.y) - std::int64_t{v1.y - v0.y} * (v2.x - v0.x);
+}
+
+// Top-left rule (D3D11 functional spec 3.4.2.1; GL 4.6 14.6.1 leaves it to the
+// implementation): for a triangle wound clockwise on a y-down screen (positive signed_area),
+// an edge from (x0, y0) to (x1, y1) is a top edge when horizontal and pointing right, a left
+// edge when pointing up. Pixels whose centre lies exactly on an edge belong to the triangle
+// only if that edge is top or left, so a shared edge is covered exactly once.
+inline bool is_top_left(std::int32_t dx, std::int32_t dy) { return (dy == 0 && dx > 0) || dy < 0; }
+
+// Plane through three (x, y, value) points given in pixels, relative to the first point.
+Plane make_plane(const float x[3], const float y[3], const float value[3]);
+
+inline float evaluate(const Plane& p, float ref_x, float ref_y, float px, float py) {
+  return p.at_ref + p.dx * (px - ref_x) + p.dy * (py - ref_y);
+}
+
+// Sets up one triangle (already clipped to the guard band and in front of the eye) of draw
+// `draw`. `front_facing` is its facing as decided before clipping; the snapped triangle is
+// dropped if it is degenerate or its snapped winding disagrees. Returns true if appended.
+bool setup_triangle(Frame& frame, std::uint32_t draw, const ClipVertex* const v[3], int varyings,
+                    bool front_facing);
+
+// Sets up one clipped segment; returns true if it touches the framebuffer.
+bool setup_line(Frame& frame, const glm::vec4& a, const glm::vec4& b, const glm::vec4& color);
+
+}  // namespace facet::pipeline

@@ -1,0 +1,29 @@
+// Stage: shade — choosing the specialised raster routine. Each draw's shading model selects,
+// once per draw, a DrawPipeline: the vertex function, the per-triangle face hook and the
+// raster loop instantiated for that model (raster.hpp). No per-pixel dispatch remains.
+#pragma once
+
+#include "facet/material.hpp"
+#include "pipeline/frame.hpp"
+#include "pipeline/raster.hpp"
+
+namespace facet::pipeline {
+
+// The pipeline for a built-in shading model.
+DrawPipeline pipeline_for(ShadingModel model);
+
+// The pipeline for any shading model type (see shading/models.hpp for what it provides);
+// also how tests plug in their own models.
+template <class Shading>
+DrawPipeline make_pipeline() {
+  static_assert(Shading::kVaryings <= kMaxVaryings, "raise kMaxVaryings");
+  DrawPipeline p;
+  p.varyings = Shading::kVaryings;
+  p.normal_slot = Shading::kNormalSlot;
+  p.vertex = &Shading::vertex;
+  if constexpr (requires { &Shading::face; }) p.face = &Shading::face;
+  p.raster = &raster_triangle<Shading>;
+  return p;
+}
+
+}  // namespace facet::pipeline

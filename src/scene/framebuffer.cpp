@@ -1,0 +1,35 @@
+// Framebuffer storage.
+#include "facet/framebuffer.hpp"
+
+#include <string>
+
+#include "facet/error.hpp"
+#include "shading/color.hpp"
+
+namespace facet {
+
+Framebuffer::Framebuffer(int width, int height, ColorFormat format)
+    : width_(width), height_(height), format_(format) {
+  if (width < 1 || height < 1 || width > kMaxSize || height > kMaxSize) {
+    throw Error("framebuffer: size " + std::to_string(width) + "x" + std::to_string(height) +
+                " is outside 1x1 .. " + std::to_string(kMaxSize) + "x" + std::to_string(kMaxSize));
+  }
+  std::size_t pixels = static_cast<std::size_t>(width) * height;
+  if (format == ColorFormat::rgba8_srgb) {
+    rgba8_.assign(pixels * 4, 0);
+  } else {
+    rgba32f_.assign(pixels * 4, 0.0f);
+  }
+  depth_.assign(pixels, 1.0f);
+}
+
+glm::vec4 Framebuffer::pixel(int x, int y) const {
+  std::size_t i = (static_cast<std::size_t>(y) * width_ + x) * 4;
+  if (format_ == ColorFormat::rgba32f) {
+    return {rgba32f_[i], rgba32f_[i + 1], rgba32f_[i + 2], rgba32f_[i + 3]};
+  }
+  return {shading::decode_srgb8(rgba8_[i]), shading::decode_srgb8(rgba8_[i + 1]),
+          shading::decode_srgb8(rgba8_[i + 2]), rgba8_[i + 3] / 255.0f};
+}
+
+}  // namespace facet

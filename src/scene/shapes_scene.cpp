@@ -1,0 +1,57 @@
+// The built-in `shapes` scene: the five basic solids on a ground rectangle under one sun —
+// the smallest scene that exercises every shading model and the clipper (the ground runs
+// past the view on every side).
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "facet/error.hpp"
+#include "facet/procedural.hpp"
+#include "facet/scene.hpp"
+
+namespace facet {
+namespace {
+
+glm::vec4 rgb(float r, float g, float b) { return {r, g, b, 1.0f}; }
+
+void add(Scene& scene, Mesh mesh, glm::vec4 color, glm::vec3 position, float turn_degrees = 0) {
+  SceneObject object;
+  object.mesh = std::make_shared<const Mesh>(std::move(mesh));
+  object.material.shading = ShadingModel::lambert;
+  object.material.base_color = color;
+  object.transform = glm::rotate(glm::translate(glm::mat4(1.0f), position),
+                                 glm::radians(turn_degrees), glm::vec3(0, 1, 0));
+  scene.objects.push_back(std::move(object));
+}
+
+}  // namespace
+
+Scene make_shapes_scene() {
+  Scene scene;
+  add(scene, plane(40.0f, 40.0f, 8, 8), rgb(0.32f, 0.42f, 0.30f), {0, 0, 0});
+  add(scene, cube(1.4f), rgb(0.80f, 0.18f, 0.14f), {-3.2f, 0.7f, 0.2f}, 25.0f);
+  add(scene, uv_sphere(0.85f, 48, 24), rgb(0.15f, 0.35f, 0.80f), {-1.0f, 0.85f, -0.4f});
+  add(scene, pyramid(1.6f, 1.6f, 1.7f), rgb(0.90f, 0.70f, 0.15f), {1.1f, 0.0f, 0.3f}, 20.0f);
+  add(scene, prism(8, 0.75f, 1.6f), rgb(0.20f, 0.65f, 0.60f), {3.2f, 0.0f, -0.3f}, 10.0f);
+  scene.lighting.sun.direction = {0.45f, -1.0f, -0.55f};
+  scene.lighting.sun.intensity = 1.0f;
+  scene.lighting.ambient = {0.16f, 0.17f, 0.20f};
+  scene.camera = Camera::look_at({0.0f, 3.0f, 7.5f}, {0.0f, 0.6f, 0.0f}, {0, 1, 0}, 60.0f,
+                                 16.0f / 9.0f, 0.1f, 100.0f);
+  return scene;
+}
+
+std::vector<std::string> builtin_scene_names() { return {"shapes"}; }
+
+Scene make_builtin_scene(const std::string& name) {
+  if (name == "shapes") return make_shapes_scene();
+  std::string known;
+  for (const auto& n : builtin_scene_names()) known += (known.empty() ? "" : ", ") + n;
+  throw Error("unknown scene '" + name + "' (built-in scenes: " + known + ")");
+}
+
+void draw_scene(Renderer& renderer, const Scene& scene) {
+  for (const SceneObject& object : scene.objects) {
+    renderer.draw(*object.mesh, object.material, object.transform);
+  }
+}
+
+}  // namespace facet

@@ -1,0 +1,55 @@
+// Determinism: the image is bit-identical whatever the thread count and tile size.
+#include <gtest/gtest.h>
+
+#include "facet/scene.hpp"
+#include "support/render_helpers.hpp"
+
+namespace facet::test {
+namespace {
+
+Framebuffer render_shapes(ShadingModel model, int threads, int tile_size, int width, int height) {
+  Scene scene = make_shapes_scene();
+  for (auto& object : scene.objects) object.material.shading = model;
+  scene.camera.aspect = static_cast<float>(width) / height;
+  RenderSettings settings;
+  settings.threads = threads;
+  settings.tile_size = tile_size;
+  Renderer renderer(settings);
+  Framebuffer fb(width, height);
+  renderer.begin_frame(scene.camera, scene.lighting);
+  draw_scene(renderer, scene);
+  renderer.finish(fb);
+  return fb;
+}
+
+TEST(Determinism, ThreadsAndTileSizesGiveIdenticalImages) {
+  for (ShadingModel model : {ShadingModel::lambert, ShadingModel::flat, ShadingModel::wireframe,
+                             ShadingModel::wire_overlay, ShadingModel::depth}) {
+    Framebuffer expected = render_shapes(model, 1, 64, 333, 201);
+    for (int threads : {1, 2, 3, 8}) {
+      for (int tile : {16, 32, 64}) {
+        Framebuffer fb = render_shapes(model, threads, tile, 333, 201);
+        ASSERT_EQ(fb.rgba8(), expected.rgba8())
+            << to_string(model) << " with " << threads << " threads, tile " << tile;
+        ASSERT_EQ(fb.depth(), expected.depth());
+      }
+    }
+  }
+}
+
+TEST(Determinism, RepeatedFramesFromOneRendererAreIdentical) {
+  Scene scene = make_shapes_scene();
+  RenderSettings settings;
+  settings.threads = 2;
+  Renderer renderer(settings);
+  Framebuffer first(256, 144), second(256, 144);
+  for (Framebuffer* fb : {&first, &second}) {
+    renderer.begin_frame(scene.camera, scene.lighting);
+    draw_scene(renderer, scene);
+    renderer.finish(*fb);
+  }
+  EXPECT_EQ(first.rgba8(), second.rgba8());
+}
+
+}  // namespace
+}  // namespace facet::test

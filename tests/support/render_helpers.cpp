@@ -1,0 +1,101 @@
+// Test helpers (see render_helpers.hpp).
+#include "support/render_helpers.hpp"
+
+#include <gtest/gtest.h>
+#include <png.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+
+#include "pipeline/draw.hpp"
+#include "pipeline/shade.hpp"
+#include "shading/models.hpp"
+
+namespace facet::test {
+
+Mesh soup(const std::vector<glm::vec3>& positions) {
+  Mesh mesh;
+  mesh.positions = positions;
+  return mesh;
+}
+
+std::vector<int> coverage_counts(const std::vector<const Mesh*>& meshes, const Camera& camera,
+                                 int width, int height, CullMode cull, RenderSettings settings) {
+  settings.clear_color = glm::vec4(0.0f);
+  Renderer renderer(settings);
+  Framebuffer fb(width, height, ColorFormat::rgba32f);
+  Material material;
+  material.cull = cull;
+  auto pipe = pipeline::make_pipeline<shading::OverdrawCountShading>();
+  renderer.begin_frame(camera);
+  for (const Mesh* mesh : meshes)
+    pipeline::draw_with_pipeline(renderer, *mesh, material, glm::mat4(1.0f), pipe);
+  renderer.finish(fb);
+  std::vector<int> counts(static_cast<std::size_t>(width) * height);
+  for (std::size_t i = 0; i < counts.size(); ++i) counts[i] = static_cast<int>(fb.rgba32f()[i * 4]);
+  return counts;
+}
+
+Framebuffer render_unlit(const std::vector<const Mesh*>& meshes, const Camera& camera, int width,
+                         int height, CullMode cull, RenderSettings settings) {
+  Renderer renderer(settings);
+  Framebuffer fb(width, height);
+  Material material;
+  material.shading = ShadingModel::unlit;
+  material.cull = cull;
+  renderer.begin_frame(camera);
+  for (const Mesh* mesh : meshes) renderer.draw(*mesh, material);
+  renderer.finish(fb);
+  return fb;
+}
+
+Camera test_camera(int width, int height, float fov, float near_plane, float far_plane) {
+  return Camera::look_at({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, fov,
+                         static_cast<float>(width) / static_cast<float>(height), near_plane,
+                         far_plane);
+}
+
+Rgba8Image read_png(const std::string& path) {
+  png_image image{};
+  image.version = PNG_IMAGE_VERSION;
+  if (!png_image_begin_read_from_file(&image, path.c_str())) {
+    throw std::runtime_error(path + ": cannot read PNG: " + image.message);
+  }
+  image.format = PNG_FORMAT_RGBA;
+  Rgba8Image out;
+  out.width = static_cast<int>(image.width);
+  out.height = static_cast<int>(image.height);
+  out.pixels.resize(PNG_IMAGE_SIZE(image));
+  if (!png_image_finish_read(&image, nullptr, out.pixels.data(), 0, nullptr)) {
+    throw std::runtime_error(path + ": cannot decode PNG: " + image.message);
+  }
+  return out;
+}
+
+CommandResult run_command(const std::string& command) {
+  static int counter = 0;
+  std::string stem = ::testing::TempDir() + "facet_cmd_" + std::to_string(::getpid()) + "_" +
+                     std::to_string(counter++);
+  std::string out_path = stem + ".out", err_path = stem + ".err";
+  int status = std::system((command + " >" + out_path + " 2>" + err_path).c_str());
+  auto slurp = [](const std::string& path) {
+    std::ifstream in(path);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+  };
+  CommandResult result;
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  result.stdout_text = slurp(out_path);
+  result.stderr_text = slurp(err_path);
+  std::remove(out_path.c_str());
+  std::remove(err_path.c_str());
+  return result;
+}
+
+}  // namespace facet::test

@@ -1,0 +1,50 @@
+// Test helpers: render meshes through the real Renderer and read back counts, depth or color.
+#pragma once
+
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <string>
+#include <vector>
+
+#include "facet/camera.hpp"
+#include "facet/framebuffer.hpp"
+#include "facet/material.hpp"
+#include "facet/mesh.hpp"
+#include "facet/renderer.hpp"
+
+namespace facet::test {
+
+// A mesh that is a plain triangle soup (every 3 positions a triangle).
+Mesh soup(const std::vector<glm::vec3>& positions);
+
+// Renders meshes with the overdraw counter (no depth test): how many triangles covered each
+// pixel centre, row-major.
+std::vector<int> coverage_counts(const std::vector<const Mesh*>& meshes, const Camera& camera,
+                                 int width, int height, CullMode cull = CullMode::none,
+                                 RenderSettings settings = {});
+
+// Renders meshes with an unlit material and returns the framebuffer (color and depth).
+Framebuffer render_unlit(const std::vector<const Mesh*>& meshes, const Camera& camera, int width,
+                         int height, CullMode cull = CullMode::none, RenderSettings settings = {});
+
+// A camera at the origin looking down -Z with the aspect of width x height.
+Camera test_camera(int width, int height, float fov = 60.0f, float near_plane = 0.1f,
+                   float far_plane = 100.0f);
+
+// PNG reading for golden images (8-bit RGBA).
+struct Rgba8Image {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> pixels;
+};
+Rgba8Image read_png(const std::string& path);
+
+// Runs a shell command; returns its exit status and what it printed on stderr.
+struct CommandResult {
+  int exit_code = -1;
+  std::string stdout_text;
+  std::string stderr_text;
+};
+CommandResult run_command(const std::string& command);
+
+}  // namespace facet::test

@@ -25,8 +25,11 @@ int main(int argc, char** argv) {
   CLI::App* render = facet::cli::add_render_command(app, render_options);
   try {
     app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
+  } catch (const CLI::CallForHelp&) {
+    // Print in "all" mode so `facet --help` also lists every subcommand's flags and defaults.
+    // help() delegates to the selected subcommand, so `facet render --help` shows just render.
+    std::fputs(app.help("", CLI::AppFormatMode::All).c_str(), stdout);
+    return 0;
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {

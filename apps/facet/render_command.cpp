@@ -12,6 +12,9 @@
 #include "facet/scene.hpp"
 
 namespace facet::cli {
+namespace {
+const std::string kDefaultBackground = "0.53,0.66,0.82";  // sRGB sky blue
+}  // namespace
 
 CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
   CLI::App* cmd = app.add_subcommand("render", "Render a scene to an image file (PNG or PPM)");
@@ -22,7 +25,9 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
   cmd->add_option("--eye", o.eye, "Camera position x,y,z (default: the scene's camera)");
   cmd->add_option("--target", o.target, "Point the camera looks at x,y,z (default: the scene's)");
   cmd->add_option("--up", o.up, "Camera up direction x,y,z (default: 0,1,0)");
-  cmd->add_option("--fov", o.fov, "Vertical field of view in degrees, (0, 180) (default: 60)");
+  cmd->add_option(
+      "--fov", o.fov,
+      "Vertical field of view in degrees, (0, 180) (default: the scene's; 50 for shapes)");
   cmd->add_option("--near", o.near_plane, "Near clip distance, > 0 (default: 0.1)");
   cmd->add_option("--far", o.far_plane, "Far clip distance, > near (default: 100)");
   cmd->add_option("--shading", o.shading,
@@ -30,7 +35,7 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
                   "normals, wireframe, wire_overlay (default: each object's own, lambert)");
   cmd->add_option("--cull", o.cull, "Face culling: back, front or none (default: back)");
   cmd->add_option("--background", o.background,
-                  "Background color r,g,b in [0, 1], sRGB (default: 0.53,0.66,0.82 sky blue)");
+                  "Background color r,g,b in [0, 1], sRGB (default: " + kDefaultBackground + ")");
   cmd->add_option("--threads", o.threads, "Worker threads, 0 = all cores")->capture_default_str();
   cmd->add_option("--tile-size", o.tile_size, "Tile edge in pixels: 16, 32, 64 or 128")
       ->capture_default_str();
@@ -85,8 +90,7 @@ int run_render(const RenderOptions& o) {
   ImageSize size = parse_size("--size", o.size);
   if (o.threads < 0)
     throw Error("--threads: must be 0 (all cores) or more, got " + std::to_string(o.threads));
-  glm::vec3 background{0.25f, 0.40f, 0.64f};  // linear of the sRGB default 0.53,0.66,0.82
-  if (o.background) background = parse_color("--background", *o.background);
+  glm::vec3 background = parse_color("--background", o.background.value_or(kDefaultBackground));
   Scene scene = make_builtin_scene(o.scene);
   apply_material_overrides(o, scene);
   Camera camera = camera_for(o, scene, size);

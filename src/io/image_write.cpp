@@ -68,7 +68,9 @@ void write_png(std::FILE* file, const Framebuffer& fb, const std::vector<std::ui
   png_set_IHDR(png, info, fb.width(), fb.height(), 8, PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
-  png_set_compression_level(png, 6);
+  // zlib level 2: a 1080p frame compresses ~3x faster than the default 6 for a few percent
+  // more bytes; thumbnails and frame sequences care more about time.
+  png_set_compression_level(png, 2);
   png_write_info(png, info);
   png_write_image(png, rows.data());
   png_write_end(png, nullptr);

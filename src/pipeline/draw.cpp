@@ -4,11 +4,13 @@
 // (raster.hpp, line.cpp), resolve (output.cpp).
 #include "pipeline/draw.hpp"
 
+#include <tbb/global_control.h>
 #include <tbb/info.h>
 #include <tbb/task_arena.h>
 
 #include <chrono>
 #include <glm/gtc/matrix_inverse.hpp>
+#include <optional>
 #include <string>
 
 #include "facet/error.hpp"
@@ -39,6 +41,9 @@ struct TileBuffers {
 struct Renderer::Impl {
   RenderSettings settings;
   int workers;
+  // oneTBB caps workers at the core count unless told otherwise; more threads than cores is
+  // a legitimate request (the determinism tests make it), so raise the cap while we live.
+  std::optional<tbb::global_control> allow_workers;
   tbb::task_arena arena;
   std::vector<TileBuffers> tile_buffers;  // one per worker
   pipeline::Frame frame;
@@ -50,6 +55,10 @@ struct Renderer::Impl {
   explicit Impl(const RenderSettings& s)
       : settings(s),
         workers(s.threads == 0 ? tbb::info::default_concurrency() : s.threads),
+        allow_workers(workers > tbb::info::default_concurrency()
+                          ? std::make_optional<tbb::global_control>(
+                                tbb::global_control::max_allowed_parallelism, workers)
+                          : std::nullopt),
         arena(workers),
         tile_buffers(workers) {}
 

@@ -1,6 +1,7 @@
 // The built-in `shapes` scene: the five basic solids on a ground rectangle under one sun —
 // the smallest scene that exercises every shading model and the clipper (the ground runs
 // past the view on every side).
+#include <algorithm>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "facet/error.hpp"
@@ -12,11 +13,18 @@ namespace {
 
 glm::vec4 rgb(float r, float g, float b) { return {r, g, b, 1.0f}; }
 
+// The color lives in the vertices (a gentle light-to-dark ramp from top to bottom), so the
+// vertex_color view shows the scene too; the material's base color stays white.
 void add(Scene& scene, Mesh mesh, glm::vec4 color, glm::vec3 position, float turn_degrees = 0) {
+  float low = mesh.positions.empty() ? 0.0f : mesh.positions[0].y, high = low;
+  for (const auto& p : mesh.positions) low = std::min(low, p.y), high = std::max(high, p.y);
+  for (const auto& p : mesh.positions) {
+    float t = high > low ? (p.y - low) / (high - low) : 1.0f;
+    mesh.colors.push_back(glm::vec4(glm::vec3(color) * (0.7f + 0.3f * t), color.a));
+  }
   SceneObject object;
   object.mesh = std::make_shared<const Mesh>(std::move(mesh));
   object.material.shading = ShadingModel::lambert;
-  object.material.base_color = color;
   object.transform = glm::rotate(glm::translate(glm::mat4(1.0f), position),
                                  glm::radians(turn_degrees), glm::vec3(0, 1, 0));
   scene.objects.push_back(std::move(object));
@@ -34,7 +42,7 @@ Scene make_shapes_scene() {
   scene.lighting.sun.direction = {0.45f, -1.0f, -0.55f};
   scene.lighting.sun.intensity = 1.0f;
   scene.lighting.ambient = {0.16f, 0.17f, 0.20f};
-  scene.camera = Camera::look_at({0.0f, 3.0f, 7.5f}, {0.0f, 0.6f, 0.0f}, {0, 1, 0}, 60.0f,
+  scene.camera = Camera::look_at({0.8f, 2.6f, 6.4f}, {0.0f, 0.5f, 0.0f}, {0, 1, 0}, 50.0f,
                                  16.0f / 9.0f, 0.1f, 100.0f);
   return scene;
 }

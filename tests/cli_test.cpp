@@ -1,0 +1,181 @@
+// The `facet` command line: help text, the success summary, PNG and PPM output, and the error
+// contract for bad values (exit code 2, one "facet: error:" line, no file left behind).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <ostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "support/render_helpers.hpp"
+
+namespace facet::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kUsageError = 2;
+
+// An empty directory for one test, so stray or partial files show up in a listing.
+fs::path fresh_dir(const std::string& name) {
+  fs::path dir = fs::path(::testing::TempDir()) / ("facet_cli_" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::vector<std::string> list_dir(const fs::path& dir) {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    names.push_back(entry.path().filename().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+// Runs `facet <args>` with dir as the working directory, so relative outputs land there.
+CommandResult run_facet(const fs::path& dir, const std::string& args) {
+  return run_command("cd '" + dir.string() + "' && " + FACET_CLI + " " + args);
+}
+
+std::string read_file(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+long count_lines(const std::string& text) { return std::count(text.begin(), text.end(), '\n'); }
+
+// --- help ---------------------------------------------------------------------------------
+
+const char* const kRenderFlags[] = {
+    "--scene", "--output", "--size",    "--eye",  "--target",     "--up",      "--fov",
+    "--near",  "--far",    "--shading", "--cull", "--background", "--threads", "--tile-size"};
+
+void expect_documents_every_flag(const std::string& args) {
+  CommandResult r = run_facet(::testing::TempDir(), args);
+  EXPECT_EQ(r.exit_code, 0) << "facet " << args << "\n" << r.stderr_text;
+  for (const char* flag : kRenderFlags) {
+    EXPECT_NE(r.stdout_text.find(flag), std::string::npos)
+        << "facet " << args << " does not mention " << flag << ":\n"
+        << r.stdout_text;
+  }
+}
+
+TEST(CliHelp, TopLevelHelpDocumentsEveryRenderFlag) { expect_documents_every_flag("--help"); }
+
+TEST(CliHelp, RenderHelpDocumentsEveryFlag) { expect_documents_every_flag("render --help"); }
+
+// --- successful renders -------------------------------------------------------------------
+
+TEST(CliRender, PngSuccessPrintsOneSummaryLineAndWritesTheImage) {
+  fs::path dir = fresh_dir("png");
+  CommandResult r = run_facet(dir, "render --scene shapes --size 160x90 -o out.png");
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  EXPECT_EQ(r.stderr_text, "");
+  EXPECT_EQ(count_lines(r.stdout_text), 1) << r.stdout_text;
+  EXPECT_EQ(r.stdout_text.back(), '\n');
+  for (const char* word : {"160x90", "triangles", "ms"}) {
+    EXPECT_NE(r.stdout_text.find(word), std::string::npos) << word << " in: " << r.stdout_text;
+  }
+  Rgba8Image image = read_png((dir / "out.png").string());
+  EXPECT_EQ(image.width, 160);
+  EXPECT_EQ(image.height, 90);
+  EXPECT_EQ(list_dir(dir), std::vector<std::string>{"out.png"});
+}
+
+TEST(CliRender, PpmOutputIsBinaryP6OfTheRightSize) {
+  fs::path dir = fresh_dir("ppm");
+  CommandResult r = run_facet(dir, "render --size 33x17 -o out.ppm");
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  EXPECT_EQ(count_lines(r.stdout_text), 1) << r.stdout_text;
+
+  // Netpbm P6: "P6", width, height, maxval separated by whitespace, then exactly one whitespace
+  // byte, then width*height RGB triples.
+  std::string data = read_file(dir / "out.ppm");
+  std::istringstream header(data);
+  std::string magic;
+  int width = 0, height = 0, maxval = 0;
+  header >> magic >> width >> height >> maxval;
+  ASSERT_TRUE(header) << "unreadable PPM header";
+  EXPECT_EQ(magic, "P6");
+  EXPECT_EQ(width, 33);
+  EXPECT_EQ(height, 17);
+  EXPECT_EQ(maxval, 255);
+  auto header_end = static_cast<std::size_t>(header.tellg());
+  ASSERT_LT(header_end, data.size());
+  EXPECT_TRUE(std::isspace(static_cast<unsigned char>(data[header_end])));
+  EXPECT_EQ(data.size() - header_end - 1, std::size_t{33 * 17 * 3});
+  EXPECT_EQ(list_dir(dir), std::vector<std::string>{"out.ppm"});
+}
+
+// --- bad values ---------------------------------------------------------------------------
+
+struct BadCase {
+  const char* name;
+  const char* args;  // after `facet render`; outputs are relative to a fresh directory
+};
+
+const BadCase kBadCases[] = {
+    {"size_zero_width", "--size 0x5 -o out.png"},
+    {"size_one_number", "--size 100 -o out.png"},
+    {"size_too_wide", "--size 9000x10 -o out.png"},
+    {"fov_too_wide", "--fov 200 -o out.png"},
+    {"fov_zero", "--fov 0 -o out.png"},
+    {"unknown_scene", "--scene nosuch -o out.png"},
+    {"output_dir_missing", "-o /nonexistent-dir/x.png"},
+    {"output_unknown_type", "-o out.bmp"},
+    {"threads_negative", "--threads -1 -o out.png"},
+    {"tile_size_48", "--tile-size 48 -o out.png"},
+    {"near_zero", "--near 0 -o out.png"},
+    {"far_behind_near", "--far 0.05 -o out.png"},
+    {"eye_two_numbers", "--eye 1,2 -o out.png"},
+    {"eye_nan", "--eye nan,0,0 -o out.png"},
+    {"background_out_of_range", "--background 2,0,0 -o out.png"},
+    {"shading_unknown", "--shading bogus -o out.png"},
+    {"cull_unknown", "--cull sideways -o out.png"},
+    {"unknown_flag", "--no-such-flag -o out.png"},
+    {"missing_output", "--size 64x36"},
+};
+
+void PrintTo(const BadCase& c, std::ostream* os) { *os << "facet render " << c.args; }
+
+class BadValue : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(BadValue, ExitsWithOneErrorLineAndNoFile) {
+  const BadCase& c = GetParam();
+  fs::path dir = fresh_dir(c.name);
+  CommandResult r = run_facet(dir, std::string("render ") + c.args);
+  EXPECT_EQ(r.exit_code, kUsageError) << "facet render " << c.args;
+  EXPECT_EQ(count_lines(r.stderr_text), 1) << r.stderr_text;
+  EXPECT_EQ(r.stderr_text.rfind("facet: error:", 0), 0u) << r.stderr_text;
+  EXPECT_EQ(r.stdout_text, "");
+  EXPECT_EQ(list_dir(dir), std::vector<std::string>{}) << "files left behind";
+  EXPECT_FALSE(fs::exists("/nonexistent-dir"));
+}
+
+INSTANTIATE_TEST_SUITE_P(Cli, BadValue, ::testing::ValuesIn(kBadCases),
+                         [](const ::testing::TestParamInfo<BadCase>& param_info) {
+                           return std::string(param_info.param.name);
+                         });
+
+TEST(CliOutput, FailedRenderKeepsAnExistingFile) {
+  fs::path dir = fresh_dir("keep");
+  const std::string contents = "an earlier image that must survive";
+  std::ofstream(dir / "keep.png", std::ios::binary) << contents;
+  // Failures at different points of the command: material overrides, camera validation, and
+  // renderer creation (which comes after the output path has been checked).
+  for (const char* args : {"--shading bogus", "--fov 200", "--tile-size 48"}) {
+    CommandResult r = run_facet(dir, std::string("render ") + args + " -o keep.png");
+    EXPECT_EQ(r.exit_code, kUsageError) << args;
+    EXPECT_EQ(read_file(dir / "keep.png"), contents) << args << " clobbered the file";
+    EXPECT_EQ(list_dir(dir), std::vector<std::string>{"keep.png"}) << args;
+  }
+}
+
+}  // namespace
+}  // namespace facet::test

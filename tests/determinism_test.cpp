@@ -9,7 +9,7 @@ namespace {
 
 Framebuffer render_shapes(ShadingModel model, int threads, int tile_size, int width, int height) {
   Scene scene = make_shapes_scene();
-  for (auto& object : scene.objects) object.material.shading = model;
+  for (auto& material : scene.materials) material.shading = model;
   scene.camera.aspect = static_cast<float>(width) / height;
   RenderSettings settings;
   settings.threads = threads;

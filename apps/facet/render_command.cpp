@@ -70,14 +70,14 @@ void apply_material_overrides(const RenderOptions& o, Scene& scene) {
                   "' (unlit, vertex_color, flat, lambert, depth, normals, wireframe, "
                   "wire_overlay)");
     }
-    for (auto& object : scene.objects) object.material.shading = model;
+    for (auto& material : scene.materials) material.shading = model;
   }
   if (o.cull) {
     CullMode mode;
     if (!parse_cull_mode(*o.cull, mode)) {
       throw Error("--cull: unknown mode '" + *o.cull + "' (back, front, none)");
     }
-    for (auto& object : scene.objects) object.material.cull = mode;
+    for (auto& material : scene.materials) material.cull = mode;
   }
 }
 

@@ -1,5 +1,6 @@
-// Scene: a list of meshes with materials and transforms, its lighting and a default camera.
-// Built-in scenes (the `shapes` teaching scene) are made here; draw_scene records a whole scene.
+// Scene: meshes, materials, textures, a node hierarchy placing mesh instances, lights and
+// cameras — what a model file holds once imported, and what the built-in worlds are built as.
+// It is plain data: import once, then render it as often as you like.
 #pragma once
 
 #include <glm/mat4x4.hpp>
@@ -12,19 +13,51 @@
 #include "facet/material.hpp"
 #include "facet/mesh.hpp"
 #include "facet/renderer.hpp"
+#include "facet/texture.hpp"
 
 namespace facet {
 
-struct SceneObject {
-  std::shared_ptr<const Mesh> mesh;
-  Material material;
-  glm::mat4 transform{1.0f};
+// One mesh drawn with one material, at a node.
+struct MeshInstance {
+  int mesh = 0;      // index into Scene::meshes
+  int material = 0;  // index into Scene::materials
+};
+
+struct SceneNode {
+  std::string name;
+  glm::mat4 transform{1.0f};  // relative to the parent
+  int parent = -1;            // index into Scene::nodes, or -1 for a root; parents come first
+  std::vector<MeshInstance> instances;
+};
+
+// Axis-aligned bounds; empty when min > max.
+struct Bounds {
+  glm::vec3 min{1e30f};
+  glm::vec3 max{-1e30f};
+  bool empty() const { return min.x > max.x; }
+  glm::vec3 centre() const { return (min + max) * 0.5f; }
+  void add(glm::vec3 p);
 };
 
 struct Scene {
-  std::vector<SceneObject> objects;
+  std::vector<std::shared_ptr<const Mesh>> meshes;
+  std::vector<Material> materials;
+  std::vector<std::shared_ptr<const Texture>> textures;  // every texture the materials use
+  std::vector<SceneNode> nodes;
   Lighting lighting;
-  Camera camera;  // a good default view
+  std::vector<Camera> cameras;  // cameras stored in the file (world space)
+  Camera camera;                // the default view
+  bool has_file_lights = false;  // lighting.lights came from the file
+
+  // Adds a mesh, a material and a root node drawing one with the other; returns the node.
+  int add_object(Mesh mesh, Material material, const glm::mat4& transform = glm::mat4(1.0f),
+                 std::string name = {});
+
+  // World transform of a node (its parents' transforms applied).
+  glm::mat4 world_transform(int node) const;
+  // World-space bounds of every mesh instance.
+  Bounds bounds() const;
+  std::size_t triangle_count() const;  // over all instances
 };
 
 // A rectangle ground, a cube, a sphere, a pyramid and an octagonal prism under one sun.
@@ -34,7 +67,11 @@ Scene make_shapes_scene();
 std::vector<std::string> builtin_scene_names();
 Scene make_builtin_scene(const std::string& name);
 
-// Records every object of the scene (the scene must live until renderer.finish()).
+// Records every mesh instance of the scene (the scene must live until renderer.finish()).
 void draw_scene(Renderer& renderer, const Scene& scene);
+
+// A camera that frames the whole scene from a pleasant three-quarter view: from the front
+// right, above, at a distance where the bounding sphere fills the view.
+Camera frame_scene(const Scene& scene, float aspect, float fov_y_degrees = 45.0f);
 
 }  // namespace facet

@@ -20,6 +20,7 @@
 #include "pipeline/primitive.hpp"
 #include "pipeline/shade.hpp"
 #include "pipeline/vertex.hpp"
+#include "shading/lighting.hpp"
 
 namespace facet {
 namespace {
@@ -114,10 +115,8 @@ void Renderer::Impl::record(const Mesh& mesh, const Material& material, const gl
   u.base_color = material.base_color;
   u.wire_color = material.wire_color;
   u.use_vertex_colors = material.use_vertex_colors;
-  float sun_length = glm::length(lighting.sun.direction);
-  u.to_sun = sun_length > 0.0f ? -lighting.sun.direction / sun_length : glm::vec3(0.0f);
-  u.sun_radiance = lighting.sun.color * lighting.sun.intensity;
   u.ambient = lighting.ambient;
+  u.eye = camera.eye;
   u.near_plane = camera.near_plane;
   u.far_plane = camera.far_plane;
   frame.draws.push_back(record);
@@ -148,6 +147,15 @@ void Renderer::Impl::run(Framebuffer& target) {
   frame.planes.clear();
   frame.sequence.clear();
   prepare_tiles(target);
+  // Per-draw pointers into frame-wide data, set now that the draw list no longer grows.
+  frame.lights.clear();
+  for (const Light& light : lighting.lights) frame.lights.push_back(shading::prepare_light(light));
+  for (pipeline::DrawRecord& draw : frame.draws) {
+    draw.uniforms.lights = frame.lights.data();
+    draw.uniforms.light_count = static_cast<int>(frame.lights.size());
+    draw.uniforms.material = &draw.material;
+    draw.uniforms.lighting = &lighting;
+  }
   if (frame.vertices.size() < frame.draws.size()) frame.vertices.resize(frame.draws.size());
 
   // Geometry: transform, assemble, clip, cull, set up — draws in submission order.

@@ -88,6 +88,7 @@ struct Frame {
   int tiles_y = 0;
   glm::mat4 view_projection{1.0f};
   std::vector<DrawRecord> draws;
+  std::vector<shading::LightData> lights;
   std::vector<std::vector<ClipVertex>> vertices;  // per draw slot, reused
   std::vector<SetupTriangle> triangles;
   std::vector<SetupLine> lines;

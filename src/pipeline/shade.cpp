@@ -19,6 +19,11 @@ DrawPipeline pipeline_for(ShadingModel model) {
       p = make_pipeline<FlatShading>();
       break;
     case ShadingModel::lambert:
+    case ShadingModel::gouraud:  // placeholders until the lit models land
+    case ShadingModel::phong:
+    case ShadingModel::blinn_phong:
+    case ShadingModel::pbr:
+    case ShadingModel::texcoords:
       p = make_pipeline<LambertShading>();
       break;
     case ShadingModel::depth:

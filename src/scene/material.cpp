@@ -7,13 +7,18 @@
 namespace facet {
 namespace {
 
-constexpr std::array<std::pair<ShadingModel, std::string_view>, 8> kShadingNames{{
+constexpr std::array<std::pair<ShadingModel, std::string_view>, 13> kShadingNames{{
     {ShadingModel::unlit, "unlit"},
     {ShadingModel::vertex_color, "vertex_color"},
     {ShadingModel::flat, "flat"},
     {ShadingModel::lambert, "lambert"},
+    {ShadingModel::gouraud, "gouraud"},
+    {ShadingModel::phong, "phong"},
+    {ShadingModel::blinn_phong, "blinn_phong"},
+    {ShadingModel::pbr, "pbr"},
     {ShadingModel::depth, "depth"},
     {ShadingModel::normals, "normals"},
+    {ShadingModel::texcoords, "texcoords"},
     {ShadingModel::wireframe, "wireframe"},
     {ShadingModel::wire_overlay, "wire_overlay"},
 }};
@@ -44,7 +49,22 @@ bool parse(const std::array<std::pair<Enum, std::string_view>, N>& names, std::s
   return false;
 }
 
+constexpr std::array<std::pair<AlphaMode, std::string_view>, 4> kAlphaNames{{
+    {AlphaMode::opaque, "opaque"},
+    {AlphaMode::mask, "mask"},
+    {AlphaMode::blend, "blend"},
+    {AlphaMode::additive, "additive"},
+}};
+
 }  // namespace
+
+std::vector<std::string_view> shading_model_names() {
+  std::vector<std::string_view> names;
+  for (const auto& entry : kShadingNames) names.push_back(entry.second);
+  return names;
+}
+
+std::string_view to_string(AlphaMode mode) { return name_of(kAlphaNames, mode); }
 
 std::string_view to_string(ShadingModel model) { return name_of(kShadingNames, model); }
 std::string_view to_string(CullMode mode) { return name_of(kCullNames, mode); }

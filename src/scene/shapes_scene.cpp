@@ -22,12 +22,11 @@ void add(Scene& scene, Mesh mesh, glm::vec4 color, glm::vec3 position, float tur
     float t = high > low ? (p.y - low) / (high - low) : 1.0f;
     mesh.colors.push_back(glm::vec4(glm::vec3(color) * (0.7f + 0.3f * t), color.a));
   }
-  SceneObject object;
-  object.mesh = std::make_shared<const Mesh>(std::move(mesh));
-  object.material.shading = ShadingModel::lambert;
-  object.transform = glm::rotate(glm::translate(glm::mat4(1.0f), position),
-                                 glm::radians(turn_degrees), glm::vec3(0, 1, 0));
-  scene.objects.push_back(std::move(object));
+  Material material;
+  material.shading = ShadingModel::lambert;
+  glm::mat4 transform = glm::rotate(glm::translate(glm::mat4(1.0f), position),
+                                    glm::radians(turn_degrees), glm::vec3(0, 1, 0));
+  scene.add_object(std::move(mesh), material, transform);
 }
 
 }  // namespace
@@ -39,27 +38,11 @@ Scene make_shapes_scene() {
   add(scene, uv_sphere(0.85f, 48, 24), rgb(0.15f, 0.35f, 0.80f), {-1.0f, 0.85f, -0.4f});
   add(scene, pyramid(1.6f, 1.6f, 1.7f), rgb(0.90f, 0.70f, 0.15f), {1.1f, 0.0f, 0.3f}, 20.0f);
   add(scene, prism(8, 0.75f, 1.6f), rgb(0.20f, 0.65f, 0.60f), {3.2f, 0.0f, -0.3f}, 10.0f);
-  scene.lighting.sun.direction = {0.45f, -1.0f, -0.55f};
-  scene.lighting.sun.intensity = 1.0f;
+  scene.lighting.lights = {Light::directional({0.45f, -1.0f, -0.55f})};
   scene.lighting.ambient = {0.16f, 0.17f, 0.20f};
   scene.camera = Camera::look_at({0.8f, 2.6f, 6.4f}, {0.0f, 0.5f, 0.0f}, {0, 1, 0}, 50.0f,
                                  16.0f / 9.0f, 0.1f, 100.0f);
   return scene;
-}
-
-std::vector<std::string> builtin_scene_names() { return {"shapes"}; }
-
-Scene make_builtin_scene(const std::string& name) {
-  if (name == "shapes") return make_shapes_scene();
-  std::string known;
-  for (const auto& n : builtin_scene_names()) known += (known.empty() ? "" : ", ") + n;
-  throw Error("unknown scene '" + name + "' (built-in scenes: " + known + ")");
-}
-
-void draw_scene(Renderer& renderer, const Scene& scene) {
-  for (const SceneObject& object : scene.objects) {
-    renderer.draw(*object.mesh, object.material, object.transform);
-  }
 }
 
 }  // namespace facet

@@ -24,10 +24,15 @@ inline glm::vec4 material_color(const VertexInput& in, const DrawUniforms& u) {
   return u.use_vertex_colors ? u.base_color * in.color : u.base_color;
 }
 
-// Diffuse + ambient from the one directional light (the classic teaching setup).
+// Diffuse + ambient from the directional lights (the classic teaching setup).
+// Point and spot lights need a position; models without one light as if from infinitely far.
 inline glm::vec3 lambert_light(glm::vec3 albedo, glm::vec3 unit_normal, const DrawUniforms& u) {
-  float n_dot_l = std::max(0.0f, glm::dot(unit_normal, u.to_sun));
-  return albedo * (u.ambient + u.sun_radiance * n_dot_l);
+  glm::vec3 light = u.ambient;
+  for (int i = 0; i < u.light_count; ++i) {
+    float n_dot_l = std::max(0.0f, glm::dot(unit_normal, u.lights[i].to_light));
+    light += u.lights[i].radiance * n_dot_l;
+  }
+  return albedo * light;
 }
 
 inline void store(float* out, glm::vec4 v) {

@@ -4,7 +4,22 @@
 
 #include <glm/glm.hpp>
 
+#include "facet/light.hpp"
+#include "facet/material.hpp"
+
 namespace facet::shading {
+
+// A light prepared for shading: directions normalized, cone angles as cosines.
+struct LightData {
+  LightType type = LightType::directional;
+  glm::vec3 position{0.0f};
+  glm::vec3 to_light{0.0f, 1.0f, 0.0f};  // directional: unit vector toward the light
+  glm::vec3 spot_direction{0.0f, -1.0f, 0.0f};  // spot: unit, where the light travels
+  glm::vec3 radiance{1.0f};                     // color * intensity
+  float inv_range_squared = 0.0f;               // 0: unlimited
+  float cos_inner = 1.0f;
+  float cos_outer = 0.0f;
+};
 
 struct DrawUniforms {
   glm::mat4 model{1.0f};
@@ -13,9 +28,12 @@ struct DrawUniforms {
   glm::vec4 base_color{1.0f};
   glm::vec4 wire_color{0.0f, 0.0f, 0.0f, 1.0f};
   bool use_vertex_colors = true;
-  glm::vec3 to_sun{0.0f, 1.0f, 0.0f};  // unit vector toward the light
-  glm::vec3 sun_radiance{1.0f};        // color * intensity
+  glm::vec3 eye{0.0f};  // camera position, world space
   glm::vec3 ambient{0.1f};
+  const LightData* lights = nullptr;  // the frame's lights (set when the frame runs)
+  int light_count = 0;
+  const Material* material = nullptr;   // the draw's own copy
+  const Lighting* lighting = nullptr;   // fog and environment
   float near_plane = 0.1f;
   float far_plane = 100.0f;
 };
@@ -26,6 +44,7 @@ struct VertexInput {
   glm::vec3 normal;    // world space, unit; zero when the mesh has none
   glm::vec4 color;     // linear RGBA (white when the mesh has none)
   glm::vec2 texcoord;
+  glm::vec4 tangent;  // world space xyz, w handedness; zero when the mesh has none
 };
 
 }  // namespace facet::shading

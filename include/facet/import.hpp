@@ -1,0 +1,37 @@
+// Model import: reads a 3D file into a facet Scene. Formats through assimp (OBJ+MTL, glTF 2.0
+// .gltf/.glb, PLY, STL, 3DS, FBX, COLLADA, OFF, …) and facet's own reader for the classic
+// course format `.d`. Models keep their own coordinates: nothing is rescaled or re-centred.
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include "facet/scene.hpp"
+
+namespace facet {
+
+struct ImportOptions {
+  // Meshes without normals get smooth vertex normals, split where faces meet at more than
+  // this angle (area-weighted).
+  float crease_angle_degrees = 80.0f;
+  // Called once per problem that does not stop the import (a missing texture, replaced by a
+  // visible checker). Default: print one line to stderr.
+  std::function<void(const std::string&)> warn;
+};
+
+// Throws facet::Error (file, and line or index where known) if the file cannot be read.
+Scene import_scene(const std::string& path, const ImportOptions& options = {});
+
+// The `.d` format: optional header `data <vertices> <polygons>`, then one `x y z` line per
+// vertex, then one `<n> i1 ... in` line per polygon (1-based indices, convex, fan-triangulated);
+// `#` comments and blank lines allowed.
+Mesh read_d_file(const std::string& path);
+Mesh parse_d(const std::string& text, const std::string& name);  // name used in errors
+
+// Smooth vertex normals for a triangle mesh (area-weighted, split at crease_angle_degrees):
+// vertices are duplicated where the split needs it.
+void compute_smooth_normals(Mesh& mesh, float crease_angle_degrees = 80.0f);
+// Tangents (xyz, w = handedness) from positions, normals and texture coordinates.
+void compute_tangents(Mesh& mesh);
+
+}  // namespace facet

@@ -1,0 +1,87 @@
+// Texture: an image with its mipmap chain, and how it is sampled (filter, wrap modes).
+// Texels are stored as 8-bit RGBA (sRGB-encoded or linear) or 32-bit float RGBA (HDR);
+// sampling always returns linear RGBA.
+#pragma once
+
+#include <cstdint>
+#include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace facet {
+
+enum class Filter {
+  nearest,    // the nearest texel of the base level
+  bilinear,   // 2x2 texels of the base level
+  trilinear,  // bilinear in the two nearest mip levels, blended by the level of detail
+};
+
+enum class Wrap { repeat, clamp_to_edge, mirrored_repeat };
+
+struct Sampler {
+  Filter filter = Filter::trilinear;
+  Wrap wrap_u = Wrap::repeat;
+  Wrap wrap_v = Wrap::repeat;
+};
+
+class Texture {
+ public:
+  enum class Format { rgba8, rgba32f };
+
+  // One level of the mipmap chain; level 0 is the full image. Rows top first.
+  struct Level {
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint8_t> rgba8;  // Format::rgba8
+    std::vector<float> rgba32f;       // Format::rgba32f
+  };
+
+  // Builds the texture and its full mipmap chain (box filter in linear space, down to 1x1).
+  // srgb: the color channels of rgba8 data are sRGB-encoded (decoded when sampled); alpha is
+  // always linear. Throws facet::Error on a bad size or data length.
+  static std::shared_ptr<Texture> from_rgba8(int width, int height, std::vector<std::uint8_t> rgba,
+                                             bool srgb, std::string name = {});
+  static std::shared_ptr<Texture> from_rgba32f(int width, int height, std::vector<float> rgba,
+                                               std::string name = {});
+
+  int width() const { return levels_[0].width; }
+  int height() const { return levels_[0].height; }
+  int level_count() const { return static_cast<int>(levels_.size()); }
+  const Level& level(int i) const { return levels_[i]; }
+  Format format() const { return format_; }
+  bool srgb() const { return srgb_; }
+  const std::string& name() const { return name_; }  // file name or "embedded:N"
+
+  // Linear RGBA of one texel (no wrapping: x, y must be inside the level).
+  glm::vec4 texel(int level, int x, int y) const;
+
+  // Samples at uv (u right, v up: v = 0 is the bottom row of the image, as in OpenGL) with
+  // the given level of detail (0 = base level; only trilinear uses it).
+  glm::vec4 sample(const Sampler& sampler, glm::vec2 uv, float lod = 0.0f) const;
+
+  // Level of detail from the screen-space derivatives of uv (per pixel): log2 of the larger
+  // footprint edge in texels of the base level (OpenGL 4.6 8.14.1 without anisotropy).
+  float lod(glm::vec2 duv_dx, glm::vec2 duv_dy) const;
+
+ private:
+  Texture() = default;
+  std::vector<Level> levels_;
+  Format format_ = Format::rgba8;
+  bool srgb_ = false;
+  std::string name_;
+};
+
+// Reads an image file: PNG, JPEG, TGA, BMP, HDR (stb_image) or PPM/PGM P2/P3/P5/P6 (facet's own
+// reader). srgb applies to 8-bit color data (true for base color and emissive maps, false for
+// normal, roughness and other data maps). Throws facet::Error naming the file and the problem.
+std::shared_ptr<Texture> load_texture(const std::string& path, bool srgb);
+// The same from an encoded image in memory (embedded glTF images); name is used in errors.
+std::shared_ptr<Texture> load_texture_from_memory(const std::uint8_t* data, std::size_t size,
+                                                  bool srgb, const std::string& name);
+
+// A magenta/black checker drawn where a texture is missing, so the gap is visible.
+std::shared_ptr<Texture> missing_texture();
+
+}  // namespace facet

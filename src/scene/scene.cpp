@@ -1,0 +1,101 @@
+// Scene: node transforms, bounds, drawing, automatic framing, the built-in scene registry.
+#include "facet/scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/glm.hpp>
+
+#include "facet/error.hpp"
+
+namespace facet {
+
+void Bounds::add(glm::vec3 p) {
+  min = glm::min(min, p);
+  max = glm::max(max, p);
+}
+
+int Scene::add_object(Mesh mesh, Material material, const glm::mat4& transform, std::string name) {
+  meshes.push_back(std::make_shared<const Mesh>(std::move(mesh)));
+  materials.push_back(std::move(material));
+  SceneNode node;
+  node.name = std::move(name);
+  node.transform = transform;
+  node.instances.push_back(
+      {static_cast<int>(meshes.size()) - 1, static_cast<int>(materials.size()) - 1});
+  nodes.push_back(std::move(node));
+  return static_cast<int>(nodes.size()) - 1;
+}
+
+glm::mat4 Scene::world_transform(int node) const {
+  glm::mat4 m = nodes[node].transform;
+  for (int p = nodes[node].parent; p >= 0; p = nodes[p].parent) m = nodes[p].transform * m;
+  return m;
+}
+
+Bounds Scene::bounds() const {
+  Bounds b;
+  for (std::size_t n = 0; n < nodes.size(); ++n) {
+    if (nodes[n].instances.empty()) continue;
+    glm::mat4 m = world_transform(static_cast<int>(n));
+    for (const MeshInstance& instance : nodes[n].instances) {
+      for (const glm::vec3& p : meshes[instance.mesh]->positions) {
+        glm::vec3 w = glm::vec3(m * glm::vec4(p, 1.0f));
+        if (std::isfinite(w.x) && std::isfinite(w.y) && std::isfinite(w.z)) b.add(w);
+      }
+    }
+  }
+  return b;
+}
+
+std::size_t Scene::triangle_count() const {
+  std::size_t count = 0;
+  for (const SceneNode& node : nodes) {
+    for (const MeshInstance& instance : node.instances) {
+      const Mesh& mesh = *meshes[instance.mesh];
+      if (mesh.topology != Topology::lines) count += mesh.primitive_count();
+    }
+  }
+  return count;
+}
+
+void draw_scene(Renderer& renderer, const Scene& scene) {
+  for (std::size_t n = 0; n < scene.nodes.size(); ++n) {
+    const SceneNode& node = scene.nodes[n];
+    if (node.instances.empty()) continue;
+    glm::mat4 m = scene.world_transform(static_cast<int>(n));
+    for (const MeshInstance& instance : node.instances) {
+      renderer.draw(*scene.meshes[instance.mesh], scene.materials[instance.material], m);
+    }
+  }
+}
+
+Camera frame_scene(const Scene& scene, float aspect, float fov_y_degrees) {
+  Bounds b = scene.bounds();
+  glm::vec3 centre = b.empty() ? glm::vec3(0.0f) : b.centre();
+  float radius = b.empty() ? 1.0f : std::max(glm::length(b.max - b.min) * 0.5f, 1e-6f);
+  // Distance at which the bounding sphere fits the narrower field of view, with a margin.
+  float half_fov = glm::radians(fov_y_degrees) * 0.5f;
+  float half_fov_x = std::atan(std::tan(half_fov) * aspect);
+  float distance = radius / std::sin(std::min(half_fov, half_fov_x)) * 1.05f;
+  glm::vec3 direction = glm::normalize(glm::vec3(0.55f, 0.45f, 0.85f));  // front right, above
+  Camera camera;
+  camera.eye = centre + direction * distance;
+  camera.target = centre;
+  camera.up = {0.0f, 1.0f, 0.0f};
+  camera.fov_y_degrees = fov_y_degrees;
+  camera.aspect = aspect;
+  camera.near_plane = std::max(distance - radius * 1.5f, distance * 0.001f);
+  camera.far_plane = distance + radius * 2.0f;
+  return camera;
+}
+
+std::vector<std::string> builtin_scene_names() { return {"shapes"}; }
+
+Scene make_builtin_scene(const std::string& name) {
+  if (name == "shapes") return make_shapes_scene();
+  std::string known;
+  for (const auto& n : builtin_scene_names()) known += (known.empty() ? "" : ", ") + n;
+  throw Error("unknown scene '" + name + "' (built-in scenes: " + known + ")");
+}
+
+}  // namespace facet

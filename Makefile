@@ -6,16 +6,20 @@
 #   make test           deps + build, then run every test with ctest
 #   make test-sanitize  the tests under ASan+UBSan (build-asan/), the threaded raster tests
 #                       under TSan (build-tsan/); also separately: make test-asan, make test-tsan
+#   make test-fuzz      the libFuzzer targets (tests/fuzz/*_fuzz.cpp, clang, build-fuzz/), each for
+#                       FUZZ_SECONDS (default 60) from a scratch copy of tests/fuzz/corpus/NAME/
 #   make install        cmake --install build --prefix $(PREFIX)   (PREFIX=/usr/local by default)
 #   make clean          remove the build trees and shapes.png
 
 # Debian 12 packages the build and the tests need. A new dependency is added here.
 PACKAGES := build-essential cmake pkg-config libglm-dev libpng-dev libtbb-dev libcli11-dev \
-  libgtest-dev libstb-dev
+  libgtest-dev libstb-dev libassimp-dev assimp-testmodels glmark2-data clang libclang-rt-dev
 
 BUILD_DIR ?= build
 ASAN_DIR ?= build-asan
 TSAN_DIR ?= build-tsan
+FUZZ_DIR ?= build-fuzz
+FUZZ_SECONDS ?= 60
 JOBS ?= $(shell nproc)
 PREFIX ?= /usr/local
 SCENE_IMAGE ?= shapes.png
@@ -33,7 +37,7 @@ SHELL := /bin/bash
 # Targets run one after another; each build is parallel inside (cmake --build -j).
 .NOTPARALLEL:
 MAKEFLAGS += --no-print-directory
-.PHONY: help deps build run test test-sanitize test-asan test-tsan install clean
+.PHONY: help deps build run test test-sanitize test-asan test-tsan test-fuzz install clean
 
 help:
 	@sed -n '1,/^$$/p' $(firstword $(MAKEFILE_LIST)) | sed 's/^# \{0,1\}//'
@@ -97,8 +101,31 @@ test-tsan: deps
 	cmake --build $(TSAN_DIR) -j$(JOBS) --target facet_tests
 	ctest --test-dir $(TSAN_DIR) -R '$(TSAN_TEST_REGEX)' --output-on-failure -j2 --no-tests=error
 
+# Each fuzz target runs on a scratch copy of its seed corpus, so the inputs it discovers do not
+# grow the repository; a crashing input is kept as $(FUZZ_DIR)/crash-NAME-* and fails the run
+# with the fuzzer's whole report.
+test-fuzz: deps
+	@if [ ! -f $(FUZZ_DIR)/CMakeCache.txt ]; then \
+	  CXX=clang++ cmake -S . -B $(FUZZ_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFACET_FUZZ=ON \
+	    -DFACET_BUILD_TESTS=OFF -DFACET_INSTALL_TEST=OFF; \
+	fi
+	cmake --build $(FUZZ_DIR) -j$(JOBS) --target facet_fuzz
+	@for fuzzer in $(FUZZ_DIR)/*_fuzz; do \
+	  name=$$(basename "$$fuzzer" _fuzz); \
+	  scratch=$$(mktemp -d); \
+	  trap 'rm -rf "$$scratch"' EXIT; \
+	  if [ -d tests/fuzz/corpus/$$name ]; then cp -R tests/fuzz/corpus/$$name/. "$$scratch"/; fi; \
+	  echo "fuzz: $$name for $(FUZZ_SECONDS) s (log: $(FUZZ_DIR)/$$name.log)"; \
+	  if ! "$$fuzzer" -max_total_time=$(FUZZ_SECONDS) -timeout=10 -print_final_stats=1 \
+	      -artifact_prefix=$(FUZZ_DIR)/crash-$$name- "$$scratch" >$(FUZZ_DIR)/$$name.log 2>&1; then \
+	    cat $(FUZZ_DIR)/$$name.log; echo "fuzz: $$name FAILED" >&2; exit 1; \
+	  fi; \
+	  grep -E '^(Done|stat::number_of_executed_units|stat::peak_rss_mb)' $(FUZZ_DIR)/$$name.log || true; \
+	  rm -rf "$$scratch"; \
+	done
+
 install: build
 	cmake --install $(BUILD_DIR) --prefix $(PREFIX)
 
 clean:
-	rm -rf $(BUILD_DIR) $(ASAN_DIR) $(TSAN_DIR) $(SCENE_IMAGE)
+	rm -rf $(BUILD_DIR) $(ASAN_DIR) $(TSAN_DIR) $(FUZZ_DIR) $(SCENE_IMAGE)

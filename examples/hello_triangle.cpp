@@ -19,7 +19,9 @@ int main(int argc, char** argv) {
 
     facet::Renderer renderer;  // all cores, 64x64 tiles, black background
     renderer.begin_frame(camera);
-    renderer.draw(triangle, facet::Material{facet::ShadingModel::vertex_color});
+    facet::Material material;
+    material.shading = facet::ShadingModel::vertex_color;
+    renderer.draw(triangle, material);
     renderer.finish(image);
 
     facet::write_image(image, path);  // .png or .ppm, by extension

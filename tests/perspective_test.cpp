@@ -30,8 +30,8 @@ struct CheckerShading {
     out[0] = in.texcoord.x;
     out[1] = in.texcoord.y;
   }
-  static glm::vec4 fragment(const float* v, float, const shading::DrawUniforms&) {
-    return checker(v[0], v[1]) ? glm::vec4(1.0f) : glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+  static glm::vec4 fragment(const shading::Fragment& f, const shading::DrawUniforms&) {
+    return checker(f.v[0], f.v[1]) ? glm::vec4(1.0f) : glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
   }
 };
 

@@ -5,6 +5,7 @@
 #include <exception>
 
 #include "facet/error.hpp"
+#include "info_command.hpp"
 #include "render_command.hpp"
 
 namespace {
@@ -23,6 +24,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   facet::cli::RenderOptions render_options;
   CLI::App* render = facet::cli::add_render_command(app, render_options);
+  facet::cli::InfoOptions info_options;
+  CLI::App* info = facet::cli::add_info_command(app, info_options);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
@@ -37,6 +40,7 @@ int main(int argc, char** argv) {
   }
   try {
     if (render->parsed()) return facet::cli::run_render(render_options);
+    if (info->parsed()) return facet::cli::run_info(info_options);
   } catch (const facet::Error& e) {
     return fail(e.what());
   } catch (const std::exception& e) {

@@ -1,18 +1,19 @@
-// `facet render`: renders a built-in scene to a PNG or PPM file.
+// `facet render`: renders a model file or a built-in scene to a PNG or PPM file.
 #pragma once
 
 #include <CLI/CLI.hpp>
-#include <optional>
 #include <string>
+
+#include "scene_options.hpp"
 
 namespace facet::cli {
 
 struct RenderOptions {
-  std::string scene = "shapes";
+  SceneOptions scene;
   std::string output;
   std::string size = "1920x1080";
-  std::optional<std::string> eye, target, up, background, shading, cull;
-  std::optional<float> fov, near_plane, far_plane;
+  std::optional<std::string> background;
+  float exposure = 0.0f;
   int threads = 0;
   int tile_size = 64;
 };

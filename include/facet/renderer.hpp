@@ -19,6 +19,7 @@ struct RenderSettings {
   int threads = 0;                                // worker threads; 0 = all cores
   int tile_size = 64;                             // tile edge in pixels: 16, 32, 64 or 128
   glm::vec4 clear_color{0.0f, 0.0f, 0.0f, 1.0f};  // linear RGBA
+  float exposure = 0.0f;  // in stops: colors are scaled by 2^exposure before output
 };
 
 struct FrameStats {

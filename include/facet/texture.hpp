@@ -54,7 +54,8 @@ class Texture {
   bool srgb() const { return srgb_; }
   const std::string& name() const { return name_; }  // file name or "embedded:N"
 
-  // Linear RGBA of one texel (no wrapping: x, y must be inside the level).
+  // Linear RGBA of one texel; y counts stored rows, top first (unlike v). Throws facet::Error
+  // if outside the level.
   glm::vec4 texel(int level, int x, int y) const;
 
   // Samples at uv (u right, v up: v = 0 is the bottom row of the image, as in OpenGL) with
@@ -63,6 +64,7 @@ class Texture {
 
   // Level of detail from the screen-space derivatives of uv (per pixel): log2 of the larger
   // footprint edge in texels of the base level (OpenGL 4.6 8.14.1 without anisotropy).
+  // Not clamped (-inf for zero derivatives); sample() clamps to the levels that exist.
   float lod(glm::vec2 duv_dx, glm::vec2 duv_dy) const;
 
  private:
@@ -82,6 +84,6 @@ std::shared_ptr<Texture> load_texture_from_memory(const std::uint8_t* data, std:
                                                   bool srgb, const std::string& name);
 
 // A magenta/black checker drawn where a texture is missing, so the gap is visible.
-std::shared_ptr<Texture> missing_texture();
+std::shared_ptr<const Texture> missing_texture();
 
 }  // namespace facet

@@ -8,7 +8,9 @@
 #include <tbb/info.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <glm/gtc/matrix_inverse.hpp>
 #include <optional>
 #include <string>
@@ -26,6 +28,8 @@ namespace facet {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+bool is_blended(AlphaMode mode) { return mode == AlphaMode::blend || mode == AlphaMode::additive; }
 
 double ms_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -49,6 +53,7 @@ struct Renderer::Impl {
   std::vector<TileBuffers> tile_buffers;  // one per worker
   pipeline::Frame frame;
   std::vector<std::uint64_t> tile_pixels_shaded;
+  pipeline::Background background;
   Camera camera;
   Lighting lighting;
   bool recording = false;
@@ -68,7 +73,25 @@ struct Renderer::Impl {
   void prepare_tiles(const Framebuffer& target);
   void render_tile(int index, int worker, Framebuffer& target);
   void run(Framebuffer& target);
+  void order_draws();
 };
+
+// Transparency: opaque (and cut-out) draws first in submission order, then blended draws back
+// to front, so each blends over what is behind it. Ties keep submission order.
+void Renderer::Impl::order_draws() {
+  frame.draw_order.clear();
+  for (std::uint32_t d = 0; d < frame.draws.size(); ++d) {
+    if (!is_blended(frame.draws[d].material.alpha_mode)) frame.draw_order.push_back(d);
+  }
+  std::size_t first_blended = frame.draw_order.size();
+  for (std::uint32_t d = 0; d < frame.draws.size(); ++d) {
+    if (is_blended(frame.draws[d].material.alpha_mode)) frame.draw_order.push_back(d);
+  }
+  std::stable_sort(frame.draw_order.begin() + first_blended, frame.draw_order.end(),
+                   [&](std::uint32_t a, std::uint32_t b) {
+                     return frame.draws[a].view_depth > frame.draws[b].view_depth;
+                   });
+}
 
 Renderer::Renderer(const RenderSettings& settings) {
   if (settings.threads < 0) {
@@ -97,7 +120,8 @@ void Renderer::begin_frame(const Camera& camera, const Lighting& lighting) {
 }
 
 void Renderer::draw(const Mesh& mesh, const Material& material, const glm::mat4& transform) {
-  impl_->record(mesh, material, transform, pipeline::pipeline_for(material.shading));
+  impl_->record(mesh, material, transform,
+                pipeline::pipeline_for(material.shading, material.alpha_mode));
 }
 
 void Renderer::Impl::record(const Mesh& mesh, const Material& material, const glm::mat4& transform,
@@ -108,6 +132,12 @@ void Renderer::Impl::record(const Mesh& mesh, const Material& material, const gl
   record.mesh = &mesh;
   record.material = material;
   record.pipeline = pipe;
+  if (is_blended(material.alpha_mode) && !mesh.positions.empty()) {
+    glm::vec3 low = mesh.positions[0], high = low;
+    for (const glm::vec3& p : mesh.positions) low = glm::min(low, p), high = glm::max(high, p);
+    glm::vec4 centre = camera.view() * transform * glm::vec4((low + high) * 0.5f, 1.0f);
+    record.view_depth = -centre.z;
+  }
   shading::DrawUniforms& u = record.uniforms;
   u.model = transform;
   u.model_view_projection = frame.view_projection * transform;
@@ -156,10 +186,18 @@ void Renderer::Impl::run(Framebuffer& target) {
     draw.uniforms.material = &draw.material;
     draw.uniforms.lighting = &lighting;
   }
+  order_draws();
+  background.clear_color = settings.clear_color;
+  background.environment =
+      lighting.environment.show_as_background ? &lighting.environment : nullptr;
+  background.inverse_view_projection = glm::inverse(frame.view_projection);
+  background.eye = camera.eye;
+  background.width = frame.width;
+  background.height = frame.height;
   if (frame.vertices.size() < frame.draws.size()) frame.vertices.resize(frame.draws.size());
 
   // Geometry: transform, assemble, clip, cull, set up — draws in submission order.
-  for (std::uint32_t d = 0; d < frame.draws.size(); ++d) {
+  for (std::uint32_t d : frame.draw_order) {
     frame.stats.triangles_in += frame.draws[d].mesh->primitive_count();
     pipeline::transform_vertices(frame.draws[d], workers, frame.vertices[d]);
     pipeline::assemble_draw(frame, d);
@@ -191,8 +229,10 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
   tile.y1 = std::min(tile.y0 + ts, frame.height);
   tile.stride = ts;
   const auto& bin = frame.bins[index];
-  if (bin.empty()) {  // lazy clear: nothing drawn here, write the clear values directly
-    pipeline::resolve_cleared_tile(tile, settings.clear_color, target);
+  const float scale = std::exp2(settings.exposure);
+  if (bin.empty() && !background.environment) {
+    // Lazy clear: nothing drawn here, write the clear values directly.
+    pipeline::resolve_cleared_tile(tile, settings.clear_color, scale, target);
     return;
   }
   TileBuffers& buffers = tile_buffers[worker];
@@ -203,7 +243,7 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
   }
   tile.color = buffers.color.data();
   tile.depth = buffers.depth.data();
-  pipeline::clear_tile(tile, settings.clear_color);
+  pipeline::clear_tile(tile, background);
   for (std::uint32_t entry : bin) {
     if (entry & pipeline::kLineBit) {
       pipeline::raster_line(tile, frame.lines[entry & ~pipeline::kLineBit]);
@@ -212,7 +252,7 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
       frame.draws[t.draw].pipeline.raster(tile, t);
     }
   }
-  pipeline::resolve_tile(tile, target);
+  pipeline::resolve_tile(tile, scale, target);
   tile_pixels_shaded[index] = tile.pixels_shaded;
 }
 

@@ -20,7 +20,7 @@
 namespace facet::pipeline {
 
 // Largest kVaryings of any shading model; the clipper's vertices have this many slots.
-inline constexpr int kMaxVaryings = 8;
+inline constexpr int kMaxVaryings = 16;
 
 struct ClipVertex {
   glm::vec4 clip;  // homogeneous clip-space position
@@ -36,7 +36,10 @@ struct DrawPipeline {
   int varyings = 0;
   int normal_slot = -1;
   void (*vertex)(const shading::VertexInput&, const shading::DrawUniforms&, float*) = nullptr;
-  void (*face)(glm::vec3, const shading::DrawUniforms&, float* [3]) = nullptr;
+  using FaceFn = void (*)(glm::vec3 normal, glm::vec3 centre, const shading::DrawUniforms&,
+                          float* [3]);
+  FaceFn face = nullptr;                  // every triangle (flat shading)
+  FaceFn face_without_normals = nullptr;  // triangles of meshes without normals (Gouraud)
   RasterTriangleFn raster = nullptr;
   bool fills_triangles = true;  // false for wireframe: edges only
   bool draws_edges = false;     // wireframe: edges become lines (line.cpp)
@@ -44,6 +47,7 @@ struct DrawPipeline {
 
 struct DrawRecord {
   const Mesh* mesh = nullptr;
+  float view_depth = 0.0f;  // of the mesh's bounds centre: blended draws sort on it
   Material material;
   shading::DrawUniforms uniforms;
   DrawPipeline pipeline;
@@ -88,6 +92,7 @@ struct Frame {
   int tiles_y = 0;
   glm::mat4 view_projection{1.0f};
   std::vector<DrawRecord> draws;
+  std::vector<std::uint32_t> draw_order;  // opaque in submission order, then blended far-first
   std::vector<shading::LightData> lights;
   std::vector<std::vector<ClipVertex>> vertices;  // per draw slot, reused
   std::vector<SetupTriangle> triangles;

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "shading/color.hpp"
+#include "shading/environment.hpp"
 
 namespace facet::pipeline {
 namespace {
@@ -27,26 +28,42 @@ void store(Framebuffer& target, std::size_t pixel, const glm::vec4& c) {
 
 }  // namespace
 
-void clear_tile(TileContext& tile, const glm::vec4& color) {
+void clear_tile(TileContext& tile, const Background& background) {
   for (int y = 0; y < tile.y1 - tile.y0; ++y) {
-    std::fill_n(tile.color + static_cast<std::ptrdiff_t>(y) * tile.stride, tile.x1 - tile.x0,
-                color);
+    glm::vec4* row = tile.color + static_cast<std::ptrdiff_t>(y) * tile.stride;
+    if (background.environment) {
+      for (int x = 0; x < tile.x1 - tile.x0; ++x) {
+        // The view ray through the pixel centre: unproject a point on the far plane.
+        float ndc_x = (static_cast<float>(tile.x0 + x) + 0.5f) / background.width * 2.0f - 1.0f;
+        float ndc_y = 1.0f - (static_cast<float>(tile.y0 + y) + 0.5f) / background.height * 2.0f;
+        glm::vec4 far = background.inverse_view_projection * glm::vec4(ndc_x, ndc_y, 1.0f, 1.0f);
+        glm::vec3 direction = glm::normalize(glm::vec3(far) / far.w - background.eye);
+        row[x] = glm::vec4(shading::environment_radiance(*background.environment, direction), 1.0f);
+      }
+    } else {
+      std::fill_n(row, tile.x1 - tile.x0, background.clear_color);
+    }
     std::fill_n(tile.depth + static_cast<std::ptrdiff_t>(y) * tile.stride, tile.x1 - tile.x0,
                 kClearDepth);
   }
 }
 
-void resolve_tile(const TileContext& tile, Framebuffer& target) {
+void resolve_tile(const TileContext& tile, float scale, Framebuffer& target) {
   for (int y = tile.y0; y < tile.y1; ++y) {
     const glm::vec4* color = tile.color + static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride;
     const float* depth = tile.depth + static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride;
     std::size_t row = static_cast<std::size_t>(y) * target.width();
-    for (int x = tile.x0; x < tile.x1; ++x) store(target, row + x, color[x - tile.x0]);
+    for (int x = tile.x0; x < tile.x1; ++x) {
+      glm::vec4 c = color[x - tile.x0];
+      store(target, row + x, glm::vec4(glm::vec3(c) * scale, c.a));
+    }
     std::copy_n(depth, tile.x1 - tile.x0, target.depth().data() + row + tile.x0);
   }
 }
 
-void resolve_cleared_tile(const TileContext& tile, const glm::vec4& color, Framebuffer& target) {
+void resolve_cleared_tile(const TileContext& tile, const glm::vec4& clear, float scale,
+                          Framebuffer& target) {
+  glm::vec4 color(glm::vec3(clear) * scale, clear.a);
   for (int y = tile.y0; y < tile.y1; ++y) {
     std::size_t row = static_cast<std::size_t>(y) * target.width();
     for (int x = tile.x0; x < tile.x1; ++x) store(target, row + x, color);

@@ -2,16 +2,29 @@
 // resolves the finished tile into the framebuffer once, converting to the target format.
 #pragma once
 
-#include <glm/vec4.hpp>
+#include <glm/glm.hpp>
 
 #include "facet/framebuffer.hpp"
+#include "facet/light.hpp"
 #include "pipeline/raster.hpp"
 
 namespace facet::pipeline {
 
-void clear_tile(TileContext& tile, const glm::vec4& color);
-void resolve_tile(const TileContext& tile, Framebuffer& target);
-// A tile with an empty bin is written straight from the clear values.
-void resolve_cleared_tile(const TileContext& tile, const glm::vec4& color, Framebuffer& target);
+// What a pixel shows where nothing is drawn: the clear color, or the environment (image or
+// sky gradient) seen through that pixel.
+struct Background {
+  glm::vec4 clear_color{0.0f};
+  const Environment* environment = nullptr;  // non-null: draw the environment
+  glm::mat4 inverse_view_projection{1.0f};
+  glm::vec3 eye{0.0f};
+  int width = 1, height = 1;  // framebuffer size
+};
+
+void clear_tile(TileContext& tile, const Background& background);
+// Writes the tile to the framebuffer; colors are scaled by `scale` (exposure) first.
+void resolve_tile(const TileContext& tile, float scale, Framebuffer& target);
+// A tile with an empty bin under a plain clear color is written straight from it.
+void resolve_cleared_tile(const TileContext& tile, const glm::vec4& color, float scale,
+                          Framebuffer& target);
 
 }  // namespace facet::pipeline

@@ -43,6 +43,12 @@ struct Assembler {
     return length > 0.0f ? n / length : glm::vec3(0.0f);
   }
 
+  // Centre of the triangle in world space.
+  glm::vec3 centre(std::uint32_t i0, std::uint32_t i1, std::uint32_t i2) const {
+    const auto& p = draw.mesh->positions;
+    return glm::vec3(draw.uniforms.model * glm::vec4((p[i0] + p[i1] + p[i2]) / 3.0f, 1.0f));
+  }
+
   void edge(const glm::vec4& a, const glm::vec4& b, const glm::vec4& color) {
     glm::vec4 p = a, q = b;
     unsigned planes = outcode(p, guard) | outcode(q, guard);
@@ -71,17 +77,20 @@ struct Assembler {
       return;
     }
     const DrawPipeline& pipe = draw.pipeline;
-    bool needs_face_normal = pipe.face || (pipe.normal_slot >= 0 && draw.mesh->normals.empty());
-    if (needs_face_normal) {
+    bool no_normals = draw.mesh->normals.empty();
+    bool fill_normal = pipe.normal_slot >= 0 && no_normals;
+    DrawPipeline::FaceFn face =
+        pipe.face ? pipe.face : (no_normals ? pipe.face_without_normals : nullptr);
+    if (fill_normal || face) {
       glm::vec3 n = face_normal(i0, i1, i2);
-      if (pipe.normal_slot >= 0 && draw.mesh->normals.empty()) {
+      if (fill_normal) {
         for (int i = 0; i < 3; ++i) {
           for (int k = 0; k < 3; ++k) v[i].varyings[pipe.normal_slot + k] = n[k];
         }
       }
-      if (pipe.face) {
+      if (face) {
         float* varyings[3] = {v[0].varyings, v[1].varyings, v[2].varyings};
-        pipe.face(n, draw.uniforms, varyings);
+        face(n, centre(i0, i1, i2), draw.uniforms, varyings);
       }
     }
     if (pipe.draws_edges) {

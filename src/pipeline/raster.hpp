@@ -5,12 +5,14 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <glm/vec4.hpp>
 
 #include "pipeline/fixed_point.hpp"
 #include "pipeline/frame.hpp"
 #include "pipeline/setup.hpp"
+#include "shading/fragment.hpp"
 
 namespace facet::pipeline {
 
@@ -35,6 +37,7 @@ constexpr bool additive() {
   if constexpr (requires { Shading::kAdditive; }) return Shading::kAdditive;
   return false;
 }
+
 // Models with kEdgeOverlay draw the triangle's edges over their shading: pixels closer to an
 // edge than kOverlayHalfWidth pixels take the draw's wire color. Measured from the edge
 // functions, so the edges sit exactly on the surface: no depth fighting with the fill.
@@ -45,16 +48,36 @@ constexpr bool edge_overlay() {
 }
 inline constexpr float kOverlayHalfWidth = 0.5f;
 
-// Rasterizes one triangle into the tile; a template over the shading model so that the
-// per-pixel loop is specialised once per model (pipeline/shade.cpp builds the table).
-template <class Shading>
+// Distance fog (the classic darkening with distance): a per-draw constant decides the mode,
+// so this branch is perfectly predicted; a template flag would double every raster loop.
+inline glm::vec4 apply_fog(glm::vec4 color, float view_depth, const Fog& fog) {
+  if (fog.mode == FogMode::none) return color;
+  float keep = fog.mode == FogMode::linear
+                   ? (fog.end - view_depth) / std::max(fog.end - fog.start, 1e-6f)
+                   : std::exp(-fog.density * view_depth);
+  keep = std::clamp(keep, 0.0f, 1.0f);
+  return {glm::mix(fog.color, glm::vec3(color), keep), color.a};
+}
+
+// Rasterizes one triangle into the tile; a template over the shading model and the alpha
+// mode so that the per-pixel loop is specialised once per draw state (shade.cpp builds the
+// table).
+template <class Shading, AlphaMode kAlpha = AlphaMode::opaque>
 void raster_triangle(TileContext& tile, const SetupTriangle& t) {
   const int x0 = std::max(t.min_x, tile.x0), x1 = std::min(t.max_x, tile.x1 - 1);
   const int y0 = std::max(t.min_y, tile.y0), y1 = std::min(t.max_y, tile.y1 - 1);
   if (x0 > x1 || y0 > y1) return;
   const shading::DrawUniforms& uniforms = tile.frame->draws[t.draw].uniforms;
-  const Plane* planes = tile.frame->planes.data() + t.varying_planes;
+  const Fog& fog = uniforms.lighting->fog;
+  const float alpha_cutoff = uniforms.material->alpha_cutoff;
+  constexpr bool kDepthTest = depth_tested<Shading>();
+  // Blended draws test depth but do not write it (they are sorted back to front instead).
+  constexpr bool kDepthWrite =
+      kDepthTest && (kAlpha == AlphaMode::opaque || kAlpha == AlphaMode::mask);
   constexpr int kVaryings = Shading::kVaryings;
+  shading::Fragment f;
+  f.planes = tile.frame->planes.data() + t.varying_planes;
+  f.inv_w = &t.inv_w;
   const std::int64_t step[3] = {t.a[0] * kSubpixelScale, t.a[1] * kSubpixelScale,
                                 t.a[2] * kSubpixelScale};
   std::uint64_t shaded = 0;
@@ -74,27 +97,36 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
       if ((e0 | e1 | e2) < 0) continue;  // outside some edge (sign bit set)
       const float px = static_cast<float>(x) + 0.5f;
       const float z = evaluate(t.z, t.ref_x, t.ref_y, px, py);
-      if constexpr (depth_tested<Shading>()) {
+      if constexpr (kDepthTest) {
         if (!(z < depth_row[x])) continue;  // early depth test (less); NaN fails
       }
-      const float w = 1.0f / evaluate(t.inv_w, t.ref_x, t.ref_y, px, py);
-      float varyings[kVaryings > 0 ? kVaryings : 1];
+      f.w = 1.0f / evaluate(t.inv_w, t.ref_x, t.ref_y, px, py);
       for (int k = 0; k < kVaryings; ++k) {
-        varyings[k] = evaluate(planes[k], t.ref_x, t.ref_y, px, py) * w;
+        f.v[k] = evaluate(f.planes[k], t.ref_x, t.ref_y, px, py) * f.w;
       }
-      glm::vec4 color = Shading::fragment(varyings, w, uniforms);
+      glm::vec4 color = Shading::fragment(f, uniforms);
+      if constexpr (kAlpha == AlphaMode::mask) {
+        if (!(color.a >= alpha_cutoff)) continue;  // cut-out: no color, no depth
+      }
       if constexpr (edge_overlay<Shading>()) {
         float distance = std::min({static_cast<float>(e0) * t.edge_scale[0],
                                    static_cast<float>(e1) * t.edge_scale[1],
                                    static_cast<float>(e2) * t.edge_scale[2]});
         if (distance < kOverlayHalfWidth) color = uniforms.wire_color;
       }
+      color = apply_fog(color, f.w, fog);
+      glm::vec4& out = color_row[x];
       if constexpr (additive<Shading>()) {
-        color_row[x] += color;
+        out += color;
+      } else if constexpr (kAlpha == AlphaMode::blend) {  // "over", straight alpha
+        out = glm::vec4(glm::vec3(color) * color.a + glm::vec3(out) * (1.0f - color.a),
+                        color.a + out.a * (1.0f - color.a));
+      } else if constexpr (kAlpha == AlphaMode::additive) {
+        out += glm::vec4(glm::vec3(color) * color.a, 0.0f);
       } else {
-        color_row[x] = color;
+        out = color;
       }
-      if constexpr (depth_tested<Shading>()) depth_row[x] = z;
+      if constexpr (kDepthWrite) depth_row[x] = z;
       ++shaded;
     }
   }

@@ -1,47 +1,65 @@
 // Stage: shade (see shade.hpp).
 #include "pipeline/shade.hpp"
 
+#include "shading/lit_models.hpp"
 #include "shading/models.hpp"
 
 namespace facet::pipeline {
+namespace {
 
-DrawPipeline pipeline_for(ShadingModel model) {
+// Every alpha mode of one shading model.
+template <class Shading>
+DrawPipeline with_alpha(AlphaMode alpha) {
+  switch (alpha) {
+    case AlphaMode::mask:
+      return make_pipeline<Shading, AlphaMode::mask>();
+    case AlphaMode::blend:
+      return make_pipeline<Shading, AlphaMode::blend>();
+    case AlphaMode::additive:
+      return make_pipeline<Shading, AlphaMode::additive>();
+    default:
+      return make_pipeline<Shading, AlphaMode::opaque>();
+  }
+}
+
+}  // namespace
+
+DrawPipeline pipeline_for(ShadingModel model, AlphaMode alpha) {
   using namespace shading;
-  DrawPipeline p;
   switch (model) {
     case ShadingModel::unlit:
-      p = make_pipeline<UnlitShading>();
-      break;
+      return with_alpha<UnlitShading>(alpha);
     case ShadingModel::vertex_color:
-      p = make_pipeline<VertexColorShading>();
-      break;
+      return with_alpha<VertexColorShading>(alpha);
     case ShadingModel::flat:
-      p = make_pipeline<FlatShading>();
-      break;
+      return with_alpha<FlatShading>(alpha);
     case ShadingModel::lambert:
-    case ShadingModel::gouraud:  // placeholders until the lit models land
+      return with_alpha<LambertShading>(alpha);
+    case ShadingModel::gouraud:
+      return with_alpha<GouraudShading>(alpha);
     case ShadingModel::phong:
+      return with_alpha<PhongShading>(alpha);
     case ShadingModel::blinn_phong:
+      return with_alpha<BlinnPhongShading>(alpha);
     case ShadingModel::pbr:
-    case ShadingModel::texcoords:
-      p = make_pipeline<LambertShading>();
-      break;
+      return with_alpha<PbrShading>(alpha);
+    case ShadingModel::wire_overlay:
+      return with_alpha<WireOverlayShading>(alpha);
+    // Debug views show data: always opaque.
     case ShadingModel::depth:
-      p = make_pipeline<DepthShading>();
-      break;
+      return make_pipeline<DepthShading>();
     case ShadingModel::normals:
-      p = make_pipeline<NormalsShading>();
-      break;
-    case ShadingModel::wireframe:
-      p = make_pipeline<UnlitShading>();
+      return make_pipeline<NormalsShading>();
+    case ShadingModel::texcoords:
+      return make_pipeline<TexcoordShading>();
+    case ShadingModel::wireframe: {
+      DrawPipeline p = make_pipeline<UnlitShading>();
       p.fills_triangles = false;
       p.draws_edges = true;
-      break;
-    case ShadingModel::wire_overlay:
-      p = make_pipeline<WireOverlayShading>();
-      break;
+      return p;
+    }
   }
-  return p;
+  return make_pipeline<LambertShading>();
 }
 
 }  // namespace facet::pipeline

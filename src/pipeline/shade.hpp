@@ -9,12 +9,12 @@
 
 namespace facet::pipeline {
 
-// The pipeline for a built-in shading model.
-DrawPipeline pipeline_for(ShadingModel model);
+// The pipeline for a built-in shading model and alpha mode.
+DrawPipeline pipeline_for(ShadingModel model, AlphaMode alpha = AlphaMode::opaque);
 
 // The pipeline for any shading model type (see shading/models.hpp for what it provides);
 // also how tests plug in their own models.
-template <class Shading>
+template <class Shading, AlphaMode kAlpha = AlphaMode::opaque>
 DrawPipeline make_pipeline() {
   static_assert(Shading::kVaryings <= kMaxVaryings, "raise kMaxVaryings");
   DrawPipeline p;
@@ -22,7 +22,10 @@ DrawPipeline make_pipeline() {
   p.normal_slot = Shading::kNormalSlot;
   p.vertex = &Shading::vertex;
   if constexpr (requires { &Shading::face; }) p.face = &Shading::face;
-  p.raster = &raster_triangle<Shading>;
+  if constexpr (requires { &Shading::face_without_normals; }) {
+    p.face_without_normals = &Shading::face_without_normals;
+  }
+  p.raster = &raster_triangle<Shading, kAlpha>;
   return p;
 }
 

@@ -17,6 +17,8 @@ void transform_range(const DrawRecord& draw, std::size_t begin, std::size_t end,
   bool has_normals = !mesh.normals.empty();
   bool has_colors = !mesh.colors.empty();
   bool has_texcoords = !mesh.texcoords.empty();
+  bool has_tangents = !mesh.tangents.empty();
+  glm::mat3 model3(u.model);
   for (std::size_t i = begin; i < end; ++i) {
     shading::VertexInput in;
     in.position = mesh.positions[i];
@@ -25,6 +27,8 @@ void transform_range(const DrawRecord& draw, std::size_t begin, std::size_t end,
     if (length > 0.0f) in.normal /= length;
     in.color = has_colors ? mesh.colors[i] : glm::vec4(1.0f);
     in.texcoord = has_texcoords ? mesh.texcoords[i] : glm::vec2(0.0f);
+    in.tangent = has_tangents ? glm::vec4(model3 * glm::vec3(mesh.tangents[i]), mesh.tangents[i].w)
+                              : glm::vec4(0.0f);
     out[i].clip = u.model_view_projection * glm::vec4(in.position, 1.0f);
     draw.pipeline.vertex(in, u, out[i].varyings);
   }

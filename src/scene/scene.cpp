@@ -6,8 +6,27 @@
 #include <glm/glm.hpp>
 
 #include "facet/error.hpp"
+#include "facet/teapot.hpp"
 
 namespace facet {
+namespace {
+
+// Calls visit(p) for every finite world-space vertex position of every mesh instance.
+template <class Visit>
+void for_each_world_vertex(const Scene& scene, Visit&& visit) {
+  for (std::size_t n = 0; n < scene.nodes.size(); ++n) {
+    if (scene.nodes[n].instances.empty()) continue;
+    glm::mat4 m = scene.world_transform(static_cast<int>(n));
+    for (const MeshInstance& instance : scene.nodes[n].instances) {
+      for (const glm::vec3& p : scene.meshes[instance.mesh]->positions) {
+        glm::vec3 w = glm::vec3(m * glm::vec4(p, 1.0f));
+        if (std::isfinite(w.x) && std::isfinite(w.y) && std::isfinite(w.z)) visit(w);
+      }
+    }
+  }
+}
+
+}  // namespace
 
 void Bounds::add(glm::vec3 p) {
   min = glm::min(min, p);
@@ -34,16 +53,7 @@ glm::mat4 Scene::world_transform(int node) const {
 
 Bounds Scene::bounds() const {
   Bounds b;
-  for (std::size_t n = 0; n < nodes.size(); ++n) {
-    if (nodes[n].instances.empty()) continue;
-    glm::mat4 m = world_transform(static_cast<int>(n));
-    for (const MeshInstance& instance : nodes[n].instances) {
-      for (const glm::vec3& p : meshes[instance.mesh]->positions) {
-        glm::vec3 w = glm::vec3(m * glm::vec4(p, 1.0f));
-        if (std::isfinite(w.x) && std::isfinite(w.y) && std::isfinite(w.z)) b.add(w);
-      }
-    }
-  }
+  for_each_world_vertex(*this, [&b](glm::vec3 p) { b.add(p); });
   return b;
 }
 
@@ -71,15 +81,28 @@ void draw_scene(Renderer& renderer, const Scene& scene) {
 
 Camera frame_scene(const Scene& scene, float aspect, float fov_y_degrees) {
   Bounds b = scene.bounds();
-  glm::vec3 centre = b.empty() ? glm::vec3(0.0f) : b.centre();
-  float radius = b.empty() ? 1.0f : std::max(glm::length(b.max - b.min) * 0.5f, 1e-6f);
-  // Distance at which the bounding sphere fits the narrower field of view, with a margin.
-  float half_fov = glm::radians(fov_y_degrees) * 0.5f;
-  float half_fov_x = std::atan(std::tan(half_fov) * aspect);
-  float distance = radius / std::sin(std::min(half_fov, half_fov_x)) * 1.05f;
-  glm::vec3 direction = glm::normalize(glm::vec3(0.55f, 0.45f, 0.85f));  // front right, above
+  if (b.empty()) b.add(glm::vec3(-1.0f)), b.add(glm::vec3(1.0f));
+  glm::vec3 centre = b.centre();
+  float radius = std::max(glm::length(b.max - b.min) * 0.5f, 1e-6f);
+  // Look from the front right, above; then back off until every vertex is in view: a point
+  // at (x, y, z) in view axes (z toward the eye) needs distance >= z + |x| / tan(half fov x),
+  // and the same for y. Fitting the vertices, not the bounding box, frames round models
+  // tightly.
+  glm::vec3 back = glm::normalize(glm::vec3(0.55f, 0.45f, 0.85f));
+  glm::vec3 right = glm::normalize(glm::cross(glm::vec3(0, 1, 0), back));
+  glm::vec3 up = glm::cross(back, right);
+  float tan_y = std::tan(glm::radians(fov_y_degrees) * 0.5f), tan_x = tan_y * aspect;
+  float distance = 0.0f;
+  for_each_world_vertex(scene, [&](glm::vec3 p) {
+    glm::vec3 d = p - centre;
+    float z = glm::dot(d, back);
+    distance = std::max({distance, z + std::abs(glm::dot(d, right)) / tan_x,
+                         z + std::abs(glm::dot(d, up)) / tan_y});
+  });
+  if (!(distance > 0.0f)) distance = radius / tan_y;
+  distance *= 1.08f;  // a margin around the model
   Camera camera;
-  camera.eye = centre + direction * distance;
+  camera.eye = centre + back * distance;
   camera.target = centre;
   camera.up = {0.0f, 1.0f, 0.0f};
   camera.fov_y_degrees = fov_y_degrees;
@@ -89,10 +112,11 @@ Camera frame_scene(const Scene& scene, float aspect, float fov_y_degrees) {
   return camera;
 }
 
-std::vector<std::string> builtin_scene_names() { return {"shapes"}; }
+std::vector<std::string> builtin_scene_names() { return {"shapes", "teapot"}; }
 
 Scene make_builtin_scene(const std::string& name) {
   if (name == "shapes") return make_shapes_scene();
+  if (name == "teapot") return make_teapot_scene();
   std::string known;
   for (const auto& n : builtin_scene_names()) known += (known.empty() ? "" : ", ") + n;
   throw Error("unknown scene '" + name + "' (built-in scenes: " + known + ")");

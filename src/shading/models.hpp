@@ -1,88 +1,99 @@
-// The built-in shading models as C++ types. The raster loop (pipeline/raster.cpp) is a
-// template over these, chosen once per draw, so the per-pixel code has no virtual calls and
-// no branches on material settings.
+// The built-in shading models as C++ types. The raster loop (pipeline/raster.hpp) is a
+// template over these, chosen once per draw, so the per-pixel code has no virtual calls.
 //
 // A shading model provides:
 //   kVaryings       floats it passes from vertex to fragment (interpolated perspective-correct)
 //   kNormalSlot     index of a world normal in its varyings (or -1): filled with the face
 //                   normal when the mesh has no normals
-//   vertex(in, uniforms, out)          per vertex: writes kVaryings floats
-//   face(face_normal, uniforms, v[3])  optional, per triangle before clipping: may rewrite
-//                                      the three vertices' varyings (flat shading)
-//   fragment(varyings, view_depth, uniforms) -> linear RGBA
+//   vertex(in, uniforms, out)        per vertex: writes kVaryings floats
+//   face(normal, centre, uniforms, v[3])  optional, per triangle before clipping: may rewrite
+//                                    the three vertices' varyings (flat shading)
+//   fragment(fragment, uniforms) -> linear RGBA
+// Lit models with textures are in lit_models.hpp. Per-draw options (is there a base color
+// map? which fog?) are plain branches on per-draw constants: always predicted the same way,
+// where template flags for each would multiply the raster loops.
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <glm/glm.hpp>
 
 #include "shading/color.hpp"
+#include "shading/fragment.hpp"
+#include "shading/lighting.hpp"
+#include "shading/surface.hpp"
 #include "shading/uniforms.hpp"
 
 namespace facet::shading {
 
-inline glm::vec4 material_color(const VertexInput& in, const DrawUniforms& u) {
-  return u.use_vertex_colors ? u.base_color * in.color : u.base_color;
-}
-
-// Diffuse + ambient from the directional lights (the classic teaching setup).
-// Point and spot lights need a position; models without one light as if from infinitely far.
-inline glm::vec3 lambert_light(glm::vec3 albedo, glm::vec3 unit_normal, const DrawUniforms& u) {
+// Diffuse + ambient from every light (the classic teaching setup).
+inline glm::vec3 diffuse_light(glm::vec3 albedo, glm::vec3 normal, glm::vec3 position,
+                               const DrawUniforms& u) {
   glm::vec3 light = u.ambient;
   for (int i = 0; i < u.light_count; ++i) {
-    float n_dot_l = std::max(0.0f, glm::dot(unit_normal, u.lights[i].to_light));
-    light += u.lights[i].radiance * n_dot_l;
+    IncidentLight in = incident(u.lights[i], position);
+    light += in.radiance * std::max(0.0f, glm::dot(normal, in.direction));
   }
   return albedo * light;
 }
 
-inline void store(float* out, glm::vec4 v) {
-  out[0] = v.r, out[1] = v.g, out[2] = v.b, out[3] = v.a;
+// A display value (already what the screen should show) stored so that resolve's sRGB encode
+// gives it back: debug views show data, not light.
+inline glm::vec4 display_value(glm::vec3 shown) {
+  return {srgb_to_linear(shown.x), srgb_to_linear(shown.y), srgb_to_linear(shown.z), 1.0f};
 }
-inline void store(float* out, glm::vec3 v) { out[0] = v.x, out[1] = v.y, out[2] = v.z; }
-inline glm::vec4 load4(const float* in) { return {in[0], in[1], in[2], in[3]}; }
-inline glm::vec3 load3(const float* in) { return {in[0], in[1], in[2]}; }
 
-// base color x vertex color, no lighting.
+// base color x vertex color x base color map, no lighting.
 struct UnlitShading {
+  static constexpr int kVaryings = kSurfaceVaryings;
+  static constexpr int kNormalSlot = -1;
+  static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
+    surface_vertex<false>(in, u, out);
+  }
+  static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
+    glm::vec4 color = load4(f.v + kColorSlot);
+    if (u.material->base_color_map) color *= sample_map(u.material->base_color_map, f);
+    return color + glm::vec4(emission(f, u), 0.0f);
+  }
+};
+
+// The mesh's vertex colors only (white where it has none).
+struct VertexColorShading {
+  static constexpr int kVaryings = 4;
+  static constexpr int kNormalSlot = -1;
+  static void vertex(const VertexInput& in, const DrawUniforms&, float* out) {
+    store(out, in.color);
+  }
+  static glm::vec4 fragment(const Fragment& f, const DrawUniforms&) { return load4(f.v); }
+};
+
+// One lit color per triangle from its face normal: the face hook lights the triangle's
+// average color at its centre and writes it to all three vertices, so it stays constant.
+struct FlatShading {
   static constexpr int kVaryings = 4;
   static constexpr int kNormalSlot = -1;
   static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
     store(out, material_color(in, u));
   }
-  static glm::vec4 fragment(const float* v, float, const DrawUniforms&) { return load4(v); }
-};
-
-// The mesh's vertex colors only (white where it has none).
-struct VertexColorShading : UnlitShading {
-  static void vertex(const VertexInput& in, const DrawUniforms&, float* out) {
-    store(out, in.color);
-  }
-};
-
-// One lit color per triangle from its face normal: the face hook lights the triangle's
-// average color and writes it to all three vertices, so interpolation keeps it constant.
-struct FlatShading : UnlitShading {
-  static void face(glm::vec3 face_normal, const DrawUniforms& u, float* v[3]) {
+  static void face(glm::vec3 normal, glm::vec3 centre, const DrawUniforms& u, float* v[3]) {
     glm::vec4 average = (load4(v[0]) + load4(v[1]) + load4(v[2])) / 3.0f;
-    glm::vec4 lit{lambert_light(glm::vec3(average), face_normal, u), average.a};
+    glm::vec4 lit{diffuse_light(glm::vec3(average), normal, centre, u), average.a};
     for (int i = 0; i < 3; ++i) store(v[i], lit);
   }
+  static glm::vec4 fragment(const Fragment& f, const DrawUniforms&) { return load4(f.v); }
 };
 
 // Per-pixel Lambert: the interpolated normal is renormalized and lit at each pixel.
 struct LambertShading {
-  static constexpr int kVaryings = 7;  // normal xyz, color rgba
-  static constexpr int kNormalSlot = 0;
+  static constexpr int kVaryings = kSurfaceVaryings;
+  static constexpr int kNormalSlot = shading::kNormalSlot;
   static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
-    store(out, in.normal);
-    store(out + 3, material_color(in, u));
+    surface_vertex<false>(in, u, out);
   }
-  static glm::vec4 fragment(const float* v, float, const DrawUniforms& u) {
-    glm::vec3 n = load3(v);
-    float length = glm::length(n);
-    n = length > 0.0f ? n / length : glm::vec3(0.0f);
-    glm::vec4 albedo = load4(v + 3);
-    return {lambert_light(glm::vec3(albedo), n, u), albedo.a};
+  static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
+    SurfacePoint s = surface_point<false>(f, u);
+    glm::vec3 color = diffuse_light(glm::vec3(s.albedo), s.normal, s.position, u);
+    return {color + emission(f, u), s.albedo.a};
   }
 };
 
@@ -91,33 +102,38 @@ struct WireOverlayShading : LambertShading {
   static constexpr bool kEdgeOverlay = true;
 };
 
-// Debug view: linear view depth, near -> white, far -> black. The gray is written so that
-// the sRGB encode at resolve gives back the linear ramp (the view shows distance, not light).
+// Debug view: linear view depth, near -> white, far -> black.
 struct DepthShading {
   static constexpr int kVaryings = 0;
   static constexpr int kNormalSlot = -1;
   static void vertex(const VertexInput&, const DrawUniforms&, float*) {}
-  static glm::vec4 fragment(const float*, float view_depth, const DrawUniforms& u) {
-    float t = (view_depth - u.near_plane) / (u.far_plane - u.near_plane);
-    float gray = srgb_to_linear(std::clamp(1.0f - t, 0.0f, 1.0f));
-    return {gray, gray, gray, 1.0f};
+  static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
+    float t = (f.w - u.near_plane) / (u.far_plane - u.near_plane);
+    return display_value(glm::vec3(std::clamp(1.0f - t, 0.0f, 1.0f)));
   }
 };
 
-// Debug view: world-space normal, renormalized per pixel, shown as n * 0.5 + 0.5 without
-// sRGB encoding (pre-decoded here so that resolve's encode writes the value itself).
+// Debug view: world-space normal, renormalized per pixel, shown as n * 0.5 + 0.5.
 struct NormalsShading {
   static constexpr int kVaryings = 3;
   static constexpr int kNormalSlot = 0;
   static void vertex(const VertexInput& in, const DrawUniforms&, float* out) {
     store(out, in.normal);
   }
-  static glm::vec4 fragment(const float* v, float, const DrawUniforms&) {
-    glm::vec3 n = load3(v);
-    float length = glm::length(n);
-    n = length > 0.0f ? n / length : glm::vec3(0.0f);
-    glm::vec3 shown = n * 0.5f + 0.5f;
-    return {srgb_to_linear(shown.x), srgb_to_linear(shown.y), srgb_to_linear(shown.z), 1.0f};
+  static glm::vec4 fragment(const Fragment& f, const DrawUniforms&) {
+    return display_value(safe_normalize(load3(f.v)) * 0.5f + 0.5f);
+  }
+};
+
+// Debug view: texture coordinates as red (u) and green (v), fractional part.
+struct TexcoordShading {
+  static constexpr int kVaryings = 2;
+  static constexpr int kNormalSlot = -1;
+  static void vertex(const VertexInput& in, const DrawUniforms&, float* out) {
+    store(out, in.texcoord);
+  }
+  static glm::vec4 fragment(const Fragment& f, const DrawUniforms&) {
+    return display_value({f.v[0] - std::floor(f.v[0]), f.v[1] - std::floor(f.v[1]), 0.0f});
   }
 };
 
@@ -129,7 +145,7 @@ struct OverdrawCountShading {
   static constexpr bool kDepthTest = false;
   static constexpr bool kAdditive = true;
   static void vertex(const VertexInput&, const DrawUniforms&, float*) {}
-  static glm::vec4 fragment(const float*, float, const DrawUniforms&) { return {1, 0, 0, 0}; }
+  static glm::vec4 fragment(const Fragment&, const DrawUniforms&) { return {1, 0, 0, 0}; }
 };
 
 }  // namespace facet::shading

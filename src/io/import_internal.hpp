@@ -1,0 +1,31 @@
+// Internal to model import (src/io/import*.cpp, d_format.cpp): the pieces import_scene() is
+// built from. import.cpp dispatches on the file type and finishes every scene the same way.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "facet/import.hpp"
+
+namespace facet::io {
+
+// The whole file as bytes; throws facet::Error "<path>: no such file" (or cannot be read).
+std::string read_whole_file(const std::string& path);
+
+// `.d` text to positions and triangle indices, no normals (parse_d adds them). Errors are
+// "<name>:<line>: <what>".
+Mesh parse_d_geometry(std::string_view text, const std::string& name);
+// One node with one blinn-phong material drawing the `.d` model.
+Scene import_d_scene(const std::string& path, const ImportOptions& options);
+
+// Every format assimp reads. The scene has meshes, materials, nodes, lights and cameras, but no
+// default camera yet (import_scene frames it).
+Scene import_assimp_scene(const std::string& path, const ImportOptions& options);
+
+// options.warn, or one "facet: warning:" line on stderr when it is not set.
+void warn(const ImportOptions& options, const std::string& message);
+
+// Lower-case ASCII copy (file extensions, case-insensitive file names).
+std::string lower_case(std::string_view text);
+
+}  // namespace facet::io

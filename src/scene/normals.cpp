@@ -1,0 +1,264 @@
+// Vertex normals and tangents for meshes that come without them. Written by the importers
+// (assimp, `.d`) once per mesh at load time; read by the vertex stage like any other attribute.
+//
+// Smooth normals: each corner of a triangle gets the sum of the area-weighted normals of the
+// faces around its position that lie within the crease angle of its own face, so a cube stays
+// faceted and a sphere stays smooth. Corners are first welded by position (so UV seams do not
+// break smoothing), then a vertex is duplicated only where its corners need different normals.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+#include <unordered_map>
+#include <vector>
+
+#include "facet/import.hpp"
+
+namespace facet {
+namespace {
+
+using Triangle = std::array<std::uint32_t, 3>;
+
+// The triangles a mesh draws, as vertex indices (strips unrolled with their winding kept).
+std::vector<Triangle> triangles_of(const Mesh& mesh) {
+  std::vector<Triangle> out;
+  const std::size_t count = mesh.element_count();
+  auto at = [&](std::size_t i) {
+    return mesh.indices.empty() ? static_cast<std::uint32_t>(i) : mesh.indices[i];
+  };
+  if (mesh.topology == Topology::triangles) {
+    out.reserve(count / 3);
+    for (std::size_t i = 0; i + 2 < count; i += 3) out.push_back({at(i), at(i + 1), at(i + 2)});
+  } else if (mesh.topology == Topology::triangle_strip) {
+    for (std::size_t i = 0; i + 2 < count; ++i) {
+      // Every other strip triangle is wound the other way round (GL 4.6 §10.1.8).
+      if (i % 2 == 0)
+        out.push_back({at(i), at(i + 1), at(i + 2)});
+      else
+        out.push_back({at(i + 1), at(i), at(i + 2)});
+    }
+  }
+  return out;
+}
+
+// Bit-exact keys: welding must only merge vertices that are truly identical.
+struct Bits {
+  std::vector<std::uint32_t> words;
+  bool operator==(const Bits&) const = default;
+};
+struct BitsHash {
+  std::size_t operator()(const Bits& b) const {
+    std::uint64_t h = 1469598103934665603ull;  // FNV-1a over the words
+    for (std::uint32_t w : b.words) h = (h ^ w) * 1099511628211ull;
+    return static_cast<std::size_t>(h);
+  }
+};
+
+template <class V>
+void append_bits(Bits& key, const V& value) {
+  for (int i = 0; i < V::length(); ++i) {
+    float f = value[i];
+    if (f == 0.0f) f = 0.0f;  // -0 and +0 weld
+    std::uint32_t w;
+    std::memcpy(&w, &f, sizeof w);
+    key.words.push_back(w);
+  }
+}
+
+// Ids such that two vertices share an id exactly when every attribute is identical; and ids
+// for positions alone (the smoothing neighbourhood).
+struct Welding {
+  std::vector<std::uint32_t> vertex_id;
+  std::vector<std::uint32_t> position_id;
+  std::uint32_t position_count = 0;
+};
+
+Welding weld(const Mesh& mesh) {
+  Welding w;
+  const std::size_t n = mesh.positions.size();
+  w.vertex_id.resize(n);
+  w.position_id.resize(n);
+  std::unordered_map<Bits, std::uint32_t, BitsHash> vertices, positions;
+  Bits key;
+  for (std::size_t i = 0; i < n; ++i) {
+    key.words.clear();
+    append_bits(key, mesh.positions[i]);
+    auto [p, p_new] = positions.try_emplace(key, static_cast<std::uint32_t>(positions.size()));
+    w.position_id[i] = p->second;
+    if (!mesh.texcoords.empty()) append_bits(key, mesh.texcoords[i]);
+    if (!mesh.colors.empty()) append_bits(key, mesh.colors[i]);
+    if (!mesh.tangents.empty()) append_bits(key, mesh.tangents[i]);
+    auto [v, v_new] = vertices.try_emplace(key, static_cast<std::uint32_t>(i));
+    w.vertex_id[i] = v->second;  // the first vertex with these attributes represents them all
+  }
+  w.position_count = static_cast<std::uint32_t>(positions.size());
+  return w;
+}
+
+struct Face {
+  glm::vec3 weighted;  // cross product: length is twice the area
+  glm::vec3 unit;
+  bool degenerate;
+};
+
+Face face_normal(const Mesh& mesh, const Triangle& t) {
+  const glm::vec3& a = mesh.positions[t[0]];
+  glm::vec3 n = glm::cross(mesh.positions[t[1]] - a, mesh.positions[t[2]] - a);
+  float length = glm::length(n);
+  if (!(length > 1e-30f) || !std::isfinite(length)) return {glm::vec3(0.0f), glm::vec3(0.0f), true};
+  return {n, n / length, false};
+}
+
+// Faces around each welded position, in face order (so equal sets sum to equal bits).
+std::vector<std::vector<std::uint32_t>> faces_around(const std::vector<Triangle>& triangles,
+                                                     const std::vector<Face>& faces,
+                                                     const Welding& w) {
+  std::vector<std::vector<std::uint32_t>> around(w.position_count);
+  for (std::size_t f = 0; f < triangles.size(); ++f) {
+    if (faces[f].degenerate) continue;
+    for (std::uint32_t v : triangles[f]) {
+      auto& list = around[w.position_id[v]];
+      if (list.empty() || list.back() != f) list.push_back(static_cast<std::uint32_t>(f));
+    }
+  }
+  return around;
+}
+
+// The normal of one corner: adjacent faces within the crease of its own face. A degenerate
+// face has no normal to compare against, so its corners take every face around them.
+glm::vec3 corner_normal(const std::vector<std::uint32_t>& around, const std::vector<Face>& faces,
+                        std::uint32_t face, float cos_crease) {
+  glm::vec3 sum(0.0f);
+  const Face& own = faces[face];
+  for (std::uint32_t g : around) {
+    if (own.degenerate || glm::dot(own.unit, faces[g].unit) >= cos_crease) sum += faces[g].weighted;
+  }
+  float length = glm::length(sum);
+  if (length > 1e-30f && std::isfinite(length)) return sum / length;
+  return own.degenerate ? glm::vec3(0.0f, 0.0f, 1.0f) : own.unit;
+}
+
+// Corners around a busy position (the centre of a finely divided disc) mostly share their
+// face's normal, so their result is cached: such a vertex costs O(faces), not O(faces^2).
+constexpr std::size_t kBusyPosition = 64;
+
+class CornerNormals {
+ public:
+  CornerNormals(const Welding& w, const std::vector<Face>& faces,
+                const std::vector<std::vector<std::uint32_t>>& around, float cos_crease)
+      : w_(w), faces_(faces), around_(around), cos_crease_(cos_crease) {}
+
+  glm::vec3 operator()(std::uint32_t vertex, std::uint32_t face) {
+    const std::uint32_t position = w_.position_id[vertex];
+    const auto& here = around_[position];
+    if (here.size() <= kBusyPosition) return corner_normal(here, faces_, face, cos_crease_);
+    key_.words.assign({position, faces_[face].degenerate ? 1u : 0u});
+    append_bits(key_, faces_[face].unit);
+    auto [it, fresh] = busy_.try_emplace(key_);
+    if (fresh) it->second = corner_normal(here, faces_, face, cos_crease_);
+    return it->second;
+  }
+
+ private:
+  const Welding& w_;
+  const std::vector<Face>& faces_;
+  const std::vector<std::vector<std::uint32_t>>& around_;
+  float cos_crease_;
+  Bits key_;
+  std::unordered_map<Bits, glm::vec3, BitsHash> busy_;
+};
+
+template <class T>
+void copy_attribute(std::vector<T>& out, const std::vector<T>& in, std::uint32_t from) {
+  if (!in.empty()) out.push_back(in[from]);
+}
+
+}  // namespace
+
+void compute_smooth_normals(Mesh& mesh, float crease_angle_degrees) {
+  mesh.validate();  // the helpers above trust the indices
+  if (mesh.topology == Topology::lines || mesh.positions.empty()) return;
+  const std::vector<Triangle> triangles = triangles_of(mesh);
+  const Welding w = weld(mesh);
+  std::vector<Face> faces(triangles.size());
+  for (std::size_t f = 0; f < triangles.size(); ++f) faces[f] = face_normal(mesh, triangles[f]);
+  const auto around = faces_around(triangles, faces, w);
+  // A little slack so faces that are coplanar up to rounding always smooth together.
+  const float crease = std::clamp(crease_angle_degrees, 0.0f, 180.0f);
+  const float cos_crease = std::cos(glm::radians(crease)) - 1e-5f;
+
+  CornerNormals corner_normals(w, faces, around, cos_crease);
+
+  Mesh out;
+  out.topology = Topology::triangles;
+  out.indices.reserve(triangles.size() * 3);
+  Bits key;
+  std::unordered_map<Bits, std::uint32_t, BitsHash> output_vertex;
+  for (std::size_t f = 0; f < triangles.size(); ++f) {
+    for (std::uint32_t v : triangles[f]) {
+      const std::uint32_t source = w.vertex_id[v];
+      const glm::vec3 n = corner_normals(v, static_cast<std::uint32_t>(f));
+      key.words.assign(1, source);
+      append_bits(key, n);
+      auto [it, added] =
+          output_vertex.try_emplace(key, static_cast<std::uint32_t>(out.positions.size()));
+      if (added) {
+        out.positions.push_back(mesh.positions[source]);
+        out.normals.push_back(n);
+        copy_attribute(out.texcoords, mesh.texcoords, source);
+        copy_attribute(out.colors, mesh.colors, source);
+        copy_attribute(out.tangents, mesh.tangents, source);
+      }
+      out.indices.push_back(it->second);
+    }
+  }
+  mesh = std::move(out);
+}
+
+void compute_tangents(Mesh& mesh) {
+  mesh.validate();
+  if (mesh.topology == Topology::lines || mesh.positions.empty()) return;
+  if (mesh.normals.size() != mesh.positions.size()) compute_smooth_normals(mesh);
+  const std::size_t n = mesh.positions.size();
+  std::vector<glm::vec3> tangent(n, glm::vec3(0.0f)), bitangent(n, glm::vec3(0.0f));
+  if (mesh.texcoords.size() == n) {
+    for (const Triangle& t : triangles_of(mesh)) {
+      glm::vec3 e1 = mesh.positions[t[1]] - mesh.positions[t[0]];
+      glm::vec3 e2 = mesh.positions[t[2]] - mesh.positions[t[0]];
+      glm::vec2 d1 = mesh.texcoords[t[1]] - mesh.texcoords[t[0]];
+      glm::vec2 d2 = mesh.texcoords[t[2]] - mesh.texcoords[t[0]];
+      float det = d1.x * d2.y - d2.x * d1.y;
+      if (!(std::abs(det) > 1e-20f) || !std::isfinite(det)) continue;  // no uv area: no frame
+      // Solve [e1 e2] = [T B] [d1 d2] for the directions of +u (T) and +v (B) on the surface.
+      glm::vec3 tu = (e1 * d2.y - e2 * d1.y) / det;
+      glm::vec3 tv = (e2 * d1.x - e1 * d2.x) / det;
+      if (!std::isfinite(glm::dot(tu, tu)) || !std::isfinite(glm::dot(tv, tv))) continue;
+      for (std::uint32_t v : t) {
+        tangent[v] += tu;
+        bitangent[v] += tv;
+      }
+    }
+  }
+  mesh.tangents.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const glm::vec3 normal = mesh.normals[i];
+    // Gram-Schmidt: the part of the accumulated tangent perpendicular to the normal.
+    glm::vec3 t = tangent[i] - normal * glm::dot(normal, tangent[i]);
+    float length = glm::length(t);
+    if (!(length > 1e-12f) || !std::isfinite(length)) {
+      // No usable uv: any direction perpendicular to the normal keeps normal mapping harmless.
+      glm::vec3 axis = std::abs(normal.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+      t = glm::cross(axis, normal);
+      length = glm::length(t);
+      mesh.tangents[i] = length > 0.0f ? glm::vec4(t / length, 1.0f) : glm::vec4(1, 0, 0, 1);
+      continue;
+    }
+    float w = glm::dot(glm::cross(normal, t), bitangent[i]) < 0.0f ? -1.0f : 1.0f;
+    mesh.tangents[i] = glm::vec4(t / length, w);
+  }
+}
+
+}  // namespace facet

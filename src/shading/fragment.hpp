@@ -1,0 +1,22 @@
+// What a fragment function sees: the pixel's interpolated varyings, its view depth, and the
+// screen-space derivatives of any varying (for mip selection), computed exactly from the
+// triangle's plane equations rather than from neighbouring pixels.
+#pragma once
+
+#include "pipeline/frame.hpp"
+
+namespace facet::shading {
+
+struct Fragment {
+  float v[pipeline::kMaxVaryings];          // perspective-correct varyings
+  float w = 1.0f;                           // clip w = view depth
+  const pipeline::Plane* planes = nullptr;  // v / w planes
+  const pipeline::Plane* inv_w = nullptr;   // 1 / w plane
+
+  // d v[k] / dx in pixels. With V = v/w and W = 1/w planes, v = V/W, so by the quotient rule
+  // dv/dx = (V_x - v * W_x) / W = (V_x - v * W_x) * w.
+  float ddx(int k) const { return (planes[k].dx - v[k] * inv_w->dx) * w; }
+  float ddy(int k) const { return (planes[k].dy - v[k] * inv_w->dy) * w; }
+};
+
+}  // namespace facet::shading

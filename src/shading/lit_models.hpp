@@ -1,0 +1,142 @@
+// The lit shading models with specular light: Gouraud, Phong, Blinn-Phong and physically
+// based (Cook-Torrance, metallic-roughness). See models.hpp for what a model provides.
+#pragma once
+
+#include "shading/brdf.hpp"
+#include "shading/environment.hpp"
+#include "shading/models.hpp"
+
+namespace facet::shading {
+
+// Specular color of a Phong-family material at this fragment (factor x specular map).
+inline glm::vec3 specular_color(const Fragment& f, const DrawUniforms& u) {
+  glm::vec3 s = u.material->specular_color;
+  if (u.material->specular_map) s *= glm::vec3(sample_map(u.material->specular_map, f));
+  return s;
+}
+
+// Mixes in the environment's mirror reflection for materials with reflectivity.
+inline glm::vec3 reflect_environment(glm::vec3 color, const SurfacePoint& s,
+                                     const DrawUniforms& u) {
+  float r = u.material->reflectivity;
+  if (r <= 0.0f || !u.lighting->environment.reflections) return color;
+  glm::vec3 mirror = glm::reflect(-s.view, s.normal);
+  return glm::mix(color, environment_radiance(u.lighting->environment, mirror), r);
+}
+
+// Phong (kBlinn = false) or Blinn-Phong (true), per pixel: ambient + diffuse + specular.
+template <bool kBlinn>
+struct PhongShadingT {
+  static constexpr int kVaryings = kSurfaceVaryingsWithTangent;
+  static constexpr int kNormalSlot = shading::kNormalSlot;
+  static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
+    surface_vertex<true>(in, u, out);
+  }
+  static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
+    SurfacePoint s = surface_point<true>(f, u);
+    glm::vec3 albedo(s.albedo), spec = specular_color(f, u);
+    float shininess = u.material->shininess;
+    glm::vec3 color = albedo * u.ambient;
+    for (int i = 0; i < u.light_count; ++i) {
+      IncidentLight in = incident(u.lights[i], s.position);
+      float n_dot_l = glm::dot(s.normal, in.direction);
+      if (n_dot_l <= 0.0f) continue;
+      float highlight = kBlinn ? blinn_phong_specular(s.normal, s.view, in.direction, shininess)
+                               : phong_specular(s.normal, s.view, in.direction, shininess);
+      color += in.radiance * (albedo * n_dot_l + spec * highlight);
+    }
+    color = reflect_environment(color, s, u);
+    return {color + emission(f, u), s.albedo.a};
+  }
+};
+using PhongShading = PhongShadingT<false>;
+using BlinnPhongShading = PhongShadingT<true>;
+
+// Gouraud: Blinn-Phong evaluated at the vertices; the pixel interpolates diffuse and
+// specular light and applies the texture. Layout: diffuse light (3), specular light (3),
+// texture coordinate (2) — slot 6 like the surface layout, so sample_map works — color (4).
+struct GouraudShading {
+  static constexpr int kVaryings = 12;
+  static constexpr int kNormalSlot = -1;  // lit in vertex(); see face_without_normals()
+  static void light_vertex(glm::vec3 position, glm::vec3 normal, const DrawUniforms& u,
+                           float* out) {
+    glm::vec3 view = safe_normalize(u.eye - position);
+    glm::vec3 diffuse = u.ambient, specular(0.0f);
+    for (int i = 0; i < u.light_count; ++i) {
+      IncidentLight in = incident(u.lights[i], position);
+      float n_dot_l = glm::dot(normal, in.direction);
+      if (n_dot_l <= 0.0f) continue;
+      diffuse += in.radiance * n_dot_l;
+      specular += in.radiance * u.material->specular_color *
+                  blinn_phong_specular(normal, view, in.direction, u.material->shininess);
+    }
+    store(out, diffuse);
+    store(out + 3, specular);
+  }
+  static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
+    glm::vec3 position = glm::vec3(u.model * glm::vec4(in.position, 1.0f));
+    light_vertex(position, in.normal, u, out);
+    store(out + kTexcoordSlot, in.texcoord);
+    store(out + kColorSlot, material_color(in, u));
+  }
+  // A mesh without normals is lit per triangle with its face normal at its centre.
+  static void face_without_normals(glm::vec3 normal, glm::vec3 centre, const DrawUniforms& u,
+                                   float* v[3]) {
+    for (int i = 0; i < 3; ++i) light_vertex(centre, normal, u, v[i]);
+  }
+  static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
+    glm::vec4 albedo = load4(f.v + kColorSlot);
+    if (u.material->base_color_map) albedo *= sample_map(u.material->base_color_map, f);
+    glm::vec3 color = glm::vec3(albedo) * load3(f.v) + load3(f.v + 3);
+    return {color + emission(f, u), albedo.a};
+  }
+};
+
+// Physically based: Cook-Torrance (GGX, Smith, Schlick), metallic-roughness, occlusion,
+// emission, and image-based specular from the environment when reflections are on.
+// Lights are scaled by pi so a white Lambertian surface under a unit light looks as bright as
+// in the Lambert model (the "punctual light" convention of glTF viewers).
+struct PbrShading {
+  static constexpr int kVaryings = kSurfaceVaryingsWithTangent;
+  static constexpr int kNormalSlot = shading::kNormalSlot;
+  static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
+    surface_vertex<true>(in, u, out);
+  }
+  static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
+    const Material& m = *u.material;
+    SurfacePoint s = surface_point<true>(f, u);
+    PbrSurface surface{glm::vec3(s.albedo), m.metallic, m.roughness};
+    if (m.metallic_roughness_map) {
+      glm::vec4 mr = sample_map(m.metallic_roughness_map, f);
+      surface.roughness *= mr.g;  // glTF packing: roughness in green, metallic in blue
+      surface.metallic *= mr.b;
+    }
+    float occlusion = 1.0f;
+    if (m.occlusion_map) {
+      occlusion = 1.0f + m.occlusion_strength * (sample_map(m.occlusion_map, f).r - 1.0f);
+    }
+    glm::vec3 color(0.0f);
+    for (int i = 0; i < u.light_count; ++i) {
+      IncidentLight in = incident(u.lights[i], s.position);
+      float n_dot_l = glm::dot(s.normal, in.direction);
+      if (n_dot_l <= 0.0f) continue;
+      color +=
+          cook_torrance(surface, s.normal, s.view, in.direction) * in.radiance * (n_dot_l * kPi);
+    }
+    glm::vec3 f0 = glm::mix(glm::vec3(0.04f), surface.albedo, surface.metallic);
+    glm::vec3 diffuse_albedo = surface.albedo * (1.0f - surface.metallic);
+    glm::vec3 ambient = u.ambient * (diffuse_albedo + f0 * 0.5f);
+    if (u.lighting->environment.reflections) {
+      // Split-sum-free approximation: the mirror direction, blurred by roughness (mip level).
+      glm::vec3 mirror = glm::reflect(-s.view, s.normal);
+      glm::vec3 fresnel = fresnel_schlick(f0, glm::dot(s.normal, s.view));
+      float blur = surface.roughness * 8.0f;
+      ambient += environment_radiance(u.lighting->environment, mirror, blur) * fresnel *
+                 (1.0f - surface.roughness * 0.7f);
+    }
+    color += ambient * occlusion;
+    return {color + emission(f, u), s.albedo.a};
+  }
+};
+
+}  // namespace facet::shading

@@ -1,0 +1,60 @@
+// Surface helpers for the lit shading models (see surface.hpp).
+#include "shading/surface.hpp"
+
+#include "facet/texture.hpp"
+
+namespace facet::shading {
+
+glm::vec4 sample_map(const TextureMap& map, const Fragment& f) {
+  glm::vec2 uv{f.v[kTexcoordSlot], f.v[kTexcoordSlot + 1]};
+  glm::vec2 uv_t = glm::vec2(map.transform * glm::vec3(uv, 1.0f));
+  float lod = 0.0f;
+  if (map.sampler.filter == Filter::trilinear) {
+    glm::mat2 linear(map.transform);  // derivatives transform by the linear part only
+    glm::vec2 dx = linear * glm::vec2(f.ddx(kTexcoordSlot), f.ddx(kTexcoordSlot + 1));
+    glm::vec2 dy = linear * glm::vec2(f.ddy(kTexcoordSlot), f.ddy(kTexcoordSlot + 1));
+    lod = map.texture->lod(dx, dy);
+  }
+  return map.texture->sample(map.sampler, uv_t, lod);
+}
+
+template <bool kWithTangent>
+SurfacePoint surface_point(const Fragment& f, const DrawUniforms& u) {
+  const Material& m = *u.material;
+  SurfacePoint s;
+  s.position = load3(f.v + kPositionSlot);
+  s.view = safe_normalize(u.eye - s.position);
+  glm::vec3 n = safe_normalize(load3(f.v + kNormalSlot));
+  // Two-sided materials light their back faces as fronts.
+  if (m.cull == CullMode::none && glm::dot(n, s.view) < 0.0f) n = -n;
+  if constexpr (kWithTangent) {
+    glm::vec4 tangent = load4(f.v + kTangentSlot);
+    if (m.normal_map && glm::dot(glm::vec3(tangent), glm::vec3(tangent)) > 0.0f) {
+      // Tangent space -> world: Gram-Schmidt the interpolated tangent against the normal.
+      glm::vec3 t = safe_normalize(glm::vec3(tangent) - n * glm::dot(n, glm::vec3(tangent)));
+      glm::vec3 b = glm::cross(n, t) * (tangent.w < 0.0f ? -1.0f : 1.0f);
+      glm::vec3 texel = glm::vec3(sample_map(m.normal_map, f)) * 2.0f - 1.0f;
+      texel.x *= m.normal_scale;
+      texel.y *= m.normal_scale;
+      glm::vec3 mapped = safe_normalize(t * texel.x + b * texel.y + n * texel.z);
+      if (mapped != glm::vec3(0.0f)) n = mapped;
+    }
+  }
+  s.normal = n;
+  s.albedo = load4(f.v + kColorSlot);
+  if (m.base_color_map) s.albedo *= sample_map(m.base_color_map, f);
+  return s;
+}
+
+template SurfacePoint surface_point<true>(const Fragment&, const DrawUniforms&);
+template SurfacePoint surface_point<false>(const Fragment&, const DrawUniforms&);
+
+glm::vec3 emission(const Fragment& f, const DrawUniforms& u) {
+  const Material& m = *u.material;
+  if (m.emissive == glm::vec3(0.0f)) return glm::vec3(0.0f);
+  glm::vec3 e = m.emissive;
+  if (m.emissive_map) e *= glm::vec3(sample_map(m.emissive_map, f));
+  return e;
+}
+
+}  // namespace facet::shading

@@ -1,0 +1,353 @@
+// Textures: construction with the mipmap chain, texel fetch and filtered sampling.
+// Written once at load (from_rgba8 / from_rgba32f), then read by the shading stage for every
+// textured pixel through sample(), so sample() allocates nothing and calls nothing virtual.
+//
+// Orientation: texture coordinates follow OpenGL, v = 0 is the BOTTOM row of the image
+// (stored row height - 1) and v = 1 the top, while Level rows are stored top first as image
+// files are. The flip happens in one place, flip() below.
+#include "facet/texture.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+
+#include "facet/error.hpp"
+#include "shading/color.hpp"
+
+namespace facet {
+namespace {
+
+constexpr int kMaxTextureSize = 16384;
+
+// 8-bit code -> linear float, for sRGB-encoded color (IEC 61966-2-1) and for plain unorm
+// data (code / 255). Looked up once per sample() call, then indexed per channel.
+struct DecodeTables {
+  std::array<float, 256> srgb;
+  std::array<float, 256> unorm;
+  DecodeTables() {
+    for (int i = 0; i < 256; ++i) {
+      srgb[i] = shading::decode_srgb8(static_cast<std::uint8_t>(i));
+      unorm[i] = static_cast<float>(i) / 255.0f;
+    }
+  }
+};
+
+const DecodeTables& decode_tables() {
+  static const DecodeTables kTables;  // built on first use: no static-initialisation order issue
+  return kTables;
+}
+
+std::string label(const std::string& name) { return name.empty() ? "texture" : name; }
+
+void check_size(int width, int height, std::size_t values, std::size_t expected_per_texel,
+                const std::string& name) {
+  if (width < 1 || height < 1 || width > kMaxTextureSize || height > kMaxTextureSize) {
+    throw Error(label(name) + ": texture size " + std::to_string(width) + "x" +
+                std::to_string(height) + " outside 1x1 .. " + std::to_string(kMaxTextureSize) +
+                "x" + std::to_string(kMaxTextureSize));
+  }
+  const std::size_t expected = static_cast<std::size_t>(width) * height * expected_per_texel;
+  if (values != expected) {
+    throw Error(label(name) + ": texture data has " + std::to_string(values) + " values, " +
+                std::to_string(width) + "x" + std::to_string(height) + " RGBA needs " +
+                std::to_string(expected));
+  }
+}
+
+// Readers of linear RGBA texels of one level, one type per storage format, so the sampling
+// functions below are compiled once per format and fetch texels without a format branch.
+struct Rgba8Reader {
+  const std::uint8_t* texels;
+  int width, height;
+  const float* color;  // decode table for r, g, b: sRGB or unorm
+  const float* alpha;  // decode table for alpha: always unorm (alpha is never sRGB)
+
+  Rgba8Reader(const Texture::Level& level, bool srgb)
+      : texels(level.rgba8.data()), width(level.width), height(level.height) {
+    const DecodeTables& tables = decode_tables();
+    color = srgb ? tables.srgb.data() : tables.unorm.data();
+    alpha = tables.unorm.data();
+  }
+  glm::vec4 operator()(int x, int row) const {
+    const std::uint8_t* p = texels + (static_cast<std::size_t>(row) * width + x) * 4;
+    return {color[p[0]], color[p[1]], color[p[2]], alpha[p[3]]};
+  }
+};
+
+struct FloatReader {
+  const float* texels;
+  int width, height;
+
+  FloatReader(const Texture::Level& level, bool /*srgb: float data is always linear*/)
+      : texels(level.rgba32f.data()), width(level.width), height(level.height) {}
+  glm::vec4 operator()(int x, int row) const {
+    const float* p = texels + (static_cast<std::size_t>(row) * width + x) * 4;
+    return {p[0], p[1], p[2], p[3]};
+  }
+};
+
+// A texel-space coordinate made safe to convert to int: NaN and huge values are clamped
+// (to 2^23: beyond it floats are whole numbers anyway, and +1 still fits in an int).
+float sanitize(float x) {
+  constexpr float kLimit = 8388608.0f;
+  return x > -kLimit ? std::min(x, kLimit) : -kLimit;  // the comparison is false for NaN
+}
+
+// Floor of a sanitized coordinate, without a libm call: truncate, then step down if negative.
+int floor_to_int(float x) {
+  const int t = static_cast<int>(x);
+  return static_cast<float>(t) > x ? t - 1 : t;
+}
+
+// i mod size, always in [0, size). Power-of-two sizes (most textures) take a mask instead of
+// a division: with two's complement, i & (size - 1) is the positive remainder even for i < 0.
+int positive_mod(int i, int size) {
+  if ((size & (size - 1)) == 0) return i & (size - 1);
+  const int m = i % size;
+  return m < 0 ? m + size : m;
+}
+
+// Integer texel coordinate -> a coordinate inside [0, size), OpenGL 4.6 §8.14.2 (table 8.20).
+int wrap(int i, int size, Wrap mode) {
+  switch (mode) {
+    case Wrap::clamp_to_edge:
+      return std::clamp(i, 0, size - 1);
+    case Wrap::mirrored_repeat: {
+      // Period 2 * size: forwards in [0, size), backwards in [size, 2 * size).
+      const int m = positive_mod(i, 2 * size);
+      return m < size ? m : 2 * size - 1 - m;
+    }
+    case Wrap::repeat:
+    default:
+      return positive_mod(i, size);
+  }
+}
+
+// The wrapped pair (i, i + 1) of a bilinear footprint. For repeat the second follows from the
+// first without another division.
+struct TexelPair {
+  int first, second;
+};
+TexelPair wrap_pair(int i, int size, Wrap mode) {
+  if (mode == Wrap::repeat) {
+    const int first = positive_mod(i, size);
+    return {first, first + 1 == size ? 0 : first + 1};
+  }
+  return {wrap(i, size, mode), wrap(i + 1, size, mode)};
+}
+
+// Wrapped texel coordinate along v (counted from the bottom) -> stored row (top first).
+int flip(int j, int height) { return height - 1 - j; }
+
+template <class Reader>
+glm::vec4 sample_nearest(const Reader& read, const Sampler& s, glm::vec2 uv) {
+  const int w = read.width, h = read.height;
+  const int i = floor_to_int(sanitize(uv.x * static_cast<float>(w)));
+  const int j = floor_to_int(sanitize(uv.y * static_cast<float>(h)));
+  return read(wrap(i, w, s.wrap_u), flip(wrap(j, h, s.wrap_v), h));
+}
+
+// Bilinear filter, OpenGL 4.6 §8.14.2: texel centres sit at integer + 0.5, so the four texels
+// around uv * size - 0.5 are blended by the fractional part of that position.
+template <class Reader>
+glm::vec4 sample_bilinear(const Reader& read, const Sampler& s, glm::vec2 uv) {
+  const int w = read.width, h = read.height;
+  const float x = sanitize(uv.x * static_cast<float>(w) - 0.5f);
+  const float y = sanitize(uv.y * static_cast<float>(h) - 0.5f);
+  const int i0 = floor_to_int(x), j0 = floor_to_int(y);
+  const float a = x - static_cast<float>(i0), b = y - static_cast<float>(j0);  // in [0, 1)
+  const TexelPair xs = wrap_pair(i0, w, s.wrap_u), ys = wrap_pair(j0, h, s.wrap_v);
+  const int x0 = xs.first, x1 = xs.second, r0 = flip(ys.first, h), r1 = flip(ys.second, h);
+  const glm::vec4 bottom = read(x0, r0) * (1.0f - a) + read(x1, r0) * a;
+  const glm::vec4 top = read(x0, r1) * (1.0f - a) + read(x1, r1) * a;
+  return bottom * (1.0f - b) + top * b;
+}
+
+// The filter switch of Texture::sample(), for one storage format.
+template <class Reader>
+glm::vec4 sample_levels(const std::vector<Texture::Level>& levels, bool srgb, const Sampler& s,
+                        glm::vec2 uv, float lod) {
+  switch (s.filter) {
+    case Filter::nearest:
+      return sample_nearest(Reader(levels[0], srgb), s, uv);
+    case Filter::bilinear:
+      return sample_bilinear(Reader(levels[0], srgb), s, uv);
+    case Filter::trilinear:
+    default: {
+      // Negative lod is magnification (the base level); NaN also lands on level 0.
+      const float top = static_cast<float>(levels.size() - 1);
+      const float l = lod > 0.0f ? std::min(lod, top) : 0.0f;
+      const int l0 = static_cast<int>(l);
+      const float f = l - static_cast<float>(l0);
+      const glm::vec4 a = sample_bilinear(Reader(levels[l0], srgb), s, uv);
+      if (f <= 0.0f) return a;  // also the last level, where l == top
+      const glm::vec4 b = sample_bilinear(Reader(levels[l0 + 1], srgb), s, uv);
+      return a * (1.0f - f) + b * f;
+    }
+  }
+}
+
+// --- mipmap construction ----------------------------------------------------------------
+
+// Linear RGBA of one texel, whatever the format (texel(); not the hot path).
+glm::vec4 linear_texel(const Texture::Level& level, bool srgb, int x, int y) {
+  if (!level.rgba32f.empty()) return FloatReader(level, false)(x, y);
+  return Rgba8Reader(level, srgb)(x, y);
+}
+
+// encode_srgb8, faster for the millions of texels of a mip chain, and exactly equal to it:
+// [0, 1) is cut into 4096 intervals; as encoding is monotonic, an interval whose two ends
+// encode to the same code maps entirely to it. Only the few intervals holding a code boundary
+// (at most 255 of 4096) ask encode_srgb8 (a binary search).
+class SrgbEncoder {
+ public:
+  SrgbEncoder() {
+    for (int k = 0; k < kIntervals; ++k) {
+      const float lo = static_cast<float>(k) / kIntervals;
+      const float hi = std::nextafter(static_cast<float>(k + 1) / kIntervals, 0.0f);
+      const std::uint8_t a = shading::encode_srgb8(lo), b = shading::encode_srgb8(hi);
+      code_[k] = static_cast<std::int16_t>(a == b ? a : -1);
+    }
+  }
+  std::uint8_t operator()(float linear) const {
+    if (!(linear > 0.0f) || linear >= 1.0f) return shading::encode_srgb8(linear);
+    const int c = code_[static_cast<int>(linear * kIntervals)];  // exact: a power-of-2 scale
+    return c >= 0 ? static_cast<std::uint8_t>(c) : shading::encode_srgb8(linear);
+  }
+
+ private:
+  static constexpr int kIntervals = 4096;
+  std::array<std::int16_t, kIntervals> code_;  // -1: a code boundary inside the interval
+};
+
+const SrgbEncoder& srgb_encoder() {
+  static const SrgbEncoder kEncoder;
+  return kEncoder;
+}
+
+void store_texel(Texture::Level& level, bool srgb, int x, int y, glm::vec4 c) {
+  const std::size_t i = (static_cast<std::size_t>(y) * level.width + x) * 4;
+  if (!level.rgba32f.empty()) {
+    for (int k = 0; k < 4; ++k) level.rgba32f[i + k] = c[k];
+    return;
+  }
+  auto unorm8 = [](float v) {
+    return static_cast<std::uint8_t>(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f);
+  };
+  const SrgbEncoder& encode = srgb_encoder();
+  for (int k = 0; k < 3; ++k) level.rgba8[i + k] = srgb ? encode(c[k]) : unorm8(c[k]);
+  level.rgba8[i + 3] = unorm8(c[3]);
+}
+
+// The next level: each side halved (rounded down, at least 1); each texel the average, in
+// linear space, of the 2x2 source texels it covers, or of fewer where a side is already 1.
+// (On odd sizes the last source row/column is dropped, as a plain 2x2 box filter does.)
+template <class Reader>
+Texture::Level downsample(const Texture::Level& src, bool srgb) {
+  const Reader read(src, srgb);
+  Texture::Level dst;
+  dst.width = std::max(1, src.width / 2);
+  dst.height = std::max(1, src.height / 2);
+  const std::size_t values = static_cast<std::size_t>(dst.width) * dst.height * 4;
+  if (src.rgba32f.empty()) {
+    dst.rgba8.resize(values);
+  } else {
+    dst.rgba32f.resize(values);
+  }
+  const int nx = src.width > 1 ? 2 : 1, ny = src.height > 1 ? 2 : 1;
+  const float weight = 1.0f / static_cast<float>(nx * ny);
+  for (int y = 0; y < dst.height; ++y) {
+    for (int x = 0; x < dst.width; ++x) {
+      glm::vec4 sum(0.0f);
+      for (int dy = 0; dy < ny; ++dy) {
+        for (int dx = 0; dx < nx; ++dx) sum += read(2 * x + dx, 2 * y + dy);
+      }
+      store_texel(dst, srgb, x, y, sum * weight);
+    }
+  }
+  return dst;
+}
+
+void build_mip_chain(std::vector<Texture::Level>& levels, bool srgb) {
+  while (levels.back().width > 1 || levels.back().height > 1) {
+    // Filter from the previous (stored) level, as glGenerateMipmap does: one pass per level.
+    const Texture::Level& last = levels.back();
+    Texture::Level next = last.rgba32f.empty() ? downsample<Rgba8Reader>(last, srgb)
+                                               : downsample<FloatReader>(last, false);
+    levels.push_back(std::move(next));
+  }
+}
+
+}  // namespace
+
+std::shared_ptr<Texture> Texture::from_rgba8(int width, int height, std::vector<std::uint8_t> rgba,
+                                             bool srgb, std::string name) {
+  check_size(width, height, rgba.size(), 4, name);
+  std::shared_ptr<Texture> texture(new Texture());  // the constructor is private: no make_shared
+  texture->format_ = Format::rgba8;
+  texture->srgb_ = srgb;
+  texture->name_ = std::move(name);
+  texture->levels_.push_back(Level{width, height, std::move(rgba), {}});
+  build_mip_chain(texture->levels_, srgb);
+  return texture;
+}
+
+std::shared_ptr<Texture> Texture::from_rgba32f(int width, int height, std::vector<float> rgba,
+                                               std::string name) {
+  check_size(width, height, rgba.size(), 4, name);
+  std::shared_ptr<Texture> texture(new Texture());
+  texture->format_ = Format::rgba32f;
+  texture->name_ = std::move(name);
+  texture->levels_.push_back(Level{width, height, {}, std::move(rgba)});
+  build_mip_chain(texture->levels_, false);
+  return texture;
+}
+
+// x, y address the level as stored: y = 0 is the TOP row (unlike v in sample()).
+glm::vec4 Texture::texel(int level, int x, int y) const {
+  if (level < 0 || level >= level_count() || x < 0 || y < 0 || x >= levels_[level].width ||
+      y >= levels_[level].height) {
+    throw Error(label(name_) + ": texel (" + std::to_string(x) + ", " + std::to_string(y) +
+                ") of level " + std::to_string(level) + " is outside the texture");
+  }
+  return linear_texel(levels_[level], srgb_, x, y);
+}
+
+glm::vec4 Texture::sample(const Sampler& sampler, glm::vec2 uv, float lod) const {
+  if (format_ == Format::rgba32f)
+    return sample_levels<FloatReader>(levels_, false, sampler, uv, lod);
+  return sample_levels<Rgba8Reader>(levels_, srgb_, sampler, uv, lod);
+}
+
+// OpenGL 4.6 §8.14.1, equation 8.4 without anisotropy: rho is the longer of the two
+// screen-pixel footprint edges measured in base-level texels, lod = log2(rho). Computed from
+// squared lengths (0.5 * log2(rho^2)) to save the square roots. Not clamped: sample() does.
+float Texture::lod(glm::vec2 duv_dx, glm::vec2 duv_dy) const {
+  const glm::vec2 size(static_cast<float>(width()), static_cast<float>(height()));
+  const glm::vec2 dx = duv_dx * size, dy = duv_dy * size;
+  const float rho2 = std::max(dx.x * dx.x + dx.y * dx.y, dy.x * dy.x + dy.y * dy.y);
+  return 0.5f * std::log2(rho2);
+}
+
+std::shared_ptr<const Texture> missing_texture() {
+  // Built once, shared by every material whose texture could not be loaded. 8x8 cells of
+  // 8x8 texels: big cells so the pattern stays crisp under bilinear filtering.
+  static const std::shared_ptr<Texture> kMissing = [] {
+    constexpr int kSize = 64, kCell = 8;
+    std::vector<std::uint8_t> rgba(std::size_t{kSize} * kSize * 4);
+    for (int y = 0; y < kSize; ++y) {
+      for (int x = 0; x < kSize; ++x) {
+        const bool magenta = ((x / kCell) + (y / kCell)) % 2 == 0;
+        std::uint8_t* p = &rgba[static_cast<std::size_t>(y * kSize + x) * 4];
+        p[0] = p[2] = magenta ? 255 : 0;
+        p[1] = 0;
+        p[3] = 255;
+      }
+    }
+    return Texture::from_rgba8(kSize, kSize, std::move(rgba), false, "missing texture");
+  }();
+  return kMissing;
+}
+
+}  // namespace facet

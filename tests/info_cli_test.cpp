@@ -1,0 +1,97 @@
+// `facet info MODEL`: prints what a model holds, aligned; errors are one line and exit code 2.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "support/render_helpers.hpp"
+
+namespace facet::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kUsageError = 2;
+
+// Built by appending: GCC 12 warns (-Wrestrict, a false positive) about "'" + path + "'".
+std::string quoted(const std::string& path) {
+  std::string out = "'";
+  out += path;
+  out += "'";
+  return out;
+}
+
+CommandResult run_info(const std::string& args) {
+  return run_command(std::string(FACET_CLI) + " info " + args);
+}
+
+// The value printed after a label such as "triangles", or "" if the label is missing.
+std::string value_of(const std::string& output, const std::string& label) {
+  std::size_t at = output.find("\n" + label + " ");
+  if (output.rfind(label + " ", 0) == 0)
+    at = 0;
+  else if (at == std::string::npos)
+    return "";
+  else
+    ++at;
+  std::size_t start = output.find_first_not_of(' ', at + label.size());
+  return output.substr(start, output.find('\n', start) - start);
+}
+
+TEST(CliInfo, DescribesAGltfModel) {
+  const fs::path model = "/usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb";
+  if (!fs::exists(model)) GTEST_SKIP() << "assimp-testmodels is not installed";
+  CommandResult r = run_info(quoted(model.string()));
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  EXPECT_EQ(r.stderr_text, "");
+  const std::string& out = r.stdout_text;
+  EXPECT_EQ(value_of(out, "file"), model.string());
+  EXPECT_EQ(value_of(out, "meshes"), "1");
+  EXPECT_EQ(value_of(out, "triangles").rfind("12", 0), 0u) << out;
+  EXPECT_EQ(value_of(out, "vertices"), "24");
+  EXPECT_EQ(value_of(out, "bounds"), "min (-0.5, -0.5, -0.5)  max (0.5, 0.5, 0.5)  size (1, 1, 1)");
+  EXPECT_EQ(value_of(out, "materials"), "2");
+  EXPECT_NE(out.find("pbr"), std::string::npos);
+  EXPECT_NE(out.find("base_color embedded:0"), std::string::npos) << out;
+  EXPECT_EQ(value_of(out, "textures"), "1");
+  EXPECT_NE(out.find("mip levels, sRGB"), std::string::npos);
+  EXPECT_NE(value_of(out, "lights"), "");
+  EXPECT_NE(value_of(out, "cameras"), "");
+  EXPECT_NE(value_of(out, "nodes"), "");
+  // Every value starts in the same column.
+  for (const char* label : {"file", "meshes", "triangles", "vertices", "bounds", "textures"}) {
+    std::size_t line = out.find(std::string(label) + " ");
+    ASSERT_NE(line, std::string::npos) << label;
+    EXPECT_EQ(out.find_first_not_of(' ', line + std::string(label).size()) - line, 12u) << label;
+  }
+}
+
+TEST(CliInfo, DescribesADFile) {
+  fs::path file = fs::path(::testing::TempDir()) / "facet_info_square.d";
+  std::ofstream(file) << "data 4 1\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 1 2 3 4\n";
+  CommandResult r = run_info(quoted(file.string()));
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  EXPECT_EQ(value_of(r.stdout_text, "triangles").rfind("2 ", 0), 0u) << r.stdout_text;
+  EXPECT_NE(r.stdout_text.find("blinn_phong"), std::string::npos);
+}
+
+TEST(CliInfo, ErrorsAreOneLineWithExitCode2) {
+  CommandResult missing = run_info("/nonexistent/model.obj");
+  EXPECT_EQ(missing.exit_code, kUsageError);
+  EXPECT_EQ(missing.stdout_text, "");
+  EXPECT_EQ(missing.stderr_text, "facet: error: /nonexistent/model.obj: no such file\n");
+
+  fs::path bad = fs::path(::testing::TempDir()) / "facet_info_bad.d";
+  std::ofstream(bad) << "data 3 1\n0 0 0\n1 0 0\n0 1 0\n3 1 2 7\n";
+  CommandResult out_of_range = run_info(quoted(bad.string()));
+  EXPECT_EQ(out_of_range.exit_code, kUsageError);
+  EXPECT_EQ(out_of_range.stderr_text,
+            "facet: error: " + bad.string() + ":5: polygon index 7 is out of range (1..3)\n");
+
+  CommandResult no_model = run_command(std::string(FACET_CLI) + " info");
+  EXPECT_EQ(no_model.exit_code, kUsageError);
+}
+
+}  // namespace
+}  // namespace facet::test

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -412,3 +413,27 @@ TEST(Texture, UnreadableFilesThrowNamingThePath) {
 
 }  // namespace
 }  // namespace facet
+
+namespace facet::shading {
+namespace {
+
+// The fast sRGB encoder against the definition: round(linear_to_srgb(x) * 255) for a dense
+// sweep of inputs, including each code's exact threshold and its float neighbours.
+TEST(SrgbEncode, MatchesTheDefinitionEverywhere) {
+  auto reference = [](float x) {
+    return static_cast<int>(std::lround(linear_to_srgb(std::clamp(x, 0.0f, 1.0f)) * 255.0f));
+  };
+  int mismatches = 0;
+  for (int i = 0; i <= 1000000; ++i) {
+    float x = static_cast<float>(i) / 1000000.0f;
+    if (encode_srgb8(x) != reference(x)) ++mismatches;
+  }
+  EXPECT_LE(mismatches, 2) << "only values within float rounding of a code boundary may differ";
+  EXPECT_EQ(encode_srgb8(-1.0f), 0);
+  EXPECT_EQ(encode_srgb8(2.0f), 255);
+  EXPECT_EQ(encode_srgb8(std::numeric_limits<float>::quiet_NaN()), 0);
+  for (int code = 0; code < 256; ++code) EXPECT_EQ(encode_srgb8(decode_srgb8(code)), code);
+}
+
+}  // namespace
+}  // namespace facet::shading

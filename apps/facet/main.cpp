@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <exception>
 
+#include "bench_command.hpp"
 #include "facet/error.hpp"
 #include "info_command.hpp"
 #include "render_command.hpp"
@@ -26,6 +27,8 @@ int main(int argc, char** argv) {
   CLI::App* render = facet::cli::add_render_command(app, render_options);
   facet::cli::InfoOptions info_options;
   CLI::App* info = facet::cli::add_info_command(app, info_options);
+  facet::cli::BenchOptions bench_options;
+  CLI::App* bench = facet::cli::add_bench_command(app, bench_options);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
@@ -41,6 +44,7 @@ int main(int argc, char** argv) {
   try {
     if (render->parsed()) return facet::cli::run_render(render_options);
     if (info->parsed()) return facet::cli::run_info(info_options);
+    if (bench->parsed()) return facet::cli::run_bench(bench_options);
   } catch (const facet::Error& e) {
     return fail(e.what());
   } catch (const std::exception& e) {

@@ -17,11 +17,10 @@
 
 #include "facet/error.hpp"
 #include "pipeline/bin.hpp"
+#include "pipeline/geometry.hpp"
 #include "pipeline/output.hpp"
 #include "pipeline/parallel.hpp"
-#include "pipeline/primitive.hpp"
 #include "pipeline/shade.hpp"
-#include "pipeline/vertex.hpp"
 #include "shading/lighting.hpp"
 
 namespace facet {
@@ -172,10 +171,6 @@ void Renderer::Impl::prepare_tiles(const Framebuffer& target) {
 void Renderer::Impl::run(Framebuffer& target) {
   auto start = Clock::now();
   frame.stats = {};
-  frame.triangles.clear();
-  frame.lines.clear();
-  frame.planes.clear();
-  frame.sequence.clear();
   prepare_tiles(target);
   // Per-draw pointers into frame-wide data, set now that the draw list no longer grows.
   frame.lights.clear();
@@ -194,15 +189,9 @@ void Renderer::Impl::run(Framebuffer& target) {
   background.eye = camera.eye;
   background.width = frame.width;
   background.height = frame.height;
-  if (frame.vertices.size() < frame.draws.size()) frame.vertices.resize(frame.draws.size());
 
-  // Geometry: transform, assemble, clip, cull, set up — draws in submission order.
-  for (std::uint32_t d : frame.draw_order) {
-    frame.stats.triangles_in += frame.draws[d].mesh->primitive_count();
-    pipeline::transform_vertices(frame.draws[d], workers, frame.vertices[d]);
-    pipeline::assemble_draw(frame, d);
-  }
-  frame.stats.drawn = frame.triangles.size();
+  // Geometry: transform, assemble, clip, cull, set up — merged in submission order.
+  pipeline::run_geometry(frame, workers);
   frame.stats.ms_geometry = ms_since(start);
 
   auto bin_start = Clock::now();

@@ -76,6 +76,8 @@ struct SetupTriangle {
   std::uint32_t draw;              // index into Frame::draws
 };
 
+inline constexpr std::uint32_t kLineBit = 0x80000000u;
+
 // A line segment ready to rasterize (line.cpp says how lines cover pixels).
 struct SetupLine {
   std::int32_t x0, y0, x1, y1;  // fixed point
@@ -84,7 +86,33 @@ struct SetupLine {
   glm::vec4 color;  // linear RGBA
 };
 
-struct Frame {
+// Set-up primitives in submission order: what primitive assembly + setup produce (per chunk
+// of triangles, in parallel) and what binning and raster read (the frame's merged copy).
+struct PrimitiveBuffer {
+  std::vector<SetupTriangle> triangles;
+  std::vector<SetupLine> lines;
+  std::vector<Plane> planes;  // varying planes, referenced by SetupTriangle::varying_planes
+  // Every primitive in submission order: a triangle index, or a line index with kLineBit set.
+  // Binning walks this so bins keep submission order.
+  std::vector<std::uint32_t> sequence;
+  std::uint64_t culled = 0;   // rejected: outside the frustum, facing away, degenerate
+  std::uint64_t clipped = 0;  // needed clipping
+
+  void clear() {
+    triangles.clear(), lines.clear(), planes.clear(), sequence.clear();
+    culled = clipped = 0;
+  }
+};
+
+// A run of one draw's primitives [begin, end) set up by one task.
+struct GeometryChunk {
+  std::uint32_t draw = 0;
+  std::size_t begin = 0, end = 0;
+  PrimitiveBuffer out;
+};
+
+// The frame: everything above plus the merged primitives it inherits (frame.triangles, ...).
+struct Frame : PrimitiveBuffer {
   int width = 0;
   int height = 0;
   int tile_size = 64;
@@ -95,18 +123,11 @@ struct Frame {
   std::vector<std::uint32_t> draw_order;  // opaque in submission order, then blended far-first
   std::vector<shading::LightData> lights;
   std::vector<std::vector<ClipVertex>> vertices;  // per draw slot, reused
-  std::vector<SetupTriangle> triangles;
-  std::vector<SetupLine> lines;
-  std::vector<Plane> planes;  // varying planes, referenced by SetupTriangle::varying_planes
-  // Every set-up primitive in submission order: a triangle index, or a line index with
-  // kLineBit set. Binning walks this so bins keep submission order.
-  std::vector<std::uint32_t> sequence;
+  std::vector<GeometryChunk> chunks;              // reused across frames
   // One bin per tile, in submission order. An entry is a triangle index, or a line index
   // with kLineBit set.
   std::vector<std::vector<std::uint32_t>> bins;
   FrameStats stats;
 };
-
-inline constexpr std::uint32_t kLineBit = 0x80000000u;
 
 }  // namespace facet::pipeline

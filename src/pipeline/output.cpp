@@ -12,17 +12,29 @@ namespace {
 // Depth of a cleared pixel: the far plane.
 constexpr float kClearDepth = 1.0f;
 
-void store(Framebuffer& target, std::size_t pixel, const glm::vec4& c) {
+// One linear color (scaled by the exposure) as 8-bit sRGB RGBA.
+inline void encode_pixel(const shading::SrgbTables& tables, const glm::vec4& c, float scale,
+                         std::uint8_t* out) {
+  out[0] = shading::encode_srgb8(tables, c.r * scale);
+  out[1] = shading::encode_srgb8(tables, c.g * scale);
+  out[2] = shading::encode_srgb8(tables, c.b * scale);
+  float a = std::clamp(c.a, 0.0f, 1.0f);  // alpha is linear coverage, never sRGB
+  out[3] = static_cast<std::uint8_t>(a * 255.0f + 0.5f);
+}
+
+// Writes one row of linear colors (scaled by the exposure) in the target's format.
+void store_row(Framebuffer& target, std::size_t first_pixel, const glm::vec4* colors, int count,
+               float scale) {
   if (target.format() == ColorFormat::rgba8_srgb) {
-    std::uint8_t* out = target.rgba8().data() + pixel * 4;
-    out[0] = shading::encode_srgb8(c.r);
-    out[1] = shading::encode_srgb8(c.g);
-    out[2] = shading::encode_srgb8(c.b);
-    float a = std::clamp(c.a, 0.0f, 1.0f);  // alpha is linear coverage, never sRGB
-    out[3] = static_cast<std::uint8_t>(a * 255.0f + 0.5f);
+    const shading::SrgbTables& tables = shading::srgb_tables();
+    std::uint8_t* out = target.rgba8().data() + first_pixel * 4;
+    for (int i = 0; i < count; ++i, out += 4) encode_pixel(tables, colors[i], scale, out);
   } else {
-    float* out = target.rgba32f().data() + pixel * 4;
-    out[0] = c.r, out[1] = c.g, out[2] = c.b, out[3] = c.a;
+    float* out = target.rgba32f().data() + first_pixel * 4;
+    for (int i = 0; i < count; ++i, out += 4) {
+      const glm::vec4& c = colors[i];
+      out[0] = c.r * scale, out[1] = c.g * scale, out[2] = c.b * scale, out[3] = c.a;
+    }
   }
 }
 
@@ -53,20 +65,28 @@ void resolve_tile(const TileContext& tile, float scale, Framebuffer& target) {
     const glm::vec4* color = tile.color + static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride;
     const float* depth = tile.depth + static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride;
     std::size_t row = static_cast<std::size_t>(y) * target.width();
-    for (int x = tile.x0; x < tile.x1; ++x) {
-      glm::vec4 c = color[x - tile.x0];
-      store(target, row + x, glm::vec4(glm::vec3(c) * scale, c.a));
-    }
+    store_row(target, row + tile.x0, color, tile.x1 - tile.x0, scale);
     std::copy_n(depth, tile.x1 - tile.x0, target.depth().data() + row + tile.x0);
   }
 }
 
 void resolve_cleared_tile(const TileContext& tile, const glm::vec4& clear, float scale,
                           Framebuffer& target) {
-  glm::vec4 color(glm::vec3(clear) * scale, clear.a);
+  // Convert the clear color once, then copy it across the tile.
+  if (target.format() == ColorFormat::rgba8_srgb) {
+    std::uint8_t pixel[4];
+    encode_pixel(shading::srgb_tables(), clear, scale, pixel);
+    for (int y = tile.y0; y < tile.y1; ++y) {
+      std::size_t row = static_cast<std::size_t>(y) * target.width();
+      std::uint8_t* out = target.rgba8().data() + (row + tile.x0) * 4;
+      for (int x = tile.x0; x < tile.x1; ++x, out += 4) std::copy_n(pixel, 4, out);
+      std::fill_n(target.depth().data() + row + tile.x0, tile.x1 - tile.x0, kClearDepth);
+    }
+    return;
+  }
   for (int y = tile.y0; y < tile.y1; ++y) {
     std::size_t row = static_cast<std::size_t>(y) * target.width();
-    for (int x = tile.x0; x < tile.x1; ++x) store(target, row + x, color);
+    for (int x = tile.x0; x < tile.x1; ++x) store_row(target, row + x, &clear, 1, scale);
     std::fill_n(target.depth().data() + row + tile.x0, tile.x1 - tile.x0, kClearDepth);
   }
 }

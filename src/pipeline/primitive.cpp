@@ -9,14 +9,13 @@
 namespace facet::pipeline {
 namespace {
 
-constexpr unsigned kFrustumSides = kClipLeft | kClipRight | kClipBottom | kClipTop;
-
 bool finite(const glm::vec4& c) {
   return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && std::isfinite(c.w);
 }
 
 struct Assembler {
-  Frame& frame;
+  PrimitiveBuffer& out;
+  int width, height;
   std::uint32_t draw_index;
   const DrawRecord& draw;
   const std::vector<ClipVertex>& vertices;
@@ -53,7 +52,7 @@ struct Assembler {
     glm::vec4 p = a, q = b;
     unsigned planes = outcode(p, guard) | outcode(q, guard);
     if (planes && !clip_segment(p, q, planes, guard)) return;
-    setup_line(frame, p, q, color);
+    setup_line(out, width, height, p, q, color);
   }
 
   void triangle(std::uint32_t i0, std::uint32_t i1, std::uint32_t i2) {
@@ -64,7 +63,7 @@ struct Assembler {
     polygon.vertices[2] = vertices[i2];
     ClipVertex* v = polygon.vertices;
     if (!finite(v[0].clip) || !finite(v[1].clip) || !finite(v[2].clip)) {
-      ++frame.stats.culled;  // NaN/Inf positions: skipped, never rasterized
+      ++out.culled;  // NaN/Inf positions: skipped, never rasterized
       return;
     }
     unsigned out0 = outcode(v[0].clip, frustum), out1 = outcode(v[1].clip, frustum),
@@ -73,7 +72,7 @@ struct Assembler {
     bool front_facing = orientation > 0.0;
     // Trivial reject: all three outside one frustum plane. Zero orientation: degenerate.
     if ((out0 & out1 & out2) || orientation == 0.0 || cull(front_facing)) {
-      ++frame.stats.culled;
+      ++out.culled;
       return;
     }
     const DrawPipeline& pipe = draw.pipeline;
@@ -102,16 +101,16 @@ struct Assembler {
         outcode(v[0].clip, guard) | outcode(v[1].clip, guard) | outcode(v[2].clip, guard);
     if (planes == 0) {
       const ClipVertex* tri[3] = {&v[0], &v[1], &v[2]};
-      if (!setup_triangle(frame, draw_index, tri, pipe.varyings, front_facing))
-        ++frame.stats.culled;
+      if (!setup_triangle(out, width, height, draw_index, tri, pipe.varyings, front_facing))
+        ++out.culled;
       return;
     }
-    ++frame.stats.clipped;
+    ++out.clipped;
     clip_polygon(polygon, planes, guard, pipe.varyings);
     // Fan re-triangulation of the convex clipped polygon.
     for (int i = 1; i + 1 < polygon.count; ++i) {
       const ClipVertex* tri[3] = {&v[0], &v[i], &v[i + 1]};
-      setup_triangle(frame, draw_index, tri, pipe.varyings, front_facing);
+      setup_triangle(out, width, height, draw_index, tri, pipe.varyings, front_facing);
     }
   }
 
@@ -119,7 +118,7 @@ struct Assembler {
     const glm::vec4& a = vertices[i0].clip;
     const glm::vec4& b = vertices[i1].clip;
     if (!finite(a) || !finite(b) || (outcode(a, frustum) & outcode(b, frustum))) {
-      ++frame.stats.culled;
+      ++out.culled;
       return;
     }
     edge(a, b, draw.uniforms.base_color);
@@ -134,33 +133,35 @@ double homogeneous_orientation(const glm::vec4& a, const glm::vec4& b, const glm
   return ax * (by * cw - bw * cy) - ay * (bx * cw - bw * cx) + aw * (bx * cy - by * cx);
 }
 
-void assemble_draw(Frame& frame, std::uint32_t draw_index) {
+void assemble_primitives(const Frame& frame, std::uint32_t draw_index, std::size_t begin,
+                         std::size_t end, PrimitiveBuffer& out) {
   const DrawRecord& draw = frame.draws[draw_index];
   const Mesh& mesh = *draw.mesh;
-  Assembler assembler{frame,        draw_index,
+  Assembler assembler{out,          frame.width,
+                      frame.height, draw_index,
                       draw,         frame.vertices[draw_index],
                       {1.0f, 1.0f}, guard_band_bounds(frame.width, frame.height)};
   auto index = [&](std::size_t i) {
     return mesh.indices.empty() ? static_cast<std::uint32_t>(i) : mesh.indices[i];
   };
-  std::size_t n = mesh.element_count();
-  switch (mesh.topology) {
-    case Topology::triangles:
-      for (std::size_t i = 0; i + 2 < n; i += 3)
-        assembler.triangle(index(i), index(i + 1), index(i + 2));
-      break;
-    case Topology::triangle_strip:
-      // Odd triangles swap their first two vertices so every triangle keeps the strip's winding.
-      for (std::size_t i = 0; i + 2 < n; ++i) {
-        if (i % 2 == 0)
-          assembler.triangle(index(i), index(i + 1), index(i + 2));
-        else
-          assembler.triangle(index(i + 1), index(i), index(i + 2));
-      }
-      break;
-    case Topology::lines:
-      for (std::size_t i = 0; i + 1 < n; i += 2) assembler.line(index(i), index(i + 1));
-      break;
+  for (std::size_t p = begin; p < end; ++p) {
+    switch (mesh.topology) {
+      case Topology::triangles:
+        assembler.triangle(index(3 * p), index(3 * p + 1), index(3 * p + 2));
+        break;
+      case Topology::triangle_strip:
+        // Odd triangles swap their first two vertices so every triangle keeps the strip's
+        // winding.
+        if (p % 2 == 0) {
+          assembler.triangle(index(p), index(p + 1), index(p + 2));
+        } else {
+          assembler.triangle(index(p + 1), index(p), index(p + 2));
+        }
+        break;
+      case Topology::lines:
+        assembler.line(index(2 * p), index(2 * p + 1));
+        break;
+    }
   }
 }
 

@@ -14,7 +14,10 @@ namespace facet::pipeline {
 // conversion using 2D homogeneous coordinates", 1997): the sign of det[x y w] rows.
 double homogeneous_orientation(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c);
 
-// Assembles, culls, clips and sets up every primitive of frame.draws[draw].
-void assemble_draw(Frame& frame, std::uint32_t draw);
+// Assembles, culls, clips and sets up primitives [begin, end) (triangles, or segments for
+// line meshes) of frame.draws[draw] into out. Reads only the frame, so chunks of one draw
+// can run in parallel, each into its own buffer.
+void assemble_primitives(const Frame& frame, std::uint32_t draw, std::size_t begin, std::size_t end,
+                         PrimitiveBuffer& out);
 
 }  // namespace facet::pipeline

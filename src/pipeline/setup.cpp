@@ -45,11 +45,11 @@ Plane make_plane(const float x[3], const float y[3], const float value[3]) {
   return p;
 }
 
-bool setup_triangle(Frame& frame, std::uint32_t draw, const ClipVertex* const v[3], int varyings,
-                    bool front_facing) {
+bool setup_triangle(PrimitiveBuffer& out, int width, int height, std::uint32_t draw,
+                    const ClipVertex* const v[3], int varyings, bool front_facing) {
   ScreenVertex s[3];
   int order[3] = {0, 1, 2};
-  for (int i = 0; i < 3; ++i) s[i] = to_screen(v[i]->clip, frame.width, frame.height);
+  for (int i = 0; i < 3; ++i) s[i] = to_screen(v[i]->clip, width, height);
   std::int64_t area = signed_area(s[0], s[1], s[2]);
   // Degenerate after snapping, or snapping flipped a sliver: no pixel centres to cover.
   if (area == 0 || (area < 0) != front_facing) return false;
@@ -65,8 +65,8 @@ bool setup_triangle(Frame& frame, std::uint32_t draw, const ClipVertex* const v[
                max_y = std::max({s[0].y, s[1].y, s[2].y});
   t.min_x = std::max(0, first_centre_at_or_after(min_x));
   t.min_y = std::max(0, first_centre_at_or_after(min_y));
-  t.max_x = std::min(frame.width - 1, last_centre_at_or_before(max_x));
-  t.max_y = std::min(frame.height - 1, last_centre_at_or_before(max_y));
+  t.max_x = std::min(width - 1, last_centre_at_or_before(max_x));
+  t.max_y = std::min(height - 1, last_centre_at_or_before(max_y));
   if (t.min_x > t.max_x || t.min_y > t.max_y) return false;
 
   for (int i = 0; i < 3; ++i) {
@@ -92,35 +92,34 @@ bool setup_triangle(Frame& frame, std::uint32_t draw, const ClipVertex* const v[
   t.ref_y = py[0];
   t.z = make_plane(px, py, z);
   t.inv_w = make_plane(px, py, inv_w);
-  t.varying_planes = static_cast<std::uint32_t>(frame.planes.size());
+  t.varying_planes = static_cast<std::uint32_t>(out.planes.size());
   for (int k = 0; k < varyings; ++k) {
     float value[3];
     for (int i = 0; i < 3; ++i) value[i] = v[order[i]]->varyings[k] * inv_w[i];
-    frame.planes.push_back(make_plane(px, py, value));
+    out.planes.push_back(make_plane(px, py, value));
   }
   t.draw = draw;
-  frame.sequence.push_back(static_cast<std::uint32_t>(frame.triangles.size()));
-  frame.triangles.push_back(t);
+  out.sequence.push_back(static_cast<std::uint32_t>(out.triangles.size()));
+  out.triangles.push_back(t);
   return true;
 }
 
-bool setup_line(Frame& frame, const glm::vec4& a, const glm::vec4& b, const glm::vec4& color) {
-  ScreenVertex s0 = to_screen(a, frame.width, frame.height);
-  ScreenVertex s1 = to_screen(b, frame.width, frame.height);
+bool setup_line(PrimitiveBuffer& out, int width, int height, const glm::vec4& a, const glm::vec4& b,
+                const glm::vec4& color) {
+  ScreenVertex s0 = to_screen(a, width, height);
+  ScreenVertex s1 = to_screen(b, width, height);
   if (s0.x == s1.x && s0.y == s1.y) return false;
   SetupLine l;
   l.x0 = s0.x, l.y0 = s0.y, l.x1 = s1.x, l.y1 = s1.y;
   l.z0 = s0.z, l.z1 = s1.z;
   l.min_x = std::max(0, static_cast<int>(floor_div(std::min(l.x0, l.x1), kSubpixelScale)));
   l.min_y = std::max(0, static_cast<int>(floor_div(std::min(l.y0, l.y1), kSubpixelScale)));
-  l.max_x =
-      std::min(frame.width - 1, static_cast<int>(floor_div(std::max(l.x0, l.x1), kSubpixelScale)));
-  l.max_y =
-      std::min(frame.height - 1, static_cast<int>(floor_div(std::max(l.y0, l.y1), kSubpixelScale)));
+  l.max_x = std::min(width - 1, static_cast<int>(floor_div(std::max(l.x0, l.x1), kSubpixelScale)));
+  l.max_y = std::min(height - 1, static_cast<int>(floor_div(std::max(l.y0, l.y1), kSubpixelScale)));
   if (l.min_x > l.max_x || l.min_y > l.max_y) return false;
   l.color = color;
-  frame.sequence.push_back(static_cast<std::uint32_t>(frame.lines.size()) | kLineBit);
-  frame.lines.push_back(l);
+  out.sequence.push_back(static_cast<std::uint32_t>(out.lines.size()) | kLineBit);
+  out.lines.push_back(l);
   return true;
 }
 

@@ -42,10 +42,11 @@ inline float evaluate(const Plane& p, float ref_x, float ref_y, float px, float 
 // Sets up one triangle (already clipped to the guard band and in front of the eye) of draw
 // `draw`. `front_facing` is its facing as decided before clipping; the snapped triangle is
 // dropped if it is degenerate or its snapped winding disagrees. Returns true if appended.
-bool setup_triangle(Frame& frame, std::uint32_t draw, const ClipVertex* const v[3], int varyings,
-                    bool front_facing);
+bool setup_triangle(PrimitiveBuffer& out, int width, int height, std::uint32_t draw,
+                    const ClipVertex* const v[3], int varyings, bool front_facing);
 
 // Sets up one clipped segment; returns true if it touches the framebuffer.
-bool setup_line(Frame& frame, const glm::vec4& a, const glm::vec4& b, const glm::vec4& color);
+bool setup_line(PrimitiveBuffer& out, int width, int height, const glm::vec4& a, const glm::vec4& b,
+                const glm::vec4& color);
 
 }  // namespace facet::pipeline

@@ -1,6 +1,8 @@
-// Color-space helpers: sRGB <-> linear conversion (IEC 61966-2-1), used by resolve and tests.
+// Color-space helpers: sRGB <-> linear conversion (IEC 61966-2-1). The 8-bit encode and decode
+// run once per pixel at resolve, so they are table lookups inlined here.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 
@@ -14,12 +16,35 @@ inline float linear_to_srgb(float c) {
   return c <= 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
 }
 
-// Encodes linear [0, 1] (clamped; NaN -> 0) to an 8-bit sRGB value through a table exact to
-// the nearest 8-bit step: the table holds, per output code, the linear threshold where the
-// code begins, and a binary search finds the code. Used once per pixel at resolve.
-std::uint8_t encode_srgb8(float linear);
+// thresholds[i] = linear value at which code i begins (the midpoint between codes i-1 and i in
+// sRGB space, decoded). Encoding is "the largest i with thresholds[i] <= linear", which equals
+// round(linear_to_srgb(linear) * 255) without a pow per pixel.
+//
+// A search per pixel is slow, so a second table gives, for each of kBuckets equal slices of
+// [0, 1), the code at the slice's start. sRGB's steepest slope (12.92 near black) moves at most
+// 12.92 * 255 / 4096 = 0.8 codes across one slice, so the answer is that code or the next:
+// one lookup and one comparison, still exact.
+struct SrgbTables {
+  static constexpr int kBuckets = 4096;
+  std::array<float, 257> thresholds;  // [256] is a sentinel above every input
+  std::array<float, 256> decode;
+  std::array<std::uint8_t, kBuckets> bucket_code;
+  SrgbTables();
+};
 
-// Decodes an 8-bit sRGB code to linear (table lookup).
-float decode_srgb8(std::uint8_t code);
+// Built once (C++ guarantees thread-safe initialisation); callers in loops keep the reference.
+const SrgbTables& srgb_tables();
+
+// Encodes linear [0, 1] (clamped; NaN -> 0) to an 8-bit sRGB code, exactly.
+inline std::uint8_t encode_srgb8(const SrgbTables& t, float linear) {
+  if (!(linear > 0.0f)) return 0;  // also catches NaN
+  if (linear >= 1.0f) return 255;
+  int code = t.bucket_code[static_cast<int>(linear * SrgbTables::kBuckets)];
+  return static_cast<std::uint8_t>(linear >= t.thresholds[code + 1] ? code + 1 : code);
+}
+inline std::uint8_t encode_srgb8(float linear) { return encode_srgb8(srgb_tables(), linear); }
+
+// Decodes an 8-bit sRGB code to linear.
+inline float decode_srgb8(std::uint8_t code) { return srgb_tables().decode[code]; }
 
 }  // namespace facet::shading

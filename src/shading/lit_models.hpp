@@ -30,7 +30,7 @@ struct PhongShadingT {
   static constexpr int kVaryings = kSurfaceVaryingsWithTangent;
   static constexpr int kNormalSlot = shading::kNormalSlot;
   static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
-    surface_vertex<true>(in, u, out);
+    surface_vertex<kVaryings>(in, u, out);
   }
   static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
     SurfacePoint s = surface_point<true>(f, u);
@@ -53,10 +53,12 @@ using PhongShading = PhongShadingT<false>;
 using BlinnPhongShading = PhongShadingT<true>;
 
 // Gouraud: Blinn-Phong evaluated at the vertices; the pixel interpolates diffuse and
-// specular light and applies the texture. Layout: diffuse light (3), specular light (3),
-// texture coordinate (2) — slot 6 like the surface layout, so sample_map works — color (4).
+// specular light and applies the texture. Layout: texture coordinate and color as in the
+// surface layout (so sample_map works), then diffuse light (6-8) and specular light (9-11).
 struct GouraudShading {
   static constexpr int kVaryings = 12;
+  static constexpr int kDiffuseSlot = 6;
+  static constexpr int kSpecularSlot = 9;
   static constexpr int kNormalSlot = -1;  // lit in vertex(); see face_without_normals()
   static void light_vertex(glm::vec3 position, glm::vec3 normal, const DrawUniforms& u,
                            float* out) {
@@ -70,8 +72,8 @@ struct GouraudShading {
       specular += in.radiance * u.material->specular_color *
                   blinn_phong_specular(normal, view, in.direction, u.material->shininess);
     }
-    store(out, diffuse);
-    store(out + 3, specular);
+    store(out + kDiffuseSlot, diffuse);
+    store(out + kSpecularSlot, specular);
   }
   static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
     glm::vec3 position = glm::vec3(u.model * glm::vec4(in.position, 1.0f));
@@ -82,12 +84,12 @@ struct GouraudShading {
   // A mesh without normals is lit per triangle with its face normal at its centre.
   static void face_without_normals(glm::vec3 normal, glm::vec3 centre, const DrawUniforms& u,
                                    float* v[3]) {
-    for (int i = 0; i < 3; ++i) light_vertex(centre, normal, u, v[i]);
+    for (int i = 0; i < 3; ++i) light_vertex(centre, normal, u, v[i]);  // writes slots 6-11
   }
   static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
     glm::vec4 albedo = load4(f.v + kColorSlot);
     if (u.material->base_color_map) albedo *= sample_map(u.material->base_color_map, f);
-    glm::vec3 color = glm::vec3(albedo) * load3(f.v) + load3(f.v + 3);
+    glm::vec3 color = glm::vec3(albedo) * load3(f.v + kDiffuseSlot) + load3(f.v + kSpecularSlot);
     return {color + emission(f, u), albedo.a};
   }
 };
@@ -100,7 +102,7 @@ struct PbrShading {
   static constexpr int kVaryings = kSurfaceVaryingsWithTangent;
   static constexpr int kNormalSlot = shading::kNormalSlot;
   static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
-    surface_vertex<true>(in, u, out);
+    surface_vertex<kVaryings>(in, u, out);
   }
   static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
     const Material& m = *u.material;

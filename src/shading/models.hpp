@@ -38,17 +38,21 @@ inline glm::vec3 diffuse_light(glm::vec3 albedo, glm::vec3 normal, glm::vec3 pos
 }
 
 // A display value (already what the screen should show) stored so that resolve's sRGB encode
-// gives it back: debug views show data, not light.
+// gives it back exactly: debug views show data, not light. Quantizing to the 8-bit code and
+// decoding it through the table is exact and much cheaper than pow().
+inline float display_channel(float v) {
+  return decode_srgb8(static_cast<std::uint8_t>(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f));
+}
 inline glm::vec4 display_value(glm::vec3 shown) {
-  return {srgb_to_linear(shown.x), srgb_to_linear(shown.y), srgb_to_linear(shown.z), 1.0f};
+  return {display_channel(shown.x), display_channel(shown.y), display_channel(shown.z), 1.0f};
 }
 
 // base color x vertex color x base color map, no lighting.
 struct UnlitShading {
-  static constexpr int kVaryings = kSurfaceVaryings;
+  static constexpr int kVaryings = kUnlitVaryings;
   static constexpr int kNormalSlot = -1;
   static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
-    surface_vertex<false>(in, u, out);
+    surface_vertex<kVaryings>(in, u, out);
   }
   static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
     glm::vec4 color = load4(f.v + kColorSlot);
@@ -88,7 +92,7 @@ struct LambertShading {
   static constexpr int kVaryings = kSurfaceVaryings;
   static constexpr int kNormalSlot = shading::kNormalSlot;
   static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
-    surface_vertex<false>(in, u, out);
+    surface_vertex<kVaryings>(in, u, out);
   }
   static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
     SurfacePoint s = surface_point<false>(f, u);

@@ -1,9 +1,11 @@
 // The varying layout shared by the lit shading models, and the per-pixel surface they light:
 // position, (normal-mapped) normal, view direction and albedo with its texture applied.
 //
-//   slot  0-2  world position      8-11  color (material x vertex color), linear RGBA
-//         3-5  world normal       12-15  world tangent, w = handedness
-//         6-7  texture coordinate
+//   slot  0-1  texture coordinate   6-8  world position
+//         2-5  color (material x    9-11  world normal
+//              vertex color)       12-15  world tangent, w = handedness
+// Ordered by how many models need them, so a model that needs fewer interpolates a prefix:
+// unlit uses slots 0-5 only.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -13,11 +15,12 @@
 
 namespace facet::shading {
 
-inline constexpr int kPositionSlot = 0;
-inline constexpr int kNormalSlot = 3;
-inline constexpr int kTexcoordSlot = 6;
-inline constexpr int kColorSlot = 8;
+inline constexpr int kTexcoordSlot = 0;
+inline constexpr int kColorSlot = 2;
+inline constexpr int kPositionSlot = 6;
+inline constexpr int kNormalSlot = 9;
 inline constexpr int kTangentSlot = 12;
+inline constexpr int kUnlitVaryings = 6;                // texture coordinate and color
 inline constexpr int kSurfaceVaryings = 12;             // without tangent
 inline constexpr int kSurfaceVaryingsWithTangent = 16;  // for normal maps
 
@@ -38,14 +41,16 @@ inline glm::vec3 safe_normalize(glm::vec3 v) {
   return length > 0.0f ? v / length : glm::vec3(0.0f);
 }
 
-// Writes the surface layout for one vertex (tangent only when the model has room for it).
-template <bool kWithTangent>
+// Writes the first kCount slots of the surface layout for one vertex.
+template <int kCount>
 void surface_vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
-  store(out + kPositionSlot, glm::vec3(u.model * glm::vec4(in.position, 1.0f)));
-  store(out + kNormalSlot, in.normal);
   store(out + kTexcoordSlot, in.texcoord);
   store(out + kColorSlot, material_color(in, u));
-  if constexpr (kWithTangent) store(out + kTangentSlot, in.tangent);
+  if constexpr (kCount > kPositionSlot) {
+    store(out + kPositionSlot, glm::vec3(u.model * glm::vec4(in.position, 1.0f)));
+    store(out + kNormalSlot, in.normal);
+  }
+  if constexpr (kCount > kTangentSlot) store(out + kTangentSlot, in.tangent);
 }
 
 // Samples a texture map at the fragment's texture coordinate, with the level of detail from

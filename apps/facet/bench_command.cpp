@@ -1,0 +1,133 @@
+// `facet bench` (see bench_command.hpp).
+#include "bench_command.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <vector>
+
+#include "arguments.hpp"
+#include "facet/error.hpp"
+#include "facet/framebuffer.hpp"
+#include "facet/image_io.hpp"
+#include "facet/renderer.hpp"
+#include "scene/bench_scenes.hpp"
+
+namespace facet::cli {
+namespace {
+
+struct SceneResult {
+  std::string name;
+  double median_ms = 0, min_ms = 0, max_ms = 0;
+  double triangles_per_s = 0, pixels_per_s = 0;
+  double geometry_ms = 0, binning_ms = 0, raster_ms = 0;  // medians
+  std::uint64_t triangles = 0, pixels = 0;
+};
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+SceneResult run_scene(const std::string& name, const BenchOptions& o, const ImageSize& size) {
+  auto scene = bench::make_bench_scene(name);  // setup: not timed
+  RenderSettings settings;
+  settings.threads = o.threads;
+  settings.clear_color = scene->clear_color();
+  Renderer renderer(settings);
+  Framebuffer framebuffer(size.width, size.height);
+  const float aspect = static_cast<float>(size.width) / size.height;
+  std::vector<double> total, geometry, binning, raster;
+  using Clock = std::chrono::steady_clock;
+  auto t0 = Clock::now();
+  for (int frame = 0; frame < o.warmup + o.frames; ++frame) {
+    // Animations follow the clock, as in glmark2.
+    double t = std::chrono::duration<double>(Clock::now() - t0).count();
+    auto start = Clock::now();
+    scene->record(renderer, t, aspect);
+    renderer.finish(framebuffer);
+    double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    if (frame < o.warmup) continue;
+    const FrameStats& s = renderer.stats();
+    total.push_back(ms);
+    geometry.push_back(s.ms_geometry);
+    binning.push_back(s.ms_binning);
+    raster.push_back(s.ms_raster);
+  }
+  SceneResult r;
+  r.name = name;
+  r.median_ms = median(total);
+  r.min_ms = *std::min_element(total.begin(), total.end());
+  r.max_ms = *std::max_element(total.begin(), total.end());
+  r.geometry_ms = median(geometry);
+  r.binning_ms = median(binning);
+  r.raster_ms = median(raster);
+  r.triangles = renderer.stats().triangles_in;
+  r.pixels = renderer.stats().pixels_shaded;
+  r.triangles_per_s = r.triangles / (r.median_ms / 1000.0);
+  r.pixels_per_s = r.pixels / (r.median_ms / 1000.0);
+  return r;
+}
+
+void write_json(const std::string& path, const BenchOptions& o, const ImageSize& size,
+                const std::vector<SceneResult>& results) {
+  std::ofstream out(path);
+  if (!out) throw Error(o.json + ": cannot write");
+  out << "{\n  \"size\": \"" << size.width << "x" << size.height
+      << "\",\n  \"threads\": " << o.threads << ",\n  \"frames\": " << o.frames
+      << ",\n  \"scenes\": [\n";
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    const SceneResult& r = results[i];
+    out << "    {\"name\": \"" << r.name << "\", \"median_ms\": " << r.median_ms
+        << ", \"min_ms\": " << r.min_ms << ", \"max_ms\": " << r.max_ms
+        << ", \"triangles_per_s\": " << r.triangles_per_s
+        << ", \"pixels_per_s\": " << r.pixels_per_s << ", \"geometry_ms\": " << r.geometry_ms
+        << ", \"binning_ms\": " << r.binning_ms << ", \"raster_ms\": " << r.raster_ms << "}"
+        << (i + 1 < results.size() ? ",\n" : "\n");
+  }
+  out << "  ]\n}\n";
+}
+
+}  // namespace
+
+CLI::App* add_bench_command(CLI::App& app, BenchOptions& o) {
+  CLI::App* cmd = app.add_subcommand("bench", "Measure ms/frame on the benchmark scenes");
+  std::string names;
+  for (const auto& n : bench::bench_scene_names()) names += (names.empty() ? "" : ", ") + n;
+  cmd->add_option("--scene", o.scene, "Scene to run: " + names + ", or all")->capture_default_str();
+  cmd->add_option("--size", o.size, "Frame size WIDTHxHEIGHT")->capture_default_str();
+  cmd->add_option("--frames", o.frames, "Frames measured per scene (after the warm-up)")
+      ->capture_default_str();
+  cmd->add_option("--warmup", o.warmup, "Frames rendered before measuring")->capture_default_str();
+  cmd->add_option("--threads", o.threads, "Worker threads, 0 = all cores")->capture_default_str();
+  cmd->add_option("--json", o.json, "Also write the results to this JSON file");
+  return cmd;
+}
+
+int run_bench(const BenchOptions& o) {
+  ImageSize size = parse_size("--size", o.size);
+  if (o.frames < 1) throw Error("--frames: must be at least 1");
+  if (o.warmup < 0) throw Error("--warmup: must be 0 or more");
+  if (o.threads < 0) throw Error("--threads: must be 0 (all cores) or more");
+  std::vector<std::string> names =
+      o.scene == "all" ? bench::bench_scene_names() : std::vector<std::string>{o.scene};
+  std::vector<SceneResult> results;
+  std::printf("%-28s %9s %9s %9s %10s %10s %8s %8s %8s\n", "scene", "median", "min", "max",
+              "Mtri/s", "Mpix/s", "geom", "bin", "raster");
+  for (const std::string& name : names) {
+    SceneResult r = run_scene(name, o, size);
+    std::printf("%-28s %9.2f %9.2f %9.2f %10.1f %10.1f %8.2f %8.2f %8.2f\n", r.name.c_str(),
+                r.median_ms, r.min_ms, r.max_ms, r.triangles_per_s / 1e6, r.pixels_per_s / 1e6,
+                r.geometry_ms, r.binning_ms, r.raster_ms);
+    std::fflush(stdout);
+    results.push_back(r);
+  }
+  std::printf("(ms/frame at %dx%d, %d frames after %d warm-up; stage columns are medians in ms)\n",
+              size.width, size.height, o.frames, o.warmup);
+  if (!o.json.empty()) write_json(o.json, o, size, results);
+  return 0;
+}
+
+}  // namespace facet::cli

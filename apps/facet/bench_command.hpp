@@ -1,0 +1,22 @@
+// `facet bench`: renders benchmark scenes for N frames after a warm-up and reports ms/frame
+// (median, min, max), throughput and the time per pipeline stage; optionally as JSON.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+namespace facet::cli {
+
+struct BenchOptions {
+  std::string scene = "all";
+  std::string size = "1920x1080";
+  int frames = 50;
+  int warmup = 5;
+  int threads = 0;
+  std::string json;  // empty: no JSON file
+};
+
+CLI::App* add_bench_command(CLI::App& app, BenchOptions& options);
+int run_bench(const BenchOptions& options);
+
+}  // namespace facet::cli

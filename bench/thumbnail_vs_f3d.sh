@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# thumbnail_vs_f3d.sh — the thumbnailer job, end to end: load a model, render it at 1920x1080
+# and write a PNG; facet against f3d (Debian package f3d, VTK on Mesa llvmpipe) on the same
+# file in the same session. Prints per-run wall times and the medians in milliseconds.
+#
+# Usage: bench/thumbnail_vs_f3d.sh [MODEL] [RUNS]    (default: glmark2's bunny.obj, 7 runs)
+# Needs: a built facet (build/facet), f3d and xvfb (f3d needs an X display; one Xvfb is
+# started for all its runs so the server start-up is not counted).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+MODEL=${1:-/usr/share/glmark2/models/bunny.obj}
+RUNS=${2:-7}
+FACET=build/facet
+OUT=$(mktemp -d)
+trap 'kill $XVFB_PID 2>/dev/null || true; rm -rf "$OUT"' EXIT
+command -v f3d >/dev/null || { echo "f3d is not installed (apt-get install f3d)" >&2; exit 2; }
+command -v Xvfb >/dev/null || { echo "Xvfb is not installed (apt-get install xvfb)" >&2; exit 2; }
+[ -x "$FACET" ] || { echo "build facet first (make build)" >&2; exit 2; }
+
+DISPLAY_NUMBER=97
+Xvfb :$DISPLAY_NUMBER -screen 0 1920x1080x24 >/dev/null 2>&1 &
+XVFB_PID=$!
+sleep 1
+
+millis() { date +%s%N | awk '{ printf "%d", $1 / 1000000 }'; }
+median() { sort -n | awk '{ a[NR] = $1 } END { print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2 }'; }
+
+run_times() {  # command... ; prints one wall time per run
+  for _ in $(seq "$RUNS"); do
+    local start end
+    start=$(millis)
+    "$@" >/dev/null 2>&1
+    end=$(millis)
+    echo $((end - start))
+  done
+}
+
+echo "model: $MODEL, $RUNS runs each, 1920x1080 PNG"
+facet_times=$(run_times "$FACET" render "$MODEL" --size 1920x1080 -o "$OUT/facet.png")
+f3d_times=$(DISPLAY=:$DISPLAY_NUMBER run_times f3d --resolution=1920,1080 --output="$OUT/f3d.png" "$MODEL")
+echo "facet ms: $(echo $facet_times)"
+echo "f3d   ms: $(echo $f3d_times)"
+fm=$(echo "$facet_times" | median)
+dm=$(echo "$f3d_times" | median)
+echo "median facet ${fm} ms, f3d ${dm} ms, f3d/facet $(awk -v a="$dm" -v b="$fm" 'BEGIN { printf "%.1f", a / b }')x"

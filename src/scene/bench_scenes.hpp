@@ -1,0 +1,35 @@
+// Benchmark scenes for `facet bench`: each records one frame at a given time into a renderer.
+// Built-in (bunny-close, bunny-far, million, overdraw, overdraw-front-to-back) here; the
+// glmark2-equivalent scenes in glmark2_scenes.cpp. Models come from Debian's glmark2-data.
+#pragma once
+
+#include <glm/vec4.hpp>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "facet/renderer.hpp"
+
+namespace facet::bench {
+
+class BenchScene {
+ public:
+  virtual ~BenchScene() = default;
+  // Records the frame at time t seconds (animations follow the clock) for a target of the
+  // given aspect: begin_frame + draws. The renderer's finish() is the caller's.
+  virtual void record(Renderer& renderer, double t, float aspect) = 0;
+  virtual glm::vec4 clear_color() const { return {0.0f, 0.0f, 0.0f, 1.0f}; }
+};
+
+// Every scene name, in the order `--scene all` runs them.
+std::vector<std::string> bench_scene_names();
+// Loads the scene (models, textures: setup, not timed). Throws facet::Error for an unknown
+// name or a missing data file.
+std::unique_ptr<BenchScene> make_bench_scene(const std::string& name);
+
+// The glmark2-equivalent scenes (glmark2_scenes.cpp): names, and the factory (nullptr for a
+// name it does not know).
+std::vector<std::string> glmark2_scene_names();
+std::unique_ptr<BenchScene> make_glmark2_scene(const std::string& name);
+
+}  // namespace facet::bench

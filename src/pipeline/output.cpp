@@ -2,6 +2,7 @@
 #include "pipeline/output.hpp"
 
 #include <algorithm>
+#include <cstring>
 
 #include "shading/color.hpp"
 #include "shading/environment.hpp"
@@ -72,15 +73,17 @@ void resolve_tile(const TileContext& tile, float scale, Framebuffer& target) {
 
 void resolve_cleared_tile(const TileContext& tile, const glm::vec4& clear, float scale,
                           Framebuffer& target) {
-  // Convert the clear color once, then copy it across the tile.
+  // Convert the clear color once into one tile row, then copy that row down the tile.
   if (target.format() == ColorFormat::rgba8_srgb) {
     std::uint8_t pixel[4];
     encode_pixel(shading::srgb_tables(), clear, scale, pixel);
+    const int width = tile.x1 - tile.x0;
+    std::uint8_t row_bytes[kMaxTileSize * 4];
+    for (int x = 0; x < width; ++x) std::memcpy(row_bytes + x * 4, pixel, 4);
     for (int y = tile.y0; y < tile.y1; ++y) {
       std::size_t row = static_cast<std::size_t>(y) * target.width();
-      std::uint8_t* out = target.rgba8().data() + (row + tile.x0) * 4;
-      for (int x = tile.x0; x < tile.x1; ++x, out += 4) std::copy_n(pixel, 4, out);
-      std::fill_n(target.depth().data() + row + tile.x0, tile.x1 - tile.x0, kClearDepth);
+      std::memcpy(target.rgba8().data() + (row + tile.x0) * 4, row_bytes, width * 4);
+      std::fill_n(target.depth().data() + row + tile.x0, width, kClearDepth);
     }
     return;
   }

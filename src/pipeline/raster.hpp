@@ -16,6 +16,9 @@
 
 namespace facet::pipeline {
 
+// Largest tile edge the renderer accepts (RenderSettings::tile_size).
+inline constexpr int kMaxTileSize = 128;
+
 // One tile being rendered: owned by one task for the whole frame, so nothing here is shared.
 struct TileContext {
   const Frame* frame = nullptr;
@@ -89,6 +92,11 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
     std::int64_t e1 = t.a[1] * cx + t.b[1] * cy + t.c[1] + t.bias[1];
     std::int64_t e2 = t.a[2] * cx + t.b[2] * cy + t.c[2] + t.bias[2];
     const float py = static_cast<float>(y) + 0.5f;
+    // Plane values at the row, once per row (the same float operations as evaluate()).
+    const float z_row = evaluate_row(t.z, t.ref_y, py);
+    const float inv_w_row = evaluate_row(t.inv_w, t.ref_y, py);
+    float varying_rows[kVaryings > 0 ? kVaryings : 1];
+    for (int k = 0; k < kVaryings; ++k) varying_rows[k] = evaluate_row(f.planes[k], t.ref_y, py);
     float* depth_row =
         tile.depth + static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride - tile.x0;
     glm::vec4* color_row =
@@ -96,13 +104,13 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
     for (int x = x0; x <= x1; ++x, e0 += step[0], e1 += step[1], e2 += step[2]) {
       if ((e0 | e1 | e2) < 0) continue;  // outside some edge (sign bit set)
       const float px = static_cast<float>(x) + 0.5f;
-      const float z = evaluate(t.z, t.ref_x, t.ref_y, px, py);
+      const float z = evaluate_in_row(z_row, t.z, t.ref_x, px);
       if constexpr (kDepthTest) {
         if (!(z < depth_row[x])) continue;  // early depth test (less); NaN fails
       }
-      f.w = 1.0f / evaluate(t.inv_w, t.ref_x, t.ref_y, px, py);
+      f.w = 1.0f / evaluate_in_row(inv_w_row, t.inv_w, t.ref_x, px);
       for (int k = 0; k < kVaryings; ++k) {
-        f.v[k] = evaluate(f.planes[k], t.ref_x, t.ref_y, px, py) * f.w;
+        f.v[k] = evaluate_in_row(varying_rows[k], f.planes[k], t.ref_x, px) * f.w;
       }
       glm::vec4 color = Shading::fragment(f, uniforms);
       if constexpr (kAlpha == AlphaMode::mask) {

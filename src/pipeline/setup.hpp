@@ -35,8 +35,16 @@ inline bool is_top_left(std::int32_t dx, std::int32_t dy) { return (dy == 0 && d
 // Plane through three (x, y, value) points given in pixels, relative to the first point.
 Plane make_plane(const float x[3], const float y[3], const float value[3]);
 
+// Evaluated as (row part) + (column part) so the rasterizer can compute the row part once per
+// row with bit-identical results (evaluate_row then evaluate_in_row).
+inline float evaluate_row(const Plane& p, float ref_y, float py) {
+  return p.at_ref + p.dy * (py - ref_y);
+}
+inline float evaluate_in_row(float row, const Plane& p, float ref_x, float px) {
+  return row + p.dx * (px - ref_x);
+}
 inline float evaluate(const Plane& p, float ref_x, float ref_y, float px, float py) {
-  return p.at_ref + p.dx * (px - ref_x) + p.dy * (py - ref_y);
+  return evaluate_in_row(evaluate_row(p, ref_y, py), p, ref_x, px);
 }
 
 // Sets up one triangle (already clipped to the guard band and in front of the eye) of draw

@@ -18,9 +18,6 @@ SrgbTables::SrgbTables() {
   }
 }
 
-const SrgbTables& srgb_tables() {
-  static const SrgbTables kTables;
-  return kTables;
-}
+const SrgbTables kSrgbTables;
 
 }  // namespace facet::shading

@@ -32,8 +32,10 @@ struct SrgbTables {
   SrgbTables();
 };
 
-// Built once (C++ guarantees thread-safe initialisation); callers in loops keep the reference.
-const SrgbTables& srgb_tables();
+// Built during static initialisation, before main(); nothing reads it earlier (textures and
+// the missing-texture checker are built lazily).
+extern const SrgbTables kSrgbTables;
+inline const SrgbTables& srgb_tables() { return kSrgbTables; }
 
 // Encodes linear [0, 1] (clamped; NaN -> 0) to an 8-bit sRGB code, exactly.
 inline std::uint8_t encode_srgb8(const SrgbTables& t, float linear) {
@@ -45,6 +47,6 @@ inline std::uint8_t encode_srgb8(const SrgbTables& t, float linear) {
 inline std::uint8_t encode_srgb8(float linear) { return encode_srgb8(srgb_tables(), linear); }
 
 // Decodes an 8-bit sRGB code to linear.
-inline float decode_srgb8(std::uint8_t code) { return srgb_tables().decode[code]; }
+inline float decode_srgb8(std::uint8_t code) { return kSrgbTables.decode[code]; }
 
 }  // namespace facet::shading

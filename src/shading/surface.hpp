@@ -8,6 +8,7 @@
 // unlit uses slots 0-5 only.
 #pragma once
 
+#include <cmath>
 #include <glm/glm.hpp>
 
 #include "shading/fragment.hpp"
@@ -37,8 +38,8 @@ inline glm::vec4 material_color(const VertexInput& in, const DrawUniforms& u) {
 }
 
 inline glm::vec3 safe_normalize(glm::vec3 v) {
-  float length = glm::length(v);
-  return length > 0.0f ? v / length : glm::vec3(0.0f);
+  float length_squared = glm::dot(v, v);
+  return length_squared > 0.0f ? v * (1.0f / std::sqrt(length_squared)) : glm::vec3(0.0f);
 }
 
 // Writes the first kCount slots of the surface layout for one vertex.

@@ -44,8 +44,9 @@ class Renderer {
 
   const RenderSettings& settings() const;
 
-  // Starts recording a frame seen from camera under lighting.
-  void begin_frame(const Camera& camera, const Lighting& lighting = {});
+  // Starts recording a frame seen from camera under lighting (default: Lighting{}, one sun).
+  void begin_frame(const Camera& camera, const Lighting& lighting);
+  void begin_frame(const Camera& camera);
   // Records a draw. The mesh is referenced, not copied: it must live until finish().
   void draw(const Mesh& mesh, const Material& material, const glm::mat4& transform = glm::mat4(1));
   // Runs the pipeline for everything recorded since begin_frame() into target.

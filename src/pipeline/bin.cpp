@@ -19,8 +19,11 @@ bool triangle_may_touch(const SetupTriangle& t, int x0, int y0, int x1, int y1) 
   return true;
 }
 
-void bin_primitives(Frame& frame) {
-  for (auto& bin : frame.bins) bin.clear();
+namespace {
+
+// Calls visit(tile, entry) for every tile each primitive may cover, in submission order.
+template <class Visit>
+void for_each_binning(const Frame& frame, Visit&& visit) {
   const int ts = frame.tile_size;
   for (std::uint32_t entry : frame.sequence) {
     int min_x, min_y, max_x, max_y;
@@ -42,10 +45,31 @@ void bin_primitives(Frame& frame) {
                                 std::min((ty + 1) * ts, frame.height))) {
           continue;
         }
-        frame.bins[static_cast<std::size_t>(ty) * frame.tiles_x + tx].push_back(entry);
+        visit(static_cast<std::size_t>(ty) * frame.tiles_x + tx, entry);
       }
     }
   }
+}
+
+}  // namespace
+
+void bin_primitives(Frame& frame) {
+  // Two passes over one arena instead of a growing vector per tile: count, then fill. The
+  // arena only grows when a frame needs more entries than any before (by half again, so an
+  // animated scene settles after a few frames and then allocates nothing).
+  std::size_t tiles = static_cast<std::size_t>(frame.tiles_x) * frame.tiles_y;
+  frame.bin_start.assign(tiles + 1, 0);
+  for_each_binning(frame, [&](std::size_t tile, std::uint32_t) { ++frame.bin_start[tile + 1]; });
+  for (std::size_t i = 0; i < tiles; ++i) frame.bin_start[i + 1] += frame.bin_start[i];
+  std::size_t total = frame.bin_start[tiles];
+  if (frame.bin_entries.capacity() < total) frame.bin_entries.reserve(total + total / 2);
+  frame.bin_entries.resize(total);
+  // Fill, using bin_start as the write cursors, then shift them back to the starts.
+  for_each_binning(frame, [&](std::size_t tile, std::uint32_t entry) {
+    frame.bin_entries[frame.bin_start[tile]++] = entry;
+  });
+  for (std::size_t i = tiles; i > 0; --i) frame.bin_start[i] = frame.bin_start[i - 1];
+  frame.bin_start[0] = 0;
 }
 
 }  // namespace facet::pipeline

@@ -109,6 +109,12 @@ Renderer::~Renderer() = default;
 const RenderSettings& Renderer::settings() const { return impl_->settings; }
 const FrameStats& Renderer::stats() const { return impl_->frame.stats; }
 
+void Renderer::begin_frame(const Camera& camera) {
+  // A shared default, so a frame without lighting builds no Lighting (and allocates nothing).
+  static const Lighting kDefaultLighting;
+  begin_frame(camera, kDefaultLighting);
+}
+
 void Renderer::begin_frame(const Camera& camera, const Lighting& lighting) {
   camera.validate();
   impl_->camera = camera;
@@ -164,7 +170,6 @@ void Renderer::Impl::prepare_tiles(const Framebuffer& target) {
   frame.tiles_x = (frame.width + frame.tile_size - 1) / frame.tile_size;
   frame.tiles_y = (frame.height + frame.tile_size - 1) / frame.tile_size;
   std::size_t tiles = static_cast<std::size_t>(frame.tiles_x) * frame.tiles_y;
-  if (frame.bins.size() < tiles) frame.bins.resize(tiles);
   tile_pixels_shaded.assign(tiles, 0);
 }
 
@@ -217,9 +222,10 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
   tile.x1 = std::min(tile.x0 + ts, frame.width);
   tile.y1 = std::min(tile.y0 + ts, frame.height);
   tile.stride = ts;
-  const auto& bin = frame.bins[index];
+  const std::uint32_t* bin = frame.bin_entries.data() + frame.bin_start[index];
+  const std::uint32_t* bin_end = frame.bin_entries.data() + frame.bin_start[index + 1];
   const float scale = std::exp2(settings.exposure);
-  if (bin.empty() && !background.environment) {
+  if (bin == bin_end && !background.environment) {
     // Lazy clear: nothing drawn here, write the clear values directly.
     pipeline::resolve_cleared_tile(tile, settings.clear_color, scale, target);
     return;
@@ -233,7 +239,8 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
   tile.color = buffers.color.data();
   tile.depth = buffers.depth.data();
   pipeline::clear_tile(tile, background);
-  for (std::uint32_t entry : bin) {
+  for (; bin != bin_end; ++bin) {
+    const std::uint32_t entry = *bin;
     if (entry & pipeline::kLineBit) {
       pipeline::raster_line(tile, frame.lines[entry & ~pipeline::kLineBit]);
     } else {

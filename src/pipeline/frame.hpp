@@ -109,6 +109,10 @@ struct GeometryChunk {
   std::uint32_t draw = 0;
   std::size_t begin = 0, end = 0;
   PrimitiveBuffer out;
+  // Where this chunk's primitives start in the frame's merged buffers.
+  struct Offsets {
+    std::size_t triangles = 0, lines = 0, planes = 0, sequence = 0;
+  } at;
 };
 
 // The frame: everything above plus the merged primitives it inherits (frame.triangles, ...).
@@ -126,7 +130,9 @@ struct Frame : PrimitiveBuffer {
   std::vector<GeometryChunk> chunks;              // reused across frames
   // One bin per tile, in submission order. An entry is a triangle index, or a line index
   // with kLineBit set.
-  std::vector<std::vector<std::uint32_t>> bins;
+  // The bins, one flat arena: tile i's entries are bin_entries[bin_start[i] .. bin_start[i+1]).
+  std::vector<std::uint32_t> bin_start;  // tiles + 1
+  std::vector<std::uint32_t> bin_entries;
   FrameStats stats;
 };
 

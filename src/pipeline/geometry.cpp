@@ -12,6 +12,17 @@ namespace {
 // that a 70k-triangle model splits into dozens of tasks for the cores to share.
 constexpr std::size_t kChunkPrimitives = 2048;
 
+// Sizes a chunk's buffers for every primitive visible and unclipped, so that steady-state
+// frames never grow them (a clipped fan can still add a few; vectors then grow once).
+void reserve(GeometryChunk& chunk, const DrawRecord& draw) {
+  std::size_t n = chunk.end - chunk.begin;
+  bool lines = draw.pipeline.draws_edges || draw.mesh->topology == Topology::lines;
+  chunk.out.triangles.reserve(n);
+  chunk.out.planes.reserve(n * draw.pipeline.varyings);
+  chunk.out.sequence.reserve(lines ? 4 * n : n);
+  if (lines) chunk.out.lines.reserve(3 * n);
+}
+
 // Splits every draw into chunks, in draw order; returns how many.
 std::size_t plan_chunks(Frame& frame) {
   std::size_t count = 0;
@@ -23,6 +34,7 @@ std::size_t plan_chunks(Frame& frame) {
       chunk.draw = d;
       chunk.begin = begin;
       chunk.end = std::min(n, begin + kChunkPrimitives);
+      reserve(chunk, frame.draws[d]);
     }
   }
   return count;
@@ -30,14 +42,10 @@ std::size_t plan_chunks(Frame& frame) {
 
 // Concatenates the chunks' primitives into the frame, fixing up indices.
 void merge_chunks(Frame& frame, std::size_t count, int workers) {
-  struct Offsets {
-    std::size_t triangles, lines, planes, sequence;
-  };
-  std::vector<Offsets> offsets(count);  // small: one per chunk
-  Offsets total{0, 0, 0, 0};
+  GeometryChunk::Offsets total;
   for (std::size_t k = 0; k < count; ++k) {
     const PrimitiveBuffer& out = frame.chunks[k].out;
-    offsets[k] = total;
+    frame.chunks[k].at = total;
     total.triangles += out.triangles.size();
     total.lines += out.lines.size();
     total.planes += out.planes.size();
@@ -45,13 +53,18 @@ void merge_chunks(Frame& frame, std::size_t count, int workers) {
     frame.culled += out.culled;
     frame.clipped += out.clipped;
   }
-  frame.triangles.resize(total.triangles);
-  frame.lines.resize(total.lines);
-  frame.planes.resize(total.planes);
-  frame.sequence.resize(total.sequence);
+  // Grow by half again when a frame needs more than any before, so animated scenes settle.
+  auto resize = [](auto& v, std::size_t n) {
+    if (v.capacity() < n) v.reserve(n + n / 2);
+    v.resize(n);
+  };
+  resize(frame.triangles, total.triangles);
+  resize(frame.lines, total.lines);
+  resize(frame.planes, total.planes);
+  resize(frame.sequence, total.sequence);
   parallel_tasks(static_cast<int>(count), workers, [&](int k, int) {
     const PrimitiveBuffer& out = frame.chunks[k].out;
-    const Offsets& at = offsets[k];
+    const GeometryChunk::Offsets& at = frame.chunks[k].at;
     for (std::size_t i = 0; i < out.triangles.size(); ++i) {
       SetupTriangle t = out.triangles[i];
       t.varying_planes += static_cast<std::uint32_t>(at.planes);

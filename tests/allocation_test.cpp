@@ -1,0 +1,57 @@
+// Steady-state frames allocate nothing on the heap: every per-frame container is cleared and
+// reused. Counted by replacing the global operator new for this test binary.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+#include "facet/scene.hpp"
+#include "scene/bench_scenes.hpp"
+
+namespace {
+std::atomic<long> g_allocations{0};
+}
+
+void* operator new(std::size_t size) {
+  g_allocations.fetch_add(1, std::memory_order_relaxed);
+  if (void* p = std::malloc(size ? size : 1)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+namespace facet::test {
+namespace {
+
+long allocations_in_frames(bench::BenchScene& scene, Renderer& renderer, Framebuffer& fb,
+                           int frames) {
+  long before = g_allocations.load();
+  for (int i = 0; i < frames; ++i) {
+    scene.record(renderer, 0.01 * i, static_cast<float>(fb.width()) / fb.height());
+    renderer.finish(fb);
+  }
+  return g_allocations.load() - before;
+}
+
+TEST(Allocations, SteadyStateFramesAllocateNothing) {
+  for (const char* name : {"overdraw", "million"}) {
+    auto scene = bench::make_bench_scene(name);
+    RenderSettings settings;
+    settings.threads = 2;
+    Renderer renderer(settings);
+    Framebuffer fb(320, 180);
+    allocations_in_frames(*scene, renderer, fb, 5);  // warm-up: buffers grow to size
+    EXPECT_EQ(allocations_in_frames(*scene, renderer, fb, 100), 0) << name;
+  }
+}
+
+TEST(Allocations, TheCounterSeesAllocations) {
+  long before = g_allocations.load();
+  void* p = ::operator new(16);  // a new-expression could be elided; this call cannot
+  ::operator delete(p);
+  EXPECT_GT(g_allocations.load(), before);
+}
+
+}  // namespace
+}  // namespace facet::test

@@ -22,7 +22,7 @@ Xvfb :$DISPLAY_NUMBER -screen 0 1920x1080x24 >/dev/null 2>&1 &
 XVFB_PID=$!
 sleep 1
 
-millis() { date +%s%N | awk '{ printf "%d", $1 / 1000000 }'; }
+millis() { echo $(( $(date +%s%N) / 1000000 )); }
 median() { sort -n | awk '{ a[NR] = $1 } END { print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2 }'; }
 
 run_times() {  # command... ; prints one wall time per run

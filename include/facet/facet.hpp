@@ -13,5 +13,6 @@
 #include "facet/procedural.hpp"
 #include "facet/renderer.hpp"
 #include "facet/scene.hpp"
+#include "facet/sound.hpp"
 #include "facet/teapot.hpp"
 #include "facet/texture.hpp"

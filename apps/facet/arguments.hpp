@@ -12,6 +12,14 @@ struct ImageSize {
   int height = 1080;
 };
 
+// "a, b, c" from a list of names (for help texts and error messages).
+template <class Names>
+std::string joined(const Names& names) {
+  std::string text;
+  for (const auto& name : names) text += (text.empty() ? "" : ", ") + std::string(name);
+  return text;
+}
+
 ImageSize parse_size(const std::string& flag, const std::string& text);
 glm::vec3 parse_vec3(const std::string& flag, const std::string& text);
 // An sRGB color with components in [0, 1], returned as linear RGB.

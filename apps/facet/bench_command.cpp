@@ -94,9 +94,9 @@ void write_json(const std::string& path, const BenchOptions& o, const ImageSize&
 
 CLI::App* add_bench_command(CLI::App& app, BenchOptions& o) {
   CLI::App* cmd = app.add_subcommand("bench", "Measure ms/frame on the benchmark scenes");
-  std::string names;
-  for (const auto& n : bench::bench_scene_names()) names += (names.empty() ? "" : ", ") + n;
-  cmd->add_option("--scene", o.scene, "Scene to run: " + names + ", or all")->capture_default_str();
+  cmd->add_option("--scene", o.scene,
+                  "Scene to run: " + joined(bench::bench_scene_names()) + ", or all")
+      ->capture_default_str();
   cmd->add_option("--size", o.size, "Frame size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--frames", o.frames, "Frames measured per scene (after the warm-up)")
       ->capture_default_str();

@@ -151,7 +151,9 @@ void fit_clip_planes(const Scene& scene, Camera& camera) {
 void add_scene_options(CLI::App& cmd, SceneOptions& o) {
   cmd.add_option("model", o.model,
                  "Model file to draw (OBJ, glTF/GLB, PLY, STL, 3DS, FBX, DAE, OFF, .d, ...)");
-  cmd.add_option("--scene", o.scene, "Built-in scene instead of a model: shapes (default), teapot");
+  cmd.add_option(
+      "--scene", o.scene,
+      "Built-in scene instead of a model: " + joined(builtin_scene_names()) + " (default: shapes)");
   cmd.add_option("--eye", o.eye, "Camera position x,y,z (default: framed automatically)");
   cmd.add_option("--target", o.target, "Point the camera looks at x,y,z (default: the centre)");
   cmd.add_option("--up", o.up, "Camera up direction x,y,z (default: 0,1,0)");
@@ -163,10 +165,9 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o) {
   cmd.add_option("--far", o.far_plane,
                  "Far clip distance, > near (default: from the scene's size)");
   cmd.add_option("--camera", o.camera_index, "Use the model file's camera number N (0-based)");
-  std::string names;
-  for (auto name : shading_model_names()) names += (names.empty() ? "" : ", ") + std::string(name);
   cmd.add_option("--shading", o.shading,
-                 "Shading model for every material: " + names + " (default: each material's own)");
+                 "Shading model for every material: " + joined(shading_model_names()) +
+                     " (default: each material's own)");
   cmd.add_option("--cull", o.cull,
                  "Face culling: back, front or none (default: each material's, back)");
   cmd.add_option("--light", o.lights,
@@ -205,10 +206,8 @@ Scene build_scene(const SceneOptions& o) {
   if (o.shading) {
     ShadingModel model;
     if (!parse_shading_model(*o.shading, model)) {
-      std::string names;
-      for (auto name : shading_model_names())
-        names += (names.empty() ? "" : ", ") + std::string(name);
-      throw Error("--shading: unknown model '" + *o.shading + "' (" + names + ")");
+      throw Error("--shading: unknown model '" + *o.shading + "' (" +
+                  joined(shading_model_names()) + ")");
     }
     for (auto& material : scene.materials) material.shading = model;
   }

@@ -6,6 +6,7 @@
 #include <glm/glm.hpp>
 
 #include "facet/error.hpp"
+#include "facet/islands.hpp"
 #include "facet/teapot.hpp"
 
 namespace facet {
@@ -112,11 +113,12 @@ Camera frame_scene(const Scene& scene, float aspect, float fov_y_degrees) {
   return camera;
 }
 
-std::vector<std::string> builtin_scene_names() { return {"shapes", "teapot"}; }
+std::vector<std::string> builtin_scene_names() { return {"shapes", "teapot", "islands"}; }
 
 Scene make_builtin_scene(const std::string& name) {
   if (name == "shapes") return make_shapes_scene();
   if (name == "teapot") return make_teapot_scene();
+  if (name == "islands") return make_islands_scene();
   std::string known;
   for (const auto& n : builtin_scene_names()) known += (known.empty() ? "" : ", ") + n;
   throw Error("unknown scene '" + name + "' (built-in scenes: " + known + ")");

@@ -7,6 +7,7 @@
 #include "facet/framebuffer.hpp"
 #include "facet/image_io.hpp"
 #include "facet/import.hpp"
+#include "facet/islands.hpp"
 #include "facet/light.hpp"
 #include "facet/material.hpp"
 #include "facet/mesh.hpp"

@@ -14,7 +14,7 @@ bool triangle_may_touch(const SetupTriangle& t, int x0, int y0, int x1, int y1) 
     // E is linear, so its maximum over the rectangle is at the corner its gradient points to.
     std::int64_t x = t.a[i] >= 0 ? right : left;
     std::int64_t y = t.b[i] >= 0 ? bottom : top;
-    if (t.a[i] * x + t.b[i] * y + t.c[i] + t.bias[i] < 0) return false;
+    if (std::int64_t{t.a[i]} * x + std::int64_t{t.b[i]} * y + t.c[i] < 0) return false;
   }
   return true;
 }

@@ -44,11 +44,16 @@ ClipBounds guard_band_bounds(int width, int height) {
           1.0f + 2.0f * kGuardBandPixels / static_cast<float>(height)};
 }
 
-unsigned outcode(const glm::vec4& clip, const ClipBounds& bounds) {
+unsigned outcode(const glm::vec4& c, const ClipBounds& b) {
+  // The same tests as distance() >= 0, written out: this runs for every vertex of every
+  // triangle. A NaN coordinate fails every comparison, so it counts as outside.
   unsigned code = 0;
-  for (int plane = 0; plane < kClipPlaneCount; ++plane) {
-    if (!(distance(clip, plane, bounds) >= 0.0f)) code |= 1u << plane;  // NaN counts as out
-  }
+  if (!(c.z + c.w >= 0.0f)) code |= kClipNear;
+  if (!(c.w - c.z >= 0.0f)) code |= kClipFar;
+  if (!(c.x + b.gx * c.w >= 0.0f)) code |= kClipLeft;
+  if (!(b.gx * c.w - c.x >= 0.0f)) code |= kClipRight;
+  if (!(c.y + b.gy * c.w >= 0.0f)) code |= kClipBottom;
+  if (!(b.gy * c.w - c.y >= 0.0f)) code |= kClipTop;
   return code;
 }
 

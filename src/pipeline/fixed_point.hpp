@@ -20,9 +20,10 @@ inline constexpr std::int32_t kHalfPixel = kSubpixelScale / 2;
 // coverage, which is what makes the fast path and the reference path agree bit for bit.
 inline constexpr float kGuardBandPixels = 8192.0f;
 
-// Snaps a screen coordinate in pixels to fixed point (round to nearest).
+// Snaps a screen coordinate in pixels to fixed point: round to nearest, ties to even (lrint in
+// the default rounding mode: one instruction, where lround is a library call).
 inline std::int32_t snap(float pixels) {
-  return static_cast<std::int32_t>(std::lround(pixels * static_cast<float>(kSubpixelScale)));
+  return static_cast<std::int32_t>(std::lrint(pixels * static_cast<float>(kSubpixelScale)));
 }
 
 // Fixed-point coordinate of the centre of pixel column/row p: pixel centres are at p + 0.5.

@@ -62,11 +62,13 @@ struct Plane {
 };
 
 // A triangle ready to rasterize. Edge i is E_i(X, Y) = a[i]*X + b[i]*Y + c[i] in fixed-point
-// units (fixed_point.hpp), positive inside; a pixel is covered when E_i + bias[i] >= 0 for all
-// three edges, where bias is 0 for top-left edges and -1 otherwise (the fill rule).
+// units (fixed_point.hpp), positive inside; a pixel is covered when E_i >= 0 for all three
+// edges. The fill rule is folded into c: edges that are not top-left have c lowered by 1, so
+// a pixel centre exactly on them (E = 0 before) fails. a and b are differences of snapped
+// coordinates, within 24 bits (fixed_point.hpp), so 32 bits hold them; c needs 64.
 struct SetupTriangle {
-  std::int64_t a[3], b[3], c[3];
-  std::int64_t bias[3];
+  std::int32_t a[3], b[3];
+  std::int64_t c[3];
   float edge_scale[3];             // E_i * edge_scale[i] = distance to edge i in pixels
   int min_x, min_y, max_x, max_y;  // pixel bounding box, inclusive, inside the framebuffer
   float ref_x, ref_y;              // first vertex, in pixels

@@ -97,8 +97,13 @@ struct Assembler {
     }
     if (!pipe.fills_triangles) return;
 
-    unsigned planes =
-        outcode(v[0].clip, guard) | outcode(v[1].clip, guard) | outcode(v[2].clip, guard);
+    // Near and far are the same planes in both bounds; the guard band's sides only need
+    // checking when a vertex is outside the frustum's sides (the guard band contains them).
+    unsigned any_out = out0 | out1 | out2;
+    unsigned planes = any_out & (kClipNear | kClipFar);
+    if (any_out & (kClipLeft | kClipRight | kClipBottom | kClipTop)) {
+      planes = outcode(v[0].clip, guard) | outcode(v[1].clip, guard) | outcode(v[2].clip, guard);
+    }
     if (planes == 0) {
       const ClipVertex* tri[3] = {&v[0], &v[1], &v[2]};
       if (!setup_triangle(out, width, height, draw_index, tri, pipe.varyings, front_facing))

@@ -81,16 +81,17 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
   shading::Fragment f;
   f.planes = tile.frame->planes.data() + t.varying_planes;
   f.inv_w = &t.inv_w;
-  const std::int64_t step[3] = {t.a[0] * kSubpixelScale, t.a[1] * kSubpixelScale,
-                                t.a[2] * kSubpixelScale};
+  const std::int64_t step[3] = {std::int64_t{t.a[0]} * kSubpixelScale,
+                                std::int64_t{t.a[1]} * kSubpixelScale,
+                                std::int64_t{t.a[2]} * kSubpixelScale};
   std::uint64_t shaded = 0;
   for (int y = y0; y <= y1; ++y) {
     const std::int64_t cy = pixel_centre(y);
     const std::int64_t cx = pixel_centre(x0);
     // Each row starts from an exact evaluation, then steps by a (integer, so exact too).
-    std::int64_t e0 = t.a[0] * cx + t.b[0] * cy + t.c[0] + t.bias[0];
-    std::int64_t e1 = t.a[1] * cx + t.b[1] * cy + t.c[1] + t.bias[1];
-    std::int64_t e2 = t.a[2] * cx + t.b[2] * cy + t.c[2] + t.bias[2];
+    std::int64_t e0 = t.a[0] * cx + t.b[0] * cy + t.c[0];
+    std::int64_t e1 = t.a[1] * cx + t.b[1] * cy + t.c[1];
+    std::int64_t e2 = t.a[2] * cx + t.b[2] * cy + t.c[2];
     const float py = static_cast<float>(y) + 0.5f;
     // Plane values at the row, once per row (the same float operations as evaluate()).
     const float z_row = evaluate_row(t.z, t.ref_y, py);

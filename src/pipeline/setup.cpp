@@ -31,18 +31,24 @@ ScreenVertex to_screen(const glm::vec4& clip, int width, int height) {
   return {snap(sx), snap(sy), ndc_z * 0.5f + 0.5f, inv_w};
 }
 
-Plane make_plane(const float x[3], const float y[3], const float value[3]) {
-  // Solve value = at_ref + dx * (x - x0) + dy * (y - y0) through the three points (Cramer).
-  // Double precision: the 2x2 system can be badly conditioned for slivers.
-  double x1 = double{x[1]} - x[0], y1 = double{y[1]} - y[0];
-  double x2 = double{x[2]} - x[0], y2 = double{y[2]} - y[0];
+PlaneSolver::PlaneSolver(const float x[3], const float y[3])
+    : x1_(double{x[1]} - x[0]),
+      y1_(double{y[1]} - y[0]),
+      x2_(double{x[2]} - x[0]),
+      y2_(double{y[2]} - y[0]),
+      inv_det_(1.0 / (x1_ * y2_ - x2_ * y1_)) {}
+
+Plane PlaneSolver::plane(const float value[3]) const {
   double v1 = double{value[1]} - value[0], v2 = double{value[2]} - value[0];
-  double det = x1 * y2 - x2 * y1;
   Plane p;
   p.at_ref = value[0];
-  p.dx = static_cast<float>((v1 * y2 - v2 * y1) / det);
-  p.dy = static_cast<float>((v2 * x1 - v1 * x2) / det);
+  p.dx = static_cast<float>((v1 * y2_ - v2 * y1_) * inv_det_);
+  p.dy = static_cast<float>((v2 * x1_ - v1 * x2_) * inv_det_);
   return p;
+}
+
+Plane make_plane(const float x[3], const float y[3], const float value[3]) {
+  return PlaneSolver(x, y).plane(value);
 }
 
 bool setup_triangle(PrimitiveBuffer& out, int width, int height, std::uint32_t draw,
@@ -73,10 +79,10 @@ bool setup_triangle(PrimitiveBuffer& out, int width, int height, std::uint32_t d
     const ScreenVertex& p = s[i];
     const ScreenVertex& q = s[(i + 1) % 3];
     // E(X, Y) = (qx - px)(Y - py) - (qy - py)(X - px): positive inside a clockwise triangle.
-    t.a[i] = std::int64_t{p.y} - q.y;
-    t.b[i] = std::int64_t{q.x} - p.x;
-    t.c[i] = -(t.a[i] * p.x + t.b[i] * p.y);
-    t.bias[i] = is_top_left(q.x - p.x, q.y - p.y) ? 0 : -1;
+    t.a[i] = p.y - q.y;
+    t.b[i] = q.x - p.x;
+    const std::int64_t bias = is_top_left(q.x - p.x, q.y - p.y) ? 0 : -1;
+    t.c[i] = -(std::int64_t{t.a[i]} * p.x + std::int64_t{t.b[i]} * p.y) + bias;
     double length = std::sqrt(double(t.a[i]) * t.a[i] + double(t.b[i]) * t.b[i]);
     t.edge_scale[i] = static_cast<float>(1.0 / (length * kSubpixelScale));
   }
@@ -90,13 +96,14 @@ bool setup_triangle(PrimitiveBuffer& out, int width, int height, std::uint32_t d
   }
   t.ref_x = px[0];
   t.ref_y = py[0];
-  t.z = make_plane(px, py, z);
-  t.inv_w = make_plane(px, py, inv_w);
+  const PlaneSolver solver(px, py);
+  t.z = solver.plane(z);
+  t.inv_w = solver.plane(inv_w);
   t.varying_planes = static_cast<std::uint32_t>(out.planes.size());
   for (int k = 0; k < varyings; ++k) {
     float value[3];
     for (int i = 0; i < 3; ++i) value[i] = v[order[i]]->varyings[k] * inv_w[i];
-    out.planes.push_back(make_plane(px, py, value));
+    out.planes.push_back(solver.plane(value));
   }
   t.draw = draw;
   out.sequence.push_back(static_cast<std::uint32_t>(out.triangles.size()));

@@ -32,7 +32,20 @@ inline std::int64_t signed_area(const ScreenVertex& v0, const ScreenVertex& v1,
 // only if that edge is top or left, so a shared edge is covered exactly once.
 inline bool is_top_left(std::int32_t dx, std::int32_t dy) { return (dy == 0 && dx > 0) || dy < 0; }
 
-// Plane through three (x, y, value) points given in pixels, relative to the first point.
+// Planes through three screen points (pixels): value = at_ref + dx*(x - x0) + dy*(y - y0).
+// The 2x2 system is the same for every attribute of a triangle, so it is inverted once
+// (Cramer's rule, in double: it can be badly conditioned for slivers) and each plane then
+// costs a few multiplications.
+class PlaneSolver {
+ public:
+  PlaneSolver(const float x[3], const float y[3]);
+  Plane plane(const float value[3]) const;
+
+ private:
+  double x1_, y1_, x2_, y2_, inv_det_;
+};
+
+// One plane through three (x, y, value) points (a PlaneSolver used once).
 Plane make_plane(const float x[3], const float y[3], const float value[3]);
 
 // Evaluated as (row part) + (column part) so the rasterizer can compute the row part once per

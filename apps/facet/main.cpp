@@ -8,6 +8,7 @@
 #include "facet/error.hpp"
 #include "info_command.hpp"
 #include "render_command.hpp"
+#include "view_command.hpp"
 
 namespace {
 
@@ -29,6 +30,8 @@ int main(int argc, char** argv) {
   CLI::App* info = facet::cli::add_info_command(app, info_options);
   facet::cli::BenchOptions bench_options;
   CLI::App* bench = facet::cli::add_bench_command(app, bench_options);
+  facet::cli::ViewOptions view_options;
+  CLI::App* view = facet::cli::add_view_command(app, view_options);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
@@ -45,6 +48,7 @@ int main(int argc, char** argv) {
     if (render->parsed()) return facet::cli::run_render(render_options);
     if (info->parsed()) return facet::cli::run_info(info_options);
     if (bench->parsed()) return facet::cli::run_bench(bench_options);
+    if (view->parsed()) return facet::cli::run_view(view_options);
   } catch (const facet::Error& e) {
     return fail(e.what());
   } catch (const std::exception& e) {

@@ -1,0 +1,29 @@
+// `facet view`: an interactive window on a model or a built-in scene (the islands world is
+// animated by time), with first-person controls; also scripted (--frames, --screenshot).
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <optional>
+#include <string>
+
+#include "scene_options.hpp"
+
+namespace facet::cli {
+
+struct ViewOptions {
+  SceneOptions scene;
+  std::string size = "1280x720";  // render resolution, independent of the window
+  int threads = 0;
+  int frames = 0;              // 0: run until the window is closed
+  std::string screenshot;      // empty: none
+  std::optional<double> time;  // fixed animation time in seconds; unset: the real clock
+};
+
+// Adds the `view` subcommand and its flags to app; options are filled on parse.
+CLI::App* add_view_command(CLI::App& app, ViewOptions& options);
+
+// Opens the window and runs the loop; throws facet::Error on bad values or with no display.
+// Returns the exit code.
+int run_view(const ViewOptions& options);
+
+}  // namespace facet::cli

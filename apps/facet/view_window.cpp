@@ -1,0 +1,80 @@
+// The viewer's SDL window (see view_window.hpp).
+#include "view_window.hpp"
+
+#define SDL_MAIN_HANDLED  // facet has its own main(); SDL must not rename it
+#include <SDL.h>
+
+#include <cstdlib>
+
+#include "facet/error.hpp"
+
+namespace facet::cli {
+namespace {
+
+const char* const kNoDisplayHint =
+    "; run it under a virtual display with `xvfb-run -a facet view ...`, or render to a file "
+    "with `facet render`";
+
+bool has_env(const char* name) {
+  const char* value = std::getenv(name);
+  return value && *value;
+}
+
+}  // namespace
+
+ViewWindow::ViewWindow(const std::string& title, int width, int height)
+    : width_(width), height_(height) {
+  // With no display named and no driver forced, SDL could only fail (or grab the console
+  // through KMSDRM), so say so plainly instead of passing on SDL's message.
+  if (!has_env("SDL_VIDEODRIVER") && !has_env("DISPLAY") && !has_env("WAYLAND_DISPLAY")) {
+    throw Error(std::string("view: no display (DISPLAY is not set)") + kNoDisplayHint);
+  }
+  SDL_SetMainReady();
+  if (SDL_Init(SDL_INIT_VIDEO) != 0) {
+    std::string message = SDL_GetError();
+    SDL_Quit();
+    throw Error("view: cannot open the display (" + message + ")" + kNoDisplayHint);
+  }
+  window_ = SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, width,
+                             height, SDL_WINDOW_RESIZABLE);
+  if (window_) renderer_ = SDL_CreateRenderer(window_, -1, SDL_RENDERER_SOFTWARE);
+  SDL_SetHint(SDL_HINT_RENDER_SCALE_QUALITY, "linear");  // smooth scaling of the texture
+  // The frame is uploaded as bytes R, G, B, A, which SDL_PIXELFORMAT_RGBA32 names on any
+  // endianness.
+  if (renderer_) {
+    texture_ = SDL_CreateTexture(renderer_, SDL_PIXELFORMAT_RGBA32, SDL_TEXTUREACCESS_STREAMING,
+                                 width, height);
+  }
+  if (!texture_) {
+    std::string message = std::string("view: cannot create the window (") + SDL_GetError() + ")";
+    close();
+    throw Error(message);
+  }
+  // A logical size scales the frame to the window keeping its aspect ratio, with black bars:
+  // rendering cost depends only on the render resolution, never on the window.
+  SDL_RenderSetLogicalSize(renderer_, width, height);
+}
+
+ViewWindow::~ViewWindow() { close(); }
+
+void ViewWindow::close() {
+  if (texture_) SDL_DestroyTexture(texture_);
+  if (renderer_) SDL_DestroyRenderer(renderer_);
+  if (window_) SDL_DestroyWindow(window_);
+  texture_ = nullptr, renderer_ = nullptr, window_ = nullptr;
+  SDL_Quit();
+}
+
+void ViewWindow::present(const Framebuffer& frame) {
+  if (frame.width() != width_ || frame.height() != height_ ||
+      frame.format() != ColorFormat::rgba8_srgb) {
+    throw Error("view: the frame does not match the window's texture");
+  }
+  SDL_UpdateTexture(texture_, nullptr, frame.rgba8().data(), width_ * 4);
+  SDL_SetRenderDrawColor(renderer_, 0, 0, 0, 255);
+  SDL_RenderClear(renderer_);
+  SDL_RenderCopy(renderer_, texture_, nullptr, nullptr);
+  SDL_RenderPresent(renderer_);
+}
+
+}  // namespace facet::cli

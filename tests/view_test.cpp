@@ -1,0 +1,103 @@
+// `facet view` without a person at the keyboard: scripted frames under Xvfb match `facet render`
+// of the same camera, the islands' animation is a function of --time, and with no display the
+// command fails with one line that points to xvfb-run.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "support/golden.hpp"
+#include "support/render_helpers.hpp"
+
+namespace facet::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kUsageError = 2;
+
+fs::path fresh_dir(const std::string& name) {
+  fs::path dir = fs::path(::testing::TempDir()) / ("facet_view_" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+bool have_xvfb() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 0; }
+
+// Runs `facet view <args>` on a fresh virtual display. In sanitizer builds, leak reports are
+// turned off for this child: libX11 and SDL keep allocations until exit that are not ours.
+CommandResult run_view_under_xvfb(const std::string& args) {
+  return run_command(std::string("ASAN_OPTIONS=\"${ASAN_OPTIONS}:detect_leaks=0\" ") +
+                     "xvfb-run -a -s \"-screen 0 1280x720x24\" " + FACET_CLI + " view " + args);
+}
+
+// Pixels differ by at most the golden tolerance: channel delta, and the fraction of outliers.
+void expect_images_match(const Rgba8Image& a, const Rgba8Image& b) {
+  ASSERT_EQ(a.width, b.width);
+  ASSERT_EQ(a.height, b.height);
+  ASSERT_EQ(a.pixels.size(), b.pixels.size());
+  std::size_t outliers = 0;
+  for (std::size_t p = 0; p < a.pixels.size(); p += 4) {
+    int delta = 0;
+    for (std::size_t c = 0; c < 4; ++c)
+      delta = std::max(delta, std::abs(a.pixels[p + c] - b.pixels[p + c]));
+    if (delta > kGoldenTolerance.max_channel_delta) ++outliers;
+  }
+  double fraction = static_cast<double>(outliers) / (a.pixels.size() / 4);
+  EXPECT_LE(fraction, kGoldenTolerance.max_outlier_fraction) << outliers << " pixels differ";
+}
+
+TEST(View, ScriptedFramesMatchRenderOfTheSameCamera) {
+  if (!have_xvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+  fs::path dir = fresh_dir("shapes");
+  std::string shot = (dir / "v.png").string();
+  CommandResult r =
+      run_view_under_xvfb("--scene shapes --frames 3 --size 320x180 --screenshot '" + shot + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  EXPECT_NE(r.stdout_text.find("3 frames"), std::string::npos) << r.stdout_text;
+  std::string rendered = (dir / "r.png").string();
+  CommandResult rr = run_command(std::string(FACET_CLI) +
+                                 " render --scene shapes --size 320x180 -o '" + rendered + "'");
+  ASSERT_EQ(rr.exit_code, 0) << rr.stderr_text;
+  Rgba8Image view = read_png(shot);
+  EXPECT_EQ(view.width, 320);
+  EXPECT_EQ(view.height, 180);
+  expect_images_match(view, read_png(rendered));
+}
+
+TEST(View, IslandsAtAFixedTimeAreDeterministic) {
+  if (!have_xvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+  fs::path dir = fresh_dir("islands");
+  std::string shots[2] = {(dir / "a.png").string(), (dir / "b.png").string()};
+  for (const std::string& shot : shots) {
+    CommandResult r = run_view_under_xvfb(
+        "--scene islands --frames 2 --time 5 --size 320x180 "
+        "--screenshot '" +
+        shot + "'");
+    ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  }
+  Rgba8Image a = read_png(shots[0]);
+  Rgba8Image b = read_png(shots[1]);
+  EXPECT_EQ(a.width, 320);
+  EXPECT_EQ(a.height, 180);
+  EXPECT_TRUE(a.pixels == b.pixels) << "the same --time gave different images";
+}
+
+TEST(View, WithoutADisplayFailsWithOneLineSuggestingXvfb) {
+  fs::path dir = fresh_dir("nodisplay");
+  std::string shot = (dir / "v.png").string();
+  CommandResult r =
+      run_command(std::string("ASAN_OPTIONS=\"${ASAN_OPTIONS}:detect_leaks=0\" ") +
+                  "env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER " + FACET_CLI +
+                  " view --scene shapes --frames 1 --size 64x36 " + "--screenshot '" + shot + "'");
+  EXPECT_EQ(r.exit_code, kUsageError);
+  EXPECT_EQ(std::count(r.stderr_text.begin(), r.stderr_text.end(), '\n'), 1) << r.stderr_text;
+  EXPECT_NE(r.stderr_text.find("xvfb-run"), std::string::npos) << r.stderr_text;
+  EXPECT_FALSE(fs::exists(shot));
+}
+
+}  // namespace
+}  // namespace facet::test

@@ -62,6 +62,16 @@ Light parse_light(const std::string& text) {
         "spot,X,Y,Z,DX,DY,DZ[,INNER,OUTER[,R,G,B[,I]]], got '" +
         text + "'");
   }
+  // The renderer would quietly replace a zero direction and clamp the cones; say so instead.
+  if (kind != "point" && glm::length(light.direction) == 0.0f)
+    throw Error("--light: the direction must not be 0,0,0 in '" + text + "'");
+  if (glm::any(glm::lessThan(light.color, glm::vec3(0.0f))) || light.intensity < 0.0f)
+    throw Error("--light: color and intensity must not be negative in '" + text + "'");
+  if (kind == "spot" &&
+      !(light.inner_cone_degrees >= 0.0f && light.inner_cone_degrees <= light.outer_cone_degrees &&
+        light.outer_cone_degrees <= 90.0f)) {
+    throw Error("--light: spot cones need 0 <= INNER <= OUTER <= 90 degrees in '" + text + "'");
+  }
   return light;
 }
 
@@ -119,19 +129,17 @@ void apply_texture(const SceneOptions& o, Scene& scene) {
   scene.textures.push_back(texture);
 }
 
+EnvironmentProjection parse_environment_projection(const std::string& text) {
+  if (text == "equirectangular") return EnvironmentProjection::equirectangular;
+  if (text == "sphere") return EnvironmentProjection::sphere_map;
+  throw Error("--env-projection: expected equirectangular or sphere, got '" + text + "'");
+}
+
 void apply_environment(const SceneOptions& o, Scene& scene) {
   Environment& env = scene.lighting.environment;
   if (*o.environment != "sky") env.image = load_texture(*o.environment, true);
-  if (o.environment_projection) {
-    if (*o.environment_projection == "equirectangular") {
-      env.projection = EnvironmentProjection::equirectangular;
-    } else if (*o.environment_projection == "sphere") {
-      env.projection = EnvironmentProjection::sphere_map;
-    } else {
-      throw Error("--env-projection: expected equirectangular or sphere, got '" +
-                  *o.environment_projection + "'");
-    }
-  }
+  if (o.environment_projection)
+    env.projection = parse_environment_projection(*o.environment_projection);
   env.reflections = true;
   env.show_as_background = true;
 }
@@ -193,6 +201,10 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o) {
 
 Scene build_scene(const SceneOptions& o) {
   if (!o.model.empty() && o.scene) throw Error("give a model file or --scene, not both");
+  // Values of flags that only act with another flag are still checked, so a typo never passes
+  // silently (and fails before the model is imported).
+  glm::vec3 fog_color = o.fog_color ? parse_color("--fog-color", *o.fog_color) : glm::vec3(0.0f);
+  if (o.environment_projection) parse_environment_projection(*o.environment_projection);
   Scene scene;
   if (o.model.empty()) {
     scene = make_builtin_scene(o.scene.value_or("shapes"));
@@ -232,7 +244,7 @@ Scene build_scene(const SceneOptions& o) {
   }
   if (o.fog) {
     scene.lighting.fog = parse_fog(*o.fog, scene);
-    if (o.fog_color) scene.lighting.fog.color = parse_color("--fog-color", *o.fog_color);
+    if (o.fog_color) scene.lighting.fog.color = fog_color;
   }
   return scene;
 }

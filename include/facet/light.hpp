@@ -15,9 +15,9 @@ enum class LightType { directional, point, spot };
 
 struct Light {
   LightType type = LightType::directional;
-  glm::vec3 position{0.0f};                   // point and spot (world space)
+  glm::vec3 position{0.0f};                  // point and spot (world space)
   glm::vec3 direction{-0.4f, -1.0f, -0.6f};  // directional and spot: where the light travels
-  glm::vec3 color{1.0f};                      // linear RGB
+  glm::vec3 color{1.0f};                     // linear RGB
   float intensity = 1.0f;  // directional: irradiance scale; point/spot: scale at distance 1
   float range = 0.0f;      // point/spot: distance where the light fades out; 0 = unlimited
   float inner_cone_degrees = 25.0f;  // spot: full intensity inside this half-angle
@@ -28,8 +28,8 @@ struct Light {
   static Light point(glm::vec3 position, glm::vec3 color = glm::vec3(1.0f), float intensity = 1.0f,
                      float range = 0.0f);
   static Light spot(glm::vec3 position, glm::vec3 direction, float inner_degrees,
-                    float outer_degrees, glm::vec3 color = glm::vec3(1.0f),
-                    float intensity = 1.0f, float range = 0.0f);
+                    float outer_degrees, glm::vec3 color = glm::vec3(1.0f), float intensity = 1.0f,
+                    float range = 0.0f);
 };
 
 enum class FogMode { none, linear, exponential };
@@ -53,7 +53,7 @@ struct Environment {
   float intensity = 1.0f;
   bool show_as_background = false;  // draw the environment (or sky gradient) behind the scene
   bool reflections = false;         // reflective materials and PBR specular sample it
-  glm::vec3 sky_zenith{0.18f, 0.35f, 0.70f};   // procedural sky, linear RGB
+  glm::vec3 sky_zenith{0.18f, 0.35f, 0.70f};  // procedural sky, linear RGB
   glm::vec3 sky_horizon{0.75f, 0.82f, 0.90f};
   glm::vec3 ground{0.25f, 0.23f, 0.20f};
 };

@@ -53,7 +53,7 @@ struct Material {
   std::string name;
   ShadingModel shading = ShadingModel::lambert;
   glm::vec4 base_color{1.0f, 1.0f, 1.0f, 1.0f};  // linear RGBA (diffuse color for Phong)
-  bool use_vertex_colors = true;                  // multiply by the mesh's vertex colors
+  bool use_vertex_colors = true;                 // multiply by the mesh's vertex colors
 
   // Phong / Blinn-Phong / Gouraud.
   glm::vec3 specular_color{0.25f};
@@ -63,17 +63,17 @@ struct Material {
   float metallic = 0.0f;
   float roughness = 0.6f;
 
-  glm::vec3 emissive{0.0f};  // linear RGB, added unlit
+  glm::vec3 emissive{0.0f};   // linear RGB, added unlit
   float reflectivity = 0.0f;  // Phong models: mix toward the environment's reflection
 
-  TextureMap base_color_map;     // sRGB
-  TextureMap normal_map;         // tangent space, linear
+  TextureMap base_color_map;  // sRGB
+  TextureMap normal_map;      // tangent space, linear
   float normal_scale = 1.0f;
-  TextureMap specular_map;       // Phong: specular color (rgb), sRGB
+  TextureMap specular_map;            // Phong: specular color (rgb), sRGB
   TextureMap metallic_roughness_map;  // glTF packing: roughness in G, metallic in B; linear
-  TextureMap occlusion_map;      // R channel, linear
+  TextureMap occlusion_map;           // R channel, linear
   float occlusion_strength = 1.0f;
-  TextureMap emissive_map;       // sRGB
+  TextureMap emissive_map;  // sRGB
 
   AlphaMode alpha_mode = AlphaMode::opaque;
   float alpha_cutoff = 0.5f;

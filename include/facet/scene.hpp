@@ -45,8 +45,8 @@ struct Scene {
   std::vector<std::shared_ptr<const Texture>> textures;  // every texture the materials use
   std::vector<SceneNode> nodes;
   Lighting lighting;
-  std::vector<Camera> cameras;  // cameras stored in the file (world space)
-  Camera camera;                // the default view
+  std::vector<Camera> cameras;   // cameras stored in the file (world space)
+  Camera camera;                 // the default view
   bool has_file_lights = false;  // lighting.lights came from the file
 
   // Adds a mesh, a material and a root node drawing one with the other; returns the node.

@@ -13,7 +13,7 @@ namespace facet::shading {
 struct LightData {
   LightType type = LightType::directional;
   glm::vec3 position{0.0f};
-  glm::vec3 to_light{0.0f, 1.0f, 0.0f};  // directional: unit vector toward the light
+  glm::vec3 to_light{0.0f, 1.0f, 0.0f};         // directional: unit vector toward the light
   glm::vec3 spot_direction{0.0f, -1.0f, 0.0f};  // spot: unit, where the light travels
   glm::vec3 radiance{1.0f};                     // color * intensity
   float inv_range_squared = 0.0f;               // 0: unlimited
@@ -32,8 +32,8 @@ struct DrawUniforms {
   glm::vec3 ambient{0.1f};
   const LightData* lights = nullptr;  // the frame's lights (set when the frame runs)
   int light_count = 0;
-  const Material* material = nullptr;   // the draw's own copy
-  const Lighting* lighting = nullptr;   // fog and environment
+  const Material* material = nullptr;  // the draw's own copy
+  const Lighting* lighting = nullptr;  // fog and environment
   float near_plane = 0.1f;
   float far_plane = 100.0f;
 };

@@ -150,13 +150,6 @@ std::string input(const std::string& name) { return (inputs() / name).string(); 
 
 // --- running facet ------------------------------------------------------------------------
 
-fs::path fresh_dir(const std::string& name) {
-  fs::path dir = fs::path(::testing::TempDir()) / ("facet_cli_content_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
 std::vector<std::string> list_dir(const fs::path& dir) {
   std::vector<std::string> names;
   for (const auto& entry : fs::directory_iterator(dir))
@@ -181,7 +174,7 @@ std::vector<std::string> lines_of(const std::string& text) {
 // summary line and nothing else on stdout, and returns the image (empty on failure). Anything
 // on stderr is a failure unless allow_stderr.
 Rgba8Image render(const std::string& name, const std::string& args, bool allow_stderr = false) {
-  fs::path dir = fresh_dir(name);
+  fs::path dir = fresh_test_dir("facet_cli_content_", name);
   CommandResult r = run_facet(dir, "render " + args + " -o out.png" + kSize);
   EXPECT_EQ(r.exit_code, 0) << "facet render " << args << "\n" << r.stderr_text;
   if (!allow_stderr) {
@@ -304,7 +297,7 @@ TEST(CliContentModels, ObjWithMtlMaterials) {
 TEST(CliContentModels, CourseFormatD) { expect_a_picture(render("ball_d", input("ball.d"))); }
 
 TEST(CliContentModels, MissingTextureWarnsOnceAndDrawsAChecker) {
-  fs::path dir = fresh_dir("lost_texture");
+  fs::path dir = fresh_test_dir("facet_cli_content_", "lost_texture");
   CommandResult r = run_facet(dir, "render " + input("lost_texture.obj") + " -o out.png" + kSize);
   ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
   EXPECT_EQ(lines_of(r.stdout_text).size(), 1u) << r.stdout_text;
@@ -550,7 +543,7 @@ class CliContentBadInput : public ::testing::TestWithParam<BadCase> {};
 
 TEST_P(CliContentBadInput, ExitsWithOneErrorLineAndWritesNothing) {
   const BadCase& c = GetParam();
-  fs::path dir = fresh_dir(std::string("bad_") + c.name);
+  fs::path dir = fresh_test_dir("facet_cli_content_", std::string("bad_") + c.name);
   CommandResult r = run_facet(dir, "render " + with_inputs(c.args) + " -o out.png" + kSize);
   expect_one_error(r, c.mentions, 0);
   EXPECT_EQ(list_dir(dir), std::vector<std::string>{}) << "files left behind";
@@ -562,7 +555,7 @@ INSTANTIATE_TEST_SUITE_P(CliContent, CliContentBadInput, ::testing::ValuesIn(kBa
                          });
 
 TEST(CliContentErrors, DPolygonOutOfRangeNamesFileAndLine) {
-  fs::path dir = fresh_dir("d_line");
+  fs::path dir = fresh_test_dir("facet_cli_content_", "d_line");
   std::string model = input("index_out_of_range.d");
   CommandResult r = run_facet(dir, "render " + model + " -o out.png" + kSize);
   EXPECT_EQ(r.stderr_text,
@@ -574,7 +567,7 @@ TEST(CliContentErrors, FileCameraOutOfRange) {
   SKIP_WITHOUT(kCamerasGltf);
   for (const char* n : {"1", "5", "-1"}) {
     SCOPED_TRACE(std::string("--camera ") + n);
-    fs::path dir = fresh_dir(std::string("camera_bad_") + n);
+    fs::path dir = fresh_test_dir("facet_cli_content_", std::string("camera_bad_") + n);
     CommandResult r =
         run_facet(dir, "render " + kCamerasGltf + " --camera " + n + " -o out.png" + kSize);
     // The file's orthographic camera is left out with one warning before the error.
@@ -584,7 +577,7 @@ TEST(CliContentErrors, FileCameraOutOfRange) {
 }
 
 TEST(CliContentErrors, FailedRenderKeepsAnExistingFile) {
-  fs::path dir = fresh_dir("keep");
+  fs::path dir = fresh_test_dir("facet_cli_content_", "keep");
   const std::string contents = "an earlier image that must survive";
   std::ofstream(dir / "keep.png", std::ios::binary) << contents;
   // Failures while importing, while applying the flags, and while loading a texture.

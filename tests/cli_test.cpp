@@ -21,14 +21,6 @@ namespace fs = std::filesystem;
 
 constexpr int kUsageError = 2;
 
-// An empty directory for one test, so stray or partial files show up in a listing.
-fs::path fresh_dir(const std::string& name) {
-  fs::path dir = fs::path(::testing::TempDir()) / ("facet_cli_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
 std::vector<std::string> list_dir(const fs::path& dir) {
   std::vector<std::string> names;
   for (const auto& entry : fs::directory_iterator(dir)) {
@@ -73,7 +65,7 @@ TEST(CliHelp, RenderHelpDocumentsEveryFlag) { expect_documents_every_flag("rende
 // --- successful renders -------------------------------------------------------------------
 
 TEST(CliRender, PngSuccessPrintsOneSummaryLineAndWritesTheImage) {
-  fs::path dir = fresh_dir("png");
+  fs::path dir = fresh_test_dir("facet_cli_", "png");
   CommandResult r = run_facet(dir, "render --scene shapes --size 160x90 -o out.png");
   ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
   EXPECT_EQ(r.stderr_text, "");
@@ -89,7 +81,7 @@ TEST(CliRender, PngSuccessPrintsOneSummaryLineAndWritesTheImage) {
 }
 
 TEST(CliRender, PpmOutputIsBinaryP6OfTheRightSize) {
-  fs::path dir = fresh_dir("ppm");
+  fs::path dir = fresh_test_dir("facet_cli_", "ppm");
   CommandResult r = run_facet(dir, "render --size 33x17 -o out.ppm");
   ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
   EXPECT_EQ(count_lines(r.stdout_text), 1) << r.stdout_text;
@@ -148,7 +140,7 @@ class BadValue : public ::testing::TestWithParam<BadCase> {};
 
 TEST_P(BadValue, ExitsWithOneErrorLineAndNoFile) {
   const BadCase& c = GetParam();
-  fs::path dir = fresh_dir(c.name);
+  fs::path dir = fresh_test_dir("facet_cli_", c.name);
   CommandResult r = run_facet(dir, std::string("render ") + c.args);
   EXPECT_EQ(r.exit_code, kUsageError) << "facet render " << c.args;
   EXPECT_EQ(count_lines(r.stderr_text), 1) << r.stderr_text;
@@ -164,7 +156,7 @@ INSTANTIATE_TEST_SUITE_P(Cli, BadValue, ::testing::ValuesIn(kBadCases),
                          });
 
 TEST(CliOutput, FailedRenderKeepsAnExistingFile) {
-  fs::path dir = fresh_dir("keep");
+  fs::path dir = fresh_test_dir("facet_cli_", "keep");
   const std::string contents = "an earlier image that must survive";
   std::ofstream(dir / "keep.png", std::ios::binary) << contents;
   // Failures at different points of the command: material overrides, camera validation, and

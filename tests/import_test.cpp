@@ -19,6 +19,7 @@
 #include "facet/error.hpp"
 #include "facet/framebuffer.hpp"
 #include "facet/renderer.hpp"
+#include "support/render_helpers.hpp"
 
 namespace facet::test {
 namespace {
@@ -183,13 +184,6 @@ TEST(ImportErrors, UnreadableFileNamesAssimpsReason) {
 
 // --- content: materials, textures, nodes, cameras ---------------------------------------------
 
-fs::path fresh_dir(const std::string& name) {
-  fs::path dir = fs::path(::testing::TempDir()) / ("facet_import_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
 // A cube with a blinn-phong material whose texture is missing, used by two materials.
 fs::path write_cube_obj(const fs::path& dir) {
   std::ofstream(dir / "cube.mtl") << "newmtl shiny\nKd 0.8 0.2 0.1\nKs 0.5 0.5 0.5\nNs 64\n"
@@ -214,7 +208,7 @@ fs::path write_cube_obj(const fs::path& dir) {
 }
 
 TEST(ImportContent, ObjWithMissingTextureWarnsOnceAndRenders) {
-  fs::path file = write_cube_obj(fresh_dir("cube"));
+  fs::path file = write_cube_obj(fresh_test_dir("facet_import_", "cube"));
   std::vector<std::string> warnings;
   ImportOptions options;
   options.warn = [&](const std::string& w) { warnings.push_back(w); };

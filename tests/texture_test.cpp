@@ -19,6 +19,7 @@
 #include "facet/framebuffer.hpp"
 #include "facet/image_io.hpp"
 #include "shading/color.hpp"
+#include "support/render_helpers.hpp"
 
 namespace facet {
 namespace {
@@ -328,13 +329,6 @@ TEST(Texture, MissingTextureIsASharedMagentaChecker) {
 
 // --- reading files ----------------------------------------------------------------------
 
-fs::path fresh_dir(const std::string& name) {
-  fs::path dir = fs::path(::testing::TempDir()) / ("facet_texture_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
 void write_bytes(const fs::path& path, const std::string& bytes) {
   std::ofstream(path, std::ios::binary) << bytes;
 }
@@ -348,7 +342,7 @@ Framebuffer pattern(int width, int height) {
 }
 
 TEST(Texture, LoadsAPngWrittenByFacet) {
-  const fs::path dir = fresh_dir("png");
+  const fs::path dir = test::fresh_test_dir("facet_texture_", "png");
   const Framebuffer fb = pattern(5, 3);
   write_image(fb, (dir / "t.png").string());
   auto t = load_texture((dir / "t.png").string(), true);
@@ -363,7 +357,7 @@ TEST(Texture, LoadsAPngWrittenByFacet) {
 }
 
 TEST(Texture, LoadsAPpmWrittenByFacet) {
-  const fs::path dir = fresh_dir("ppm");
+  const fs::path dir = test::fresh_test_dir("facet_texture_", "ppm");
   const Framebuffer fb = pattern(4, 2);
   write_image(fb, (dir / "t.ppm").string());
   auto t = load_texture((dir / "t.ppm").string(), false);
@@ -397,7 +391,7 @@ void expect_read_error(const std::string& path, const std::string& part) {
 }
 
 TEST(Texture, UnreadableFilesThrowNamingThePath) {
-  const fs::path dir = fresh_dir("errors");
+  const fs::path dir = test::fresh_test_dir("facet_texture_", "errors");
   expect_read_error((dir / "absent.png").string(), "No such file");
   expect_read_error(dir.string(), "directory");
   write_bytes(dir / "empty.png", "");

@@ -18,13 +18,6 @@ namespace fs = std::filesystem;
 
 constexpr int kUsageError = 2;
 
-fs::path fresh_dir(const std::string& name) {
-  fs::path dir = fs::path(::testing::TempDir()) / ("facet_view_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
 bool have_xvfb() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 0; }
 
 // Runs `facet view <args>` on a fresh virtual display. In sanitizer builds, leak reports are
@@ -52,7 +45,7 @@ void expect_images_match(const Rgba8Image& a, const Rgba8Image& b) {
 
 TEST(View, ScriptedFramesMatchRenderOfTheSameCamera) {
   if (!have_xvfb()) GTEST_SKIP() << "xvfb-run is not installed";
-  fs::path dir = fresh_dir("shapes");
+  fs::path dir = fresh_test_dir("facet_view_", "shapes");
   std::string shot = (dir / "v.png").string();
   CommandResult r =
       run_view_under_xvfb("--scene shapes --frames 3 --size 320x180 --screenshot '" + shot + "'");
@@ -70,7 +63,7 @@ TEST(View, ScriptedFramesMatchRenderOfTheSameCamera) {
 
 TEST(View, IslandsAtAFixedTimeAreDeterministic) {
   if (!have_xvfb()) GTEST_SKIP() << "xvfb-run is not installed";
-  fs::path dir = fresh_dir("islands");
+  fs::path dir = fresh_test_dir("facet_view_", "islands");
   std::string shots[2] = {(dir / "a.png").string(), (dir / "b.png").string()};
   for (const std::string& shot : shots) {
     CommandResult r = run_view_under_xvfb(
@@ -87,7 +80,7 @@ TEST(View, IslandsAtAFixedTimeAreDeterministic) {
 }
 
 TEST(View, WithoutADisplayFailsWithOneLineSuggestingXvfb) {
-  fs::path dir = fresh_dir("nodisplay");
+  fs::path dir = fresh_test_dir("facet_view_", "nodisplay");
   std::string shot = (dir / "v.png").string();
   CommandResult r =
       run_command(std::string("ASAN_OPTIONS=\"${ASAN_OPTIONS}:detect_leaks=0\" ") +

@@ -31,9 +31,17 @@ void warn(const ImportOptions& options, const std::string& message) {
   }
 }
 
-std::string read_whole_file(const std::string& path) {
+// A model path must name a readable regular file; say which way it does not.
+void check_model_file(const std::string& path) {
   std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error)) throw Error(path + ": no such file");
+  if (std::filesystem::is_regular_file(path, error)) return;
+  if (std::filesystem::is_directory(path, error))
+    throw Error(path + ": is a directory, not a model file");
+  throw Error(path + ": no such file");
+}
+
+std::string read_whole_file(const std::string& path) {
+  check_model_file(path);
   std::ifstream in(path, std::ios::binary);
   std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (in.bad() || !in.is_open()) throw Error(path + ": cannot be read");
@@ -69,8 +77,7 @@ bool has_primitives(const Scene& scene) {
 }  // namespace
 
 Scene import_scene(const std::string& path, const ImportOptions& options) {
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error)) throw Error(path + ": no such file");
+  io::check_model_file(path);
   const std::string extension = io::lower_case(std::filesystem::path(path).extension().string());
   Scene scene = extension == ".d" ? io::import_d_scene(path, options)
                                   : io::import_assimp_scene(path, options);

@@ -77,6 +77,13 @@ Rgba8Image read_png(const std::string& path) {
   return out;
 }
 
+std::filesystem::path fresh_test_dir(const std::string& prefix, const std::string& name) {
+  std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / (prefix + name);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
 CommandResult run_command(const std::string& command) {
   static int counter = 0;
   std::string stem = ::testing::TempDir() + "facet_cmd_" + std::to_string(::getpid()) + "_" +

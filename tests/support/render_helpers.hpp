@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <glm/glm.hpp>
 #include <string>
 #include <vector>
@@ -38,6 +39,10 @@ struct Rgba8Image {
   std::vector<std::uint8_t> pixels;
 };
 Rgba8Image read_png(const std::string& path);
+
+// An empty directory under the test temp dir, named prefix + name (the prefix keeps test
+// files apart when ctest runs them in parallel), so stray or partial files show in a listing.
+std::filesystem::path fresh_test_dir(const std::string& prefix, const std::string& name);
 
 // Runs a shell command; returns its exit status and what it printed on stderr.
 struct CommandResult {

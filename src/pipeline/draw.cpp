@@ -18,6 +18,7 @@
 #include "facet/error.hpp"
 #include "pipeline/bin.hpp"
 #include "pipeline/geometry.hpp"
+#include "pipeline/occlusion.hpp"
 #include "pipeline/output.hpp"
 #include "pipeline/parallel.hpp"
 #include "pipeline/shade.hpp"
@@ -38,6 +39,7 @@ double ms_since(Clock::time_point start) {
 struct TileBuffers {
   std::vector<glm::vec4> color;
   std::vector<float> depth;
+  std::vector<float> block_max_depth;  // one per 8x8 block (raster.hpp)
 };
 
 }  // namespace
@@ -232,13 +234,19 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
   }
   TileBuffers& buffers = tile_buffers[worker];
   std::size_t pixels = static_cast<std::size_t>(ts) * ts;
+  tile.blocks_x = (ts + pipeline::kBlockSize - 1) / pipeline::kBlockSize;
   if (buffers.color.size() < pixels) {
     buffers.color.resize(pixels);
     buffers.depth.resize(pixels);
+    buffers.block_max_depth.resize(static_cast<std::size_t>(tile.blocks_x) * tile.blocks_x);
   }
   tile.color = buffers.color.data();
   tile.depth = buffers.depth.data();
+  tile.block_max_depth = buffers.block_max_depth.data();
   pipeline::clear_tile(tile, background);
+  // Skip what the tile's last full, opaque, nearest triangle hides anyway.
+  bin +=
+      pipeline::first_visible_entry(frame, bin, bin_end - bin, tile.x0, tile.y0, tile.x1, tile.y1);
   for (; bin != bin_end; ++bin) {
     const std::uint32_t entry = *bin;
     if (entry & pipeline::kLineBit) {

@@ -43,6 +43,8 @@ struct DrawPipeline {
   RasterTriangleFn raster = nullptr;
   bool fills_triangles = true;  // false for wireframe: edges only
   bool draws_edges = false;     // wireframe: edges become lines (line.cpp)
+  bool depth_tested = true;     // false for debug counters that see through everything
+  bool occludes = true;         // opaque, depth-tested and depth-writing (occlusion.hpp)
 };
 
 struct DrawRecord {

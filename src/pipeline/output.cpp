@@ -59,6 +59,7 @@ void clear_tile(TileContext& tile, const Background& background) {
     std::fill_n(tile.depth + static_cast<std::ptrdiff_t>(y) * tile.stride, tile.x1 - tile.x0,
                 kClearDepth);
   }
+  std::fill_n(tile.block_max_depth, tile.blocks_x * tile.blocks_x, kClearDepth);
 }
 
 void resolve_tile(const TileContext& tile, float scale, Framebuffer& target) {

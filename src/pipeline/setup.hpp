@@ -60,6 +60,29 @@ inline float evaluate(const Plane& p, float ref_x, float ref_y, float px, float 
   return evaluate_in_row(evaluate_row(p, ref_y, py), p, ref_x, px);
 }
 
+// Smallest and largest depth a triangle's plane takes at the pixel centres of the pixel
+// rectangle [x0, x1] x [y0, y1] (inclusive). The per-pixel depth (evaluate_row, then
+// evaluate_in_row) is monotonic in x and in y, as each of its rounding steps is, so both ends
+// are at corners, computed here with the same operations: exact bounds, no margin needed.
+struct DepthRange {
+  float nearest, farthest;  // NaN when the plane gives NaN at a corner
+};
+inline DepthRange depth_range_over(const SetupTriangle& t, int x0, int y0, int x1, int y1) {
+  const float left = static_cast<float>(x0) + 0.5f, right = static_cast<float>(x1) + 0.5f;
+  const float top = static_cast<float>(y0) + 0.5f, bottom = static_cast<float>(y1) + 0.5f;
+  const float z[4] = {evaluate(t.z, t.ref_x, t.ref_y, left, top),
+                      evaluate(t.z, t.ref_x, t.ref_y, right, top),
+                      evaluate(t.z, t.ref_x, t.ref_y, left, bottom),
+                      evaluate(t.z, t.ref_x, t.ref_y, right, bottom)};
+  DepthRange range{z[0], z[0]};
+  for (float v : z) {
+    if (v != v) return {v, v};  // NaN
+    range.nearest = v < range.nearest ? v : range.nearest;
+    range.farthest = v > range.farthest ? v : range.farthest;
+  }
+  return range;
+}
+
 // Sets up one triangle (already clipped to the guard band and in front of the eye) of draw
 // `draw`. `front_facing` is its facing as decided before clipping; the snapped triangle is
 // dropped if it is degenerate or its snapped winding disagrees. Returns true if appended.

@@ -26,6 +26,8 @@ DrawPipeline make_pipeline() {
     p.face_without_normals = &Shading::face_without_normals;
   }
   p.raster = &raster_triangle<Shading, kAlpha>;
+  p.depth_tested = depth_tested<Shading>();
+  p.occludes = p.depth_tested && kAlpha == AlphaMode::opaque && !additive<Shading>();
   return p;
 }
 

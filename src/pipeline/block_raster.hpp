@@ -1,0 +1,58 @@
+// Stage: raster, the SIMD part. raster.hpp walks a triangle's 8x8 pixel blocks inside a tile
+// and asks cover_block (block_raster.cpp, compiled for every SIMD target Highway supports and
+// picked at run time) which pixels of one block the triangle covers and pass the depth test,
+// with their depth and perspective-correct varyings; raster.hpp then shades those pixels.
+#pragma once
+
+#include <cstdint>
+
+#include "pipeline/frame.hpp"
+
+namespace facet::pipeline {
+
+// Pixels per block side. Blocks are aligned to the tile origin, so tiles of 8, 16, ... 128
+// pixels hold whole blocks (the last row/column of a frame may hold partial ones).
+inline constexpr int kBlockSize = 8;
+inline constexpr int kBlockPixels = kBlockSize * kBlockSize;
+
+// One triangle over one block. Edge i at block pixel (x, y) is e[i] + a[i]*x + b[i]*y.
+//
+// Why 32 bits are enough: the full edge function E = A*X + B*Y + C (setup.hpp) is evaluated
+// at pixel centres, which are 256 fixed-point units apart, so E(x, y) = E(0, 0) + 256*(a*x +
+// b*y) with a, b the SetupTriangle's coefficients, and E >= 0 exactly when
+// floor(E(0, 0) / 256) + a*x + b*y >= 0. That is what e holds. raster.hpp only passes an edge
+// that crosses the block (some corner in, some out), so |e| <= (|a| + |b|) * 7 < 2^27 for
+// coefficients within 2^23 (fixed_point.hpp); an edge that is inside at all four corners is
+// passed as e = a = b = 0 (always inside).
+struct BlockInput {
+  std::int32_t e[3];
+  std::int32_t a[3];
+  std::int32_t b[3];
+  // The block pixels the triangle may touch: columns [x_begin, x_end), rows [y_begin, y_end).
+  int x_begin, x_end, y_begin, y_end;
+  float px0, py0;  // centre of block pixel (0, 0), in frame pixels
+  const SetupTriangle* triangle;
+  const Plane* varying_planes;  // triangle->varying_planes resolved
+  int varyings;
+  bool depth_test;     // false: every covered pixel passes
+  const float* depth;  // the tile's depth at block pixel (0, 0)
+  int depth_stride;    // floats per depth row
+};
+
+// What cover_block finds, structure of arrays indexed by y * 8 + x. Lanes whose mask bit is
+// clear hold unspecified values.
+struct BlockFragments {
+  std::uint64_t mask;  // bit y * 8 + x: covered and passes the depth test
+  alignas(64) float z[kBlockPixels];
+  alignas(64) float w[kBlockPixels];  // clip w = 1 / (1/w plane)
+  alignas(64) float v[kMaxVaryings][kBlockPixels];
+};
+
+// Fills out for one block. The arithmetic is the scalar path's, lane by lane (same operations
+// in the same order, no fused multiply-add), so every SIMD target gives identical values.
+void cover_block(const BlockInput& in, BlockFragments& out);
+
+// Name of the SIMD target cover_block runs on now (e.g. "AVX2"), for bench output and tests.
+const char* simd_target_name();
+
+}  // namespace facet::pipeline

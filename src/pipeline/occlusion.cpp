@@ -1,0 +1,54 @@
+// Stage: raster, occlusion of whole bins (see occlusion.hpp).
+#include "pipeline/occlusion.hpp"
+
+#include <algorithm>
+#include <limits>
+
+#include "pipeline/fixed_point.hpp"
+#include "pipeline/setup.hpp"
+
+namespace facet::pipeline {
+namespace {
+
+// Every pixel centre of [x0, x1) x [y0, y1) is inside the triangle: the edge functions are
+// linear, so it is enough that all three are >= 0 (fill rule folded into c) at the corners.
+bool covers_rectangle(const SetupTriangle& t, int x0, int y0, int x1, int y1) {
+  if (t.min_x > x0 || t.min_y > y0 || t.max_x < x1 - 1 || t.max_y < y1 - 1) return false;
+  const std::int64_t xs[2] = {pixel_centre(x0), pixel_centre(x1 - 1)};
+  const std::int64_t ys[2] = {pixel_centre(y0), pixel_centre(y1 - 1)};
+  for (int i = 0; i < 3; ++i) {
+    for (std::int64_t x : xs) {
+      for (std::int64_t y : ys) {
+        if (std::int64_t{t.a[i]} * x + std::int64_t{t.b[i]} * y + t.c[i] < 0) return false;
+      }
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+std::size_t first_visible_entry(const Frame& frame, const std::uint32_t* bin, std::size_t count,
+                                int x0, int y0, int x1, int y1) {
+  std::size_t first = 0;
+  // The nearest depth any entry so far can write in the tile.
+  float nearest_so_far = std::numeric_limits<float>::infinity();
+  for (std::size_t i = 0; i < count; ++i) {
+    if (bin[i] & kLineBit) break;  // lines are not hidden (nor do they hide)
+    const SetupTriangle& t = frame.triangles[bin[i]];
+    const DrawPipeline& pipeline = frame.draws[t.draw].pipeline;
+    if (!pipeline.depth_tested) break;  // it would show through whatever is drawn later
+    const DepthRange range = depth_range_over(t, std::max(t.min_x, x0), std::max(t.min_y, y0),
+                                              std::min(t.max_x, x1 - 1), std::min(t.max_y, y1 - 1));
+    if (!(range.nearest == range.nearest)) break;  // NaN: no bound
+    if (pipeline.occludes && i > first && range.farthest < nearest_so_far &&
+        covers_rectangle(t, x0, y0, x1, y1)) {
+      // In a covered tile the bounding box clipped to it is the tile, so range is over it.
+      first = i;
+    }
+    nearest_so_far = std::min(nearest_so_far, range.nearest);
+  }
+  return first;
+}
+
+}  // namespace facet::pipeline

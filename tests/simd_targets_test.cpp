@@ -1,0 +1,104 @@
+// Every SIMD target the machine supports (Highway's runtime dispatch, block_raster.cpp) gives
+// the same pixels: identical to the reference rasterizer for coverage and depth, and identical
+// images to the scalar target with every shading model.
+#include <gtest/gtest.h>
+#include <hwy/targets.h>
+
+#include <cstring>
+#include <random>
+#include <string>
+
+#include "facet/scene.hpp"
+#include "pipeline/block_raster.hpp"
+#include "pipeline/reference.hpp"
+#include "support/random_soup.hpp"
+#include "support/render_helpers.hpp"
+
+namespace facet::test {
+namespace {
+
+// Forces one target for the scope's lifetime, then gives the choice back to the CPU.
+class ForcedTarget {
+ public:
+  explicit ForcedTarget(std::int64_t target) { hwy::SetSupportedTargetsForTest(target); }
+  ~ForcedTarget() { hwy::SetSupportedTargetsForTest(0); }
+  ForcedTarget(const ForcedTarget&) = delete;
+  ForcedTarget& operator=(const ForcedTarget&) = delete;
+};
+
+std::vector<std::int64_t> targets() {
+  std::vector<std::int64_t> all = hwy::SupportedAndGeneratedTargets();
+  return all;
+}
+
+Framebuffer render_shapes(ShadingModel model) {
+  Scene scene = make_shapes_scene();
+  for (auto& material : scene.materials) material.shading = model;
+  constexpr int kWidth = 203, kHeight = 117;  // partial tiles and partial 8x8 blocks
+  scene.camera.aspect = static_cast<float>(kWidth) / kHeight;
+  Renderer renderer;
+  Framebuffer fb(kWidth, kHeight);
+  renderer.begin_frame(scene.camera, scene.lighting);
+  draw_scene(renderer, scene);
+  renderer.finish(fb);
+  return fb;
+}
+
+TEST(SimdTargets, MoreThanOneTargetIsTested) {
+  // On x86-64 Highway always builds at least SSE4 and the scalar target (the machine may add
+  // AVX2 and AVX-512); if this fails, the tests below compare a target with itself.
+  EXPECT_GE(targets().size(), 2u);
+}
+
+TEST(SimdTargets, EachForcedTargetIsTheOneThatRuns) {
+  for (std::int64_t target : targets()) {
+    ForcedTarget forced(target);
+    EXPECT_EQ(std::string(pipeline::simd_target_name()), hwy::TargetName(target));
+  }
+}
+
+TEST(SimdTargets, RandomSoupsMatchTheReferenceOnEveryTarget) {
+  constexpr int kWidth = 67, kHeight = 43;
+  Camera camera = test_camera(kWidth, kHeight, 70.0f, 0.5f, 40.0f);
+  RenderSettings settings;
+  settings.tile_size = 32;
+  for (std::int64_t target : targets()) {
+    ForcedTarget forced(target);
+    std::mt19937 rng(20261122);
+    for (int soup_index = 0; soup_index < 200; ++soup_index) {
+      std::vector<glm::vec3> positions = random_soup(rng);
+      Mesh mesh = soup(positions);
+      pipeline::ReferenceImage expected = pipeline::reference_rasterize(
+          positions, camera.view_projection(), CullMode::none, kWidth, kHeight);
+      std::vector<int> counts =
+          coverage_counts({&mesh}, camera, kWidth, kHeight, CullMode::none, settings);
+      Framebuffer fb = render_unlit({&mesh}, camera, kWidth, kHeight, CullMode::none, settings);
+      ASSERT_EQ(counts, expected.coverage)
+          << hwy::TargetName(target) << ": coverage differs in soup " << soup_index;
+      ASSERT_EQ(std::memcmp(fb.depth().data(), expected.depth.data(), fb.depth().size() * 4), 0)
+          << hwy::TargetName(target) << ": depth differs in soup " << soup_index;
+    }
+  }
+}
+
+TEST(SimdTargets, EveryShadingModelGivesTheScalarTargetsImage) {
+  for (ShadingModel model : {ShadingModel::unlit, ShadingModel::gouraud, ShadingModel::phong,
+                             ShadingModel::pbr, ShadingModel::wire_overlay, ShadingModel::depth,
+                             ShadingModel::normals, ShadingModel::texcoords}) {
+    Framebuffer expected = [&] {
+      ForcedTarget scalar(HWY_SCALAR);
+      return render_shapes(model);
+    }();
+    for (std::int64_t target : targets()) {
+      ForcedTarget forced(target);
+      Framebuffer fb = render_shapes(model);
+      ASSERT_EQ(fb.rgba8(), expected.rgba8())
+          << to_string(model) << " on " << hwy::TargetName(target);
+      ASSERT_EQ(fb.depth(), expected.depth())
+          << to_string(model) << " on " << hwy::TargetName(target);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace facet::test

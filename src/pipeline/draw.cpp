@@ -17,6 +17,7 @@
 
 #include "facet/error.hpp"
 #include "pipeline/bin.hpp"
+#include "pipeline/draw_culling.hpp"
 #include "pipeline/geometry.hpp"
 #include "pipeline/occlusion.hpp"
 #include "pipeline/output.hpp"
@@ -58,6 +59,7 @@ struct Renderer::Impl {
   Camera camera;
   Lighting lighting;
   bool recording = false;
+  std::uint64_t primitives_outside = 0;  // of draws outside the frustum, never recorded
 
   explicit Impl(const RenderSettings& s)
       : settings(s),
@@ -122,6 +124,7 @@ void Renderer::begin_frame(const Camera& camera, const Lighting& lighting) {
   impl_->camera = camera;
   impl_->lighting = lighting;
   impl_->frame.draws.clear();
+  impl_->primitives_outside = 0;
   impl_->frame.view_projection = camera.view_projection();
   impl_->recording = true;
 }
@@ -135,6 +138,11 @@ void Renderer::Impl::record(const Mesh& mesh, const Material& material, const gl
                             const pipeline::DrawPipeline& pipe) {
   if (!recording) throw Error("renderer: draw() called before begin_frame()");
   mesh.validate();
+  const glm::mat4 model_view_projection = frame.view_projection * transform;
+  if (pipeline::draw_outside_frustum(mesh, model_view_projection)) {
+    primitives_outside += mesh.primitive_count();
+    return;
+  }
   pipeline::DrawRecord record;
   record.mesh = &mesh;
   record.material = material;
@@ -147,7 +155,7 @@ void Renderer::Impl::record(const Mesh& mesh, const Material& material, const gl
   }
   shading::DrawUniforms& u = record.uniforms;
   u.model = transform;
-  u.model_view_projection = frame.view_projection * transform;
+  u.model_view_projection = model_view_projection;
   u.normal_matrix = glm::inverseTranspose(glm::mat3(transform));
   u.base_color = material.base_color;
   u.wire_color = material.wire_color;
@@ -199,6 +207,8 @@ void Renderer::Impl::run(Framebuffer& target) {
 
   // Geometry: transform, assemble, clip, cull, set up — merged in submission order.
   pipeline::run_geometry(frame, workers);
+  frame.stats.triangles_in += primitives_outside;  // draws dropped whole when recorded
+  frame.stats.culled += primitives_outside;
   frame.stats.ms_geometry = ms_since(start);
 
   auto bin_start = Clock::now();

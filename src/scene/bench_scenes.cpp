@@ -6,6 +6,7 @@
 
 #include "facet/error.hpp"
 #include "facet/import.hpp"
+#include "facet/islands.hpp"
 #include "facet/procedural.hpp"
 #include "facet/scene.hpp"
 #include "facet/texture.hpp"
@@ -115,12 +116,30 @@ class OverdrawScene : public BenchScene {
   glm::mat4 transforms_[8];
 };
 
+// The islands world (facet view --scene islands) from its start camera, animated by the clock:
+// the interactive engine's workload (its speed targets are for this scene).
+class IslandsScene : public BenchScene {
+ public:
+  IslandsScene() : world_(make_islands_world()) {}
+  void record(Renderer& renderer, double t, float aspect) override {
+    world_.animate(t);
+    Camera camera = world_.scene.camera;
+    camera.aspect = aspect;
+    renderer.begin_frame(camera, world_.scene.lighting);
+    draw_scene(renderer, world_.scene);
+  }
+  glm::vec4 clear_color() const override { return {world_.scene.lighting.fog.color, 1.0f}; }
+
+ private:
+  IslandsWorld world_;
+};
+
 }  // namespace
 
 std::vector<std::string> bench_scene_names() {
   std::vector<std::string> names = glmark2_scene_names();
   for (const char* name :
-       {"bunny-close", "bunny-far", "million", "overdraw", "overdraw-front-to-back"}) {
+       {"bunny-close", "bunny-far", "million", "overdraw", "overdraw-front-to-back", "islands"}) {
     names.push_back(name);
   }
   return names;
@@ -132,6 +151,7 @@ std::unique_ptr<BenchScene> make_bench_scene(const std::string& name) {
   if (name == "million") return std::make_unique<MillionScene>();
   if (name == "overdraw") return std::make_unique<OverdrawScene>(false);
   if (name == "overdraw-front-to-back") return std::make_unique<OverdrawScene>(true);
+  if (name == "islands") return std::make_unique<IslandsScene>();
   if (auto scene = make_glmark2_scene(name)) return scene;
   std::string known;
   for (const auto& n : bench_scene_names()) known += (known.empty() ? "" : ", ") + n;

@@ -1,5 +1,5 @@
 // Benchmark scenes for `facet bench`: each records one frame at a given time into a renderer.
-// Built-in (bunny-close, bunny-far, million, overdraw, overdraw-front-to-back) here; the
+// Built-in (bunny-close, bunny-far, million, overdraw, overdraw-front-to-back, islands) here; the
 // glmark2-equivalent scenes in glmark2_scenes.cpp. Models come from Debian's glmark2-data.
 #pragma once
 

@@ -1,0 +1,61 @@
+// Whole draws outside the view frustum are dropped before their vertices are transformed
+// (pipeline/draw_culling.cpp); draws that reach into the view are kept.
+#include "pipeline/draw_culling.hpp"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+
+#include "support/render_helpers.hpp"
+
+namespace facet::test {
+namespace {
+
+constexpr int kWidth = 64, kHeight = 48;
+
+Mesh triangle_at(glm::vec3 centre) {
+  return soup(
+      {centre + glm::vec3(-1, -1, 0), centre + glm::vec3(1, -1, 0), centre + glm::vec3(0, 1, 0)});
+}
+
+TEST(DrawCulling, MeshesOutsideEachPlaneAreDropped) {
+  const glm::mat4 view_projection = test_camera(kWidth, kHeight).view_projection();
+  // Left, right, below, above, behind the eye, beyond the far plane (100).
+  for (glm::vec3 centre : {glm::vec3(-500, 0, -10), glm::vec3(500, 0, -10), glm::vec3(0, -500, -10),
+                           glm::vec3(0, 500, -10), glm::vec3(0, 0, 10), glm::vec3(0, 0, -500)}) {
+    EXPECT_TRUE(pipeline::draw_outside_frustum(triangle_at(centre), view_projection))
+        << centre.x << "," << centre.y << "," << centre.z;
+  }
+  // In view, straddling the left edge, and straddling the near plane are kept.
+  for (glm::vec3 centre :
+       {glm::vec3(0, 0, -10), glm::vec3(-6.6f, 0, -10), glm::vec3(0, 0, -0.1f)}) {
+    EXPECT_FALSE(pipeline::draw_outside_frustum(triangle_at(centre), view_projection))
+        << centre.x << "," << centre.y << "," << centre.z;
+  }
+}
+
+TEST(DrawCulling, NonFiniteOrEmptyMeshesAreLeftToThePipeline) {
+  const glm::mat4 view_projection = test_camera(kWidth, kHeight).view_projection();
+  Mesh with_nan = triangle_at({500, 0, -10});
+  with_nan.positions[1].x = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_FALSE(pipeline::draw_outside_frustum(with_nan, view_projection));
+  EXPECT_FALSE(pipeline::draw_outside_frustum(Mesh{}, view_projection));
+}
+
+TEST(DrawCulling, DroppedDrawsCountAsCulledAndDrawNothing) {
+  Mesh outside = triangle_at({500, 0, -10});
+  Mesh inside = triangle_at({0, 0, -10});
+  Renderer renderer;
+  Framebuffer fb(kWidth, kHeight);
+  renderer.begin_frame(test_camera(kWidth, kHeight));
+  renderer.draw(outside, Material{});
+  renderer.draw(inside, Material{});
+  renderer.finish(fb);
+  EXPECT_EQ(renderer.stats().triangles_in, 2u);
+  EXPECT_EQ(renderer.stats().culled, 1u);
+  EXPECT_EQ(renderer.stats().drawn, 1u);
+  EXPECT_GT(renderer.stats().pixels_shaded, 0u);
+}
+
+}  // namespace
+}  // namespace facet::test

@@ -71,7 +71,6 @@ struct Plane {
 struct SetupTriangle {
   std::int32_t a[3], b[3];
   std::int64_t c[3];
-  float edge_scale[3];             // E_i * edge_scale[i] = distance to edge i in pixels
   int min_x, min_y, max_x, max_y;  // pixel bounding box, inclusive, inside the framebuffer
   float ref_x, ref_y;              // first vertex, in pixels
   Plane z;                         // window depth in [0, 1]

@@ -15,6 +15,7 @@
 #include "pipeline/fixed_point.hpp"
 #include "pipeline/frame.hpp"
 #include "pipeline/setup.hpp"
+#include "shading/fog.hpp"
 #include "shading/fragment.hpp"
 
 namespace facet::pipeline {
@@ -58,26 +59,18 @@ constexpr bool edge_overlay() {
 }
 inline constexpr float kOverlayHalfWidth = 0.5f;
 
-// Distance in pixels from pixel (x, y)'s centre to the triangle's nearest edge (inside: >= 0).
+// Distance in pixels from pixel (x, y)'s centre to the triangle's nearest edge (inside: >= 0):
+// E / |(a, b)| is in fixed-point units, so one more division by the sub-pixel scale. Only the
+// wire overlay view asks, so the square roots are paid here rather than in every setup.
 inline float distance_to_edges(const SetupTriangle& t, int x, int y) {
   const std::int64_t cx = pixel_centre(x), cy = pixel_centre(y);
-  float distance = std::numeric_limits<float>::max();
+  double distance = std::numeric_limits<double>::max();
   for (int i = 0; i < 3; ++i) {
     const std::int64_t e = std::int64_t{t.a[i]} * cx + std::int64_t{t.b[i]} * cy + t.c[i];
-    distance = std::min(distance, static_cast<float>(e) * t.edge_scale[i]);
+    const double length = std::sqrt(double(t.a[i]) * t.a[i] + double(t.b[i]) * t.b[i]);
+    distance = std::min(distance, static_cast<double>(e) / (length * kSubpixelScale));
   }
-  return distance;
-}
-
-// Distance fog (the classic darkening with distance): a per-draw constant decides the mode,
-// so this branch is perfectly predicted; a template flag would double every raster loop.
-inline glm::vec4 apply_fog(glm::vec4 color, float view_depth, const Fog& fog) {
-  if (fog.mode == FogMode::none) return color;
-  float keep = fog.mode == FogMode::linear
-                   ? (fog.end - view_depth) / std::max(fog.end - fog.start, 1e-6f)
-                   : std::exp(-fog.density * view_depth);
-  keep = std::clamp(keep, 0.0f, 1.0f);
-  return {glm::mix(fog.color, glm::vec3(color), keep), color.a};
+  return static_cast<float>(distance);
 }
 
 // Classifies the three edges at the four corners of the block rectangle in.[xy]_begin/end
@@ -153,14 +146,18 @@ class PixelWriter {
   // Shades `fragment` (w and varyings filled in by the caller) for pixel (x, y) of the frame,
   // index `pixel` in the tile buffers, at depth z. False if the alpha test discarded it.
   bool write(int x, int y, std::ptrdiff_t pixel, float z) {
-    glm::vec4 color = Shading::fragment(fragment, uniforms_);
+    return store(x, y, pixel, z, Shading::fragment(fragment, uniforms_));
+  }
+
+  // Writes a shaded color with the draw's alpha test, overlay, fog and blending.
+  bool store(int x, int y, std::ptrdiff_t pixel, float z, glm::vec4 color) {
     if constexpr (kAlpha == AlphaMode::mask) {
       if (!(color.a >= alpha_cutoff_)) return false;  // cut-out: no color, no depth
     }
     if constexpr (edge_overlay<Shading>()) {
       if (distance_to_edges(t_, x, y) < kOverlayHalfWidth) color = uniforms_.wire_color;
     }
-    color = apply_fog(color, fragment.w, fog_);
+    color = shading::apply_fog(color, fragment.w, fog_);
     blend_into<Shading, kAlpha>(tile_.color[pixel], color);
     if constexpr (kDepthWrite) tile_.depth[pixel] = z;
     ++shaded;
@@ -273,16 +270,18 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
           static_cast<std::ptrdiff_t>(block_y - tile.y0) * tile.stride + (block_x - tile.x0);
       in.depth = tile.depth + block_offset;
       cover_block(in, block);
+      if (block.mask == 0) continue;
       std::uint64_t written = 0;
       for (std::uint64_t m = block.mask; m != 0; m &= m - 1) {
         const int i = std::countr_zero(m);
         const int x = i % kBlockSize, y = i / kBlockSize;
         out.fragment.w = block.w[i];
-        for (int k = 0; k < Shading::kVaryings; ++k) out.fragment.v[k] = block.v[k][i];
         const std::ptrdiff_t pixel =
             block_offset + static_cast<std::ptrdiff_t>(y) * tile.stride + x;
-        if (out.write(block_x + x, block_y + y, pixel, block.z[i]))
+        for (int k = 0; k < Shading::kVaryings; ++k) out.fragment.v[k] = block.v[k][i];
+        if (out.write(block_x + x, block_y + y, pixel, block.z[i])) {
           written |= std::uint64_t{1} << i;
+        }
       }
       if constexpr (kTightensBound) {
         // Every pixel of the block written by this triangle: their largest depth bounds it.

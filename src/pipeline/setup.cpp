@@ -83,8 +83,6 @@ bool setup_triangle(PrimitiveBuffer& out, int width, int height, std::uint32_t d
     t.b[i] = q.x - p.x;
     const std::int64_t bias = is_top_left(q.x - p.x, q.y - p.y) ? 0 : -1;
     t.c[i] = -(std::int64_t{t.a[i]} * p.x + std::int64_t{t.b[i]} * p.y) + bias;
-    double length = std::sqrt(double(t.a[i]) * t.a[i] + double(t.b[i]) * t.b[i]);
-    t.edge_scale[i] = static_cast<float>(1.0 / (length * kSubpixelScale));
   }
 
   float px[3], py[3], z[3], inv_w[3];
@@ -99,11 +97,14 @@ bool setup_triangle(PrimitiveBuffer& out, int width, int height, std::uint32_t d
   const PlaneSolver solver(px, py);
   t.z = solver.plane(z);
   t.inv_w = solver.plane(inv_w);
-  t.varying_planes = static_cast<std::uint32_t>(out.planes.size());
+  const std::size_t first_plane = out.planes.size();
+  t.varying_planes = static_cast<std::uint32_t>(first_plane);
+  out.planes.resize(first_plane + varyings);  // capacity kept across frames: no allocation
+  Plane* planes = out.planes.data() + first_plane;
   for (int k = 0; k < varyings; ++k) {
     float value[3];
     for (int i = 0; i < 3; ++i) value[i] = v[order[i]]->varyings[k] * inv_w[i];
-    out.planes.push_back(solver.plane(value));
+    planes[k] = solver.plane(value);
   }
   t.draw = draw;
   out.sequence.push_back(static_cast<std::uint32_t>(out.triangles.size()));

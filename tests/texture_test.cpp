@@ -13,6 +13,7 @@
 #include <limits>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "facet/error.hpp"
@@ -271,6 +272,44 @@ TEST(Sampler, TrilinearBlendsNeighbouringLevels) {
   EXPECT_NEAR(red_at(*t, s, 0.125f, 0.125f, 9.0f), level1, kEps);  // clamped to the last
   // Bilinear and nearest ignore the lod: always the base level.
   EXPECT_NEAR(red_at(*t, make_sampler(Filter::bilinear), 0.125f, 0.125f, 2.0f), 0.0f, kEps);
+}
+
+// The bilinear formula (OpenGL 4.6 §8.14.2) written out from texel(), in the order sample()
+// rounds in, for repeat wrapping: the value sample() must give bit for bit.
+glm::vec4 bilinear_by_hand(const Texture& t, int level, glm::vec2 uv) {
+  const int w = t.level(level).width, h = t.level(level).height;
+  const float x = uv.x * static_cast<float>(w) - 0.5f, y = uv.y * static_cast<float>(h) - 0.5f;
+  const int i0 = static_cast<int>(std::floor(x)), j0 = static_cast<int>(std::floor(y));
+  const float a = x - static_cast<float>(i0), b = y - static_cast<float>(j0);
+  auto at = [&](int i, int j) {  // j counts from the bottom row
+    return t.texel(level, ((i % w) + w) % w, h - 1 - ((j % h) + h) % h);
+  };
+  const glm::vec4 bottom = at(i0, j0) * (1.0f - a) + at(i0 + 1, j0) * a;
+  const glm::vec4 top = at(i0, j0 + 1) * (1.0f - a) + at(i0 + 1, j0 + 1) * a;
+  return bottom * (1.0f - b) + top * b;
+}
+
+// sample() reads rgba8 textures from a linear float copy made at load, except very large ones
+// (over 2^20 texels), which decode per fetch: both must give the formula's exact bits.
+TEST(Sampler, BothRgba8StoragePathsGiveTheFormulaExactly) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> coordinate(-2.0f, 3.0f);
+  for (const auto& [width, height] : {std::pair{64, 32}, std::pair{2048, 1024}}) {
+    std::vector<std::uint8_t> rgba(static_cast<std::size_t>(width) * height * 4);
+    for (auto& byte : rgba) byte = static_cast<std::uint8_t>(rng());
+    const auto t = Texture::from_rgba8(width, height, rgba, true);
+    const Sampler bilinear = make_sampler(Filter::bilinear);
+    const Sampler trilinear = make_sampler(Filter::trilinear);
+    for (int i = 0; i < 2000; ++i) {
+      const glm::vec2 uv{coordinate(rng), coordinate(rng)};
+      const glm::vec4 expected = bilinear_by_hand(*t, 0, uv);
+      ASSERT_EQ(t->sample(bilinear, uv), expected) << width << " uv " << uv.x << ", " << uv.y;
+      // Trilinear between levels 2 and 3, a quarter of the way.
+      const glm::vec4 blend =
+          bilinear_by_hand(*t, 2, uv) * 0.75f + bilinear_by_hand(*t, 3, uv) * 0.25f;
+      ASSERT_EQ(t->sample(trilinear, uv, 2.25f), blend) << width;
+    }
+  }
 }
 
 // --- sRGB -------------------------------------------------------------------------------

@@ -73,6 +73,10 @@ class Texture {
   Format format_ = Format::rgba8;
   bool srgb_ = false;
   std::string name_;
+  // The rgba8 levels decoded once to linear float RGBA, which sample() reads: one 16-byte load
+  // a texel instead of four table lookups. Empty for rgba32f textures (levels_ already are)
+  // and for very large rgba8 ones (memory; see kMaxLinearTexels in texture.cpp).
+  std::vector<std::vector<float>> linear_;
 };
 
 // Reads an image file: PNG, JPEG, TGA, BMP, HDR (stb_image) or PPM/PGM P2/P3/P5/P6 (facet's own

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -97,12 +98,13 @@ struct ShotLog {
   glm::vec3 eye{0.0f}, forward{0.0f};
   std::string mode;
   std::string camera;  // "orbit" or "first person"
+  std::string sound;   // "on", "muted" or "none" (a scene without sound)
 };
 ShotLog shot_log(const Session& s, int n) {
   std::regex line("saved facet-screenshot-" + std::to_string(n) +
                   R"(\.png \(render (\d+)x(\d+), window (\d+)x(\d+), eye ([-\d.]+),([-\d.]+),)"
                   R"(([-\d.]+), forward ([-\d.]+),([-\d.]+),([-\d.]+), fov [\d.]+, mode ([^,]+), )"
-                  R"(camera ([^)]+)\))");
+                  R"(camera ([^,]+), sound ([^)]+)\))");
   std::smatch m;
   ShotLog out;
   if (!std::regex_search(s.log, m, line)) {
@@ -115,6 +117,7 @@ ShotLog shot_log(const Session& s, int n) {
   out.forward = {std::stof(m[8]), std::stof(m[9]), std::stof(m[10])};
   out.mode = m[11];
   out.camera = m[12];
+  out.sound = m[13];
   return out;
 }
 
@@ -205,6 +208,20 @@ TEST(ViewInput, ModelsStartInOrbitWhereTheWheelZoomsAndTabSwitches) {
   // Tab: first person from the same pose, no jump.
   EXPECT_EQ(switched.camera, "first person");
   EXPECT_LT(glm::length(switched.eye - zoomed.eye), 1e-3f);
+}
+
+TEST(ViewInput, IslandsHaveSoundThatMTogglesAndNoDeviceCostsOneWarning) {
+  SKIP_WITHOUT_TOOLS();
+  Session s =
+      run_session("sound", kIslands + "xdotool key m\nshot\nxdotool key m\nshot\nstop_view\n");
+  ASSERT_EQ(s.result.exit_code, 0) << s.result.stderr_text;
+  EXPECT_EQ(shot_log(s, 1).sound, "on");
+  EXPECT_EQ(shot_log(s, 2).sound, "muted");
+  EXPECT_EQ(shot_log(s, 3).sound, "on");
+  // With no audio device (CI) SoundScene says so in one line and the viewer runs silently.
+  std::ifstream err(s.file("view.err"));
+  std::string text((std::istreambuf_iterator<char>(err)), std::istreambuf_iterator<char>());
+  EXPECT_LE(std::count(text.begin(), text.end(), '\n'), 1) << text;
 }
 
 TEST(ViewInput, F2CyclesTheRenderMode) {

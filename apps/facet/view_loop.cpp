@@ -171,11 +171,14 @@ void ViewLoop::save_frame() {
   window_.window_size(ww, wh);
   std::printf(
       "view: saved %s (render %dx%d, window %dx%d, eye %.4f,%.4f,%.4f, forward "
-      "%.4f,%.4f,%.4f, fov %.1f, mode %s, camera %s)\n",
+      "%.4f,%.4f,%.4f, fov %.1f, mode %s, camera %s, sound %s)\n",
       name.c_str(), frame_.width(), frame_.height(), ww, wh, c.eye.x, c.eye.y, c.eye.z,
       c.forward().x, c.forward().y, c.forward().z, c.fov_y_degrees,
       std::string(to_string(settings_.mode)).c_str(),
-      controls_.mode() == CameraMode::orbit ? "orbit" : "first person");
+      controls_.mode() == CameraMode::orbit ? "orbit" : "first person",
+      !sound_           ? "none"
+      : sound_->muted() ? "muted"
+                        : "on");
   std::fflush(stdout);
 }
 

@@ -163,22 +163,23 @@ void ViewLoop::render(double now, double dt) {
   overlay_.draw(frame_, info, settings_.overlay, settings_.help, now, dt);
 }
 
+// Saves the frame and says on stdout what it shows: the settings and the camera, so scripts
+// (and the tests) can check what each input did.
 void ViewLoop::save_frame() {
   std::string name = next_file_name("facet-screenshot");
   write_image(frame_, name);
   const Camera& c = last_camera_;
+  glm::vec3 f = c.forward();
   int ww = 0, wh = 0;
   window_.window_size(ww, wh);
+  const char* camera_mode = controls_.mode() == CameraMode::orbit ? "orbit" : "first person";
+  const char* sound = !sound_ ? "none" : sound_->muted() ? "muted" : "on";
   std::printf(
-      "view: saved %s (render %dx%d, window %dx%d, eye %.4f,%.4f,%.4f, forward "
-      "%.4f,%.4f,%.4f, fov %.1f, mode %s, camera %s, sound %s)\n",
-      name.c_str(), frame_.width(), frame_.height(), ww, wh, c.eye.x, c.eye.y, c.eye.z,
-      c.forward().x, c.forward().y, c.forward().z, c.fov_y_degrees,
-      std::string(to_string(settings_.mode)).c_str(),
-      controls_.mode() == CameraMode::orbit ? "orbit" : "first person",
-      !sound_           ? "none"
-      : sound_->muted() ? "muted"
-                        : "on");
+      "view: saved %s (render %dx%d, window %dx%d, eye %.4f,%.4f,%.4f, forward %.4f,%.4f,%.4f, "
+      "fov %.1f, mode %s, shading %s, threads %d, camera %s, sound %s)\n",
+      name.c_str(), frame_.width(), frame_.height(), ww, wh, c.eye.x, c.eye.y, c.eye.z, f.x, f.y,
+      f.z, c.fov_y_degrees, std::string(to_string(settings_.mode)).c_str(),
+      settings_.shading_name().c_str(), settings_.threads, camera_mode, sound);
   std::fflush(stdout);
 }
 

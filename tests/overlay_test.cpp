@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <vector>
 
 #include "facet/error.hpp"
@@ -82,6 +83,22 @@ TEST(Overlay, TextureIsModulatedByVertexColorAndItsAlphaBlends) {
   EXPECT_EQ(channel(fb, 1, 1, 0), 0);
   EXPECT_EQ(channel(fb, 6, 1, 1), 100);  // right half: transparent, the image shows through
   EXPECT_EQ(channel(fb, 6, 1, 0), 100);
+}
+
+TEST(Overlay, HugeAndNanCoordinatesAreClippedNotUndefined) {
+  // Far beyond int range, still within float: the quad covers the image.
+  Framebuffer fb = grey_image(16, 16);
+  Quad huge(-1e10f, -1e10f, 3e10f, 3e10f, {1.0f, 1.0f, 1.0f, 1.0f});
+  draw_overlay(fb, huge.draw());
+  EXPECT_EQ(channel(fb, 0, 0, 0), 255);
+  EXPECT_EQ(channel(fb, 15, 15, 0), 255);
+  // So large that the edge functions overflow to infinity: skipped, not undefined.
+  Quad overflowing(-1e30f, -1e30f, 3e30f, 3e30f, {1.0f, 1.0f, 1.0f, 1.0f});
+  draw_overlay(fb, overflowing.draw());
+  Framebuffer untouched = grey_image(16, 16);
+  Quad nan(std::nanf(""), 0, 8, 8, {0.0f, 0.0f, 0.0f, 1.0f});
+  draw_overlay(untouched, nan.draw());
+  EXPECT_EQ(channel(untouched, 4, 4, 0), 100);
 }
 
 TEST(Overlay, RejectsBadIndicesAndFloatTargets) {

@@ -27,11 +27,19 @@ struct Edge {
   bool inside(float e) const { return e > 0.0f || (e == 0.0f && owns_ties); }
 };
 
+// Texel index for a coordinate in [0, 1), clamped to the edge; compared as floats before the
+// conversion, so huge or NaN coordinates (NaN fails every comparison) cannot overflow an int.
+int texel_index(float coordinate, int size) {
+  float t = coordinate * static_cast<float>(size);
+  if (!(t >= 0.0f)) return 0;
+  return t < static_cast<float>(size) ? static_cast<int>(t) : size - 1;
+}
+
 glm::vec4 texel(const Texture* texture, glm::vec2 uv) {
   if (!texture) return glm::vec4(1.0f);
   const Texture::Level& level = texture->level(0);
-  int x = std::clamp(static_cast<int>(std::floor(uv.x * level.width)), 0, level.width - 1);
-  int y = std::clamp(static_cast<int>(std::floor(uv.y * level.height)), 0, level.height - 1);
+  int x = texel_index(uv.x, level.width);
+  int y = texel_index(uv.y, level.height);
   const std::uint8_t* t = level.rgba8.data() + (static_cast<std::size_t>(y) * level.width + x) * 4;
   return glm::vec4(t[0], t[1], t[2], t[3]) / 255.0f;
 }
@@ -55,11 +63,15 @@ void draw_triangle(Framebuffer& target, const OverlayRect& clip, const Texture* 
       e2(v0.position, v1.position);
   glm::vec2 low = glm::min(v0.position, glm::min(v1.position, v2.position));
   glm::vec2 high = glm::max(v0.position, glm::max(v1.position, v2.position));
-  // Pixels whose centre (x + 0.5) lies within the bounds, inside the clip rectangle.
-  int x0 = std::max(clip.x0, static_cast<int>(std::ceil(low.x - 0.5f)));
-  int y0 = std::max(clip.y0, static_cast<int>(std::ceil(low.y - 0.5f)));
-  int x1 = std::min(clip.x1 - 1, static_cast<int>(std::floor(high.x - 0.5f)));
-  int y1 = std::min(clip.y1 - 1, static_cast<int>(std::floor(high.y - 0.5f)));
+  // Pixels whose centre (x + 0.5) lies within the bounds, inside the clip rectangle; clamped
+  // as floats first, so vertices far off screen cannot overflow the conversion to int.
+  float fx0 = std::max(std::ceil(low.x - 0.5f), static_cast<float>(clip.x0));
+  float fy0 = std::max(std::ceil(low.y - 0.5f), static_cast<float>(clip.y0));
+  float fx1 = std::min(std::floor(high.x - 0.5f), static_cast<float>(clip.x1 - 1));
+  float fy1 = std::min(std::floor(high.y - 0.5f), static_cast<float>(clip.y1 - 1));
+  if (!(fx0 <= fx1 && fy0 <= fy1)) return;
+  const int x0 = static_cast<int>(fx0), y0 = static_cast<int>(fy0);
+  const int x1 = static_cast<int>(fx1), y1 = static_cast<int>(fy1);
   for (int y = y0; y <= y1; ++y) {
     std::uint8_t* row = target.rgba8().data() + static_cast<std::size_t>(y) * target.width() * 4;
     for (int x = x0; x <= x1; ++x) {

@@ -30,6 +30,7 @@ bool have_tools() {
 //   focuses it and takes screenshot 1;
 // - shot: F12, then waits until the screenshot is written;
 // - window_shot: Shift+F12 (the window as shown), then waits likewise;
+// - wait_size W H: waits until the window has that size;
 // - stop_view: Esc, then waits for the viewer to exit.
 // Every wait polls the log with a generous timeout instead of sleeping blindly.
 const char* const kPrelude = R"sh(
@@ -58,6 +59,14 @@ window_shot() {
   local n=$(( $(grep -c 'saved facet-window' view.log || true) + 1 ))
   xdotool key shift+F12
   wait_log "$n" 'saved facet-window'
+}
+wait_size() {  # wait_size W H: until the X server has the window at that size
+  for i in $(seq 1 200); do
+    eval "$(xdotool getwindowgeometry --shell "$WID")"
+    if [ "$WIDTH" = "$1" ] && [ "$HEIGHT" = "$2" ]; then sleep 0.2; return 0; fi
+    sleep 0.05
+  done
+  echo "the window never became $1x$2 (it is ${WIDTH}x${HEIGHT})" >&2; exit 1
 }
 stop_view() {
   xdotool key Escape
@@ -160,7 +169,7 @@ const std::string kIslands = "start_view --scene islands --size 320x180 --time 3
 TEST(ViewInput, WMovesTheCameraForward) {
   SKIP_WITHOUT_TOOLS();
   Session s = run_session("w", kIslands +
-                                   "xdotool keydown w; sleep 0.6; xdotool keyup w\n"
+                                   "xdotool keydown w; sleep 1; xdotool keyup w\n"
                                    "shot\nstop_view\n");
   ASSERT_EQ(s.result.exit_code, 0) << s.result.stderr_text;
   ShotLog before = shot_log(s, 1), after = shot_log(s, 2);
@@ -298,8 +307,8 @@ TEST(ViewInput, F3F4ChangeTheFieldOfViewF7TheShadingF8TheThreads) {
 TEST(ViewInput, F1ShowsTheHelpPanelInTheMiddle) {
   SKIP_WITHOUT_TOOLS();
   Session s = run_session("f1", kIslands +
-                                    "xdotool key F1\nsleep 2.2\nshot\nxdotool key F1\n"
-                                    "sleep 2.2\nshot\nstop_view\n");
+                                    "xdotool key F1\nsleep 3\nshot\nxdotool key F1\n"
+                                    "sleep 3\nshot\nstop_view\n");
   ASSERT_EQ(s.result.exit_code, 0) << s.result.stderr_text;
   Rgba8Image plain = s.image(shot_name(1)), help = s.image(shot_name(2));
   EXPECT_GT(changed_fraction(plain, help), 0.3);
@@ -324,8 +333,8 @@ TEST(ViewInput, F6RaisesAndF5LowersTheRenderResolution) {
 TEST(ViewInput, F11TogglesFullscreen) {
   SKIP_WITHOUT_TOOLS();
   Session s = run_session("f11", kIslands +
-                                     "xdotool key F11\nsleep 0.5\nshot\nwindow_shot\n"
-                                     "xdotool key F11\nsleep 0.5\nshot\nstop_view\n");
+                                     "xdotool key F11\nwait_size 1920 1080\nshot\nwindow_shot\n"
+                                     "xdotool key F11\nwait_size 320 180\nshot\nstop_view\n");
   ASSERT_EQ(s.result.exit_code, 0) << s.result.stderr_text;
   EXPECT_EQ(shot_log(s, 1).window_w, 320);
   EXPECT_EQ(shot_log(s, 2).window_w, 1920);  // the whole 1920x1080 screen
@@ -342,7 +351,7 @@ TEST(ViewInput, LetterboxBarsWhenTheWindowAspectDiffers) {
   // A square window showing a 16:9 frame: 640 wide means a 360-pixel picture, 140-pixel bars.
   Session s = run_session("letterbox", kIslands +
                                            "xdotool windowsize --sync \"$WID\" 640 640\n"
-                                           "sleep 0.5\nwindow_shot\nstop_view\n");
+                                           "wait_size 640 640\nwindow_shot\nstop_view\n");
   ASSERT_EQ(s.result.exit_code, 0) << s.result.stderr_text;
   Rgba8Image window = s.image("facet-window-1.png");
   ASSERT_EQ(window.width, 640);
@@ -353,7 +362,7 @@ TEST(ViewInput, LetterboxBarsWhenTheWindowAspectDiffers) {
 
 TEST(ViewInput, F9ShowsTheOverlayAtTheLeft) {
   SKIP_WITHOUT_TOOLS();
-  Session s = run_session("f9", kIslands + "xdotool key F9\nsleep 2.5\nshot\nstop_view\n");
+  Session s = run_session("f9", kIslands + "xdotool key F9\nsleep 3\nshot\nstop_view\n");
   ASSERT_EQ(s.result.exit_code, 0) << s.result.stderr_text;
   Rgba8Image plain = s.image(shot_name(1)), overlay = s.image(shot_name(2));
   // The statistics panel covers the left of the frame (at 320x180 about 200 pixels wide); the

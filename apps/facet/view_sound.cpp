@@ -15,7 +15,8 @@ constexpr float kPropellerReach = 6.0f;
 
 }  // namespace
 
-IslandsSound::IslandsSound(const IslandsWorld& world) {
+IslandsSound::IslandsSound(const IslandsWorld& world, const SoundSceneDesc& output)
+    : sound_(output) {
   waterfall_.position = world.waterfall_position();
   boat_.position = world.boat_position();
   airplane_.position = world.airplane_position();

@@ -11,8 +11,9 @@ namespace facet::cli {
 
 class IslandsSound {
  public:
-  // Adds the sources where `world` has them now and starts them.
-  explicit IslandsSound(const IslandsWorld& world);
+  // Adds the sources where `world` has them now and starts them. The viewer plays through the
+  // default device; tests pass a loopback desc and listen through scene().
+  explicit IslandsSound(const IslandsWorld& world, const SoundSceneDesc& output = {});
 
   // Moves the sources to where the world's parts are now and the listener to the camera;
   // velocities are the change in position over `dt` seconds (Doppler shift).
@@ -21,6 +22,7 @@ class IslandsSound {
   void set_muted(bool muted) { sound_.set_muted(muted); }
   bool muted() const { return sound_.muted(); }
   bool available() const { return sound_.available(); }
+  SoundScene& scene() { return sound_; }
 
  private:
   struct Source {

@@ -2,14 +2,14 @@
 #
 #   make deps           install the Debian 12 packages that are missing (apt-get; root or sudo)
 #   make build          configure a Release build in build/ (once) and build it
-#   make run            deps + build, then render the built-in shapes scene to shapes.png
+#   make run            deps + build, then render the built-in islands world to islands.png
 #   make test           deps + build, then run every test with ctest
 #   make test-sanitize  the tests under ASan+UBSan (build-asan/), the threaded raster tests
 #                       under TSan (build-tsan/); also separately: make test-asan, make test-tsan
 #   make test-fuzz      the libFuzzer targets (tests/fuzz/*_fuzz.cpp, clang, build-fuzz/), each for
 #                       FUZZ_SECONDS (default 60) from a scratch copy of tests/fuzz/corpus/NAME/
 #   make install        cmake --install build --prefix $(PREFIX)   (PREFIX=/usr/local by default)
-#   make clean          remove the build trees and shapes.png
+#   make clean          remove the build trees and islands.png
 
 # Debian 12 packages the build and the tests need. A new dependency is added here.
 PACKAGES := build-essential cmake pkg-config libglm-dev libpng-dev libtbb-dev libcli11-dev \
@@ -23,7 +23,7 @@ FUZZ_DIR ?= build-fuzz
 FUZZ_SECONDS ?= 60
 JOBS ?= $(shell nproc)
 PREFIX ?= /usr/local
-SCENE_IMAGE ?= shapes.png
+SCENE_IMAGE ?= islands.png
 # ctest -R regex for the tests that run under ThreadSanitizer: the threaded raster tests.
 TSAN_TEST_REGEX ?= Determinism|Threads
 
@@ -70,7 +70,7 @@ build: deps
 
 run: build
 	@start=$$(date +%s%N); \
-	$(BUILD_DIR)/facet render --scene shapes -o $(SCENE_IMAGE); \
+	$(BUILD_DIR)/facet render --scene islands -o $(SCENE_IMAGE); \
 	ms=$$(( ($$(date +%s%N) - start) / 1000000 )); \
 	echo "Image: $$(realpath $(SCENE_IMAGE))"; \
 	printf 'Took %d.%03d s wall clock (start-up, render and writing the PNG)\n' $$((ms / 1000)) $$((ms % 1000))

@@ -79,6 +79,22 @@ TEST(View, IslandsAtAFixedTimeAreDeterministic) {
   EXPECT_TRUE(a.pixels == b.pixels) << "the same --time gave different images";
 }
 
+// The islands world as `facet view` shows it at t = 3 s, held against a golden image; the same t
+// renders the same image again.
+TEST(View, IslandsAtThreeSecondsMatchTheGolden) {
+  if (!have_xvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+  fs::path dir = fresh_test_dir("facet_view_", "islands_golden");
+  std::string shots[2] = {(dir / "a.png").string(), (dir / "b.png").string()};
+  for (const std::string& shot : shots) {
+    CommandResult r = run_view_under_xvfb(
+        "--scene islands --frames 5 --time 3 --size 320x180 --screenshot '" + shot + "'");
+    ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  }
+  expect_matches_golden(shots[0], "view_islands_t3");
+  EXPECT_TRUE(read_png(shots[0]).pixels == read_png(shots[1]).pixels)
+      << "the same --time gave different images";
+}
+
 TEST(View, WithoutADisplayFailsWithOneLineSuggestingXvfb) {
   fs::path dir = fresh_test_dir("facet_view_", "nodisplay");
   std::string shot = (dir / "v.png").string();

@@ -1,28 +1,22 @@
-// `facet view` (see view_command.hpp): flags, the scene, and the frame loop.
+// `facet view` (see view_command.hpp): flags, the scene and the start camera; the frame loop
+// is view_loop.cpp.
 #include "view_command.hpp"
 
-#include <SDL.h>
-
-#include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <memory>
 
 #include "arguments.hpp"
 #include "facet/error.hpp"
-#include "facet/framebuffer.hpp"
 #include "facet/image_io.hpp"
 #include "facet/islands.hpp"
-#include "facet/renderer.hpp"
 #include "facet/scene.hpp"
-#include "view_controls.hpp"
+#include "view_bindings.hpp"
+#include "view_loop.hpp"
 #include "view_window.hpp"
 
 namespace facet::cli {
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 const std::string kBackground = "0.53,0.66,0.82";  // sRGB sky blue, as `facet render`
 constexpr float kWalkSecondsAcross = 20.0f;        // walking speed: the scene's size in this time
@@ -52,22 +46,18 @@ ViewScene load_scene(const SceneOptions& o) {
   return v;
 }
 
-// facet-screenshot-N.png with the first N that is not taken.
-std::string next_screenshot_name() {
-  for (int n = 1;; ++n) {
-    std::string name = "facet-screenshot-" + std::to_string(n) + ".png";
-    if (!std::filesystem::exists(name)) return name;
-  }
+std::string view_description() {
+  std::string text =
+      "Open a window on a model or a built-in scene and move through it. Models start in orbit "
+      "mode, built-in scenes in first person. Keys:\n";
+  text += view_bindings_text("  ");
+  return text;
 }
 
 }  // namespace
 
 CLI::App* add_view_command(CLI::App& app, ViewOptions& o) {
-  CLI::App* cmd = app.add_subcommand(
-      "view",
-      "Open a window on a model or a built-in scene: W/A/S/D move, Q/E or Ctrl/Space down/up, "
-      "arrows turn, Shift runs, click for mouse look (Esc releases, Esc again quits), F12 saves "
-      "a screenshot");
+  CLI::App* cmd = app.add_subcommand("view", view_description());
   add_scene_options(*cmd, o.scene);
   cmd->add_option("--size", o.size,
                   "Render resolution WIDTHxHEIGHT; the window scales it with letterboxing")
@@ -78,6 +68,13 @@ CLI::App* add_view_command(CLI::App& app, ViewOptions& o) {
   cmd->add_option("--screenshot", o.screenshot, "Save the last frame to this PNG or PPM file");
   cmd->add_option("--time", o.time,
                   "Fixed animation time in seconds (default: the real clock from the start)");
+  cmd->add_option("--camera-path", o.camera_path,
+                  "Fly along the timed camera keys in FILE (lines of: t x y z yaw pitch)");
+  cmd->add_option("--overlay", o.overlay,
+                  "Statistics overlay at the start: on, off, or auto (on unless --frames)")
+      ->check(CLI::IsMember({"auto", "on", "off"}))
+      ->capture_default_str();
+  cmd->add_flag("--fullscreen", o.fullscreen, "Start fullscreen (F11 toggles)");
   return cmd;
 }
 
@@ -90,64 +87,40 @@ int run_view(const ViewOptions& o) {
   if (o.time && !std::isfinite(*o.time)) throw Error("--time: must be a finite number of seconds");
   if (!o.screenshot.empty()) check_writable(o.screenshot);
   glm::vec3 background = parse_color("--background", kBackground);
+  ViewSetup setup;
+  if (!o.camera_path.empty()) setup.camera_path = CameraPath::load(o.camera_path);
   // The window first: with no display the command fails before loading anything.
   ViewWindow window("facet view", size.width, size.height);
 
   ViewScene loaded = load_scene(o.scene);
   Scene& scene = loaded.get();
   if (!o.scene.fog_color) scene.lighting.fog.color = background;
-  Camera start = build_camera(o.scene, scene, static_cast<float>(size.width) / size.height);
+  setup.scene = &scene;
+  setup.world = loaded.world.get();
+  setup.start = build_camera(o.scene, scene, static_cast<float>(size.width) / size.height);
+  setup.camera_mode = o.scene.model.empty() ? CameraMode::first_person : CameraMode::orbit;
   Bounds bounds = scene.bounds();
   float extent = bounds.empty() ? 10.0f : glm::length(bounds.max - bounds.min);
-  ViewControls controls(start, extent / kWalkSecondsAcross);
+  setup.walk_speed = extent / kWalkSecondsAcross;
+  setup.settings.size = size;
+  setup.settings.threads = o.threads;
+  setup.settings.fov_degrees = setup.start.fov_y_degrees;
+  setup.settings.overlay = o.overlay == "on" || (o.overlay == "auto" && o.frames == 0);
+  setup.settings.fullscreen = o.fullscreen;
+  setup.clear_color = glm::vec4(background, 1.0f);
+  setup.fixed_time = o.time;
+  setup.frames = o.frames;
 
-  RenderSettings settings;
-  settings.threads = o.threads;
-  settings.clear_color = glm::vec4(background, 1.0f);
-  Renderer renderer(settings);
-  Framebuffer framebuffer(size.width, size.height);
+  auto begin = std::chrono::steady_clock::now();
+  ViewLoop loop(window, std::move(setup));
+  int frames = loop.run();
+  if (!o.screenshot.empty() && frames > 0) write_image(loop.last_frame(), o.screenshot);
 
-  int frames = 0;
-  double render_ms = 0.0;
-  auto begin = Clock::now();
-  auto last = begin;
-  for (bool running = true; running;) {
-    SDL_Event event;
-    bool screenshot = false;
-    while (SDL_PollEvent(&event)) {
-      ViewAction action = controls.handle(event);
-      if (action == ViewAction::quit) running = false;
-      if (action == ViewAction::screenshot) screenshot = true;
-    }
-    if (!running) break;
-    auto now = Clock::now();
-    controls.update(std::chrono::duration<double>(now - last).count());
-    last = now;
-    // Animation follows time, never the frame count: the same t always gives the same image.
-    if (loaded.world) {
-      loaded.world->animate(o.time.value_or(std::chrono::duration<double>(now - begin).count()));
-    }
-    auto start_render = Clock::now();
-    renderer.begin_frame(controls.camera(), scene.lighting);
-    draw_scene(renderer, scene);
-    renderer.finish(framebuffer);
-    render_ms += std::chrono::duration<double, std::milli>(Clock::now() - start_render).count();
-    window.present(framebuffer);
-    ++frames;
-    if (screenshot) {
-      std::string name = next_screenshot_name();
-      write_image(framebuffer, name);
-      std::printf("view: saved %s\n", name.c_str());
-      std::fflush(stdout);
-    }
-    if (o.frames > 0 && frames >= o.frames) running = false;
-  }
-  if (!o.screenshot.empty() && frames > 0) write_image(framebuffer, o.screenshot);
-
-  double seconds = std::chrono::duration<double>(Clock::now() - begin).count();
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
   double average_ms = frames ? seconds * 1000.0 / frames : 0.0;
   std::printf("view: %d frames, %.2f ms/frame average (render %.2f ms), %.1f fps\n", frames,
-              average_ms, frames ? render_ms / frames : 0.0, seconds > 0 ? frames / seconds : 0.0);
+              average_ms, frames ? loop.render_ms() / frames : 0.0,
+              seconds > 0 ? frames / seconds : 0.0);
   return 0;
 }
 

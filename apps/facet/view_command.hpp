@@ -1,5 +1,6 @@
 // `facet view`: an interactive window on a model or a built-in scene (the islands world is
-// animated by time), with first-person controls; also scripted (--frames, --screenshot).
+// animated by time and has sound), with first-person and orbit controls, function keys and an
+// overlay; also scripted (--frames, --screenshot, --camera-path).
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -14,9 +15,12 @@ struct ViewOptions {
   SceneOptions scene;
   std::string size = "1280x720";  // render resolution, independent of the window
   int threads = 0;
-  int frames = 0;              // 0: run until the window is closed
-  std::string screenshot;      // empty: none
-  std::optional<double> time;  // fixed animation time in seconds; unset: the real clock
+  int frames = 0;                // 0: run until the window is closed
+  std::string screenshot;        // empty: none
+  std::optional<double> time;    // fixed animation time in seconds; unset: the real clock
+  std::string camera_path;       // empty: the camera follows input
+  std::string overlay = "auto";  // auto: on unless scripted (--frames)
+  bool fullscreen = false;
 };
 
 // Adds the `view` subcommand and its flags to app; options are filled on parse.

@@ -1,4 +1,4 @@
-// The viewer's input (see view_controls.hpp).
+// The viewer's camera input (see view_controls.hpp).
 #include "view_controls.hpp"
 
 #include <SDL.h>
@@ -12,10 +12,18 @@ namespace {
 constexpr float kRunFactor = 4.0f;           // Shift
 constexpr float kTurnDegreesPerSecond = 90;  // arrow keys
 constexpr float kMouseDegreesPerPixel = 0.15f;
+constexpr float kZoomPerWheelStep = 0.9f;  // orbit: distance factor per wheel notch
+constexpr float kZoomPerSecond = 1.5f;     // orbit, W/S: e-folds of distance per second
+constexpr float kPanPerPixel = 0.002f;     // orbit: pan, in distances per pixel dragged
 
 }  // namespace
 
-ViewControls::ViewControls(const Camera& start, float speed) : start_(start), speed_(speed) {
+ViewControls::ViewControls(const Camera& start, float speed, CameraMode mode)
+    : start_(start),
+      target_(start.target),
+      distance_(glm::length(start.target - start.eye)),
+      speed_(speed),
+      mode_(mode) {
   // FirstPersonCamera::forward() is (-sin yaw cos pitch, sin pitch, -cos yaw cos pitch).
   glm::vec3 f = start.forward();
   first_person_.position = start.eye;
@@ -23,28 +31,76 @@ ViewControls::ViewControls(const Camera& start, float speed) : start_(start), sp
   first_person_.pitch_degrees = glm::degrees(std::asin(glm::clamp(f.y, -1.0f, 1.0f)));
 }
 
+void ViewControls::place_orbit_eye() {
+  first_person_.position = target_ - first_person_.forward() * distance_;
+}
+
+void ViewControls::turn(float yaw_degrees, float pitch_degrees) {
+  first_person_.yaw_degrees += yaw_degrees;
+  first_person_.pitch_degrees =
+      glm::clamp(first_person_.pitch_degrees + pitch_degrees, -89.0f, 89.0f);
+  if (mode_ == CameraMode::orbit) place_orbit_eye();
+  moved_ = true;
+}
+
 ViewAction ViewControls::handle(const SDL_Event& event) {
   switch (event.type) {
     case SDL_QUIT:
       return ViewAction::quit;
-    case SDL_KEYDOWN:
+    case SDL_KEYDOWN: {
       if (event.key.repeat) return ViewAction::none;
-      if (event.key.keysym.sym == SDLK_F12) return ViewAction::screenshot;
-      if (event.key.keysym.sym == SDLK_ESCAPE) {
+      SDL_Keycode key = event.key.keysym.sym;
+      if (key == SDLK_F12) {
+        return (event.key.keysym.mod & KMOD_SHIFT) ? ViewAction::window_screenshot
+                                                   : ViewAction::screenshot;
+      }
+      if (key == SDLK_m) return ViewAction::toggle_mute;
+      if (key == SDLK_TAB) {
+        // Both modes share the eye and the view angles, so switching does not jump.
+        if (mode_ == CameraMode::orbit) {
+          mode_ = CameraMode::first_person;
+        } else {
+          mode_ = CameraMode::orbit;
+          target_ = first_person_.position + first_person_.forward() * distance_;
+          if (mouse_captured_) SDL_SetRelativeMouseMode(SDL_FALSE);
+          mouse_captured_ = false;
+        }
+        return ViewAction::camera_mode;
+      }
+      if (key == SDLK_ESCAPE) {
         // The first Esc releases a captured mouse; Esc with a free mouse quits.
         if (!mouse_captured_) return ViewAction::quit;
         mouse_captured_ = false;
         SDL_SetRelativeMouseMode(SDL_FALSE);
       }
       return ViewAction::none;
+    }
     case SDL_MOUSEBUTTONDOWN:
-      if (!mouse_captured_ && SDL_SetRelativeMouseMode(SDL_TRUE) == 0) mouse_captured_ = true;
+      if (mode_ == CameraMode::first_person && !mouse_captured_ &&
+          SDL_SetRelativeMouseMode(SDL_TRUE) == 0) {
+        mouse_captured_ = true;
+      }
       return ViewAction::none;
-    case SDL_MOUSEMOTION:
-      if (mouse_captured_ && (event.motion.xrel || event.motion.yrel)) {
-        first_person_.yaw_degrees -= event.motion.xrel * kMouseDegreesPerPixel;
-        first_person_.pitch_degrees -= event.motion.yrel * kMouseDegreesPerPixel;
-        first_person_.pitch_degrees = glm::clamp(first_person_.pitch_degrees, -89.0f, 89.0f);
+    case SDL_MOUSEMOTION: {
+      float dx = static_cast<float>(event.motion.xrel), dy = static_cast<float>(event.motion.yrel);
+      if (dx == 0 && dy == 0) return ViewAction::none;
+      if (mode_ == CameraMode::first_person) {
+        if (mouse_captured_) turn(-dx * kMouseDegreesPerPixel, -dy * kMouseDegreesPerPixel);
+      } else if (event.motion.state & SDL_BUTTON_LMASK) {
+        turn(-dx * kMouseDegreesPerPixel, -dy * kMouseDegreesPerPixel);
+      } else if (event.motion.state & SDL_BUTTON_MMASK) {
+        // Pan: the target slides in the view plane, as far as the scene under the cursor.
+        glm::vec3 up = glm::cross(first_person_.right(), first_person_.forward());
+        target_ += (-first_person_.right() * dx + up * dy) * (distance_ * kPanPerPixel);
+        place_orbit_eye();
+        moved_ = true;
+      }
+      return ViewAction::none;
+    }
+    case SDL_MOUSEWHEEL:
+      if (mode_ == CameraMode::orbit && event.wheel.y != 0) {
+        distance_ *= std::pow(kZoomPerWheelStep, static_cast<float>(event.wheel.y));
+        place_orbit_eye();
         moved_ = true;
       }
       return ViewAction::none;
@@ -63,29 +119,39 @@ void ViewControls::update(double dt) {
   bool up = key[SDL_SCANCODE_E] || key[SDL_SCANCODE_SPACE];
   bool down = key[SDL_SCANCODE_Q] || key[SDL_SCANCODE_LCTRL] || key[SDL_SCANCODE_RCTRL];
   float rise = static_cast<float>(up) - static_cast<float>(down);
-  float turn = axis(SDL_SCANCODE_RIGHT, SDL_SCANCODE_LEFT);  // positive yaw turns left
+  float turn_axis = axis(SDL_SCANCODE_RIGHT, SDL_SCANCODE_LEFT);  // positive yaw turns left
   float tilt = axis(SDL_SCANCODE_DOWN, SDL_SCANCODE_UP);
-  if (forward == 0 && strafe == 0 && rise == 0 && turn == 0 && tilt == 0) return;
+  if (forward == 0 && strafe == 0 && rise == 0 && turn_axis == 0 && tilt == 0) return;
 
   float seconds = static_cast<float>(dt);
   bool run = key[SDL_SCANCODE_LSHIFT] || key[SDL_SCANCODE_RSHIFT];
-  float step = speed_ * (run ? kRunFactor : 1.0f) * seconds;
+  float factor = run ? kRunFactor : 1.0f;
+  if (mode_ == CameraMode::orbit) {
+    // A/D and the arrows orbit, W/S zoom, Q/E move the target down/up.
+    distance_ *= std::exp(-forward * kZoomPerSecond * factor * seconds);
+    target_.y += rise * speed_ * factor * seconds;
+    float degrees = kTurnDegreesPerSecond * factor * seconds;
+    turn((turn_axis - strafe) * degrees, tilt * degrees);
+    return;
+  }
+  float step = speed_ * factor * seconds;
   // Walking follows the view's heading but stays level, as in most first-person games.
   glm::vec3 heading = first_person_.forward();
   heading.y = 0.0f;
   if (glm::length(heading) > 1e-6f) heading = glm::normalize(heading);
   first_person_.position += heading * (forward * step) + first_person_.right() * (strafe * step) +
                             glm::vec3(0.0f, rise * step, 0.0f);
-  first_person_.yaw_degrees += turn * kTurnDegreesPerSecond * seconds;
-  first_person_.pitch_degrees = glm::clamp(
-      first_person_.pitch_degrees + tilt * kTurnDegreesPerSecond * seconds, -89.0f, 89.0f);
-  moved_ = true;
+  turn(turn_axis * kTurnDegreesPerSecond * seconds, tilt * kTurnDegreesPerSecond * seconds);
 }
 
-Camera ViewControls::camera() const {
-  if (!moved_) return start_;
-  return first_person_.camera(start_.fov_y_degrees, start_.aspect, start_.near_plane,
-                              start_.far_plane);
+Camera ViewControls::camera(float fov_y_degrees, float aspect) const {
+  if (!moved_) {
+    Camera c = start_;
+    c.fov_y_degrees = fov_y_degrees;
+    c.aspect = aspect;
+    return c;
+  }
+  return first_person_.camera(fov_y_degrees, aspect, start_.near_plane, start_.far_plane);
 }
 
 }  // namespace facet::cli

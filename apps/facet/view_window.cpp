@@ -5,6 +5,7 @@
 #include <SDL.h>
 
 #include <cstdlib>
+#include <string>
 
 #include "facet/error.hpp"
 
@@ -65,7 +66,7 @@ void ViewWindow::close() {
   SDL_Quit();
 }
 
-void ViewWindow::present(const Framebuffer& frame) {
+void ViewWindow::draw(const Framebuffer& frame) {
   if (frame.width() != width_ || frame.height() != height_ ||
       frame.format() != ColorFormat::rgba8_srgb) {
     throw Error("view: the frame does not match the window's texture");
@@ -74,7 +75,56 @@ void ViewWindow::present(const Framebuffer& frame) {
   SDL_SetRenderDrawColor(renderer_, 0, 0, 0, 255);
   SDL_RenderClear(renderer_);
   SDL_RenderCopy(renderer_, texture_, nullptr, nullptr);
+}
+
+void ViewWindow::present(const Framebuffer& frame) {
+  draw(frame);
   SDL_RenderPresent(renderer_);
+}
+
+void ViewWindow::set_render_size(int width, int height) {
+  if (width == width_ && height == height_) return;
+  SDL_Texture* texture = SDL_CreateTexture(renderer_, SDL_PIXELFORMAT_RGBA32,
+                                           SDL_TEXTUREACCESS_STREAMING, width, height);
+  if (!texture) {
+    std::string message = "view: cannot create a ";
+    message += std::to_string(width) + "x" + std::to_string(height) + " texture (";
+    message += SDL_GetError();
+    throw Error(message + ")");
+  }
+  SDL_DestroyTexture(texture_);
+  texture_ = texture;
+  width_ = width, height_ = height;
+  SDL_RenderSetLogicalSize(renderer_, width, height);
+}
+
+void ViewWindow::set_fullscreen(bool fullscreen) {
+  bool now = (SDL_GetWindowFlags(window_) & SDL_WINDOW_FULLSCREEN_DESKTOP) != 0;
+  if (fullscreen == now) return;
+  if (fullscreen) SDL_GetWindowSize(window_, &windowed_width_, &windowed_height_);
+  SDL_SetWindowFullscreen(window_, fullscreen ? SDL_WINDOW_FULLSCREEN_DESKTOP : 0);
+  // Without a window manager (Xvfb, kiosks) nothing restores the old size; ask for it.
+  if (!fullscreen) SDL_SetWindowSize(window_, windowed_width_, windowed_height_);
+}
+
+void ViewWindow::window_size(int& width, int& height) const {
+  SDL_GetRendererOutputSize(renderer_, &width, &height);
+}
+
+Framebuffer ViewWindow::capture(const Framebuffer& frame) {
+  draw(frame);
+  int width = 0, height = 0;
+  window_size(width, height);
+  Framebuffer shot(width, height);
+  // The logical size limits reads to the letterboxed frame; lift it to read the bars too.
+  SDL_RenderSetLogicalSize(renderer_, 0, 0);
+  SDL_RenderSetViewport(renderer_, nullptr);
+  int status = SDL_RenderReadPixels(renderer_, nullptr, SDL_PIXELFORMAT_RGBA32, shot.rgba8().data(),
+                                    width * 4);
+  SDL_RenderSetLogicalSize(renderer_, width_, height_);
+  if (status != 0)
+    throw Error(std::string("view: cannot read the window (") + SDL_GetError() + ")");
+  return shot;
 }
 
 }  // namespace facet::cli

@@ -11,6 +11,7 @@
 #include "facet/light.hpp"
 #include "facet/material.hpp"
 #include "facet/mesh.hpp"
+#include "facet/overlay.hpp"
 #include "facet/procedural.hpp"
 #include "facet/renderer.hpp"
 #include "facet/scene.hpp"

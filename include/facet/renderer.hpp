@@ -15,11 +15,23 @@
 
 namespace facet {
 
+// Debug views that replace the shaded image with what the pipeline did (see
+// src/pipeline/debug_view.cpp). Shading-model views (depth, normals, wireframe) are materials
+// instead: ShadingModel.
+enum class DebugView {
+  none,       // the shaded image
+  overdraw,   // heat map of how many triangles covered each pixel (no depth test, no culling
+              // beyond the material's): black 0, blue 1, green 2, yellow 4, red 8, white 16+
+  tile_bins,  // the shaded image, each tile tinted by how many primitives were binned into
+              // it (same ramp: 1, 10, 100, 1000, 10000+) and outlined
+};
+
 struct RenderSettings {
   int threads = 0;                                // worker threads; 0 = all cores
   int tile_size = 64;                             // tile edge in pixels: 16, 32, 64 or 128
   glm::vec4 clear_color{0.0f, 0.0f, 0.0f, 1.0f};  // linear RGBA
   float exposure = 0.0f;  // in stops: colors are scaled by 2^exposure before output
+  DebugView debug_view = DebugView::none;
 };
 
 struct FrameStats {

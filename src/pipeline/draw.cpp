@@ -17,6 +17,7 @@
 
 #include "facet/error.hpp"
 #include "pipeline/bin.hpp"
+#include "pipeline/debug_view.hpp"
 #include "pipeline/draw_culling.hpp"
 #include "pipeline/geometry.hpp"
 #include "pipeline/occlusion.hpp"
@@ -146,7 +147,7 @@ void Renderer::Impl::record(const Mesh& mesh, const Material& material, const gl
   pipeline::DrawRecord record;
   record.mesh = &mesh;
   record.material = material;
-  record.pipeline = pipe;
+  record.pipeline = pipeline::debug_pipeline(settings.debug_view, pipe);
   if (is_blended(material.alpha_mode) && !mesh.positions.empty()) {
     glm::vec3 low = mesh.positions[0], high = low;
     for (const glm::vec3& p : mesh.positions) low = glm::min(low, p), high = glm::max(high, p);
@@ -204,6 +205,7 @@ void Renderer::Impl::run(Framebuffer& target) {
   background.eye = camera.eye;
   background.width = frame.width;
   background.height = frame.height;
+  pipeline::prepare_debug_frame(settings.debug_view, lighting, background);
 
   // Geometry: transform, assemble, clip, cull, set up — merged in submission order.
   pipeline::run_geometry(frame, workers);
@@ -236,8 +238,10 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
   tile.stride = ts;
   const std::uint32_t* bin = frame.bin_entries.data() + frame.bin_start[index];
   const std::uint32_t* bin_end = frame.bin_entries.data() + frame.bin_start[index + 1];
+  const std::size_t bin_size = static_cast<std::size_t>(bin_end - bin);
   const float scale = std::exp2(settings.exposure);
-  if (bin == bin_end && !background.environment) {
+  const DebugView debug = settings.debug_view;
+  if (bin == bin_end && !background.environment && debug == DebugView::none) {
     // Lazy clear: nothing drawn here, write the clear values directly.
     pipeline::resolve_cleared_tile(tile, settings.clear_color, scale, target);
     return;
@@ -266,7 +270,11 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
       frame.draws[t.draw].pipeline.raster(tile, t);
     }
   }
-  pipeline::resolve_tile(tile, scale, target);
+  if (debug == DebugView::none) {
+    pipeline::resolve_tile(tile, scale, target);
+  } else {
+    pipeline::resolve_debug_tile(tile, debug, bin_size, scale, target);
+  }
   tile_pixels_shaded[index] = tile.pixels_shaded;
 }
 

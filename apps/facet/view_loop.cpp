@@ -1,0 +1,215 @@
+// The viewer's frame loop (see view_loop.hpp).
+#include "view_loop.hpp"
+
+#include <SDL.h>
+
+#include <cstdio>
+#include <filesystem>
+
+#include "facet/image_io.hpp"
+
+namespace facet::cli {
+namespace {
+
+constexpr double kSmoothing = 0.1;  // weight of the newest frame in the smoothed frame time
+
+// PREFIX-N.png with the first N that is not taken.
+std::string next_file_name(const char* prefix) {
+  for (int n = 1;; ++n) {
+    std::string name = prefix;
+    name += "-";
+    name += std::to_string(n);
+    name += ".png";
+    if (!std::filesystem::exists(name)) return name;
+  }
+}
+
+bool is_function_key(SDL_Keycode key) {
+  return (key >= SDLK_F1 && key <= SDLK_F9) || key == SDLK_F11;
+}
+
+}  // namespace
+
+ViewLoop::ViewLoop(ViewWindow& window, ViewSetup setup)
+    : window_(window),
+      setup_(std::move(setup)),
+      settings_(setup_.settings),
+      controls_(setup_.start, setup_.walk_speed, setup_.camera_mode),
+      frame_(settings_.size.width, settings_.size.height) {
+  for (const Material& m : setup_.scene->materials) own_shading_.push_back(m.shading);
+  apply_shading();
+  make_renderer();
+  if (setup_.world) sound_ = std::make_unique<IslandsSound>(*setup_.world);
+  if (settings_.fullscreen) window_.set_fullscreen(true);
+}
+
+ViewLoop::~ViewLoop() = default;
+
+void ViewLoop::make_renderer() {
+  RenderSettings rs;
+  rs.threads = settings_.threads;
+  rs.clear_color = setup_.clear_color;
+  rs.debug_view = settings_.debug_view();
+  renderer_ = std::make_unique<Renderer>(rs);
+}
+
+// Render modes and F7 set the shading model of every material; only that field changes, as
+// the islands animate other fields (texture scrolling) every frame.
+void ViewLoop::apply_shading() {
+  std::optional<ShadingModel> forced = settings_.forced_shading();
+  std::vector<Material>& materials = setup_.scene->materials;
+  for (std::size_t i = 0; i < materials.size(); ++i) {
+    materials[i].shading = forced.value_or(own_shading_[i]);
+  }
+}
+
+void ViewLoop::apply(const SettingUpdate& update) {
+  switch (update.change) {
+    case SettingChange::mode:
+      apply_shading();
+      make_renderer();
+      break;
+    case SettingChange::shading:
+      apply_shading();
+      break;
+    case SettingChange::size:
+      window_.set_render_size(settings_.size.width, settings_.size.height);
+      frame_ = Framebuffer(settings_.size.width, settings_.size.height);
+      break;
+    case SettingChange::threads:
+      make_renderer();
+      break;
+    case SettingChange::fullscreen:
+      window_.set_fullscreen(settings_.fullscreen);
+      break;
+    default:
+      break;
+  }
+  double now = std::chrono::duration<double>(Clock::now() - begin_).count();
+  if (update.change != SettingChange::none) overlay_.show_change(update.message, now);
+}
+
+bool ViewLoop::handle_events() {
+  double now = std::chrono::duration<double>(Clock::now() - begin_).count();
+  SDL_Event event;
+  bool running = true;
+  while (SDL_PollEvent(&event)) {
+    overlay_.handle(event);
+    if (event.type == SDL_KEYDOWN && !event.key.repeat && is_function_key(event.key.keysym.sym)) {
+      apply(apply_function_key(event.key.keysym.sym, settings_));
+      continue;
+    }
+    switch (controls_.handle(event)) {
+      case ViewAction::quit:
+        running = false;
+        break;
+      case ViewAction::screenshot:
+        save_frame_ = true;
+        break;
+      case ViewAction::window_screenshot:
+        save_window_ = true;
+        break;
+      case ViewAction::toggle_mute:
+        if (sound_) {
+          sound_->set_muted(!sound_->muted());
+          overlay_.show_change(sound_->muted() ? "sound: muted" : "sound: on", now);
+        }
+        break;
+      case ViewAction::camera_mode:
+        overlay_.show_change(
+            controls_.mode() == CameraMode::orbit ? "camera: orbit" : "camera: first person", now);
+        break;
+      case ViewAction::none:
+        break;
+    }
+  }
+  return running;
+}
+
+Camera ViewLoop::camera(double t) const {
+  float aspect = static_cast<float>(settings_.size.width) / settings_.size.height;
+  if (!setup_.camera_path) return controls_.camera(settings_.fov_degrees, aspect);
+  return setup_.camera_path->at(t).camera(settings_.fov_degrees, aspect, setup_.start.near_plane,
+                                          setup_.start.far_plane);
+}
+
+void ViewLoop::render(double now, double dt) {
+  // Animation follows time, never the frame count: the same t always gives the same image.
+  double t = setup_.fixed_time.value_or(now);
+  if (setup_.world) setup_.world->animate(t);
+  Camera view = camera(t);
+  last_camera_ = view;
+  if (sound_) sound_->update(*setup_.world, view, dt);
+  auto start = Clock::now();
+  renderer_->begin_frame(view, setup_.scene->lighting);
+  draw_scene(*renderer_, *setup_.scene);
+  renderer_->finish(frame_);
+  render_ms_ += std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+
+  OverlayInfo info;
+  info.frame_ms = smoothed_ms_;
+  info.fps = smoothed_ms_ > 0.0 ? 1000.0 / smoothed_ms_ : 0.0;
+  info.size = settings_.size;
+  info.fov_degrees = settings_.fov_degrees;
+  info.triangles = renderer_->stats().drawn;
+  info.threads = settings_.threads;
+  info.mode = to_string(settings_.mode);
+  info.shading = settings_.shading_name();
+  info.camera = setup_.camera_path                      ? "camera path"
+                : controls_.mode() == CameraMode::orbit ? "orbit (Tab)"
+                                                        : "first person (Tab)";
+  if (sound_)
+    info.sound = !sound_->available() ? "off (no device)" : sound_->muted() ? "muted" : "on (M)";
+  overlay_.draw(frame_, info, settings_.overlay, settings_.help, now, dt);
+}
+
+// Saves the frame and says on stdout what it shows: the settings and the camera, so scripts
+// (and the tests) can check what each input did.
+void ViewLoop::save_frame() {
+  std::string name = next_file_name("facet-screenshot");
+  write_image(frame_, name);
+  const Camera& c = last_camera_;
+  glm::vec3 f = c.forward();
+  int ww = 0, wh = 0;
+  window_.window_size(ww, wh);
+  const char* camera_mode = controls_.mode() == CameraMode::orbit ? "orbit" : "first person";
+  const char* sound = !sound_ ? "none" : sound_->muted() ? "muted" : "on";
+  std::printf(
+      "view: saved %s (render %dx%d, window %dx%d, eye %.4f,%.4f,%.4f, forward %.4f,%.4f,%.4f, "
+      "fov %.1f, mode %s, shading %s, threads %d, camera %s, sound %s)\n",
+      name.c_str(), frame_.width(), frame_.height(), ww, wh, c.eye.x, c.eye.y, c.eye.z, f.x, f.y,
+      f.z, c.fov_y_degrees, std::string(to_string(settings_.mode)).c_str(),
+      settings_.shading_name().c_str(), settings_.threads, camera_mode, sound);
+  std::fflush(stdout);
+}
+
+void ViewLoop::save_window() {
+  std::string name = next_file_name("facet-window");
+  Framebuffer shot = window_.capture(frame_);
+  write_image(shot, name);
+  std::printf("view: saved %s (window %dx%d)\n", name.c_str(), shot.width(), shot.height());
+  std::fflush(stdout);
+}
+
+int ViewLoop::run() {
+  int frames = 0;
+  begin_ = Clock::now();
+  auto last = begin_;
+  while (handle_events()) {
+    auto now = Clock::now();
+    double dt = std::chrono::duration<double>(now - last).count();
+    last = now;
+    smoothed_ms_ =
+        frames == 0 ? dt * 1000.0 : smoothed_ms_ + (dt * 1000.0 - smoothed_ms_) * kSmoothing;
+    controls_.update(dt);
+    render(std::chrono::duration<double>(now - begin_).count(), dt);
+    window_.present(frame_);
+    ++frames;
+    if (save_frame_) save_frame(), save_frame_ = false;
+    if (save_window_) save_window(), save_window_ = false;
+    if (setup_.frames > 0 && frames >= setup_.frames) break;
+  }
+  return frames;
+}
+
+}  // namespace facet::cli

@@ -1,0 +1,76 @@
+// The viewer's frame loop: reads events (function keys, camera input, overlay input), moves
+// the camera (input or a camera path), animates and sounds the islands world, renders with
+// facet, draws the overlay into the frame, shows it, and saves screenshots.
+#pragma once
+
+#include <chrono>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "camera_path.hpp"
+#include "facet/framebuffer.hpp"
+#include "facet/islands.hpp"
+#include "facet/renderer.hpp"
+#include "facet/scene.hpp"
+#include "view_controls.hpp"
+#include "view_overlay.hpp"
+#include "view_settings.hpp"
+#include "view_sound.hpp"
+#include "view_window.hpp"
+
+namespace facet::cli {
+
+// What the loop runs on; built by run_view from the command line.
+struct ViewSetup {
+  Scene* scene = nullptr;
+  IslandsWorld* world = nullptr;  // non-null: animate (and sound) the islands
+  Camera start;
+  CameraMode camera_mode = CameraMode::first_person;
+  float walk_speed = 1.0f;
+  ViewSettings settings;
+  glm::vec4 clear_color{0.0f};
+  std::optional<CameraPath> camera_path;
+  std::optional<double> fixed_time;  // --time
+  int frames = 0;                    // 0: until closed
+};
+
+class ViewLoop {
+ public:
+  ViewLoop(ViewWindow& window, ViewSetup setup);
+  ~ViewLoop();
+
+  // Runs until quit (or `frames` frames); returns the frames rendered.
+  int run();
+  const Framebuffer& last_frame() const { return frame_; }
+  double render_ms() const { return render_ms_; }  // summed over all frames
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  bool handle_events();  // false: quit
+  void apply(const SettingUpdate& update);
+  void apply_shading();
+  void make_renderer();
+  void render(double now, double dt);
+  Camera camera(double t) const;
+  void save_frame();
+  void save_window();
+
+  ViewWindow& window_;
+  ViewSetup setup_;
+  ViewSettings& settings_;  // setup_.settings
+  ViewControls controls_;
+  std::vector<ShadingModel> own_shading_;  // each material's own model
+  std::unique_ptr<Renderer> renderer_;
+  Framebuffer frame_;
+  ViewOverlay overlay_;
+  std::unique_ptr<IslandsSound> sound_;
+  Clock::time_point begin_;
+  Camera last_camera_;  // what the last frame was rendered with
+  double smoothed_ms_ = 0.0;
+  double render_ms_ = 0.0;
+  bool save_frame_ = false, save_window_ = false;
+};
+
+}  // namespace facet::cli

@@ -1,0 +1,51 @@
+// The viewer's adjustable settings and the function keys that change them (F1-F9, F11): render
+// mode, shading model, field of view, render resolution, threads, overlay, help, fullscreen.
+// Each change comes back with a one-line description for the overlay's change panel.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "arguments.hpp"
+#include "facet/material.hpp"
+#include "facet/renderer.hpp"
+
+namespace facet::cli {
+
+// F2 cycles these, in this order.
+enum class RenderMode { shaded, wireframe, wire_overlay, depth, normals, overdraw, tile_bins };
+std::string_view to_string(RenderMode mode);
+
+struct ViewSettings {
+  RenderMode mode = RenderMode::shaded;
+  std::optional<ShadingModel> shading;  // F7: forced on every material; empty: each its own
+  float fov_degrees = 60.0f;
+  ImageSize size;
+  int threads = 0;  // 0 = all cores
+  bool overlay = true;
+  bool help = false;
+  bool fullscreen = false;
+
+  // The material shading model the mode and F7 ask for; empty: the material's own.
+  std::optional<ShadingModel> forced_shading() const;
+  DebugView debug_view() const;
+  std::string shading_name() const;  // "material" when not forced
+};
+
+enum class SettingChange { none, mode, shading, fov, size, threads, overlay, help, fullscreen };
+
+struct SettingUpdate {
+  SettingChange change = SettingChange::none;
+  std::string message;  // e.g. "render mode: wireframe"
+};
+
+// Applies a function key (an SDL_Keycode); keys that are not F1-F9 or F11 change nothing.
+SettingUpdate apply_function_key(int keycode, ViewSettings& settings);
+
+// Render resolutions that F5/F6 step through.
+inline constexpr ImageSize kViewResolutions[] = {{320, 180},   {640, 360},  {960, 540},
+                                                 {1280, 720},  {1600, 900}, {1920, 1080},
+                                                 {2560, 1440}, {3840, 2160}};
+
+}  // namespace facet::cli

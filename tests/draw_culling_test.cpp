@@ -13,6 +13,11 @@ namespace {
 
 constexpr int kWidth = 64, kHeight = 48;
 
+bool outside(const Mesh& mesh, const glm::mat4& view_projection) {
+  std::optional<pipeline::MeshBox> box = pipeline::finite_bounds(mesh);
+  return box && pipeline::box_outside_frustum(*box, view_projection);
+}
+
 Mesh triangle_at(glm::vec3 centre) {
   return soup(
       {centre + glm::vec3(-1, -1, 0), centre + glm::vec3(1, -1, 0), centre + glm::vec3(0, 1, 0)});
@@ -23,23 +28,22 @@ TEST(DrawCulling, MeshesOutsideEachPlaneAreDropped) {
   // Left, right, below, above, behind the eye, beyond the far plane (100).
   for (glm::vec3 centre : {glm::vec3(-500, 0, -10), glm::vec3(500, 0, -10), glm::vec3(0, -500, -10),
                            glm::vec3(0, 500, -10), glm::vec3(0, 0, 10), glm::vec3(0, 0, -500)}) {
-    EXPECT_TRUE(pipeline::draw_outside_frustum(triangle_at(centre), view_projection))
+    EXPECT_TRUE(outside(triangle_at(centre), view_projection))
         << centre.x << "," << centre.y << "," << centre.z;
   }
   // In view, straddling the left edge, and straddling the near plane are kept.
   for (glm::vec3 centre :
        {glm::vec3(0, 0, -10), glm::vec3(-6.6f, 0, -10), glm::vec3(0, 0, -0.1f)}) {
-    EXPECT_FALSE(pipeline::draw_outside_frustum(triangle_at(centre), view_projection))
+    EXPECT_FALSE(outside(triangle_at(centre), view_projection))
         << centre.x << "," << centre.y << "," << centre.z;
   }
 }
 
 TEST(DrawCulling, NonFiniteOrEmptyMeshesAreLeftToThePipeline) {
-  const glm::mat4 view_projection = test_camera(kWidth, kHeight).view_projection();
   Mesh with_nan = triangle_at({500, 0, -10});
   with_nan.positions[1].x = std::numeric_limits<float>::quiet_NaN();
-  EXPECT_FALSE(pipeline::draw_outside_frustum(with_nan, view_projection));
-  EXPECT_FALSE(pipeline::draw_outside_frustum(Mesh{}, view_projection));
+  EXPECT_FALSE(pipeline::finite_bounds(with_nan));
+  EXPECT_FALSE(pipeline::finite_bounds(Mesh{}));
 }
 
 TEST(DrawCulling, DroppedDrawsCountAsCulledAndDrawNothing) {

@@ -85,20 +85,40 @@ TEST(Overlay, TextureIsModulatedByVertexColorAndItsAlphaBlends) {
   EXPECT_EQ(channel(fb, 6, 1, 0), 100);
 }
 
-TEST(Overlay, HugeAndNanCoordinatesAreClippedNotUndefined) {
-  // Far beyond int range, still within float: the quad covers the image.
+TEST(Overlay, FractionalQuadsBlendEveryPixelOnceAlongTheDiagonal) {
+  // Vertices between pixel centres: the diagonal's edge functions must still be exact
+  // opposites in the two triangles, or pixels on it would blend twice (216) or not at all.
+  for (float shift : {0.0f, 0.13f, 0.37f, 0.5f, 0.71f}) {
+    Framebuffer fb = grey_image(40, 32);
+    const float x = 3.3f + shift, y = 4.7f - shift, w = 27.13f + shift, h = 21.91f;
+    Quad quad(x, y, w, h, {1.0f, 0.0f, 0.0f, 0.5f});
+    draw_overlay(fb, quad.draw());
+    for (int py = 0; py < 32; ++py) {
+      for (int px = 0; px < 40; ++px) {
+        const float cx = px + 0.5f, cy = py + 0.5f;
+        const bool inside = cx > x && cx < x + w && cy > y && cy < y + h;
+        ASSERT_EQ(channel(fb, px, py, 0), inside ? 178 : 100) << px << "," << py << " " << shift;
+      }
+    }
+  }
+}
+
+TEST(Overlay, HugeAndNanInputIsSkippedNotUndefined) {
+  // Beyond a million pixels (not a user interface) and NaN: the triangles are skipped.
   Framebuffer fb = grey_image(16, 16);
   Quad huge(-1e10f, -1e10f, 3e10f, 3e10f, {1.0f, 1.0f, 1.0f, 1.0f});
   draw_overlay(fb, huge.draw());
-  EXPECT_EQ(channel(fb, 0, 0, 0), 255);
-  EXPECT_EQ(channel(fb, 15, 15, 0), 255);
-  // So large that the edge functions overflow to infinity: skipped, not undefined.
   Quad overflowing(-1e30f, -1e30f, 3e30f, 3e30f, {1.0f, 1.0f, 1.0f, 1.0f});
   draw_overlay(fb, overflowing.draw());
-  Framebuffer untouched = grey_image(16, 16);
   Quad nan(std::nanf(""), 0, 8, 8, {0.0f, 0.0f, 0.0f, 1.0f});
-  draw_overlay(untouched, nan.draw());
-  EXPECT_EQ(channel(untouched, 4, 4, 0), 100);
+  draw_overlay(fb, nan.draw());
+  EXPECT_EQ(channel(fb, 4, 4, 0), 100);
+  EXPECT_EQ(channel(fb, 15, 15, 0), 100);
+  // A NaN color blends as 0 (black, transparent alpha 0 leaves the image).
+  Quad nan_color(0, 0, 16, 16, {std::nanf(""), 0.0f, 0.0f, 1.0f});
+  draw_overlay(fb, nan_color.draw());
+  EXPECT_EQ(channel(fb, 4, 4, 0), 0);
+  EXPECT_EQ(channel(fb, 4, 4, 1), 0);
 }
 
 TEST(Overlay, RejectsBadIndicesAndFloatTargets) {

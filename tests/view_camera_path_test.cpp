@@ -54,6 +54,8 @@ TEST(ViewCameraPath, BadFilesNameTheFileAndLine) {
   EXPECT_NE(path_error("pitch", "0 0 1 5 0 95\n").find(":1: pitch must be inside"),
             std::string::npos);
   EXPECT_NE(path_error("empty", "# nothing here\n\n").find("no camera keys"), std::string::npos);
+  EXPECT_NE(path_error("far", "0 0 1 5 0 0\n1 1e39 1 5 0 0\n").find(":2: values must lie within"),
+            std::string::npos);
 }
 
 TEST(ViewCameraPath, MissingFileIsOneLine) {

@@ -46,6 +46,12 @@ bool parse_key(const std::string& text, const std::string& name, int line, Camer
     problem += std::to_string(values.size());
     fail(name, line, problem);
   }
+  // Beyond this, a position's float spacing passes one unit and the camera's unit step from
+  // eye to target is lost; times and angles get the same sanity bound.
+  constexpr double kLargest = 1e6;
+  for (double v : values) {
+    if (std::abs(v) > kLargest) fail(name, line, "values must lie within +-1e6");
+  }
   if (!(std::abs(values[5]) < 90.0)) fail(name, line, "pitch must be inside (-90, 90) degrees");
   key.time = values[0];
   key.pose.position = glm::vec3(values[1], values[2], values[3]);

@@ -3,6 +3,7 @@
 
 #include <SDL.h>
 
+#include <algorithm>
 #include <cmath>
 #include <glm/glm.hpp>
 
@@ -29,6 +30,13 @@ ViewControls::ViewControls(const Camera& start, float speed, CameraMode mode)
   first_person_.position = start.eye;
   first_person_.yaw_degrees = glm::degrees(std::atan2(-f.x, -f.z));
   first_person_.pitch_degrees = glm::degrees(std::asin(glm::clamp(f.y, -1.0f, 1.0f)));
+}
+
+void ViewControls::zoom(float factor) {
+  // Between the near plane (closer, the target would be clipped; and 0 could never grow
+  // again) and the far plane (farther, the scene is gone and the eye's coordinates would
+  // swallow the unit step to the target).
+  distance_ = std::clamp(distance_ * factor, start_.near_plane, start_.far_plane);
 }
 
 void ViewControls::place_orbit_eye() {
@@ -99,7 +107,7 @@ ViewAction ViewControls::handle(const SDL_Event& event) {
     }
     case SDL_MOUSEWHEEL:
       if (mode_ == CameraMode::orbit && event.wheel.y != 0) {
-        distance_ *= std::pow(kZoomPerWheelStep, static_cast<float>(event.wheel.y));
+        zoom(std::pow(kZoomPerWheelStep, static_cast<float>(event.wheel.y)));
         place_orbit_eye();
         moved_ = true;
       }
@@ -128,7 +136,7 @@ void ViewControls::update(double dt) {
   float factor = run ? kRunFactor : 1.0f;
   if (mode_ == CameraMode::orbit) {
     // A/D and the arrows orbit, W/S zoom, Q/E move the target down/up.
-    distance_ *= std::exp(-forward * kZoomPerSecond * factor * seconds);
+    zoom(std::exp(-forward * kZoomPerSecond * factor * seconds));
     target_.y += rise * speed_ * factor * seconds;
     float degrees = kTurnDegreesPerSecond * factor * seconds;
     turn((turn_axis - strafe) * degrees, tilt * degrees);

@@ -33,7 +33,8 @@ class ViewControls {
   CameraMode mode() const { return mode_; }
 
  private:
-  void place_orbit_eye();  // orbit: the eye from the target, the distance and the view angles
+  void place_orbit_eye();   // orbit: the eye from the target, the distance and the view angles
+  void zoom(float factor);  // orbit distance times factor, kept between near and far
   void turn(float yaw_degrees, float pitch_degrees);
 
   Camera start_;

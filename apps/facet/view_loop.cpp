@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "facet/error.hpp"
 #include "facet/image_io.hpp"
 
 namespace facet::cli {
@@ -191,6 +192,18 @@ void ViewLoop::save_window() {
   std::fflush(stdout);
 }
 
+// A failed save (read-only directory, full disk) must not end an interactive session: say so
+// in one line and go on.
+void ViewLoop::save_screenshots() {
+  try {
+    if (save_frame_) save_frame();
+    if (save_window_) save_window();
+  } catch (const Error& error) {
+    std::fprintf(stderr, "view: cannot save the screenshot: %s\n", error.what());
+  }
+  save_frame_ = save_window_ = false;
+}
+
 int ViewLoop::run() {
   int frames = 0;
   begin_ = Clock::now();
@@ -205,8 +218,7 @@ int ViewLoop::run() {
     render(std::chrono::duration<double>(now - begin_).count(), dt);
     window_.present(frame_);
     ++frames;
-    if (save_frame_) save_frame(), save_frame_ = false;
-    if (save_window_) save_window(), save_window_ = false;
+    if (save_frame_ || save_window_) save_screenshots();
     if (setup_.frames > 0 && frames >= setup_.frames) break;
   }
   return frames;

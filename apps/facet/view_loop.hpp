@@ -56,6 +56,7 @@ class ViewLoop {
   Camera camera(double t) const;
   void save_frame();
   void save_window();
+  void save_screenshots();  // the requested ones; a failure is reported, not thrown
 
   ViewWindow& window_;
   ViewSetup setup_;

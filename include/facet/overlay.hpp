@@ -37,8 +37,9 @@ struct OverlayDraw {
 // centre is inside a triangle (edges shared by two triangles belong to exactly one), its color
 // is vertex color x texel, blended "over" with straight alpha in the stored (sRGB) encoding —
 // as UI toolkits expect, so colors match what they were designed on. Depth is neither tested
-// nor written. One thread, no allocation. Throws facet::Error for an rgba32f target, an rgba32f
-// texture or an index out of range.
+// nor written. Vertices snap to 1/256 pixel; a triangle with a vertex more than a million
+// pixels from the origin, or NaN, is skipped. One thread, no allocation. Throws facet::Error
+// for an rgba32f target, an rgba32f texture or an index out of range.
 void draw_overlay(Framebuffer& target, const OverlayDraw& draw);
 
 }  // namespace facet

@@ -15,7 +15,7 @@ namespace facet::pipeline::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
 // A block row is 8 pixels: one vector on AVX2 and AVX-512 (which then uses 256-bit vectors),
-// two on SSE4, eight on the scalar target.
+// two on SSE4 and on EMU128 (Highway's portable fallback, plain C++ on four-lane arrays).
 using FloatTag = hn::CappedTag<float, kBlockSize>;
 using IntTag = hn::RebindToSigned<FloatTag>;
 

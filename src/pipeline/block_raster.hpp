@@ -21,9 +21,10 @@ inline constexpr int kBlockPixels = kBlockSize * kBlockSize;
 // at pixel centres, which are 256 fixed-point units apart, so E(x, y) = E(0, 0) + 256*(a*x +
 // b*y) with a, b the SetupTriangle's coefficients, and E >= 0 exactly when
 // floor(E(0, 0) / 256) + a*x + b*y >= 0. That is what e holds. raster.hpp only passes an edge
-// that crosses the block (some corner in, some out), so |e| <= (|a| + |b|) * 7 < 2^27 for
-// coefficients within 2^23 (fixed_point.hpp); an edge that is inside at all four corners is
-// passed as e = a = b = 0 (always inside).
+// that crosses the block rectangle [x_begin, x_end) x [y_begin, y_end) (>= 0 at some of its
+// corners, < 0 at others), so |e| <= 7 * (|a| + |b|); the kernel steps e over all 8 columns
+// and rows, to at most 14 * (|a| + |b|) < 2^28 for coefficients within 2^23 (fixed_point.hpp).
+// An edge that is inside at all four corners is passed as e = a = b = 0 (always inside).
 struct BlockInput {
   std::int32_t e[3];
   std::int32_t a[3];

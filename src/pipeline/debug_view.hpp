@@ -15,7 +15,8 @@
 namespace facet::pipeline {
 
 // The pipeline a draw runs under the debug view: the overdraw counter for `overdraw`,
-// otherwise the draw's own.
+// otherwise the draw's own. (Under `overdraw`, line primitives are not drawn: the heat map
+// counts triangles.)
 const DrawPipeline& debug_pipeline(DebugView view, const DrawPipeline& own);
 
 // The overdraw counter accumulates from zero: no fog, no environment, a black clear.

@@ -140,7 +140,8 @@ void Renderer::Impl::record(const Mesh& mesh, const Material& material, const gl
   if (!recording) throw Error("renderer: draw() called before begin_frame()");
   mesh.validate();
   const glm::mat4 model_view_projection = frame.view_projection * transform;
-  if (pipeline::draw_outside_frustum(mesh, model_view_projection)) {
+  const std::optional<pipeline::MeshBox> box = pipeline::finite_bounds(mesh);
+  if (box && pipeline::box_outside_frustum(*box, model_view_projection)) {
     primitives_outside += mesh.primitive_count();
     return;
   }
@@ -148,10 +149,8 @@ void Renderer::Impl::record(const Mesh& mesh, const Material& material, const gl
   record.mesh = &mesh;
   record.material = material;
   record.pipeline = pipeline::debug_pipeline(settings.debug_view, pipe);
-  if (is_blended(material.alpha_mode) && !mesh.positions.empty()) {
-    glm::vec3 low = mesh.positions[0], high = low;
-    for (const glm::vec3& p : mesh.positions) low = glm::min(low, p), high = glm::max(high, p);
-    glm::vec4 centre = camera.view() * transform * glm::vec4((low + high) * 0.5f, 1.0f);
+  if (is_blended(material.alpha_mode) && box) {
+    glm::vec4 centre = camera.view() * transform * glm::vec4((box->low + box->high) * 0.5f, 1.0f);
     record.view_depth = -centre.z;
   }
   shading::DrawUniforms& u = record.uniforms;
@@ -264,6 +263,8 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
   for (; bin != bin_end; ++bin) {
     const std::uint32_t entry = *bin;
     if (entry & pipeline::kLineBit) {
+      // The overdraw heat map counts triangles; a line would overwrite the count.
+      if (debug == DebugView::overdraw) continue;
       pipeline::raster_line(tile, frame.lines[entry & ~pipeline::kLineBit]);
     } else {
       const pipeline::SetupTriangle& t = frame.triangles[entry];

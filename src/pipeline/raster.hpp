@@ -10,6 +10,8 @@
 #include <cstdint>
 #include <glm/vec4.hpp>
 #include <limits>
+#include <type_traits>
+#include <variant>
 
 #include "pipeline/block_raster.hpp"
 #include "pipeline/fixed_point.hpp"
@@ -59,16 +61,26 @@ constexpr bool edge_overlay() {
 }
 inline constexpr float kOverlayHalfWidth = 0.5f;
 
-// Distance in pixels from pixel (x, y)'s centre to the triangle's nearest edge (inside: >= 0):
-// E / |(a, b)| is in fixed-point units, so one more division by the sub-pixel scale. Only the
-// wire overlay view asks, so the square roots are paid here rather than in every setup.
-inline float distance_to_edges(const SetupTriangle& t, int x, int y) {
+// 1 / |(a, b)| of each edge, in pixels: E_i times it is the distance to edge i in pixels (E is
+// in fixed-point units, hence the sub-pixel scale). Only the wire overlay view needs them, so
+// setup does not pay for the square roots; PixelWriter computes them once per triangle.
+struct EdgeScales {
+  double per_unit[3];
+  explicit EdgeScales(const SetupTriangle& t) {
+    for (int i = 0; i < 3; ++i) {
+      const double length = std::sqrt(double(t.a[i]) * t.a[i] + double(t.b[i]) * t.b[i]);
+      per_unit[i] = 1.0 / (length * kSubpixelScale);
+    }
+  }
+};
+
+// Distance in pixels from pixel (x, y)'s centre to the triangle's nearest edge (inside: >= 0).
+inline float distance_to_edges(const SetupTriangle& t, const EdgeScales& scales, int x, int y) {
   const std::int64_t cx = pixel_centre(x), cy = pixel_centre(y);
   double distance = std::numeric_limits<double>::max();
   for (int i = 0; i < 3; ++i) {
     const std::int64_t e = std::int64_t{t.a[i]} * cx + std::int64_t{t.b[i]} * cy + t.c[i];
-    const double length = std::sqrt(double(t.a[i]) * t.a[i] + double(t.b[i]) * t.b[i]);
-    distance = std::min(distance, static_cast<double>(e) / (length * kSubpixelScale));
+    distance = std::min(distance, static_cast<double>(e) * scales.per_unit[i]);
   }
   return static_cast<float>(distance);
 }
@@ -128,6 +140,14 @@ void blend_into(glm::vec4& out, const glm::vec4& color) {
 // the part of the raster loop that is the same for every path below.
 template <class Shading, AlphaMode kAlpha>
 class PixelWriter {
+  static auto make_edge_scales(const SetupTriangle& t) {
+    if constexpr (edge_overlay<Shading>()) {
+      return EdgeScales(t);
+    } else {
+      return std::monostate{};
+    }
+  }
+
  public:
   // Blended draws test depth but do not write it (they are sorted back to front instead).
   static constexpr bool kDepthWrite =
@@ -138,7 +158,8 @@ class PixelWriter {
         t_(t),
         uniforms_(tile.frame->draws[t.draw].uniforms),
         fog_(uniforms_.lighting->fog),
-        alpha_cutoff_(uniforms_.material->alpha_cutoff) {
+        alpha_cutoff_(uniforms_.material->alpha_cutoff),
+        edge_scales_(make_edge_scales(t)) {
     fragment.planes = tile.frame->planes.data() + t.varying_planes;
     fragment.inv_w = &t.inv_w;
   }
@@ -155,7 +176,9 @@ class PixelWriter {
       if (!(color.a >= alpha_cutoff_)) return false;  // cut-out: no color, no depth
     }
     if constexpr (edge_overlay<Shading>()) {
-      if (distance_to_edges(t_, x, y) < kOverlayHalfWidth) color = uniforms_.wire_color;
+      if (distance_to_edges(t_, edge_scales_, x, y) < kOverlayHalfWidth) {
+        color = uniforms_.wire_color;
+      }
     }
     color = shading::apply_fog(color, fragment.w, fog_);
     blend_into<Shading, kAlpha>(tile_.color[pixel], color);
@@ -173,6 +196,9 @@ class PixelWriter {
   const shading::DrawUniforms& uniforms_;
   const Fog& fog_;
   float alpha_cutoff_;
+  // Only the wire overlay reads it (an empty struct otherwise, and never computed).
+  [[no_unique_address]] std::conditional_t<edge_overlay<Shading>(), EdgeScales, std::monostate>
+      edge_scales_;
 };
 
 // Triangles whose bounding box in the tile is at most this many pixels skip the block

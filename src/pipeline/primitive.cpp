@@ -56,19 +56,16 @@ struct Assembler {
   }
 
   void triangle(std::uint32_t i0, std::uint32_t i1, std::uint32_t i2) {
-    ClipPolygon polygon;
-    polygon.count = 3;
-    polygon.vertices[0] = vertices[i0];
-    polygon.vertices[1] = vertices[i1];
-    polygon.vertices[2] = vertices[i2];
-    ClipVertex* v = polygon.vertices;
-    if (!finite(v[0].clip) || !finite(v[1].clip) || !finite(v[2].clip)) {
+    // Culling reads the shared vertices in place: most rejected triangles (facing away, off
+    // screen) never pay for copying their varyings.
+    const ClipVertex* in[3] = {&vertices[i0], &vertices[i1], &vertices[i2]};
+    if (!finite(in[0]->clip) || !finite(in[1]->clip) || !finite(in[2]->clip)) {
       ++out.culled;  // NaN/Inf positions: skipped, never rasterized
       return;
     }
-    unsigned out0 = outcode(v[0].clip, frustum), out1 = outcode(v[1].clip, frustum),
-             out2 = outcode(v[2].clip, frustum);
-    double orientation = homogeneous_orientation(v[0].clip, v[1].clip, v[2].clip);
+    unsigned out0 = outcode(in[0]->clip, frustum), out1 = outcode(in[1]->clip, frustum),
+             out2 = outcode(in[2]->clip, frustum);
+    double orientation = homogeneous_orientation(in[0]->clip, in[1]->clip, in[2]->clip);
     bool front_facing = orientation > 0.0;
     // Trivial reject: all three outside one frustum plane. Zero orientation: degenerate.
     if ((out0 & out1 & out2) || orientation == 0.0 || cull(front_facing)) {
@@ -76,10 +73,35 @@ struct Assembler {
       return;
     }
     const DrawPipeline& pipe = draw.pipeline;
+    if (pipe.draws_edges) {
+      for (int i = 0; i < 3; ++i)
+        edge(in[i]->clip, in[(i + 1) % 3]->clip, draw.uniforms.wire_color);
+    }
+    if (!pipe.fills_triangles) return;
+
+    // Near and far are the same planes in both bounds; the guard band's sides only need
+    // checking when a vertex is outside the frustum's sides (the guard band contains them).
+    unsigned any_out = out0 | out1 | out2;
+    unsigned planes = any_out & (kClipNear | kClipFar);
+    if (any_out & (kClipLeft | kClipRight | kClipBottom | kClipTop)) {
+      planes =
+          outcode(in[0]->clip, guard) | outcode(in[1]->clip, guard) | outcode(in[2]->clip, guard);
+    }
     bool no_normals = draw.mesh->normals.empty();
     bool fill_normal = pipe.normal_slot >= 0 && no_normals;
     DrawPipeline::FaceFn face =
         pipe.face ? pipe.face : (no_normals ? pipe.face_without_normals : nullptr);
+    if (planes == 0 && !fill_normal && !face) {  // the common case: nothing to rewrite
+      if (!setup_triangle(out, width, height, draw_index, in, pipe.varyings, front_facing))
+        ++out.culled;
+      return;
+    }
+
+    // The per-triangle hooks and the clipper rewrite vertices: work on copies.
+    ClipPolygon polygon;
+    polygon.count = 3;
+    ClipVertex* v = polygon.vertices;
+    for (int i = 0; i < 3; ++i) v[i] = *in[i];
     if (fill_normal || face) {
       glm::vec3 n = face_normal(i0, i1, i2);
       if (fill_normal) {
@@ -91,18 +113,6 @@ struct Assembler {
         float* varyings[3] = {v[0].varyings, v[1].varyings, v[2].varyings};
         face(n, centre(i0, i1, i2), draw.uniforms, varyings);
       }
-    }
-    if (pipe.draws_edges) {
-      for (int i = 0; i < 3; ++i) edge(v[i].clip, v[(i + 1) % 3].clip, draw.uniforms.wire_color);
-    }
-    if (!pipe.fills_triangles) return;
-
-    // Near and far are the same planes in both bounds; the guard band's sides only need
-    // checking when a vertex is outside the frustum's sides (the guard band contains them).
-    unsigned any_out = out0 | out1 | out2;
-    unsigned planes = any_out & (kClipNear | kClipFar);
-    if (any_out & (kClipLeft | kClipRight | kClipBottom | kClipTop)) {
-      planes = outcode(v[0].clip, guard) | outcode(v[1].clip, guard) | outcode(v[2].clip, guard);
     }
     if (planes == 0) {
       const ClipVertex* tri[3] = {&v[0], &v[1], &v[2]};

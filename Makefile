@@ -25,7 +25,7 @@ JOBS ?= $(shell nproc)
 PREFIX ?= /usr/local
 SCENE_IMAGE ?= islands.png
 # ctest -R regex for the tests that run under ThreadSanitizer: the threaded raster tests.
-TSAN_TEST_REGEX ?= Determinism|Threads
+TSAN_TEST_REGEX ?= ^(Determinism|SimdTargets|Occlusion)\.|^DebugView\.ImagesAreTheSameForAnyThreadCount$$
 
 # Any sanitizer report fails the run, with a stack trace.
 ASAN_RUNTIME_OPTIONS := halt_on_error=1:detect_leaks=1:check_initialization_order=1:strict_init_order=1

@@ -260,17 +260,27 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
   // Skip what the tile's last full, opaque, nearest triangle hides anyway.
   bin +=
       pipeline::first_visible_entry(frame, bin, bin_end - bin, tile.x0, tile.y0, tile.x1, tile.y1);
+  // The environment is drawn late, into what no opaque triangle covered (fill_background):
+  // before the first primitive that could write color without depth, or at the end.
+  bool background_pending = background.environment != nullptr;
   for (; bin != bin_end; ++bin) {
     const std::uint32_t entry = *bin;
     if (entry & pipeline::kLineBit) {
       // The overdraw heat map counts triangles; a line would overwrite the count.
       if (debug == DebugView::overdraw) continue;
+      if (background_pending)
+        pipeline::fill_background(tile, background), background_pending = false;
       pipeline::raster_line(tile, frame.lines[entry & ~pipeline::kLineBit]);
     } else {
       const pipeline::SetupTriangle& t = frame.triangles[entry];
-      frame.draws[t.draw].pipeline.raster(tile, t);
+      const pipeline::DrawPipeline& draw_pipeline = frame.draws[t.draw].pipeline;
+      if (background_pending && !draw_pipeline.occludes) {
+        pipeline::fill_background(tile, background), background_pending = false;
+      }
+      draw_pipeline.raster(tile, t);
     }
   }
+  if (background_pending) pipeline::fill_background(tile, background);
   if (debug == DebugView::none) {
     pipeline::resolve_tile(tile, scale, target);
   } else {

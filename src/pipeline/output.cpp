@@ -43,23 +43,31 @@ void store_row(Framebuffer& target, std::size_t first_pixel, const glm::vec4* co
 
 void clear_tile(TileContext& tile, const Background& background) {
   for (int y = 0; y < tile.y1 - tile.y0; ++y) {
-    glm::vec4* row = tile.color + static_cast<std::ptrdiff_t>(y) * tile.stride;
-    if (background.environment) {
-      for (int x = 0; x < tile.x1 - tile.x0; ++x) {
-        // The view ray through the pixel centre: unproject a point on the far plane.
-        float ndc_x = (static_cast<float>(tile.x0 + x) + 0.5f) / background.width * 2.0f - 1.0f;
-        float ndc_y = 1.0f - (static_cast<float>(tile.y0 + y) + 0.5f) / background.height * 2.0f;
-        glm::vec4 far = background.inverse_view_projection * glm::vec4(ndc_x, ndc_y, 1.0f, 1.0f);
-        glm::vec3 direction = glm::normalize(glm::vec3(far) / far.w - background.eye);
-        row[x] = glm::vec4(shading::environment_radiance(*background.environment, direction), 1.0f);
-      }
-    } else {
-      std::fill_n(row, tile.x1 - tile.x0, background.clear_color);
+    if (!background.environment) {
+      std::fill_n(tile.color + static_cast<std::ptrdiff_t>(y) * tile.stride, tile.x1 - tile.x0,
+                  background.clear_color);
     }
     std::fill_n(tile.depth + static_cast<std::ptrdiff_t>(y) * tile.stride, tile.x1 - tile.x0,
                 kClearDepth);
   }
   std::fill_n(tile.block_max_depth, tile.blocks_x * tile.blocks_x, kClearDepth);
+}
+
+void fill_background(TileContext& tile, const Background& background) {
+  if (!background.environment) return;
+  for (int y = 0; y < tile.y1 - tile.y0; ++y) {
+    glm::vec4* row = tile.color + static_cast<std::ptrdiff_t>(y) * tile.stride;
+    const float* depth = tile.depth + static_cast<std::ptrdiff_t>(y) * tile.stride;
+    for (int x = 0; x < tile.x1 - tile.x0; ++x) {
+      if (depth[x] != kClearDepth) continue;  // drawn over
+      // The view ray through the pixel centre: unproject a point on the far plane.
+      float ndc_x = (static_cast<float>(tile.x0 + x) + 0.5f) / background.width * 2.0f - 1.0f;
+      float ndc_y = 1.0f - (static_cast<float>(tile.y0 + y) + 0.5f) / background.height * 2.0f;
+      glm::vec4 far = background.inverse_view_projection * glm::vec4(ndc_x, ndc_y, 1.0f, 1.0f);
+      glm::vec3 direction = glm::normalize(glm::vec3(far) / far.w - background.eye);
+      row[x] = glm::vec4(shading::environment_radiance(*background.environment, direction), 1.0f);
+    }
+  }
 }
 
 void resolve_tile(const TileContext& tile, float scale, Framebuffer& target) {

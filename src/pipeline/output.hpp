@@ -20,7 +20,14 @@ struct Background {
   int width = 1, height = 1;  // framebuffer size
 };
 
+// Clears depth to the far plane and color to the clear color. An environment background is
+// not drawn here but by fill_background, later, into the pixels nothing covered.
 void clear_tile(TileContext& tile, const Background& background);
+// Draws the environment into the pixels whose depth is still the clear depth. Exact once
+// drawing has only run opaque, depth-writing triangles, which write color exactly where they
+// write depth (render_tile calls it before anything else, and at the end): most of the sky
+// behind a scene then costs nothing.
+void fill_background(TileContext& tile, const Background& background);
 // Writes the tile to the framebuffer; colors are scaled by `scale` (exposure) first.
 void resolve_tile(const TileContext& tile, float scale, Framebuffer& target);
 // A tile with an empty bin under a plain clear color is written straight from it.

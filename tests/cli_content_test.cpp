@@ -1,7 +1,6 @@
 // `facet render MODEL` with real content, through the real binary: imported models (Debian test
-// files and files written here), the content flags changing the image the way they should, and
-// the error contract for bad models and bad values (exit code 2, one "facet: error:" line,
-// nothing written).
+// files and files written by support/cli_content_inputs.cpp) and the content flags changing the
+// image the way they should. The error contract is in cli_content_errors_test.cpp.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -22,6 +21,7 @@
 
 #include "facet/framebuffer.hpp"
 #include "facet/image_io.hpp"
+#include "support/cli_content_inputs.hpp"
 #include "support/render_helpers.hpp"
 
 namespace facet::test {
@@ -29,146 +29,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr int kUsageError = 2;
-constexpr int kWidth = 320;
-constexpr int kHeight = 180;
-const std::string kSize = " --size 320x180";
-const std::string kBunny = "/usr/share/glmark2/models/bunny.obj";
-const std::string kBoxGlb =
-    "/usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb";
-const std::string kCamerasGltf = "/usr/share/assimp/models/glTF2/cameras/Cameras.gltf";
-
-// --- inputs written at test time ----------------------------------------------------------
-
-// A UV sphere of radius 1 in the course's .d format (quads in the middle, triangles at the
-// poles), with a header, a comment and a blank line.
-std::string ball_d() {
-  constexpr int kRings = 12, kSegments = 24;
-  std::ostringstream vertices, polygons;
-  int vertex_count = 0, polygon_count = 0;
-  auto vertex = [&](double x, double y, double z) {
-    vertices << x << ' ' << y << ' ' << z << '\n';
-    ++vertex_count;
-  };
-  vertex(0, 1, 0);
-  for (int i = 1; i < kRings; ++i) {
-    double theta = std::numbers::pi * i / kRings;
-    for (int j = 0; j < kSegments; ++j) {
-      double phi = 2 * std::numbers::pi * j / kSegments;
-      vertex(std::sin(theta) * std::cos(phi), std::cos(theta), -std::sin(theta) * std::sin(phi));
-    }
-  }
-  vertex(0, -1, 0);
-  auto at = [&](int ring, int segment) { return 2 + (ring - 1) * kSegments + segment % kSegments; };
-  for (int j = 0; j < kSegments; ++j, ++polygon_count)
-    polygons << "3 1 " << at(1, j) << ' ' << at(1, j + 1) << '\n';
-  for (int i = 1; i + 1 < kRings; ++i) {
-    for (int j = 0; j < kSegments; ++j, ++polygon_count) {
-      polygons << "4 " << at(i, j) << ' ' << at(i + 1, j) << ' ' << at(i + 1, j + 1) << ' '
-               << at(i, j + 1) << '\n';
-    }
-  }
-  for (int j = 0; j < kSegments; ++j, ++polygon_count)
-    polygons << "3 " << at(kRings - 1, j) << ' ' << vertex_count << ' ' << at(kRings - 1, j + 1)
-             << '\n';
-  return "data " + std::to_string(vertex_count) + " " + std::to_string(polygon_count) +
-         "\n# a ball\n" + vertices.str() + "\n" + polygons.str();
-}
-
-// A cube whose faces use three materials from an MTL file.
-const char* const kCubeObj =
-    "mtllib cube.mtl\n"
-    "v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\n"
-    "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
-    "usemtl red\nf 5/1 6/2 7/3 8/4\nf 2/1 1/2 4/3 3/4\n"
-    "usemtl green\nf 6/1 2/2 3/3 7/4\nf 1/1 5/2 8/3 4/4\n"
-    "usemtl blue\nf 8/1 7/2 3/3 4/4\nf 1/1 2/2 6/3 5/4\n";
-const char* const kCubeMtl =
-    "newmtl red\nKd 0.8 0.1 0.1\nKs 0.5 0.5 0.5\nNs 32\n"
-    "newmtl green\nKd 0.1 0.8 0.1\n"
-    "newmtl blue\nKd 0.1 0.1 0.8\n";
-
-// A texture: an 8x4 checker of two colors with a gradient, so every projection shows.
-void write_texture(const fs::path& path) {
-  Framebuffer image(64, 32);
-  std::vector<std::uint8_t>& px = image.rgba8();
-  for (int y = 0; y < 32; ++y) {
-    for (int x = 0; x < 64; ++x) {
-      std::uint8_t* p = &px[(static_cast<std::size_t>(y) * 64 + x) * 4];
-      bool odd = (x / 8 + y / 8) % 2 != 0;
-      p[0] = odd ? 240 : 30;
-      p[1] = static_cast<std::uint8_t>(x * 4);
-      p[2] = odd ? 40 : 220;
-      p[3] = 255;
-    }
-  }
-  write_image(image, path.string());
-}
-
-// Every input file, written once per process into its own directory: ctest runs each test as
-// a process, two at a time, so a shared directory would be rewritten under a running test.
-struct Inputs {
-  fs::path dir =
-      fs::path(::testing::TempDir()) / ("facet_cli_content_inputs_" + std::to_string(::getpid()));
-  Inputs() {
-    fs::remove_all(dir);
-    fs::create_directories(dir / "a_directory.obj");
-    std::ofstream(dir / "ball.d") << ball_d();
-    std::ofstream(dir / "cube.obj") << kCubeObj;
-    std::ofstream(dir / "cube.mtl") << kCubeMtl;
-    // Two materials share one texture that is not there.
-    std::string obj = kCubeObj;
-    obj.replace(obj.find("cube.mtl"), 8, "lost.mtl");
-    std::ofstream(dir / "lost_texture.obj") << obj;
-    std::ofstream(dir / "lost.mtl") << "newmtl red\nKd 1 1 1\nmap_Kd nowhere.png\n"
-                                       "newmtl green\nKd 1 1 1\nmap_Kd nowhere.png\n"
-                                       "newmtl blue\nKd 0.2 0.2 0.8\n";
-    // A floor 8 wide running 40 units into the distance, for fog.
-    std::ofstream(dir / "floor.d") << "data 4 1\n-4 0 0\n4 0 0\n4 0 -40\n-4 0 -40\n4 1 2 3 4\n";
-    std::ofstream(dir / "index_out_of_range.d") << "data 3 1\n0 0 0\n1 0 0\n0 1 0\n3 1 2 7\n";
-    std::ofstream(dir / "empty.glb");
-    std::ofstream(dir / "not_an_image.png") << "this is not a PNG";
-    std::mt19937 random(1234);
-    std::string noise(4096, '\0');
-    for (char& c : noise) c = static_cast<char>(random() & 0xff);
-    std::ofstream(dir / "noise.obj", std::ios::binary) << noise;
-    std::ofstream(dir / "noise.glb", std::ios::binary) << noise;
-    write_texture(dir / "texture.png");
-  }
-  ~Inputs() {
-    std::error_code ignored;
-    fs::remove_all(dir, ignored);
-  }
-};
-
-const fs::path& inputs() {
-  static const Inputs written;
-  return written.dir;
-}
-
-std::string input(const std::string& name) { return (inputs() / name).string(); }
-
-// --- running facet ------------------------------------------------------------------------
-
-std::vector<std::string> list_dir(const fs::path& dir) {
-  std::vector<std::string> names;
-  for (const auto& entry : fs::directory_iterator(dir))
-    names.push_back(entry.path().filename().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
-// Runs `facet <args>` with dir as the working directory, so relative outputs land there.
-CommandResult run_facet(const fs::path& dir, const std::string& args) {
-  return run_command("cd '" + dir.string() + "' && " + FACET_CLI + " " + args);
-}
-
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
+constexpr int kWidth = kCliWidth;
+constexpr int kHeight = kCliHeight;
+const std::string& kSize = kCliSize;
 
 // `facet render <args> -o out.png --size 320x180` in a fresh directory: expects success, one
 // summary line and nothing else on stdout, and returns the image (empty on failure). Anything
@@ -258,13 +121,6 @@ void expect_a_picture(const Rgba8Image& image, std::size_t min_colors = 50) {
   EXPECT_LT(covered, total) << "no background left: not framed";
   EXPECT_GE(distinct_colors(image), min_colors) << "a flat image";
 }
-
-bool have(const std::string& path) { return fs::exists(path); }
-
-#define SKIP_WITHOUT(path)                                \
-  if (!have(path))                                        \
-  GTEST_SKIP() << (path) << " is not installed (Debian: " \
-               << ((path) == kBunny ? "glmark2-data" : "assimp-testmodels") << ")"
 
 // --- models render ------------------------------------------------------------------------
 
@@ -465,130 +321,6 @@ TEST(CliContentFlags, FileCamera) {
   EXPECT_NEAR((low_x + high_x) / 2.0, kWidth / 2.0, 2.0);
   EXPECT_NEAR(high_y, 131, 3);  // tan(20.05 deg) * 3 = 1.095 units above and below the centre
   EXPECT_NEAR(low_y, 76, 3);    // the top edge at y 0.707, z -0.707
-}
-
-// --- errors -------------------------------------------------------------------------------
-
-struct BadCase {
-  const char* name;
-  const char* args;      // after `facet render`, before -o out.png; $IN/ is the inputs directory
-  const char* mentions;  // the error line must contain this
-};
-
-// The inputs are written when a test runs, not when the cases are listed, so paths to them are
-// spelled $IN/ here.
-const BadCase kBadCases[] = {
-    {"missing_model", "$IN/no_such_model.obj", "no_such_model.obj"},
-    {"directory_as_model", "$IN/a_directory.obj", "a_directory.obj"},
-    {"noise_obj", "$IN/noise.obj", "noise.obj"},
-    {"noise_glb", "$IN/noise.glb", "noise.glb"},
-    {"empty_glb", "$IN/empty.glb", "empty.glb"},
-    {"d_index_out_of_range", "$IN/index_out_of_range.d", "index_out_of_range.d:5:"},
-    {"model_and_scene", "$IN/ball.d --scene teapot", "--scene"},
-    {"light_unknown_kind", "$IN/ball.d --light bogus,1,2", "--light"},
-    {"light_dir_two_numbers", "$IN/ball.d --light dir,1,2", "--light"},
-    {"light_point_words", "$IN/ball.d --light point,a,b,c", "--light"},
-    {"light_trailing_comma", "$IN/ball.d --light dir,1,2,3,", "--light"},
-    {"light_second_bad", "$IN/ball.d --light dir,0,-1,0 --light dir,1,2", "--light"},
-    {"light_zero_direction", "$IN/ball.d --light dir,0,0,0", "--light"},
-    {"light_spot_zero_direction", "$IN/ball.d --light spot,0,3,0,0,0,0", "--light"},
-    {"light_negative_intensity", "$IN/ball.d --light point,0,3,3,1,1,1,-5", "--light"},
-    {"light_negative_color", "$IN/ball.d --light dir,0,-1,0,-1,0,0", "--light"},
-    {"light_spot_cones_reversed", "$IN/ball.d --light spot,0,3,0,0,-1,0,40,20", "--light"},
-    {"light_spot_cone_too_wide", "$IN/ball.d --light spot,0,3,0,0,-1,0,20,120", "--light"},
-    {"fog_no_kind", "$IN/ball.d --fog fog", "--fog"},
-    {"fog_linear_one_number", "$IN/ball.d --fog linear,5", "--fog"},
-    {"fog_linear_reversed", "$IN/ball.d --fog linear,10,5", "--fog"},
-    {"fog_exp_negative", "$IN/ball.d --fog exp,-1", "--fog"},
-    {"fog_exp_two_numbers", "$IN/ball.d --fog exp,1,2", "--fog"},
-    {"fog_color_out_of_range", "$IN/ball.d --fog linear --fog-color 2,0,0", "--fog-color"},
-    {"fog_color_without_fog", "$IN/ball.d --fog-color 2,0,0", "--fog-color"},
-    {"env_missing_image", "$IN/ball.d --env missing.png", "missing.png"},
-    {"env_unreadable_image", "$IN/ball.d --env $IN/not_an_image.png", "not_an_image.png"},
-    {"env_projection_unknown", "$IN/ball.d --env sky --env-projection cube", "--env-projection"},
-    {"env_projection_without_env", "$IN/ball.d --env-projection cube", "--env-projection"},
-    {"texture_missing", "$IN/ball.d --texture missing.png", "missing.png"},
-    {"texture_unreadable", "$IN/ball.d --texture $IN/not_an_image.png", "not_an_image.png"},
-    {"projection_unknown", "$IN/ball.d --texture $IN/texture.png --projection weird",
-     "--projection"},
-    {"reflectivity_above_1", "$IN/ball.d --reflectivity 2", "--reflectivity"},
-    {"reflectivity_negative", "$IN/ball.d --reflectivity -0.5", "--reflectivity"},
-    {"exposure_100", "$IN/ball.d --exposure 100", "--exposure"},
-    {"camera_in_a_file_without_cameras", "$IN/ball.d --camera 0", "--camera"},
-};
-
-std::string with_inputs(std::string args) {
-  for (std::size_t at; (at = args.find("$IN/")) != std::string::npos;)
-    args.replace(at, 4, inputs().string() + "/");
-  return args;
-}
-
-void PrintTo(const BadCase& c, std::ostream* os) { *os << "facet render " << c.args; }
-
-// Exit code 2, nothing on stdout, stderr is `warnings` warning lines then one error line.
-void expect_one_error(const CommandResult& r, const std::string& mentions, std::size_t warnings) {
-  EXPECT_EQ(r.exit_code, kUsageError);
-  EXPECT_EQ(r.stdout_text, "");
-  std::vector<std::string> lines = lines_of(r.stderr_text);
-  ASSERT_EQ(lines.size(), warnings + 1) << r.stderr_text;
-  EXPECT_EQ(r.stderr_text.back(), '\n');
-  for (std::size_t i = 0; i < warnings; ++i)
-    EXPECT_EQ(lines[i].rfind("facet: warning:", 0), 0u) << lines[i];
-  EXPECT_EQ(lines.back().rfind("facet: error: ", 0), 0u) << lines.back();
-  EXPECT_NE(lines.back().find(mentions), std::string::npos)
-      << "'" << lines.back() << "' does not mention " << mentions;
-}
-
-class CliContentBadInput : public ::testing::TestWithParam<BadCase> {};
-
-TEST_P(CliContentBadInput, ExitsWithOneErrorLineAndWritesNothing) {
-  const BadCase& c = GetParam();
-  fs::path dir = fresh_test_dir("facet_cli_content_", std::string("bad_") + c.name);
-  CommandResult r = run_facet(dir, "render " + with_inputs(c.args) + " -o out.png" + kSize);
-  expect_one_error(r, c.mentions, 0);
-  EXPECT_EQ(list_dir(dir), std::vector<std::string>{}) << "files left behind";
-}
-
-INSTANTIATE_TEST_SUITE_P(CliContent, CliContentBadInput, ::testing::ValuesIn(kBadCases),
-                         [](const ::testing::TestParamInfo<BadCase>& param_info) {
-                           return std::string(param_info.param.name);
-                         });
-
-TEST(CliContentErrors, DPolygonOutOfRangeNamesFileAndLine) {
-  fs::path dir = fresh_test_dir("facet_cli_content_", "d_line");
-  std::string model = input("index_out_of_range.d");
-  CommandResult r = run_facet(dir, "render " + model + " -o out.png" + kSize);
-  EXPECT_EQ(r.stderr_text,
-            "facet: error: " + model + ":5: polygon index 7 is out of range (1..3)\n");
-  EXPECT_EQ(list_dir(dir), std::vector<std::string>{});
-}
-
-TEST(CliContentErrors, FileCameraOutOfRange) {
-  SKIP_WITHOUT(kCamerasGltf);
-  for (const char* n : {"1", "5", "-1"}) {
-    SCOPED_TRACE(std::string("--camera ") + n);
-    fs::path dir = fresh_test_dir("facet_cli_content_", std::string("camera_bad_") + n);
-    CommandResult r =
-        run_facet(dir, "render " + kCamerasGltf + " --camera " + n + " -o out.png" + kSize);
-    // The file's orthographic camera is left out with one warning before the error.
-    expect_one_error(r, "--camera", 1);
-    EXPECT_EQ(list_dir(dir), std::vector<std::string>{});
-  }
-}
-
-TEST(CliContentErrors, FailedRenderKeepsAnExistingFile) {
-  fs::path dir = fresh_test_dir("facet_cli_content_", "keep");
-  const std::string contents = "an earlier image that must survive";
-  std::ofstream(dir / "keep.png", std::ios::binary) << contents;
-  // Failures while importing, while applying the flags, and while loading a texture.
-  for (std::string args : {input("noise.obj"), input("ball.d") + " --fog linear,10,5",
-                           input("ball.d") + " --texture missing.png"}) {
-    CommandResult r = run_facet(dir, "render " + args + " -o keep.png" + kSize);
-    EXPECT_EQ(r.exit_code, kUsageError) << args;
-    std::ifstream in(dir / "keep.png", std::ios::binary);
-    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), contents) << args;
-    EXPECT_EQ(list_dir(dir), std::vector<std::string>{"keep.png"}) << args;
-  }
 }
 
 }  // namespace

@@ -119,6 +119,7 @@ struct GeometryChunk {
 };
 
 // The frame: everything above plus the merged primitives it inherits (frame.triangles, ...).
+// The inherited culled/clipped counters stay zero: the chunks' counts are summed into stats.
 struct Frame : PrimitiveBuffer {
   int width = 0;
   int height = 0;

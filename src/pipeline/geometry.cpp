@@ -50,8 +50,8 @@ void merge_chunks(Frame& frame, std::size_t count, int workers) {
     total.lines += out.lines.size();
     total.planes += out.planes.size();
     total.sequence += out.sequence.size();
-    frame.culled += out.culled;
-    frame.clipped += out.clipped;
+    frame.stats.culled += out.culled;  // the chunks' counts go straight to the frame's stats
+    frame.stats.clipped += out.clipped;
   }
   // Grow by half again when a frame needs more than any before, so animated scenes settle.
   auto resize = [](auto& v, std::size_t n) {
@@ -97,8 +97,6 @@ void run_geometry(Frame& frame, int workers) {
     assemble_primitives(frame, chunk.draw, chunk.begin, chunk.end, chunk.out);
   });
   merge_chunks(frame, count, workers);
-  frame.stats.culled = frame.culled;
-  frame.stats.clipped = frame.clipped;
   frame.stats.drawn = frame.triangles.size();
 }
 

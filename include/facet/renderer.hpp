@@ -43,6 +43,9 @@ struct FrameStats {
   double ms_geometry = 0;  // vertex transform, clip, cull, setup
   double ms_binning = 0;
   double ms_raster = 0;  // raster + shade + resolve, per tile
+  // The part of ms_raster spent resolving tiles to the framebuffer (the tile tasks' measured
+  // resolve time as a share of their whole time, applied to ms_raster).
+  double ms_resolve = 0;
   double ms_total = 0;
 };
 

@@ -56,6 +56,7 @@ struct Renderer::Impl {
   std::vector<TileBuffers> tile_buffers;  // one per worker
   pipeline::Frame frame;
   std::vector<std::uint64_t> tile_pixels_shaded;
+  std::vector<double> tile_ms, tile_resolve_ms;  // per tile: its task, and its resolve
   pipeline::Background background;
   Camera camera;
   Lighting lighting;
@@ -181,6 +182,8 @@ void Renderer::Impl::prepare_tiles(const Framebuffer& target) {
   frame.tiles_y = (frame.height + frame.tile_size - 1) / frame.tile_size;
   std::size_t tiles = static_cast<std::size_t>(frame.tiles_x) * frame.tiles_y;
   tile_pixels_shaded.assign(tiles, 0);
+  tile_ms.assign(tiles, 0.0);
+  tile_resolve_ms.assign(tiles, 0.0);
 }
 
 void Renderer::Impl::run(Framebuffer& target) {
@@ -219,10 +222,17 @@ void Renderer::Impl::run(Framebuffer& target) {
   // Raster + shade + resolve: one tile per task, so any thread count gives the same image.
   auto raster_start = Clock::now();
   int tiles = frame.tiles_x * frame.tiles_y;
-  pipeline::parallel_tasks(tiles, workers,
-                           [&](int tile, int worker) { render_tile(tile, worker, target); });
+  pipeline::parallel_tasks(tiles, workers, [&](int tile, int worker) {
+    auto tile_start = Clock::now();
+    render_tile(tile, worker, target);
+    tile_ms[tile] = ms_since(tile_start);
+  });
   for (std::uint64_t n : tile_pixels_shaded) frame.stats.pixels_shaded += n;
   frame.stats.ms_raster = ms_since(raster_start);
+  double busy = 0.0, resolving = 0.0;
+  for (std::size_t i = 0; i < tile_ms.size(); ++i)
+    busy += tile_ms[i], resolving += tile_resolve_ms[i];
+  frame.stats.ms_resolve = busy > 0.0 ? frame.stats.ms_raster * (resolving / busy) : 0.0;
   frame.stats.ms_total = ms_since(start);
 }
 
@@ -242,7 +252,9 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
   const DebugView debug = settings.debug_view;
   if (bin == bin_end && !background.environment && debug == DebugView::none) {
     // Lazy clear: nothing drawn here, write the clear values directly.
+    auto resolve_start = Clock::now();
     pipeline::resolve_cleared_tile(tile, settings.clear_color, scale, target);
+    tile_resolve_ms[index] = ms_since(resolve_start);
     return;
   }
   TileBuffers& buffers = tile_buffers[worker];
@@ -281,11 +293,13 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
     }
   }
   if (background_pending) pipeline::fill_background(tile, background);
+  auto resolve_start = Clock::now();
   if (debug == DebugView::none) {
     pipeline::resolve_tile(tile, scale, target);
   } else {
     pipeline::resolve_debug_tile(tile, debug, bin_size, scale, target);
   }
+  tile_resolve_ms[index] = ms_since(resolve_start);
   tile_pixels_shaded[index] = tile.pixels_shaded;
 }
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "pipeline/fixed_point.hpp"
+#include "pipeline/parallel.hpp"
 
 namespace facet::pipeline {
 
@@ -21,11 +22,13 @@ bool triangle_may_touch(const SetupTriangle& t, int x0, int y0, int x1, int y1) 
 
 namespace {
 
-// Calls visit(tile, entry) for every tile each primitive may cover, in submission order.
+// Calls visit(tile, entry) for every tile each primitive of sequence[begin, end) may cover,
+// in submission order.
 template <class Visit>
-void for_each_binning(const Frame& frame, Visit&& visit) {
+void for_each_binning(const Frame& frame, std::size_t begin, std::size_t end, Visit&& visit) {
   const int ts = frame.tile_size;
-  for (std::uint32_t entry : frame.sequence) {
+  for (std::size_t i = begin; i < end; ++i) {
+    const std::uint32_t entry = frame.sequence[i];
     int min_x, min_y, max_x, max_y;
     const SetupTriangle* tri = nullptr;
     if (entry & kLineBit) {
@@ -53,23 +56,44 @@ void for_each_binning(const Frame& frame, Visit&& visit) {
 
 }  // namespace
 
-void bin_primitives(Frame& frame) {
-  // Two passes over one arena instead of a growing vector per tile: count, then fill. The
-  // arena only grows when a frame needs more entries than any before (by half again, so an
-  // animated scene settles after a few frames and then allocates nothing).
-  std::size_t tiles = static_cast<std::size_t>(frame.tiles_x) * frame.tiles_y;
+void bin_primitives(Frame& frame, int workers) {
+  // The sequence is cut into runs binned in parallel, in two passes over one arena: count
+  // (per run and tile), then fill. Within a tile the runs' entries follow each other in run
+  // order, so every bin keeps submission order whatever the schedule. The arena only grows
+  // when a frame needs more entries than any before (by half again, so an animated scene
+  // settles after a few frames and then allocates nothing).
+  const std::size_t tiles = static_cast<std::size_t>(frame.tiles_x) * frame.tiles_y;
+  const std::size_t primitives = frame.sequence.size();
+  const std::size_t runs =
+      std::clamp<std::size_t>(primitives / kPrimitivesPerBinningRun, 1, kMaxBinningRuns);
+  auto run_begin = [&](std::size_t run) { return primitives * run / runs; };
+  frame.bin_cursors.assign(runs * tiles, 0);  // capacity kept across frames
+  parallel_tasks(static_cast<int>(runs), workers, [&](int run, int) {
+    std::uint32_t* counts = frame.bin_cursors.data() + run * tiles;
+    for_each_binning(frame, run_begin(run), run_begin(run + 1),
+                     [&](std::size_t tile, std::uint32_t) { ++counts[tile]; });
+  });
+  // Bin starts, and each run's first slot in each bin (the cursors the fill advances).
   frame.bin_start.assign(tiles + 1, 0);
-  for_each_binning(frame, [&](std::size_t tile, std::uint32_t) { ++frame.bin_start[tile + 1]; });
-  for (std::size_t i = 0; i < tiles; ++i) frame.bin_start[i + 1] += frame.bin_start[i];
-  std::size_t total = frame.bin_start[tiles];
+  std::uint32_t total = 0;
+  for (std::size_t tile = 0; tile < tiles; ++tile) {
+    frame.bin_start[tile] = total;
+    for (std::size_t run = 0; run < runs; ++run) {
+      std::uint32_t& cursor = frame.bin_cursors[run * tiles + tile];
+      const std::uint32_t count = cursor;
+      cursor = total;
+      total += count;
+    }
+  }
+  frame.bin_start[tiles] = total;
   if (frame.bin_entries.capacity() < total) frame.bin_entries.reserve(total + total / 2);
   frame.bin_entries.resize(total);
-  // Fill, using bin_start as the write cursors, then shift them back to the starts.
-  for_each_binning(frame, [&](std::size_t tile, std::uint32_t entry) {
-    frame.bin_entries[frame.bin_start[tile]++] = entry;
+  parallel_tasks(static_cast<int>(runs), workers, [&](int run, int) {
+    std::uint32_t* cursors = frame.bin_cursors.data() + run * tiles;
+    for_each_binning(
+        frame, run_begin(run), run_begin(run + 1),
+        [&](std::size_t tile, std::uint32_t entry) { frame.bin_entries[cursors[tile]++] = entry; });
   });
-  for (std::size_t i = tiles; i > 0; --i) frame.bin_start[i] = frame.bin_start[i - 1];
-  frame.bin_start[0] = 0;
 }
 
 }  // namespace facet::pipeline

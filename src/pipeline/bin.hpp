@@ -2,11 +2,18 @@
 // appends each to the bin of every tile it may cover; raster.cpp and line.cpp read the bins.
 #pragma once
 
+#include <cstddef>
+
 #include "pipeline/frame.hpp"
 
 namespace facet::pipeline {
 
-void bin_primitives(Frame& frame);
+// Enough primitives per parallel run that counting them outweighs a run's per-tile counters;
+// at most this many runs (their counters are runs x tiles).
+inline constexpr std::size_t kPrimitivesPerBinningRun = 16384;
+inline constexpr std::size_t kMaxBinningRuns = 16;
+
+void bin_primitives(Frame& frame, int workers);
 
 // True if the triangle may cover a pixel centre of the rectangle [x0, x1) x [y0, y1):
 // the edge functions' maxima over the rectangle's centres are all non-negative.

@@ -216,7 +216,7 @@ void Renderer::Impl::run(Framebuffer& target) {
   frame.stats.ms_geometry = ms_since(start);
 
   auto bin_start = Clock::now();
-  pipeline::bin_primitives(frame);
+  pipeline::bin_primitives(frame, workers);
   frame.stats.ms_binning = ms_since(bin_start);
 
   // Raster + shade + resolve: one tile per task, so any thread count gives the same image.

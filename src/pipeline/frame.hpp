@@ -137,6 +137,7 @@ struct Frame : PrimitiveBuffer {
   // The bins, one flat arena: tile i's entries are bin_entries[bin_start[i] .. bin_start[i+1]).
   std::vector<std::uint32_t> bin_start;  // tiles + 1
   std::vector<std::uint32_t> bin_entries;
+  std::vector<std::uint32_t> bin_cursors;  // binning's per-run counts, then write cursors
   FrameStats stats;
 };
 

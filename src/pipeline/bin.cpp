@@ -8,14 +8,33 @@
 
 namespace facet::pipeline {
 
+namespace {
+
+// The smallest (or, with largest, the largest) value of edge i over the pixel centres of
+// [x0, x1) x [y0, y1): E is linear, so it is at the corner its gradient points away from
+// (or to).
+std::int64_t edge_extreme(const SetupTriangle& t, int i, int x0, int y0, int x1, int y1,
+                          bool largest) {
+  const std::int64_t left = pixel_centre(x0), right = pixel_centre(x1 - 1);
+  const std::int64_t top = pixel_centre(y0), bottom = pixel_centre(y1 - 1);
+  const std::int64_t x = (t.a[i] >= 0) == largest ? right : left;
+  const std::int64_t y = (t.b[i] >= 0) == largest ? bottom : top;
+  return std::int64_t{t.a[i]} * x + std::int64_t{t.b[i]} * y + t.c[i];
+}
+
+}  // namespace
+
 bool triangle_may_touch(const SetupTriangle& t, int x0, int y0, int x1, int y1) {
-  std::int64_t left = pixel_centre(x0), right = pixel_centre(x1 - 1);
-  std::int64_t top = pixel_centre(y0), bottom = pixel_centre(y1 - 1);
   for (int i = 0; i < 3; ++i) {
-    // E is linear, so its maximum over the rectangle is at the corner its gradient points to.
-    std::int64_t x = t.a[i] >= 0 ? right : left;
-    std::int64_t y = t.b[i] >= 0 ? bottom : top;
-    if (std::int64_t{t.a[i]} * x + std::int64_t{t.b[i]} * y + t.c[i] < 0) return false;
+    if (edge_extreme(t, i, x0, y0, x1, y1, true) < 0) return false;
+  }
+  return true;
+}
+
+bool triangle_covers(const SetupTriangle& t, int x0, int y0, int x1, int y1) {
+  if (t.min_x > x0 || t.min_y > y0 || t.max_x < x1 - 1 || t.max_y < y1 - 1) return false;
+  for (int i = 0; i < 3; ++i) {
+    if (edge_extreme(t, i, x0, y0, x1, y1, false) < 0) return false;
   }
   return true;
 }

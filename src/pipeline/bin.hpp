@@ -19,4 +19,8 @@ void bin_primitives(Frame& frame, int workers);
 // the edge functions' maxima over the rectangle's centres are all non-negative.
 bool triangle_may_touch(const SetupTriangle& t, int x0, int y0, int x1, int y1);
 
+// True if the triangle covers every pixel centre of [x0, x1) x [y0, y1): the edge functions'
+// minima over the rectangle's centres are all non-negative (and so is its bounding box).
+bool triangle_covers(const SetupTriangle& t, int x0, int y0, int x1, int y1);
+
 }  // namespace facet::pipeline

@@ -4,27 +4,11 @@
 #include <algorithm>
 #include <limits>
 
-#include "pipeline/fixed_point.hpp"
+#include "pipeline/bin.hpp"
 #include "pipeline/setup.hpp"
 
 namespace facet::pipeline {
 namespace {
-
-// Every pixel centre of [x0, x1) x [y0, y1) is inside the triangle: the edge functions are
-// linear, so it is enough that all three are >= 0 (fill rule folded into c) at the corners.
-bool covers_rectangle(const SetupTriangle& t, int x0, int y0, int x1, int y1) {
-  if (t.min_x > x0 || t.min_y > y0 || t.max_x < x1 - 1 || t.max_y < y1 - 1) return false;
-  const std::int64_t xs[2] = {pixel_centre(x0), pixel_centre(x1 - 1)};
-  const std::int64_t ys[2] = {pixel_centre(y0), pixel_centre(y1 - 1)};
-  for (int i = 0; i < 3; ++i) {
-    for (std::int64_t x : xs) {
-      for (std::int64_t y : ys) {
-        if (std::int64_t{t.a[i]} * x + std::int64_t{t.b[i]} * y + t.c[i] < 0) return false;
-      }
-    }
-  }
-  return true;
-}
 
 // Whether entry could hide the tile: an occluding draw's triangle whose bounding box holds the
 // tile (a cheap look before the exact tests).
@@ -60,7 +44,7 @@ std::size_t first_visible_entry(const Frame& frame, const std::uint32_t* bin, st
                                               std::min(t.max_x, x1 - 1), std::min(t.max_y, y1 - 1));
     if (!(range.nearest == range.nearest)) break;  // NaN: no bound
     if (pipeline.occludes && i > first && range.farthest < nearest_so_far &&
-        covers_rectangle(t, x0, y0, x1, y1)) {
+        triangle_covers(t, x0, y0, x1, y1)) {
       // In a covered tile the bounding box clipped to it is the tile, so range is over it.
       first = i;
     }

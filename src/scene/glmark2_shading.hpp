@@ -88,15 +88,20 @@ struct BasicLightTextureShading {
   }
 };
 
-// light-advanced.vert/.frag (blinn-phong-inf): per pixel, directional light and viewer at
-// infinity; ambient 0.1, diffuse 0.8 x blue, specular 0.8 x white, shininess 100 — constants
-// of the shader, not uniforms.
-struct BlinnPhongInfShading {
+// The vertex stage of the shaders that light per pixel with the object-space normal: it is the
+// only varying. Shared by blinn-phong-inf and bump-poly.
+struct InterpolatedNormal {
   static constexpr int kVaryings = 3;
   static constexpr int kNormalSlot = 0;
   static void vertex(const VertexInput& in, const DrawUniforms&, float* out) {
     shading::store(out, in.normal);
   }
+};
+
+// light-advanced.vert/.frag (blinn-phong-inf): per pixel, directional light and viewer at
+// infinity; ambient 0.1, diffuse 0.8 x blue, specular 0.8 x white, shininess 100 — constants
+// of the shader, not uniforms.
+struct BlinnPhongInfShading : InterpolatedNormal {
   static glm::vec4 fragment(const Fragment& f, const DrawUniforms&) {
     const glm::vec3 n = glm::normalize(shading::load3(f.v));
     const float diffuse = 0.8f * std::max(glm::dot(n, kLightDirection), 0.0f);
@@ -178,12 +183,7 @@ struct BumpNormalsShading {
 };
 
 // bump-poly.vert/.frag (high-poly): the same light with the interpolated vertex normal.
-struct BumpPolyShading {
-  static constexpr int kVaryings = 3;
-  static constexpr int kNormalSlot = 0;
-  static void vertex(const VertexInput& in, const DrawUniforms&, float* out) {
-    shading::store(out, in.normal);
-  }
+struct BumpPolyShading : InterpolatedNormal {
   static glm::vec4 fragment(const Fragment& f, const DrawUniforms&) {
     return bump_light(glm::normalize(shading::load3(f.v)));
   }

@@ -11,10 +11,6 @@ namespace {
 
 constexpr int kWidth = 131, kHeight = 77;  // partial tiles
 
-Mesh quad(float x0, float y0, float x1, float y1, float z) {
-  return soup({{x0, y0, z}, {x1, y0, z}, {x1, y1, z}, {x0, y0, z}, {x1, y1, z}, {x0, y1, z}});
-}
-
 Lighting sky_lighting(bool show_sky) {
   Lighting lighting;
   lighting.environment.show_as_background = show_sky;
@@ -39,7 +35,7 @@ Framebuffer render(const std::vector<std::pair<const Mesh*, Material>>& draws, b
 }
 
 TEST(Background, SkyExactlyWhereNothingOpaqueIsDrawn) {
-  Mesh left = quad(-3, -1, 0.5f, 2, -5), right = quad(0, -2, 4, 1, -6);
+  Mesh left = soup_quad(-3, -1, 0.5f, 2, -5), right = soup_quad(0, -2, 4, 1, -6);
   const std::vector<std::pair<const Mesh*, Material>> scene = {{&left, unlit({1, 0, 0, 1})},
                                                                {&right, unlit({0, 1, 0, 1})}};
   Framebuffer with_sky = render(scene, true);
@@ -60,7 +56,7 @@ TEST(Background, SkyExactlyWhereNothingOpaqueIsDrawn) {
 
 TEST(Background, BlendedSurfacesBlendOverTheSky) {
   // A half-transparent quad over the sky: the sky under it must already be there.
-  Mesh glass = quad(-4, -4, 4, 4, -5);
+  Mesh glass = soup_quad(-4, -4, 4, 4, -5);
   Framebuffer with_glass = render({{&glass, unlit({1, 0, 0, 0.5f}, AlphaMode::blend)}}, true);
   Framebuffer sky_only = render({}, true);
   const int centre = (kHeight / 2) * kWidth + kWidth / 2;

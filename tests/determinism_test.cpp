@@ -7,28 +7,20 @@
 namespace facet::test {
 namespace {
 
-Framebuffer render_shapes(ShadingModel model, int threads, int tile_size, int width, int height) {
-  Scene scene = make_shapes_scene();
-  for (auto& material : scene.materials) material.shading = model;
-  scene.camera.aspect = static_cast<float>(width) / height;
+Framebuffer render_with(ShadingModel model, int threads, int tile_size, int width, int height) {
   RenderSettings settings;
   settings.threads = threads;
   settings.tile_size = tile_size;
-  Renderer renderer(settings);
-  Framebuffer fb(width, height);
-  renderer.begin_frame(scene.camera, scene.lighting);
-  draw_scene(renderer, scene);
-  renderer.finish(fb);
-  return fb;
+  return render_shapes(model, width, height, settings);
 }
 
 TEST(Determinism, ThreadsAndTileSizesGiveIdenticalImages) {
   for (ShadingModel model : {ShadingModel::lambert, ShadingModel::flat, ShadingModel::wireframe,
                              ShadingModel::wire_overlay, ShadingModel::depth}) {
-    Framebuffer expected = render_shapes(model, 1, 64, 333, 201);
+    Framebuffer expected = render_with(model, 1, 64, 333, 201);
     for (int threads : {1, 2, 3, 8}) {
       for (int tile : {16, 32, 64}) {
-        Framebuffer fb = render_shapes(model, threads, tile, 333, 201);
+        Framebuffer fb = render_with(model, threads, tile, 333, 201);
         ASSERT_EQ(fb.rgba8(), expected.rgba8())
             << to_string(model) << " with " << threads << " threads, tile " << tile;
         ASSERT_EQ(fb.depth(), expected.depth());

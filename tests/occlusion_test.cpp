@@ -11,11 +11,6 @@ namespace {
 
 constexpr int kWidth = 160, kHeight = 96;
 
-// A quad at depth z (camera at the origin looking down -Z) spanning [x0, x1] x [y0, y1].
-Mesh quad(float x0, float y0, float x1, float y1, float z) {
-  return soup({{x0, y0, z}, {x1, y0, z}, {x1, y1, z}, {x0, y0, z}, {x1, y1, z}, {x0, y1, z}});
-}
-
 struct Layer {
   Mesh mesh;
   glm::vec4 color;
@@ -43,7 +38,7 @@ Framebuffer draw_layers(const std::vector<Layer>& layers, FrameStats* stats) {
 // Full-screen quads (at 60 degrees the view at depth d spans about +-0.58 d vertically).
 Layer full_screen(float z, glm::vec4 color) {
   const float half = -z * 2.0f;
-  return {quad(-half, -half, half, half, z), color};
+  return {soup_quad(-half, -half, half, half, z), color};
 }
 
 TEST(Occlusion, BackToFrontLayersShadeLittleMoreThanTheFrontOne) {
@@ -76,7 +71,7 @@ TEST(Occlusion, FrontToBackLayersGiveTheFrontOne) {
 TEST(Occlusion, NearerSurfacesDrawnEarlierStayVisible) {
   // A small near quad first, then a full-screen far one, then a tilted full-screen one that
   // is nearer than the small quad on its left and farther on its right.
-  Layer small{quad(-0.5f, -0.5f, 0.5f, 0.5f, -3.0f), {1, 0, 0, 1}};
+  Layer small{soup_quad(-0.5f, -0.5f, 0.5f, 0.5f, -3.0f), {1, 0, 0, 1}};
   Layer far_wall = full_screen(-20.0f, {0, 0, 1, 1});
   Layer tilted{soup({{-40, -40, -1.0f},
                      {40, -40, -30.0f},
@@ -102,9 +97,9 @@ TEST(Occlusion, NearerSurfacesDrawnEarlierStayVisible) {
 // every kind the skipping must respect: alpha-masked, lines, and plain opaque.
 TEST(Occlusion, LayerOrderDoesNotMatterWithMaskedLayersLinesAndPartialTiles) {
   constexpr int kOddWidth = 203, kOddHeight = 117;
-  Mesh far_wall = quad(-100, -100, 100, 100, -30.0f);
+  Mesh far_wall = soup_quad(-100, -100, 100, 100, -30.0f);
   // A masked layer whose vertex alpha runs from 0 to 1: the left part is cut out.
-  Mesh masked = quad(-30, -30, 30, 30, -20.0f);
+  Mesh masked = soup_quad(-30, -30, 30, 30, -20.0f);
   masked.colors = {{1, 1, 1, 0}, {1, 1, 1, 1}, {1, 1, 1, 1},
                    {1, 1, 1, 0}, {1, 1, 1, 1}, {1, 1, 1, 0}};
   Mesh lines;
@@ -112,7 +107,7 @@ TEST(Occlusion, LayerOrderDoesNotMatterWithMaskedLayersLinesAndPartialTiles) {
   // Behind both front layers everywhere (a line level with a surface wins by its depth bias
   // when drawn second, so the two orders would differ for reasons of their own).
   lines.positions = {{-20, -5, -27}, {20, 5, -27}, {-20, 5, -27}, {20, -5, -27}};
-  Mesh front = quad(-40, -40, 40, 40, -5.0f);
+  Mesh front = soup_quad(-40, -40, 40, 40, -5.0f);
   // Tilted: nearer than everything at the left, but not in front of all of it to the right.
   Mesh tilted = soup({{-40, -40, -4.0f},
                       {40, -40, -25.0f},

@@ -8,7 +8,6 @@
 #include <random>
 #include <string>
 
-#include "facet/scene.hpp"
 #include "pipeline/block_raster.hpp"
 #include "pipeline/reference.hpp"
 #include "support/random_soup.hpp"
@@ -31,18 +30,8 @@ std::vector<std::int64_t> targets() {
   return all;
 }
 
-Framebuffer render_shapes(ShadingModel model) {
-  Scene scene = make_shapes_scene();
-  for (auto& material : scene.materials) material.shading = model;
-  constexpr int kWidth = 203, kHeight = 117;  // partial tiles and partial 8x8 blocks
-  scene.camera.aspect = static_cast<float>(kWidth) / kHeight;
-  Renderer renderer;
-  Framebuffer fb(kWidth, kHeight);
-  renderer.begin_frame(scene.camera, scene.lighting);
-  draw_scene(renderer, scene);
-  renderer.finish(fb);
-  return fb;
-}
+// At a size with partial tiles and partial 8x8 blocks.
+Framebuffer render_odd_size(ShadingModel model) { return render_shapes(model, 203, 117); }
 
 TEST(SimdTargets, MoreThanOneTargetIsTested) {
   // On x86-64 Highway always builds at least SSE4 and a portable fallback (the machine may add
@@ -87,11 +76,11 @@ TEST(SimdTargets, EveryShadingModelGivesThePortableTargetsImage) {
                              ShadingModel::normals, ShadingModel::texcoords}) {
     Framebuffer expected = [&] {
       ForcedTarget portable(targets().back());  // the list is best first
-      return render_shapes(model);
+      return render_odd_size(model);
     }();
     for (std::int64_t target : targets()) {
       ForcedTarget forced(target);
-      Framebuffer fb = render_shapes(model);
+      Framebuffer fb = render_odd_size(model);
       ASSERT_EQ(fb.rgba8(), expected.rgba8())
           << to_string(model) << " on " << hwy::TargetName(target);
       ASSERT_EQ(fb.depth(), expected.depth())

@@ -12,6 +12,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "facet/scene.hpp"
 #include "pipeline/draw.hpp"
 #include "pipeline/shade.hpp"
 #include "shading/models.hpp"
@@ -22,6 +23,22 @@ Mesh soup(const std::vector<glm::vec3>& positions) {
   Mesh mesh;
   mesh.positions = positions;
   return mesh;
+}
+
+Mesh soup_quad(float x0, float y0, float x1, float y1, float z) {
+  return soup({{x0, y0, z}, {x1, y0, z}, {x1, y1, z}, {x0, y0, z}, {x1, y1, z}, {x0, y1, z}});
+}
+
+Framebuffer render_shapes(ShadingModel model, int width, int height, RenderSettings settings) {
+  Scene scene = make_shapes_scene();
+  for (auto& material : scene.materials) material.shading = model;
+  scene.camera.aspect = static_cast<float>(width) / height;
+  Renderer renderer(settings);
+  Framebuffer fb(width, height);
+  renderer.begin_frame(scene.camera, scene.lighting);
+  draw_scene(renderer, scene);
+  renderer.finish(fb);
+  return fb;
 }
 
 std::vector<int> coverage_counts(const std::vector<const Mesh*>& meshes, const Camera& camera,

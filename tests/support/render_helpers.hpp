@@ -18,6 +18,13 @@ namespace facet::test {
 // A mesh that is a plain triangle soup (every 3 positions a triangle).
 Mesh soup(const std::vector<glm::vec3>& positions);
 
+// The rectangle [x0, x1] x [y0, y1] at depth z (facing +Z) as a soup of two triangles sharing
+// the diagonal from (x0, y0) to (x1, y1).
+Mesh soup_quad(float x0, float y0, float x1, float y1, float z);
+
+// The built-in shapes scene with every material set to `model`, width x height.
+Framebuffer render_shapes(ShadingModel model, int width, int height, RenderSettings settings = {});
+
 // Renders meshes with the overdraw counter (no depth test): how many triangles covered each
 // pixel centre, row-major.
 std::vector<int> coverage_counts(const std::vector<const Mesh*>& meshes, const Camera& camera,

@@ -98,13 +98,14 @@ struct PrimitiveBuffer {
   // Every primitive in submission order: a triangle index, or a line index with kLineBit set.
   // Binning walks this so bins keep submission order.
   std::vector<std::uint32_t> sequence;
+
+  void clear() { triangles.clear(), lines.clear(), planes.clear(), sequence.clear(); }
+};
+
+// What primitive assembly counts for FrameStats, per chunk.
+struct PrimitiveCounts {
   std::uint64_t culled = 0;   // rejected: outside the frustum, facing away, degenerate
   std::uint64_t clipped = 0;  // needed clipping
-
-  void clear() {
-    triangles.clear(), lines.clear(), planes.clear(), sequence.clear();
-    culled = clipped = 0;
-  }
 };
 
 // A run of one draw's primitives [begin, end) set up by one task.
@@ -112,6 +113,7 @@ struct GeometryChunk {
   std::uint32_t draw = 0;
   std::size_t begin = 0, end = 0;
   PrimitiveBuffer out;
+  PrimitiveCounts counts;
   // Where this chunk's primitives start in the frame's merged buffers.
   struct Offsets {
     std::size_t triangles = 0, lines = 0, planes = 0, sequence = 0;
@@ -119,7 +121,6 @@ struct GeometryChunk {
 };
 
 // The frame: everything above plus the merged primitives it inherits (frame.triangles, ...).
-// The inherited culled/clipped counters stay zero: the chunks' counts are summed into stats.
 struct Frame : PrimitiveBuffer {
   int width = 0;
   int height = 0;

@@ -50,8 +50,8 @@ void merge_chunks(Frame& frame, std::size_t count, int workers) {
     total.lines += out.lines.size();
     total.planes += out.planes.size();
     total.sequence += out.sequence.size();
-    frame.stats.culled += out.culled;  // the chunks' counts go straight to the frame's stats
-    frame.stats.clipped += out.clipped;
+    frame.stats.culled += frame.chunks[k].counts.culled;
+    frame.stats.clipped += frame.chunks[k].counts.clipped;
   }
   // Grow by half again when a frame needs more than any before, so animated scenes settle.
   auto resize = [](auto& v, std::size_t n) {
@@ -94,7 +94,8 @@ void run_geometry(Frame& frame, int workers) {
   parallel_tasks(static_cast<int>(count), workers, [&](int k, int) {
     GeometryChunk& chunk = frame.chunks[k];
     chunk.out.clear();
-    assemble_primitives(frame, chunk.draw, chunk.begin, chunk.end, chunk.out);
+    chunk.counts = {};
+    assemble_primitives(frame, chunk.draw, chunk.begin, chunk.end, chunk.out, chunk.counts);
   });
   merge_chunks(frame, count, workers);
   frame.stats.drawn = frame.triangles.size();

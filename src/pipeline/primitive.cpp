@@ -15,6 +15,7 @@ bool finite(const glm::vec4& c) {
 
 struct Assembler {
   PrimitiveBuffer& out;
+  PrimitiveCounts& counts;
   int width, height;
   std::uint32_t draw_index;
   const DrawRecord& draw;
@@ -60,7 +61,7 @@ struct Assembler {
     // screen) never pay for copying their varyings.
     const ClipVertex* in[3] = {&vertices[i0], &vertices[i1], &vertices[i2]};
     if (!finite(in[0]->clip) || !finite(in[1]->clip) || !finite(in[2]->clip)) {
-      ++out.culled;  // NaN/Inf positions: skipped, never rasterized
+      ++counts.culled;  // NaN/Inf positions: skipped, never rasterized
       return;
     }
     unsigned out0 = outcode(in[0]->clip, frustum), out1 = outcode(in[1]->clip, frustum),
@@ -69,7 +70,7 @@ struct Assembler {
     bool front_facing = orientation > 0.0;
     // Trivial reject: all three outside one frustum plane. Zero orientation: degenerate.
     if ((out0 & out1 & out2) || orientation == 0.0 || cull(front_facing)) {
-      ++out.culled;
+      ++counts.culled;
       return;
     }
     const DrawPipeline& pipe = draw.pipeline;
@@ -93,7 +94,7 @@ struct Assembler {
         pipe.face ? pipe.face : (no_normals ? pipe.face_without_normals : nullptr);
     if (planes == 0 && !fill_normal && !face) {  // the common case: nothing to rewrite
       if (!setup_triangle(out, width, height, draw_index, in, pipe.varyings, front_facing))
-        ++out.culled;
+        ++counts.culled;
       return;
     }
 
@@ -117,10 +118,10 @@ struct Assembler {
     if (planes == 0) {
       const ClipVertex* tri[3] = {&v[0], &v[1], &v[2]};
       if (!setup_triangle(out, width, height, draw_index, tri, pipe.varyings, front_facing))
-        ++out.culled;
+        ++counts.culled;
       return;
     }
-    ++out.clipped;
+    ++counts.clipped;
     clip_polygon(polygon, planes, guard, pipe.varyings);
     // Fan re-triangulation of the convex clipped polygon.
     for (int i = 1; i + 1 < polygon.count; ++i) {
@@ -133,7 +134,7 @@ struct Assembler {
     const glm::vec4& a = vertices[i0].clip;
     const glm::vec4& b = vertices[i1].clip;
     if (!finite(a) || !finite(b) || (outcode(a, frustum) & outcode(b, frustum))) {
-      ++out.culled;
+      ++counts.culled;
       return;
     }
     edge(a, b, draw.uniforms.base_color);
@@ -149,13 +150,18 @@ double homogeneous_orientation(const glm::vec4& a, const glm::vec4& b, const glm
 }
 
 void assemble_primitives(const Frame& frame, std::uint32_t draw_index, std::size_t begin,
-                         std::size_t end, PrimitiveBuffer& out) {
+                         std::size_t end, PrimitiveBuffer& out, PrimitiveCounts& counts) {
   const DrawRecord& draw = frame.draws[draw_index];
   const Mesh& mesh = *draw.mesh;
-  Assembler assembler{out,          frame.width,
-                      frame.height, draw_index,
-                      draw,         frame.vertices[draw_index],
-                      {1.0f, 1.0f}, guard_band_bounds(frame.width, frame.height)};
+  Assembler assembler{out,
+                      counts,
+                      frame.width,
+                      frame.height,
+                      draw_index,
+                      draw,
+                      frame.vertices[draw_index],
+                      {1.0f, 1.0f},
+                      guard_band_bounds(frame.width, frame.height)};
   auto index = [&](std::size_t i) {
     return mesh.indices.empty() ? static_cast<std::uint32_t>(i) : mesh.indices[i];
   };

@@ -15,9 +15,9 @@ namespace facet::pipeline {
 double homogeneous_orientation(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c);
 
 // Assembles, culls, clips and sets up primitives [begin, end) (triangles, or segments for
-// line meshes) of frame.draws[draw] into out. Reads only the frame, so chunks of one draw
-// can run in parallel, each into its own buffer.
+// line meshes) of frame.draws[draw] into out, counting what it culls and clips into counts.
+// Reads only the frame, so chunks of one draw can run in parallel, each into its own buffer.
 void assemble_primitives(const Frame& frame, std::uint32_t draw, std::size_t begin, std::size_t end,
-                         PrimitiveBuffer& out);
+                         PrimitiveBuffer& out, PrimitiveCounts& counts);
 
 }  // namespace facet::pipeline

@@ -67,6 +67,17 @@ class Texture {
   // Not clamped (-inf for zero derivatives); sample() clamps to the levels that exist.
   float lod(glm::vec2 duv_dx, glm::vec2 duv_dy) const;
 
+  // Every level as linear float RGBA in one array, level l starting at float offsets[l]: what
+  // the SIMD batch sampler gathers from. texels is null when the texture keeps no such copy
+  // (rgba32f textures, and rgba8 ones over 2^20 texels); sample() works for every texture.
+  struct LinearLevels {
+    const float* texels = nullptr;
+    const std::int32_t* offsets = nullptr;
+  };
+  LinearLevels linear_levels() const {
+    return {linear_.empty() ? nullptr : linear_.data(), linear_offsets_.data()};
+  }
+
  private:
   Texture() = default;
   std::vector<Level> levels_;
@@ -74,9 +85,12 @@ class Texture {
   bool srgb_ = false;
   std::string name_;
   // The rgba8 levels decoded once to linear float RGBA, which sample() reads: one 16-byte load
-  // a texel instead of four table lookups. Empty for rgba32f textures (levels_ already are)
-  // and for very large rgba8 ones (memory; see kMaxLinearTexels in texture.cpp).
-  std::vector<std::vector<float>> linear_;
+  // a texel instead of four table lookups. All levels in one array (level l from float
+  // linear_offsets_[l]), so that SIMD gathers index them with 32 bits. Empty for rgba32f
+  // textures (levels_ already are) and for very large rgba8 ones (memory; see
+  // kMaxLinearTexels in texture.cpp).
+  std::vector<float> linear_;
+  std::vector<std::int32_t> linear_offsets_;
 };
 
 // Reads an image file: PNG, JPEG, TGA, BMP, HDR (stb_image) or PPM/PGM P2/P3/P5/P6 (facet's own

@@ -19,6 +19,7 @@
 #include "pipeline/setup.hpp"
 #include "shading/fog.hpp"
 #include "shading/fragment.hpp"
+#include "shading/texel_batch.hpp"
 
 namespace facet::pipeline {
 
@@ -60,6 +61,15 @@ constexpr bool edge_overlay() {
   return false;
 }
 inline constexpr float kOverlayHalfWidth = 0.5f;
+
+// The varying slot of the texture coordinate a model reads its base color map at (through
+// shading::base_color_texel), or -1: such models have the map sampled ahead, a batch of pixels
+// at a time (shading/texel_batch.hpp).
+template <class Shading>
+constexpr int base_color_texcoord() {
+  if constexpr (requires { Shading::kBaseColorTexcoord; }) return Shading::kBaseColorTexcoord;
+  return -1;
+}
 
 // 1 / |(a, b)| of each edge, in pixels: E_i times it is the distance to edge i in pixels (E is
 // in fixed-point units, hence the sub-pixel scale). Only the wire overlay view needs them, so
@@ -162,11 +172,37 @@ class PixelWriter {
         edge_scales_(make_edge_scales(t)) {
     fragment.planes = tile.frame->planes.data() + t.varying_planes;
     fragment.inv_w = &t.inv_w;
+    if constexpr (kTexcoordSlot >= 0) {
+      if (uniforms_.material->base_color_map) base_map_ = &uniforms_.material->base_color_map;
+    }
+  }
+
+  // Sampling ahead: the raster loop queues the texture coordinate of every pixel it will
+  // write, calls sample_queued(), then writes those pixels in the same order.
+  bool samples_ahead() const { return base_map_ != nullptr; }
+  static constexpr int kTexcoordSlot = base_color_texcoord<Shading>();  // -1: never
+  void queue(float u, float v, float w) {
+    texels_.u[texels_.count] = u;
+    texels_.v[texels_.count] = v;
+    texels_.w[texels_.count++] = w;
+  }
+  void sample_queued() {
+    shading::sample_batch(*base_map_, fragment.planes + kTexcoordSlot, t_.inv_w, texels_);
+    texels_.count = 0;
+    next_texel_ = 0;
   }
 
   // Shades `fragment` (w and varyings filled in by the caller) for pixel (x, y) of the frame,
   // index `pixel` in the tile buffers, at depth z. False if the alpha test discarded it.
   bool write(int x, int y, std::ptrdiff_t pixel, float z) {
+    if constexpr (kTexcoordSlot >= 0) {
+      if (base_map_) {
+        const int n = next_texel_++;
+        fragment.base_texel = {texels_.rgba[0][n], texels_.rgba[1][n], texels_.rgba[2][n],
+                               texels_.rgba[3][n]};
+        fragment.base_texel_ready = true;
+      }
+    }
     return store(x, y, pixel, z, Shading::fragment(fragment, uniforms_));
   }
 
@@ -199,6 +235,9 @@ class PixelWriter {
   // Only the wire overlay reads it (an empty struct otherwise, and never computed).
   [[no_unique_address]] std::conditional_t<edge_overlay<Shading>(), EdgeScales, std::monostate>
       edge_scales_;
+  const TextureMap* base_map_ = nullptr;  // the map sampled ahead, if any
+  shading::TexelBatch texels_;
+  int next_texel_ = 0;
 };
 
 // Triangles whose bounding box in the tile is at most this many pixels skip the block
@@ -206,13 +245,24 @@ class PixelWriter {
 // (measured on bunny-close and million: 16 to 256 all gain on 0, 64 at least as much as any).
 inline constexpr int kSmallTrianglePixels = 64;
 
-// The scalar loop over the bounding box [x0, x1] x [y0, y1] (inclusive), for small triangles.
-// Same arithmetic as cover_block, so the same pixels get the same values.
+// Covered pixels of a small triangle that passed the depth test, packed, waiting to be shaded
+// (a bounding box of at most kSmallTrianglePixels holds them all).
+struct PackedPixels {
+  int count = 0;
+  std::int16_t x[kSmallTrianglePixels], y[kSmallTrianglePixels];
+  float z[kSmallTrianglePixels], w[kSmallTrianglePixels];
+  float v[kMaxVaryings][kSmallTrianglePixels];
+};
+
+// The scalar loop over the bounding box [x0, x1] x [y0, y1] (inclusive), for small triangles:
+// finds the pixels, then shades them. Same arithmetic as cover_block, so the same pixels get
+// the same values.
 template <class Shading, AlphaMode kAlpha>
 void raster_small_triangle(TileContext& tile, const SetupTriangle& t, int x0, int y0, int x1,
                            int y1, PixelWriter<Shading, kAlpha>& out) {
   constexpr int kVaryings = Shading::kVaryings;
   const Plane* planes = out.fragment.planes;
+  PackedPixels found;
   for (int y = y0; y <= y1; ++y) {
     const std::int64_t cy = pixel_centre(y), cx = pixel_centre(x0);
     std::int64_t e[3];
@@ -233,13 +283,30 @@ void raster_small_triangle(TileContext& tile, const SetupTriangle& t, int x0, in
       if constexpr (depth_tested<Shading>()) {
         if (!(z < tile.depth[row + x])) continue;  // early depth test (less); NaN fails
       }
-      out.fragment.w = 1.0f / evaluate_in_row(inv_w_row, t.inv_w, t.ref_x, px);
+      const int n = found.count++;
+      found.x[n] = static_cast<std::int16_t>(x);
+      found.y[n] = static_cast<std::int16_t>(y);
+      found.z[n] = z;
+      found.w[n] = 1.0f / evaluate_in_row(inv_w_row, t.inv_w, t.ref_x, px);
       for (int k = 0; k < kVaryings; ++k) {
-        out.fragment.v[k] =
-            evaluate_in_row(varying_rows[k], planes[k], t.ref_x, px) * out.fragment.w;
+        found.v[k][n] = evaluate_in_row(varying_rows[k], planes[k], t.ref_x, px) * found.w[n];
       }
-      out.write(x, y, row + x, z);
     }
+  }
+  if constexpr (constexpr int kSlot = PixelWriter<Shading, kAlpha>::kTexcoordSlot; kSlot >= 0) {
+    if (out.samples_ahead()) {
+      for (int n = 0; n < found.count; ++n) {
+        out.queue(found.v[kSlot][n], found.v[kSlot + 1][n], found.w[n]);
+      }
+      out.sample_queued();
+    }
+  }
+  for (int n = 0; n < found.count; ++n) {
+    out.fragment.w = found.w[n];
+    for (int k = 0; k < kVaryings; ++k) out.fragment.v[k] = found.v[k][n];
+    const int x = found.x[n], y = found.y[n];
+    out.write(x, y, static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride + (x - tile.x0),
+              found.z[n]);
   }
 }
 
@@ -251,7 +318,8 @@ void raster_small_triangle(TileContext& tile, const SetupTriangle& t, int x0, in
 //      (tile.block_max_depth, a per-block bound on the depth buffer: hierarchical depth);
 //   3. cover_block finds the covered pixels that pass the depth test, with their depth and
 //      varyings, SIMD across a block row;
-//   4. those pixels are shaded one at a time and written.
+//   4. models that read a base color map have it sampled for those pixels at once (SIMD);
+//   5. those pixels are shaded one at a time and written.
 template <class Shading, AlphaMode kAlpha = AlphaMode::opaque>
 void raster_triangle(TileContext& tile, const SetupTriangle& t) {
   const int x0 = std::max(t.min_x, tile.x0), x1 = std::min(t.max_x, tile.x1 - 1);
@@ -297,6 +365,15 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
       in.depth = tile.depth + block_offset;
       cover_block(in, block);
       if (block.mask == 0) continue;
+      if constexpr (constexpr int kSlot = PixelWriter<Shading, kAlpha>::kTexcoordSlot; kSlot >= 0) {
+        if (out.samples_ahead()) {
+          for (std::uint64_t m = block.mask; m != 0; m &= m - 1) {
+            const int i = std::countr_zero(m);
+            out.queue(block.v[kSlot][i], block.v[kSlot + 1][i], block.w[i]);
+          }
+          out.sample_queued();
+        }
+      }
       std::uint64_t written = 0;
       for (std::uint64_t m = block.mask; m != 0; m &= m - 1) {
         const int i = std::countr_zero(m);

@@ -75,15 +75,9 @@ struct BasicLightTextureShading {
     BasicLightShading::vertex(in, u, out);
     shading::store(out + kTexcoord, in.texcoord);
   }
+  static constexpr int kBaseColorTexcoord = kTexcoord;
   static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
-    const TextureMap& map = u.material->base_color_map;
-    const glm::vec2 uv{f.v[kTexcoord], f.v[kTexcoord + 1]};
-    float lod = 0.0f;
-    if (map.sampler.filter == Filter::trilinear) {  // per-draw constant: predicted
-      lod = map.texture->lod({f.ddx(kTexcoord), f.ddx(kTexcoord + 1)},
-                             {f.ddy(kTexcoord), f.ddy(kTexcoord + 1)});
-    }
-    const glm::vec4 texel = map.texture->sample(map.sampler, uv, lod);
+    const glm::vec4 texel = shading::base_color_texel(f, u, kTexcoord);
     return unorm8_output(glm::vec3(texel) * shading::load3(f.v));
   }
 };

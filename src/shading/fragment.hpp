@@ -3,6 +3,8 @@
 // triangle's plane equations rather than from neighbouring pixels.
 #pragma once
 
+#include <glm/vec4.hpp>
+
 #include "pipeline/frame.hpp"
 
 namespace facet::shading {
@@ -12,6 +14,9 @@ struct Fragment {
   float w = 1.0f;                           // clip w = view depth
   const pipeline::Plane* planes = nullptr;  // v / w planes
   const pipeline::Plane* inv_w = nullptr;   // 1 / w plane
+  // The base color map's texel here, when the raster loop sampled it ahead (base_color_texel).
+  glm::vec4 base_texel{0.0f};
+  bool base_texel_ready = false;
 
   // d v[k] / dx in pixels. With V = v/w and W = 1/w planes, v = V/W, so by the quotient rule
   // dv/dx = (V_x - v * W_x) / W = (V_x - v * W_x) * w.

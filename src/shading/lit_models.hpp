@@ -29,6 +29,7 @@ template <bool kBlinn>
 struct PhongShadingT {
   static constexpr int kVaryings = kSurfaceVaryingsWithTangent;
   static constexpr int kNormalSlot = shading::kNormalSlot;
+  static constexpr int kBaseColorTexcoord = kTexcoordSlot;
   static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
     surface_vertex<kVaryings>(in, u, out);
   }
@@ -60,6 +61,7 @@ struct GouraudShading {
   static constexpr int kDiffuseSlot = 6;
   static constexpr int kSpecularSlot = 9;
   static constexpr int kNormalSlot = -1;  // lit in vertex(); see face_without_normals()
+  static constexpr int kBaseColorTexcoord = kTexcoordSlot;
   static void light_vertex(glm::vec3 position, glm::vec3 normal, const DrawUniforms& u,
                            float* out) {
     glm::vec3 view = safe_normalize(u.eye - position);
@@ -88,7 +90,7 @@ struct GouraudShading {
   }
   static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
     glm::vec4 albedo = load4(f.v + kColorSlot);
-    if (u.material->base_color_map) albedo *= sample_map(u.material->base_color_map, f);
+    if (u.material->base_color_map) albedo *= base_color_texel(f, u);
     glm::vec3 color = glm::vec3(albedo) * load3(f.v + kDiffuseSlot) + load3(f.v + kSpecularSlot);
     return {color + emission(f, u), albedo.a};
   }
@@ -101,6 +103,7 @@ struct GouraudShading {
 struct PbrShading {
   static constexpr int kVaryings = kSurfaceVaryingsWithTangent;
   static constexpr int kNormalSlot = shading::kNormalSlot;
+  static constexpr int kBaseColorTexcoord = kTexcoordSlot;
   static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
     surface_vertex<kVaryings>(in, u, out);
   }

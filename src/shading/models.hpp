@@ -9,6 +9,9 @@
 //   face(normal, centre, uniforms, v[3])  optional, per triangle before clipping: may rewrite
 //                                    the three vertices' varyings (flat shading)
 //   fragment(fragment, uniforms) -> linear RGBA
+//   kBaseColorTexcoord  optional: the slot of the texture coordinate the base color map is
+//                   read at, through base_color_texel(); the raster loop then samples the map
+//                   for a batch of pixels at once (SIMD) before calling fragment()
 // Lit models with textures are in lit_models.hpp. Per-draw options (is there a base color
 // map? which fog?) are plain branches on per-draw constants: always predicted the same way,
 // where template flags for each would multiply the raster loops.
@@ -51,12 +54,13 @@ inline glm::vec4 display_value(glm::vec3 shown) {
 struct UnlitShading {
   static constexpr int kVaryings = kUnlitVaryings;
   static constexpr int kNormalSlot = -1;
+  static constexpr int kBaseColorTexcoord = kTexcoordSlot;
   static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
     surface_vertex<kVaryings>(in, u, out);
   }
   static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
     glm::vec4 color = load4(f.v + kColorSlot);
-    if (u.material->base_color_map) color *= sample_map(u.material->base_color_map, f);
+    if (u.material->base_color_map) color *= base_color_texel(f, u);
     return color + glm::vec4(emission(f, u), 0.0f);
   }
 };
@@ -91,6 +95,7 @@ struct FlatShading {
 struct LambertShading {
   static constexpr int kVaryings = kSurfaceVaryings;
   static constexpr int kNormalSlot = shading::kNormalSlot;
+  static constexpr int kBaseColorTexcoord = kTexcoordSlot;
   static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
     surface_vertex<kVaryings>(in, u, out);
   }

@@ -5,17 +5,24 @@
 
 namespace facet::shading {
 
-glm::vec4 sample_map(const TextureMap& map, const Fragment& f) {
-  glm::vec2 uv{f.v[kTexcoordSlot], f.v[kTexcoordSlot + 1]};
-  glm::vec2 uv_t = glm::vec2(map.transform * glm::vec3(uv, 1.0f));
+glm::vec4 sample_map_at(const TextureMap& map, glm::vec2 uv, glm::vec2 duv_dx, glm::vec2 duv_dy) {
+  const glm::mat3& m = map.transform;
+  const glm::vec2 uv_t = transform_texcoord(m, uv);
   float lod = 0.0f;
   if (map.sampler.filter == Filter::trilinear) {
-    glm::mat2 linear(map.transform);  // derivatives transform by the linear part only
-    glm::vec2 dx = linear * glm::vec2(f.ddx(kTexcoordSlot), f.ddx(kTexcoordSlot + 1));
-    glm::vec2 dy = linear * glm::vec2(f.ddy(kTexcoordSlot), f.ddy(kTexcoordSlot + 1));
+    // Derivatives transform by the linear part only.
+    const glm::vec2 dx{m[0][0] * duv_dx.x + m[1][0] * duv_dx.y,
+                       m[0][1] * duv_dx.x + m[1][1] * duv_dx.y};
+    const glm::vec2 dy{m[0][0] * duv_dy.x + m[1][0] * duv_dy.y,
+                       m[0][1] * duv_dy.x + m[1][1] * duv_dy.y};
     lod = map.texture->lod(dx, dy);
   }
   return map.texture->sample(map.sampler, uv_t, lod);
+}
+
+glm::vec4 sample_map(const TextureMap& map, const Fragment& f, int slot) {
+  return sample_map_at(map, {f.v[slot], f.v[slot + 1]}, {f.ddx(slot), f.ddx(slot + 1)},
+                       {f.ddy(slot), f.ddy(slot + 1)});
 }
 
 template <bool kWithTangent>
@@ -42,16 +49,15 @@ SurfacePoint surface_point(const Fragment& f, const DrawUniforms& u) {
   }
   s.normal = n;
   s.albedo = load4(f.v + kColorSlot);
-  if (m.base_color_map) s.albedo *= sample_map(m.base_color_map, f);
+  if (m.base_color_map) s.albedo *= base_color_texel(f, u);
   return s;
 }
 
 template SurfacePoint surface_point<true>(const Fragment&, const DrawUniforms&);
 template SurfacePoint surface_point<false>(const Fragment&, const DrawUniforms&);
 
-glm::vec3 emission(const Fragment& f, const DrawUniforms& u) {
+glm::vec3 mapped_emission(const Fragment& f, const DrawUniforms& u) {
   const Material& m = *u.material;
-  if (m.emissive == glm::vec3(0.0f)) return glm::vec3(0.0f);
   glm::vec3 e = m.emissive;
   if (m.emissive_map) e *= glm::vec3(sample_map(m.emissive_map, f));
   return e;

@@ -15,6 +15,7 @@
 
 #include "facet/error.hpp"
 #include "shading/color.hpp"
+#include "shading/lod_log2.hpp"
 
 namespace facet {
 namespace {
@@ -336,9 +337,16 @@ std::shared_ptr<Texture> Texture::from_rgba8(int width, int height, std::vector<
   texture->levels_.push_back(Level{width, height, std::move(rgba), {}});
   build_mip_chain(texture->levels_, srgb);
   if (static_cast<std::size_t>(width) * height <= kMaxLinearTexels) {
+    std::size_t total = 0;
     for (const Level& level : texture->levels_) {
+      texture->linear_offsets_.push_back(static_cast<std::int32_t>(total));
+      total += level.rgba8.size();
+    }
+    texture->linear_.resize(total);
+    for (std::size_t l = 0; l < texture->levels_.size(); ++l) {
+      const Level& level = texture->levels_[l];
       const Rgba8Reader read(level, srgb);
-      std::vector<float>& linear = texture->linear_.emplace_back(level.rgba8.size());
+      float* linear = texture->linear_.data() + texture->linear_offsets_[l];
       for (int y = 0; y < level.height; ++y) {
         for (int x = 0; x < level.width; ++x) {
           const Texel t = read(x, y);
@@ -382,7 +390,7 @@ glm::vec4 Texture::sample(const Sampler& sampler, glm::vec2 uv, float lod) const
   }
   if (!linear_.empty()) {
     const auto reader = [this](int l) {
-      return FloatReader{linear_[l].data(), levels_[l].width, levels_[l].height};
+      return FloatReader{linear_.data() + linear_offsets_[l], levels_[l].width, levels_[l].height};
     };
     return to_vec4(sample_wrapped(reader, count, sampler, uv, lod));
   }
@@ -392,12 +400,13 @@ glm::vec4 Texture::sample(const Sampler& sampler, glm::vec2 uv, float lod) const
 
 // OpenGL 4.6 §8.14.1, equation 8.4 without anisotropy: rho is the longer of the two
 // screen-pixel footprint edges measured in base-level texels, lod = log2(rho). Computed from
-// squared lengths (0.5 * log2(rho^2)) to save the square roots. Not clamped: sample() does.
+// squared lengths (0.5 * log2(rho^2)) to save the square roots, with lod_log2 (the same bits
+// on every CPU and in the SIMD batch sampler). Not clamped: sample() does.
 float Texture::lod(glm::vec2 duv_dx, glm::vec2 duv_dy) const {
   const glm::vec2 size(static_cast<float>(width()), static_cast<float>(height()));
   const glm::vec2 dx = duv_dx * size, dy = duv_dy * size;
   const float rho2 = std::max(dx.x * dx.x + dx.y * dx.y, dy.x * dy.x + dy.y * dy.y);
-  return 0.5f * std::log2(rho2);
+  return 0.5f * shading::lod_log2(rho2);
 }
 
 std::shared_ptr<const Texture> missing_texture() {

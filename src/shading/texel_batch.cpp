@@ -1,0 +1,305 @@
+// Batch texture sampling (see texel_batch.hpp). Highway compiles this file once per SIMD target
+// (foreach_target.h re-includes it) and HWY_DYNAMIC_DISPATCH picks the best target the CPU
+// has. Each step repeats its scalar counterpart in texture.cpp / surface.cpp / lod_log2.hpp
+// with the same IEEE operations in the same order (no fused multiply-add; std::min/max as
+// compare-and-select, which treat NaN as they do), so every target gives the scalar bits;
+// simd_targets_test checks it.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "shading/texel_batch.cpp"
+#include "shading/texel_batch.hpp"
+
+#include <hwy/foreach_target.h>  // must come before highway.h
+#include <hwy/highway.h>
+
+#include <limits>
+
+#include "facet/texture.hpp"
+#include "shading/lod_log2.hpp"
+#include "shading/surface.hpp"
+
+HWY_BEFORE_NAMESPACE();
+namespace facet::shading::HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+// Eight lanes at most: batches are often a few pixels of a small triangle, where AVX-512's
+// sixteen lanes mostly compute padding (islands was 5 % faster with eight, overdraw the same).
+using FloatTag = hn::CappedTag<float, 8>;
+using IntTag = hn::RebindToSigned<FloatTag>;
+using FloatV = hn::Vec<FloatTag>;
+using IntV = hn::Vec<IntTag>;
+
+// std::min(a, b) and std::max(a, b): a unless the comparison says otherwise (so NaN in a stays).
+HWY_INLINE FloatV StdMin(FloatV a, FloatV b) { return hn::IfThenElse(hn::Lt(b, a), b, a); }
+HWY_INLINE FloatV StdMax(FloatV a, FloatV b) { return hn::IfThenElse(hn::Lt(a, b), b, a); }
+
+// lod_log2.hpp, lane by lane.
+HWY_INLINE FloatV LodLog2(FloatV x) {
+  namespace c = lod_log2_constants;
+  const FloatTag df;
+  const IntTag di;
+  const auto positive = hn::Gt(x, hn::Zero(df));
+  const auto subnormal = hn::Lt(x, hn::Set(df, c::kSmallestNormal));
+  const FloatV scaled = hn::IfThenElse(subnormal, hn::Mul(x, hn::Set(df, c::kTwoTo23)), x);
+  const FloatV bias = hn::IfThenElse(subnormal, hn::Set(df, 150.0f), hn::Set(df, 127.0f));
+  const IntV bits = hn::BitCast(di, scaled);
+  FloatV e = hn::Sub(hn::ConvertTo(df, hn::ShiftRight<23>(bits)), bias);
+  FloatV m =
+      hn::BitCast(df, hn::Or(hn::And(bits, hn::Set(di, 0x007fffff)), hn::Set(di, 0x3f800000)));
+  const auto big = hn::Gt(m, hn::Set(df, c::kSqrt2));
+  m = hn::IfThenElse(big, hn::Mul(m, hn::Set(df, 0.5f)), m);
+  e = hn::IfThenElse(big, hn::Add(e, hn::Set(df, 1.0f)), e);
+  const FloatV one = hn::Set(df, 1.0f);
+  const FloatV s = hn::Div(hn::Sub(m, one), hn::Add(m, one));
+  const FloatV s2 = hn::Mul(s, s);
+  FloatV poly = hn::Add(hn::Set(df, c::kC5), hn::Mul(s2, hn::Set(df, c::kC7)));
+  poly = hn::Add(hn::Set(df, c::kC3), hn::Mul(s2, poly));
+  poly = hn::Add(hn::Set(df, c::kC1), hn::Mul(s2, poly));
+  FloatV result = hn::Add(e, hn::Mul(s, poly));
+  const FloatV infinity = hn::Set(df, std::numeric_limits<float>::infinity());
+  const FloatV zero_or_invalid =
+      hn::IfThenElse(hn::Eq(x, hn::Zero(df)), hn::Neg(infinity),
+                     hn::Set(df, std::numeric_limits<float>::quiet_NaN()));
+  result = hn::IfThenElse(positive, result, zero_or_invalid);
+  return hn::IfThenElse(hn::Eq(x, infinity), infinity, result);
+}
+
+// sanitize() and floor_to_int() of texture.cpp.
+HWY_INLINE FloatV Sanitize(FloatV x) {
+  const FloatTag df;
+  const FloatV limit = hn::Set(df, 8388608.0f);
+  return hn::IfThenElse(hn::Gt(x, hn::Neg(limit)), StdMin(x, limit), hn::Neg(limit));
+}
+HWY_INLINE IntV FloorToInt(FloatV x) {
+  const FloatTag df;
+  const IntTag di;
+  const IntV t = hn::ConvertTo(di, x);  // truncates; |x| <= 2^23 after Sanitize
+  const auto above = hn::RebindMask(di, hn::Gt(hn::ConvertTo(df, t), x));
+  return hn::IfThenElse(above, hn::Sub(t, hn::Set(di, 1)), t);
+}
+
+// wrap<mode>() of texture.cpp for power-of-two sizes (repeat and mirrored repeat) and any size
+// (clamp to edge).
+HWY_INLINE IntV WrapOne(Wrap mode, IntV i, IntV size) {
+  const IntTag di;
+  const IntV one = hn::Set(di, 1);
+  switch (mode) {
+    case Wrap::clamp_to_edge:
+      return hn::Min(hn::Max(i, hn::Zero(di)), hn::Sub(size, one));
+    case Wrap::mirrored_repeat: {
+      const IntV period = hn::Add(size, size);
+      const IntV m = hn::And(i, hn::Sub(period, one));
+      return hn::IfThenElse(hn::Lt(m, size), m, hn::Sub(hn::Sub(period, one), m));
+    }
+    case Wrap::repeat:
+    default:
+      return hn::And(i, hn::Sub(size, one));
+  }
+}
+
+struct Pair {
+  IntV first, second;
+};
+// wrap_pair<mode>() of texture.cpp.
+HWY_INLINE Pair WrapPair(Wrap mode, IntV i, IntV size) {
+  const IntTag di;
+  if (mode == Wrap::repeat) {
+    const IntV first = WrapOne(mode, i, size);
+    const IntV next = hn::Add(first, hn::Set(di, 1));
+    return {first, hn::IfThenElse(hn::Eq(next, size), hn::Zero(di), next)};
+  }
+  return {WrapOne(mode, i, size), WrapOne(mode, hn::Add(i, hn::Set(di, 1)), size)};
+}
+
+// What the sampling steps share for one texture.
+struct Source {
+  const float* texels;
+  const std::int32_t* offsets;
+  int width, height;
+  Wrap wrap_u, wrap_v;
+};
+
+struct Rgba {
+  FloatV c[4];
+};
+
+// Linear RGBA of texel (x, row) of the levels whose first float is at offset (per lane).
+HWY_INLINE Rgba Fetch(const Source& src, IntV offset, IntV width, IntV x, IntV row) {
+  const FloatTag df;
+  const IntTag di;
+  const IntV index = hn::Add(offset, hn::ShiftLeft<2>(hn::Add(hn::Mul(row, width), x)));
+  Rgba t;
+  for (int c = 0; c < 4; ++c) {
+    t.c[c] = hn::GatherIndex(df, src.texels, hn::Add(index, hn::Set(di, c)));
+  }
+  return t;
+}
+
+// a * (1 - f) + b * f per channel, as the Texel arithmetic of texture.cpp.
+HWY_INLINE Rgba Lerp(const Rgba& a, const Rgba& b, FloatV f) {
+  const FloatV g = hn::Sub(hn::Set(FloatTag(), 1.0f), f);
+  Rgba r;
+  for (int c = 0; c < 4; ++c) r.c[c] = hn::Add(hn::Mul(a.c[c], g), hn::Mul(b.c[c], f));
+  return r;
+}
+
+// Level sizes: each side halved per level, at least 1 (as texture.cpp builds them).
+HWY_INLINE IntV LevelSize(int base, IntV level) {
+  const IntTag di;
+  return hn::Max(hn::Shr(hn::Set(di, base), level), hn::Set(di, 1));
+}
+
+// sample_bilinear() of texture.cpp at each lane's level.
+HWY_INLINE Rgba Bilinear(const Source& src, IntV level, FloatV u, FloatV v) {
+  const FloatTag df;
+  const IntTag di;
+  const IntV w = LevelSize(src.width, level), h = LevelSize(src.height, level);
+  const FloatV half = hn::Set(df, 0.5f);
+  const FloatV x = Sanitize(hn::Sub(hn::Mul(u, hn::ConvertTo(df, w)), half));
+  const FloatV y = Sanitize(hn::Sub(hn::Mul(v, hn::ConvertTo(df, h)), half));
+  const IntV i0 = FloorToInt(x), j0 = FloorToInt(y);
+  const FloatV a = hn::Sub(x, hn::ConvertTo(df, i0)), b = hn::Sub(y, hn::ConvertTo(df, j0));
+  const Pair xs = WrapPair(src.wrap_u, i0, w), ys = WrapPair(src.wrap_v, j0, h);
+  const IntV last_row = hn::Sub(h, hn::Set(di, 1));
+  const IntV r0 = hn::Sub(last_row, ys.first), r1 = hn::Sub(last_row, ys.second);
+  const IntV offset = hn::GatherIndex(di, src.offsets, level);
+  const Rgba bottom =
+      Lerp(Fetch(src, offset, w, xs.first, r0), Fetch(src, offset, w, xs.second, r0), a);
+  const Rgba top =
+      Lerp(Fetch(src, offset, w, xs.first, r1), Fetch(src, offset, w, xs.second, r1), a);
+  return Lerp(bottom, top, b);
+}
+
+// sample_nearest() of texture.cpp (base level).
+HWY_INLINE Rgba Nearest(const Source& src, FloatV u, FloatV v) {
+  const FloatTag df;
+  const IntTag di;
+  const IntV w = hn::Set(di, src.width), h = hn::Set(di, src.height);
+  const IntV i = FloorToInt(Sanitize(hn::Mul(u, hn::ConvertTo(df, w))));
+  const IntV j = FloorToInt(Sanitize(hn::Mul(v, hn::ConvertTo(df, h))));
+  const IntV row = hn::Sub(hn::Sub(h, hn::Set(di, 1)), WrapOne(src.wrap_v, j, h));
+  return Fetch(src, hn::Zero(di), w, WrapOne(src.wrap_u, i, w), row);
+}
+
+// Fragment::ddx/ddy of a varying whose value is `value`: (V_x - value * W_x) * w.
+HWY_INLINE FloatV Derivative(float plane_slope, float inv_w_slope, FloatV value, FloatV w) {
+  const FloatTag df;
+  return hn::Mul(hn::Sub(hn::Set(df, plane_slope), hn::Mul(value, hn::Set(df, inv_w_slope))), w);
+}
+
+// Row `row` of the map's linear part times (du, dv), as sample_map_at() transforms derivatives.
+HWY_INLINE FloatV LinearPart(const glm::mat3& m, int row, FloatV du, FloatV dv) {
+  const FloatTag df;
+  return hn::Add(hn::Mul(hn::Set(df, m[0][row]), du), hn::Mul(hn::Set(df, m[1][row]), dv));
+}
+
+// sample_map_at()'s level of detail: exact derivatives, the map's linear part, then
+// Texture::lod() (footprint in base texels, the longer squared edge, half its log2).
+HWY_INLINE FloatV LevelOfDetail(const Texture& texture, const glm::mat3& m,
+                                const pipeline::Plane* planes, const pipeline::Plane& inv_w,
+                                FloatV u, FloatV v, FloatV w) {
+  const FloatTag df;
+  const FloatV dux = Derivative(planes[0].dx, inv_w.dx, u, w);
+  const FloatV dvx = Derivative(planes[1].dx, inv_w.dx, v, w);
+  const FloatV duy = Derivative(planes[0].dy, inv_w.dy, u, w);
+  const FloatV dvy = Derivative(planes[1].dy, inv_w.dy, v, w);
+  const FloatV size_u = hn::Set(df, static_cast<float>(texture.width()));
+  const FloatV size_v = hn::Set(df, static_cast<float>(texture.height()));
+  const FloatV xu = hn::Mul(LinearPart(m, 0, dux, dvx), size_u);
+  const FloatV xv = hn::Mul(LinearPart(m, 1, dux, dvx), size_v);
+  const FloatV yu = hn::Mul(LinearPart(m, 0, duy, dvy), size_u);
+  const FloatV yv = hn::Mul(LinearPart(m, 1, duy, dvy), size_v);
+  const FloatV rho2 =
+      StdMax(hn::Add(hn::Mul(xu, xu), hn::Mul(xv, xv)), hn::Add(hn::Mul(yu, yu), hn::Mul(yv, yv)));
+  return hn::Mul(hn::Set(df, 0.5f), LodLog2(rho2));
+}
+
+void SampleBatch(const TextureMap& map, const pipeline::Plane* planes, const pipeline::Plane& inv_w,
+                 TexelBatch& batch) {
+  const FloatTag df;
+  const IntTag di;
+  const int lanes = static_cast<int>(hn::Lanes(df));
+  const Texture& texture = *map.texture;
+  const Texture::LinearLevels linear = texture.linear_levels();
+  const Source src{linear.texels,    linear.offsets,     texture.width(),
+                   texture.height(), map.sampler.wrap_u, map.sampler.wrap_v};
+  const glm::mat3& m = map.transform;
+  const Filter filter = map.sampler.filter;
+  const FloatV top = hn::Set(df, static_cast<float>(texture.level_count() - 1));
+  for (int j = 0; j < batch.count; j += lanes) {
+    const FloatV u = hn::Load(df, batch.u + j), v = hn::Load(df, batch.v + j);
+    // transform_texcoord()
+    const FloatV ut =
+        hn::Add(hn::Add(hn::Mul(hn::Set(df, m[0][0]), u), hn::Mul(hn::Set(df, m[1][0]), v)),
+                hn::Set(df, m[2][0]));
+    const FloatV vt =
+        hn::Add(hn::Add(hn::Mul(hn::Set(df, m[0][1]), u), hn::Mul(hn::Set(df, m[1][1]), v)),
+                hn::Set(df, m[2][1]));
+    Rgba texel;
+    if (filter == Filter::nearest) {
+      texel = Nearest(src, ut, vt);
+    } else if (filter == Filter::bilinear) {
+      texel = Bilinear(src, hn::Zero(di), ut, vt);
+    } else {
+      const FloatV lod = LevelOfDetail(texture, m, planes, inv_w, u, v, hn::Load(df, batch.w + j));
+      // sample_levels(): clamp to the chain, blend the two nearest levels.
+      const FloatV l = hn::IfThenElse(hn::Gt(lod, hn::Zero(df)), StdMin(lod, top), hn::Zero(df));
+      const IntV l0 = hn::ConvertTo(di, l);
+      const FloatV f = hn::Sub(l, hn::ConvertTo(df, l0));
+      texel = Bilinear(src, l0, ut, vt);
+      const auto blend = hn::Gt(f, hn::Zero(df));
+      if (!hn::AllFalse(df, blend)) {
+        const IntV l1 = hn::Min(hn::Add(l0, hn::Set(di, 1)), hn::ConvertTo(di, top));
+        const Rgba mixed = Lerp(texel, Bilinear(src, l1, ut, vt), f);
+        for (int c = 0; c < 4; ++c) texel.c[c] = hn::IfThenElse(blend, mixed.c[c], texel.c[c]);
+      }
+    }
+    for (int c = 0; c < 4; ++c) hn::Store(texel.c[c], df, batch.rgba[c] + j);
+  }
+}
+
+}  // namespace facet::shading::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace facet::shading {
+
+HWY_EXPORT(SampleBatch);
+
+namespace {
+
+// What SampleBatch handles: textures with their levels as one linear float array, and
+// repeating wraps only on power-of-two sides (their remainders are masks).
+bool simd_samples(const TextureMap& map) {
+  const Texture& texture = *map.texture;
+  if (texture.linear_levels().texels == nullptr) return false;
+  auto wraps_as_mask = [](Wrap mode, int size) {
+    return mode == Wrap::clamp_to_edge || (size & (size - 1)) == 0;
+  };
+  return wraps_as_mask(map.sampler.wrap_u, texture.width()) &&
+         wraps_as_mask(map.sampler.wrap_v, texture.height());
+}
+
+}  // namespace
+
+void sample_batch(const TextureMap& map, const pipeline::Plane* planes,
+                  const pipeline::Plane& inv_w, TexelBatch& batch) {
+  if (simd_samples(map)) {
+    // Zero the lanes past count in the last vector (8 lanes at most): they are computed, then
+    // ignored.
+    for (int j = batch.count; j < kTexelBatch && j % 8 != 0; ++j) {
+      batch.u[j] = batch.v[j] = batch.w[j] = 0.0f;
+    }
+    HWY_DYNAMIC_DISPATCH(SampleBatch)(map, planes, inv_w, batch);
+    return;
+  }
+  for (int j = 0; j < batch.count; ++j) {  // Fragment::ddx/ddy, then sample_map_at()
+    const float u = batch.u[j], v = batch.v[j], w = batch.w[j];
+    const glm::vec2 dx{(planes[0].dx - u * inv_w.dx) * w, (planes[1].dx - v * inv_w.dx) * w};
+    const glm::vec2 dy{(planes[0].dy - u * inv_w.dy) * w, (planes[1].dy - v * inv_w.dy) * w};
+    const glm::vec4 texel = sample_map_at(map, {u, v}, dx, dy);
+    for (int c = 0; c < 4; ++c) batch.rgba[c][j] = texel[c];
+  }
+}
+
+}  // namespace facet::shading
+#endif  // HWY_ONCE

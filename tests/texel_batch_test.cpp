@@ -1,0 +1,132 @@
+// The SIMD batch sampler (shading/texel_batch.cpp) gives sample_map's bits on every SIMD target,
+// for every filter, wrap mode, texture shape and transform; and lod_log2, which both use, is a
+// log2.
+#include <gtest/gtest.h>
+#include <hwy/targets.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <string>
+
+#include "shading/lod_log2.hpp"
+#include "shading/surface.hpp"
+#include "shading/texel_batch.hpp"
+
+namespace facet::test {
+namespace {
+
+TEST(LodLog2, IsLog2WithinAMillionth) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> exponent(-140.0f, 127.0f);
+  for (int i = 0; i < 200000; ++i) {
+    const float x = std::exp2(exponent(rng));
+    if (x == 0.0f) continue;
+    const double exact = std::log2(static_cast<double>(x));
+    const double tolerance = 1e-6 * std::max(1.0, std::abs(exact));
+    ASSERT_NEAR(shading::lod_log2(x), exact, tolerance) << "x = " << x;
+  }
+  for (float x : {1.0f, 2.0f, 0.5f, 1024.0f}) EXPECT_EQ(shading::lod_log2(x), std::log2(x));
+}
+
+TEST(LodLog2, SpecialValuesAreLog2s) {
+  constexpr float kInf = std::numeric_limits<float>::infinity();
+  EXPECT_EQ(shading::lod_log2(0.0f), -kInf);
+  EXPECT_EQ(shading::lod_log2(kInf), kInf);
+  EXPECT_TRUE(std::isnan(shading::lod_log2(-1.0f)));
+  EXPECT_TRUE(std::isnan(shading::lod_log2(std::numeric_limits<float>::quiet_NaN())));
+  EXPECT_NEAR(shading::lod_log2(std::numeric_limits<float>::denorm_min()), -149.0, 1e-4);
+}
+
+std::shared_ptr<const Texture> random_texture(std::mt19937& rng, int width, int height) {
+  std::vector<std::uint8_t> rgba(static_cast<std::size_t>(width) * height * 4);
+  for (auto& byte : rgba) byte = static_cast<std::uint8_t>(rng());
+  return Texture::from_rgba8(width, height, std::move(rgba), true);
+}
+
+// A batch of random texture coordinates (some far outside [0, 1], some not finite) with the
+// planes they came from.
+struct Case {
+  shading::TexelBatch batch;
+  pipeline::Plane planes[2];
+  pipeline::Plane inv_w;
+};
+Case random_case(std::mt19937& rng, int count) {
+  std::uniform_real_distribution<float> coordinate(-3.0f, 3.0f), slope(-0.05f, 0.05f),
+      depth(0.2f, 60.0f);
+  Case c;
+  c.batch.count = count;
+  for (int j = 0; j < count; ++j) {
+    c.batch.u[j] = coordinate(rng);
+    c.batch.v[j] = coordinate(rng);
+    c.batch.w[j] = depth(rng);
+  }
+  if (count > 2) {
+    c.batch.u[0] = std::numeric_limits<float>::quiet_NaN();
+    c.batch.v[1] = 1e30f;
+  }
+  for (pipeline::Plane* p : {&c.planes[0], &c.planes[1], &c.inv_w}) {
+    p->dx = slope(rng);
+    p->dy = slope(rng);
+  }
+  c.inv_w.dx *= 0.01f;
+  c.inv_w.dy *= 0.01f;
+  return c;
+}
+
+// What sample_map gives for pixel j of the batch (its derivatives as Fragment computes them).
+glm::vec4 scalar_sample(const TextureMap& map, const Case& c, int j) {
+  shading::Fragment f;
+  f.v[0] = c.batch.u[j];
+  f.v[1] = c.batch.v[j];
+  f.w = c.batch.w[j];
+  f.planes = c.planes;
+  f.inv_w = &c.inv_w;
+  return shading::sample_map(map, f, 0);
+}
+
+TEST(TexelBatch, GivesSampleMapsBitsOnEveryTarget) {
+  const std::vector<std::int64_t> targets = hwy::SupportedAndGeneratedTargets();
+  ASSERT_GE(targets.size(), 2u);
+  std::mt19937 rng(20261122);
+  const std::shared_ptr<const Texture> textures[] = {
+      random_texture(rng, 64, 32), random_texture(rng, 24, 40), random_texture(rng, 1, 1),
+      Texture::from_rgba32f(8, 8, std::vector<float>(8 * 8 * 4, 0.25f))};
+  const glm::mat3 transforms[] = {glm::mat3(1.0f),
+                                  glm::mat3(2.0f, 0.5f, 0.0f, -0.25f, 3.0f, 0.0f, 0.1f, 0.7f, 1.0f)};
+  int compared = 0;
+  for (std::int64_t target : targets) {
+    hwy::SetSupportedTargetsForTest(target);
+    for (const auto& texture : textures) {
+      for (Filter filter : {Filter::nearest, Filter::bilinear, Filter::trilinear}) {
+        for (Wrap wrap_u : {Wrap::repeat, Wrap::clamp_to_edge, Wrap::mirrored_repeat}) {
+          for (Wrap wrap_v : {Wrap::repeat, Wrap::clamp_to_edge, Wrap::mirrored_repeat}) {
+            for (const glm::mat3& transform : transforms) {
+              TextureMap map{texture, Sampler{filter, wrap_u, wrap_v}, transform};
+              Case c = random_case(rng, 1 + static_cast<int>(rng() % shading::kTexelBatch));
+              shading::sample_batch(map, c.planes, c.inv_w, c.batch);
+              for (int j = 0; j < c.batch.count; ++j) {
+                const glm::vec4 expected = scalar_sample(map, c, j);
+                const glm::vec4 got{c.batch.rgba[0][j], c.batch.rgba[1][j], c.batch.rgba[2][j],
+                                    c.batch.rgba[3][j]};
+                ASSERT_EQ(std::memcmp(&expected, &got, sizeof got), 0)
+                    << hwy::TargetName(target) << ", " << texture->width() << "x"
+                    << texture->height() << ", filter " << static_cast<int>(filter)
+                    << ", wrap " << static_cast<int>(wrap_u) << "/" << static_cast<int>(wrap_v)
+                    << ", pixel " << j << " at (" << c.batch.u[j] << ", " << c.batch.v[j]
+                    << ")";
+                ++compared;
+              }
+            }
+          }
+        }
+      }
+    }
+  }
+  hwy::SetSupportedTargetsForTest(0);
+  EXPECT_GT(compared, 1000);
+}
+
+}  // namespace
+}  // namespace facet::test

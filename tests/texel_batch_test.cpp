@@ -1,6 +1,8 @@
 // The SIMD batch sampler (shading/texel_batch.cpp) gives sample_map's bits on every SIMD target,
 // for every filter, wrap mode, texture shape and transform; and lod_log2, which both use, is a
 // log2.
+#include "shading/texel_batch.hpp"
+
 #include <gtest/gtest.h>
 #include <hwy/targets.h>
 
@@ -12,7 +14,6 @@
 
 #include "shading/lod_log2.hpp"
 #include "shading/surface.hpp"
-#include "shading/texel_batch.hpp"
 
 namespace facet::test {
 namespace {
@@ -93,8 +94,8 @@ TEST(TexelBatch, GivesSampleMapsBitsOnEveryTarget) {
   const std::shared_ptr<const Texture> textures[] = {
       random_texture(rng, 64, 32), random_texture(rng, 24, 40), random_texture(rng, 1, 1),
       Texture::from_rgba32f(8, 8, std::vector<float>(8 * 8 * 4, 0.25f))};
-  const glm::mat3 transforms[] = {glm::mat3(1.0f),
-                                  glm::mat3(2.0f, 0.5f, 0.0f, -0.25f, 3.0f, 0.0f, 0.1f, 0.7f, 1.0f)};
+  const glm::mat3 transforms[] = {
+      glm::mat3(1.0f), glm::mat3(2.0f, 0.5f, 0.0f, -0.25f, 3.0f, 0.0f, 0.1f, 0.7f, 1.0f)};
   int compared = 0;
   for (std::int64_t target : targets) {
     hwy::SetSupportedTargetsForTest(target);
@@ -108,14 +109,13 @@ TEST(TexelBatch, GivesSampleMapsBitsOnEveryTarget) {
               shading::sample_batch(map, c.planes, c.inv_w, c.batch);
               for (int j = 0; j < c.batch.count; ++j) {
                 const glm::vec4 expected = scalar_sample(map, c, j);
-                const glm::vec4 got{c.batch.rgba[0][j], c.batch.rgba[1][j], c.batch.rgba[2][j],
-                                    c.batch.rgba[3][j]};
+                const float* texel = c.batch.rgba[j];
+                const glm::vec4 got{texel[0], texel[1], texel[2], texel[3]};
                 ASSERT_EQ(std::memcmp(&expected, &got, sizeof got), 0)
                     << hwy::TargetName(target) << ", " << texture->width() << "x"
-                    << texture->height() << ", filter " << static_cast<int>(filter)
-                    << ", wrap " << static_cast<int>(wrap_u) << "/" << static_cast<int>(wrap_v)
-                    << ", pixel " << j << " at (" << c.batch.u[j] << ", " << c.batch.v[j]
-                    << ")";
+                    << texture->height() << ", filter " << static_cast<int>(filter) << ", wrap "
+                    << static_cast<int>(wrap_u) << "/" << static_cast<int>(wrap_v) << ", pixel "
+                    << j << " at (" << c.batch.u[j] << ", " << c.batch.v[j] << ")";
                 ++compared;
               }
             }

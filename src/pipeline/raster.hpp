@@ -198,8 +198,8 @@ class PixelWriter {
     if constexpr (kTexcoordSlot >= 0) {
       if (base_map_) {
         const int n = next_texel_++;
-        fragment.base_texel = {texels_.rgba[0][n], texels_.rgba[1][n], texels_.rgba[2][n],
-                               texels_.rgba[3][n]};
+        const float* texel = texels_.rgba[n];
+        fragment.base_texel = {texel[0], texel[1], texel[2], texel[3]};
         fragment.base_texel_ready = true;
       }
     }

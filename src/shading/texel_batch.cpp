@@ -11,6 +11,7 @@
 #include <hwy/foreach_target.h>  // must come before highway.h
 #include <hwy/highway.h>
 
+#include <cstring>
 #include <limits>
 
 #include "facet/texture.hpp"
@@ -23,7 +24,8 @@ namespace hn = hwy::HWY_NAMESPACE;
 
 // Eight lanes at most: batches are often a few pixels of a small triangle, where AVX-512's
 // sixteen lanes mostly compute padding (islands was 5 % faster with eight, overdraw the same).
-using FloatTag = hn::CappedTag<float, 8>;
+constexpr int kMaxLanes = 8;
+using FloatTag = hn::CappedTag<float, kMaxLanes>;
 using IntTag = hn::RebindToSigned<FloatTag>;
 using FloatV = hn::Vec<FloatTag>;
 using IntV = hn::Vec<IntTag>;
@@ -118,38 +120,26 @@ struct Source {
   Wrap wrap_u, wrap_v;
 };
 
-struct Rgba {
-  FloatV c[4];
-};
-
-// Linear RGBA of texel (x, row) of the levels whose first float is at offset (per lane).
-HWY_INLINE Rgba Fetch(const Source& src, IntV offset, IntV width, IntV x, IntV row) {
-  const FloatTag df;
-  const IntTag di;
-  const IntV index = hn::Add(offset, hn::ShiftLeft<2>(hn::Add(hn::Mul(row, width), x)));
-  Rgba t;
-  for (int c = 0; c < 4; ++c) {
-    t.c[c] = hn::GatherIndex(df, src.texels, hn::Add(index, hn::Set(di, c)));
-  }
-  return t;
-}
-
-// a * (1 - f) + b * f per channel, as the Texel arithmetic of texture.cpp.
-HWY_INLINE Rgba Lerp(const Rgba& a, const Rgba& b, FloatV f) {
-  const FloatV g = hn::Sub(hn::Set(FloatTag(), 1.0f), f);
-  Rgba r;
-  for (int c = 0; c < 4; ++c) r.c[c] = hn::Add(hn::Mul(a.c[c], g), hn::Mul(b.c[c], f));
-  return r;
-}
-
 // Level sizes: each side halved per level, at least 1 (as texture.cpp builds them).
 HWY_INLINE IntV LevelSize(int base, IntV level) {
   const IntTag di;
   return hn::Max(hn::Shr(hn::Set(di, base), level), hn::Set(di, 1));
 }
 
-// sample_bilinear() of texture.cpp at each lane's level.
-HWY_INLINE Rgba Bilinear(const Source& src, IntV level, FloatV u, FloatV v) {
+// Where each lane's texels are: the float offsets of the bilinear footprint's four texels
+// (x0 r0, x1 r0, x0 r1, x1 r1) and the blend weights along x (a) and y (b).
+struct Footprint {
+  IntV texel[4];
+  FloatV a, b;
+};
+
+// Offset of texel (x, row) in the levels, whose level starts at offset (per lane).
+HWY_INLINE IntV TexelOffset(IntV level_offset, IntV width, IntV x, IntV row) {
+  return hn::Add(level_offset, hn::ShiftLeft<2>(hn::Add(hn::Mul(row, width), x)));
+}
+
+// sample_bilinear() of texture.cpp at each lane's level, up to the texel fetches.
+HWY_INLINE Footprint Bilinear(const Source& src, IntV level, FloatV u, FloatV v) {
   const FloatTag df;
   const IntTag di;
   const IntV w = LevelSize(src.width, level), h = LevelSize(src.height, level);
@@ -157,27 +147,64 @@ HWY_INLINE Rgba Bilinear(const Source& src, IntV level, FloatV u, FloatV v) {
   const FloatV x = Sanitize(hn::Sub(hn::Mul(u, hn::ConvertTo(df, w)), half));
   const FloatV y = Sanitize(hn::Sub(hn::Mul(v, hn::ConvertTo(df, h)), half));
   const IntV i0 = FloorToInt(x), j0 = FloorToInt(y);
-  const FloatV a = hn::Sub(x, hn::ConvertTo(df, i0)), b = hn::Sub(y, hn::ConvertTo(df, j0));
+  Footprint fp;
+  fp.a = hn::Sub(x, hn::ConvertTo(df, i0));
+  fp.b = hn::Sub(y, hn::ConvertTo(df, j0));
   const Pair xs = WrapPair(src.wrap_u, i0, w), ys = WrapPair(src.wrap_v, j0, h);
   const IntV last_row = hn::Sub(h, hn::Set(di, 1));
   const IntV r0 = hn::Sub(last_row, ys.first), r1 = hn::Sub(last_row, ys.second);
   const IntV offset = hn::GatherIndex(di, src.offsets, level);
-  const Rgba bottom =
-      Lerp(Fetch(src, offset, w, xs.first, r0), Fetch(src, offset, w, xs.second, r0), a);
-  const Rgba top =
-      Lerp(Fetch(src, offset, w, xs.first, r1), Fetch(src, offset, w, xs.second, r1), a);
-  return Lerp(bottom, top, b);
+  fp.texel[0] = TexelOffset(offset, w, xs.first, r0);
+  fp.texel[1] = TexelOffset(offset, w, xs.second, r0);
+  fp.texel[2] = TexelOffset(offset, w, xs.first, r1);
+  fp.texel[3] = TexelOffset(offset, w, xs.second, r1);
+  return fp;
 }
 
-// sample_nearest() of texture.cpp (base level).
-HWY_INLINE Rgba Nearest(const Source& src, FloatV u, FloatV v) {
+// One vector of lanes' footprints, stored for the per-pixel blend.
+struct StoredFootprint {
+  alignas(32) std::int32_t texel[4][kMaxLanes];
+  alignas(32) float a[kMaxLanes], b[kMaxLanes];
+  void store(const Footprint& fp) {
+    const FloatTag df;
+    const IntTag di;
+    for (int t = 0; t < 4; ++t) hn::Store(fp.texel[t], di, texel[t]);
+    hn::Store(fp.a, df, a);
+    hn::Store(fp.b, df, b);
+  }
+};
+
+// One texel, one lane per channel: GCC's vector extension as in texture.cpp (SSE on x86, on
+// every target, including Highway's SCALAR which has no four-lane vectors).
+using Texel = float __attribute__((vector_size(16)));
+
+HWY_INLINE Texel LoadTexel(const float* p) {
+  Texel t;
+  std::memcpy(&t, p, sizeof t);
+  return t;
+}
+
+// a * (1 - f) + b * f per channel, as the Texel arithmetic of texture.cpp.
+HWY_INLINE Texel Lerp(Texel a, Texel b, float f) { return a * (1.0f - f) + b * f; }
+
+// The bilinear blend of lane k's footprint (sample_bilinear()'s last three lines).
+HWY_INLINE Texel Blend(const float* texels, const StoredFootprint& fp, int k) {
+  const Texel bottom =
+      Lerp(LoadTexel(texels + fp.texel[0][k]), LoadTexel(texels + fp.texel[1][k]), fp.a[k]);
+  const Texel top =
+      Lerp(LoadTexel(texels + fp.texel[2][k]), LoadTexel(texels + fp.texel[3][k]), fp.a[k]);
+  return Lerp(bottom, top, fp.b[k]);
+}
+
+// sample_nearest() of texture.cpp (base level): the texel's offset.
+HWY_INLINE IntV Nearest(const Source& src, FloatV u, FloatV v) {
   const FloatTag df;
   const IntTag di;
   const IntV w = hn::Set(di, src.width), h = hn::Set(di, src.height);
   const IntV i = FloorToInt(Sanitize(hn::Mul(u, hn::ConvertTo(df, w))));
   const IntV j = FloorToInt(Sanitize(hn::Mul(v, hn::ConvertTo(df, h))));
   const IntV row = hn::Sub(hn::Sub(h, hn::Set(di, 1)), WrapOne(src.wrap_v, j, h));
-  return Fetch(src, hn::Zero(di), w, WrapOne(src.wrap_u, i, w), row);
+  return TexelOffset(hn::Zero(di), w, WrapOne(src.wrap_u, i, w), row);
 }
 
 // Fragment::ddx/ddy of a varying whose value is `value`: (V_x - value * W_x) * w.
@@ -234,26 +261,42 @@ void SampleBatch(const TextureMap& map, const pipeline::Plane* planes, const pip
     const FloatV vt =
         hn::Add(hn::Add(hn::Mul(hn::Set(df, m[0][1]), u), hn::Mul(hn::Set(df, m[1][1]), v)),
                 hn::Set(df, m[2][1]));
-    Rgba texel;
+    const int active = std::min(lanes, batch.count - j);
+    float* out = batch.rgba[j];
     if (filter == Filter::nearest) {
-      texel = Nearest(src, ut, vt);
-    } else if (filter == Filter::bilinear) {
-      texel = Bilinear(src, hn::Zero(di), ut, vt);
+      alignas(32) std::int32_t texel[kMaxLanes];
+      hn::Store(Nearest(src, ut, vt), di, texel);
+      for (int k = 0; k < active; ++k) {
+        std::memcpy(out + 4 * k, src.texels + texel[k], 4 * sizeof(float));
+      }
+      continue;
+    }
+    StoredFootprint near, far;
+    alignas(32) float fraction[kMaxLanes];
+    bool blends = false;
+    if (filter == Filter::bilinear) {
+      near.store(Bilinear(src, hn::Zero(di), ut, vt));
     } else {
       const FloatV lod = LevelOfDetail(texture, m, planes, inv_w, u, v, hn::Load(df, batch.w + j));
       // sample_levels(): clamp to the chain, blend the two nearest levels.
       const FloatV l = hn::IfThenElse(hn::Gt(lod, hn::Zero(df)), StdMin(lod, top), hn::Zero(df));
       const IntV l0 = hn::ConvertTo(di, l);
       const FloatV f = hn::Sub(l, hn::ConvertTo(df, l0));
-      texel = Bilinear(src, l0, ut, vt);
-      const auto blend = hn::Gt(f, hn::Zero(df));
-      if (!hn::AllFalse(df, blend)) {
+      near.store(Bilinear(src, l0, ut, vt));
+      hn::Store(f, df, fraction);
+      blends = !hn::AllFalse(df, hn::Gt(f, hn::Zero(df)));
+      if (blends) {
         const IntV l1 = hn::Min(hn::Add(l0, hn::Set(di, 1)), hn::ConvertTo(di, top));
-        const Rgba mixed = Lerp(texel, Bilinear(src, l1, ut, vt), f);
-        for (int c = 0; c < 4; ++c) texel.c[c] = hn::IfThenElse(blend, mixed.c[c], texel.c[c]);
+        far.store(Bilinear(src, l1, ut, vt));
       }
     }
-    for (int c = 0; c < 4; ++c) hn::Store(texel.c[c], df, batch.rgba[c] + j);
+    for (int k = 0; k < active; ++k) {
+      Texel texel = Blend(src.texels, near, k);
+      if (blends && fraction[k] > 0.0f) {
+        texel = Lerp(texel, Blend(src.texels, far, k), fraction[k]);
+      }
+      std::memcpy(out + 4 * k, &texel, sizeof texel);
+    }
   }
 }
 
@@ -297,7 +340,7 @@ void sample_batch(const TextureMap& map, const pipeline::Plane* planes,
     const glm::vec2 dx{(planes[0].dx - u * inv_w.dx) * w, (planes[1].dx - v * inv_w.dx) * w};
     const glm::vec2 dy{(planes[0].dy - u * inv_w.dy) * w, (planes[1].dy - v * inv_w.dy) * w};
     const glm::vec4 texel = sample_map_at(map, {u, v}, dx, dy);
-    for (int c = 0; c < 4; ++c) batch.rgba[c][j] = texel[c];
+    for (int c = 0; c < 4; ++c) batch.rgba[j][c] = texel[c];
   }
 }
 

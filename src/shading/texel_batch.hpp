@@ -21,7 +21,7 @@ struct TexelBatch {
   alignas(64) float v[kTexelBatch];
   alignas(64) float w[kTexelBatch];
   // Out: linear RGBA of each pixel's texel.
-  alignas(64) float rgba[4][kTexelBatch];
+  alignas(64) float rgba[kTexelBatch][4];
 };
 
 // Samples map at every pixel of the batch. planes: the triangle's u/w and v/w planes (two in a

@@ -10,25 +10,14 @@
 
 #include "pipeline/block_raster.hpp"
 #include "pipeline/reference.hpp"
+#include "support/forced_target.hpp"
 #include "support/random_soup.hpp"
 #include "support/render_helpers.hpp"
 
 namespace facet::test {
 namespace {
 
-// Forces one target for the scope's lifetime, then gives the choice back to the CPU.
-class ForcedTarget {
- public:
-  explicit ForcedTarget(std::int64_t target) { hwy::SetSupportedTargetsForTest(target); }
-  ~ForcedTarget() { hwy::SetSupportedTargetsForTest(0); }
-  ForcedTarget(const ForcedTarget&) = delete;
-  ForcedTarget& operator=(const ForcedTarget&) = delete;
-};
-
-std::vector<std::int64_t> targets() {
-  std::vector<std::int64_t> all = hwy::SupportedAndGeneratedTargets();
-  return all;
-}
+std::vector<std::int64_t> targets() { return simd_targets(); }
 
 // At a size with partial tiles and partial 8x8 blocks.
 Framebuffer render_odd_size(ShadingModel model) { return render_shapes(model, 203, 117); }

@@ -14,6 +14,7 @@
 
 #include "shading/lod_log2.hpp"
 #include "shading/surface.hpp"
+#include "support/forced_target.hpp"
 
 namespace facet::test {
 namespace {
@@ -49,6 +50,7 @@ std::shared_ptr<const Texture> random_texture(std::mt19937& rng, int width, int 
 // A batch of random texture coordinates (some far outside [0, 1], some not finite) with the
 // planes they came from.
 struct Case {
+  float u[shading::kTexelBatch] = {}, v[shading::kTexelBatch] = {}, w[shading::kTexelBatch] = {};
   shading::TexelBatch batch;
   pipeline::Plane planes[2];
   pipeline::Plane inv_w;
@@ -59,13 +61,13 @@ Case random_case(std::mt19937& rng, int count) {
   Case c;
   c.batch.count = count;
   for (int j = 0; j < count; ++j) {
-    c.batch.u[j] = coordinate(rng);
-    c.batch.v[j] = coordinate(rng);
-    c.batch.w[j] = depth(rng);
+    c.u[j] = coordinate(rng);
+    c.v[j] = coordinate(rng);
+    c.w[j] = depth(rng);
   }
   if (count > 2) {
-    c.batch.u[0] = std::numeric_limits<float>::quiet_NaN();
-    c.batch.v[1] = 1e30f;
+    c.u[0] = std::numeric_limits<float>::quiet_NaN();
+    c.v[1] = 1e30f;
   }
   for (pipeline::Plane* p : {&c.planes[0], &c.planes[1], &c.inv_w}) {
     p->dx = slope(rng);
@@ -88,7 +90,7 @@ glm::vec4 scalar_sample(const TextureMap& map, const Case& c, int j) {
 }
 
 TEST(TexelBatch, GivesSampleMapsBitsOnEveryTarget) {
-  const std::vector<std::int64_t> targets = hwy::SupportedAndGeneratedTargets();
+  const std::vector<std::int64_t> targets = simd_targets();
   ASSERT_GE(targets.size(), 2u);
   std::mt19937 rng(20261122);
   const std::shared_ptr<const Texture> textures[] = {
@@ -98,7 +100,7 @@ TEST(TexelBatch, GivesSampleMapsBitsOnEveryTarget) {
       glm::mat3(1.0f), glm::mat3(2.0f, 0.5f, 0.0f, -0.25f, 3.0f, 0.0f, 0.1f, 0.7f, 1.0f)};
   int compared = 0;
   for (std::int64_t target : targets) {
-    hwy::SetSupportedTargetsForTest(target);
+    ForcedTarget forced(target);
     for (const auto& texture : textures) {
       for (Filter filter : {Filter::nearest, Filter::bilinear, Filter::trilinear}) {
         for (Wrap wrap_u : {Wrap::repeat, Wrap::clamp_to_edge, Wrap::mirrored_repeat}) {
@@ -106,6 +108,9 @@ TEST(TexelBatch, GivesSampleMapsBitsOnEveryTarget) {
             for (const glm::mat3& transform : transforms) {
               TextureMap map{texture, Sampler{filter, wrap_u, wrap_v}, transform};
               Case c = random_case(rng, 1 + static_cast<int>(rng() % shading::kTexelBatch));
+              c.batch.u = c.u;  // (set here: a copy of the Case would point into the old one)
+              c.batch.v = c.v;
+              c.batch.w = c.w;
               shading::sample_batch(map, c.planes, c.inv_w, c.batch);
               for (int j = 0; j < c.batch.count; ++j) {
                 const glm::vec4 expected = scalar_sample(map, c, j);
@@ -124,7 +129,6 @@ TEST(TexelBatch, GivesSampleMapsBitsOnEveryTarget) {
       }
     }
   }
-  hwy::SetSupportedTargetsForTest(0);
   EXPECT_GT(compared, 1000);
 }
 

@@ -19,6 +19,7 @@
 #include "pipeline/setup.hpp"
 #include "shading/fog.hpp"
 #include "shading/fragment.hpp"
+#include "shading/shade_batch.hpp"
 #include "shading/texel_batch.hpp"
 
 namespace facet::pipeline {
@@ -70,6 +71,35 @@ constexpr int base_color_texcoord() {
   if constexpr (requires { Shading::kBaseColorTexcoord; }) return Shading::kBaseColorTexcoord;
   return -1;
 }
+
+// Models with kBatchModel are shaded a batch of pixels at a time with SIMD when the draw
+// allows (shading/shade_batch.hpp).
+template <class Shading>
+constexpr bool batch_shaded() {
+  return requires { Shading::kBatchModel; };
+}
+
+// Covered pixels of one triangle that passed the depth test, packed, waiting to be shaded: a
+// block's or a small triangle's worth at most.
+struct PackedPixels {
+  static constexpr int kCapacity = kBlockPixels;
+  int count = 0;
+  std::int16_t x[kCapacity], y[kCapacity];
+  alignas(64) float z[kCapacity];
+  alignas(64) float w[kCapacity];
+  alignas(64) float v[kMaxVaryings][kCapacity];
+
+  // Zeroes the entries from count up to the next multiple of 8, which the SIMD batch code
+  // reads (and ignores).
+  void pad(int varyings) {
+    for (int n = count; n % 8 != 0; ++n) {
+      z[n] = w[n] = 0.0f;
+      for (int k = 0; k < varyings; ++k) v[k][n] = 0.0f;
+    }
+  }
+};
+static_assert(PackedPixels::kCapacity == shading::kTexelBatch &&
+              PackedPixels::kCapacity == shading::kShadeBatch);
 
 // 1 / |(a, b)| of each edge, in pixels: E_i times it is the distance to edge i in pixels (E is
 // in fixed-point units, hence the sub-pixel scale). Only the wire overlay view needs them, so
@@ -175,39 +205,66 @@ class PixelWriter {
     if constexpr (kTexcoordSlot >= 0) {
       if (uniforms_.material->base_color_map) base_map_ = &uniforms_.material->base_color_map;
     }
+    if constexpr (batch_shaded<Shading>()) batch_ = shading::batch_shades(uniforms_);
   }
 
-  // Sampling ahead: the raster loop queues the texture coordinate of every pixel it will
-  // write, calls sample_queued(), then writes those pixels in the same order.
-  bool samples_ahead() const { return base_map_ != nullptr; }
-  static constexpr int kTexcoordSlot = base_color_texcoord<Shading>();  // -1: never
-  void queue(float u, float v, float w) {
-    texels_.u[texels_.count] = u;
-    texels_.v[texels_.count] = v;
-    texels_.w[texels_.count++] = w;
-  }
-  void sample_queued() {
-    shading::sample_batch(*base_map_, fragment.planes + kTexcoordSlot, t_.inv_w, texels_);
-    texels_.count = 0;
-    next_texel_ = 0;
-  }
-
-  // Shades `fragment` (w and varyings filled in by the caller) for pixel (x, y) of the frame,
-  // index `pixel` in the tile buffers, at depth z. False if the alpha test discarded it.
-  bool write(int x, int y, std::ptrdiff_t pixel, float z) {
+  // Shades the packed pixels and writes them; returns how many were written (the alpha test
+  // may discard some). The base color map is sampled for all of them at once, and models
+  // with a batch form are shaded all at once, both with SIMD.
+  int shade(PackedPixels& pixels) {
+    if (pixels.count == 0) return 0;
+    const float(*texels)[4] = nullptr;
     if constexpr (kTexcoordSlot >= 0) {
       if (base_map_) {
-        const int n = next_texel_++;
-        const float* texel = texels_.rgba[n];
-        fragment.base_texel = {texel[0], texel[1], texel[2], texel[3]};
-        fragment.base_texel_ready = true;
+        pixels.pad(Shading::kVaryings);
+        texels_.count = pixels.count;
+        texels_.u = pixels.v[kTexcoordSlot];
+        texels_.v = pixels.v[kTexcoordSlot + 1];
+        texels_.w = pixels.w;
+        shading::sample_batch(*base_map_, fragment.planes + kTexcoordSlot, t_.inv_w, texels_);
+        texels = texels_.rgba;
       }
     }
-    return store(x, y, pixel, z, Shading::fragment(fragment, uniforms_));
+    int written = 0;
+    if constexpr (batch_shaded<Shading>()) {
+      if (batch_) {
+        pixels.pad(Shading::kVaryings);
+        alignas(64) float colors[PackedPixels::kCapacity][4];
+        shading::shade_batch(Shading::kBatchModel, uniforms_,
+                             {pixels.count, pixels.w, pixels.v, texels}, colors);
+        for (int n = 0; n < pixels.count; ++n) {
+          const float* c = colors[n];
+          written += store(pixels.x[n], pixels.y[n], pixels.z[n], pixels.w[n],
+                           glm::vec4(c[0], c[1], c[2], c[3]));
+        }
+        return written;
+      }
+    }
+    for (int n = 0; n < pixels.count; ++n) {
+      fragment.w = pixels.w[n];
+      for (int k = 0; k < Shading::kVaryings; ++k) fragment.v[k] = pixels.v[k][n];
+      if (texels != nullptr) {
+        fragment.base_texel = {texels[n][0], texels[n][1], texels[n][2], texels[n][3]};
+        fragment.base_texel_ready = true;
+      }
+      written += write(pixels.x[n], pixels.y[n], pixels.z[n]);
+    }
+    return written;
   }
 
-  // Writes a shaded color with the draw's alpha test, overlay, fog and blending.
-  bool store(int x, int y, std::ptrdiff_t pixel, float z, glm::vec4 color) {
+  // Whether shade() does anything in batches; if not, raster loops may skip packing and call
+  // write() per pixel.
+  bool batches() const { return base_map_ != nullptr || batch_; }
+
+  // Shades `fragment` (w and varyings filled in by the caller) for pixel (x, y) of the frame
+  // at depth z and writes it. False if the alpha test discarded it.
+  bool write(int x, int y, float z) {
+    return store(x, y, z, fragment.w, Shading::fragment(fragment, uniforms_));
+  }
+
+  // Writes the shaded color of pixel (x, y) of the frame, at depth z and clip w, with the
+  // draw's alpha test, overlay, fog and blending.
+  bool store(int x, int y, float z, float w, glm::vec4 color) {
     if constexpr (kAlpha == AlphaMode::mask) {
       if (!(color.a >= alpha_cutoff_)) return false;  // cut-out: no color, no depth
     }
@@ -216,7 +273,9 @@ class PixelWriter {
         color = uniforms_.wire_color;
       }
     }
-    color = shading::apply_fog(color, fragment.w, fog_);
+    color = shading::apply_fog(color, w, fog_);
+    const std::ptrdiff_t pixel =
+        static_cast<std::ptrdiff_t>(y - tile_.y0) * tile_.stride + (x - tile_.x0);
     blend_into<Shading, kAlpha>(tile_.color[pixel], color);
     if constexpr (kDepthWrite) tile_.depth[pixel] = z;
     ++shaded;
@@ -227,6 +286,7 @@ class PixelWriter {
   std::uint64_t shaded = 0;
 
  private:
+  static constexpr int kTexcoordSlot = base_color_texcoord<Shading>();  // -1: none
   TileContext& tile_;
   const SetupTriangle& t_;
   const shading::DrawUniforms& uniforms_;
@@ -236,23 +296,14 @@ class PixelWriter {
   [[no_unique_address]] std::conditional_t<edge_overlay<Shading>(), EdgeScales, std::monostate>
       edge_scales_;
   const TextureMap* base_map_ = nullptr;  // the map sampled ahead, if any
+  bool batch_ = false;                    // shade() uses shade_batch
   shading::TexelBatch texels_;
-  int next_texel_ = 0;
 };
 
 // Triangles whose bounding box in the tile is at most this many pixels skip the block
 // machinery: for them, one pixel at a time is cheaper than classifying and dispatching blocks
 // (measured on bunny-close and million: 16 to 256 all gain on 0, 64 at least as much as any).
 inline constexpr int kSmallTrianglePixels = 64;
-
-// Covered pixels of a small triangle that passed the depth test, packed, waiting to be shaded
-// (a bounding box of at most kSmallTrianglePixels holds them all).
-struct PackedPixels {
-  int count = 0;
-  std::int16_t x[kSmallTrianglePixels], y[kSmallTrianglePixels];
-  float z[kSmallTrianglePixels], w[kSmallTrianglePixels];
-  float v[kMaxVaryings][kSmallTrianglePixels];
-};
 
 // The scalar loop over the bounding box [x0, x1] x [y0, y1] (inclusive), for small triangles:
 // finds the pixels, then shades them. Same arithmetic as cover_block, so the same pixels get
@@ -262,6 +313,7 @@ void raster_small_triangle(TileContext& tile, const SetupTriangle& t, int x0, in
                            int y1, PixelWriter<Shading, kAlpha>& out) {
   constexpr int kVaryings = Shading::kVaryings;
   const Plane* planes = out.fragment.planes;
+  static_assert(kSmallTrianglePixels <= PackedPixels::kCapacity);
   PackedPixels found;
   for (int y = y0; y <= y1; ++y) {
     const std::int64_t cy = pixel_centre(y), cx = pixel_centre(x0);
@@ -293,21 +345,7 @@ void raster_small_triangle(TileContext& tile, const SetupTriangle& t, int x0, in
       }
     }
   }
-  if constexpr (constexpr int kSlot = PixelWriter<Shading, kAlpha>::kTexcoordSlot; kSlot >= 0) {
-    if (out.samples_ahead()) {
-      for (int n = 0; n < found.count; ++n) {
-        out.queue(found.v[kSlot][n], found.v[kSlot + 1][n], found.w[n]);
-      }
-      out.sample_queued();
-    }
-  }
-  for (int n = 0; n < found.count; ++n) {
-    out.fragment.w = found.w[n];
-    for (int k = 0; k < kVaryings; ++k) out.fragment.v[k] = found.v[k][n];
-    const int x = found.x[n], y = found.y[n];
-    out.write(x, y, static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride + (x - tile.x0),
-              found.z[n]);
-  }
+  out.shade(found);
 }
 
 // Rasterizes one triangle into the tile; a template over the shading model and the alpha
@@ -318,8 +356,9 @@ void raster_small_triangle(TileContext& tile, const SetupTriangle& t, int x0, in
 //      (tile.block_max_depth, a per-block bound on the depth buffer: hierarchical depth);
 //   3. cover_block finds the covered pixels that pass the depth test, with their depth and
 //      varyings, SIMD across a block row;
-//   4. models that read a base color map have it sampled for those pixels at once (SIMD);
-//   5. those pixels are shaded one at a time and written.
+//   4. those pixels are shaded and written (PixelWriter::shade): the base color map sampled
+//      and the unlit and Lambert models evaluated for all of them at once with SIMD, other
+//      models one pixel at a time.
 template <class Shading, AlphaMode kAlpha = AlphaMode::opaque>
 void raster_triangle(TileContext& tile, const SetupTriangle& t) {
   const int x0 = std::max(t.min_x, tile.x0), x1 = std::min(t.max_x, tile.x1 - 1);
@@ -342,6 +381,7 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
   in.depth_test = kDepthTest;
   in.depth_stride = tile.stride;
   alignas(64) BlockFragments block;
+  PackedPixels pixels;
   for (int by = (y0 - tile.y0) / kBlockSize; by <= (y1 - tile.y0) / kBlockSize; ++by) {
     const int block_y = tile.y0 + by * kBlockSize;
     in.y_begin = std::max(y0, block_y) - block_y;
@@ -365,32 +405,32 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
       in.depth = tile.depth + block_offset;
       cover_block(in, block);
       if (block.mask == 0) continue;
-      if constexpr (constexpr int kSlot = PixelWriter<Shading, kAlpha>::kTexcoordSlot; kSlot >= 0) {
-        if (out.samples_ahead()) {
-          for (std::uint64_t m = block.mask; m != 0; m &= m - 1) {
-            const int i = std::countr_zero(m);
-            out.queue(block.v[kSlot][i], block.v[kSlot + 1][i], block.w[i]);
-          }
-          out.sample_queued();
+      int written = 0;
+      if (out.batches()) {
+        pixels.count = 0;
+        for (std::uint64_t m = block.mask; m != 0; m &= m - 1) {
+          const int i = std::countr_zero(m);
+          const int n = pixels.count++;
+          pixels.x[n] = static_cast<std::int16_t>(block_x + i % kBlockSize);
+          pixels.y[n] = static_cast<std::int16_t>(block_y + i / kBlockSize);
+          pixels.z[n] = block.z[i];
+          pixels.w[n] = block.w[i];
+          for (int k = 0; k < Shading::kVaryings; ++k) pixels.v[k][n] = block.v[k][i];
         }
-      }
-      std::uint64_t written = 0;
-      for (std::uint64_t m = block.mask; m != 0; m &= m - 1) {
-        const int i = std::countr_zero(m);
-        const int x = i % kBlockSize, y = i / kBlockSize;
-        out.fragment.w = block.w[i];
-        const std::ptrdiff_t pixel =
-            block_offset + static_cast<std::ptrdiff_t>(y) * tile.stride + x;
-        for (int k = 0; k < Shading::kVaryings; ++k) out.fragment.v[k] = block.v[k][i];
-        if (out.write(block_x + x, block_y + y, pixel, block.z[i])) {
-          written |= std::uint64_t{1} << i;
+        written = out.shade(pixels);
+      } else {
+        for (std::uint64_t m = block.mask; m != 0; m &= m - 1) {
+          const int i = std::countr_zero(m);
+          out.fragment.w = block.w[i];
+          for (int k = 0; k < Shading::kVaryings; ++k) out.fragment.v[k] = block.v[k][i];
+          written += out.write(block_x + i % kBlockSize, block_y + i / kBlockSize, block.z[i]);
         }
       }
       if constexpr (kTightensBound) {
         // Every pixel of the block written by this triangle: their largest depth bounds it.
         const std::uint64_t all = block_pixels_mask(std::min(kBlockSize, tile.x1 - block_x),
                                                     std::min(kBlockSize, tile.y1 - block_y));
-        if (written == all) {
+        if (block.mask == all && written == std::popcount(all)) {
           float largest = 0.0f;
           for (std::uint64_t m = all; m != 0; m &= m - 1) {
             largest = std::max(largest, block.z[std::countr_zero(m)]);

@@ -12,6 +12,8 @@
 //   kBaseColorTexcoord  optional: the slot of the texture coordinate the base color map is
 //                   read at, through base_color_texel(); the raster loop then samples the map
 //                   for a batch of pixels at once (SIMD) before calling fragment()
+//   kBatchModel     optional: the SIMD form of fragment() in shade_batch.cpp (same bits),
+//                   which the raster loop uses for the draws it covers
 // Lit models with textures are in lit_models.hpp. Per-draw options (is there a base color
 // map? which fog?) are plain branches on per-draw constants: always predicted the same way,
 // where template flags for each would multiply the raster loops.
@@ -24,6 +26,7 @@
 #include "shading/color.hpp"
 #include "shading/fragment.hpp"
 #include "shading/lighting.hpp"
+#include "shading/shade_batch.hpp"
 #include "shading/surface.hpp"
 #include "shading/uniforms.hpp"
 
@@ -55,6 +58,7 @@ struct UnlitShading {
   static constexpr int kVaryings = kUnlitVaryings;
   static constexpr int kNormalSlot = -1;
   static constexpr int kBaseColorTexcoord = kTexcoordSlot;
+  static constexpr BatchModel kBatchModel = BatchModel::unlit;
   static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
     surface_vertex<kVaryings>(in, u, out);
   }
@@ -96,6 +100,7 @@ struct LambertShading {
   static constexpr int kVaryings = kSurfaceVaryings;
   static constexpr int kNormalSlot = shading::kNormalSlot;
   static constexpr int kBaseColorTexcoord = kTexcoordSlot;
+  static constexpr BatchModel kBatchModel = BatchModel::lambert;
   static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
     surface_vertex<kVaryings>(in, u, out);
   }

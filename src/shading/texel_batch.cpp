@@ -253,7 +253,7 @@ void SampleBatch(const TextureMap& map, const pipeline::Plane* planes, const pip
   const Filter filter = map.sampler.filter;
   const FloatV top = hn::Set(df, static_cast<float>(texture.level_count() - 1));
   for (int j = 0; j < batch.count; j += lanes) {
-    const FloatV u = hn::Load(df, batch.u + j), v = hn::Load(df, batch.v + j);
+    const FloatV u = hn::LoadU(df, batch.u + j), v = hn::LoadU(df, batch.v + j);
     // transform_texcoord()
     const FloatV ut =
         hn::Add(hn::Add(hn::Mul(hn::Set(df, m[0][0]), u), hn::Mul(hn::Set(df, m[1][0]), v)),
@@ -277,7 +277,7 @@ void SampleBatch(const TextureMap& map, const pipeline::Plane* planes, const pip
     if (filter == Filter::bilinear) {
       near.store(Bilinear(src, hn::Zero(di), ut, vt));
     } else {
-      const FloatV lod = LevelOfDetail(texture, m, planes, inv_w, u, v, hn::Load(df, batch.w + j));
+      const FloatV lod = LevelOfDetail(texture, m, planes, inv_w, u, v, hn::LoadU(df, batch.w + j));
       // sample_levels(): clamp to the chain, blend the two nearest levels.
       const FloatV l = hn::IfThenElse(hn::Gt(lod, hn::Zero(df)), StdMin(lod, top), hn::Zero(df));
       const IntV l0 = hn::ConvertTo(di, l);
@@ -327,11 +327,6 @@ bool simd_samples(const TextureMap& map) {
 void sample_batch(const TextureMap& map, const pipeline::Plane* planes,
                   const pipeline::Plane& inv_w, TexelBatch& batch) {
   if (simd_samples(map)) {
-    // Zero the lanes past count in the last vector (8 lanes at most): they are computed, then
-    // ignored.
-    for (int j = batch.count; j < kTexelBatch && j % 8 != 0; ++j) {
-      batch.u[j] = batch.v[j] = batch.w[j] = 0.0f;
-    }
     HWY_DYNAMIC_DISPATCH(SampleBatch)(map, planes, inv_w, batch);
     return;
   }

@@ -16,10 +16,12 @@ inline constexpr int kTexelBatch = 64;
 
 struct TexelBatch {
   int count = 0;  // pixels in the batch
-  // In: the texture coordinate and clip w of each pixel (perspective-correct, as in Fragment).
-  alignas(64) float u[kTexelBatch];
-  alignas(64) float v[kTexelBatch];
-  alignas(64) float w[kTexelBatch];
+  // In: the texture coordinate and clip w of each pixel (perspective-correct, as in Fragment),
+  // kTexelBatch entries each; those from count up to the next multiple of 8 must be readable
+  // (they are computed, then ignored).
+  const float* u = nullptr;
+  const float* v = nullptr;
+  const float* w = nullptr;
   // Out: linear RGBA of each pixel's texel.
   alignas(64) float rgba[kTexelBatch][4];
 };

@@ -1,0 +1,144 @@
+// Batch shading of the unlit and Lambert models (see shade_batch.hpp). Highway compiles this
+// file once per SIMD target (foreach_target.h re-includes it); HWY_DYNAMIC_DISPATCH picks the
+// best the CPU has. Every step repeats models.hpp / surface.cpp with the same IEEE operations
+// in the same order (glm's dot is (x*x' + y*y') + z*z'; std::max(0, d) keeps 0 for NaN; no
+// fused multiply-add), so each target gives fragment()'s bits; shade_batch_test checks it.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "shading/shade_batch.cpp"
+#include "shading/shade_batch.hpp"
+
+#include <hwy/foreach_target.h>  // must come before highway.h
+#include <hwy/highway.h>
+
+#include <algorithm>
+#include <cstring>
+
+#include "shading/surface.hpp"
+
+HWY_BEFORE_NAMESPACE();
+namespace facet::shading::HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+// Eight lanes at most, as in texel_batch.cpp: batches are often a few pixels.
+using FloatTag = hn::CappedTag<float, 8>;
+using FloatV = hn::Vec<FloatTag>;
+
+struct Vec3V {
+  FloatV x, y, z;
+};
+
+HWY_INLINE Vec3V Load3(const float (*v)[kShadeBatch], int slot, int j) {
+  const FloatTag d;
+  return {hn::Load(d, v[slot] + j), hn::Load(d, v[slot + 1] + j), hn::Load(d, v[slot + 2] + j)};
+}
+
+// glm::dot: (x*x' + y*y') + z*z'.
+HWY_INLINE FloatV Dot(const Vec3V& a, const Vec3V& b) {
+  return hn::Add(hn::Add(hn::Mul(a.x, b.x), hn::Mul(a.y, b.y)), hn::Mul(a.z, b.z));
+}
+
+// safe_normalize(): v * (1 / sqrt(|v|^2)), or zero where |v|^2 is not positive.
+HWY_INLINE Vec3V SafeNormalize(const Vec3V& v) {
+  const FloatTag d;
+  const FloatV length_squared = Dot(v, v);
+  const auto positive = hn::Gt(length_squared, hn::Zero(d));
+  const FloatV inverse = hn::Div(hn::Set(d, 1.0f), hn::Sqrt(length_squared));
+  return {hn::IfThenElseZero(positive, hn::Mul(v.x, inverse)),
+          hn::IfThenElseZero(positive, hn::Mul(v.y, inverse)),
+          hn::IfThenElseZero(positive, hn::Mul(v.z, inverse))};
+}
+
+// The base color: material x vertex color (the color slots), times the map's texel if any.
+struct Albedo {
+  FloatV c[4];
+};
+HWY_INLINE Albedo LoadAlbedo(const ShadeInput& in, int j) {
+  const FloatTag d;
+  Albedo a;
+  for (int c = 0; c < 4; ++c) a.c[c] = hn::Load(d, in.v[kColorSlot + c] + j);
+  if (in.base_texel != nullptr) {
+    FloatV t[4];
+    hn::LoadInterleaved4(d, &in.base_texel[j][0], t[0], t[1], t[2], t[3]);
+    for (int c = 0; c < 4; ++c) a.c[c] = hn::Mul(a.c[c], t[c]);
+  }
+  return a;
+}
+
+// diffuse_light() of models.hpp for directional lights: ambient + sum of radiance x max(0, N.L).
+HWY_INLINE Vec3V DiffuseLight(const DrawUniforms& u, const Vec3V& normal) {
+  const FloatTag d;
+  Vec3V light{hn::Set(d, u.ambient.x), hn::Set(d, u.ambient.y), hn::Set(d, u.ambient.z)};
+  for (int i = 0; i < u.light_count; ++i) {
+    const LightData& l = u.lights[i];
+    const Vec3V to_light{hn::Set(d, l.to_light.x), hn::Set(d, l.to_light.y),
+                         hn::Set(d, l.to_light.z)};
+    const FloatV n_dot_l = Dot(normal, to_light);
+    const FloatV facing = hn::IfThenElse(hn::Lt(hn::Zero(d), n_dot_l), n_dot_l, hn::Zero(d));
+    light.x = hn::Add(light.x, hn::Mul(hn::Set(d, l.radiance.x), facing));
+    light.y = hn::Add(light.y, hn::Mul(hn::Set(d, l.radiance.y), facing));
+    light.z = hn::Add(light.z, hn::Mul(hn::Set(d, l.radiance.z), facing));
+  }
+  return light;
+}
+
+void ShadeBatch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
+  const FloatTag d;
+  const int lanes = static_cast<int>(hn::Lanes(d));
+  const Material& m = *u.material;
+  // emission(): the emissive factor (batch_shades() leaves out emissive maps).
+  const FloatV emissive[3] = {hn::Set(d, m.emissive.x), hn::Set(d, m.emissive.y),
+                              hn::Set(d, m.emissive.z)};
+  const bool two_sided = m.cull == CullMode::none;
+  const Vec3V eye{hn::Set(d, u.eye.x), hn::Set(d, u.eye.y), hn::Set(d, u.eye.z)};
+  alignas(32) float out[4 * 8];
+  for (int j = 0; j < in.count; j += lanes) {
+    const Albedo albedo = LoadAlbedo(in, j);
+    FloatV color[4];
+    if (model == BatchModel::unlit) {
+      for (int c = 0; c < 3; ++c) color[c] = hn::Add(albedo.c[c], emissive[c]);
+      color[3] = hn::Add(albedo.c[3], hn::Zero(d));
+    } else {
+      // surface_point<false>(): view and normal, the normal facing the viewer if two-sided.
+      const Vec3V position = Load3(in.v, kPositionSlot, j);
+      const Vec3V view = SafeNormalize(
+          {hn::Sub(eye.x, position.x), hn::Sub(eye.y, position.y), hn::Sub(eye.z, position.z)});
+      Vec3V n = SafeNormalize(Load3(in.v, kNormalSlot, j));
+      if (two_sided) {
+        const auto back = hn::Lt(Dot(n, view), hn::Zero(d));
+        n = {hn::IfThenElse(back, hn::Neg(n.x), n.x), hn::IfThenElse(back, hn::Neg(n.y), n.y),
+             hn::IfThenElse(back, hn::Neg(n.z), n.z)};
+      }
+      const Vec3V light = DiffuseLight(u, n);
+      color[0] = hn::Add(hn::Mul(albedo.c[0], light.x), emissive[0]);
+      color[1] = hn::Add(hn::Mul(albedo.c[1], light.y), emissive[1]);
+      color[2] = hn::Add(hn::Mul(albedo.c[2], light.z), emissive[2]);
+      color[3] = albedo.c[3];
+    }
+    hn::StoreInterleaved4(color[0], color[1], color[2], color[3], d, out);
+    const int active = std::min(lanes, in.count - j);
+    std::memcpy(rgba[j], out, sizeof(float) * 4 * active);
+  }
+}
+
+}  // namespace facet::shading::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace facet::shading {
+
+HWY_EXPORT(ShadeBatch);
+
+bool batch_shades(const DrawUniforms& u) {
+  if (u.material->emissive != glm::vec3(0.0f) && u.material->emissive_map) return false;
+  for (int i = 0; i < u.light_count; ++i) {
+    if (u.lights[i].type != LightType::directional) return false;
+  }
+  return true;
+}
+
+void shade_batch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
+  HWY_DYNAMIC_DISPATCH(ShadeBatch)(model, u, in, rgba);
+}
+
+}  // namespace facet::shading
+#endif  // HWY_ONCE

@@ -1,0 +1,34 @@
+// The built-in unlit and Lambert models evaluated for a batch of pixels at once, with SIMD
+// (shade_batch.cpp, compiled for every target Highway supports): the raster loop
+// (pipeline/raster.hpp) packs the covered pixels of a triangle, then shades them together
+// instead of calling the model's fragment() per pixel. Same operations as UnlitShading and
+// LambertShading (models.hpp) lane by lane, so the same bits; draws the batch code does not
+// cover (point or spot lights, emissive maps) keep fragment().
+#pragma once
+
+#include "pipeline/frame.hpp"
+#include "shading/uniforms.hpp"
+
+namespace facet::shading {
+
+inline constexpr int kShadeBatch = 64;
+
+enum class BatchModel { unlit, lambert };
+
+// Packed pixels of one triangle: n-th pixel's clip w is w[n], its varying k is v[k][n]. Arrays
+// hold kShadeBatch entries; those from count up to the next multiple of 8 must be readable
+// (they are computed, then ignored).
+struct ShadeInput {
+  int count = 0;
+  const float* w = nullptr;
+  const float (*v)[kShadeBatch] = nullptr;
+  const float (*base_texel)[4] = nullptr;  // the base color map's texel per pixel, or null
+};
+
+// Whether shade_batch can shade this draw: every light directional, no emissive map.
+bool batch_shades(const DrawUniforms& u);
+
+// Linear RGBA of every pixel, as the model's fragment() gives it.
+void shade_batch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]);
+
+}  // namespace facet::shading

@@ -1,0 +1,133 @@
+// The SIMD batch forms of the unlit and Lambert models (shading/shade_batch.cpp) give their
+// fragment()'s bits on every SIMD target: one- and two-sided, with and without a base color
+// texel and emission, under zero to three directional lights; and they decline what they do
+// not cover.
+#include "shading/shade_batch.hpp"
+
+#include <gtest/gtest.h>
+#include <hwy/targets.h>
+
+#include <cstring>
+#include <random>
+
+#include "shading/models.hpp"
+#include "support/forced_target.hpp"
+
+namespace facet::test {
+namespace {
+
+using shading::kShadeBatch;
+
+struct Inputs {
+  alignas(64) float w[kShadeBatch] = {};
+  alignas(64) float v[pipeline::kMaxVaryings][kShadeBatch] = {};
+  alignas(64) float texel[kShadeBatch][4] = {};
+};
+
+void fill(std::mt19937& rng, Inputs& in) {
+  std::uniform_real_distribution<float> any(-2.0f, 2.0f), unit(0.0f, 1.0f), depth(0.2f, 50.0f);
+  for (int n = 0; n < kShadeBatch; ++n) {
+    in.w[n] = depth(rng);
+    for (int k = 0; k < pipeline::kMaxVaryings; ++k) in.v[k][n] = any(rng);
+    for (int c = 0; c < 4; ++c) in.texel[n][c] = unit(rng);
+  }
+  in.v[shading::kNormalSlot][0] = in.v[shading::kNormalSlot + 1][0] =
+      in.v[shading::kNormalSlot + 2][0] = 0.0f;  // a zero normal: safe_normalize's other side
+}
+
+struct Draw {
+  Material material;
+  Lighting lighting;
+  shading::LightData lights[3];
+  shading::DrawUniforms uniforms;
+};
+
+void randomize(std::mt19937& rng, Draw& d) {
+  std::uniform_real_distribution<float> any(-1.0f, 1.0f), unit(0.0f, 1.0f);
+  d.material.cull = rng() % 2 ? CullMode::none : CullMode::back;
+  d.material.emissive = rng() % 2 ? glm::vec3(0.0f) : glm::vec3(unit(rng), unit(rng), 0.0f);
+  d.uniforms.material = &d.material;
+  d.uniforms.lighting = &d.lighting;
+  d.uniforms.eye = {any(rng) * 5.0f, any(rng) * 5.0f, any(rng) * 5.0f};
+  d.uniforms.ambient = {unit(rng) * 0.2f, unit(rng) * 0.2f, unit(rng) * 0.2f};
+  d.uniforms.light_count = static_cast<int>(rng() % 4);
+  for (int i = 0; i < d.uniforms.light_count; ++i) {
+    d.lights[i].type = LightType::directional;
+    d.lights[i].to_light = glm::normalize(glm::vec3(any(rng), any(rng), any(rng)) + 0.01f);
+    d.lights[i].radiance = {unit(rng) * 3.0f, unit(rng) * 3.0f, unit(rng) * 3.0f};
+  }
+  d.uniforms.lights = d.lights;
+}
+
+template <class Shading>
+glm::vec4 scalar_fragment(const Inputs& in, const float (*texel)[4], int n,
+                          const shading::DrawUniforms& u) {
+  shading::Fragment f;
+  f.w = in.w[n];
+  for (int k = 0; k < pipeline::kMaxVaryings; ++k) f.v[k] = in.v[k][n];
+  if (texel != nullptr) {
+    f.base_texel = {texel[n][0], texel[n][1], texel[n][2], texel[n][3]};
+    f.base_texel_ready = true;
+  }
+  return Shading::fragment(f, u);
+}
+
+template <class Shading>
+void expect_same_bits(shading::BatchModel model) {
+  const std::vector<std::int64_t> targets = simd_targets();
+  ASSERT_GE(targets.size(), 2u);
+  std::mt19937 rng(20261122);
+  int compared = 0;
+  for (std::int64_t target : targets) {
+    ForcedTarget forced(target);
+    for (int round = 0; round < 40; ++round) {
+      Inputs in;
+      fill(rng, in);
+      Draw draw;
+      randomize(rng, draw);
+      // A texture present: the models multiply by the texel only when the material has a map.
+      const bool textured = round % 2 == 0;
+      if (textured) draw.material.base_color_map.texture = missing_texture();
+      const float(*texel)[4] = textured ? in.texel : nullptr;
+      ASSERT_TRUE(shading::batch_shades(draw.uniforms));
+      const int count = 1 + static_cast<int>(rng() % kShadeBatch);
+      alignas(64) float rgba[kShadeBatch][4];
+      shading::shade_batch(model, draw.uniforms, {count, in.w, in.v, texel}, rgba);
+      for (int n = 0; n < count; ++n) {
+        const glm::vec4 expected = scalar_fragment<Shading>(in, texel, n, draw.uniforms);
+        ASSERT_EQ(std::memcmp(&expected, rgba[n], sizeof expected), 0)
+            << hwy::TargetName(target) << ", round " << round << ", pixel " << n << ": ("
+            << rgba[n][0] << ", " << rgba[n][1] << ", " << rgba[n][2] << ", " << rgba[n][3]
+            << "), fragment() gives (" << expected.r << ", " << expected.g << ", " << expected.b
+            << ", " << expected.a << ")";
+        ++compared;
+      }
+    }
+  }
+  EXPECT_GT(compared, 1000);
+}
+
+TEST(ShadeBatch, LambertGivesFragmentsBitsOnEveryTarget) {
+  expect_same_bits<shading::LambertShading>(shading::BatchModel::lambert);
+}
+
+TEST(ShadeBatch, UnlitGivesFragmentsBitsOnEveryTarget) {
+  expect_same_bits<shading::UnlitShading>(shading::BatchModel::unlit);
+}
+
+TEST(ShadeBatch, DeclinesPointLightsAndEmissiveMaps) {
+  Draw draw;
+  std::mt19937 rng(1);
+  randomize(rng, draw);
+  draw.uniforms.light_count = 1;
+  draw.lights[0].type = LightType::point;
+  EXPECT_FALSE(shading::batch_shades(draw.uniforms));
+  draw.lights[0].type = LightType::directional;
+  EXPECT_TRUE(shading::batch_shades(draw.uniforms));
+  draw.material.emissive = glm::vec3(1.0f);
+  draw.material.emissive_map.texture = missing_texture();
+  EXPECT_FALSE(shading::batch_shades(draw.uniforms));
+}
+
+}  // namespace
+}  // namespace facet::test

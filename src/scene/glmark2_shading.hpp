@@ -166,12 +166,12 @@ inline glm::vec4 bump_light(glm::vec3 n) {
 struct BumpNormalsShading {
   static constexpr int kVaryings = 2;
   static constexpr int kNormalSlot = -1;
+  static constexpr int kBaseColorTexcoord = 0;  // sampled ahead, a batch at a time
   static void vertex(const VertexInput& in, const DrawUniforms&, float* out) {
     shading::store(out, in.texcoord);
   }
   static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
-    const TextureMap& map = u.material->base_color_map;
-    const glm::vec3 raw{map.texture->sample(map.sampler, {f.v[0], f.v[1]})};
+    const glm::vec3 raw{shading::base_color_texel(f, u, 0)};
     return bump_light(glm::normalize(u.normal_matrix * (raw * 2.0f - 1.0f)));
   }
 };

@@ -273,7 +273,7 @@ class PixelWriter {
         color = uniforms_.wire_color;
       }
     }
-    color = shading::apply_fog(color, w, fog_);
+    shading::apply_fog(color, w, fog_);
     const std::ptrdiff_t pixel =
         static_cast<std::ptrdiff_t>(y - tile_.y0) * tile_.stride + (x - tile_.x0);
     blend_into<Shading, kAlpha>(tile_.color[pixel], color);

@@ -172,7 +172,13 @@ void blend_into(glm::vec4& out, const glm::vec4& color) {
   } else if constexpr (kAlpha == AlphaMode::additive) {
     out += glm::vec4(glm::vec3(color) * color.a, 0.0f);
   } else {
-    out = color;
+    // Channel by channel: GCC assembles `color` in memory from 4- and 8-byte pieces, and a
+    // 16-byte copy reloading them stalled store forwarding (a third of the normals view's
+    // raster loop).
+    out.r = color.r;
+    out.g = color.g;
+    out.b = color.b;
+    out.a = color.a;
   }
 }
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "pipeline/sky_row.hpp"
 #include "shading/color.hpp"
 #include "shading/environment.hpp"
 
@@ -55,17 +56,20 @@ void clear_tile(TileContext& tile, const Background& background) {
 
 void fill_background(TileContext& tile, const Background& background) {
   if (!background.environment) return;
+  const Environment& environment = *background.environment;
+  const SkyView view{background.inverse_view_projection, background.eye, background.width,
+                     background.height};
   for (int y = 0; y < tile.y1 - tile.y0; ++y) {
     glm::vec4* row = tile.color + static_cast<std::ptrdiff_t>(y) * tile.stride;
     const float* depth = tile.depth + static_cast<std::ptrdiff_t>(y) * tile.stride;
+    if (!environment.image) {  // the sky gradient, a row at a time with SIMD
+      fill_sky_row(view, environment, tile.x0, tile.y0 + y, tile.x1 - tile.x0, depth, kClearDepth,
+                   row);
+      continue;
+    }
     for (int x = 0; x < tile.x1 - tile.x0; ++x) {
       if (depth[x] != kClearDepth) continue;  // drawn over
-      // The view ray through the pixel centre: unproject a point on the far plane.
-      float ndc_x = (static_cast<float>(tile.x0 + x) + 0.5f) / background.width * 2.0f - 1.0f;
-      float ndc_y = 1.0f - (static_cast<float>(tile.y0 + y) + 0.5f) / background.height * 2.0f;
-      glm::vec4 far = background.inverse_view_projection * glm::vec4(ndc_x, ndc_y, 1.0f, 1.0f);
-      glm::vec3 direction = glm::normalize(glm::vec3(far) / far.w - background.eye);
-      row[x] = glm::vec4(shading::environment_radiance(*background.environment, direction), 1.0f);
+      row[x] = glm::vec4(background_radiance(view, environment, tile.x0 + x, tile.y0 + y), 1.0f);
     }
   }
 }

@@ -77,6 +77,31 @@ void CoverBlock(const BlockInput& in, BlockFragments& out) {
   out.mask = mask;
 }
 
+void InterpolatePixels(const SetupTriangle& t, const Plane* planes, int varyings, int count,
+                       const std::int16_t* xs, const std::int16_t* ys, float* w,
+                       float (*v)[kBlockPixels]) {
+  const FloatTag df;
+  const IntTag di;
+  const hn::Rebind<std::int16_t, FloatTag> d16;
+  const int lanes = static_cast<int>(hn::Lanes(df));
+  const auto half = hn::Set(df, 0.5f);
+  for (int j = 0; j < count; j += lanes) {
+    // (p - ref) of the pixel centres, as evaluate_row / evaluate_in_row take them.
+    const auto px = hn::Add(hn::ConvertTo(df, hn::PromoteTo(di, hn::LoadU(d16, xs + j))), half);
+    const auto py = hn::Add(hn::ConvertTo(df, hn::PromoteTo(di, hn::LoadU(d16, ys + j))), half);
+    const auto relative_x = hn::Sub(px, hn::Set(df, t.ref_x));
+    const auto relative_y = hn::Sub(py, hn::Set(df, t.ref_y));
+    auto evaluate = [&](const Plane& p) HWY_ATTR {
+      const auto row = hn::Add(hn::Set(df, p.at_ref), hn::Mul(hn::Set(df, p.dy), relative_y));
+      return hn::Add(row, hn::Mul(hn::Set(df, p.dx), relative_x));
+    };
+    const auto clip_w = hn::Div(hn::Set(df, 1.0f), evaluate(t.inv_w));
+    hn::StoreU(clip_w, df, w + j);
+    for (int k = 0; k < varyings; ++k)
+      hn::StoreU(hn::Mul(evaluate(planes[k]), clip_w), df, v[k] + j);
+  }
+}
+
 const char* TargetName() { return hwy::TargetName(HWY_TARGET); }
 
 }  // namespace facet::pipeline::HWY_NAMESPACE
@@ -87,6 +112,13 @@ namespace facet::pipeline {
 
 HWY_EXPORT(CoverBlock);
 HWY_EXPORT(TargetName);
+HWY_EXPORT(InterpolatePixels);
+
+void interpolate_pixels(const SetupTriangle& t, const Plane* varying_planes, int varyings,
+                        int count, const std::int16_t* x, const std::int16_t* y, float* w,
+                        float (*v)[kBlockPixels]) {
+  HWY_DYNAMIC_DISPATCH(InterpolatePixels)(t, varying_planes, varyings, count, x, y, w, v);
+}
 
 void cover_block(const BlockInput& in, BlockFragments& out) {
   HWY_DYNAMIC_DISPATCH(CoverBlock)(in, out);

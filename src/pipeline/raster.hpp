@@ -311,14 +311,13 @@ class PixelWriter {
 // (measured on bunny-close and million: 16 to 256 all gain on 0, 64 at least as much as any).
 inline constexpr int kSmallTrianglePixels = 64;
 
-// The scalar loop over the bounding box [x0, x1] x [y0, y1] (inclusive), for small triangles:
-// finds the pixels, then shades them. Same arithmetic as cover_block, so the same pixels get
-// the same values.
+// The loop over the bounding box [x0, x1] x [y0, y1] (inclusive), for small triangles: finds
+// the covered pixels that pass the depth test one at a time, then interpolates their varyings
+// with SIMD (interpolate_pixels) and shades them. Same arithmetic as cover_block, so the same
+// pixels get the same values.
 template <class Shading, AlphaMode kAlpha>
 void raster_small_triangle(TileContext& tile, const SetupTriangle& t, int x0, int y0, int x1,
                            int y1, PixelWriter<Shading, kAlpha>& out) {
-  constexpr int kVaryings = Shading::kVaryings;
-  const Plane* planes = out.fragment.planes;
   static_assert(kSmallTrianglePixels <= PackedPixels::kCapacity);
   PackedPixels found;
   for (int y = y0; y <= y1; ++y) {
@@ -328,9 +327,6 @@ void raster_small_triangle(TileContext& tile, const SetupTriangle& t, int x0, in
       e[i] = std::int64_t{t.a[i]} * cx + std::int64_t{t.b[i]} * cy + t.c[i];
     const float py = static_cast<float>(y) + 0.5f;
     const float z_row = evaluate_row(t.z, t.ref_y, py);
-    const float inv_w_row = evaluate_row(t.inv_w, t.ref_y, py);
-    float varying_rows[kVaryings > 0 ? kVaryings : 1];
-    for (int k = 0; k < kVaryings; ++k) varying_rows[k] = evaluate_row(planes[k], t.ref_y, py);
     const std::ptrdiff_t row = static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride - tile.x0;
     for (int x = x0; x <= x1; ++x) {
       const bool outside = (e[0] | e[1] | e[2]) < 0;
@@ -345,12 +341,12 @@ void raster_small_triangle(TileContext& tile, const SetupTriangle& t, int x0, in
       found.x[n] = static_cast<std::int16_t>(x);
       found.y[n] = static_cast<std::int16_t>(y);
       found.z[n] = z;
-      found.w[n] = 1.0f / evaluate_in_row(inv_w_row, t.inv_w, t.ref_x, px);
-      for (int k = 0; k < kVaryings; ++k) {
-        found.v[k][n] = evaluate_in_row(varying_rows[k], planes[k], t.ref_x, px) * found.w[n];
-      }
     }
   }
+  if (found.count == 0) return;
+  for (int n = found.count; n % 8 != 0; ++n) found.x[n] = found.y[n] = 0;  // read, then unused
+  interpolate_pixels(t, out.fragment.planes, Shading::kVaryings, found.count, found.x, found.y,
+                     found.w, found.v);
   out.shade(found);
 }
 

@@ -1,15 +1,19 @@
 // The SIMD batch forms of the unlit and Lambert models (shading/shade_batch.cpp) give their
-// fragment()'s bits on every SIMD target: one- and two-sided, with and without a base color
-// texel and emission, under zero to three directional lights; and they decline what they do
-// not cover.
+// fragment()'s bits (then apply_fog's) on every SIMD target: one- and two-sided, with and
+// without a base color texel, emission and fog, under zero to three directional lights; and
+// they decline what they do not cover. fog_exp, which the fog uses, is an exponential.
 #include "shading/shade_batch.hpp"
 
 #include <gtest/gtest.h>
 #include <hwy/targets.h>
 
+#include <cmath>
 #include <cstring>
+#include <limits>
 #include <random>
 
+#include "shading/fog.hpp"
+#include "shading/fog_exp.hpp"
 #include "shading/models.hpp"
 #include "support/forced_target.hpp"
 
@@ -57,6 +61,20 @@ void randomize(std::mt19937& rng, Draw& d) {
     d.lights[i].radiance = {unit(rng) * 3.0f, unit(rng) * 3.0f, unit(rng) * 3.0f};
   }
   d.uniforms.lights = d.lights;
+  switch (rng() % 3) {
+    case 0:
+      d.lighting.fog.mode = FogMode::none;
+      break;
+    case 1:
+      d.lighting.fog.mode = FogMode::linear;
+      d.lighting.fog.start = unit(rng) * 10.0f;
+      d.lighting.fog.end = d.lighting.fog.start + unit(rng) * 40.0f;
+      break;
+    default:
+      d.lighting.fog.mode = FogMode::exponential;
+      d.lighting.fog.density = unit(rng) * 0.2f;
+  }
+  d.lighting.fog.color = {unit(rng), unit(rng), unit(rng)};
 }
 
 template <class Shading>
@@ -69,7 +87,9 @@ glm::vec4 scalar_fragment(const Inputs& in, const float (*texel)[4], int n,
     f.base_texel = {texel[n][0], texel[n][1], texel[n][2], texel[n][3]};
     f.base_texel_ready = true;
   }
-  return Shading::fragment(f, u);
+  glm::vec4 color = Shading::fragment(f, u);
+  shading::apply_fog(color, f.w, u.lighting->fog);
+  return color;
 }
 
 template <class Shading>
@@ -92,7 +112,8 @@ void expect_same_bits(shading::BatchModel model) {
       ASSERT_TRUE(shading::batch_shades(draw.uniforms));
       const int count = 1 + static_cast<int>(rng() % kShadeBatch);
       alignas(64) float rgba[kShadeBatch][4];
-      shading::shade_batch(model, draw.uniforms, {count, in.w, in.v, texel}, rgba);
+      shading::shade_batch(model, draw.uniforms, {count, in.w, in.v, texel, &draw.lighting.fog},
+                           rgba);
       for (int n = 0; n < count; ++n) {
         const glm::vec4 expected = scalar_fragment<Shading>(in, texel, n, draw.uniforms);
         ASSERT_EQ(std::memcmp(&expected, rgba[n], sizeof expected), 0)
@@ -113,6 +134,18 @@ TEST(ShadeBatch, LambertGivesFragmentsBitsOnEveryTarget) {
 
 TEST(ShadeBatch, UnlitGivesFragmentsBitsOnEveryTarget) {
   expect_same_bits<shading::UnlitShading>(shading::BatchModel::unlit);
+}
+
+TEST(FogExp, IsExpToFloatPrecision) {
+  for (float x = -87.0f; x <= 88.0f; x += 0.0137f) {
+    // x log2(e) rounds to float first: the error grows with |x| (2^-24 |x log2 e| ln 2).
+    const double exact = std::exp(static_cast<double>(x));
+    ASSERT_NEAR(shading::fog_exp(x), exact, (2e-7 + 1e-7 * std::abs(x)) * exact) << "x = " << x;
+  }
+  EXPECT_EQ(shading::fog_exp(0.0f), 1.0f);
+  EXPECT_EQ(shading::fog_exp(-1000.0f), 0.0f);
+  EXPECT_EQ(shading::fog_exp(1000.0f), std::numeric_limits<float>::infinity());
+  EXPECT_TRUE(std::isnan(shading::fog_exp(std::numeric_limits<float>::quiet_NaN())));
 }
 
 TEST(ShadeBatch, DeclinesPointLightsAndEmissiveMaps) {

@@ -8,6 +8,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <glm/vec4.hpp>
 #include <limits>
 #include <type_traits>
@@ -237,11 +238,11 @@ class PixelWriter {
         pixels.pad(Shading::kVaryings);
         alignas(64) float colors[PackedPixels::kCapacity][4];
         shading::shade_batch(Shading::kBatchModel, uniforms_,
-                             {pixels.count, pixels.w, pixels.v, texels}, colors);
+                             {pixels.count, pixels.w, pixels.v, texels, batch_fog()}, colors);
         for (int n = 0; n < pixels.count; ++n) {
           const float* c = colors[n];
-          written += store(pixels.x[n], pixels.y[n], pixels.z[n], pixels.w[n],
-                           glm::vec4(c[0], c[1], c[2], c[3]));
+          written += store<kBatchFogs>(pixels.x[n], pixels.y[n], pixels.z[n], pixels.w[n],
+                                       glm::vec4(c[0], c[1], c[2], c[3]));
         }
         return written;
       }
@@ -258,6 +259,43 @@ class PixelWriter {
     return written;
   }
 
+  // Whether shade_full_block() can take this draw's blocks: opaque, depth-writing, batch-
+  // shaded, no wire overlay (all known here but the draw's lights, checked at construction).
+  static constexpr bool kFullBlocks = batch_shaded<Shading>() && kAlpha == AlphaMode::opaque &&
+                                      kDepthWrite && !edge_overlay<Shading>();
+  bool full_blocks() const { return kFullBlocks && batch_; }
+
+  // A block whose 64 pixels are all covered and pass the depth test, at frame pixel
+  // (block_x, block_y): sampled, shaded and fogged with SIMD straight from cover_block's
+  // arrays, then copied into the tile a row at a time; no per-pixel step. Only when
+  // full_blocks().
+  void shade_full_block(const BlockFragments& block, int block_x, int block_y) {
+    if constexpr (kFullBlocks) {
+      const float(*texels)[4] = nullptr;
+      if constexpr (kTexcoordSlot >= 0) {
+        if (base_map_) {
+          texels_.count = kBlockPixels;
+          texels_.u = block.v[kTexcoordSlot];
+          texels_.v = block.v[kTexcoordSlot + 1];
+          texels_.w = block.w;
+          shading::sample_batch(*base_map_, fragment.planes + kTexcoordSlot, t_.inv_w, texels_);
+          texels = texels_.rgba;
+        }
+      }
+      alignas(64) float colors[kBlockPixels][4];
+      shading::shade_batch(Shading::kBatchModel, uniforms_,
+                           {kBlockPixels, block.w, block.v, texels, &fog_}, colors);
+      const std::ptrdiff_t first =
+          static_cast<std::ptrdiff_t>(block_y - tile_.y0) * tile_.stride + (block_x - tile_.x0);
+      for (int row = 0; row < kBlockSize; ++row) {
+        const std::ptrdiff_t pixel = first + static_cast<std::ptrdiff_t>(row) * tile_.stride;
+        std::memcpy(&tile_.color[pixel], colors[row * kBlockSize], sizeof(float) * 4 * kBlockSize);
+        std::memcpy(&tile_.depth[pixel], block.z + row * kBlockSize, sizeof(float) * kBlockSize);
+      }
+      shaded += kBlockPixels;
+    }
+  }
+
   // Whether shade() does anything in batches; if not, raster loops may skip packing and call
   // write() per pixel.
   bool batches() const { return base_map_ != nullptr || batch_; }
@@ -270,6 +308,8 @@ class PixelWriter {
 
   // Writes the shaded color of pixel (x, y) of the frame, at depth z and clip w, with the
   // draw's alpha test, overlay, fog and blending.
+  // kFogged: the color has had its fog already (shade_batch applies it).
+  template <bool kFogged = false>
   bool store(int x, int y, float z, float w, glm::vec4 color) {
     if constexpr (kAlpha == AlphaMode::mask) {
       if (!(color.a >= alpha_cutoff_)) return false;  // cut-out: no color, no depth
@@ -279,7 +319,7 @@ class PixelWriter {
         color = uniforms_.wire_color;
       }
     }
-    shading::apply_fog(color, w, fog_);
+    if constexpr (!kFogged) shading::apply_fog(color, w, fog_);
     const std::ptrdiff_t pixel =
         static_cast<std::ptrdiff_t>(y - tile_.y0) * tile_.stride + (x - tile_.x0);
     blend_into<Shading, kAlpha>(tile_.color[pixel], color);
@@ -293,6 +333,9 @@ class PixelWriter {
 
  private:
   static constexpr int kTexcoordSlot = base_color_texcoord<Shading>();  // -1: none
+  // The batch shader fogs, except under the wire overlay, whose wire color store() fogs.
+  static constexpr bool kBatchFogs = !edge_overlay<Shading>();
+  const Fog* batch_fog() const { return kBatchFogs ? &fog_ : nullptr; }
   TileContext& tile_;
   const SetupTriangle& t_;
   const shading::DrawUniforms& uniforms_;
@@ -407,6 +450,15 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
       in.depth = tile.depth + block_offset;
       cover_block(in, block);
       if (block.mask == 0) continue;
+      if (block.mask == ~std::uint64_t{0} && out.full_blocks()) {
+        out.shade_full_block(block, block_x, block_y);
+        if constexpr (kTightensBound) {
+          float largest = 0.0f;
+          for (int i = 0; i < kBlockPixels; ++i) largest = std::max(largest, block.z[i]);
+          max_depth = std::min(max_depth, largest);
+        }
+        continue;
+      }
       int written = 0;
       if (out.batches()) {
         pixels.count = 0;

@@ -23,12 +23,13 @@ struct ShadeInput {
   const float* w = nullptr;
   const float (*v)[kShadeBatch] = nullptr;
   const float (*base_texel)[4] = nullptr;  // the base color map's texel per pixel, or null
+  const Fog* fog = nullptr;  // fog to apply to the colors (fog.hpp's apply_fog), or null
 };
 
 // Whether shade_batch can shade this draw: every light directional, no emissive map.
 bool batch_shades(const DrawUniforms& u);
 
-// Linear RGBA of every pixel, as the model's fragment() gives it.
+// Linear RGBA of every pixel, as the model's fragment() gives it (then fogged, if in.fog).
 void shade_batch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]);
 
 }  // namespace facet::shading

@@ -27,6 +27,37 @@ struct ClipVertex {
   float varyings[kMaxVaryings];
 };
 
+// A vertex after the perspective divide and viewport transform (setup.cpp's to_screen).
+struct ScreenVertex {
+  std::int32_t x, y;  // fixed point, y down
+  float z;            // window depth in [0, 1]
+  float inv_w;
+};
+
+// ProjectedVertex::codes: outcodes against the frustum and the guard band (clip.hpp's
+// ClipPlane bits, the guard band's shifted up), and whether the position is not finite.
+inline constexpr int kGuardCodeShift = 8;
+inline constexpr std::uint32_t kNotFinite = 1u << 16;
+
+// What primitive assembly and setup need of a vertex, computed once per vertex by the vertex
+// stage rather than once per triangle corner (a vertex of a closed mesh is a corner of about
+// six triangles): the facing test's inputs, the outcodes, and the screen position.
+struct ProjectedVertex {
+  float clip_x, clip_y, clip_w;  // homogeneous_orientation's inputs
+  std::uint32_t codes;
+  ScreenVertex screen;  // meaningful only when codes say the vertex needs no clipping
+};
+
+// A draw's transformed vertices, reused across frames.
+struct DrawVertices {
+  std::vector<ClipVertex> clip;            // what the clipper and the per-triangle hooks read
+  std::vector<ProjectedVertex> projected;  // what culling and setup read
+  // varyings[k] * screen.inv_w, `varyings` floats per vertex: the values setup's planes pass
+  // through (perspective-correct interpolation interpolates v / w). Empty when the draw has
+  // per-triangle hooks, which rewrite the varyings before setup.
+  std::vector<float> over_w;
+};
+
 struct TileContext;
 struct SetupTriangle;
 using RasterTriangleFn = void (*)(TileContext&, const SetupTriangle&);
@@ -54,6 +85,20 @@ struct DrawRecord {
   shading::DrawUniforms uniforms;
   DrawPipeline pipeline;
 };
+
+// The per-triangle hooks primitive assembly runs before setup: a face normal for shading
+// models that need one when the mesh has none, and the per-face function (flat shading, or
+// Gouraud lighting of a mesh without normals). Both rewrite the triangle's varyings.
+inline bool fills_face_normal(const DrawRecord& draw) {
+  return draw.pipeline.normal_slot >= 0 && draw.mesh->normals.empty();
+}
+inline DrawPipeline::FaceFn face_hook(const DrawRecord& draw) {
+  const DrawPipeline& pipe = draw.pipeline;
+  return pipe.face ? pipe.face : (draw.mesh->normals.empty() ? pipe.face_without_normals : nullptr);
+}
+inline bool has_triangle_hooks(const DrawRecord& draw) {
+  return fills_face_normal(draw) || face_hook(draw) != nullptr;
+}
 
 // Value of an attribute across the screen: value(px, py) = at_ref + dx*(px-ref_x) +
 // dy*(py-ref_y), with (px, py) a pixel centre in pixels and ref the triangle's first vertex.
@@ -131,8 +176,8 @@ struct Frame : PrimitiveBuffer {
   std::vector<DrawRecord> draws;
   std::vector<std::uint32_t> draw_order;  // opaque in submission order, then blended far-first
   std::vector<shading::LightData> lights;
-  std::vector<std::vector<ClipVertex>> vertices;  // per draw slot, reused
-  std::vector<GeometryChunk> chunks;              // reused across frames
+  std::vector<DrawVertices> vertices;  // per draw slot, reused
+  std::vector<GeometryChunk> chunks;   // reused across frames
   // One bin per tile, in submission order. An entry is a triangle index, or a line index
   // with kLineBit set.
   // The bins, one flat arena: tile i's entries are bin_entries[bin_start[i] .. bin_start[i+1]).

@@ -88,7 +88,7 @@ void run_geometry(Frame& frame, int workers) {
   if (frame.vertices.size() < frame.draws.size()) frame.vertices.resize(frame.draws.size());
   for (std::uint32_t d : frame.draw_order) {
     frame.stats.triangles_in += frame.draws[d].mesh->primitive_count();
-    transform_vertices(frame.draws[d], workers, frame.vertices[d]);
+    transform_vertices(frame.draws[d], frame.width, frame.height, workers, frame.vertices[d]);
   }
   std::size_t count = plan_chunks(frame);
   parallel_tasks(static_cast<int>(count), workers, [&](int k, int) {

@@ -21,47 +21,21 @@ int last_centre_at_or_before(std::int64_t hi) {
 
 }  // namespace
 
-ScreenVertex to_screen(const glm::vec4& clip, int width, int height) {
-  float inv_w = 1.0f / clip.w;
-  float ndc_x = clip.x * inv_w;
-  float ndc_y = clip.y * inv_w;
-  float ndc_z = clip.z * inv_w;
-  float sx = (ndc_x * 0.5f + 0.5f) * static_cast<float>(width);
-  float sy = (0.5f - ndc_y * 0.5f) * static_cast<float>(height);
-  return {snap(sx), snap(sy), ndc_z * 0.5f + 0.5f, inv_w};
-}
-
-PlaneSolver::PlaneSolver(const float x[3], const float y[3])
-    : x1_(double{x[1]} - x[0]),
-      y1_(double{y[1]} - y[0]),
-      x2_(double{x[2]} - x[0]),
-      y2_(double{y[2]} - y[0]),
-      inv_det_(1.0 / (x1_ * y2_ - x2_ * y1_)) {}
-
-Plane PlaneSolver::plane(const float value[3]) const {
-  double v1 = double{value[1]} - value[0], v2 = double{value[2]} - value[0];
-  Plane p;
-  p.at_ref = value[0];
-  p.dx = static_cast<float>((v1 * y2_ - v2 * y1_) * inv_det_);
-  p.dy = static_cast<float>((v2 * x1_ - v1 * x2_) * inv_det_);
-  return p;
-}
-
 Plane make_plane(const float x[3], const float y[3], const float value[3]) {
   return PlaneSolver(x, y).plane(value);
 }
 
-bool setup_triangle(PrimitiveBuffer& out, int width, int height, std::uint32_t draw,
-                    const ClipVertex* const v[3], int varyings, bool front_facing) {
-  ScreenVertex s[3];
-  int order[3] = {0, 1, 2};
-  for (int i = 0; i < 3; ++i) s[i] = to_screen(v[i]->clip, width, height);
+bool setup_projected_triangle(PrimitiveBuffer& out, int width, int height, std::uint32_t draw,
+                              const ScreenVertex screen[3], const float* const over_w[3],
+                              int varyings, bool front_facing) {
+  ScreenVertex s[3] = {screen[0], screen[1], screen[2]};
+  const float* values[3] = {over_w[0], over_w[1], over_w[2]};
   std::int64_t area = signed_area(s[0], s[1], s[2]);
   // Degenerate after snapping, or snapping flipped a sliver: no pixel centres to cover.
   if (area == 0 || (area < 0) != front_facing) return false;
   if (area < 0) {  // make the winding clockwise on screen (positive area) for the edge tests
     std::swap(s[1], s[2]);
-    std::swap(order[1], order[2]);
+    std::swap(values[1], values[2]);
   }
 
   SetupTriangle t;
@@ -85,31 +59,38 @@ bool setup_triangle(PrimitiveBuffer& out, int width, int height, std::uint32_t d
     t.c[i] = -(std::int64_t{t.a[i]} * p.x + std::int64_t{t.b[i]} * p.y) + bias;
   }
 
-  float px[3], py[3], z[3], inv_w[3];
+  float px[3], py[3];
   for (int i = 0; i < 3; ++i) {
     px[i] = static_cast<float>(s[i].x) / kSubpixelScale;
     py[i] = static_cast<float>(s[i].y) / kSubpixelScale;
-    z[i] = s[i].z;
-    inv_w[i] = s[i].inv_w;
   }
   t.ref_x = px[0];
   t.ref_y = py[0];
   const PlaneSolver solver(px, py);
-  t.z = solver.plane(z);
-  t.inv_w = solver.plane(inv_w);
+  t.z = solver.plane(s[0].z, s[1].z, s[2].z);
+  t.inv_w = solver.plane(s[0].inv_w, s[1].inv_w, s[2].inv_w);
   const std::size_t first_plane = out.planes.size();
   t.varying_planes = static_cast<std::uint32_t>(first_plane);
   out.planes.resize(first_plane + varyings);  // capacity kept across frames: no allocation
   Plane* planes = out.planes.data() + first_plane;
-  for (int k = 0; k < varyings; ++k) {
-    float value[3];
-    for (int i = 0; i < 3; ++i) value[i] = v[order[i]]->varyings[k] * inv_w[i];
-    planes[k] = solver.plane(value);
-  }
+  for (int k = 0; k < varyings; ++k)
+    planes[k] = solver.plane(values[0][k], values[1][k], values[2][k]);
   t.draw = draw;
   out.sequence.push_back(static_cast<std::uint32_t>(out.triangles.size()));
   out.triangles.push_back(t);
   return true;
+}
+
+bool setup_triangle(PrimitiveBuffer& out, int width, int height, std::uint32_t draw,
+                    const ClipVertex* const v[3], int varyings, bool front_facing) {
+  ScreenVertex s[3];
+  float over_w[3][kMaxVaryings];
+  for (int i = 0; i < 3; ++i) {
+    s[i] = to_screen(v[i]->clip, width, height);
+    for (int k = 0; k < varyings; ++k) over_w[i][k] = v[i]->varyings[k] * s[i].inv_w;
+  }
+  const float* values[3] = {over_w[0], over_w[1], over_w[2]};
+  return setup_projected_triangle(out, width, height, draw, s, values, varyings, front_facing);
 }
 
 bool setup_line(PrimitiveBuffer& out, int width, int height, const glm::vec4& a, const glm::vec4& b,

@@ -5,18 +5,21 @@
 
 #include <cstdint>
 
+#include "pipeline/fixed_point.hpp"
 #include "pipeline/frame.hpp"
 
 namespace facet::pipeline {
 
-// A vertex after the perspective divide and viewport transform.
-struct ScreenVertex {
-  std::int32_t x, y;  // fixed point, y down
-  float z;            // window depth in [0, 1]
-  float inv_w;
-};
-
-ScreenVertex to_screen(const glm::vec4& clip, int width, int height);
+// Perspective divide and viewport transform. Inline: the vertex stage runs it once per vertex.
+inline ScreenVertex to_screen(const glm::vec4& clip, int width, int height) {
+  float inv_w = 1.0f / clip.w;
+  float ndc_x = clip.x * inv_w;
+  float ndc_y = clip.y * inv_w;
+  float ndc_z = clip.z * inv_w;
+  float sx = (ndc_x * 0.5f + 0.5f) * static_cast<float>(width);
+  float sy = (0.5f - ndc_y * 0.5f) * static_cast<float>(height);
+  return {snap(sx), snap(sy), ndc_z * 0.5f + 0.5f, inv_w};
+}
 
 // Signed doubled area in fixed-point units. With y down, front faces (counter-clockwise in
 // OpenGL's y-up NDC) have negative area.
@@ -38,8 +41,22 @@ inline bool is_top_left(std::int32_t dx, std::int32_t dy) { return (dy == 0 && d
 // costs a few multiplications.
 class PlaneSolver {
  public:
-  PlaneSolver(const float x[3], const float y[3]);
-  Plane plane(const float value[3]) const;
+  PlaneSolver(const float x[3], const float y[3])
+      : x1_(double{x[1]} - x[0]),
+        y1_(double{y[1]} - y[0]),
+        x2_(double{x[2]} - x[0]),
+        y2_(double{y[2]} - y[0]),
+        inv_det_(1.0 / (x1_ * y2_ - x2_ * y1_)) {}
+
+  Plane plane(const float value[3]) const { return plane(value[0], value[1], value[2]); }
+  Plane plane(float value0, float value1, float value2) const {
+    double v1 = double{value1} - value0, v2 = double{value2} - value0;
+    Plane p;
+    p.at_ref = value0;
+    p.dx = static_cast<float>((v1 * y2_ - v2 * y1_) * inv_det_);
+    p.dy = static_cast<float>((v2 * x1_ - v1 * x2_) * inv_det_);
+    return p;
+  }
 
  private:
   double x1_, y1_, x2_, y2_, inv_det_;
@@ -88,6 +105,13 @@ inline DepthRange depth_range_over(const SetupTriangle& t, int x0, int y0, int x
 // dropped if it is degenerate or its snapped winding disagrees. Returns true if appended.
 bool setup_triangle(PrimitiveBuffer& out, int width, int height, std::uint32_t draw,
                     const ClipVertex* const v[3], int varyings, bool front_facing);
+
+// The same from vertices already projected (to_screen) with their varyings already multiplied
+// by inv_w (over_w[i] points at vertex i's `varyings` floats): the fast path for triangles that
+// need no clipping, whose vertices the vertex stage projected once for all their triangles.
+bool setup_projected_triangle(PrimitiveBuffer& out, int width, int height, std::uint32_t draw,
+                              const ScreenVertex s[3], const float* const over_w[3], int varyings,
+                              bool front_facing);
 
 // Sets up one clipped segment; returns true if it touches the framebuffer.
 bool setup_line(PrimitiveBuffer& out, int width, int height, const glm::vec4& a, const glm::vec4& b,

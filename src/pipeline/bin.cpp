@@ -41,13 +41,29 @@ bool triangle_covers(const SetupTriangle& t, int x0, int y0, int x1, int y1) {
 
 namespace {
 
-// Calls visit(tile, entry) for every tile each primitive of sequence[begin, end) may cover,
+// Calls visit(entry) for entries [begin, end) of the chunks' sequences, concatenated in
+// chunk order (submission order).
+template <class Visit>
+void for_each_entry(const Frame& frame, std::size_t begin, std::size_t end, Visit&& visit) {
+  const GeometryChunk* chunks = frame.chunks.data();
+  // The last chunk starting at or before `begin` (empty chunks share a start; any will do).
+  std::size_t k =
+      std::partition_point(chunks, chunks + frame.chunk_count,
+                           [&](const GeometryChunk& c) { return c.sequence_at <= begin; }) -
+      chunks - 1;
+  for (std::size_t i = begin; i < end; ++k) {
+    const GeometryChunk& chunk = chunks[k];
+    const std::size_t stop = std::min(end, chunk.sequence_at + chunk.sequence.size());
+    for (; i < stop; ++i) visit(chunk.sequence[i - chunk.sequence_at]);
+  }
+}
+
+// Calls visit(tile, entry) for every tile each primitive of entries [begin, end) may cover,
 // in submission order.
 template <class Visit>
 void for_each_binning(const Frame& frame, std::size_t begin, std::size_t end, Visit&& visit) {
   const int ts = frame.tile_size;
-  for (std::size_t i = begin; i < end; ++i) {
-    const std::uint32_t entry = frame.sequence[i];
+  for_each_entry(frame, begin, end, [&](const std::uint32_t entry) {
     int min_x, min_y, max_x, max_y;
     const SetupTriangle* tri = nullptr;
     if (entry & kLineBit) {
@@ -70,7 +86,7 @@ void for_each_binning(const Frame& frame, std::size_t begin, std::size_t end, Vi
         visit(static_cast<std::size_t>(ty) * frame.tiles_x + tx, entry);
       }
     }
-  }
+  });
 }
 
 }  // namespace
@@ -82,7 +98,7 @@ void bin_primitives(Frame& frame, int workers) {
   // when a frame needs more entries than any before (by half again, so an animated scene
   // settles after a few frames and then allocates nothing).
   const std::size_t tiles = static_cast<std::size_t>(frame.tiles_x) * frame.tiles_y;
-  const std::size_t primitives = frame.sequence.size();
+  const std::size_t primitives = frame.primitives;
   const std::size_t runs =
       std::clamp<std::size_t>(primitives / kPrimitivesPerBinningRun, 1, kMaxBinningRuns);
   auto run_begin = [&](std::size_t run) { return primitives * run / runs; };

@@ -134,17 +134,14 @@ struct SetupLine {
   glm::vec4 color;  // linear RGBA
 };
 
-// Set-up primitives in submission order: what primitive assembly + setup produce (per chunk
-// of triangles, in parallel) and what binning and raster read (the frame's merged copy).
+// Set-up primitives: what setup produces and raster reads. SetupTriangle::varying_planes
+// indexes planes.
 struct PrimitiveBuffer {
   std::vector<SetupTriangle> triangles;
   std::vector<SetupLine> lines;
-  std::vector<Plane> planes;  // varying planes, referenced by SetupTriangle::varying_planes
-  // Every primitive in submission order: a triangle index, or a line index with kLineBit set.
-  // Binning walks this so bins keep submission order.
-  std::vector<std::uint32_t> sequence;
+  std::vector<Plane> planes;
 
-  void clear() { triangles.clear(), lines.clear(), planes.clear(), sequence.clear(); }
+  void clear() { triangles.clear(), lines.clear(), planes.clear(); }
 };
 
 // What primitive assembly counts for FrameStats, per chunk.
@@ -153,19 +150,27 @@ struct PrimitiveCounts {
   std::uint64_t clipped = 0;  // needed clipping
 };
 
-// A run of one draw's primitives [begin, end) set up by one task.
+// A run of one draw's primitives [begin, end) set up by one task, straight into its regions
+// of the frame's primitive arrays (primitive_sink.hpp).
 struct GeometryChunk {
   std::uint32_t draw = 0;
   std::size_t begin = 0, end = 0;
-  PrimitiveBuffer out;
+  // A region of one of the frame's arrays: [begin, begin + capacity), the first `used` set.
+  struct Region {
+    std::uint32_t begin = 0, capacity = 0, used = 0;
+  };
+  Region triangles, lines;
+  std::uint32_t planes_begin = 0;  // triangle region slot i has planes_begin + i * varyings
+  PrimitiveBuffer overflow;        // what did not fit in the regions (clipped fans)
+  // Every primitive in submission order: a triangle index, or a line index with kLineBit
+  // set. Binning walks the chunks' sequences in order, so bins keep submission order.
+  std::vector<std::uint32_t> sequence;
+  std::size_t sequence_at = 0;  // where this sequence starts in the frame's concatenation
   PrimitiveCounts counts;
-  // Where this chunk's primitives start in the frame's merged buffers.
-  struct Offsets {
-    std::size_t triangles = 0, lines = 0, planes = 0, sequence = 0;
-  } at;
 };
 
-// The frame: everything above plus the merged primitives it inherits (frame.triangles, ...).
+// The frame: everything above, and the set-up primitives (in the chunks' regions and then
+// their overflow; only the chunks' sequences say which slots hold one).
 struct Frame : PrimitiveBuffer {
   int width = 0;
   int height = 0;
@@ -177,7 +182,10 @@ struct Frame : PrimitiveBuffer {
   std::vector<std::uint32_t> draw_order;  // opaque in submission order, then blended far-first
   std::vector<shading::LightData> lights;
   std::vector<DrawVertices> vertices;  // per draw slot, reused
-  std::vector<GeometryChunk> chunks;   // reused across frames
+  std::vector<GeometryChunk>
+      chunks;  // reused across frames: the first chunk_count are this frame's
+  std::size_t chunk_count = 0;
+  std::size_t primitives = 0;  // set-up primitives: the chunks' sequences, concatenated
   // One bin per tile, in submission order. An entry is a triangle index, or a line index
   // with kLineBit set.
   // The bins, one flat arena: tile i's entries are bin_entries[bin_start[i] .. bin_start[i+1]).

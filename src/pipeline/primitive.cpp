@@ -10,7 +10,7 @@ namespace facet::pipeline {
 namespace {
 
 struct Assembler {
-  PrimitiveBuffer& out;
+  PrimitiveSink& out;
   PrimitiveCounts& counts;
   int width, height;
   std::uint32_t draw_index;
@@ -143,7 +143,7 @@ struct Assembler {
 }  // namespace
 
 void assemble_primitives(const Frame& frame, std::uint32_t draw_index, std::size_t begin,
-                         std::size_t end, PrimitiveBuffer& out, PrimitiveCounts& counts) {
+                         std::size_t end, PrimitiveSink& out, PrimitiveCounts& counts) {
   const DrawRecord& draw = frame.draws[draw_index];
   const Mesh& mesh = *draw.mesh;
   Assembler assembler{out,

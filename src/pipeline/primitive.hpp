@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "pipeline/frame.hpp"
+#include "pipeline/primitive_sink.hpp"
 
 namespace facet::pipeline {
 
@@ -28,8 +29,8 @@ inline double homogeneous_orientation(const ProjectedVertex& a, const ProjectedV
 
 // Assembles, culls, clips and sets up primitives [begin, end) (triangles, or segments for
 // line meshes) of frame.draws[draw] into out, counting what it culls and clips into counts.
-// Reads only the frame, so chunks of one draw can run in parallel, each into its own buffer.
+// Reads only the frame, so chunks of one draw can run in parallel, each into its own regions.
 void assemble_primitives(const Frame& frame, std::uint32_t draw, std::size_t begin, std::size_t end,
-                         PrimitiveBuffer& out, PrimitiveCounts& counts);
+                         PrimitiveSink& out, PrimitiveCounts& counts);
 
 }  // namespace facet::pipeline

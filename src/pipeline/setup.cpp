@@ -25,7 +25,7 @@ Plane make_plane(const float x[3], const float y[3], const float value[3]) {
   return PlaneSolver(x, y).plane(value);
 }
 
-bool setup_projected_triangle(PrimitiveBuffer& out, int width, int height, std::uint32_t draw,
+bool setup_projected_triangle(PrimitiveSink& out, int width, int height, std::uint32_t draw,
                               const ScreenVertex screen[3], const float* const over_w[3],
                               int varyings, bool front_facing) {
   ScreenVertex s[3] = {screen[0], screen[1], screen[2]};
@@ -69,19 +69,16 @@ bool setup_projected_triangle(PrimitiveBuffer& out, int width, int height, std::
   const PlaneSolver solver(px, py);
   t.z = solver.plane(s[0].z, s[1].z, s[2].z);
   t.inv_w = solver.plane(s[0].inv_w, s[1].inv_w, s[2].inv_w);
-  const std::size_t first_plane = out.planes.size();
-  t.varying_planes = static_cast<std::uint32_t>(first_plane);
-  out.planes.resize(first_plane + varyings);  // capacity kept across frames: no allocation
-  Plane* planes = out.planes.data() + first_plane;
+  const TriangleSlot slot = out.add_triangle();
   for (int k = 0; k < varyings; ++k)
-    planes[k] = solver.plane(values[0][k], values[1][k], values[2][k]);
+    slot.planes[k] = solver.plane(values[0][k], values[1][k], values[2][k]);
+  t.varying_planes = slot.plane_index;
   t.draw = draw;
-  out.sequence.push_back(static_cast<std::uint32_t>(out.triangles.size()));
-  out.triangles.push_back(t);
+  *slot.triangle = t;
   return true;
 }
 
-bool setup_triangle(PrimitiveBuffer& out, int width, int height, std::uint32_t draw,
+bool setup_triangle(PrimitiveSink& out, int width, int height, std::uint32_t draw,
                     const ClipVertex* const v[3], int varyings, bool front_facing) {
   ScreenVertex s[3];
   float over_w[3][kMaxVaryings];
@@ -93,7 +90,7 @@ bool setup_triangle(PrimitiveBuffer& out, int width, int height, std::uint32_t d
   return setup_projected_triangle(out, width, height, draw, s, values, varyings, front_facing);
 }
 
-bool setup_line(PrimitiveBuffer& out, int width, int height, const glm::vec4& a, const glm::vec4& b,
+bool setup_line(PrimitiveSink& out, int width, int height, const glm::vec4& a, const glm::vec4& b,
                 const glm::vec4& color) {
   ScreenVertex s0 = to_screen(a, width, height);
   ScreenVertex s1 = to_screen(b, width, height);
@@ -107,8 +104,7 @@ bool setup_line(PrimitiveBuffer& out, int width, int height, const glm::vec4& a,
   l.max_y = std::min(height - 1, static_cast<int>(floor_div(std::max(l.y0, l.y1), kSubpixelScale)));
   if (l.min_x > l.max_x || l.min_y > l.max_y) return false;
   l.color = color;
-  out.sequence.push_back(static_cast<std::uint32_t>(out.lines.size()) | kLineBit);
-  out.lines.push_back(l);
+  out.add_line() = l;
   return true;
 }
 

@@ -7,6 +7,7 @@
 
 #include "pipeline/fixed_point.hpp"
 #include "pipeline/frame.hpp"
+#include "pipeline/primitive_sink.hpp"
 
 namespace facet::pipeline {
 
@@ -103,18 +104,18 @@ inline DepthRange depth_range_over(const SetupTriangle& t, int x0, int y0, int x
 // Sets up one triangle (already clipped to the guard band and in front of the eye) of draw
 // `draw`. `front_facing` is its facing as decided before clipping; the snapped triangle is
 // dropped if it is degenerate or its snapped winding disagrees. Returns true if appended.
-bool setup_triangle(PrimitiveBuffer& out, int width, int height, std::uint32_t draw,
+bool setup_triangle(PrimitiveSink& out, int width, int height, std::uint32_t draw,
                     const ClipVertex* const v[3], int varyings, bool front_facing);
 
 // The same from vertices already projected (to_screen) with their varyings already multiplied
 // by inv_w (over_w[i] points at vertex i's `varyings` floats): the fast path for triangles that
 // need no clipping, whose vertices the vertex stage projected once for all their triangles.
-bool setup_projected_triangle(PrimitiveBuffer& out, int width, int height, std::uint32_t draw,
+bool setup_projected_triangle(PrimitiveSink& out, int width, int height, std::uint32_t draw,
                               const ScreenVertex s[3], const float* const over_w[3], int varyings,
                               bool front_facing);
 
 // Sets up one clipped segment; returns true if it touches the framebuffer.
-bool setup_line(PrimitiveBuffer& out, int width, int height, const glm::vec4& a, const glm::vec4& b,
+bool setup_line(PrimitiveSink& out, int width, int height, const glm::vec4& a, const glm::vec4& b,
                 const glm::vec4& color);
 
 }  // namespace facet::pipeline

@@ -70,8 +70,7 @@ bool setup_projected_triangle(PrimitiveSink& out, int width, int height, std::ui
   t.z = solver.plane(s[0].z, s[1].z, s[2].z);
   t.inv_w = solver.plane(s[0].inv_w, s[1].inv_w, s[2].inv_w);
   const TriangleSlot slot = out.add_triangle();
-  for (int k = 0; k < varyings; ++k)
-    slot.planes[k] = solver.plane(values[0][k], values[1][k], values[2][k]);
+  solver.planes(values, varyings, slot.planes);
   t.varying_planes = slot.plane_index;
   t.draw = draw;
   *slot.triangle = t;

@@ -42,25 +42,35 @@ inline bool is_top_left(std::int32_t dx, std::int32_t dy) { return (dy == 0 && d
 // costs a few multiplications.
 class PlaneSolver {
  public:
-  PlaneSolver(const float x[3], const float y[3])
-      : x1_(double{x[1]} - x[0]),
-        y1_(double{y[1]} - y[0]),
-        x2_(double{x[2]} - x[0]),
-        y2_(double{y[2]} - y[0]),
-        inv_det_(1.0 / (x1_ * y2_ - x2_ * y1_)) {}
+  // The 2x2 system, vertex 0 at the origin, and the inverse of its determinant.
+  struct Coefficients {
+    double x1, y1, x2, y2, inv_det;
+  };
+
+  PlaneSolver(const float x[3], const float y[3]) {
+    c_.x1 = double{x[1]} - x[0];
+    c_.y1 = double{y[1]} - y[0];
+    c_.x2 = double{x[2]} - x[0];
+    c_.y2 = double{y[2]} - y[0];
+    c_.inv_det = 1.0 / (c_.x1 * c_.y2 - c_.x2 * c_.y1);
+  }
 
   Plane plane(const float value[3]) const { return plane(value[0], value[1], value[2]); }
   Plane plane(float value0, float value1, float value2) const {
     double v1 = double{value1} - value0, v2 = double{value2} - value0;
     Plane p;
     p.at_ref = value0;
-    p.dx = static_cast<float>((v1 * y2_ - v2 * y1_) * inv_det_);
-    p.dy = static_cast<float>((v2 * x1_ - v1 * x2_) * inv_det_);
+    p.dx = static_cast<float>((v1 * c_.y2 - v2 * c_.y1) * c_.inv_det);
+    p.dy = static_cast<float>((v2 * c_.x1 - v1 * c_.x2) * c_.inv_det);
     return p;
   }
 
+  // out[k] = plane(values[0][k], values[1][k], values[2][k]) for k < count, bit for bit, several
+  // k at a time on SIMD targets (setup_planes.cpp).
+  void planes(const float* const values[3], int count, Plane* out) const;
+
  private:
-  double x1_, y1_, x2_, y2_, inv_det_;
+  Coefficients c_;
 };
 
 // One plane through three (x, y, value) points (a PlaneSolver used once).

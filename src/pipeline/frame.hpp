@@ -185,6 +185,13 @@ struct Frame : PrimitiveBuffer {
   std::vector<GeometryChunk>
       chunks;  // reused across frames: the first chunk_count are this frame's
   std::size_t chunk_count = 0;
+  // Geometry's parallel tasks: chunks [first_chunk, end_chunk), after transforming their draw's
+  // vertices when `transform` says so (geometry.cpp).
+  struct GeometryTask {
+    std::uint32_t first_chunk, end_chunk;
+    bool transform;
+  };
+  std::vector<GeometryTask> geometry_tasks;
   std::size_t primitives = 0;  // set-up primitives: the chunks' sequences, concatenated
   // One bin per tile, in submission order. An entry is a triangle index, or a line index
   // with kLineBit set.

@@ -116,15 +116,36 @@ void finish_chunks(Frame& frame, Totals end) {
 
 void run_geometry(Frame& frame, int workers) {
   if (frame.vertices.size() < frame.draws.size()) frame.vertices.resize(frame.draws.size());
-  for (std::uint32_t d : frame.draw_order) {
-    frame.stats.triangles_in += frame.draws[d].mesh->primitive_count();
-    transform_vertices(frame.draws[d], frame.width, frame.height, workers, frame.vertices[d]);
-  }
   const Totals totals = plan_chunks(frame);
-  parallel_tasks(static_cast<int>(frame.chunk_count), workers, [&](int k, int) {
-    GeometryChunk& chunk = frame.chunks[k];
-    PrimitiveSink sink(frame, chunk, frame.draws[chunk.draw].pipeline.varyings);
-    assemble_primitives(frame, chunk.draw, chunk.begin, chunk.end, sink, chunk.counts);
+  // A small draw is one task, its vertex transform and then all its chunks, so that its
+  // vertices (about 160 bytes each) are still in the core's cache when its triangles read
+  // them. A big draw's vertices are transformed first, in parallel batches, and then its chunks
+  // are tasks of their own.
+  frame.geometry_tasks.clear();  // capacity kept across frames
+  for (std::uint32_t k = 0; k < frame.chunk_count;) {
+    const std::uint32_t d = frame.chunks[k].draw;
+    std::uint32_t end = k + 1;
+    while (end < frame.chunk_count && frame.chunks[end].draw == d) ++end;
+    frame.stats.triangles_in += frame.draws[d].mesh->primitive_count();
+    if (frame.draws[d].mesh->positions.size() <= kVertexBatch) {
+      frame.geometry_tasks.push_back({k, end, true});
+    } else {
+      transform_vertices(frame.draws[d], frame.width, frame.height, workers, frame.vertices[d]);
+      for (; k < end; ++k) frame.geometry_tasks.push_back({k, k + 1, false});
+    }
+    k = end;
+  }
+  parallel_tasks(static_cast<int>(frame.geometry_tasks.size()), workers, [&](int i, int) {
+    const Frame::GeometryTask& task = frame.geometry_tasks[i];
+    const std::uint32_t d = frame.chunks[task.first_chunk].draw;
+    if (task.transform) {
+      transform_vertices(frame.draws[d], frame.width, frame.height, workers, frame.vertices[d]);
+    }
+    for (std::uint32_t k = task.first_chunk; k < task.end_chunk; ++k) {
+      GeometryChunk& chunk = frame.chunks[k];
+      PrimitiveSink sink(frame, chunk, frame.draws[d].pipeline.varyings);
+      assemble_primitives(frame, d, chunk.begin, chunk.end, sink, chunk.counts);
+    }
   });
   finish_chunks(frame, totals);
 }

@@ -11,9 +11,6 @@
 namespace facet::pipeline {
 namespace {
 
-// Vertices per task: big enough to amortise scheduling, small enough to balance 2-8 cores.
-constexpr std::size_t kVertexBatch = 4096;
-
 struct Projection {
   int width, height;
   ClipBounds frustum{1.0f, 1.0f};

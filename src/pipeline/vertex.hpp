@@ -9,6 +9,10 @@
 
 namespace facet::pipeline {
 
+// Vertices per task: big enough to amortise scheduling, small enough to balance 2-8 cores. A
+// draw of at most this many is transformed by the calling thread alone.
+inline constexpr std::size_t kVertexBatch = 4096;
+
 // Transforms every vertex of the draw into out (resized to the vertex count) and projects it
 // onto a width x height framebuffer. Large meshes are transformed in parallel batches; the
 // result does not depend on how they are split.

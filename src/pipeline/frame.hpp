@@ -144,6 +144,19 @@ struct PrimitiveBuffer {
   void clear() { triangles.clear(), lines.clear(), planes.clear(); }
 };
 
+// A set-up primitive as binning reads it (bin.hpp's binning_entry makes it while setup still
+// has the primitive in cache): its index (a triangle index, or a line index with kLineBit
+// set), the rectangle of tiles its pixel bounding box touches (inclusive; at most 8192 / 16
+// tiles a side, Framebuffer::kMaxSize), and which of those tiles it may cover: bit
+// (ty - tile_y0) * (tile_x1 - tile_x0 + 1) + (tx - tile_x0), for rectangles of at most
+// kMaskedTiles tiles. Binning edge-tests bigger rectangles' tiles itself.
+inline constexpr int kMaskedTiles = 32;
+struct SequenceEntry {
+  std::uint32_t index;
+  std::uint16_t tile_x0, tile_y0, tile_x1, tile_y1;
+  std::uint32_t tiles;
+};
+
 // What primitive assembly counts for FrameStats, per chunk.
 struct PrimitiveCounts {
   std::uint64_t culled = 0;   // rejected: outside the frustum, facing away, degenerate
@@ -162,9 +175,9 @@ struct GeometryChunk {
   Region triangles, lines;
   std::uint32_t planes_begin = 0;  // triangle region slot i has planes_begin + i * varyings
   PrimitiveBuffer overflow;        // what did not fit in the regions (clipped fans)
-  // Every primitive in submission order: a triangle index, or a line index with kLineBit
-  // set. Binning walks the chunks' sequences in order, so bins keep submission order.
-  std::vector<std::uint32_t> sequence;
+  // Every primitive in submission order. Binning walks the chunks' sequences in order, so
+  // bins keep submission order.
+  std::vector<SequenceEntry> sequence;
   std::size_t sequence_at = 0;  // where this sequence starts in the frame's concatenation
   PrimitiveCounts counts;
 };

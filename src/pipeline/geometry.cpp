@@ -99,7 +99,8 @@ void finish_chunks(Frame& frame, Totals end) {
     }
     std::copy(o.planes.begin(), o.planes.end(), frame.planes.begin() + end.planes);
     std::copy(o.lines.begin(), o.lines.end(), frame.lines.begin() + end.lines);
-    for (std::uint32_t& e : chunk.sequence) {
+    for (SequenceEntry& entry : chunk.sequence) {
+      std::uint32_t& e = entry.index;
       if (!(e & kOverflowBit)) continue;
       const std::uint32_t local = e & ~(kOverflowBit | kLineBit);
       e = (e & kLineBit) ? static_cast<std::uint32_t>(end.lines + local) | kLineBit

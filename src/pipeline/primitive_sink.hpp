@@ -8,6 +8,7 @@
 
 #include <cstdint>
 
+#include "pipeline/bin.hpp"
 #include "pipeline/frame.hpp"
 
 namespace facet::pipeline {
@@ -26,20 +27,23 @@ struct TriangleSlot {
 class PrimitiveSink {
  public:
   PrimitiveSink(Frame& frame, GeometryChunk& chunk, int varyings)
-      : triangles_(frame.triangles.data()),
+      : frame_(frame),
+        triangles_(frame.triangles.data()),
         planes_(frame.planes.data()),
         lines_(frame.lines.data()),
         chunk_(chunk),
         varyings_(static_cast<std::uint32_t>(varyings)) {}
 
-  // A place for the next triangle (and its varying planes), in submission order.
-  TriangleSlot add_triangle() {
+  // A place for the next triangle (and its varying planes), in submission order. `edges` is
+  // the triangle being set up, with its edge functions and bounding box already final
+  // (binning's tile tests read them).
+  TriangleSlot add_triangle(const SetupTriangle& edges) {
     GeometryChunk::Region& r = chunk_.triangles;
     if (r.used < r.capacity) {
       const std::uint32_t index = r.begin + r.used;
       const std::uint32_t plane_index = chunk_.planes_begin + r.used * varyings_;
       ++r.used;
-      chunk_.sequence.push_back(index);
+      append(index, &edges, edges.min_x, edges.min_y, edges.max_x, edges.max_y);
       return {triangles_ + index, planes_ + plane_index, plane_index};
     }
     PrimitiveBuffer& o = chunk_.overflow;
@@ -47,23 +51,32 @@ class PrimitiveSink {
     const auto plane_index = static_cast<std::uint32_t>(o.planes.size());
     o.triangles.emplace_back();
     o.planes.resize(plane_index + varyings_);
-    chunk_.sequence.push_back(index | kOverflowBit);
+    append(index | kOverflowBit, &edges, edges.min_x, edges.min_y, edges.max_x, edges.max_y);
     return {&o.triangles.back(), o.planes.data() + plane_index, plane_index};
   }
 
-  SetupLine& add_line() {
+  // A place for the next line, whose pixel bounding box is given.
+  SetupLine& add_line(int min_x, int min_y, int max_x, int max_y) {
     GeometryChunk::Region& r = chunk_.lines;
     if (r.used < r.capacity) {
       const std::uint32_t index = r.begin + r.used++;
-      chunk_.sequence.push_back(index | kLineBit);
+      append(index | kLineBit, nullptr, min_x, min_y, max_x, max_y);
       return lines_[index];
     }
     PrimitiveBuffer& o = chunk_.overflow;
-    chunk_.sequence.push_back(static_cast<std::uint32_t>(o.lines.size()) | kOverflowBit | kLineBit);
+    append(static_cast<std::uint32_t>(o.lines.size()) | kOverflowBit | kLineBit, nullptr, min_x,
+           min_y, max_x, max_y);
     return o.lines.emplace_back();
   }
 
  private:
+  void append(std::uint32_t index, const SetupTriangle* triangle, int min_x, int min_y, int max_x,
+              int max_y) {
+    chunk_.sequence.push_back(binning_entry(frame_, index, triangle, min_x, min_y, max_x, max_y));
+  }
+
+  const Frame& frame_;
+
   SetupTriangle* triangles_;
   Plane* planes_;
   SetupLine* lines_;

@@ -69,7 +69,7 @@ bool setup_projected_triangle(PrimitiveSink& out, int width, int height, std::ui
   const PlaneSolver solver(px, py);
   t.z = solver.plane(s[0].z, s[1].z, s[2].z);
   t.inv_w = solver.plane(s[0].inv_w, s[1].inv_w, s[2].inv_w);
-  const TriangleSlot slot = out.add_triangle();
+  const TriangleSlot slot = out.add_triangle(t);
   solver.planes(values, varyings, slot.planes);
   t.varying_planes = slot.plane_index;
   t.draw = draw;
@@ -103,7 +103,7 @@ bool setup_line(PrimitiveSink& out, int width, int height, const glm::vec4& a, c
   l.max_y = std::min(height - 1, static_cast<int>(floor_div(std::max(l.y0, l.y1), kSubpixelScale)));
   if (l.min_x > l.max_x || l.min_y > l.max_y) return false;
   l.color = color;
-  out.add_line() = l;
+  out.add_line(l.min_x, l.min_y, l.max_x, l.max_y) = l;
   return true;
 }
 

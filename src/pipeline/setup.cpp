@@ -8,73 +8,8 @@
 #include "pipeline/fixed_point.hpp"
 
 namespace facet::pipeline {
-namespace {
-
-// Pixels whose centre may be covered by something spanning [lo, hi] (fixed point):
-// first centre >= lo and last centre <= hi.
-int first_centre_at_or_after(std::int64_t lo) {
-  return static_cast<int>(floor_div(lo - kHalfPixel + kSubpixelScale - 1, kSubpixelScale));
-}
-int last_centre_at_or_before(std::int64_t hi) {
-  return static_cast<int>(floor_div(hi - kHalfPixel, kSubpixelScale));
-}
-
-}  // namespace
-
 Plane make_plane(const float x[3], const float y[3], const float value[3]) {
   return PlaneSolver(x, y).plane(value);
-}
-
-bool setup_projected_triangle(PrimitiveSink& out, int width, int height, std::uint32_t draw,
-                              const ScreenVertex screen[3], const float* const over_w[3],
-                              int varyings, bool front_facing) {
-  ScreenVertex s[3] = {screen[0], screen[1], screen[2]};
-  const float* values[3] = {over_w[0], over_w[1], over_w[2]};
-  std::int64_t area = signed_area(s[0], s[1], s[2]);
-  // Degenerate after snapping, or snapping flipped a sliver: no pixel centres to cover.
-  if (area == 0 || (area < 0) != front_facing) return false;
-  if (area < 0) {  // make the winding clockwise on screen (positive area) for the edge tests
-    std::swap(s[1], s[2]);
-    std::swap(values[1], values[2]);
-  }
-
-  SetupTriangle t;
-  std::int64_t min_x = std::min({s[0].x, s[1].x, s[2].x}),
-               max_x = std::max({s[0].x, s[1].x, s[2].x});
-  std::int64_t min_y = std::min({s[0].y, s[1].y, s[2].y}),
-               max_y = std::max({s[0].y, s[1].y, s[2].y});
-  t.min_x = std::max(0, first_centre_at_or_after(min_x));
-  t.min_y = std::max(0, first_centre_at_or_after(min_y));
-  t.max_x = std::min(width - 1, last_centre_at_or_before(max_x));
-  t.max_y = std::min(height - 1, last_centre_at_or_before(max_y));
-  if (t.min_x > t.max_x || t.min_y > t.max_y) return false;
-
-  for (int i = 0; i < 3; ++i) {
-    const ScreenVertex& p = s[i];
-    const ScreenVertex& q = s[(i + 1) % 3];
-    // E(X, Y) = (qx - px)(Y - py) - (qy - py)(X - px): positive inside a clockwise triangle.
-    t.a[i] = p.y - q.y;
-    t.b[i] = q.x - p.x;
-    const std::int64_t bias = is_top_left(q.x - p.x, q.y - p.y) ? 0 : -1;
-    t.c[i] = -(std::int64_t{t.a[i]} * p.x + std::int64_t{t.b[i]} * p.y) + bias;
-  }
-
-  float px[3], py[3];
-  for (int i = 0; i < 3; ++i) {
-    px[i] = static_cast<float>(s[i].x) / kSubpixelScale;
-    py[i] = static_cast<float>(s[i].y) / kSubpixelScale;
-  }
-  t.ref_x = px[0];
-  t.ref_y = py[0];
-  const PlaneSolver solver(px, py);
-  t.z = solver.plane(s[0].z, s[1].z, s[2].z);
-  t.inv_w = solver.plane(s[0].inv_w, s[1].inv_w, s[2].inv_w);
-  const TriangleSlot slot = out.add_triangle(t);
-  solver.planes(values, varyings, slot.planes);
-  t.varying_planes = slot.plane_index;
-  t.draw = draw;
-  *slot.triangle = t;
-  return true;
 }
 
 bool setup_triangle(PrimitiveSink& out, int width, int height, std::uint32_t draw,

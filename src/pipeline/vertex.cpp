@@ -46,11 +46,15 @@ void transform_range(const DrawRecord& draw, const VertexPassInput& pass_input, 
                        ? glm::vec4(model3 * glm::vec3(mesh.tangents[i]), mesh.tangents[i].w)
                        : glm::vec4(0.0f);
       draw.pipeline.vertex(in, u, v.varyings);
-      if (over_w) {
-        // What setup's planes pass through (perspective-correct interpolation of v / w).
-        float* o = over_w + i * varyings;
-        for (int k = 0; k < varyings; ++k) o[k] = v.varyings[k] * p.screen.inv_w;
-      }
+    }
+    // What setup's planes pass through (perspective-correct interpolation of v / w). A loop of
+    // its own: read right after the shading model's narrow stores, the varyings' vector loads
+    // would stall on store forwarding.
+    for (std::size_t i = first; over_w && i < first + count; ++i) {
+      const float inv_w = out.projected[i].screen.inv_w;
+      const float* v = out.clip[i].varyings;
+      float* o = over_w + i * varyings;
+      for (int k = 0; k < varyings; ++k) o[k] = v[k] * inv_w;
     }
   }
 }

@@ -2,6 +2,7 @@
 #include "pipeline/bin.hpp"
 
 #include <algorithm>
+#include <bit>
 
 #include "pipeline/fixed_point.hpp"
 #include "pipeline/parallel.hpp"
@@ -41,39 +42,85 @@ bool triangle_covers(const SetupTriangle& t, int x0, int y0, int x1, int y1) {
 
 namespace {
 
-// Calls visit(tile, entry) for every tile each primitive of sequence[begin, end) may cover,
-// in submission order.
+// Calls visit(entry) for entries [begin, end) of the chunks' sequences, concatenated in
+// chunk order (submission order).
 template <class Visit>
-void for_each_binning(const Frame& frame, std::size_t begin, std::size_t end, Visit&& visit) {
-  const int ts = frame.tile_size;
-  for (std::size_t i = begin; i < end; ++i) {
-    const std::uint32_t entry = frame.sequence[i];
-    int min_x, min_y, max_x, max_y;
-    const SetupTriangle* tri = nullptr;
-    if (entry & kLineBit) {
-      const SetupLine& l = frame.lines[entry & ~kLineBit];
-      min_x = l.min_x, min_y = l.min_y, max_x = l.max_x, max_y = l.max_y;
-    } else {
-      tri = &frame.triangles[entry];
-      min_x = tri->min_x, min_y = tri->min_y, max_x = tri->max_x, max_y = tri->max_y;
-    }
-    int tx0 = min_x / ts, tx1 = max_x / ts, ty0 = min_y / ts, ty1 = max_y / ts;
-    bool single_tile = tx0 == tx1 && ty0 == ty1;
-    for (int ty = ty0; ty <= ty1; ++ty) {
-      for (int tx = tx0; tx <= tx1; ++tx) {
-        // Large triangles skip the tiles their bounding box touches but their edges exclude.
-        if (tri && !single_tile &&
-            !triangle_may_touch(*tri, tx * ts, ty * ts, std::min((tx + 1) * ts, frame.width),
-                                std::min((ty + 1) * ts, frame.height))) {
-          continue;
-        }
-        visit(static_cast<std::size_t>(ty) * frame.tiles_x + tx, entry);
-      }
-    }
+void for_each_entry(const Frame& frame, std::size_t begin, std::size_t end, Visit&& visit) {
+  const GeometryChunk* chunks = frame.chunks.data();
+  // The last chunk starting at or before `begin` (empty chunks share a start; any will do).
+  std::size_t k =
+      std::partition_point(chunks, chunks + frame.chunk_count,
+                           [&](const GeometryChunk& c) { return c.sequence_at <= begin; }) -
+      chunks - 1;
+  for (std::size_t i = begin; i < end; ++k) {
+    const GeometryChunk& chunk = chunks[k];
+    const std::size_t stop = std::min(end, chunk.sequence_at + chunk.sequence.size());
+    for (; i < stop; ++i) visit(chunk.sequence[i - chunk.sequence_at]);
   }
 }
 
+// Tile sizes are powers of two (Renderer checks) and boxes are non-negative: shift, not divide.
+int tile_shift(const Frame& frame) {
+  return std::countr_zero(static_cast<unsigned>(frame.tile_size));
+}
+
+// True if triangle t may cover a pixel of tile (tx, ty).
+bool may_touch_tile(const Frame& frame, const SetupTriangle& t, int tx, int ty) {
+  const int ts = frame.tile_size;
+  return triangle_may_touch(t, tx * ts, ty * ts, std::min((tx + 1) * ts, frame.width),
+                            std::min((ty + 1) * ts, frame.height));
+}
+
+// Calls visit(tile, entry) for every tile each primitive of entries [begin, end) may cover,
+// in submission order.
+template <class Visit>
+void for_each_binning(const Frame& frame, std::size_t begin, std::size_t end, Visit&& visit) {
+  for_each_entry(frame, begin, end, [&](const SequenceEntry& e) {
+    const std::uint32_t entry = e.index;
+    const int tx0 = e.tile_x0, tx1 = e.tile_x1, ty0 = e.tile_y0, ty1 = e.tile_y1;
+    const int span_x = tx1 - tx0 + 1;
+    if (span_x * (ty1 - ty0 + 1) <= kMaskedTiles) {  // setup said which tiles
+      for (std::uint32_t bits = e.tiles; bits; bits &= bits - 1) {
+        const int bit = std::countr_zero(bits);
+        visit(static_cast<std::size_t>(ty0 + bit / span_x) * frame.tiles_x + tx0 + bit % span_x,
+              entry);
+      }
+      return;
+    }
+    // Large triangles skip the tiles their bounding box touches but their edges exclude.
+    const SetupTriangle* tri = (entry & kLineBit) ? nullptr : &frame.triangles[entry];
+    for (int ty = ty0; ty <= ty1; ++ty) {
+      for (int tx = tx0; tx <= tx1; ++tx) {
+        if (tri && !may_touch_tile(frame, *tri, tx, ty)) continue;
+        visit(static_cast<std::size_t>(ty) * frame.tiles_x + tx, entry);
+      }
+    }
+  });
+}
+
 }  // namespace
+
+SequenceEntry binning_entry(const Frame& frame, std::uint32_t index, const SetupTriangle* triangle,
+                            int min_x, int min_y, int max_x, int max_y) {
+  const int shift = tile_shift(frame);
+  SequenceEntry e;
+  e.index = index;
+  e.tile_x0 = static_cast<std::uint16_t>(min_x >> shift);
+  e.tile_y0 = static_cast<std::uint16_t>(min_y >> shift);
+  e.tile_x1 = static_cast<std::uint16_t>(max_x >> shift);
+  e.tile_y1 = static_cast<std::uint16_t>(max_y >> shift);
+  const int span_x = e.tile_x1 - e.tile_x0 + 1, span_y = e.tile_y1 - e.tile_y0 + 1;
+  e.tiles = 0;
+  if (span_x * span_y == 1) {
+    e.tiles = 1;  // small triangles and lines: the tile of their box, no test
+  } else if (span_x * span_y <= kMaskedTiles) {
+    for (int bit = 0; bit < span_x * span_y; ++bit) {
+      const int tx = e.tile_x0 + bit % span_x, ty = e.tile_y0 + bit / span_x;
+      if (!triangle || may_touch_tile(frame, *triangle, tx, ty)) e.tiles |= 1u << bit;
+    }
+  }
+  return e;
+}
 
 void bin_primitives(Frame& frame, int workers) {
   // The sequence is cut into runs binned in parallel, in two passes over one arena: count
@@ -82,7 +129,7 @@ void bin_primitives(Frame& frame, int workers) {
   // when a frame needs more entries than any before (by half again, so an animated scene
   // settles after a few frames and then allocates nothing).
   const std::size_t tiles = static_cast<std::size_t>(frame.tiles_x) * frame.tiles_y;
-  const std::size_t primitives = frame.sequence.size();
+  const std::size_t primitives = frame.primitives;
   const std::size_t runs =
       std::clamp<std::size_t>(primitives / kPrimitivesPerBinningRun, 1, kMaxBinningRuns);
   auto run_begin = [&](std::size_t run) { return primitives * run / runs; };

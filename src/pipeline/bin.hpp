@@ -1,5 +1,6 @@
-// Stage: binning. Reads the set-up primitives in submission order (Frame::sequence) and
-// appends each to the bin of every tile it may cover; raster.cpp and line.cpp read the bins.
+// Stage: binning. Reads the set-up primitives in submission order (the geometry chunks'
+// sequences) and appends each to the bin of every tile it may cover; raster.cpp and line.cpp
+// read the bins.
 #pragma once
 
 #include <cstddef>
@@ -14,6 +15,12 @@ inline constexpr std::size_t kPrimitivesPerBinningRun = 16384;
 inline constexpr std::size_t kMaxBinningRuns = 16;
 
 void bin_primitives(Frame& frame, int workers);
+
+// The sequence entry of primitive `index` with the given pixel bounding box (inclusive, inside
+// the frame): for a triangle (not null: its edge functions and box must be final), which tiles
+// of the box it may touch; a line may touch every tile of its box.
+SequenceEntry binning_entry(const Frame& frame, std::uint32_t index, const SetupTriangle* triangle,
+                            int min_x, int min_y, int max_x, int max_y);
 
 // True if the triangle may cover a pixel centre of the rectangle [x0, x1) x [y0, y1):
 // the edge functions' maxima over the rectangle's centres are all non-negative.

@@ -44,19 +44,6 @@ ClipBounds guard_band_bounds(int width, int height) {
           1.0f + 2.0f * kGuardBandPixels / static_cast<float>(height)};
 }
 
-unsigned outcode(const glm::vec4& c, const ClipBounds& b) {
-  // The same tests as distance() >= 0, written out: this runs for every vertex of every
-  // triangle. A NaN coordinate fails every comparison, so it counts as outside.
-  unsigned code = 0;
-  if (!(c.z + c.w >= 0.0f)) code |= kClipNear;
-  if (!(c.w - c.z >= 0.0f)) code |= kClipFar;
-  if (!(c.x + b.gx * c.w >= 0.0f)) code |= kClipLeft;
-  if (!(b.gx * c.w - c.x >= 0.0f)) code |= kClipRight;
-  if (!(c.y + b.gy * c.w >= 0.0f)) code |= kClipBottom;
-  if (!(b.gy * c.w - c.y >= 0.0f)) code |= kClipTop;
-  return code;
-}
-
 void clip_polygon(ClipPolygon& polygon, unsigned planes, const ClipBounds& bounds, int varyings) {
   ClipPolygon scratch;
   ClipPolygon* in = &polygon;

@@ -27,6 +27,37 @@ struct ClipVertex {
   float varyings[kMaxVaryings];
 };
 
+// A vertex after the perspective divide and viewport transform (setup.cpp's to_screen).
+struct ScreenVertex {
+  std::int32_t x, y;  // fixed point, y down
+  float z;            // window depth in [0, 1]
+  float inv_w;
+};
+
+// ProjectedVertex::codes: outcodes against the frustum and the guard band (clip.hpp's
+// ClipPlane bits, the guard band's shifted up), and whether the position is not finite.
+inline constexpr int kGuardCodeShift = 8;
+inline constexpr std::uint32_t kNotFinite = 1u << 16;
+
+// What primitive assembly and setup need of a vertex, computed once per vertex by the vertex
+// stage rather than once per triangle corner (a vertex of a closed mesh is a corner of about
+// six triangles): the facing test's inputs, the outcodes, and the screen position.
+struct ProjectedVertex {
+  float clip_x, clip_y, clip_w;  // homogeneous_orientation's inputs
+  std::uint32_t codes;
+  ScreenVertex screen;  // meaningful only when codes say the vertex needs no clipping
+};
+
+// A draw's transformed vertices, reused across frames.
+struct DrawVertices {
+  std::vector<ClipVertex> clip;            // what the clipper and the per-triangle hooks read
+  std::vector<ProjectedVertex> projected;  // what culling and setup read
+  // varyings[k] * screen.inv_w, `varyings` floats per vertex: the values setup's planes pass
+  // through (perspective-correct interpolation interpolates v / w). Empty when the draw has
+  // per-triangle hooks, which rewrite the varyings before setup.
+  std::vector<float> over_w;
+};
+
 struct TileContext;
 struct SetupTriangle;
 using RasterTriangleFn = void (*)(TileContext&, const SetupTriangle&);
@@ -54,6 +85,20 @@ struct DrawRecord {
   shading::DrawUniforms uniforms;
   DrawPipeline pipeline;
 };
+
+// The per-triangle hooks primitive assembly runs before setup: a face normal for shading
+// models that need one when the mesh has none, and the per-face function (flat shading, or
+// Gouraud lighting of a mesh without normals). Both rewrite the triangle's varyings.
+inline bool fills_face_normal(const DrawRecord& draw) {
+  return draw.pipeline.normal_slot >= 0 && draw.mesh->normals.empty();
+}
+inline DrawPipeline::FaceFn face_hook(const DrawRecord& draw) {
+  const DrawPipeline& pipe = draw.pipeline;
+  return pipe.face ? pipe.face : (draw.mesh->normals.empty() ? pipe.face_without_normals : nullptr);
+}
+inline bool has_triangle_hooks(const DrawRecord& draw) {
+  return fills_face_normal(draw) || face_hook(draw) != nullptr;
+}
 
 // Value of an attribute across the screen: value(px, py) = at_ref + dx*(px-ref_x) +
 // dy*(py-ref_y), with (px, py) a pixel centre in pixels and ref the triangle's first vertex.
@@ -89,17 +134,27 @@ struct SetupLine {
   glm::vec4 color;  // linear RGBA
 };
 
-// Set-up primitives in submission order: what primitive assembly + setup produce (per chunk
-// of triangles, in parallel) and what binning and raster read (the frame's merged copy).
+// Set-up primitives: what setup produces and raster reads. SetupTriangle::varying_planes
+// indexes planes.
 struct PrimitiveBuffer {
   std::vector<SetupTriangle> triangles;
   std::vector<SetupLine> lines;
-  std::vector<Plane> planes;  // varying planes, referenced by SetupTriangle::varying_planes
-  // Every primitive in submission order: a triangle index, or a line index with kLineBit set.
-  // Binning walks this so bins keep submission order.
-  std::vector<std::uint32_t> sequence;
+  std::vector<Plane> planes;
 
-  void clear() { triangles.clear(), lines.clear(), planes.clear(), sequence.clear(); }
+  void clear() { triangles.clear(), lines.clear(), planes.clear(); }
+};
+
+// A set-up primitive as binning reads it (bin.hpp's binning_entry makes it while setup still
+// has the primitive in cache): its index (a triangle index, or a line index with kLineBit
+// set), the rectangle of tiles its pixel bounding box touches (inclusive; at most 8192 / 16
+// tiles a side, Framebuffer::kMaxSize), and which of those tiles it may cover: bit
+// (ty - tile_y0) * (tile_x1 - tile_x0 + 1) + (tx - tile_x0), for rectangles of at most
+// kMaskedTiles tiles. Binning edge-tests bigger rectangles' tiles itself.
+inline constexpr int kMaskedTiles = 32;
+struct SequenceEntry {
+  std::uint32_t index;
+  std::uint16_t tile_x0, tile_y0, tile_x1, tile_y1;
+  std::uint32_t tiles;
 };
 
 // What primitive assembly counts for FrameStats, per chunk.
@@ -108,19 +163,27 @@ struct PrimitiveCounts {
   std::uint64_t clipped = 0;  // needed clipping
 };
 
-// A run of one draw's primitives [begin, end) set up by one task.
+// A run of one draw's primitives [begin, end) set up by one task, straight into its regions
+// of the frame's primitive arrays (primitive_sink.hpp).
 struct GeometryChunk {
   std::uint32_t draw = 0;
   std::size_t begin = 0, end = 0;
-  PrimitiveBuffer out;
+  // A region of one of the frame's arrays: [begin, begin + capacity), the first `used` set.
+  struct Region {
+    std::uint32_t begin = 0, capacity = 0, used = 0;
+  };
+  Region triangles, lines;
+  std::uint32_t planes_begin = 0;  // triangle region slot i has planes_begin + i * varyings
+  PrimitiveBuffer overflow;        // what did not fit in the regions (clipped fans)
+  // Every primitive in submission order. Binning walks the chunks' sequences in order, so
+  // bins keep submission order.
+  std::vector<SequenceEntry> sequence;
+  std::size_t sequence_at = 0;  // where this sequence starts in the frame's concatenation
   PrimitiveCounts counts;
-  // Where this chunk's primitives start in the frame's merged buffers.
-  struct Offsets {
-    std::size_t triangles = 0, lines = 0, planes = 0, sequence = 0;
-  } at;
 };
 
-// The frame: everything above plus the merged primitives it inherits (frame.triangles, ...).
+// The frame: everything above, and the set-up primitives (in the chunks' regions and then
+// their overflow; only the chunks' sequences say which slots hold one).
 struct Frame : PrimitiveBuffer {
   int width = 0;
   int height = 0;
@@ -131,8 +194,18 @@ struct Frame : PrimitiveBuffer {
   std::vector<DrawRecord> draws;
   std::vector<std::uint32_t> draw_order;  // opaque in submission order, then blended far-first
   std::vector<shading::LightData> lights;
-  std::vector<std::vector<ClipVertex>> vertices;  // per draw slot, reused
-  std::vector<GeometryChunk> chunks;              // reused across frames
+  std::vector<DrawVertices> vertices;  // per draw slot, reused
+  std::vector<GeometryChunk>
+      chunks;  // reused across frames: the first chunk_count are this frame's
+  std::size_t chunk_count = 0;
+  // Geometry's parallel tasks: chunks [first_chunk, end_chunk), after transforming their draw's
+  // vertices when `transform` says so (geometry.cpp).
+  struct GeometryTask {
+    std::uint32_t first_chunk, end_chunk;
+    bool transform;
+  };
+  std::vector<GeometryTask> geometry_tasks;
+  std::size_t primitives = 0;  // set-up primitives: the chunks' sequences, concatenated
   // One bin per tile, in submission order. An entry is a triangle index, or a line index
   // with kLineBit set.
   // The bins, one flat arena: tile i's entries are bin_entries[bin_start[i] .. bin_start[i+1]).

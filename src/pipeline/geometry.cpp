@@ -1,8 +1,10 @@
 // The geometry stage (see geometry.hpp).
 #include "pipeline/geometry.hpp"
 
+#include "facet/error.hpp"
 #include "pipeline/parallel.hpp"
 #include "pipeline/primitive.hpp"
+#include "pipeline/primitive_sink.hpp"
 #include "pipeline/vertex.hpp"
 
 namespace facet::pipeline {
@@ -12,19 +14,44 @@ namespace {
 // that a 70k-triangle model splits into dozens of tasks for the cores to share.
 constexpr std::size_t kChunkPrimitives = 2048;
 
-// Sizes a chunk's buffers for every primitive visible and unclipped, so that steady-state
-// frames never grow them (a clipped fan can still add a few; vectors then grow once).
-void reserve(GeometryChunk& chunk, const DrawRecord& draw) {
-  std::size_t n = chunk.end - chunk.begin;
-  bool lines = draw.pipeline.draws_edges || draw.mesh->topology == Topology::lines;
-  chunk.out.triangles.reserve(n);
-  chunk.out.planes.reserve(n * draw.pipeline.varyings);
-  chunk.out.sequence.reserve(lines ? 4 * n : n);
-  if (lines) chunk.out.lines.reserve(3 * n);
+// Makes v hold at least n elements. It never shrinks, so a frame that needs fewer primitives
+// than the last initializes nothing, and it grows by half again when a frame needs more than
+// any before, so animated scenes settle and then allocate nothing.
+template <class T>
+void ensure_size(std::vector<T>& v, std::size_t n) {
+  if (v.size() >= n) return;
+  if (v.capacity() < n) v.reserve(n + n / 2);
+  v.resize(n);
 }
 
-// Splits every draw into chunks, in draw order; returns how many.
-std::size_t plan_chunks(Frame& frame) {
+// Frame-wide totals of the chunks' regions (and then of what overflowed them).
+struct Totals {
+  std::size_t triangles = 0, planes = 0, lines = 0;
+};
+
+// Gives a chunk of n primitives of `draw` its regions: room for everything it sets up unless
+// clipping splits triangles (one triangle per triangle, three edges per wireframe triangle,
+// one segment per line), so only a fan's extra pieces can overflow.
+void plan_regions(GeometryChunk& chunk, const DrawRecord& draw, Totals& totals) {
+  const auto n = static_cast<std::uint32_t>(chunk.end - chunk.begin);
+  const bool line_mesh = draw.mesh->topology == Topology::lines;
+  const std::uint32_t triangles = !line_mesh && draw.pipeline.fills_triangles ? n : 0;
+  const std::uint32_t lines = line_mesh ? n : draw.pipeline.draws_edges ? 3 * n : 0;
+  chunk.triangles = {static_cast<std::uint32_t>(totals.triangles), triangles, 0};
+  chunk.planes_begin = static_cast<std::uint32_t>(totals.planes);
+  chunk.lines = {static_cast<std::uint32_t>(totals.lines), lines, 0};
+  totals.triangles += triangles;
+  totals.planes += std::size_t{triangles} * draw.pipeline.varyings;
+  totals.lines += lines;
+  chunk.overflow.clear();
+  chunk.sequence.clear();
+  chunk.sequence.reserve(triangles + lines);  // capacity kept across frames
+  chunk.counts = {};
+}
+
+// Splits every draw into chunks, in draw order, each with its regions of the frame's arrays.
+Totals plan_chunks(Frame& frame) {
+  Totals totals;
   std::size_t count = 0;
   for (std::uint32_t d : frame.draw_order) {
     std::size_t n = frame.draws[d].mesh->primitive_count();
@@ -34,71 +61,94 @@ std::size_t plan_chunks(Frame& frame) {
       chunk.draw = d;
       chunk.begin = begin;
       chunk.end = std::min(n, begin + kChunkPrimitives);
-      reserve(chunk, frame.draws[d]);
+      plan_regions(chunk, frame.draws[d], totals);
     }
   }
-  return count;
+  // Indices must stay clear of the sequence's flag bits (primitive_sink.hpp).
+  if (totals.triangles >= kOverflowBit || totals.lines >= kOverflowBit ||
+      totals.planes > UINT32_MAX) {
+    throw Error("renderer: too many primitives in one frame");
+  }
+  frame.chunk_count = count;
+  ensure_size(frame.triangles, totals.triangles);
+  ensure_size(frame.planes, totals.planes);
+  ensure_size(frame.lines, totals.lines);
+  return totals;
 }
 
-// Concatenates the chunks' primitives into the frame, fixing up indices.
-void merge_chunks(Frame& frame, std::size_t count, int workers) {
-  GeometryChunk::Offsets total;
-  for (std::size_t k = 0; k < count; ++k) {
-    const PrimitiveBuffer& out = frame.chunks[k].out;
-    frame.chunks[k].at = total;
-    total.triangles += out.triangles.size();
-    total.lines += out.lines.size();
-    total.planes += out.planes.size();
-    total.sequence += out.sequence.size();
-    frame.stats.culled += frame.chunks[k].counts.culled;
-    frame.stats.clipped += frame.chunks[k].counts.clipped;
+// Appends what overflowed the chunks' regions after all the regions, in chunk order, and
+// rewrites the sequence entries that pointed into the overflow buffers. Also sums the counts.
+void finish_chunks(Frame& frame, Totals end) {
+  std::size_t sequence_at = 0;
+  for (std::size_t k = 0; k < frame.chunk_count; ++k) {
+    GeometryChunk& chunk = frame.chunks[k];
+    chunk.sequence_at = sequence_at;
+    sequence_at += chunk.sequence.size();
+    frame.stats.culled += chunk.counts.culled;
+    frame.stats.clipped += chunk.counts.clipped;
+    frame.stats.drawn += chunk.triangles.used + chunk.overflow.triangles.size();
+    const PrimitiveBuffer& o = chunk.overflow;
+    if (o.triangles.empty() && o.lines.empty()) continue;
+    ensure_size(frame.triangles, end.triangles + o.triangles.size());
+    ensure_size(frame.planes, end.planes + o.planes.size());
+    ensure_size(frame.lines, end.lines + o.lines.size());
+    for (std::size_t i = 0; i < o.triangles.size(); ++i) {
+      SetupTriangle t = o.triangles[i];
+      t.varying_planes += static_cast<std::uint32_t>(end.planes);
+      frame.triangles[end.triangles + i] = t;
+    }
+    std::copy(o.planes.begin(), o.planes.end(), frame.planes.begin() + end.planes);
+    std::copy(o.lines.begin(), o.lines.end(), frame.lines.begin() + end.lines);
+    for (SequenceEntry& entry : chunk.sequence) {
+      std::uint32_t& e = entry.index;
+      if (!(e & kOverflowBit)) continue;
+      const std::uint32_t local = e & ~(kOverflowBit | kLineBit);
+      e = (e & kLineBit) ? static_cast<std::uint32_t>(end.lines + local) | kLineBit
+                         : static_cast<std::uint32_t>(end.triangles + local);
+    }
+    end.triangles += o.triangles.size();
+    end.planes += o.planes.size();
+    end.lines += o.lines.size();
   }
-  // Grow by half again when a frame needs more than any before, so animated scenes settle.
-  auto resize = [](auto& v, std::size_t n) {
-    if (v.capacity() < n) v.reserve(n + n / 2);
-    v.resize(n);
-  };
-  resize(frame.triangles, total.triangles);
-  resize(frame.lines, total.lines);
-  resize(frame.planes, total.planes);
-  resize(frame.sequence, total.sequence);
-  parallel_tasks(static_cast<int>(count), workers, [&](int k, int) {
-    const PrimitiveBuffer& out = frame.chunks[k].out;
-    const GeometryChunk::Offsets& at = frame.chunks[k].at;
-    for (std::size_t i = 0; i < out.triangles.size(); ++i) {
-      SetupTriangle t = out.triangles[i];
-      t.varying_planes += static_cast<std::uint32_t>(at.planes);
-      frame.triangles[at.triangles + i] = t;
-    }
-    std::copy(out.lines.begin(), out.lines.end(), frame.lines.begin() + at.lines);
-    std::copy(out.planes.begin(), out.planes.end(), frame.planes.begin() + at.planes);
-    for (std::size_t i = 0; i < out.sequence.size(); ++i) {
-      std::uint32_t e = out.sequence[i];
-      frame.sequence[at.sequence + i] =
-          (e & kLineBit) ? ((e & ~kLineBit) + static_cast<std::uint32_t>(at.lines)) | kLineBit
-                         : e + static_cast<std::uint32_t>(at.triangles);
-    }
-  });
+  frame.primitives = sequence_at;
 }
 
 }  // namespace
 
 void run_geometry(Frame& frame, int workers) {
-  frame.PrimitiveBuffer::clear();
   if (frame.vertices.size() < frame.draws.size()) frame.vertices.resize(frame.draws.size());
-  for (std::uint32_t d : frame.draw_order) {
+  const Totals totals = plan_chunks(frame);
+  // A small draw is one task, its vertex transform and then all its chunks, so that its
+  // vertices (about 160 bytes each) are still in the core's cache when its triangles read
+  // them. A big draw's vertices are transformed first, in parallel batches, and then its chunks
+  // are tasks of their own.
+  frame.geometry_tasks.clear();  // capacity kept across frames
+  for (std::uint32_t k = 0; k < frame.chunk_count;) {
+    const std::uint32_t d = frame.chunks[k].draw;
+    std::uint32_t end = k + 1;
+    while (end < frame.chunk_count && frame.chunks[end].draw == d) ++end;
     frame.stats.triangles_in += frame.draws[d].mesh->primitive_count();
-    transform_vertices(frame.draws[d], workers, frame.vertices[d]);
+    if (frame.draws[d].mesh->positions.size() <= kVertexBatch) {
+      frame.geometry_tasks.push_back({k, end, true});
+    } else {
+      transform_vertices(frame.draws[d], frame.width, frame.height, workers, frame.vertices[d]);
+      for (; k < end; ++k) frame.geometry_tasks.push_back({k, k + 1, false});
+    }
+    k = end;
   }
-  std::size_t count = plan_chunks(frame);
-  parallel_tasks(static_cast<int>(count), workers, [&](int k, int) {
-    GeometryChunk& chunk = frame.chunks[k];
-    chunk.out.clear();
-    chunk.counts = {};
-    assemble_primitives(frame, chunk.draw, chunk.begin, chunk.end, chunk.out, chunk.counts);
+  parallel_tasks(static_cast<int>(frame.geometry_tasks.size()), workers, [&](int i, int) {
+    const Frame::GeometryTask& task = frame.geometry_tasks[i];
+    const std::uint32_t d = frame.chunks[task.first_chunk].draw;
+    if (task.transform) {
+      transform_vertices(frame.draws[d], frame.width, frame.height, workers, frame.vertices[d]);
+    }
+    for (std::uint32_t k = task.first_chunk; k < task.end_chunk; ++k) {
+      GeometryChunk& chunk = frame.chunks[k];
+      PrimitiveSink sink(frame, chunk, frame.draws[d].pipeline.varyings);
+      assemble_primitives(frame, d, chunk.begin, chunk.end, sink, chunk.counts);
+    }
   });
-  merge_chunks(frame, count, workers);
-  frame.stats.drawn = frame.triangles.size();
+  finish_chunks(frame, totals);
 }
 
 }  // namespace facet::pipeline

@@ -9,19 +9,15 @@
 namespace facet::pipeline {
 namespace {
 
-bool finite(const glm::vec4& c) {
-  return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && std::isfinite(c.w);
-}
-
 struct Assembler {
-  PrimitiveBuffer& out;
+  PrimitiveSink& out;
   PrimitiveCounts& counts;
   int width, height;
   std::uint32_t draw_index;
   const DrawRecord& draw;
-  const std::vector<ClipVertex>& vertices;
-  ClipBounds frustum{1.0f, 1.0f};
+  const DrawVertices& vertices;
   ClipBounds guard;
+  bool hooks = has_triangle_hooks(draw);
 
   bool cull(bool front_facing) const {
     switch (draw.material.cull) {
@@ -57,16 +53,18 @@ struct Assembler {
   }
 
   void triangle(std::uint32_t i0, std::uint32_t i1, std::uint32_t i2) {
-    // Culling reads the shared vertices in place: most rejected triangles (facing away, off
-    // screen) never pay for copying their varyings.
-    const ClipVertex* in[3] = {&vertices[i0], &vertices[i1], &vertices[i2]};
-    if (!finite(in[0]->clip) || !finite(in[1]->clip) || !finite(in[2]->clip)) {
+    // Culling reads the vertices' projections (outcodes, facing inputs) in place: most
+    // rejected triangles (facing away, off screen) never touch their varyings.
+    const ProjectedVertex* p[3] = {&vertices.projected[i0], &vertices.projected[i1],
+                                   &vertices.projected[i2]};
+    const unsigned code0 = p[0]->codes, code1 = p[1]->codes, code2 = p[2]->codes;
+    if ((code0 | code1 | code2) & kNotFinite) {
       ++counts.culled;  // NaN/Inf positions: skipped, never rasterized
       return;
     }
-    unsigned out0 = outcode(in[0]->clip, frustum), out1 = outcode(in[1]->clip, frustum),
-             out2 = outcode(in[2]->clip, frustum);
-    double orientation = homogeneous_orientation(in[0]->clip, in[1]->clip, in[2]->clip);
+    const unsigned frustum_mask = (1u << kClipPlaneCount) - 1;
+    unsigned out0 = code0 & frustum_mask, out1 = code1 & frustum_mask, out2 = code2 & frustum_mask;
+    double orientation = homogeneous_orientation(*p[0], *p[1], *p[2]);
     bool front_facing = orientation > 0.0;
     // Trivial reject: all three outside one frustum plane. Zero orientation: degenerate.
     if ((out0 & out1 & out2) || orientation == 0.0 || cull(front_facing)) {
@@ -74,6 +72,7 @@ struct Assembler {
       return;
     }
     const DrawPipeline& pipe = draw.pipeline;
+    const ClipVertex* in[3] = {&vertices.clip[i0], &vertices.clip[i1], &vertices.clip[i2]};
     if (pipe.draws_edges) {
       for (int i = 0; i < 3; ++i)
         edge(in[i]->clip, in[(i + 1) % 3]->clip, draw.uniforms.wire_color);
@@ -85,15 +84,14 @@ struct Assembler {
     unsigned any_out = out0 | out1 | out2;
     unsigned planes = any_out & (kClipNear | kClipFar);
     if (any_out & (kClipLeft | kClipRight | kClipBottom | kClipTop)) {
-      planes =
-          outcode(in[0]->clip, guard) | outcode(in[1]->clip, guard) | outcode(in[2]->clip, guard);
+      planes = (code0 | code1 | code2) >> kGuardCodeShift & frustum_mask;
     }
-    bool no_normals = draw.mesh->normals.empty();
-    bool fill_normal = pipe.normal_slot >= 0 && no_normals;
-    DrawPipeline::FaceFn face =
-        pipe.face ? pipe.face : (no_normals ? pipe.face_without_normals : nullptr);
-    if (planes == 0 && !fill_normal && !face) {  // the common case: nothing to rewrite
-      if (!setup_triangle(out, width, height, draw_index, in, pipe.varyings, front_facing))
+    if (planes == 0 && !hooks) {  // the common case: set up from the projected vertices
+      const ScreenVertex s[3] = {p[0]->screen, p[1]->screen, p[2]->screen};
+      const int n = pipe.varyings;
+      const float* over_w[3] = {vertices.over_w.data() + i0 * n, vertices.over_w.data() + i1 * n,
+                                vertices.over_w.data() + i2 * n};
+      if (!setup_projected_triangle(out, width, height, draw_index, s, over_w, n, front_facing))
         ++counts.culled;
       return;
     }
@@ -103,6 +101,8 @@ struct Assembler {
     polygon.count = 3;
     ClipVertex* v = polygon.vertices;
     for (int i = 0; i < 3; ++i) v[i] = *in[i];
+    const bool fill_normal = fills_face_normal(draw);
+    const DrawPipeline::FaceFn face = face_hook(draw);
     if (fill_normal || face) {
       glm::vec3 n = face_normal(i0, i1, i2);
       if (fill_normal) {
@@ -131,26 +131,19 @@ struct Assembler {
   }
 
   void line(std::uint32_t i0, std::uint32_t i1) {
-    const glm::vec4& a = vertices[i0].clip;
-    const glm::vec4& b = vertices[i1].clip;
-    if (!finite(a) || !finite(b) || (outcode(a, frustum) & outcode(b, frustum))) {
+    const unsigned code0 = vertices.projected[i0].codes, code1 = vertices.projected[i1].codes;
+    if (((code0 | code1) & kNotFinite) || (code0 & code1 & ((1u << kClipPlaneCount) - 1))) {
       ++counts.culled;
       return;
     }
-    edge(a, b, draw.uniforms.base_color);
+    edge(vertices.clip[i0].clip, vertices.clip[i1].clip, draw.uniforms.base_color);
   }
 };
 
 }  // namespace
 
-double homogeneous_orientation(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c) {
-  // det | ax ay aw ; bx by bw ; cx cy cw |, equal to aw*bw*cw times twice the NDC area.
-  double ax = a.x, ay = a.y, aw = a.w, bx = b.x, by = b.y, bw = b.w, cx = c.x, cy = c.y, cw = c.w;
-  return ax * (by * cw - bw * cy) - ay * (bx * cw - bw * cx) + aw * (bx * cy - by * cx);
-}
-
 void assemble_primitives(const Frame& frame, std::uint32_t draw_index, std::size_t begin,
-                         std::size_t end, PrimitiveBuffer& out, PrimitiveCounts& counts) {
+                         std::size_t end, PrimitiveSink& out, PrimitiveCounts& counts) {
   const DrawRecord& draw = frame.draws[draw_index];
   const Mesh& mesh = *draw.mesh;
   Assembler assembler{out,
@@ -160,7 +153,6 @@ void assemble_primitives(const Frame& frame, std::uint32_t draw_index, std::size
                       draw_index,
                       draw,
                       frame.vertices[draw_index],
-                      {1.0f, 1.0f},
                       guard_band_bounds(frame.width, frame.height)};
   auto index = [&](std::size_t i) {
     return mesh.indices.empty() ? static_cast<std::uint32_t>(i) : mesh.indices[i];

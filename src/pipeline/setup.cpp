@@ -8,111 +8,23 @@
 #include "pipeline/fixed_point.hpp"
 
 namespace facet::pipeline {
-namespace {
-
-// Pixels whose centre may be covered by something spanning [lo, hi] (fixed point):
-// first centre >= lo and last centre <= hi.
-int first_centre_at_or_after(std::int64_t lo) {
-  return static_cast<int>(floor_div(lo - kHalfPixel + kSubpixelScale - 1, kSubpixelScale));
-}
-int last_centre_at_or_before(std::int64_t hi) {
-  return static_cast<int>(floor_div(hi - kHalfPixel, kSubpixelScale));
-}
-
-}  // namespace
-
-ScreenVertex to_screen(const glm::vec4& clip, int width, int height) {
-  float inv_w = 1.0f / clip.w;
-  float ndc_x = clip.x * inv_w;
-  float ndc_y = clip.y * inv_w;
-  float ndc_z = clip.z * inv_w;
-  float sx = (ndc_x * 0.5f + 0.5f) * static_cast<float>(width);
-  float sy = (0.5f - ndc_y * 0.5f) * static_cast<float>(height);
-  return {snap(sx), snap(sy), ndc_z * 0.5f + 0.5f, inv_w};
-}
-
-PlaneSolver::PlaneSolver(const float x[3], const float y[3])
-    : x1_(double{x[1]} - x[0]),
-      y1_(double{y[1]} - y[0]),
-      x2_(double{x[2]} - x[0]),
-      y2_(double{y[2]} - y[0]),
-      inv_det_(1.0 / (x1_ * y2_ - x2_ * y1_)) {}
-
-Plane PlaneSolver::plane(const float value[3]) const {
-  double v1 = double{value[1]} - value[0], v2 = double{value[2]} - value[0];
-  Plane p;
-  p.at_ref = value[0];
-  p.dx = static_cast<float>((v1 * y2_ - v2 * y1_) * inv_det_);
-  p.dy = static_cast<float>((v2 * x1_ - v1 * x2_) * inv_det_);
-  return p;
-}
-
 Plane make_plane(const float x[3], const float y[3], const float value[3]) {
   return PlaneSolver(x, y).plane(value);
 }
 
-bool setup_triangle(PrimitiveBuffer& out, int width, int height, std::uint32_t draw,
+bool setup_triangle(PrimitiveSink& out, int width, int height, std::uint32_t draw,
                     const ClipVertex* const v[3], int varyings, bool front_facing) {
   ScreenVertex s[3];
-  int order[3] = {0, 1, 2};
-  for (int i = 0; i < 3; ++i) s[i] = to_screen(v[i]->clip, width, height);
-  std::int64_t area = signed_area(s[0], s[1], s[2]);
-  // Degenerate after snapping, or snapping flipped a sliver: no pixel centres to cover.
-  if (area == 0 || (area < 0) != front_facing) return false;
-  if (area < 0) {  // make the winding clockwise on screen (positive area) for the edge tests
-    std::swap(s[1], s[2]);
-    std::swap(order[1], order[2]);
-  }
-
-  SetupTriangle t;
-  std::int64_t min_x = std::min({s[0].x, s[1].x, s[2].x}),
-               max_x = std::max({s[0].x, s[1].x, s[2].x});
-  std::int64_t min_y = std::min({s[0].y, s[1].y, s[2].y}),
-               max_y = std::max({s[0].y, s[1].y, s[2].y});
-  t.min_x = std::max(0, first_centre_at_or_after(min_x));
-  t.min_y = std::max(0, first_centre_at_or_after(min_y));
-  t.max_x = std::min(width - 1, last_centre_at_or_before(max_x));
-  t.max_y = std::min(height - 1, last_centre_at_or_before(max_y));
-  if (t.min_x > t.max_x || t.min_y > t.max_y) return false;
-
+  float over_w[3][kMaxVaryings];
   for (int i = 0; i < 3; ++i) {
-    const ScreenVertex& p = s[i];
-    const ScreenVertex& q = s[(i + 1) % 3];
-    // E(X, Y) = (qx - px)(Y - py) - (qy - py)(X - px): positive inside a clockwise triangle.
-    t.a[i] = p.y - q.y;
-    t.b[i] = q.x - p.x;
-    const std::int64_t bias = is_top_left(q.x - p.x, q.y - p.y) ? 0 : -1;
-    t.c[i] = -(std::int64_t{t.a[i]} * p.x + std::int64_t{t.b[i]} * p.y) + bias;
+    s[i] = to_screen(v[i]->clip, width, height);
+    for (int k = 0; k < varyings; ++k) over_w[i][k] = v[i]->varyings[k] * s[i].inv_w;
   }
-
-  float px[3], py[3], z[3], inv_w[3];
-  for (int i = 0; i < 3; ++i) {
-    px[i] = static_cast<float>(s[i].x) / kSubpixelScale;
-    py[i] = static_cast<float>(s[i].y) / kSubpixelScale;
-    z[i] = s[i].z;
-    inv_w[i] = s[i].inv_w;
-  }
-  t.ref_x = px[0];
-  t.ref_y = py[0];
-  const PlaneSolver solver(px, py);
-  t.z = solver.plane(z);
-  t.inv_w = solver.plane(inv_w);
-  const std::size_t first_plane = out.planes.size();
-  t.varying_planes = static_cast<std::uint32_t>(first_plane);
-  out.planes.resize(first_plane + varyings);  // capacity kept across frames: no allocation
-  Plane* planes = out.planes.data() + first_plane;
-  for (int k = 0; k < varyings; ++k) {
-    float value[3];
-    for (int i = 0; i < 3; ++i) value[i] = v[order[i]]->varyings[k] * inv_w[i];
-    planes[k] = solver.plane(value);
-  }
-  t.draw = draw;
-  out.sequence.push_back(static_cast<std::uint32_t>(out.triangles.size()));
-  out.triangles.push_back(t);
-  return true;
+  const float* values[3] = {over_w[0], over_w[1], over_w[2]};
+  return setup_projected_triangle(out, width, height, draw, s, values, varyings, front_facing);
 }
 
-bool setup_line(PrimitiveBuffer& out, int width, int height, const glm::vec4& a, const glm::vec4& b,
+bool setup_line(PrimitiveSink& out, int width, int height, const glm::vec4& a, const glm::vec4& b,
                 const glm::vec4& color) {
   ScreenVertex s0 = to_screen(a, width, height);
   ScreenVertex s1 = to_screen(b, width, height);
@@ -126,8 +38,7 @@ bool setup_line(PrimitiveBuffer& out, int width, int height, const glm::vec4& a,
   l.max_y = std::min(height - 1, static_cast<int>(floor_div(std::max(l.y0, l.y1), kSubpixelScale)));
   if (l.min_x > l.max_x || l.min_y > l.max_y) return false;
   l.color = color;
-  out.sequence.push_back(static_cast<std::uint32_t>(out.lines.size()) | kLineBit);
-  out.lines.push_back(l);
+  out.add_line(l.min_x, l.min_y, l.max_x, l.max_y) = l;
   return true;
 }
 

@@ -3,50 +3,88 @@
 
 #include <algorithm>
 
+#include "pipeline/clip.hpp"
 #include "pipeline/parallel.hpp"
+#include "pipeline/setup.hpp"
+#include "pipeline/vertex_pass.hpp"
 
 namespace facet::pipeline {
 namespace {
 
-// Vertices per task: big enough to amortise scheduling, small enough to balance 2-8 cores.
-constexpr std::size_t kVertexBatch = 4096;
-
-void transform_range(const DrawRecord& draw, std::size_t begin, std::size_t end, ClipVertex* out) {
+void transform_range(const DrawRecord& draw, const VertexPassInput& pass_input, std::size_t begin,
+                     std::size_t end, DrawVertices& out) {
   const Mesh& mesh = *draw.mesh;
   const shading::DrawUniforms& u = draw.uniforms;
-  bool has_normals = !mesh.normals.empty();
   bool has_colors = !mesh.colors.empty();
   bool has_texcoords = !mesh.texcoords.empty();
   bool has_tangents = !mesh.tangents.empty();
   glm::mat3 model3(u.model);
-  for (std::size_t i = begin; i < end; ++i) {
-    shading::VertexInput in;
-    in.position = mesh.positions[i];
-    in.normal = has_normals ? u.normal_matrix * mesh.normals[i] : glm::vec3(0.0f);
-    float length = glm::length(in.normal);
-    if (length > 0.0f) in.normal /= length;
-    in.color = has_colors ? mesh.colors[i] : glm::vec4(1.0f);
-    in.texcoord = has_texcoords ? mesh.texcoords[i] : glm::vec2(0.0f);
-    in.tangent = has_tangents ? glm::vec4(model3 * glm::vec3(mesh.tangents[i]), mesh.tangents[i].w)
-                              : glm::vec4(0.0f);
-    out[i].clip = u.model_view_projection * glm::vec4(in.position, 1.0f);
-    draw.pipeline.vertex(in, u, out[i].varyings);
+  const int varyings = draw.pipeline.varyings;
+  float* over_w = out.over_w.empty() ? nullptr : out.over_w.data();
+  VertexPass pass;
+  for (std::size_t first = begin; first < end; first += kVertexPass) {
+    const std::size_t count = std::min(kVertexPass, end - first);
+    // First, several vertices at a time, all that needs no shading model.
+    run_vertex_pass(pass_input, first, count, pass);
+    for (std::size_t j = 0; j < count; ++j) {
+      const std::size_t i = first + j;
+      ClipVertex& v = out.clip[i];
+      v.clip = {pass.x[j], pass.y[j], pass.z[j], pass.w[j]};
+      ProjectedVertex& p = out.projected[i];
+      p.clip_x = pass.x[j], p.clip_y = pass.y[j], p.clip_w = pass.w[j];
+      p.codes = pass.codes[j] & ~kScalarScreen;
+      p.screen = (pass.codes[j] & kScalarScreen)
+                     ? to_screen(v.clip, pass_input.width, pass_input.height)
+                     : ScreenVertex{pass.sx[j], pass.sy[j], pass.depth[j], pass.inv_w[j]};
+
+      shading::VertexInput in;
+      in.position = mesh.positions[i];
+      in.normal = {pass.nx[j], pass.ny[j], pass.nz[j]};
+      in.color = has_colors ? mesh.colors[i] : glm::vec4(1.0f);
+      in.texcoord = has_texcoords ? mesh.texcoords[i] : glm::vec2(0.0f);
+      in.tangent = has_tangents
+                       ? glm::vec4(model3 * glm::vec3(mesh.tangents[i]), mesh.tangents[i].w)
+                       : glm::vec4(0.0f);
+      draw.pipeline.vertex(in, u, v.varyings);
+    }
+    // What setup's planes pass through (perspective-correct interpolation of v / w). A loop of
+    // its own: read right after the shading model's narrow stores, the varyings' vector loads
+    // would stall on store forwarding.
+    for (std::size_t i = first; over_w && i < first + count; ++i) {
+      const float inv_w = out.projected[i].screen.inv_w;
+      const float* v = out.clip[i].varyings;
+      float* o = over_w + i * varyings;
+      for (int k = 0; k < varyings; ++k) o[k] = v[k] * inv_w;
+    }
   }
 }
 
 }  // namespace
 
-void transform_vertices(const DrawRecord& draw, int workers, std::vector<ClipVertex>& out) {
+void transform_vertices(const DrawRecord& draw, int width, int height, int workers,
+                        DrawVertices& out) {
   std::size_t count = draw.mesh->positions.size();
-  out.resize(count);
+  out.clip.resize(count);
+  out.projected.resize(count);
+  // Only setup's fast path reads over_w, and it never runs for draws with hooks.
+  out.over_w.resize(has_triangle_hooks(draw) ? 0 : count * draw.pipeline.varyings);
+  const Mesh& mesh = *draw.mesh;
+  const VertexPassInput to{mesh.positions.data(),
+                           mesh.normals.empty() ? nullptr : mesh.normals.data(),
+                           draw.uniforms.model_view_projection,
+                           draw.uniforms.normal_matrix,
+                           width,
+                           height,
+                           {1.0f, 1.0f},
+                           guard_band_bounds(width, height)};
   if (count <= kVertexBatch) {
-    transform_range(draw, 0, count, out.data());
+    transform_range(draw, to, 0, count, out);
     return;
   }
   int batches = static_cast<int>((count + kVertexBatch - 1) / kVertexBatch);
   parallel_tasks(batches, workers, [&](int batch, int) {
     std::size_t begin = batch * kVertexBatch;
-    transform_range(draw, begin, std::min(count, begin + kVertexBatch), out.data());
+    transform_range(draw, to, begin, std::min(count, begin + kVertexBatch), out);
   });
 }
 

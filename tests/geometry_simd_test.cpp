@@ -1,0 +1,154 @@
+// The geometry stage's SIMD kernels (vertex_pass.cpp, setup_planes.cpp) give the scalar code's
+// values bit for bit on every SIMD target, including the awkward inputs: snapping ties and
+// near-ties, zero and non-finite normals and positions, vertices far outside the guard band.
+#include <gtest/gtest.h>
+#include <hwy/targets.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "pipeline/clip.hpp"
+#include "pipeline/setup.hpp"
+#include "pipeline/vertex_pass.hpp"
+
+namespace facet::test {
+namespace {
+
+using pipeline::kScalarScreen;
+
+bool same_bits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// Random positions and normals with some special values mixed in.
+std::vector<glm::vec3> awkward_vectors(std::mt19937& rng, std::size_t n) {
+  std::uniform_real_distribution<float> coordinate(-3.0f, 3.0f);
+  const float specials[] = {0.0f,
+                            -0.0f,
+                            1e-30f,
+                            1e30f,
+                            -1e30f,
+                            std::numeric_limits<float>::infinity(),
+                            std::numeric_limits<float>::quiet_NaN(),
+                            0.49999997f,
+                            0.5f,
+                            2.5f};
+  std::vector<glm::vec3> v(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int k = 0; k < 3; ++k) {
+      v[i][k] = rng() % 16 == 0 ? specials[rng() % std::size(specials)] : coordinate(rng);
+    }
+  }
+  return v;
+}
+
+TEST(GeometrySimd, VertexPassMatchesTheScalarCodeOnEveryTarget) {
+  std::mt19937 rng(7);
+  const std::size_t n = 1000;
+  std::vector<glm::vec3> positions = awkward_vectors(rng, n);
+  std::vector<glm::vec3> normals = awkward_vectors(rng, n);
+  // Screen points landing on and next to snapping ties: x such that the pixel coordinate
+  // times 256 is k + 0.5 or a float step away.
+  // Pixels next to the left edge (x * 256 below 1, where rounding by adding 0.5 goes wrong) and
+  // a run of consecutive floats there, through snapping ties and near-ties.
+  for (std::size_t i = 0; i < 128; ++i) {
+    positions[i] = {std::nextafter(-2.2233334f, 0.0f) + static_cast<float>(i) * 2e-7f, 0.0f, 0.0f};
+  }
+  positions[200] = {0.0f, 0.0f, 2.0f};  // w = 0
+  glm::mat4 mvp = glm::mat4(1.0f);
+  mvp[0][0] = 0.9f, mvp[1][1] = 1.3f, mvp[2][2] = -1.02f, mvp[2][3] = -1.0f, mvp[3][2] = -0.2f;
+  mvp[3][3] = 2.0f, mvp[3][0] = 0.001f;
+  glm::mat3 normal_matrix(0.8f, 0.1f, -0.2f, 0.3f, 1.1f, 0.05f, -0.4f, 0.2f, 0.9f);
+  const int width = 641, height = 479;
+  pipeline::VertexPassInput in{positions.data(),
+                               normals.data(),
+                               mvp,
+                               normal_matrix,
+                               width,
+                               height,
+                               {1.0f, 1.0f},
+                               pipeline::guard_band_bounds(width, height)};
+
+  for (std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+    hwy::SetSupportedTargetsForTest(target);
+    for (std::size_t first = 0; first < n; first += pipeline::kVertexPass) {
+      const std::size_t count = std::min(pipeline::kVertexPass, n - first);
+      pipeline::VertexPass pass;
+      pipeline::run_vertex_pass(in, first, count, pass);
+      for (std::size_t j = 0; j < count; ++j) {
+        const std::size_t i = first + j;
+        const glm::vec4 clip = mvp * glm::vec4(positions[i], 1.0f);
+        glm::vec3 normal = normal_matrix * normals[i];
+        const float length = glm::length(normal);
+        if (length > 0.0f) normal /= length;
+        const std::string where =
+            std::string(hwy::TargetName(target)) + " vertex " + std::to_string(i);
+        const float simd_normal[3] = {pass.nx[j], pass.ny[j], pass.nz[j]};
+        for (int k = 0; k < 3; ++k) {
+          ASSERT_TRUE(same_bits(simd_normal[k], normal[k]) ||
+                      (std::isnan(simd_normal[k]) && std::isnan(normal[k])))
+              << where << " normal " << k;
+        }
+        ASSERT_TRUE(same_bits(pass.x[j], clip.x) && same_bits(pass.y[j], clip.y) &&
+                    same_bits(pass.z[j], clip.z) && same_bits(pass.w[j], clip.w))
+            << where;
+        const pipeline::ClipBounds frustum{1.0f, 1.0f};
+        const std::uint32_t codes = pipeline::outcode(clip, frustum) |
+                                    pipeline::outcode(clip, in.guard) << pipeline::kGuardCodeShift |
+                                    (std::isfinite(clip.x) && std::isfinite(clip.y) &&
+                                             std::isfinite(clip.z) && std::isfinite(clip.w)
+                                         ? 0u
+                                         : pipeline::kNotFinite);
+        ASSERT_EQ(pass.codes[j] & ~kScalarScreen, codes) << where;
+        if (pass.codes[j] & kScalarScreen) continue;  // vertex.cpp calls to_screen for these
+        const pipeline::ScreenVertex s = pipeline::to_screen(clip, width, height);
+        ASSERT_EQ(pass.sx[j], s.x) << where;
+        ASSERT_EQ(pass.sy[j], s.y) << where;
+        ASSERT_TRUE(same_bits(pass.depth[j], s.z) || std::isnan(s.z)) << where;
+        ASSERT_TRUE(same_bits(pass.inv_w[j], s.inv_w)) << where;
+      }
+    }
+  }
+  hwy::SetSupportedTargetsForTest(0);
+}
+
+TEST(GeometrySimd, PlanesMatchTheScalarPlaneOnEveryTarget) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> pixel(0.0f, 2000.0f), value(-2.0f, 2.0f);
+  for (std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+    hwy::SetSupportedTargetsForTest(target);
+    for (int t = 0; t < 2000; ++t) {
+      // Snapped positions (multiples of 1/256), some triangles slivers.
+      float x[3], y[3];
+      for (int i = 0; i < 3; ++i) {
+        x[i] = std::round(pixel(rng) * 256.0f) / 256.0f;
+        y[i] = std::round(pixel(rng) * 256.0f) / 256.0f;
+        if (t % 3 == 0 && i > 0) y[i] = y[0] + static_cast<float>(i) / 256.0f;  // slivers
+      }
+      const pipeline::PlaneSolver solver(x, y);
+      float values[3][pipeline::kMaxVaryings];
+      for (auto& vertex : values) {
+        for (float& v : vertex) v = rng() % 8 == 0 ? value(rng) * 3e38f : value(rng);
+      }
+      const float* rows[3] = {values[0], values[1], values[2]};
+      for (int count : {0, 1, 2, 3, 4, 6, 12, 16}) {
+        pipeline::Plane planes[pipeline::kMaxVaryings];
+        solver.planes(rows, count, planes);
+        for (int k = 0; k < count; ++k) {
+          const pipeline::Plane expected = solver.plane(values[0][k], values[1][k], values[2][k]);
+          ASSERT_TRUE(same_bits(planes[k].at_ref, expected.at_ref) &&
+                      (same_bits(planes[k].dx, expected.dx) ||
+                       (std::isnan(planes[k].dx) && std::isnan(expected.dx))) &&
+                      (same_bits(planes[k].dy, expected.dy) ||
+                       (std::isnan(planes[k].dy) && std::isnan(expected.dy))))
+              << hwy::TargetName(target) << " triangle " << t << " plane " << k << " of " << count;
+        }
+      }
+    }
+  }
+  hwy::SetSupportedTargetsForTest(0);
+}
+
+}  // namespace
+}  // namespace facet::test

@@ -73,11 +73,11 @@ constexpr int base_color_texcoord() {
   return -1;
 }
 
-// Models with kBatchModel are shaded a batch of pixels at a time with SIMD when the draw
-// allows (shading/shade_batch.hpp).
+// Models with fragment_batch are shaded a batch of pixels at a time with SIMD when their
+// batch_shades accepts the draw (shading/shade_batch.hpp).
 template <class Shading>
 constexpr bool batch_shaded() {
-  return requires { Shading::kBatchModel; };
+  return requires { &Shading::fragment_batch; };
 }
 
 // Covered pixels of one triangle that passed the depth test, packed, waiting to be shaded: a
@@ -212,7 +212,7 @@ class PixelWriter {
     if constexpr (kTexcoordSlot >= 0) {
       if (uniforms_.material->base_color_map) base_map_ = &uniforms_.material->base_color_map;
     }
-    if constexpr (batch_shaded<Shading>()) batch_ = shading::batch_shades(uniforms_);
+    if constexpr (batch_shaded<Shading>()) batch_ = Shading::batch_shades(uniforms_);
   }
 
   // Shades the packed pixels and writes them; returns how many were written (the alpha test
@@ -237,8 +237,8 @@ class PixelWriter {
       if (batch_) {
         pixels.pad(Shading::kVaryings);
         alignas(64) float colors[PackedPixels::kCapacity][4];
-        shading::shade_batch(Shading::kBatchModel, uniforms_,
-                             {pixels.count, pixels.w, pixels.v, texels, batch_fog()}, colors);
+        Shading::fragment_batch(uniforms_, {pixels.count, pixels.w, pixels.v, texels, batch_fog()},
+                                colors);
         for (int n = 0; n < pixels.count; ++n) {
           const float* c = colors[n];
           written += store<kBatchFogs>(pixels.x[n], pixels.y[n], pixels.z[n], pixels.w[n],
@@ -283,8 +283,7 @@ class PixelWriter {
         }
       }
       alignas(64) float colors[kBlockPixels][4];
-      shading::shade_batch(Shading::kBatchModel, uniforms_,
-                           {kBlockPixels, block.w, block.v, texels, &fog_}, colors);
+      Shading::fragment_batch(uniforms_, {kBlockPixels, block.w, block.v, texels, &fog_}, colors);
       const std::ptrdiff_t first =
           static_cast<std::ptrdiff_t>(block_y - tile_.y0) * tile_.stride + (block_x - tile_.x0);
       for (int row = 0; row < kBlockSize; ++row) {

@@ -25,8 +25,8 @@ inline constexpr float kHighest = 127.5f;  // from here: +inf
 }  // namespace fog_exp_constants
 
 // e^x to within (2e-7 + 1e-7 |x|) relative for results in the normal range (x log2 e is
-// rounded to float first); 0 below it, +inf above, NaN for NaN. Reduction: x log2(e) = n + f with n whole and |f| <= 0.5; 2^n is built in the
-// exponent bits.
+// rounded to float first); 0 below it, +inf above, NaN for NaN. Reduction: x log2(e) = n + f with n
+// whole and |f| <= 0.5; 2^n is built in the exponent bits.
 inline float fog_exp(float x) {
   using namespace fog_exp_constants;
   const float t = x * kLog2E;

@@ -12,8 +12,9 @@
 //   kBaseColorTexcoord  optional: the slot of the texture coordinate the base color map is
 //                   read at, through base_color_texel(); the raster loop then samples the map
 //                   for a batch of pixels at once (SIMD) before calling fragment()
-//   kBatchModel     optional: the SIMD form of fragment() in shade_batch.cpp (same bits),
-//                   which the raster loop uses for the draws it covers
+//   batch_shades(uniforms), fragment_batch(uniforms, input, rgba)  optional: the SIMD form
+//                   of fragment() (same bits, fog included), which the raster loop uses for
+//                   the draws batch_shades accepts (shade_batch.hpp's BatchForm)
 // Lit models with textures are in lit_models.hpp. Per-draw options (is there a base color
 // map? which fog?) are plain branches on per-draw constants: always predicted the same way,
 // where template flags for each would multiply the raster loops.
@@ -54,11 +55,10 @@ inline glm::vec4 display_value(glm::vec3 shown) {
 }
 
 // base color x vertex color x base color map, no lighting.
-struct UnlitShading {
+struct UnlitShading : BatchForm<BatchModel::unlit> {
   static constexpr int kVaryings = kUnlitVaryings;
   static constexpr int kNormalSlot = -1;
   static constexpr int kBaseColorTexcoord = kTexcoordSlot;
-  static constexpr BatchModel kBatchModel = BatchModel::unlit;
   static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
     surface_vertex<kVaryings>(in, u, out);
   }
@@ -96,11 +96,10 @@ struct FlatShading {
 };
 
 // Per-pixel Lambert: the interpolated normal is renormalized and lit at each pixel.
-struct LambertShading {
+struct LambertShading : BatchForm<BatchModel::lambert> {
   static constexpr int kVaryings = kSurfaceVaryings;
   static constexpr int kNormalSlot = shading::kNormalSlot;
   static constexpr int kBaseColorTexcoord = kTexcoordSlot;
-  static constexpr BatchModel kBatchModel = BatchModel::lambert;
   static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
     surface_vertex<kVaryings>(in, u, out);
   }

@@ -14,6 +14,7 @@
 #include <cstring>
 #include <limits>
 
+#include "shading/batch_math-inl.h"
 #include "shading/fog_exp.hpp"
 #include "shading/surface.hpp"
 
@@ -21,34 +22,8 @@ HWY_BEFORE_NAMESPACE();
 namespace facet::shading::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-// Eight lanes at most, as in texel_batch.cpp: batches are often a few pixels.
-using FloatTag = hn::CappedTag<float, 8>;
-using FloatV = hn::Vec<FloatTag>;
-
-struct Vec3V {
-  FloatV x, y, z;
-};
-
-HWY_INLINE Vec3V Load3(const float (*v)[kShadeBatch], int slot, int j) {
-  const FloatTag d;
-  return {hn::Load(d, v[slot] + j), hn::Load(d, v[slot + 1] + j), hn::Load(d, v[slot + 2] + j)};
-}
-
-// glm::dot: (x*x' + y*y') + z*z'.
-HWY_INLINE FloatV Dot(const Vec3V& a, const Vec3V& b) {
-  return hn::Add(hn::Add(hn::Mul(a.x, b.x), hn::Mul(a.y, b.y)), hn::Mul(a.z, b.z));
-}
-
-// safe_normalize(): v * (1 / sqrt(|v|^2)), or zero where |v|^2 is not positive.
-HWY_INLINE Vec3V SafeNormalize(const Vec3V& v) {
-  const FloatTag d;
-  const FloatV length_squared = Dot(v, v);
-  const auto positive = hn::Gt(length_squared, hn::Zero(d));
-  const FloatV inverse = hn::Div(hn::Set(d, 1.0f), hn::Sqrt(length_squared));
-  return {hn::IfThenElseZero(positive, hn::Mul(v.x, inverse)),
-          hn::IfThenElseZero(positive, hn::Mul(v.y, inverse)),
-          hn::IfThenElseZero(positive, hn::Mul(v.z, inverse))};
-}
+using FloatTag = BatchTag;
+using FloatV = BatchV;
 
 // The base color: material x vertex color (the color slots), times the map's texel if any.
 struct Albedo {
@@ -133,7 +108,6 @@ void ShadeBatch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, f
                               hn::Set(d, m.emissive.z)};
   const bool two_sided = m.cull == CullMode::none;
   const Vec3V eye{hn::Set(d, u.eye.x), hn::Set(d, u.eye.y), hn::Set(d, u.eye.z)};
-  alignas(32) float out[4 * 8];
   for (int j = 0; j < in.count; j += lanes) {
     const Albedo albedo = LoadAlbedo(in, j);
     FloatV color[4];
@@ -160,9 +134,7 @@ void ShadeBatch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, f
     if (in.fog != nullptr && in.fog->mode != FogMode::none) {
       Fogged(*in.fog, hn::Load(d, in.w + j), color);
     }
-    hn::StoreInterleaved4(color[0], color[1], color[2], color[3], d, out);
-    const int active = std::min(lanes, in.count - j);
-    std::memcpy(rgba[j], out, sizeof(float) * 4 * active);
+    StoreColors(color, in.count - j, rgba + j);
   }
 }
 

@@ -32,4 +32,15 @@ bool batch_shades(const DrawUniforms& u);
 // Linear RGBA of every pixel, as the model's fragment() gives it (then fogged, if in.fog).
 void shade_batch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]);
 
+// What a shading model provides to be shaded a batch at a time (models.hpp; the raster loop,
+// pipeline/raster.hpp, looks for these two): whether it can take this draw, and the batch
+// form of fragment(), which also applies in.fog. The built-in models get them from here.
+template <BatchModel kModel>
+struct BatchForm {
+  static bool batch_shades(const DrawUniforms& u) { return shading::batch_shades(u); }
+  static void fragment_batch(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
+    shade_batch(kModel, u, in, rgba);
+  }
+};
+
 }  // namespace facet::shading

@@ -1,0 +1,83 @@
+// Per-target vector helpers shared by the SIMD batch shaders (shade_batch.cpp and
+// scene/glmark2_batch.cpp): included inside each file's HWY_NAMESPACE, once per target, the
+// Highway "-inl.h" way (the guard below toggles with HWY_TARGET_TOGGLE). Each helper repeats
+// a scalar glm or models.hpp step with the same IEEE operations in the same order.
+#if defined(FACET_SHADING_BATCH_MATH_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef FACET_SHADING_BATCH_MATH_INL_H_
+#undef FACET_SHADING_BATCH_MATH_INL_H_
+#else
+#define FACET_SHADING_BATCH_MATH_INL_H_
+#endif
+
+#include <hwy/highway.h>
+
+#include <algorithm>
+#include <cstring>
+
+#include "shading/shade_batch.hpp"
+
+HWY_BEFORE_NAMESPACE();
+namespace facet::shading::HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+// Eight lanes at most, as in texel_batch.cpp: batches are often a few pixels.
+using BatchTag = hn::CappedTag<float, 8>;
+using BatchV = hn::Vec<BatchTag>;
+
+struct Vec3V {
+  BatchV x, y, z;
+};
+
+HWY_INLINE Vec3V Load3(const float (*v)[kShadeBatch], int slot, int j) {
+  const BatchTag d;
+  return {hn::Load(d, v[slot] + j), hn::Load(d, v[slot + 1] + j), hn::Load(d, v[slot + 2] + j)};
+}
+
+HWY_INLINE Vec3V Set3(const glm::vec3& v) {
+  const BatchTag d;
+  return {hn::Set(d, v.x), hn::Set(d, v.y), hn::Set(d, v.z)};
+}
+
+// glm::dot: (x*x' + y*y') + z*z'.
+HWY_INLINE BatchV Dot(const Vec3V& a, const Vec3V& b) {
+  return hn::Add(hn::Add(hn::Mul(a.x, b.x), hn::Mul(a.y, b.y)), hn::Mul(a.z, b.z));
+}
+
+HWY_INLINE Vec3V Scale(const Vec3V& v, BatchV s) {
+  return {hn::Mul(v.x, s), hn::Mul(v.y, s), hn::Mul(v.z, s)};
+}
+
+// glm::normalize: v * (1 / sqrt(|v|^2)), NaN for a zero vector as in glm.
+HWY_INLINE Vec3V Normalize(const Vec3V& v) {
+  const BatchTag d;
+  return Scale(v, hn::Div(hn::Set(d, 1.0f), hn::Sqrt(Dot(v, v))));
+}
+
+// safe_normalize(): the same, or zero where |v|^2 is not positive.
+HWY_INLINE Vec3V SafeNormalize(const Vec3V& v) {
+  const BatchTag d;
+  const BatchV length_squared = Dot(v, v);
+  const auto positive = hn::Gt(length_squared, hn::Zero(d));
+  const BatchV inverse = hn::Div(hn::Set(d, 1.0f), hn::Sqrt(length_squared));
+  return {hn::IfThenElseZero(positive, hn::Mul(v.x, inverse)),
+          hn::IfThenElseZero(positive, hn::Mul(v.y, inverse)),
+          hn::IfThenElseZero(positive, hn::Mul(v.z, inverse))};
+}
+
+// std::max(a, b) and std::min(a, b): a unless the comparison says otherwise (NaN in a stays).
+HWY_INLINE BatchV StdMax(BatchV a, BatchV b) { return hn::IfThenElse(hn::Lt(a, b), b, a); }
+HWY_INLINE BatchV StdMin(BatchV a, BatchV b) { return hn::IfThenElse(hn::Lt(b, a), b, a); }
+
+// Writes the first `count` lanes' colors as RGBA (the rest may lie past the batch's end).
+HWY_INLINE void StoreColors(const BatchV color[4], int count, float (*rgba)[4]) {
+  const BatchTag d;
+  alignas(32) float out[4 * 8];
+  hn::StoreInterleaved4(color[0], color[1], color[2], color[3], d, out);
+  const int active = std::min(static_cast<int>(hn::Lanes(d)), count);
+  std::memcpy(rgba, out, sizeof(float) * 4 * active);
+}
+
+}  // namespace facet::shading::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#endif  // FACET_SHADING_BATCH_MATH_INL_H_

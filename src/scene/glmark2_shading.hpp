@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 
+#include "scene/glmark2_batch.hpp"
 #include "shading/color.hpp"
 #include "shading/fragment.hpp"
 #include "shading/surface.hpp"
@@ -52,6 +53,8 @@ inline float pow10(float x) {
 
 // light-basic.vert/.frag (build, gouraud): Lambert per vertex, no ambient, no specular.
 // Color = max(N.L, 0) x MaterialDiffuse (the material's base colour); the pixel shows it.
+// (No batch form: its fragment is a clamp and a table lookup per channel, cheaper than packing
+// the pixels for SIMD; build and gouraud were 7-11 % slower with one.)
 struct BasicLightShading {
   static constexpr int kVaryings = 3;
   static constexpr int kNormalSlot = -1;  // the scenes' meshes carry normals
@@ -67,7 +70,7 @@ struct BasicLightShading {
 // light-basic.vert + light-basic-tex.frag (texture): the per-vertex light above times the
 // texel of the material's base colour map (its sampler: bilinear or trilinear, clamped).
 // Layout: colour (3), texture coordinate (2).
-struct BasicLightTextureShading {
+struct BasicLightTextureShading : BatchForm<BatchShader::basic_light_texture> {
   static constexpr int kVaryings = 5;
   static constexpr int kNormalSlot = -1;
   static constexpr int kTexcoord = 3;
@@ -95,7 +98,7 @@ struct InterpolatedNormal {
 // light-advanced.vert/.frag (blinn-phong-inf): per pixel, directional light and viewer at
 // infinity; ambient 0.1, diffuse 0.8 x blue, specular 0.8 x white, shininess 100 — constants
 // of the shader, not uniforms.
-struct BlinnPhongInfShading : InterpolatedNormal {
+struct BlinnPhongInfShading : InterpolatedNormal, BatchForm<BatchShader::blinn_phong_inf> {
   static glm::vec4 fragment(const Fragment& f, const DrawUniforms&) {
     const glm::vec3 n = glm::normalize(shading::load3(f.v));
     const float diffuse = 0.8f * std::max(glm::dot(n, kLightDirection), 0.0f);
@@ -118,7 +121,7 @@ struct EyeNormalPosition {
 
 // light-phong.frag with num-lights=1: a point light at eye (0, 1, 0) with diffuse colour 0.8,
 // MaterialDiffuse the material's base colour; ambient 0.1 x 0.2, specular 0.8, shininess 100.
-struct PhongShading : EyeNormalPosition {
+struct PhongShading : EyeNormalPosition, BatchForm<BatchShader::phong> {
   static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
     const glm::vec3 p = shading::load3(f.v + kPosition);
     const glm::vec3 eye_direction = glm::normalize(-p);
@@ -163,7 +166,7 @@ inline glm::vec4 bump_light(glm::vec3 n) {
 // bump-normals.vert/.frag: the normal comes from the material's base colour map, which holds
 // OBJECT-space normals as rgb = n * 0.5 + 0.5 (sampled NEAREST), and is turned to eye space
 // per pixel by the NormalMatrix. The mesh needs no normals.
-struct BumpNormalsShading {
+struct BumpNormalsShading : BatchForm<BatchShader::bump_normals> {
   static constexpr int kVaryings = 2;
   static constexpr int kNormalSlot = -1;
   static constexpr int kBaseColorTexcoord = 0;  // sampled ahead, a batch at a time
@@ -177,7 +180,7 @@ struct BumpNormalsShading {
 };
 
 // bump-poly.vert/.frag (high-poly): the same light with the interpolated vertex normal.
-struct BumpPolyShading : InterpolatedNormal {
+struct BumpPolyShading : InterpolatedNormal, BatchForm<BatchShader::bump_poly> {
   static glm::vec4 fragment(const Fragment& f, const DrawUniforms&) {
     return bump_light(glm::normalize(shading::load3(f.v)));
   }

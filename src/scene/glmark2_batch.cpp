@@ -1,0 +1,150 @@
+// glmark2's shaders a batch at a time (see glmark2_batch.hpp). Highway compiles this file once
+// per SIMD target; HWY_DYNAMIC_DISPATCH picks the best the CPU has. Each step repeats
+// glmark2_shading.hpp lane by lane: glm's dot is (x*x' + y*y') + z*z', normalize is
+// v * (1 / sqrt(dot)), reflect is I - (N * dot(N, I)) * 2, mat3 x v is (m0 x + m1 y) + m2 z;
+// std::max(a, b) keeps a unless a < b.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "scene/glmark2_batch.cpp"
+#include "scene/glmark2_batch.hpp"
+
+#include <hwy/foreach_target.h>  // must come before highway.h
+#include <hwy/highway.h>
+
+#include "scene/glmark2_shading.hpp"
+#include "shading/batch_math-inl.h"
+#include "shading/color.hpp"
+
+HWY_BEFORE_NAMESPACE();
+namespace facet::bench::glmark2::HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+using namespace shading::HWY_NAMESPACE;  // batch_math-inl.h
+using shading::DrawUniforms;
+using shading::ShadeInput;
+
+// as_unorm8(): clamped to [0, 1] (NaN -> 0), quantized to 8 bits, decoded through the sRGB
+// table (a gather).
+HWY_INLINE BatchV AsUnorm8(BatchV c) {
+  const BatchTag d;
+  const hn::RebindToSigned<BatchTag> di;
+  const BatchV one = hn::Set(d, 1.0f);
+  const BatchV clamped =
+      hn::IfThenElseZero(hn::Gt(c, hn::Zero(d)), hn::IfThenElse(hn::Lt(one, c), one, c));
+  const auto code =
+      hn::ConvertTo(di, hn::Add(hn::Mul(clamped, hn::Set(d, 255.0f)), hn::Set(d, 0.5f)));
+  return hn::GatherIndex(d, shading::kSrgbTables.decode.data(), code);
+}
+
+HWY_INLINE void Unorm8Output(const Vec3V& rgb, int count, float (*rgba)[4]) {
+  const BatchV color[4] = {AsUnorm8(rgb.x), AsUnorm8(rgb.y), AsUnorm8(rgb.z),
+                           hn::Set(BatchTag(), 1.0f)};
+  StoreColors(color, count, rgba);
+}
+
+// pow100(): x^64 x^32 x^4 by repeated squaring, ((x32 x32) x32) x4.
+HWY_INLINE BatchV Pow100(BatchV x) {
+  const BatchV x2 = hn::Mul(x, x), x4 = hn::Mul(x2, x2), x8 = hn::Mul(x4, x4);
+  const BatchV x16 = hn::Mul(x8, x8), x32 = hn::Mul(x16, x16);
+  return hn::Mul(hn::Mul(hn::Mul(x32, x32), x32), x4);
+}
+
+// bump_light(): white Blinn-Phong with the light and half vector of the default light.
+HWY_INLINE Vec3V BumpLight(const Vec3V& n) {
+  const BatchTag d;
+  const BatchV diffuse =
+      hn::Mul(hn::Set(d, 0.8f), StdMax(Dot(n, Set3(kLightDirection)), hn::Zero(d)));
+  const BatchV specular =
+      hn::Mul(hn::Set(d, 0.16f), Pow100(StdMax(Dot(n, Set3(kHalfVector)), hn::Zero(d))));
+  const BatchV gray = hn::Add(hn::Add(hn::Set(d, 0.1f), diffuse), specular);
+  return {gray, gray, gray};
+}
+
+void ShadeGlmark2Batch(BatchShader shader, const DrawUniforms& u, const ShadeInput& in,
+                       float (*rgba)[4]) {
+  using Shader = BatchShader;
+  const BatchTag d;
+  const int lanes = static_cast<int>(hn::Lanes(d));
+  for (int j = 0; j < in.count; j += lanes) {
+    const int count = in.count - j;
+    switch (shader) {
+      case Shader::basic_light_texture: {
+        BatchV t[4];
+        hn::LoadInterleaved4(d, &in.base_texel[j][0], t[0], t[1], t[2], t[3]);
+        const Vec3V light = Load3(in.v, 0, j);
+        Unorm8Output({hn::Mul(t[0], light.x), hn::Mul(t[1], light.y), hn::Mul(t[2], light.z)},
+                     count, rgba + j);
+        break;
+      }
+      case Shader::blinn_phong_inf: {
+        const Vec3V n = Normalize(Load3(in.v, 0, j));
+        const BatchV diffuse =
+            hn::Mul(hn::Set(d, 0.8f), StdMax(Dot(n, Set3(kLightDirection)), hn::Zero(d)));
+        const BatchV specular =
+            hn::Mul(hn::Set(d, 0.8f), Pow100(StdMax(Dot(n, Set3(kHalfVector)), hn::Zero(d))));
+        const BatchV gray = hn::Add(hn::Set(d, 0.1f), specular);
+        Unorm8Output({gray, gray, hn::Add(gray, diffuse)}, count, rgba + j);
+        break;
+      }
+      case Shader::phong: {
+        const Vec3V p = Load3(in.v, PhongShading::kPosition, j);
+        const Vec3V eye = Normalize({hn::Neg(p.x), hn::Neg(p.y), hn::Neg(p.z)});
+        const Vec3V light = Normalize(
+            {hn::Sub(hn::Zero(d), p.x), hn::Sub(hn::Set(d, 1.0f), p.y), hn::Sub(hn::Zero(d), p.z)});
+        const Vec3V n = Normalize(Load3(in.v, 0, j));
+        // reflect(-light, n) = I - (n * dot(n, I)) * 2
+        const Vec3V incident{hn::Neg(light.x), hn::Neg(light.y), hn::Neg(light.z)};
+        const BatchV n_dot_i = Dot(n, incident);
+        const BatchV two = hn::Set(d, 2.0f);
+        const Vec3V reflection{hn::Sub(incident.x, hn::Mul(hn::Mul(n.x, n_dot_i), two)),
+                               hn::Sub(incident.y, hn::Mul(hn::Mul(n.y, n_dot_i), two)),
+                               hn::Sub(incident.z, hn::Mul(hn::Mul(n.z, n_dot_i), two))};
+        const BatchV specular =
+            hn::Mul(hn::Set(d, 0.8f), Pow100(StdMax(hn::Zero(d), Dot(reflection, eye))));
+        const BatchV diffuse = StdMax(hn::Zero(d), Dot(n, light));
+        const BatchV lit = hn::Mul(hn::Set(d, 0.8f), diffuse);
+        const BatchV base = hn::Add(specular, hn::Set(d, 0.02f));
+        Unorm8Output({hn::Add(base, hn::Mul(lit, hn::Set(d, u.base_color.r))),
+                      hn::Add(base, hn::Mul(lit, hn::Set(d, u.base_color.g))),
+                      hn::Add(base, hn::Mul(lit, hn::Set(d, u.base_color.b)))},
+                     count, rgba + j);
+        break;
+      }
+      case Shader::bump_poly:
+        Unorm8Output(BumpLight(Normalize(Load3(in.v, 0, j))), count, rgba + j);
+        break;
+      case Shader::bump_normals: {
+        // normalize(normal_matrix * (texel * 2 - 1))
+        BatchV t[4];
+        hn::LoadInterleaved4(d, &in.base_texel[j][0], t[0], t[1], t[2], t[3]);
+        BatchV raw[3];
+        for (int c = 0; c < 3; ++c) {
+          raw[c] = hn::Sub(hn::Mul(t[c], hn::Set(d, 2.0f)), hn::Set(d, 1.0f));
+        }
+        const glm::mat3& m = u.normal_matrix;
+        BatchV turned[3];
+        for (int r = 0; r < 3; ++r) {
+          turned[r] = hn::Add(
+              hn::Add(hn::Mul(hn::Set(d, m[0][r]), raw[0]), hn::Mul(hn::Set(d, m[1][r]), raw[1])),
+              hn::Mul(hn::Set(d, m[2][r]), raw[2]));
+        }
+        Unorm8Output(BumpLight(Normalize({turned[0], turned[1], turned[2]})), count, rgba + j);
+        break;
+      }
+    }
+  }
+}
+
+}  // namespace facet::bench::glmark2::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace facet::bench::glmark2 {
+
+HWY_EXPORT(ShadeGlmark2Batch);
+
+void shade_glmark2_batch(BatchShader shader, const shading::DrawUniforms& u,
+                         const shading::ShadeInput& in, float (*rgba)[4]) {
+  HWY_DYNAMIC_DISPATCH(ShadeGlmark2Batch)(shader, u, in, rgba);
+}
+
+}  // namespace facet::bench::glmark2
+#endif  // HWY_ONCE

@@ -1,0 +1,32 @@
+// The glmark2 shading models (glmark2_shading.hpp) a batch of pixels at a time with SIMD
+// (glmark2_batch.cpp, compiled for every target Highway supports): the same formulas with the
+// same IEEE operations in the same order, so the same bits as their fragment().
+#pragma once
+
+#include "shading/shade_batch.hpp"
+
+namespace facet::bench::glmark2 {
+
+enum class BatchShader { basic_light_texture, blinn_phong_inf, phong, bump_poly, bump_normals };
+
+// Linear RGBA of every pixel of `in`, as the shader's fragment() gives it. glmark2's shaders
+// have no fog: the models decline fogged draws (BatchForm below).
+void shade_glmark2_batch(BatchShader shader, const shading::DrawUniforms& u,
+                         const shading::ShadeInput& in, float (*rgba)[4]);
+
+// The batch hooks of a glmark2 model (see shading/shade_batch.hpp's BatchForm).
+template <BatchShader kShader>
+struct BatchForm {
+  static bool batch_shades(const shading::DrawUniforms& u) {
+    constexpr bool kTextured =
+        kShader == BatchShader::basic_light_texture || kShader == BatchShader::bump_normals;
+    return u.lighting->fog.mode == FogMode::none &&
+           (!kTextured || u.material->base_color_map);  // the texel comes sampled ahead
+  }
+  static void fragment_batch(const shading::DrawUniforms& u, const shading::ShadeInput& in,
+                             float (*rgba)[4]) {
+    shade_glmark2_batch(kShader, u, in, rgba);
+  }
+};
+
+}  // namespace facet::bench::glmark2

@@ -148,6 +148,7 @@ TEST(ShadeBatch, Glmark2ShadersGiveFragmentsBitsOnEveryTarget) {
   expect_same_bits<BasicLightTextureShading>();
   expect_same_bits<BlinnPhongInfShading>();
   expect_same_bits<PhongShading>();
+  expect_same_bits<CelShading>();
   expect_same_bits<BumpPolyShading>();
   expect_same_bits<BumpNormalsShading>();
 }

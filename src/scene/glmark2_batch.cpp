@@ -1,8 +1,8 @@
 // glmark2's shaders a batch at a time (see glmark2_batch.hpp). Highway compiles this file once
 // per SIMD target; HWY_DYNAMIC_DISPATCH picks the best the CPU has. Each step repeats
 // glmark2_shading.hpp lane by lane: glm's dot is (x*x' + y*y') + z*z', normalize is
-// v * (1 / sqrt(dot)), reflect is I - (N * dot(N, I)) * 2, mat3 x v is (m0 x + m1 y) + m2 z;
-// std::max(a, b) keeps a unless a < b.
+// v * (1 / sqrt(dot)), length is sqrt(dot), reflect is I - (N * dot(N, I)) * 2, mat3 x v is (m0 x +
+// m1 y) + m2 z; std::max(a, b) keeps a unless a < b.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "scene/glmark2_batch.cpp"
 #include "scene/glmark2_batch.hpp"
@@ -45,6 +45,12 @@ HWY_INLINE BatchV Pow100(BatchV x) {
   const BatchV x2 = hn::Mul(x, x), x4 = hn::Mul(x2, x2), x8 = hn::Mul(x4, x4);
   const BatchV x16 = hn::Mul(x8, x8), x32 = hn::Mul(x16, x16);
   return hn::Mul(hn::Mul(hn::Mul(x32, x32), x32), x4);
+}
+
+// pow10(): x^8 x^2 with x^8 = ((x2 x2) x2) x2.
+HWY_INLINE BatchV Pow10(BatchV x) {
+  const BatchV x2 = hn::Mul(x, x);
+  return hn::Mul(hn::Mul(hn::Mul(hn::Mul(x2, x2), x2), x2), x2);
 }
 
 // bump_light(): white Blinn-Phong with the light and half vector of the default light.
@@ -106,6 +112,43 @@ void ShadeGlmark2Batch(BatchShader shader, const DrawUniforms& u, const ShadeInp
                       hn::Add(base, hn::Mul(lit, hn::Set(d, u.base_color.g))),
                       hn::Add(base, hn::Mul(lit, hn::Set(d, u.base_color.b)))},
                      count, rgba + j);
+        break;
+      }
+      case Shader::cel: {
+        const Vec3V p = Load3(in.v, CelShading::kPosition, j);
+        const Vec3V to_light{hn::Sub(hn::Set(d, 4.0f), p.x), hn::Sub(hn::Set(d, 3.0f), p.y),
+                             hn::Sub(hn::Set(d, 1.0f), p.z)};
+        const Vec3V n = Normalize(Load3(in.v, 0, j));
+        const Vec3V l = Normalize(to_light);
+        const BatchV n_dot_l = Dot(n, l);
+        const BatchV max_n_dot_l = StdMax(n_dot_l, hn::Zero(d));
+        const BatchV attenuation =
+            hn::Div(hn::Set(d, CelShading::kLightLength), hn::Sqrt(Dot(to_light, to_light)));
+        // Two-tone green, black where the surface turns away (mix(0.1, 0.4, max N.L)).
+        BatchV green = hn::IfThenElse(hn::Ge(hn::Mul(attenuation, max_n_dot_l), hn::Set(d, 0.1f)),
+                                      hn::Set(d, 0.6f), hn::Set(d, 0.3f));
+        const Vec3V v = Normalize({hn::Neg(p.x), hn::Neg(p.y), hn::Neg(p.z)});
+        const BatchV edge =
+            hn::Add(hn::Mul(hn::Set(d, 0.1f), hn::Sub(hn::Set(d, 1.0f), max_n_dot_l)),
+                    hn::Mul(hn::Set(d, 0.4f), max_n_dot_l));
+        const auto outline = hn::Lt(Dot(v, n), edge);
+        green = hn::IfThenElseZero(hn::Not(outline), green);
+        // The highlight: pow10(max(0, reflect(-l, n) . v)), thresholded.
+        const Vec3V incident{hn::Neg(l.x), hn::Neg(l.y), hn::Neg(l.z)};
+        const BatchV n_dot_i = Dot(n, incident);
+        const BatchV two = hn::Set(d, 2.0f);
+        const Vec3V reflection{hn::Sub(incident.x, hn::Mul(hn::Mul(n.x, n_dot_i), two)),
+                               hn::Sub(incident.y, hn::Mul(hn::Mul(n.y, n_dot_i), two)),
+                               hn::Sub(incident.z, hn::Mul(hn::Mul(n.z, n_dot_i), two))};
+        const BatchV specular = Pow10(StdMax(hn::Zero(d), Dot(reflection, v)));
+        const auto highlight = hn::And(hn::Gt(n_dot_l, hn::Zero(d)),
+                                       hn::Gt(hn::Mul(attenuation, specular), hn::Set(d, 0.5f)));
+        auto brighten = [&](BatchV c) HWY_ATTR {
+          return hn::IfThenElse(highlight, hn::Add(hn::Set(d, 0.7f), hn::Mul(hn::Set(d, 0.3f), c)),
+                                c);
+        };
+        Unorm8Output({brighten(hn::Zero(d)), brighten(green), brighten(hn::Zero(d))}, count,
+                     rgba + j);
         break;
       }
       case Shader::bump_poly:

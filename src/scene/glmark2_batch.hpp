@@ -7,7 +7,14 @@
 
 namespace facet::bench::glmark2 {
 
-enum class BatchShader { basic_light_texture, blinn_phong_inf, phong, bump_poly, bump_normals };
+enum class BatchShader {
+  basic_light_texture,
+  blinn_phong_inf,
+  phong,
+  cel,
+  bump_poly,
+  bump_normals
+};
 
 // Linear RGBA of every pixel of `in`, as the shader's fragment() gives it. glmark2's shaders
 // have no fog: the models decline fogged draws (BatchForm below).

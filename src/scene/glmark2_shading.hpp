@@ -136,9 +136,9 @@ struct PhongShading : EyeNormalPosition, BatchForm<BatchShader::phong> {
 
 // light-cel.frag: its own light at eye (4, 3, 1), two-tone green, a black outline where the
 // surface turns away from the viewer, and a thresholded white highlight.
-struct CelShading : EyeNormalPosition {
+struct CelShading : EyeNormalPosition, BatchForm<BatchShader::cel> {
+  static constexpr float kLightLength = 5.19615242f;  // length(vec4(4, 3, 1, 1)) = sqrt 27
   static glm::vec4 fragment(const Fragment& f, const DrawUniforms&) {
-    constexpr float kLightLength = 5.19615242f;  // length(vec4(4, 3, 1, 1)) = sqrt 27
     const glm::vec3 p = shading::load3(f.v + kPosition);
     const glm::vec3 vertex_light = glm::vec3(4.0f, 3.0f, 1.0f) - p;
     const glm::vec3 n = glm::normalize(shading::load3(f.v));

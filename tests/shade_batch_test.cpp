@@ -1,7 +1,7 @@
-// The SIMD batch forms of the unlit and Lambert models (shading/shade_batch.cpp) give their
-// fragment()'s bits (then apply_fog's) on every SIMD target: one- and two-sided, with and
-// without a base color texel, emission and fog, under zero to three directional lights; and
-// they decline what they do not cover. fog_exp, which the fog uses, is an exponential.
+// The SIMD batch forms of the unlit and Lambert models (shading/shade_batch.cpp) and of
+// glmark2's shaders (scene/glmark2_batch.cpp) give their fragment()'s bits (then apply_fog's)
+// on every SIMD target: one- and two-sided, with and without a base color texel, emission and
+// fog, under zero to three directional lights; and they decline what they do not cover.
 #include "shading/shade_batch.hpp"
 
 #include <gtest/gtest.h>
@@ -14,7 +14,6 @@
 
 #include "scene/glmark2_shading.hpp"
 #include "shading/fog.hpp"
-#include "shading/fog_exp.hpp"
 #include "shading/models.hpp"
 #include "support/forced_target.hpp"
 
@@ -151,18 +150,6 @@ TEST(ShadeBatch, Glmark2ShadersGiveFragmentsBitsOnEveryTarget) {
   expect_same_bits<CelShading>();
   expect_same_bits<BumpPolyShading>();
   expect_same_bits<BumpNormalsShading>();
-}
-
-TEST(FogExp, IsExpToFloatPrecision) {
-  for (float x = -87.0f; x <= 88.0f; x += 0.0137f) {
-    // x log2(e) rounds to float first: the error grows with |x| (2^-24 |x log2 e| ln 2).
-    const double exact = std::exp(static_cast<double>(x));
-    ASSERT_NEAR(shading::fog_exp(x), exact, (2e-7 + 1e-7 * std::abs(x)) * exact) << "x = " << x;
-  }
-  EXPECT_EQ(shading::fog_exp(0.0f), 1.0f);
-  EXPECT_EQ(shading::fog_exp(-1000.0f), 0.0f);
-  EXPECT_EQ(shading::fog_exp(1000.0f), std::numeric_limits<float>::infinity());
-  EXPECT_TRUE(std::isnan(shading::fog_exp(std::numeric_limits<float>::quiet_NaN())));
 }
 
 TEST(ShadeBatch, DeclinesPointLightsAndEmissiveMaps) {

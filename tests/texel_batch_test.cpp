@@ -1,6 +1,5 @@
 // The SIMD batch sampler (shading/texel_batch.cpp) gives sample_map's bits on every SIMD target,
-// for every filter, wrap mode, texture shape and transform; and lod_log2, which both use, is a
-// log2.
+// for every filter, wrap mode, texture shape and transform.
 #include "shading/texel_batch.hpp"
 
 #include <gtest/gtest.h>
@@ -12,34 +11,11 @@
 #include <random>
 #include <string>
 
-#include "shading/lod_log2.hpp"
 #include "shading/surface.hpp"
 #include "support/forced_target.hpp"
 
 namespace facet::test {
 namespace {
-
-TEST(LodLog2, IsLog2WithinAMillionth) {
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<float> exponent(-140.0f, 127.0f);
-  for (int i = 0; i < 200000; ++i) {
-    const float x = std::exp2(exponent(rng));
-    if (x == 0.0f) continue;
-    const double exact = std::log2(static_cast<double>(x));
-    const double tolerance = 1e-6 * std::max(1.0, std::abs(exact));
-    ASSERT_NEAR(shading::lod_log2(x), exact, tolerance) << "x = " << x;
-  }
-  for (float x : {1.0f, 2.0f, 0.5f, 1024.0f}) EXPECT_EQ(shading::lod_log2(x), std::log2(x));
-}
-
-TEST(LodLog2, SpecialValuesAreLog2s) {
-  constexpr float kInf = std::numeric_limits<float>::infinity();
-  EXPECT_EQ(shading::lod_log2(0.0f), -kInf);
-  EXPECT_EQ(shading::lod_log2(kInf), kInf);
-  EXPECT_TRUE(std::isnan(shading::lod_log2(-1.0f)));
-  EXPECT_TRUE(std::isnan(shading::lod_log2(std::numeric_limits<float>::quiet_NaN())));
-  EXPECT_NEAR(shading::lod_log2(std::numeric_limits<float>::denorm_min()), -149.0, 1e-4);
-}
 
 std::shared_ptr<const Texture> random_texture(std::mt19937& rng, int width, int height) {
   std::vector<std::uint8_t> rgba(static_cast<std::size_t>(width) * height * 4);

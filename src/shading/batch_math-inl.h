@@ -13,7 +13,9 @@
 
 #include <algorithm>
 #include <cstring>
+#include <limits>
 
+#include "shading/portable_math.hpp"
 #include "shading/shade_batch.hpp"
 
 HWY_BEFORE_NAMESPACE();
@@ -67,6 +69,66 @@ HWY_INLINE Vec3V SafeNormalize(const Vec3V& v) {
 // std::max(a, b) and std::min(a, b): a unless the comparison says otherwise (NaN in a stays).
 HWY_INLINE BatchV StdMax(BatchV a, BatchV b) { return hn::IfThenElse(hn::Lt(a, b), b, a); }
 HWY_INLINE BatchV StdMin(BatchV a, BatchV b) { return hn::IfThenElse(hn::Lt(b, a), b, a); }
+
+// portable_math.hpp, lane by lane.
+HWY_INLINE BatchV PortableLog2(BatchV x) {
+  namespace c = portable_math;
+  const BatchTag df;
+  const hn::RebindToSigned<BatchTag> di;
+  const auto positive = hn::Gt(x, hn::Zero(df));
+  const auto subnormal = hn::Lt(x, hn::Set(df, c::kSmallestNormal));
+  const BatchV scaled = hn::IfThenElse(subnormal, hn::Mul(x, hn::Set(df, c::kTwoTo23)), x);
+  const BatchV bias = hn::IfThenElse(subnormal, hn::Set(df, 150.0f), hn::Set(df, 127.0f));
+  const auto bits = hn::BitCast(di, scaled);
+  BatchV e = hn::Sub(hn::ConvertTo(df, hn::ShiftRight<23>(bits)), bias);
+  BatchV m =
+      hn::BitCast(df, hn::Or(hn::And(bits, hn::Set(di, 0x007fffff)), hn::Set(di, 0x3f800000)));
+  const auto big = hn::Gt(m, hn::Set(df, c::kSqrt2));
+  m = hn::IfThenElse(big, hn::Mul(m, hn::Set(df, 0.5f)), m);
+  e = hn::IfThenElse(big, hn::Add(e, hn::Set(df, 1.0f)), e);
+  const BatchV one = hn::Set(df, 1.0f);
+  const BatchV s = hn::Div(hn::Sub(m, one), hn::Add(m, one));
+  const BatchV s2 = hn::Mul(s, s);
+  BatchV poly = hn::Add(hn::Set(df, c::kLog2C5), hn::Mul(s2, hn::Set(df, c::kLog2C7)));
+  poly = hn::Add(hn::Set(df, c::kLog2C3), hn::Mul(s2, poly));
+  poly = hn::Add(hn::Set(df, c::kLog2C1), hn::Mul(s2, poly));
+  BatchV result = hn::Add(e, hn::Mul(s, poly));
+  const BatchV infinity = hn::Set(df, std::numeric_limits<float>::infinity());
+  const BatchV zero_or_invalid =
+      hn::IfThenElse(hn::Eq(x, hn::Zero(df)), hn::Neg(infinity),
+                     hn::Set(df, std::numeric_limits<float>::quiet_NaN()));
+  result = hn::IfThenElse(positive, result, zero_or_invalid);
+  return hn::IfThenElse(hn::Eq(x, infinity), infinity, result);
+}
+
+HWY_INLINE BatchV PortableExp2(BatchV t) {
+  namespace c = portable_math;
+  const BatchTag d;
+  const hn::RebindToSigned<BatchTag> di;
+  const BatchV n = hn::Floor(hn::Add(t, hn::Set(d, 0.5f)));
+  const BatchV f = hn::Sub(t, n);
+  BatchV p = hn::Add(hn::Set(d, c::kExp2C6), hn::Mul(f, hn::Set(d, c::kExp2C7)));
+  for (float k : {c::kExp2C5, c::kExp2C4, c::kExp2C3, c::kExp2C2, c::kExp2C1, 1.0f}) {
+    p = hn::Add(hn::Set(d, k), hn::Mul(f, p));
+  }
+  const BatchV scale =
+      hn::BitCast(d, hn::ShiftLeft<23>(hn::Add(hn::ConvertTo(di, n), hn::Set(di, 127))));
+  const BatchV result =
+      hn::IfThenElse(hn::Ge(t, hn::Set(d, c::kExp2Highest)),
+                     hn::Set(d, std::numeric_limits<float>::infinity()), hn::Mul(p, scale));
+  const BatchV lowest = hn::Set(d, c::kExp2Lowest);
+  const BatchV below = hn::IfThenElseZero(hn::Not(hn::Lt(t, lowest)), t);  // NaN stays NaN
+  return hn::IfThenElse(hn::Ge(t, lowest), result, below);
+}
+
+HWY_INLINE BatchV PortableExp(BatchV x) {
+  return PortableExp2(hn::Mul(x, hn::Set(BatchTag(), portable_math::kLog2E)));
+}
+
+// portable_pow(x, s) for one s (s == 0 is the caller's: x^0 = 1).
+HWY_INLINE BatchV PortablePow(BatchV x, float s) {
+  return PortableExp2(hn::Mul(hn::Set(BatchTag(), s), PortableLog2(x)));
+}
 
 // Writes the first `count` lanes' colors as RGBA (the rest may lie past the batch's end).
 HWY_INLINE void StoreColors(const BatchV color[4], int count, float (*rgba)[4]) {

@@ -15,7 +15,7 @@
 #include <limits>
 
 #include "shading/batch_math-inl.h"
-#include "shading/fog_exp.hpp"
+#include "shading/portable_math.hpp"
 #include "shading/surface.hpp"
 
 HWY_BEFORE_NAMESPACE();
@@ -58,28 +58,6 @@ HWY_INLINE Vec3V DiffuseLight(const DrawUniforms& u, const Vec3V& normal) {
   return light;
 }
 
-// fog_exp() of fog_exp.hpp, lane by lane.
-HWY_INLINE FloatV FogExp(FloatV x) {
-  namespace c = fog_exp_constants;
-  const FloatTag d;
-  const hn::RebindToSigned<FloatTag> di;
-  const FloatV t = hn::Mul(x, hn::Set(d, c::kLog2E));
-  const FloatV n = hn::Floor(hn::Add(t, hn::Set(d, 0.5f)));
-  const FloatV f = hn::Sub(t, n);
-  FloatV p = hn::Add(hn::Set(d, c::kC6), hn::Mul(f, hn::Set(d, c::kC7)));
-  for (float k : {c::kC5, c::kC4, c::kC3, c::kC2, c::kC1, 1.0f}) {
-    p = hn::Add(hn::Set(d, k), hn::Mul(f, p));
-  }
-  const FloatV scale =
-      hn::BitCast(d, hn::ShiftLeft<23>(hn::Add(hn::ConvertTo(di, n), hn::Set(di, 127))));
-  FloatV result =
-      hn::IfThenElse(hn::Ge(t, hn::Set(d, c::kHighest)),
-                     hn::Set(d, std::numeric_limits<float>::infinity()), hn::Mul(p, scale));
-  const FloatV lowest = hn::Set(d, c::kLowest);
-  const FloatV below = hn::IfThenElseZero(hn::Not(hn::Lt(t, lowest)), t);  // NaN stays NaN
-  return hn::IfThenElse(hn::Ge(t, lowest), result, below);
-}
-
 // apply_fog() of fog.hpp: the fraction kept (fog_keep), clamped, then mixed with the fog color.
 HWY_INLINE void Fogged(const Fog& fog, FloatV w, FloatV color[3]) {
   const FloatTag d;
@@ -88,7 +66,7 @@ HWY_INLINE void Fogged(const Fog& fog, FloatV w, FloatV color[3]) {
     keep =
         hn::Div(hn::Sub(hn::Set(d, fog.end), w), hn::Set(d, std::max(fog.end - fog.start, 1e-6f)));
   } else {
-    keep = FogExp(hn::Mul(hn::Set(d, -fog.density), w));
+    keep = PortableExp(hn::Mul(hn::Set(d, -fog.density), w));
   }
   const FloatV one = hn::Set(d, 1.0f);
   keep = hn::IfThenElse(hn::Lt(keep, hn::Zero(d)), hn::Zero(d),

@@ -1,6 +1,6 @@
 // Batch texture sampling (see texel_batch.hpp). Highway compiles this file once per SIMD target
 // (foreach_target.h re-includes it) and HWY_DYNAMIC_DISPATCH picks the best target the CPU
-// has. Each step repeats its scalar counterpart in texture.cpp / surface.cpp / lod_log2.hpp
+// has. Each step repeats its scalar counterpart in texture.cpp / surface.cpp / portable_math.hpp
 // with the same IEEE operations in the same order (no fused multiply-add; std::min/max as
 // compare-and-select, which treat NaN as they do), so every target gives the scalar bits;
 // simd_targets_test checks it.
@@ -15,7 +15,8 @@
 #include <limits>
 
 #include "facet/texture.hpp"
-#include "shading/lod_log2.hpp"
+#include "shading/batch_math-inl.h"
+#include "shading/portable_math.hpp"
 #include "shading/surface.hpp"
 
 HWY_BEFORE_NAMESPACE();
@@ -29,41 +30,6 @@ using FloatTag = hn::CappedTag<float, kMaxLanes>;
 using IntTag = hn::RebindToSigned<FloatTag>;
 using FloatV = hn::Vec<FloatTag>;
 using IntV = hn::Vec<IntTag>;
-
-// std::min(a, b) and std::max(a, b): a unless the comparison says otherwise (so NaN in a stays).
-HWY_INLINE FloatV StdMin(FloatV a, FloatV b) { return hn::IfThenElse(hn::Lt(b, a), b, a); }
-HWY_INLINE FloatV StdMax(FloatV a, FloatV b) { return hn::IfThenElse(hn::Lt(a, b), b, a); }
-
-// lod_log2.hpp, lane by lane.
-HWY_INLINE FloatV LodLog2(FloatV x) {
-  namespace c = lod_log2_constants;
-  const FloatTag df;
-  const IntTag di;
-  const auto positive = hn::Gt(x, hn::Zero(df));
-  const auto subnormal = hn::Lt(x, hn::Set(df, c::kSmallestNormal));
-  const FloatV scaled = hn::IfThenElse(subnormal, hn::Mul(x, hn::Set(df, c::kTwoTo23)), x);
-  const FloatV bias = hn::IfThenElse(subnormal, hn::Set(df, 150.0f), hn::Set(df, 127.0f));
-  const IntV bits = hn::BitCast(di, scaled);
-  FloatV e = hn::Sub(hn::ConvertTo(df, hn::ShiftRight<23>(bits)), bias);
-  FloatV m =
-      hn::BitCast(df, hn::Or(hn::And(bits, hn::Set(di, 0x007fffff)), hn::Set(di, 0x3f800000)));
-  const auto big = hn::Gt(m, hn::Set(df, c::kSqrt2));
-  m = hn::IfThenElse(big, hn::Mul(m, hn::Set(df, 0.5f)), m);
-  e = hn::IfThenElse(big, hn::Add(e, hn::Set(df, 1.0f)), e);
-  const FloatV one = hn::Set(df, 1.0f);
-  const FloatV s = hn::Div(hn::Sub(m, one), hn::Add(m, one));
-  const FloatV s2 = hn::Mul(s, s);
-  FloatV poly = hn::Add(hn::Set(df, c::kC5), hn::Mul(s2, hn::Set(df, c::kC7)));
-  poly = hn::Add(hn::Set(df, c::kC3), hn::Mul(s2, poly));
-  poly = hn::Add(hn::Set(df, c::kC1), hn::Mul(s2, poly));
-  FloatV result = hn::Add(e, hn::Mul(s, poly));
-  const FloatV infinity = hn::Set(df, std::numeric_limits<float>::infinity());
-  const FloatV zero_or_invalid =
-      hn::IfThenElse(hn::Eq(x, hn::Zero(df)), hn::Neg(infinity),
-                     hn::Set(df, std::numeric_limits<float>::quiet_NaN()));
-  result = hn::IfThenElse(positive, result, zero_or_invalid);
-  return hn::IfThenElse(hn::Eq(x, infinity), infinity, result);
-}
 
 // sanitize() and floor_to_int() of texture.cpp.
 HWY_INLINE FloatV Sanitize(FloatV x) {
@@ -237,7 +203,7 @@ HWY_INLINE FloatV LevelOfDetail(const Texture& texture, const glm::mat3& m,
   const FloatV yv = hn::Mul(LinearPart(m, 1, duy, dvy), size_v);
   const FloatV rho2 =
       StdMax(hn::Add(hn::Mul(xu, xu), hn::Mul(xv, xv)), hn::Add(hn::Mul(yu, yu), hn::Mul(yv, yv)));
-  return hn::Mul(hn::Set(df, 0.5f), LodLog2(rho2));
+  return hn::Mul(hn::Set(df, 0.5f), PortableLog2(rho2));
 }
 
 void SampleBatch(const TextureMap& map, const pipeline::Plane* planes, const pipeline::Plane& inv_w,

@@ -1,0 +1,68 @@
+// facet's own log2, exp and pow (shading/portable_math.hpp), which the scalar and SIMD shading
+// share so that both give the same bits on every CPU: they must be the functions they stand for.
+#include "shading/portable_math.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+namespace facet::test {
+namespace {
+
+using shading::portable_exp;
+using shading::portable_log2;
+using shading::portable_pow;
+constexpr float kInf = std::numeric_limits<float>::infinity();
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+
+TEST(PortableMath, Log2IsWithinAMillionth) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> exponent(-140.0f, 127.0f);
+  for (int i = 0; i < 200000; ++i) {
+    const float x = std::exp2(exponent(rng));
+    if (x == 0.0f) continue;
+    const double exact = std::log2(static_cast<double>(x));
+    ASSERT_NEAR(portable_log2(x), exact, 1e-6 * std::max(1.0, std::abs(exact))) << "x = " << x;
+  }
+  for (float x : {1.0f, 2.0f, 0.5f, 1024.0f}) EXPECT_EQ(portable_log2(x), std::log2(x));
+}
+
+TEST(PortableMath, Log2OfSpecialValues) {
+  EXPECT_EQ(portable_log2(0.0f), -kInf);
+  EXPECT_EQ(portable_log2(kInf), kInf);
+  EXPECT_TRUE(std::isnan(portable_log2(-1.0f)));
+  EXPECT_TRUE(std::isnan(portable_log2(kNaN)));
+  EXPECT_NEAR(portable_log2(std::numeric_limits<float>::denorm_min()), -149.0, 1e-4);
+}
+
+TEST(PortableMath, ExpIsExpToFloatPrecision) {
+  for (float x = -87.0f; x <= 88.0f; x += 0.0137f) {
+    // x log2(e) rounds to float first: the error grows with |x| (2^-24 |x log2 e| ln 2).
+    const double exact = std::exp(static_cast<double>(x));
+    ASSERT_NEAR(portable_exp(x), exact, (2e-7 + 1e-7 * std::abs(x)) * exact) << "x = " << x;
+  }
+  EXPECT_EQ(portable_exp(0.0f), 1.0f);
+  EXPECT_EQ(portable_exp(-1000.0f), 0.0f);
+  EXPECT_EQ(portable_exp(1000.0f), kInf);
+  EXPECT_TRUE(std::isnan(portable_exp(kNaN)));
+}
+
+TEST(PortableMath, PowIsPowForHighlights) {
+  for (float s : {1.0f, 8.0f, 32.0f, 100.0f, 256.0f}) {
+    for (float x = 0.0f; x <= 1.0f; x += 0.001f) {
+      const double exact = std::pow(static_cast<double>(x), static_cast<double>(s));
+      // Relative 2e-6 s, or absolutely tiny where the result underflows the normal range.
+      ASSERT_NEAR(portable_pow(x, s), exact, 2e-6 * s * exact + 1e-37) << x << "^" << s;
+    }
+  }
+  EXPECT_EQ(portable_pow(0.0f, 32.0f), 0.0f);
+  EXPECT_EQ(portable_pow(1.0f, 32.0f), 1.0f);
+  EXPECT_EQ(portable_pow(0.0f, 0.0f), 1.0f);
+  EXPECT_EQ(portable_pow(0.3f, 0.0f), 1.0f);
+  EXPECT_TRUE(std::isnan(portable_pow(kNaN, 4.0f)));
+}
+
+}  // namespace
+}  // namespace facet::test

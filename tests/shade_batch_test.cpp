@@ -1,4 +1,4 @@
-// The SIMD batch forms of the unlit and Lambert models (shading/shade_batch.cpp) and of
+// The SIMD batch forms of the unlit, Lambert, Phong and Blinn-Phong models (shade_batch.cpp) and of
 // glmark2's shaders (scene/glmark2_batch.cpp) give their fragment()'s bits (then apply_fog's)
 // on every SIMD target: one- and two-sided, with and without a base color texel, emission and
 // fog, under zero to three directional lights; and they decline what they do not cover.
@@ -14,6 +14,7 @@
 
 #include "scene/glmark2_shading.hpp"
 #include "shading/fog.hpp"
+#include "shading/lit_models.hpp"
 #include "shading/models.hpp"
 #include "support/forced_target.hpp"
 
@@ -62,6 +63,8 @@ void randomize(std::mt19937& rng, Draw& d) {
   }
   d.uniforms.lights = d.lights;
   d.uniforms.base_color = {unit(rng), unit(rng), unit(rng), 1.0f};
+  d.material.specular_color = {unit(rng), unit(rng), unit(rng)};
+  d.material.shininess = rng() % 5 == 0 ? 0.0f : 1.0f + unit(rng) * 127.0f;
   d.uniforms.normal_matrix = glm::mat3(any(rng), any(rng), any(rng), any(rng), any(rng), any(rng),
                                        any(rng), any(rng), any(rng));
   switch (rng() % 3) {
@@ -136,6 +139,11 @@ TEST(ShadeBatch, LambertGivesFragmentsBitsOnEveryTarget) {
   expect_same_bits<shading::LambertShading>();
 }
 
+TEST(ShadeBatch, PhongAndBlinnPhongGiveFragmentsBitsOnEveryTarget) {
+  expect_same_bits<shading::PhongShading>();
+  expect_same_bits<shading::BlinnPhongShading>();
+}
+
 TEST(ShadeBatch, UnlitGivesFragmentsBitsOnEveryTarget) {
   expect_same_bits<shading::UnlitShading>();
 }
@@ -158,12 +166,12 @@ TEST(ShadeBatch, DeclinesPointLightsAndEmissiveMaps) {
   randomize(rng, draw);
   draw.uniforms.light_count = 1;
   draw.lights[0].type = LightType::point;
-  EXPECT_FALSE(shading::batch_shades(draw.uniforms));
+  EXPECT_FALSE(shading::batch_shades(shading::BatchModel::lambert, draw.uniforms));
   draw.lights[0].type = LightType::directional;
-  EXPECT_TRUE(shading::batch_shades(draw.uniforms));
+  EXPECT_TRUE(shading::batch_shades(shading::BatchModel::lambert, draw.uniforms));
   draw.material.emissive = glm::vec3(1.0f);
   draw.material.emissive_map.texture = missing_texture();
-  EXPECT_FALSE(shading::batch_shades(draw.uniforms));
+  EXPECT_FALSE(shading::batch_shades(shading::BatchModel::lambert, draw.uniforms));
 }
 
 }  // namespace

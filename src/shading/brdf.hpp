@@ -7,6 +7,8 @@
 #include <cmath>
 #include <glm/glm.hpp>
 
+#include "shading/portable_math.hpp"
+
 namespace facet::shading {
 
 inline constexpr float kPi = 3.14159265358979f;
@@ -77,13 +79,13 @@ inline glm::vec3 cook_torrance(const PbrSurface& s, glm::vec3 n, glm::vec3 v, gl
 // Phong: reflect the light about the normal and compare with the view direction.
 inline float phong_specular(glm::vec3 n, glm::vec3 v, glm::vec3 l, float shininess) {
   glm::vec3 r = glm::reflect(-l, n);
-  return std::pow(std::max(glm::dot(r, v), 0.0f), shininess);
+  return portable_pow(std::max(glm::dot(r, v), 0.0f), shininess);
 }
 
 // Blinn-Phong: the half vector between light and view against the normal.
 inline float blinn_phong_specular(glm::vec3 n, glm::vec3 v, glm::vec3 l, float shininess) {
   glm::vec3 h = glm::normalize(l + v);
-  return std::pow(std::max(glm::dot(n, h), 0.0f), shininess);
+  return portable_pow(std::max(glm::dot(n, h), 0.0f), shininess);
 }
 
 }  // namespace facet::shading

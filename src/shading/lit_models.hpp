@@ -26,7 +26,7 @@ inline glm::vec3 reflect_environment(glm::vec3 color, const SurfacePoint& s,
 
 // Phong (kBlinn = false) or Blinn-Phong (true), per pixel: ambient + diffuse + specular.
 template <bool kBlinn>
-struct PhongShadingT {
+struct PhongShadingT : BatchForm<kBlinn ? BatchModel::blinn_phong : BatchModel::phong> {
   static constexpr int kVaryings = kSurfaceVaryingsWithTangent;
   static constexpr int kNormalSlot = shading::kNormalSlot;
   static constexpr int kBaseColorTexcoord = kTexcoordSlot;

@@ -77,6 +77,49 @@ HWY_INLINE void Fogged(const Fog& fog, FloatV w, FloatV color[3]) {
   }
 }
 
+// PhongShadingT::fragment()'s light loop for directional lights: albedo x ambient, plus for
+// each light facing the surface radiance x (albedo N.L + specular x highlight).
+HWY_INLINE Vec3V SpecularLight(const DrawUniforms& u, bool blinn, const Vec3V& n, const Vec3V& view,
+                               const Albedo& albedo) {
+  const FloatTag d;
+  const Material& m = *u.material;
+  Vec3V color{hn::Mul(albedo.c[0], hn::Set(d, u.ambient.x)),
+              hn::Mul(albedo.c[1], hn::Set(d, u.ambient.y)),
+              hn::Mul(albedo.c[2], hn::Set(d, u.ambient.z))};
+  for (int i = 0; i < u.light_count; ++i) {
+    const LightData& l = u.lights[i];
+    const Vec3V to_light = Set3(l.to_light);
+    const FloatV n_dot_l = Dot(n, to_light);
+    FloatV along;  // blinn_phong_specular / phong_specular, before the power
+    if (blinn) {
+      along = Dot(n, Normalize({hn::Add(to_light.x, view.x), hn::Add(to_light.y, view.y),
+                                hn::Add(to_light.z, view.z)}));
+    } else {
+      // reflect(-l, n) = I - (n * dot(n, I)) * 2
+      const Vec3V incident{hn::Neg(to_light.x), hn::Neg(to_light.y), hn::Neg(to_light.z)};
+      const FloatV n_dot_i = Dot(n, incident);
+      const FloatV two = hn::Set(d, 2.0f);
+      const Vec3V r{hn::Sub(incident.x, hn::Mul(hn::Mul(n.x, n_dot_i), two)),
+                    hn::Sub(incident.y, hn::Mul(hn::Mul(n.y, n_dot_i), two)),
+                    hn::Sub(incident.z, hn::Mul(hn::Mul(n.z, n_dot_i), two))};
+      along = Dot(r, view);
+    }
+    const FloatV highlight = m.shininess == 0.0f
+                                 ? hn::Set(d, 1.0f)
+                                 : PortablePow(StdMax(along, hn::Zero(d)), m.shininess);
+    const auto lit = hn::Not(hn::Le(n_dot_l, hn::Zero(d)));  // the scalar loop's continue
+    const FloatV* a = albedo.c;
+    FloatV* out[3] = {&color.x, &color.y, &color.z};
+    for (int c = 0; c < 3; ++c) {
+      const FloatV term =
+          hn::Add(hn::Mul(a[c], n_dot_l), hn::Mul(hn::Set(d, m.specular_color[c]), highlight));
+      *out[c] =
+          hn::IfThenElse(lit, hn::Add(*out[c], hn::Mul(hn::Set(d, l.radiance[c]), term)), *out[c]);
+    }
+  }
+  return color;
+}
+
 void ShadeBatch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
   const FloatTag d;
   const int lanes = static_cast<int>(hn::Lanes(d));
@@ -93,7 +136,7 @@ void ShadeBatch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, f
       for (int c = 0; c < 3; ++c) color[c] = hn::Add(albedo.c[c], emissive[c]);
       color[3] = hn::Add(albedo.c[3], hn::Zero(d));
     } else {
-      // surface_point<false>(): view and normal, the normal facing the viewer if two-sided.
+      // surface_point(): view and normal, the normal facing the viewer if two-sided.
       const Vec3V position = Load3(in.v, kPositionSlot, j);
       const Vec3V view = SafeNormalize(
           {hn::Sub(eye.x, position.x), hn::Sub(eye.y, position.y), hn::Sub(eye.z, position.z)});
@@ -103,10 +146,17 @@ void ShadeBatch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, f
         n = {hn::IfThenElse(back, hn::Neg(n.x), n.x), hn::IfThenElse(back, hn::Neg(n.y), n.y),
              hn::IfThenElse(back, hn::Neg(n.z), n.z)};
       }
-      const Vec3V light = DiffuseLight(u, n);
-      color[0] = hn::Add(hn::Mul(albedo.c[0], light.x), emissive[0]);
-      color[1] = hn::Add(hn::Mul(albedo.c[1], light.y), emissive[1]);
-      color[2] = hn::Add(hn::Mul(albedo.c[2], light.z), emissive[2]);
+      const Vec3V light = model == BatchModel::lambert
+                              ? DiffuseLight(u, n)
+                              : SpecularLight(u, model == BatchModel::blinn_phong, n, view, albedo);
+      if (model == BatchModel::lambert) {
+        color[0] = hn::Mul(albedo.c[0], light.x);  // diffuse_light(): albedo x light
+        color[1] = hn::Mul(albedo.c[1], light.y);
+        color[2] = hn::Mul(albedo.c[2], light.z);
+      } else {
+        color[0] = light.x, color[1] = light.y, color[2] = light.z;  // albedo already in
+      }
+      for (int c = 0; c < 3; ++c) color[c] = hn::Add(color[c], emissive[c]);
       color[3] = albedo.c[3];
     }
     if (in.fog != nullptr && in.fog->mode != FogMode::none) {
@@ -124,8 +174,13 @@ namespace facet::shading {
 
 HWY_EXPORT(ShadeBatch);
 
-bool batch_shades(const DrawUniforms& u) {
-  if (u.material->emissive != glm::vec3(0.0f) && u.material->emissive_map) return false;
+bool batch_shades(BatchModel model, const DrawUniforms& u) {
+  const Material& m = *u.material;
+  if (m.emissive != glm::vec3(0.0f) && m.emissive_map) return false;
+  if (model == BatchModel::phong || model == BatchModel::blinn_phong) {
+    if (m.normal_map || m.specular_map) return false;
+    if (m.reflectivity > 0.0f && u.lighting->environment.reflections) return false;
+  }
   for (int i = 0; i < u.light_count; ++i) {
     if (u.lights[i].type != LightType::directional) return false;
   }

@@ -1,9 +1,9 @@
-// The built-in unlit and Lambert models evaluated for a batch of pixels at once, with SIMD
-// (shade_batch.cpp, compiled for every target Highway supports): the raster loop
+// The built-in unlit, Lambert, Phong and Blinn-Phong models evaluated for a batch of pixels at
+// once, with SIMD (shade_batch.cpp, compiled for every target Highway supports): the raster loop
 // (pipeline/raster.hpp) packs the covered pixels of a triangle, then shades them together
-// instead of calling the model's fragment() per pixel. Same operations as UnlitShading and
-// LambertShading (models.hpp) lane by lane, so the same bits; draws the batch code does not
-// cover (point or spot lights, emissive maps) keep fragment().
+// instead of calling the model's fragment() per pixel. Same operations as their fragment()
+// (models.hpp, lit_models.hpp) lane by lane, so the same bits; draws the batch code does not
+// cover (point or spot lights, emissive, normal or specular maps, reflections) keep fragment().
 #pragma once
 
 #include "pipeline/frame.hpp"
@@ -13,7 +13,7 @@ namespace facet::shading {
 
 inline constexpr int kShadeBatch = 64;
 
-enum class BatchModel { unlit, lambert };
+enum class BatchModel { unlit, lambert, phong, blinn_phong };
 
 // Packed pixels of one triangle: n-th pixel's clip w is w[n], its varying k is v[k][n]. Arrays
 // hold kShadeBatch entries; those from count up to the next multiple of 8 must be readable
@@ -26,8 +26,9 @@ struct ShadeInput {
   const Fog* fog = nullptr;  // fog to apply to the colors (fog.hpp's apply_fog), or null
 };
 
-// Whether shade_batch can shade this draw: every light directional, no emissive map.
-bool batch_shades(const DrawUniforms& u);
+// Whether shade_batch can shade this draw with this model: every light directional, no
+// emissive map; for Phong and Blinn-Phong also no normal or specular map and no reflections.
+bool batch_shades(BatchModel model, const DrawUniforms& u);
 
 // Linear RGBA of every pixel, as the model's fragment() gives it (then fogged, if in.fog).
 void shade_batch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]);
@@ -37,7 +38,7 @@ void shade_batch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, 
 // form of fragment(), which also applies in.fog. The built-in models get them from here.
 template <BatchModel kModel>
 struct BatchForm {
-  static bool batch_shades(const DrawUniforms& u) { return shading::batch_shades(u); }
+  static bool batch_shades(const DrawUniforms& u) { return shading::batch_shades(kModel, u); }
   static void fragment_batch(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
     shade_batch(kModel, u, in, rgba);
   }

@@ -344,7 +344,7 @@ class PixelWriter {
   [[no_unique_address]] std::conditional_t<edge_overlay<Shading>(), EdgeScales, std::monostate>
       edge_scales_;
   const TextureMap* base_map_ = nullptr;  // the map sampled ahead, if any
-  bool batch_ = false;                    // shade() uses shade_batch
+  bool batch_ = false;                    // shade() uses Shading::fragment_batch
   shading::TexelBatch texels_;
 };
 
@@ -401,8 +401,9 @@ void raster_small_triangle(TileContext& tile, const SetupTriangle& t, int x0, in
 //   3. cover_block finds the covered pixels that pass the depth test, with their depth and
 //      varyings, SIMD across a block row;
 //   4. those pixels are shaded and written (PixelWriter::shade): the base color map sampled
-//      and the unlit and Lambert models evaluated for all of them at once with SIMD, other
-//      models one pixel at a time.
+//      and models with a batch form (fragment_batch) evaluated for all of them at once with
+//      SIMD, other models one pixel at a time; whole covered blocks of opaque batch-shaded
+//      draws go straight into the tile (shade_full_block).
 template <class Shading, AlphaMode kAlpha = AlphaMode::opaque>
 void raster_triangle(TileContext& tile, const SetupTriangle& t) {
   const int x0 = std::max(t.min_x, tile.x0), x1 = std::min(t.max_x, tile.x1 - 1);

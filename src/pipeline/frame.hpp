@@ -195,8 +195,8 @@ struct Frame : PrimitiveBuffer {
   std::vector<std::uint32_t> draw_order;  // opaque in submission order, then blended far-first
   std::vector<shading::LightData> lights;
   std::vector<DrawVertices> vertices;  // per draw slot, reused
-  std::vector<GeometryChunk>
-      chunks;  // reused across frames: the first chunk_count are this frame's
+  // Reused across frames: the first chunk_count are this frame's.
+  std::vector<GeometryChunk> chunks;
   std::size_t chunk_count = 0;
   // Geometry's parallel tasks: chunks [first_chunk, end_chunk), after transforming their draw's
   // vertices when `transform` says so (geometry.cpp).

@@ -166,18 +166,14 @@ struct Assembler {
 
 }  // namespace
 
-void assemble_primitives(const Frame& frame, std::uint32_t draw_index, std::size_t begin,
-                         std::size_t end, PrimitiveSink& out, PrimitiveCounts& counts) {
+void assemble_primitives(const Frame& frame, std::uint32_t draw_index, const DrawVertices& vertices,
+                         std::size_t begin, std::size_t end, PrimitiveSink& out,
+                         PrimitiveCounts& counts) {
   const DrawRecord& draw = frame.draws[draw_index];
   const Mesh& mesh = *draw.mesh;
-  Assembler assembler{out,
-                      counts,
-                      frame.width,
-                      frame.height,
-                      draw_index,
-                      draw,
-                      frame.vertices[draw_index],
-                      guard_band_bounds(frame.width, frame.height)};
+  Assembler assembler{
+      out,        counts, frame.width, frame.height,
+      draw_index, draw,   vertices,    guard_band_bounds(frame.width, frame.height)};
   auto index = [&](std::size_t i) {
     return mesh.indices.empty() ? static_cast<std::uint32_t>(i) : mesh.indices[i];
   };

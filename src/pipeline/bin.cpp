@@ -75,10 +75,12 @@ void for_each_binning(const Frame& frame, std::size_t begin, std::size_t end, Vi
     const int tx0 = e.tile_x0, tx1 = e.tile_x1, ty0 = e.tile_y0, ty1 = e.tile_y1;
     const int span_x = tx1 - tx0 + 1;
     if (span_x * (ty1 - ty0 + 1) <= kMaskedTiles) {  // setup said which tiles
-      for (std::uint32_t bits = e.tiles; bits; bits &= bits - 1) {
-        const int bit = std::countr_zero(bits);
-        visit(static_cast<std::size_t>(ty0 + bit / span_x) * frame.tiles_x + tx0 + bit % span_x,
-              entry);
+      // Walked row by row, the bit index counting along: no division per entry.
+      std::uint32_t bit = 1;
+      for (int ty = ty0; ty <= ty1; ++ty) {
+        for (int tx = tx0; tx <= tx1; ++tx, bit <<= 1) {
+          if (e.tiles & bit) visit(static_cast<std::size_t>(ty) * frame.tiles_x + tx, entry);
+        }
       }
       return;
     }

@@ -59,11 +59,6 @@ void for_each_entry(const Frame& frame, std::size_t begin, std::size_t end, Visi
   }
 }
 
-// Tile sizes are powers of two (Renderer checks) and boxes are non-negative: shift, not divide.
-int tile_shift(const Frame& frame) {
-  return std::countr_zero(static_cast<unsigned>(frame.tile_size));
-}
-
 // True if triangle t may cover a pixel of tile (tx, ty).
 bool may_touch_tile(const Frame& frame, const SetupTriangle& t, int tx, int ty) {
   const int ts = frame.tile_size;
@@ -80,10 +75,12 @@ void for_each_binning(const Frame& frame, std::size_t begin, std::size_t end, Vi
     const int tx0 = e.tile_x0, tx1 = e.tile_x1, ty0 = e.tile_y0, ty1 = e.tile_y1;
     const int span_x = tx1 - tx0 + 1;
     if (span_x * (ty1 - ty0 + 1) <= kMaskedTiles) {  // setup said which tiles
-      for (std::uint32_t bits = e.tiles; bits; bits &= bits - 1) {
-        const int bit = std::countr_zero(bits);
-        visit(static_cast<std::size_t>(ty0 + bit / span_x) * frame.tiles_x + tx0 + bit % span_x,
-              entry);
+      // Walked row by row, the bit index counting along: no division per entry.
+      std::uint32_t bit = 1;
+      for (int ty = ty0; ty <= ty1; ++ty) {
+        for (int tx = tx0; tx <= tx1; ++tx, bit <<= 1) {
+          if (e.tiles & bit) visit(static_cast<std::size_t>(ty) * frame.tiles_x + tx, entry);
+        }
       }
       return;
     }
@@ -100,26 +97,16 @@ void for_each_binning(const Frame& frame, std::size_t begin, std::size_t end, Vi
 
 }  // namespace
 
-SequenceEntry binning_entry(const Frame& frame, std::uint32_t index, const SetupTriangle* triangle,
-                            int min_x, int min_y, int max_x, int max_y) {
-  const int shift = tile_shift(frame);
-  SequenceEntry e;
-  e.index = index;
-  e.tile_x0 = static_cast<std::uint16_t>(min_x >> shift);
-  e.tile_y0 = static_cast<std::uint16_t>(min_y >> shift);
-  e.tile_x1 = static_cast<std::uint16_t>(max_x >> shift);
-  e.tile_y1 = static_cast<std::uint16_t>(max_y >> shift);
+std::uint32_t binning_tile_mask(const Frame& frame, const SetupTriangle* triangle,
+                                const SequenceEntry& e) {
   const int span_x = e.tile_x1 - e.tile_x0 + 1, span_y = e.tile_y1 - e.tile_y0 + 1;
-  e.tiles = 0;
-  if (span_x * span_y == 1) {
-    e.tiles = 1;  // small triangles and lines: the tile of their box, no test
-  } else if (span_x * span_y <= kMaskedTiles) {
-    for (int bit = 0; bit < span_x * span_y; ++bit) {
-      const int tx = e.tile_x0 + bit % span_x, ty = e.tile_y0 + bit / span_x;
-      if (!triangle || may_touch_tile(frame, *triangle, tx, ty)) e.tiles |= 1u << bit;
-    }
+  if (span_x * span_y > kMaskedTiles) return 0;  // binning tests these tiles itself
+  std::uint32_t tiles = 0;
+  for (int bit = 0; bit < span_x * span_y; ++bit) {
+    const int tx = e.tile_x0 + bit % span_x, ty = e.tile_y0 + bit / span_x;
+    if (!triangle || may_touch_tile(frame, *triangle, tx, ty)) tiles |= 1u << bit;
   }
-  return e;
+  return tiles;
 }
 
 void bin_primitives(Frame& frame, int workers) {

@@ -3,7 +3,9 @@
 // read the bins.
 #pragma once
 
+#include <bit>
 #include <cstddef>
+#include <cstdint>
 
 #include "pipeline/frame.hpp"
 
@@ -16,11 +18,28 @@ inline constexpr std::size_t kMaxBinningRuns = 16;
 
 void bin_primitives(Frame& frame, int workers);
 
+// SequenceEntry::tiles for a box of several tiles: for a triangle (not null: its edge functions
+// must be final), which tiles it may touch; a line may touch every tile of its box.
+std::uint32_t binning_tile_mask(const Frame& frame, const SetupTriangle* triangle,
+                                const SequenceEntry& e);
+
 // The sequence entry of primitive `index` with the given pixel bounding box (inclusive, inside
-// the frame): for a triangle (not null: its edge functions and box must be final), which tiles
-// of the box it may touch; a line may touch every tile of its box.
-SequenceEntry binning_entry(const Frame& frame, std::uint32_t index, const SetupTriangle* triangle,
-                            int min_x, int min_y, int max_x, int max_y);
+// the frame). Inline: most triangles lie in one tile, and setup calls this for each.
+inline SequenceEntry binning_entry(const Frame& frame, std::uint32_t index,
+                                   const SetupTriangle* triangle, int min_x, int min_y, int max_x,
+                                   int max_y) {
+  // Tile sizes are powers of two (Renderer checks) and boxes are non-negative: shift, not divide.
+  const int shift = std::countr_zero(static_cast<unsigned>(frame.tile_size));
+  SequenceEntry e;
+  e.index = index;
+  e.tile_x0 = static_cast<std::uint16_t>(min_x >> shift);
+  e.tile_y0 = static_cast<std::uint16_t>(min_y >> shift);
+  e.tile_x1 = static_cast<std::uint16_t>(max_x >> shift);
+  e.tile_y1 = static_cast<std::uint16_t>(max_y >> shift);
+  const bool one_tile = e.tile_x0 == e.tile_x1 && e.tile_y0 == e.tile_y1;
+  e.tiles = one_tile ? 1u : binning_tile_mask(frame, triangle, e);
+  return e;
+}
 
 // True if the triangle may cover a pixel centre of the rectangle [x0, x1) x [y0, y1):
 // the edge functions' maxima over the rectangle's centres are all non-negative.

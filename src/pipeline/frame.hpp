@@ -194,9 +194,10 @@ struct Frame : PrimitiveBuffer {
   std::vector<DrawRecord> draws;
   std::vector<std::uint32_t> draw_order;  // opaque in submission order, then blended far-first
   std::vector<shading::LightData> lights;
-  std::vector<DrawVertices> vertices;  // per draw slot, reused
-  std::vector<GeometryChunk>
-      chunks;  // reused across frames: the first chunk_count are this frame's
+  std::vector<DrawVertices> vertices;         // per draw slot (big draws), reused
+  std::vector<DrawVertices> worker_vertices;  // per worker (small draws, one at a time)
+  // Reused across frames: the first chunk_count are this frame's.
+  std::vector<GeometryChunk> chunks;
   std::size_t chunk_count = 0;
   // Geometry's parallel tasks: chunks [first_chunk, end_chunk), after transforming their draw's
   // vertices when `transform` says so (geometry.cpp).

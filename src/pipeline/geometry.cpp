@@ -117,11 +117,18 @@ void finish_chunks(Frame& frame, Totals end) {
 
 void run_geometry(Frame& frame, int workers) {
   if (frame.vertices.size() < frame.draws.size()) frame.vertices.resize(frame.draws.size());
+  if (frame.worker_vertices.size() < static_cast<std::size_t>(workers)) {
+    frame.worker_vertices.resize(workers);
+  }
   const Totals totals = plan_chunks(frame);
   // A small draw is one task, its vertex transform and then all its chunks, so that its
   // vertices (about 160 bytes each) are still in the core's cache when its triangles read
-  // them. A big draw's vertices are transformed first, in parallel batches, and then its chunks
-  // are tasks of their own.
+  // them; they go to the worker's own buffer, which the worker's next small draw overwrites
+  // while it is still in cache, instead of to the draw's, which a frame of many draws has long
+  // evicted. (Such a task never waits on nested parallel work, so its worker cannot start
+  // another task meanwhile: transform_vertices runs a small draw on the calling thread.) A big
+  // draw's vertices are transformed first, in parallel batches, into the draw's buffer, and
+  // then its chunks are tasks of their own.
   frame.geometry_tasks.clear();  // capacity kept across frames
   for (std::uint32_t k = 0; k < frame.chunk_count;) {
     const std::uint32_t d = frame.chunks[k].draw;
@@ -136,16 +143,17 @@ void run_geometry(Frame& frame, int workers) {
     }
     k = end;
   }
-  parallel_tasks(static_cast<int>(frame.geometry_tasks.size()), workers, [&](int i, int) {
+  parallel_tasks(static_cast<int>(frame.geometry_tasks.size()), workers, [&](int i, int worker) {
     const Frame::GeometryTask& task = frame.geometry_tasks[i];
     const std::uint32_t d = frame.chunks[task.first_chunk].draw;
+    DrawVertices& vertices = task.transform ? frame.worker_vertices[worker] : frame.vertices[d];
     if (task.transform) {
-      transform_vertices(frame.draws[d], frame.width, frame.height, workers, frame.vertices[d]);
+      transform_vertices(frame.draws[d], frame.width, frame.height, workers, vertices);
     }
     for (std::uint32_t k = task.first_chunk; k < task.end_chunk; ++k) {
       GeometryChunk& chunk = frame.chunks[k];
       PrimitiveSink sink(frame, chunk, frame.draws[d].pipeline.varyings);
-      assemble_primitives(frame, d, chunk.begin, chunk.end, sink, chunk.counts);
+      assemble_primitives(frame, d, vertices, chunk.begin, chunk.end, sink, chunk.counts);
     }
   });
   finish_chunks(frame, totals);

@@ -1,6 +1,7 @@
 // Stage: primitive assembly (see primitive.hpp).
 #include "pipeline/primitive.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "pipeline/clip.hpp"
@@ -8,6 +9,14 @@
 
 namespace facet::pipeline {
 namespace {
+
+// The frustum's outcode bits of ProjectedVertex::codes.
+constexpr unsigned kFrustumCodes = (1u << kClipPlaneCount) - 1;
+
+// Triangles culled in one go before the survivors are assembled: a tight loop of culling
+// tests overlaps one triangle's facing arithmetic with the next one's, where interleaved with
+// setup each waited for its own.
+constexpr std::size_t kCullBatch = 128;
 
 struct Assembler {
   PrimitiveSink& out;
@@ -52,25 +61,39 @@ struct Assembler {
     setup_line(out, width, height, p, q, color);
   }
 
-  void triangle(std::uint32_t i0, std::uint32_t i1, std::uint32_t i2) {
-    // Culling reads the vertices' projections (outcodes, facing inputs) in place: most
-    // rejected triangles (facing away, off screen) never touch their varyings.
+  // A triangle culling let through, for the rest of assembly.
+  struct Accepted {
+    std::uint32_t i0, i1, i2;
+    unsigned codes;  // the three vertices' codes, or-ed
+    bool front_facing;
+  };
+
+  // Culling alone: true (and `a` filled) if the triangle survives it. It reads only the
+  // vertices' projections (outcodes, facing inputs), so most rejected triangles (facing away,
+  // off screen) never touch their varyings.
+  bool accept(std::uint32_t i0, std::uint32_t i1, std::uint32_t i2, Accepted& a) {
     const ProjectedVertex* p[3] = {&vertices.projected[i0], &vertices.projected[i1],
                                    &vertices.projected[i2]};
     const unsigned code0 = p[0]->codes, code1 = p[1]->codes, code2 = p[2]->codes;
     if ((code0 | code1 | code2) & kNotFinite) {
       ++counts.culled;  // NaN/Inf positions: skipped, never rasterized
-      return;
+      return false;
     }
-    const unsigned frustum_mask = (1u << kClipPlaneCount) - 1;
-    unsigned out0 = code0 & frustum_mask, out1 = code1 & frustum_mask, out2 = code2 & frustum_mask;
     double orientation = homogeneous_orientation(*p[0], *p[1], *p[2]);
     bool front_facing = orientation > 0.0;
     // Trivial reject: all three outside one frustum plane. Zero orientation: degenerate.
-    if ((out0 & out1 & out2) || orientation == 0.0 || cull(front_facing)) {
+    if ((code0 & code1 & code2 & kFrustumCodes) || orientation == 0.0 || cull(front_facing)) {
       ++counts.culled;
-      return;
+      return false;
     }
+    a = {i0, i1, i2, code0 | code1 | code2, front_facing};
+    return true;
+  }
+
+  // Edges, clipping and setup of a triangle culling accepted.
+  void assemble(const Accepted& a) {
+    const std::uint32_t i0 = a.i0, i1 = a.i1, i2 = a.i2;
+    const bool front_facing = a.front_facing;
     const DrawPipeline& pipe = draw.pipeline;
     const ClipVertex* in[3] = {&vertices.clip[i0], &vertices.clip[i1], &vertices.clip[i2]};
     if (pipe.draws_edges) {
@@ -81,13 +104,14 @@ struct Assembler {
 
     // Near and far are the same planes in both bounds; the guard band's sides only need
     // checking when a vertex is outside the frustum's sides (the guard band contains them).
-    unsigned any_out = out0 | out1 | out2;
+    unsigned any_out = a.codes & kFrustumCodes;
     unsigned planes = any_out & (kClipNear | kClipFar);
     if (any_out & (kClipLeft | kClipRight | kClipBottom | kClipTop)) {
-      planes = (code0 | code1 | code2) >> kGuardCodeShift & frustum_mask;
+      planes = a.codes >> kGuardCodeShift & kFrustumCodes;
     }
     if (planes == 0 && !hooks) {  // the common case: set up from the projected vertices
-      const ScreenVertex s[3] = {p[0]->screen, p[1]->screen, p[2]->screen};
+      const ScreenVertex s[3] = {vertices.projected[i0].screen, vertices.projected[i1].screen,
+                                 vertices.projected[i2].screen};
       const int n = pipe.varyings;
       const float* over_w[3] = {vertices.over_w.data() + i0 * n, vertices.over_w.data() + i1 * n,
                                 vertices.over_w.data() + i2 * n};
@@ -132,7 +156,7 @@ struct Assembler {
 
   void line(std::uint32_t i0, std::uint32_t i1) {
     const unsigned code0 = vertices.projected[i0].codes, code1 = vertices.projected[i1].codes;
-    if (((code0 | code1) & kNotFinite) || (code0 & code1 & ((1u << kClipPlaneCount) - 1))) {
+    if (((code0 | code1) & kNotFinite) || (code0 & code1 & kFrustumCodes)) {
       ++counts.culled;
       return;
     }
@@ -142,39 +166,39 @@ struct Assembler {
 
 }  // namespace
 
-void assemble_primitives(const Frame& frame, std::uint32_t draw_index, std::size_t begin,
-                         std::size_t end, PrimitiveSink& out, PrimitiveCounts& counts) {
+void assemble_primitives(const Frame& frame, std::uint32_t draw_index, const DrawVertices& vertices,
+                         std::size_t begin, std::size_t end, PrimitiveSink& out,
+                         PrimitiveCounts& counts) {
   const DrawRecord& draw = frame.draws[draw_index];
   const Mesh& mesh = *draw.mesh;
-  Assembler assembler{out,
-                      counts,
-                      frame.width,
-                      frame.height,
-                      draw_index,
-                      draw,
-                      frame.vertices[draw_index],
-                      guard_band_bounds(frame.width, frame.height)};
+  Assembler assembler{
+      out,        counts, frame.width, frame.height,
+      draw_index, draw,   vertices,    guard_band_bounds(frame.width, frame.height)};
   auto index = [&](std::size_t i) {
     return mesh.indices.empty() ? static_cast<std::uint32_t>(i) : mesh.indices[i];
   };
-  for (std::size_t p = begin; p < end; ++p) {
-    switch (mesh.topology) {
-      case Topology::triangles:
-        assembler.triangle(index(3 * p), index(3 * p + 1), index(3 * p + 2));
-        break;
-      case Topology::triangle_strip:
+  if (mesh.topology == Topology::lines) {
+    for (std::size_t p = begin; p < end; ++p) assembler.line(index(2 * p), index(2 * p + 1));
+    return;
+  }
+  Assembler::Accepted accepted[kCullBatch];
+  for (std::size_t first = begin; first < end; first += kCullBatch) {
+    const std::size_t last = std::min(end, first + kCullBatch);
+    std::size_t count = 0;
+    for (std::size_t p = first; p < last; ++p) {
+      std::uint32_t i0, i1, i2;
+      if (mesh.topology == Topology::triangles) {
+        i0 = index(3 * p), i1 = index(3 * p + 1), i2 = index(3 * p + 2);
+      } else if (p % 2 == 0) {  // strip
+        i0 = index(p), i1 = index(p + 1), i2 = index(p + 2);
+      } else {
         // Odd triangles swap their first two vertices so every triangle keeps the strip's
         // winding.
-        if (p % 2 == 0) {
-          assembler.triangle(index(p), index(p + 1), index(p + 2));
-        } else {
-          assembler.triangle(index(p + 1), index(p), index(p + 2));
-        }
-        break;
-      case Topology::lines:
-        assembler.line(index(2 * p), index(2 * p + 1));
-        break;
+        i0 = index(p + 1), i1 = index(p), i2 = index(p + 2);
+      }
+      if (assembler.accept(i0, i1, i2, accepted[count])) ++count;
     }
+    for (std::size_t k = 0; k < count; ++k) assembler.assemble(accepted[k]);
   }
 }
 

@@ -28,9 +28,11 @@ inline double homogeneous_orientation(const ProjectedVertex& a, const ProjectedV
 }
 
 // Assembles, culls, clips and sets up primitives [begin, end) (triangles, or segments for
-// line meshes) of frame.draws[draw] into out, counting what it culls and clips into counts.
-// Reads only the frame, so chunks of one draw can run in parallel, each into its own regions.
-void assemble_primitives(const Frame& frame, std::uint32_t draw, std::size_t begin, std::size_t end,
-                         PrimitiveSink& out, PrimitiveCounts& counts);
+// line meshes) of frame.draws[draw], whose transformed vertices are `vertices`, into out,
+// counting what it culls and clips into counts. Reads only the frame and the vertices, so
+// chunks of one draw can run in parallel, each into its own regions.
+void assemble_primitives(const Frame& frame, std::uint32_t draw, const DrawVertices& vertices,
+                         std::size_t begin, std::size_t end, PrimitiveSink& out,
+                         PrimitiveCounts& counts);
 
 }  // namespace facet::pipeline

@@ -36,8 +36,9 @@ class PrimitiveSink {
 
   // A place for the next triangle (and its varying planes), in submission order. `edges` is
   // the triangle being set up, with its edge functions and bounding box already final
-  // (binning's tile tests read them).
-  TriangleSlot add_triangle(const SetupTriangle& edges) {
+  // (binning's tile tests read them). Always inline: setup calls it for every triangle, and
+  // GCC kept it out of line.
+  [[gnu::always_inline]] TriangleSlot add_triangle(const SetupTriangle& edges) {
     GeometryChunk::Region& r = chunk_.triangles;
     if (r.used < r.capacity) {
       const std::uint32_t index = r.begin + r.used;

@@ -22,7 +22,7 @@ using IntTag = hn::RebindToSigned<FloatTag>;
 using Vec = hn::Vec<FloatTag>;
 
 // Vectors of x, y and z of `valid` vec3s from p, zero-padded to a whole vector.
-void Load3(FloatTag d, const glm::vec3* p, std::size_t valid, Vec& x, Vec& y, Vec& z) {
+HWY_INLINE void Load3(FloatTag d, const glm::vec3* p, std::size_t valid, Vec& x, Vec& y, Vec& z) {
   const std::size_t lanes = hn::Lanes(d);
   if (valid >= lanes) {
     hn::LoadInterleaved3(d, &p->x, x, y, z);
@@ -34,7 +34,7 @@ void Load3(FloatTag d, const glm::vec3* p, std::size_t valid, Vec& x, Vec& y, Ve
 }
 
 // Row r of m * (x, y, z, 1), in glm's order: (m0 x + m1 y) + (m2 z + m3 * 1).
-Vec Transform4(FloatTag d, const glm::mat4& m, int r, Vec x, Vec y, Vec z) {
+HWY_INLINE Vec Transform4(FloatTag d, const glm::mat4& m, int r, Vec x, Vec y, Vec z) {
   const auto a = hn::Add(hn::Mul(hn::Set(d, m[0][r]), x), hn::Mul(hn::Set(d, m[1][r]), y));
   const auto b =
       hn::Add(hn::Mul(hn::Set(d, m[2][r]), z), hn::Mul(hn::Set(d, m[3][r]), hn::Set(d, 1.0f)));
@@ -42,13 +42,13 @@ Vec Transform4(FloatTag d, const glm::mat4& m, int r, Vec x, Vec y, Vec z) {
 }
 
 // Row r of m * (x, y, z), in glm's order: (m0 x + m1 y) + m2 z.
-Vec Transform3(FloatTag d, const glm::mat3& m, int r, Vec x, Vec y, Vec z) {
+HWY_INLINE Vec Transform3(FloatTag d, const glm::mat3& m, int r, Vec x, Vec y, Vec z) {
   return hn::Add(hn::Add(hn::Mul(hn::Set(d, m[0][r]), x), hn::Mul(hn::Set(d, m[1][r]), y)),
                  hn::Mul(hn::Set(d, m[2][r]), z));
 }
 
 // The bits of `bit` where value >= 0 fails (NaN fails): outcode()'s test.
-hn::Vec<IntTag> Outside(FloatTag d, Vec value, std::uint32_t bits) {
+HWY_INLINE hn::Vec<IntTag> Outside(FloatTag d, Vec value, std::uint32_t bits) {
   const IntTag di;
   const auto fails = hn::Not(hn::Ge(value, hn::Zero(d)));
   return hn::IfThenElseZero(hn::RebindMask(di, fails), hn::Set(di, static_cast<int>(bits)));
@@ -58,7 +58,7 @@ hn::Vec<IntTag> Outside(FloatTag d, Vec value, std::uint32_t bits) {
 // floats are the integers, so the addition rounds v to an integer, to nearest even (1.5 * 2^23
 // is even), exactly as lrint does; subtracting it back is exact. Returns the lanes it could not
 // do (beyond 2^22, or NaN), for the scalar code.
-hn::Mask<FloatTag> Snap(FloatTag d, Vec pixels, std::int32_t* out) {
+HWY_INLINE hn::Mask<FloatTag> Snap(FloatTag d, Vec pixels, std::int32_t* out) {
   const auto v = hn::Mul(pixels, hn::Set(d, static_cast<float>(kSubpixelScale)));
   const auto magic = hn::Set(d, 12582912.0f);
   const auto rounded = hn::Sub(hn::Add(v, magic), magic);

@@ -29,6 +29,22 @@ TEST(Determinism, ThreadsAndTileSizesGiveIdenticalImages) {
   }
 }
 
+TEST(Determinism, AColorOnlyFramebufferGetsTheSameColors) {
+  Scene scene = make_shapes_scene();
+  Renderer renderer;
+  Framebuffer full(203, 117);
+  Framebuffer color_only(203, 117, ColorFormat::rgba8_srgb, DepthImage::none);
+  for (Framebuffer* fb : {&full, &color_only}) {
+    renderer.begin_frame(scene.camera, scene.lighting);
+    draw_scene(renderer, scene);
+    renderer.finish(*fb);
+  }
+  EXPECT_TRUE(full.has_depth());
+  EXPECT_FALSE(color_only.has_depth());
+  EXPECT_TRUE(color_only.depth().empty());
+  EXPECT_EQ(color_only.rgba8(), full.rgba8());
+}
+
 TEST(Determinism, RepeatedFramesFromOneRendererAreIdentical) {
   Scene scene = make_shapes_scene();
   RenderSettings settings;

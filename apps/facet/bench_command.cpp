@@ -39,7 +39,8 @@ SceneResult run_scene(const std::string& name, const BenchOptions& o, const Imag
   settings.threads = o.threads;
   settings.clear_color = scene->clear_color();
   Renderer renderer(settings);
-  Framebuffer framebuffer(size.width, size.height);
+  // Color only, as glmark2's frames are: both depth-test, neither reads the depth back.
+  Framebuffer framebuffer(size.width, size.height, ColorFormat::rgba8_srgb, DepthImage::none);
   const float aspect = static_cast<float>(size.width) / size.height;
   std::vector<double> total, geometry, binning, raster, resolve;
   using Clock = std::chrono::steady_clock;

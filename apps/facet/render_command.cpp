@@ -59,7 +59,7 @@ int run_render(const RenderOptions& o) {
   settings.clear_color = glm::vec4(background, 1.0f);
   settings.exposure = o.exposure;
   Renderer renderer(settings);
-  Framebuffer framebuffer(size.width, size.height);
+  Framebuffer framebuffer(size.width, size.height, ColorFormat::rgba8_srgb, DepthImage::none);
 
   renderer.begin_frame(camera, scene.lighting);
   draw_scene(renderer, scene);

@@ -36,7 +36,8 @@ ViewLoop::ViewLoop(ViewWindow& window, ViewSetup setup)
       setup_(std::move(setup)),
       settings_(setup_.settings),
       controls_(setup_.start, setup_.walk_speed, setup_.camera_mode),
-      frame_(settings_.size.width, settings_.size.height) {
+      frame_(settings_.size.width, settings_.size.height, ColorFormat::rgba8_srgb,
+             DepthImage::none) {
   for (const Material& m : setup_.scene->materials) own_shading_.push_back(m.shading);
   apply_shading();
   make_renderer();
@@ -75,7 +76,8 @@ void ViewLoop::apply(const SettingUpdate& update) {
       break;
     case SettingChange::size:
       window_.set_render_size(settings_.size.width, settings_.size.height);
-      frame_ = Framebuffer(settings_.size.width, settings_.size.height);
+      frame_ = Framebuffer(settings_.size.width, settings_.size.height, ColorFormat::rgba8_srgb,
+                           DepthImage::none);  // shown and saved as color only
       break;
     case SettingChange::threads:
       make_renderer();

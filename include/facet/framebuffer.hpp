@@ -1,5 +1,5 @@
-// Framebuffer: the render target — a color image (RGBA8 sRGB or RGBA32F linear) and a 32-bit
-// float depth image of the same size, from 1x1 up to 8192x8192.
+// Framebuffer: the render target — a color image (RGBA8 sRGB or RGBA32F linear) and, unless
+// asked not to keep one, a 32-bit float depth image of the same size; from 1x1 up to 8192x8192.
 #pragma once
 
 #include <cstdint>
@@ -13,12 +13,18 @@ enum class ColorFormat {
   rgba32f,     // linear float
 };
 
+// Whether the renderer copies its depth out into the framebuffer. Depth is tested either way
+// (in the renderer's own tile buffers); a color-only job (a PNG, a window) saves the copy, a
+// fifth of a simple frame's time at 1920x1080.
+enum class DepthImage { keep, none };
+
 class Framebuffer {
  public:
   static constexpr int kMaxSize = 8192;
 
   // Throws facet::Error if a size is outside [1, kMaxSize].
-  Framebuffer(int width, int height, ColorFormat format = ColorFormat::rgba8_srgb);
+  Framebuffer(int width, int height, ColorFormat format = ColorFormat::rgba8_srgb,
+              DepthImage depth = DepthImage::keep);
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -29,11 +35,14 @@ class Framebuffer {
   const std::vector<std::uint8_t>& rgba8() const { return rgba8_; }
   std::vector<float>& rgba32f() { return rgba32f_; }
   const std::vector<float>& rgba32f() const { return rgba32f_; }
+  // Row-major, top row first; empty for DepthImage::none.
   std::vector<float>& depth() { return depth_; }
   const std::vector<float>& depth() const { return depth_; }
+  bool has_depth() const { return !depth_.empty(); }
 
   // Linear color of one pixel, whatever the format (sRGB decoded).
   glm::vec4 pixel(int x, int y) const;
+  // Only with a depth image (has_depth()).
   float depth_at(int x, int y) const { return depth_[static_cast<size_t>(y) * width_ + x]; }
 
  private:

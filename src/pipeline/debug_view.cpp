@@ -66,7 +66,8 @@ void resolve_overdraw(const TileContext& tile, Framebuffer& target) {
     for (int x = tile.x0; x < tile.x1; ++x) {
       store_display(target, row + x, heat(counts[x - tile.x0].r, 2.0f));
     }
-    std::fill_n(target.depth().data() + row + tile.x0, tile.x1 - tile.x0, 1.0f);
+    if (target.has_depth())
+      std::fill_n(target.depth().data() + row + tile.x0, tile.x1 - tile.x0, 1.0f);
   }
 }
 

@@ -80,7 +80,9 @@ void resolve_tile(const TileContext& tile, float scale, Framebuffer& target) {
     const float* depth = tile.depth + static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride;
     std::size_t row = static_cast<std::size_t>(y) * target.width();
     store_row(target, row + tile.x0, color, tile.x1 - tile.x0, scale);
-    std::copy_n(depth, tile.x1 - tile.x0, target.depth().data() + row + tile.x0);
+    if (target.has_depth()) {
+      std::copy_n(depth, tile.x1 - tile.x0, target.depth().data() + row + tile.x0);
+    }
   }
 }
 
@@ -96,14 +98,17 @@ void resolve_cleared_tile(const TileContext& tile, const glm::vec4& clear, float
     for (int y = tile.y0; y < tile.y1; ++y) {
       std::size_t row = static_cast<std::size_t>(y) * target.width();
       std::memcpy(target.rgba8().data() + (row + tile.x0) * 4, row_bytes, width * 4);
-      std::fill_n(target.depth().data() + row + tile.x0, width, kClearDepth);
+      if (target.has_depth())
+        std::fill_n(target.depth().data() + row + tile.x0, width, kClearDepth);
     }
     return;
   }
   for (int y = tile.y0; y < tile.y1; ++y) {
     std::size_t row = static_cast<std::size_t>(y) * target.width();
     for (int x = tile.x0; x < tile.x1; ++x) store_row(target, row + x, &clear, 1, scale);
-    std::fill_n(target.depth().data() + row + tile.x0, tile.x1 - tile.x0, kClearDepth);
+    if (target.has_depth()) {
+      std::fill_n(target.depth().data() + row + tile.x0, tile.x1 - tile.x0, kClearDepth);
+    }
   }
 }
 

@@ -8,7 +8,7 @@
 
 namespace facet {
 
-Framebuffer::Framebuffer(int width, int height, ColorFormat format)
+Framebuffer::Framebuffer(int width, int height, ColorFormat format, DepthImage depth)
     : width_(width), height_(height), format_(format) {
   if (width < 1 || height < 1 || width > kMaxSize || height > kMaxSize) {
     throw Error("framebuffer: size " + std::to_string(width) + "x" + std::to_string(height) +
@@ -20,7 +20,7 @@ Framebuffer::Framebuffer(int width, int height, ColorFormat format)
   } else {
     rgba32f_.assign(pixels * 4, 0.0f);
   }
-  depth_.assign(pixels, 1.0f);
+  if (depth == DepthImage::keep) depth_.assign(pixels, 1.0f);
 }
 
 glm::vec4 Framebuffer::pixel(int x, int y) const {

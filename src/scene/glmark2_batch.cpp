@@ -92,17 +92,11 @@ void ShadeGlmark2Batch(BatchShader shader, const DrawUniforms& u, const ShadeInp
       }
       case Shader::phong: {
         const Vec3V p = Load3(in.v, PhongShading::kPosition, j);
-        const Vec3V eye = Normalize({hn::Neg(p.x), hn::Neg(p.y), hn::Neg(p.z)});
+        const Vec3V eye = Normalize(Negate(p));
         const Vec3V light = Normalize(
             {hn::Sub(hn::Zero(d), p.x), hn::Sub(hn::Set(d, 1.0f), p.y), hn::Sub(hn::Zero(d), p.z)});
         const Vec3V n = Normalize(Load3(in.v, 0, j));
-        // reflect(-light, n) = I - (n * dot(n, I)) * 2
-        const Vec3V incident{hn::Neg(light.x), hn::Neg(light.y), hn::Neg(light.z)};
-        const BatchV n_dot_i = Dot(n, incident);
-        const BatchV two = hn::Set(d, 2.0f);
-        const Vec3V reflection{hn::Sub(incident.x, hn::Mul(hn::Mul(n.x, n_dot_i), two)),
-                               hn::Sub(incident.y, hn::Mul(hn::Mul(n.y, n_dot_i), two)),
-                               hn::Sub(incident.z, hn::Mul(hn::Mul(n.z, n_dot_i), two))};
+        const Vec3V reflection = Reflect(Negate(light), n);
         const BatchV specular =
             hn::Mul(hn::Set(d, 0.8f), Pow100(StdMax(hn::Zero(d), Dot(reflection, eye))));
         const BatchV diffuse = StdMax(hn::Zero(d), Dot(n, light));
@@ -127,19 +121,14 @@ void ShadeGlmark2Batch(BatchShader shader, const DrawUniforms& u, const ShadeInp
         // Two-tone green, black where the surface turns away (mix(0.1, 0.4, max N.L)).
         BatchV green = hn::IfThenElse(hn::Ge(hn::Mul(attenuation, max_n_dot_l), hn::Set(d, 0.1f)),
                                       hn::Set(d, 0.6f), hn::Set(d, 0.3f));
-        const Vec3V v = Normalize({hn::Neg(p.x), hn::Neg(p.y), hn::Neg(p.z)});
+        const Vec3V v = Normalize(Negate(p));
         const BatchV edge =
             hn::Add(hn::Mul(hn::Set(d, 0.1f), hn::Sub(hn::Set(d, 1.0f), max_n_dot_l)),
                     hn::Mul(hn::Set(d, 0.4f), max_n_dot_l));
         const auto outline = hn::Lt(Dot(v, n), edge);
         green = hn::IfThenElseZero(hn::Not(outline), green);
         // The highlight: pow10(max(0, reflect(-l, n) . v)), thresholded.
-        const Vec3V incident{hn::Neg(l.x), hn::Neg(l.y), hn::Neg(l.z)};
-        const BatchV n_dot_i = Dot(n, incident);
-        const BatchV two = hn::Set(d, 2.0f);
-        const Vec3V reflection{hn::Sub(incident.x, hn::Mul(hn::Mul(n.x, n_dot_i), two)),
-                               hn::Sub(incident.y, hn::Mul(hn::Mul(n.y, n_dot_i), two)),
-                               hn::Sub(incident.z, hn::Mul(hn::Mul(n.z, n_dot_i), two))};
+        const Vec3V reflection = Reflect(Negate(l), n);
         const BatchV specular = Pow10(StdMax(hn::Zero(d), Dot(reflection, v)));
         const auto highlight = hn::And(hn::Gt(n_dot_l, hn::Zero(d)),
                                        hn::Gt(hn::Mul(attenuation, specular), hn::Set(d, 0.5f)));

@@ -49,6 +49,17 @@ HWY_INLINE Vec3V Scale(const Vec3V& v, BatchV s) {
   return {hn::Mul(v.x, s), hn::Mul(v.y, s), hn::Mul(v.z, s)};
 }
 
+HWY_INLINE Vec3V Negate(const Vec3V& v) { return {hn::Neg(v.x), hn::Neg(v.y), hn::Neg(v.z)}; }
+
+// glm::reflect(i, n): i - (n * dot(n, i)) * 2.
+HWY_INLINE Vec3V Reflect(const Vec3V& i, const Vec3V& n) {
+  const BatchV n_dot_i = Dot(n, i);
+  const BatchV two = hn::Set(BatchTag(), 2.0f);
+  return {hn::Sub(i.x, hn::Mul(hn::Mul(n.x, n_dot_i), two)),
+          hn::Sub(i.y, hn::Mul(hn::Mul(n.y, n_dot_i), two)),
+          hn::Sub(i.z, hn::Mul(hn::Mul(n.z, n_dot_i), two))};
+}
+
 // glm::normalize: v * (1 / sqrt(|v|^2)), NaN for a zero vector as in glm.
 HWY_INLINE Vec3V Normalize(const Vec3V& v) {
   const BatchTag d;

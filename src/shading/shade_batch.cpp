@@ -95,14 +95,7 @@ HWY_INLINE Vec3V SpecularLight(const DrawUniforms& u, bool blinn, const Vec3V& n
       along = Dot(n, Normalize({hn::Add(to_light.x, view.x), hn::Add(to_light.y, view.y),
                                 hn::Add(to_light.z, view.z)}));
     } else {
-      // reflect(-l, n) = I - (n * dot(n, I)) * 2
-      const Vec3V incident{hn::Neg(to_light.x), hn::Neg(to_light.y), hn::Neg(to_light.z)};
-      const FloatV n_dot_i = Dot(n, incident);
-      const FloatV two = hn::Set(d, 2.0f);
-      const Vec3V r{hn::Sub(incident.x, hn::Mul(hn::Mul(n.x, n_dot_i), two)),
-                    hn::Sub(incident.y, hn::Mul(hn::Mul(n.y, n_dot_i), two)),
-                    hn::Sub(incident.z, hn::Mul(hn::Mul(n.z, n_dot_i), two))};
-      along = Dot(r, view);
+      along = Dot(Reflect(Negate(to_light), n), view);
     }
     const FloatV highlight = m.shininess == 0.0f
                                  ? hn::Set(d, 1.0f)

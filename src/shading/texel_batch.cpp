@@ -3,7 +3,7 @@
 // has. Each step repeats its scalar counterpart in texture.cpp / surface.cpp / portable_math.hpp
 // with the same IEEE operations in the same order (no fused multiply-add; std::min/max as
 // compare-and-select, which treat NaN as they do), so every target gives the scalar bits;
-// simd_targets_test checks it.
+// texel_batch_test checks it.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "shading/texel_batch.cpp"
 #include "shading/texel_batch.hpp"

@@ -1,9 +1,9 @@
 // Batch shading of the unlit, Lambert, Phong and Blinn-Phong models (see shade_batch.hpp).
 // Highway compiles this file once per SIMD target (foreach_target.h re-includes it);
 // HWY_DYNAMIC_DISPATCH picks the best the CPU has. Every step repeats models.hpp,
-// lit_models.hpp, brdf.hpp and surface.cpp with the same IEEE operations
-// in the same order (glm's dot is (x*x' + y*y') + z*z'; std::max(0, d) keeps 0 for NaN; no
-// fused multiply-add), so each target gives fragment()'s bits; shade_batch_test checks it.
+// lit_models.hpp, brdf.hpp and surface.cpp with the same IEEE operations in the same order
+// (glm's dot is (x*x' + y*y') + z*z'; std::max(0, d) keeps 0 for NaN; no fused multiply-add),
+// so each target gives fragment()'s bits; shade_batch_test checks it.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "shading/shade_batch.cpp"
 #include "shading/shade_batch.hpp"

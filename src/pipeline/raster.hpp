@@ -220,22 +220,11 @@ class PixelWriter {
   // with a batch form are shaded all at once, both with SIMD.
   int shade(PackedPixels& pixels) {
     if (pixels.count == 0) return 0;
-    const float(*texels)[4] = nullptr;
-    if constexpr (kTexcoordSlot >= 0) {
-      if (base_map_) {
-        pixels.pad(Shading::kVaryings);
-        texels_.count = pixels.count;
-        texels_.u = pixels.v[kTexcoordSlot];
-        texels_.v = pixels.v[kTexcoordSlot + 1];
-        texels_.w = pixels.w;
-        shading::sample_batch(*base_map_, fragment.planes + kTexcoordSlot, t_.inv_w, texels_);
-        texels = texels_.rgba;
-      }
-    }
+    if (batches()) pixels.pad(Shading::kVaryings);
+    const Texels texels = sample_base_map(pixels.count, pixels.v, pixels.w);
     int written = 0;
     if constexpr (batch_shaded<Shading>()) {
       if (batch_) {
-        pixels.pad(Shading::kVaryings);
         alignas(64) float colors[PackedPixels::kCapacity][4];
         Shading::fragment_batch(uniforms_, {pixels.count, pixels.w, pixels.v, texels, batch_fog()},
                                 colors);
@@ -271,17 +260,7 @@ class PixelWriter {
   // full_blocks().
   void shade_full_block(const BlockFragments& block, int block_x, int block_y) {
     if constexpr (kFullBlocks) {
-      const float(*texels)[4] = nullptr;
-      if constexpr (kTexcoordSlot >= 0) {
-        if (base_map_) {
-          texels_.count = kBlockPixels;
-          texels_.u = block.v[kTexcoordSlot];
-          texels_.v = block.v[kTexcoordSlot + 1];
-          texels_.w = block.w;
-          shading::sample_batch(*base_map_, fragment.planes + kTexcoordSlot, t_.inv_w, texels_);
-          texels = texels_.rgba;
-        }
-      }
+      const Texels texels = sample_base_map(kBlockPixels, block.v, block.w);
       alignas(64) float colors[kBlockPixels][4];
       Shading::fragment_batch(uniforms_, {kBlockPixels, block.w, block.v, texels, &fog_}, colors);
       const std::ptrdiff_t first =
@@ -332,6 +311,25 @@ class PixelWriter {
 
  private:
   static constexpr int kTexcoordSlot = base_color_texcoord<Shading>();  // -1: none
+
+  // The base color map sampled for `count` pixels whose varyings and clip w are v[k][n] and
+  // w[n] (PackedPixels and BlockFragments alike): their texels, or null when the model reads
+  // no map or the draw has none.
+  using Texels = const float (*)[4];
+  Texels sample_base_map(int count, const float (*v)[kBlockPixels], const float* w) {
+    if constexpr (kTexcoordSlot >= 0) {
+      if (base_map_) {
+        texels_.count = count;
+        texels_.u = v[kTexcoordSlot];
+        texels_.v = v[kTexcoordSlot + 1];
+        texels_.w = w;
+        shading::sample_batch(*base_map_, fragment.planes + kTexcoordSlot, t_.inv_w, texels_);
+        return texels_.rgba;
+      }
+    }
+    return nullptr;
+  }
+
   // The batch shader fogs, except under the wire overlay, whose wire color store() fogs.
   static constexpr bool kBatchFogs = !edge_overlay<Shading>();
   const Fog* batch_fog() const { return kBatchFogs ? &fog_ : nullptr; }

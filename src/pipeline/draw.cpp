@@ -198,6 +198,9 @@ void Renderer::Impl::run(Framebuffer& target) {
     draw.uniforms.light_count = static_cast<int>(frame.lights.size());
     draw.uniforms.material = &draw.material;
     draw.uniforms.lighting = &lighting;
+    // Whether the batch form takes the draw depends on its lights and material: decided here
+    // once, not for every triangle.
+    draw.batch_shaded = draw.pipeline.batch_shades && draw.pipeline.batch_shades(draw.uniforms);
   }
   order_draws();
   background.clear_color = settings.clear_color;

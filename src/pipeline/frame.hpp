@@ -72,6 +72,8 @@ struct DrawPipeline {
   FaceFn face = nullptr;                  // every triangle (flat shading)
   FaceFn face_without_normals = nullptr;  // triangles of meshes without normals (Gouraud)
   RasterTriangleFn raster = nullptr;
+  // The model's batch form takes this draw (shading/shade_batch.hpp); null: no batch form.
+  bool (*batch_shades)(const shading::DrawUniforms&) = nullptr;
   bool fills_triangles = true;  // false for wireframe: edges only
   bool draws_edges = false;     // wireframe: edges become lines (line.cpp)
   bool depth_tested = true;     // false for debug counters that see through everything
@@ -84,6 +86,7 @@ struct DrawRecord {
   Material material;
   shading::DrawUniforms uniforms;
   DrawPipeline pipeline;
+  bool batch_shaded = false;  // pipeline.batch_shades(uniforms), once per frame (draw.cpp)
 };
 
 // The per-triangle hooks primitive assembly runs before setup: a face normal for shading

@@ -212,7 +212,7 @@ class PixelWriter {
     if constexpr (kTexcoordSlot >= 0) {
       if (uniforms_.material->base_color_map) base_map_ = &uniforms_.material->base_color_map;
     }
-    if constexpr (batch_shaded<Shading>()) batch_ = Shading::batch_shades(uniforms_);
+    if constexpr (batch_shaded<Shading>()) batch_ = tile.frame->draws[t.draw].batch_shaded;
   }
 
   // Shades the packed pixels and writes them; returns how many were written (the alpha test
@@ -249,7 +249,8 @@ class PixelWriter {
   }
 
   // Whether shade_full_block() can take this draw's blocks: opaque, depth-writing, batch-
-  // shaded, no wire overlay (all known here but the draw's lights, checked at construction).
+  // shaded, no wire overlay (all known here but the draw's lights and material:
+  // DrawRecord::batch_shaded).
   static constexpr bool kFullBlocks = batch_shaded<Shading>() && kAlpha == AlphaMode::opaque &&
                                       kDepthWrite && !edge_overlay<Shading>();
   bool full_blocks() const { return kFullBlocks && batch_; }

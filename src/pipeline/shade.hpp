@@ -26,6 +26,7 @@ DrawPipeline make_pipeline() {
     p.face_without_normals = &Shading::face_without_normals;
   }
   p.raster = &raster_triangle<Shading, kAlpha>;
+  if constexpr (batch_shaded<Shading>()) p.batch_shades = &Shading::batch_shades;
   p.depth_tested = depth_tested<Shading>();
   p.occludes = p.depth_tested && kAlpha == AlphaMode::opaque && !additive<Shading>();
   return p;

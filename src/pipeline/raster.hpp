@@ -90,10 +90,11 @@ struct PackedPixels {
   alignas(64) float w[kCapacity];
   alignas(64) float v[kMaxVaryings][kCapacity];
 
-  // Zeroes the entries from count up to the next multiple of 8, which the SIMD batch code
-  // reads (and ignores).
+  // Zeroes the entries from count up to the next multiple of 8 (position, depth, w and the
+  // first `varyings` varyings), which the SIMD code reads (and ignores).
   void pad(int varyings) {
     for (int n = count; n % 8 != 0; ++n) {
+      x[n] = y[n] = 0;
       z[n] = w[n] = 0.0f;
       for (int k = 0; k < varyings; ++k) v[k][n] = 0.0f;
     }
@@ -385,7 +386,7 @@ void raster_small_triangle(TileContext& tile, const SetupTriangle& t, int x0, in
     }
   }
   if (found.count == 0) return;
-  for (int n = found.count; n % 8 != 0; ++n) found.x[n] = found.y[n] = 0;  // read, then unused
+  found.pad(0);  // interpolate_pixels reads whole vectors of positions
   interpolate_pixels(t, out.fragment.planes, Shading::kVaryings, found.count, found.x, found.y,
                      found.w, found.v);
   out.shade(found);

@@ -1,6 +1,8 @@
 // The geometry stage (see geometry.hpp).
 #include "pipeline/geometry.hpp"
 
+#include <algorithm>
+
 #include "facet/error.hpp"
 #include "pipeline/parallel.hpp"
 #include "pipeline/primitive.hpp"
@@ -129,19 +131,32 @@ void run_geometry(Frame& frame, int workers) {
   // another task meanwhile: transform_vertices runs a small draw on the calling thread.) A big
   // draw's vertices are transformed first, in parallel batches, into the draw's buffer, and
   // then its chunks are tasks of their own.
-  frame.geometry_tasks.clear();  // capacity kept across frames
+  frame.geometry_tasks.clear();                      // capacity kept across frames
+  std::size_t small_vertices = 0, small_over_w = 0;  // the largest small draw's needs
   for (std::uint32_t k = 0; k < frame.chunk_count;) {
     const std::uint32_t d = frame.chunks[k].draw;
     std::uint32_t end = k + 1;
     while (end < frame.chunk_count && frame.chunks[end].draw == d) ++end;
     frame.stats.triangles_in += frame.draws[d].mesh->primitive_count();
-    if (frame.draws[d].mesh->positions.size() <= kVertexBatch) {
+    const std::size_t vertex_count = frame.draws[d].mesh->positions.size();
+    if (vertex_count <= kVertexBatch) {
       frame.geometry_tasks.push_back({k, end, true});
+      small_vertices = std::max(small_vertices, vertex_count);
+      small_over_w = std::max(
+          small_over_w, vertex_count * static_cast<std::size_t>(frame.draws[d].pipeline.varyings));
     } else {
       transform_vertices(frame.draws[d], frame.width, frame.height, workers, frame.vertices[d]);
       for (; k < end; ++k) frame.geometry_tasks.push_back({k, k + 1, false});
     }
     k = end;
+  }
+  // Every worker's buffer can hold the largest small draw before the tasks start: which worker
+  // takes which draw changes from frame to frame, and a buffer growing inside a task would
+  // allocate in a steady-state frame (the allocation test saw it, now and then).
+  for (DrawVertices& buffer : frame.worker_vertices) {
+    buffer.clip.reserve(small_vertices);
+    buffer.projected.reserve(small_vertices);
+    buffer.over_w.reserve(small_over_w);
   }
   parallel_tasks(static_cast<int>(frame.geometry_tasks.size()), workers, [&](int i, int worker) {
     const Frame::GeometryTask& task = frame.geometry_tasks[i];

@@ -184,6 +184,17 @@ void Renderer::Impl::prepare_tiles(const Framebuffer& target) {
   tile_pixels_shaded.assign(tiles, 0);
   tile_ms.assign(tiles, 0.0);
   tile_resolve_ms.assign(tiles, 0.0);
+  // Every worker's tile buffers are sized here, before the tasks: which worker renders which
+  // tile changes from frame to frame, and a buffer first grown inside a task would allocate
+  // in a steady-state frame.
+  const std::size_t pixels = static_cast<std::size_t>(frame.tile_size) * frame.tile_size;
+  const int blocks_x = (frame.tile_size + pipeline::kBlockSize - 1) / pipeline::kBlockSize;
+  for (TileBuffers& buffers : tile_buffers) {
+    if (buffers.color.size() >= pixels) continue;
+    buffers.color.resize(pixels);
+    buffers.depth.resize(pixels);
+    buffers.block_max_depth.resize(static_cast<std::size_t>(blocks_x) * blocks_x);
+  }
 }
 
 void Renderer::Impl::run(Framebuffer& target) {
@@ -260,14 +271,8 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
     tile_resolve_ms[index] = ms_since(resolve_start);
     return;
   }
-  TileBuffers& buffers = tile_buffers[worker];
-  std::size_t pixels = static_cast<std::size_t>(ts) * ts;
+  TileBuffers& buffers = tile_buffers[worker];  // sized in prepare_tiles
   tile.blocks_x = (ts + pipeline::kBlockSize - 1) / pipeline::kBlockSize;
-  if (buffers.color.size() < pixels) {
-    buffers.color.resize(pixels);
-    buffers.depth.resize(pixels);
-    buffers.block_max_depth.resize(static_cast<std::size_t>(tile.blocks_x) * tile.blocks_x);
-  }
   tile.color = buffers.color.data();
   tile.depth = buffers.depth.data();
   tile.block_max_depth = buffers.block_max_depth.data();

@@ -216,6 +216,11 @@ TEST(Mesh, ValidateNamesAnIndexOutOfRange) {
   Mesh mesh = cube();
   mesh.indices[12] = 40;
   expect_error(mesh, "mesh: index 12 is 40 but the mesh has 24 vertices");
+  // The first one out of range is named, however large the later ones are; one past the last
+  // vertex is already out.
+  mesh.indices[30] = 4000000000u;
+  mesh.indices[5] = 24;
+  expect_error(mesh, "mesh: index 5 is 24 but the mesh has 24 vertices");
 }
 
 TEST(Mesh, ValidateNamesAnAttributeSizeMismatch) {

@@ -2,6 +2,7 @@
 // Written by whoever builds a mesh (loaders, procedural shapes); read by the draw entry points.
 #include "facet/mesh.hpp"
 
+#include <algorithm>
 #include <string>
 
 #include "facet/error.hpp"
@@ -51,12 +52,16 @@ void Mesh::validate() const {
   check_attribute_size(tangents.size(), positions.size(), "tangents");
   check_whole_primitives(*this);
   // Non-finite positions are allowed on purpose: the pipeline skips the triangles that use them.
-  for (std::size_t i = 0; i < indices.size(); ++i) {
-    if (indices[i] >= positions.size()) {
-      throw Error("mesh: index " + std::to_string(i) + " is " + std::to_string(indices[i]) +
-                  " but the mesh has " + std::to_string(positions.size()) + " vertices");
-    }
-  }
+  // Every draw of every frame validates its mesh on the recording thread, so the common case is
+  // one pass without an early exit, which the compiler vectorizes: the largest index.
+  std::uint32_t largest = 0;
+  for (std::uint32_t index : indices) largest = std::max(largest, index);
+  if (indices.empty() || largest < positions.size()) return;
+  const auto bad = std::find_if(indices.begin(), indices.end(),
+                                [&](std::uint32_t index) { return index >= positions.size(); });
+  throw Error("mesh: index " + std::to_string(bad - indices.begin()) + " is " +
+              std::to_string(*bad) + " but the mesh has " + std::to_string(positions.size()) +
+              " vertices");
 }
 
 }  // namespace facet

@@ -362,6 +362,14 @@ void raster_small_triangle(TileContext& tile, const SetupTriangle& t, int x0, in
                            int y1, PixelWriter<Shading, kAlpha>& out) {
   static_assert(kSmallTrianglePixels <= PackedPixels::kCapacity);
   PackedPixels found;
+  // Without branches: every pixel of the box is written to the next free entry, which only
+  // the covered ones that pass the depth test claim (whether a box pixel is covered is as
+  // good as random to the branch predictor).
+  const float* depth = tile.depth;
+  const std::int64_t step[3] = {std::int64_t{t.a[0]} * kSubpixelScale,
+                                std::int64_t{t.a[1]} * kSubpixelScale,
+                                std::int64_t{t.a[2]} * kSubpixelScale};
+  int count = 0;
   for (int y = y0; y <= y1; ++y) {
     const std::int64_t cy = pixel_centre(y), cx = pixel_centre(x0);
     std::int64_t e[3];
@@ -369,22 +377,20 @@ void raster_small_triangle(TileContext& tile, const SetupTriangle& t, int x0, in
       e[i] = std::int64_t{t.a[i]} * cx + std::int64_t{t.b[i]} * cy + t.c[i];
     const float py = static_cast<float>(y) + 0.5f;
     const float z_row = evaluate_row(t.z, t.ref_y, py);
-    const std::ptrdiff_t row = static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride - tile.x0;
+    const float* depth_row =
+        depth + static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride - tile.x0;
     for (int x = x0; x <= x1; ++x) {
-      const bool outside = (e[0] | e[1] | e[2]) < 0;
-      for (int i = 0; i < 3; ++i) e[i] += std::int64_t{t.a[i]} * kSubpixelScale;
-      if (outside) continue;
-      const float px = static_cast<float>(x) + 0.5f;
-      const float z = evaluate_in_row(z_row, t.z, t.ref_x, px);
-      if constexpr (depth_tested<Shading>()) {
-        if (!(z < tile.depth[row + x])) continue;  // early depth test (less); NaN fails
-      }
-      const int n = found.count++;
-      found.x[n] = static_cast<std::int16_t>(x);
-      found.y[n] = static_cast<std::int16_t>(y);
-      found.z[n] = z;
+      bool pass = (e[0] | e[1] | e[2]) >= 0;
+      for (int i = 0; i < 3; ++i) e[i] += step[i];
+      const float z = evaluate_in_row(z_row, t.z, t.ref_x, static_cast<float>(x) + 0.5f);
+      if constexpr (depth_tested<Shading>()) pass &= z < depth_row[x];  // less; NaN fails
+      found.x[count] = static_cast<std::int16_t>(x);
+      found.y[count] = static_cast<std::int16_t>(y);
+      found.z[count] = z;
+      count += pass;
     }
   }
+  found.count = count;
   if (found.count == 0) return;
   found.pad(0);  // interpolate_pixels reads whole vectors of positions
   interpolate_pixels(t, out.fragment.planes, Shading::kVaryings, found.count, found.x, found.y,

@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "pipeline/sky_row.hpp"
+#include "pipeline/srgb_row.hpp"
 #include "shading/color.hpp"
 #include "shading/environment.hpp"
 
@@ -20,7 +21,8 @@ inline void encode_pixel(const shading::SrgbTables& tables, const glm::vec4& c, 
   out[0] = shading::encode_srgb8(tables, c.r * scale);
   out[1] = shading::encode_srgb8(tables, c.g * scale);
   out[2] = shading::encode_srgb8(tables, c.b * scale);
-  float a = std::clamp(c.a, 0.0f, 1.0f);  // alpha is linear coverage, never sRGB
+  // Alpha is linear coverage, never sRGB; clamped as encode_srgb_row does (NaN to 0).
+  const float a = c.a > 0.0f ? std::min(c.a, 1.0f) : 0.0f;
   out[3] = static_cast<std::uint8_t>(a * 255.0f + 0.5f);
 }
 
@@ -28,9 +30,7 @@ inline void encode_pixel(const shading::SrgbTables& tables, const glm::vec4& c, 
 void store_row(Framebuffer& target, std::size_t first_pixel, const glm::vec4* colors, int count,
                float scale) {
   if (target.format() == ColorFormat::rgba8_srgb) {
-    const shading::SrgbTables& tables = shading::srgb_tables();
-    std::uint8_t* out = target.rgba8().data() + first_pixel * 4;
-    for (int i = 0; i < count; ++i, out += 4) encode_pixel(tables, colors[i], scale, out);
+    encode_srgb_row(colors, count, scale, target.rgba8().data() + first_pixel * 4);
   } else {
     float* out = target.rgba32f().data() + first_pixel * 4;
     for (int i = 0; i < count; ++i, out += 4) {

@@ -16,6 +16,7 @@ SrgbTables::SrgbTables() {
     auto it = std::upper_bound(thresholds.begin(), thresholds.begin() + 256, start);
     bucket_code[b] = static_cast<std::uint8_t>((it - thresholds.begin()) - 1);
   }
+  bucket_code[kBuckets] = 255;
 }
 
 const SrgbTables kSrgbTables;

@@ -28,7 +28,9 @@ struct SrgbTables {
   static constexpr int kBuckets = 4096;
   std::array<float, 257> thresholds;  // [256] is a sentinel above every input
   std::array<float, 256> decode;
-  std::array<std::uint8_t, kBuckets> bucket_code;
+  // [kBuckets] is 1.0's code (255), for encoders that clamp to [0, 1] before the lookup
+  // instead of testing both ends (pipeline/srgb_row.cpp).
+  std::array<std::uint8_t, kBuckets + 1> bucket_code;
   SrgbTables();
 };
 

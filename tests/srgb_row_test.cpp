@@ -1,0 +1,89 @@
+// The SIMD sRGB encode of resolve (pipeline/srgb_row.cpp) gives encode_srgb8's codes on every
+// SIMD target: at and around every code's threshold, at the ends and beyond them, for NaN and
+// infinities, with and without exposure, and for rows of every length up to past a chunk.
+#include "pipeline/srgb_row.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "shading/color.hpp"
+#include "support/forced_target.hpp"
+
+namespace facet::test {
+namespace {
+
+// What resolve wrote a channel at a time before the row encoder: the reference.
+void encode_scalar(const glm::vec4& c, float scale, std::uint8_t* out) {
+  for (int k = 0; k < 3; ++k) out[k] = shading::encode_srgb8(c[k] * scale);
+  const float a = c.a > 0.0f ? std::min(c.a, 1.0f) : 0.0f;
+  out[3] = static_cast<std::uint8_t>(a * 255.0f + 0.5f);
+}
+
+// Values that probe every code: each threshold and the floats just below and above it, the
+// ends of [0, 1] and what lies outside it, random values in between.
+std::vector<float> probe_values() {
+  const shading::SrgbTables& tables = shading::srgb_tables();
+  constexpr float kInf = std::numeric_limits<float>::infinity();
+  std::vector<float> values = {0.0f,
+                               -0.0f,
+                               1.0f,
+                               -1.0f,
+                               2.0f,
+                               1e-30f,
+                               -1e-30f,
+                               kInf,
+                               -kInf,
+                               std::numeric_limits<float>::quiet_NaN(),
+                               std::numeric_limits<float>::denorm_min(),
+                               std::nextafter(1.0f, 0.0f),
+                               std::nextafter(1.0f, 2.0f)};
+  for (int code = 1; code < 256; ++code) {
+    const float t = tables.thresholds[code];
+    values.insert(values.end(), {t, std::nextafter(t, 0.0f), std::nextafter(t, 1.0f)});
+  }
+  std::mt19937 rng(20261122);
+  std::uniform_real_distribution<float> any(-0.1f, 1.1f);
+  for (int i = 0; i < 2000; ++i) values.push_back(any(rng));
+  return values;
+}
+
+TEST(SrgbRow, GivesTheScalarCodesOnEveryTarget) {
+  const std::vector<float> values = probe_values();
+  const int n = static_cast<int>(values.size());
+  int compared = 0;
+  for (std::int64_t target : simd_targets()) {
+    ForcedTarget forced(target);
+    for (float scale : {1.0f, 0.35f, 2.83f}) {
+      // Rows shorter than a vector, of whole vectors, and around the 64-color chunk; each
+      // value goes through every channel (the shift moves it by one).
+      for (int count : {1, 2, 3, 5, 16, 63, 64, 65, 129, 150}) {
+        for (int shift = 0; shift < 4; ++shift) {
+          for (int start = 0; start < n; start += 4 * count) {
+            std::vector<glm::vec4> row(count);
+            for (int i = 0; i < count; ++i) {
+              for (int c = 0; c < 4; ++c) row[i][c] = values[(start + 4 * i + c + shift) % n];
+            }
+            std::vector<std::uint8_t> simd(4 * count), scalar(4 * count);
+            pipeline::encode_srgb_row(row.data(), count, scale, simd.data());
+            for (int i = 0; i < count; ++i) encode_scalar(row[i], scale, &scalar[4 * i]);
+            for (int i = 0; i < 4 * count; ++i) {
+              ASSERT_EQ(simd[i], scalar[i])
+                  << hwy::TargetName(target) << ", scale " << scale << ", row of " << count
+                  << ", channel " << i << ": " << row[i / 4][i % 4];
+            }
+            compared += 4 * count;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(compared, 100000);
+}
+
+}  // namespace
+}  // namespace facet::test

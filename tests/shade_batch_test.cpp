@@ -1,4 +1,5 @@
-// The SIMD batch forms of the unlit, Lambert, Phong and Blinn-Phong models (shade_batch.cpp) and of
+// The SIMD batch forms of the unlit, Lambert, Phong and Blinn-Phong models and the normals view
+// (shade_batch.cpp) and of
 // glmark2's shaders (scene/glmark2_batch.cpp) give their fragment()'s bits (then apply_fog's)
 // on every SIMD target: one- and two-sided, with and without a base color texel, emission and
 // fog, under zero to three directional lights; and they decline what they do not cover.
@@ -146,6 +147,10 @@ TEST(ShadeBatch, PhongAndBlinnPhongGiveFragmentsBitsOnEveryTarget) {
 
 TEST(ShadeBatch, UnlitGivesFragmentsBitsOnEveryTarget) {
   expect_same_bits<shading::UnlitShading>();
+}
+
+TEST(ShadeBatch, NormalsViewGivesFragmentsBitsOnEveryTarget) {
+  expect_same_bits<shading::NormalsShading>();
 }
 
 // glmark2's shaders (scene/glmark2_batch.cpp): they decline fog, and the textured ones need

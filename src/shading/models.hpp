@@ -47,8 +47,10 @@ inline glm::vec3 diffuse_light(glm::vec3 albedo, glm::vec3 normal, glm::vec3 pos
 // A display value (already what the screen should show) stored so that resolve's sRGB encode
 // gives it back exactly: debug views show data, not light. Quantizing to the 8-bit code and
 // decoding it through the table is exact and much cheaper than pow().
+// NaN shows as 0 (as shade_batch.cpp's DisplayCode has it).
 inline float display_channel(float v) {
-  return decode_srgb8(static_cast<std::uint8_t>(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f));
+  const float clamped = v > 0.0f ? std::min(v, 1.0f) : 0.0f;
+  return decode_srgb8(static_cast<std::uint8_t>(clamped * 255.0f + 0.5f));
 }
 inline glm::vec4 display_value(glm::vec3 shown) {
   return {display_channel(shown.x), display_channel(shown.y), display_channel(shown.z), 1.0f};
@@ -127,7 +129,7 @@ struct DepthShading {
 };
 
 // Debug view: world-space normal, renormalized per pixel, shown as n * 0.5 + 0.5.
-struct NormalsShading {
+struct NormalsShading : BatchForm<BatchModel::normals> {
   static constexpr int kVaryings = 3;
   static constexpr int kNormalSlot = 0;
   static void vertex(const VertexInput& in, const DrawUniforms&, float* out) {

@@ -212,6 +212,8 @@ void Renderer::Impl::run(Framebuffer& target) {
     // Whether the batch form takes the draw depends on its lights and material: decided here
     // once, not for every triangle.
     draw.batch_shaded = draw.pipeline.batch_shades && draw.pipeline.batch_shades(draw.uniforms);
+    draw.batch_vertices =
+        draw.pipeline.batches_vertices && draw.pipeline.batches_vertices(draw.uniforms);
   }
   order_draws();
   background.clear_color = settings.clear_color;

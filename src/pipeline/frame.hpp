@@ -16,6 +16,7 @@
 #include "facet/mesh.hpp"
 #include "facet/renderer.hpp"
 #include "shading/uniforms.hpp"
+#include "shading/vertex_batch.hpp"
 
 namespace facet::pipeline {
 
@@ -74,6 +75,11 @@ struct DrawPipeline {
   RasterTriangleFn raster = nullptr;
   // The model's batch form takes this draw (shading/shade_batch.hpp); null: no batch form.
   bool (*batch_shades)(const shading::DrawUniforms&) = nullptr;
+  // The model's vertex() for a run of vertices (shading/vertex_batch.hpp), and whether it
+  // takes this draw; null: none.
+  void (*vertex_batch)(const shading::DrawUniforms&, const shading::VertexBatchInput&,
+                       float (*)[shading::kVertexBatch]) = nullptr;
+  bool (*batches_vertices)(const shading::DrawUniforms&) = nullptr;
   bool fills_triangles = true;  // false for wireframe: edges only
   bool draws_edges = false;     // wireframe: edges become lines (line.cpp)
   bool depth_tested = true;     // false for debug counters that see through everything
@@ -86,7 +92,8 @@ struct DrawRecord {
   Material material;
   shading::DrawUniforms uniforms;
   DrawPipeline pipeline;
-  bool batch_shaded = false;  // pipeline.batch_shades(uniforms), once per frame (draw.cpp)
+  bool batch_shaded = false;    // pipeline.batch_shades(uniforms), once per frame (draw.cpp)
+  bool batch_vertices = false;  // pipeline.batches_vertices(uniforms), likewise
 };
 
 // The per-triangle hooks primitive assembly runs before setup: a face normal for shading

@@ -27,6 +27,10 @@ DrawPipeline make_pipeline() {
   }
   p.raster = &raster_triangle<Shading, kAlpha>;
   if constexpr (batch_shaded<Shading>()) p.batch_shades = &Shading::batch_shades;
+  if constexpr (requires { &Shading::vertex_batch; }) {
+    p.vertex_batch = &Shading::vertex_batch;
+    p.batches_vertices = &Shading::batch_vertices;
+  }
   p.depth_tested = depth_tested<Shading>();
   p.occludes = p.depth_tested && kAlpha == AlphaMode::opaque && !additive<Shading>();
   return p;

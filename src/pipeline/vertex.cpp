@@ -22,10 +22,22 @@ void transform_range(const DrawRecord& draw, const VertexPassInput& pass_input, 
   const int varyings = draw.pipeline.varyings;
   float* over_w = out.over_w.empty() ? nullptr : out.over_w.data();
   VertexPass pass;
+  static_assert(shading::kVertexBatch == kVertexPass);
+  alignas(64) float batch_varyings[kMaxVaryings][shading::kVertexBatch];
   for (std::size_t first = begin; first < end; first += kVertexPass) {
     const std::size_t count = std::min(kVertexPass, end - first);
     // First, several vertices at a time, all that needs no shading model.
     run_vertex_pass(pass_input, first, count, pass);
+    // Then the shading model: all of them at once if it has a batch form for this draw.
+    if (draw.batch_vertices) {
+      draw.pipeline.vertex_batch(u,
+                                 {static_cast<int>(count),
+                                  &mesh.positions[first],
+                                  {pass.nx, pass.ny, pass.nz},
+                                  has_texcoords ? &mesh.texcoords[first] : nullptr,
+                                  has_colors ? &mesh.colors[first] : nullptr},
+                                 batch_varyings);
+    }
     for (std::size_t j = 0; j < count; ++j) {
       const std::size_t i = first + j;
       ClipVertex& v = out.clip[i];
@@ -36,6 +48,10 @@ void transform_range(const DrawRecord& draw, const VertexPassInput& pass_input, 
       p.screen = (pass.codes[j] & kScalarScreen)
                      ? to_screen(v.clip, pass_input.width, pass_input.height)
                      : ScreenVertex{pass.sx[j], pass.sy[j], pass.depth[j], pass.inv_w[j]};
+      if (draw.batch_vertices) {
+        for (int k = 0; k < varyings; ++k) v.varyings[k] = batch_varyings[k][j];
+        continue;
+      }
 
       shading::VertexInput in;
       in.position = mesh.positions[i];

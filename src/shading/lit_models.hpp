@@ -5,6 +5,7 @@
 #include "shading/brdf.hpp"
 #include "shading/environment.hpp"
 #include "shading/models.hpp"
+#include "shading/vertex_batch.hpp"
 
 namespace facet::shading {
 
@@ -76,6 +77,13 @@ struct GouraudShading {
     }
     store(out + kDiffuseSlot, diffuse);
     store(out + kSpecularSlot, specular);
+  }
+  // vertex() for a run of vertices at once, with SIMD (vertex_batch.hpp), for draws lit by
+  // directional lights only.
+  static bool batch_vertices(const DrawUniforms& u) { return gouraud_batches_vertices(u); }
+  static void vertex_batch(const DrawUniforms& u, const VertexBatchInput& in,
+                           float (*out)[kVertexBatch]) {
+    gouraud_vertex_batch(u, in, out);
   }
   static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
     glm::vec3 position = glm::vec3(u.model * glm::vec4(in.position, 1.0f));

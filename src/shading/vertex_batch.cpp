@@ -1,0 +1,110 @@
+// Batch vertex lighting of the Gouraud model (see vertex_batch.hpp). Highway compiles this file
+// once per SIMD target (foreach_target.h re-includes it); HWY_DYNAMIC_DISPATCH picks the best
+// the CPU has. Each step repeats GouraudShading::vertex() with the same IEEE operations in the
+// same order (glm's mat4 x vec4 is (m0 x + m1 y) + (m2 z + m3 w); no fused multiply-add), so
+// every target gives its bits; vertex_batch_test checks it.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "shading/vertex_batch.cpp"
+#include "shading/vertex_batch.hpp"
+
+#include <hwy/foreach_target.h>  // must come before highway.h
+#include <hwy/highway.h>
+
+#include "shading/batch_math-inl.h"
+#include "shading/surface.hpp"
+
+HWY_BEFORE_NAMESPACE();
+namespace facet::shading::HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+// GouraudShading's layout (lit_models.hpp): diffuse light, then specular light.
+constexpr int kDiffuseSlot = 6, kSpecularSlot = 9;
+
+void GouraudVertexBatch(const DrawUniforms& u, const VertexBatchInput& in,
+                        float (*out)[kVertexBatch]) {
+  const BatchTag d;
+  const int lanes = static_cast<int>(hn::Lanes(d));
+  // Positions as one array per axis, zero past count (computed, then ignored).
+  alignas(64) float position[3][kVertexBatch];
+  for (int n = 0; n < kVertexBatch; ++n) {
+    for (int c = 0; c < 3; ++c) position[c][n] = n < in.count ? in.positions[n][c] : 0.0f;
+  }
+  const glm::mat4& m = u.model;
+  const Material& material = *u.material;
+  const Vec3V eye = Set3(u.eye);
+  for (int j = 0; j < in.count; j += lanes) {
+    // glm::vec3(u.model * glm::vec4(position, 1)).
+    const BatchV x = hn::Load(d, position[0] + j), y = hn::Load(d, position[1] + j),
+                 z = hn::Load(d, position[2] + j);
+    BatchV world[3];
+    for (int c = 0; c < 3; ++c) {
+      world[c] = hn::Add(hn::Add(hn::Mul(hn::Set(d, m[0][c]), x), hn::Mul(hn::Set(d, m[1][c]), y)),
+                         hn::Add(hn::Mul(hn::Set(d, m[2][c]), z), hn::Set(d, m[3][c] * 1.0f)));
+    }
+    // light_vertex().
+    const Vec3V normal{hn::Load(d, in.normal[0] + j), hn::Load(d, in.normal[1] + j),
+                       hn::Load(d, in.normal[2] + j)};
+    const Vec3V view = SafeNormalize(
+        {hn::Sub(eye.x, world[0]), hn::Sub(eye.y, world[1]), hn::Sub(eye.z, world[2])});
+    BatchV diffuse[3] = {hn::Set(d, u.ambient.x), hn::Set(d, u.ambient.y), hn::Set(d, u.ambient.z)};
+    BatchV specular[3] = {hn::Zero(d), hn::Zero(d), hn::Zero(d)};
+    for (int i = 0; i < u.light_count; ++i) {
+      const LightData& l = u.lights[i];  // directional: incident() is to_light and radiance
+      const Vec3V to_light = Set3(l.to_light);
+      const BatchV n_dot_l = Dot(normal, to_light);
+      const auto lit = hn::Not(hn::Le(n_dot_l, hn::Zero(d)));  // the scalar loop's continue
+      // blinn_phong_specular(): the half vector, then the power.
+      const Vec3V half = Normalize(
+          {hn::Add(to_light.x, view.x), hn::Add(to_light.y, view.y), hn::Add(to_light.z, view.z)});
+      const BatchV highlight =
+          material.shininess == 0.0f
+              ? hn::Set(d, 1.0f)
+              : PortablePow(StdMax(Dot(normal, half), hn::Zero(d)), material.shininess);
+      for (int c = 0; c < 3; ++c) {
+        const BatchV radiance = hn::Set(d, l.radiance[c]);
+        diffuse[c] =
+            hn::IfThenElse(lit, hn::Add(diffuse[c], hn::Mul(radiance, n_dot_l)), diffuse[c]);
+        const BatchV tint = hn::Set(d, l.radiance[c] * material.specular_color[c]);
+        specular[c] =
+            hn::IfThenElse(lit, hn::Add(specular[c], hn::Mul(tint, highlight)), specular[c]);
+      }
+    }
+    for (int c = 0; c < 3; ++c) {
+      hn::Store(diffuse[c], d, out[kDiffuseSlot + c] + j);
+      hn::Store(specular[c], d, out[kSpecularSlot + c] + j);
+    }
+  }
+  // The texture coordinate and material_color(): copies and one product, per vertex.
+  for (int n = 0; n < in.count; ++n) {
+    const glm::vec2 texcoord = in.texcoords ? in.texcoords[n] : glm::vec2(0.0f);
+    out[kTexcoordSlot][n] = texcoord.x;
+    out[kTexcoordSlot + 1][n] = texcoord.y;
+    // Without vertex colors the color is white, and base_color * 1 is base_color bit for bit.
+    const glm::vec4 color =
+        u.use_vertex_colors && in.colors ? u.base_color * in.colors[n] : u.base_color;
+    for (int c = 0; c < 4; ++c) out[kColorSlot + c][n] = color[c];
+  }
+}
+
+}  // namespace facet::shading::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace facet::shading {
+
+HWY_EXPORT(GouraudVertexBatch);
+
+bool gouraud_batches_vertices(const DrawUniforms& u) {
+  for (int i = 0; i < u.light_count; ++i) {
+    if (u.lights[i].type != LightType::directional) return false;
+  }
+  return true;
+}
+
+void gouraud_vertex_batch(const DrawUniforms& u, const VertexBatchInput& in,
+                          float (*out)[kVertexBatch]) {
+  HWY_DYNAMIC_DISPATCH(GouraudVertexBatch)(u, in, out);
+}
+
+}  // namespace facet::shading
+#endif  // HWY_ONCE

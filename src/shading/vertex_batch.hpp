@@ -1,0 +1,34 @@
+// The Gouraud model's vertex() for a run of vertices at once, with SIMD (vertex_batch.cpp,
+// compiled for every target Highway supports): the vertex stage (pipeline/vertex.cpp) hands it
+// the vertices of one vertex pass instead of calling vertex() for each. Its lighting (a world
+// position, a view direction, a normalized half vector and a power per light) is most of the
+// geometry stage's time in Gouraud-lit scenes. Same operations as GouraudShading::vertex()
+// (lit_models.hpp) lane by lane, so the same bits; draws with point or spot lights keep
+// vertex().
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "shading/uniforms.hpp"
+
+namespace facet::shading {
+
+inline constexpr int kVertexBatch = 64;
+
+struct VertexBatchInput {
+  int count = 0;                         // vertices, at most kVertexBatch
+  const glm::vec3* positions = nullptr;  // object space, count of them
+  // The unit world normal, one array per axis (the vertex pass's), kVertexBatch entries each.
+  const float* normal[3] = {};
+  const glm::vec2* texcoords = nullptr;  // count of them, or null: (0, 0)
+  const glm::vec4* colors = nullptr;     // count of them, or null: white
+};
+
+// Whether gouraud_vertex_batch can light this draw: every light directional.
+bool gouraud_batches_vertices(const DrawUniforms& u);
+
+// out[k][n]: varying k of vertex n, as GouraudShading::vertex() writes it.
+void gouraud_vertex_batch(const DrawUniforms& u, const VertexBatchInput& in,
+                          float (*out)[kVertexBatch]);
+
+}  // namespace facet::shading

@@ -1,0 +1,115 @@
+// The SIMD vertex form of the Gouraud model (shading/vertex_batch.cpp) gives vertex()'s bits on
+// every SIMD target: lit by zero to three directional lights, from any side, with and without
+// texture coordinates, vertex colors and a highlight, for every run length; and it declines
+// point and spot lights.
+#include "shading/vertex_batch.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include "shading/lit_models.hpp"
+#include "support/forced_target.hpp"
+
+namespace facet::test {
+namespace {
+
+using shading::GouraudShading;
+using shading::kVertexBatch;
+
+struct Draw {
+  Material material;
+  shading::LightData lights[3];
+  shading::DrawUniforms uniforms;
+};
+
+void randomize(std::mt19937& rng, Draw& d) {
+  std::uniform_real_distribution<float> any(-1.0f, 1.0f), unit(0.0f, 1.0f);
+  d.uniforms.material = &d.material;
+  for (int c = 0; c < 4; ++c) {
+    for (int r = 0; r < 3; ++r) d.uniforms.model[c][r] = any(rng) * (c == 3 ? 10.0f : 2.0f);
+  }
+  d.uniforms.eye = {any(rng) * 5.0f, any(rng) * 5.0f, any(rng) * 5.0f};
+  d.uniforms.ambient = {unit(rng) * 0.2f, unit(rng) * 0.2f, unit(rng) * 0.2f};
+  d.uniforms.base_color = {unit(rng), unit(rng), unit(rng), unit(rng)};
+  d.uniforms.use_vertex_colors = rng() % 2 == 0;
+  d.uniforms.light_count = static_cast<int>(rng() % 4);
+  for (int i = 0; i < d.uniforms.light_count; ++i) {
+    d.lights[i].to_light = glm::normalize(glm::vec3(any(rng), any(rng), any(rng)) + 0.01f);
+    d.lights[i].radiance = {unit(rng) * 3.0f, unit(rng) * 3.0f, unit(rng) * 3.0f};
+  }
+  d.uniforms.lights = d.lights;
+  d.material.specular_color = {unit(rng), unit(rng), unit(rng)};
+  d.material.shininess = rng() % 5 == 0 ? 0.0f : 1.0f + unit(rng) * 127.0f;
+}
+
+TEST(VertexBatch, GouraudGivesVertexsBitsOnEveryTarget) {
+  std::mt19937 rng(20261122);
+  std::uniform_real_distribution<float> any(-3.0f, 3.0f), unit(0.0f, 1.0f);
+  int compared = 0;
+  for (std::int64_t target : simd_targets()) {
+    ForcedTarget forced(target);
+    for (int round = 0; round < 60; ++round) {
+      Draw draw;
+      randomize(rng, draw);
+      const int count = 1 + static_cast<int>(rng() % kVertexBatch);
+      std::vector<glm::vec3> positions(count);
+      std::vector<glm::vec2> texcoords(count);
+      std::vector<glm::vec4> colors(count);
+      alignas(64) float normal[3][kVertexBatch] = {};
+      for (int n = 0; n < count; ++n) {
+        positions[n] = {any(rng), any(rng), any(rng)};
+        texcoords[n] = {any(rng), any(rng)};
+        colors[n] = {unit(rng), unit(rng), unit(rng), unit(rng)};
+        // Unit normals facing anywhere, and now and then none (the pass gives zero).
+        glm::vec3 nv = rng() % 8 == 0 ? glm::vec3(0.0f)
+                                      : glm::normalize(glm::vec3(any(rng), any(rng), any(rng)));
+        for (int c = 0; c < 3; ++c) normal[c][n] = nv[c];
+      }
+      const bool with_texcoords = round % 2 == 0, with_colors = round % 3 != 0;
+      shading::VertexBatchInput in;
+      in.count = count;
+      in.positions = positions.data();
+      for (int c = 0; c < 3; ++c) in.normal[c] = normal[c];
+      in.texcoords = with_texcoords ? texcoords.data() : nullptr;
+      in.colors = with_colors ? colors.data() : nullptr;
+      alignas(64) float out[pipeline::kMaxVaryings][kVertexBatch];
+      GouraudShading::vertex_batch(draw.uniforms, in, out);
+      for (int n = 0; n < count; ++n) {
+        shading::VertexInput vertex;
+        vertex.position = positions[n];
+        vertex.normal = {normal[0][n], normal[1][n], normal[2][n]};
+        vertex.color = with_colors ? colors[n] : glm::vec4(1.0f);
+        vertex.texcoord = with_texcoords ? texcoords[n] : glm::vec2(0.0f);
+        vertex.tangent = glm::vec4(0.0f);
+        float expected[GouraudShading::kVaryings];
+        GouraudShading::vertex(vertex, draw.uniforms, expected);
+        for (int k = 0; k < GouraudShading::kVaryings; ++k) {
+          ASSERT_EQ(std::memcmp(&expected[k], &out[k][n], sizeof(float)), 0)
+              << hwy::TargetName(target) << ", round " << round << ", vertex " << n << ", varying "
+              << k << ": " << out[k][n] << ", vertex() gives " << expected[k];
+        }
+        ++compared;
+      }
+    }
+  }
+  EXPECT_GT(compared, 1000);
+}
+
+TEST(VertexBatch, GouraudDeclinesPointAndSpotLights) {
+  Draw draw;
+  std::mt19937 rng(3);
+  randomize(rng, draw);
+  draw.uniforms.light_count = 2;
+  draw.lights[0].type = draw.lights[1].type = LightType::directional;
+  EXPECT_TRUE(GouraudShading::batch_vertices(draw.uniforms));
+  draw.lights[1].type = LightType::point;
+  EXPECT_FALSE(GouraudShading::batch_vertices(draw.uniforms));
+  draw.lights[1].type = LightType::spot;
+  EXPECT_FALSE(GouraudShading::batch_vertices(draw.uniforms));
+}
+
+}  // namespace
+}  // namespace facet::test

@@ -1,5 +1,6 @@
 // The SIMD batch sampler (shading/texel_batch.cpp) gives sample_map's bits on every SIMD target,
-// for every filter, wrap mode, texture shape and transform.
+// for every filter, wrap mode, texture shape and transform, for pixels of one triangle and of
+// several (each with its own plane slopes).
 #include "shading/texel_batch.hpp"
 
 #include <gtest/gtest.h>
@@ -24,12 +25,14 @@ std::shared_ptr<const Texture> random_texture(std::mt19937& rng, int width, int 
 }
 
 // A batch of random texture coordinates (some far outside [0, 1], some not finite) with the
-// planes they came from.
+// planes they came from: one triangle's, or (pixels of several triangles) each pixel's own
+// slopes.
 struct Case {
   float u[shading::kTexelBatch] = {}, v[shading::kTexelBatch] = {}, w[shading::kTexelBatch] = {};
   shading::TexelBatch batch;
   pipeline::Plane planes[2];
   pipeline::Plane inv_w;
+  float slopes[shading::TexelBatch::kSlopes][shading::kTexelBatch] = {};
 };
 Case random_case(std::mt19937& rng, int count) {
   std::uniform_real_distribution<float> coordinate(-3.0f, 3.0f), slope(-0.05f, 0.05f),
@@ -51,17 +54,32 @@ Case random_case(std::mt19937& rng, int count) {
   }
   c.inv_w.dx *= 0.01f;
   c.inv_w.dy *= 0.01f;
+  using S = shading::TexelBatch;
+  for (int j = 0; j < count; ++j) {
+    for (int k = 0; k < S::kSlopes; ++k) {
+      c.slopes[k][j] = slope(rng) * (k == S::inv_w_dx || k == S::inv_w_dy ? 0.01f : 1.0f);
+    }
+  }
   return c;
 }
 
-// What sample_map gives for pixel j of the batch (its derivatives as Fragment computes them).
+// What sample_map gives for pixel j of the batch (its derivatives as Fragment computes them,
+// from its triangle's planes).
 glm::vec4 scalar_sample(const TextureMap& map, const Case& c, int j) {
   shading::Fragment f;
   f.v[0] = c.batch.u[j];
   f.v[1] = c.batch.v[j];
   f.w = c.batch.w[j];
-  f.planes = c.planes;
-  f.inv_w = &c.inv_w;
+  pipeline::Plane planes[2] = {c.planes[0], c.planes[1]};
+  pipeline::Plane inv_w = c.inv_w;
+  if (c.batch.slopes != nullptr) {
+    using S = shading::TexelBatch;
+    planes[0].dx = c.slopes[S::u_dx][j], planes[0].dy = c.slopes[S::u_dy][j];
+    planes[1].dx = c.slopes[S::v_dx][j], planes[1].dy = c.slopes[S::v_dy][j];
+    inv_w.dx = c.slopes[S::inv_w_dx][j], inv_w.dy = c.slopes[S::inv_w_dy][j];
+  }
+  f.planes = planes;
+  f.inv_w = &inv_w;
   return shading::sample_map(map, f, 0);
 }
 
@@ -87,6 +105,7 @@ TEST(TexelBatch, GivesSampleMapsBitsOnEveryTarget) {
               c.batch.u = c.u;  // (set here: a copy of the Case would point into the old one)
               c.batch.v = c.v;
               c.batch.w = c.w;
+              if (rng() % 2 == 0) c.batch.slopes = c.slopes;  // pixels of several triangles
               shading::sample_batch(map, c.planes, c.inv_w, c.batch);
               for (int j = 0; j < c.batch.count; ++j) {
                 const glm::vec4 expected = scalar_sample(map, c, j);
@@ -96,7 +115,8 @@ TEST(TexelBatch, GivesSampleMapsBitsOnEveryTarget) {
                     << hwy::TargetName(target) << ", " << texture->width() << "x"
                     << texture->height() << ", filter " << static_cast<int>(filter) << ", wrap "
                     << static_cast<int>(wrap_u) << "/" << static_cast<int>(wrap_v) << ", pixel "
-                    << j << " at (" << c.batch.u[j] << ", " << c.batch.v[j] << ")";
+                    << j << " at (" << c.batch.u[j] << ", " << c.batch.v[j] << ")"
+                    << (c.batch.slopes ? ", own slopes" : "");
                 ++compared;
               }
             }

@@ -77,15 +77,15 @@ void CoverBlock(const BlockInput& in, BlockFragments& out) {
   out.mask = mask;
 }
 
-void InterpolatePixels(const SetupTriangle& t, const Plane* planes, int varyings, int count,
-                       const std::int16_t* xs, const std::int16_t* ys, float* w,
+void InterpolatePixels(const SetupTriangle& t, const Plane* planes, int varyings, int first,
+                       int count, const std::int16_t* xs, const std::int16_t* ys, float* w,
                        float (*v)[kBlockPixels]) {
   const FloatTag df;
   const IntTag di;
   const hn::Rebind<std::int16_t, FloatTag> d16;
   const int lanes = static_cast<int>(hn::Lanes(df));
   const auto half = hn::Set(df, 0.5f);
-  for (int j = 0; j < count; j += lanes) {
+  for (int j = first; j < first + count; j += lanes) {
     // (p - ref) of the pixel centres, as evaluate_row / evaluate_in_row take them.
     const auto px = hn::Add(hn::ConvertTo(df, hn::PromoteTo(di, hn::LoadU(d16, xs + j))), half);
     const auto py = hn::Add(hn::ConvertTo(df, hn::PromoteTo(di, hn::LoadU(d16, ys + j))), half);
@@ -115,9 +115,9 @@ HWY_EXPORT(TargetName);
 HWY_EXPORT(InterpolatePixels);
 
 void interpolate_pixels(const SetupTriangle& t, const Plane* varying_planes, int varyings,
-                        int count, const std::int16_t* x, const std::int16_t* y, float* w,
-                        float (*v)[kBlockPixels]) {
-  HWY_DYNAMIC_DISPATCH(InterpolatePixels)(t, varying_planes, varyings, count, x, y, w, v);
+                        int first, int count, const std::int16_t* x, const std::int16_t* y,
+                        float* w, float (*v)[kBlockPixels]) {
+  HWY_DYNAMIC_DISPATCH(InterpolatePixels)(t, varying_planes, varyings, first, count, x, y, w, v);
 }
 
 void cover_block(const BlockInput& in, BlockFragments& out) {

@@ -54,12 +54,13 @@ struct BlockFragments {
 void cover_block(const BlockInput& in, BlockFragments& out);
 
 // The small-triangle path's part of cover_block (raster.hpp): clip w and the perspective-
-// correct varyings of `count` pixels of triangle t at frame pixels (x[n], y[n]), into w[n] and
-// v[k][n], the same values cover_block gives. Computes whole vectors: entries up to the next
-// multiple of 8 past count are written too (from x, y there, which must be set).
+// correct varyings of `count` pixels of triangle t at frame pixels (x[n], y[n]), n = first ...
+// first + count - 1, into w[n] and v[k][n], the same values cover_block gives. Computes whole
+// vectors: entries up to first + the next multiple of 8 past count are written too (from x, y
+// there, which must be readable), so that must stay within kBlockPixels.
 void interpolate_pixels(const SetupTriangle& t, const Plane* varying_planes, int varyings,
-                        int count, const std::int16_t* x, const std::int16_t* y, float* w,
-                        float (*v)[kBlockPixels]);
+                        int first, int count, const std::int16_t* x, const std::int16_t* y,
+                        float* w, float (*v)[kBlockPixels]);
 
 // Name of the SIMD target cover_block runs on now (e.g. "AVX2"), for bench output and tests.
 const char* simd_target_name();

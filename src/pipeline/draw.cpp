@@ -279,6 +279,8 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
   tile.depth = buffers.depth.data();
   tile.block_max_depth = buffers.block_max_depth.data();
   pipeline::clear_tile(tile, background);
+  pipeline::WaitingPixels waiting;
+  tile.waiting = &waiting;
   // Skip what the tile's last full, opaque, nearest triangle hides anyway.
   bin +=
       pipeline::first_visible_entry(frame, bin, bin_end - bin, tile.x0, tile.y0, tile.x1, tile.y1);
@@ -290,6 +292,7 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
     if (entry & pipeline::kLineBit) {
       // The overdraw heat map counts triangles; a line would overwrite the count.
       if (debug == DebugView::overdraw) continue;
+      pipeline::flush_waiting(tile);
       if (background_pending)
         pipeline::fill_background(tile, background), background_pending = false;
       pipeline::raster_line(tile, frame.lines[entry & ~pipeline::kLineBit]);
@@ -297,11 +300,13 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
       const pipeline::SetupTriangle& t = frame.triangles[entry];
       const pipeline::DrawPipeline& draw_pipeline = frame.draws[t.draw].pipeline;
       if (background_pending && !draw_pipeline.occludes) {
+        pipeline::flush_waiting(tile);
         pipeline::fill_background(tile, background), background_pending = false;
       }
       draw_pipeline.raster(tile, t);
     }
   }
+  pipeline::flush_waiting(tile);
   if (background_pending) pipeline::fill_background(tile, background);
   auto resolve_start = Clock::now();
   if (debug == DebugView::none) {

@@ -11,6 +11,7 @@
 #include <hwy/foreach_target.h>  // must come before highway.h
 #include <hwy/highway.h>
 
+#include <algorithm>
 #include <cstring>
 #include <limits>
 
@@ -174,9 +175,27 @@ HWY_INLINE IntV Nearest(const Source& src, FloatV u, FloatV v) {
 }
 
 // Fragment::ddx/ddy of a varying whose value is `value`: (V_x - value * W_x) * w.
-HWY_INLINE FloatV Derivative(float plane_slope, float inv_w_slope, FloatV value, FloatV w) {
+HWY_INLINE FloatV Derivative(FloatV plane_slope, FloatV inv_w_slope, FloatV value, FloatV w) {
+  return hn::Mul(hn::Sub(plane_slope, hn::Mul(value, inv_w_slope)), w);
+}
+
+// Plane slopes in TexelBatch::Slope order: one triangle's for every lane, or each lane's own.
+struct Slopes {
+  FloatV s[TexelBatch::kSlopes];
+};
+HWY_INLINE Slopes TriangleSlopes(const pipeline::Plane* planes, const pipeline::Plane& inv_w) {
   const FloatTag df;
-  return hn::Mul(hn::Sub(hn::Set(df, plane_slope), hn::Mul(value, hn::Set(df, inv_w_slope))), w);
+  const float one[TexelBatch::kSlopes] = {planes[0].dx, planes[1].dx, planes[0].dy,
+                                          planes[1].dy, inv_w.dx,     inv_w.dy};
+  Slopes out;
+  for (int k = 0; k < TexelBatch::kSlopes; ++k) out.s[k] = hn::Set(df, one[k]);
+  return out;
+}
+HWY_INLINE Slopes PixelSlopes(const TexelBatch& batch, int j) {
+  const FloatTag df;
+  Slopes out;
+  for (int k = 0; k < TexelBatch::kSlopes; ++k) out.s[k] = hn::LoadU(df, batch.slopes[k] + j);
+  return out;
 }
 
 // Row `row` of the map's linear part times (du, dv), as sample_map_at() transforms derivatives.
@@ -187,14 +206,15 @@ HWY_INLINE FloatV LinearPart(const glm::mat3& m, int row, FloatV du, FloatV dv) 
 
 // sample_map_at()'s level of detail: exact derivatives, the map's linear part, then
 // Texture::lod() (footprint in base texels, the longer squared edge, half its log2).
-HWY_INLINE FloatV LevelOfDetail(const Texture& texture, const glm::mat3& m,
-                                const pipeline::Plane* planes, const pipeline::Plane& inv_w,
+HWY_INLINE FloatV LevelOfDetail(const Texture& texture, const glm::mat3& m, const Slopes& slopes,
                                 FloatV u, FloatV v, FloatV w) {
   const FloatTag df;
-  const FloatV dux = Derivative(planes[0].dx, inv_w.dx, u, w);
-  const FloatV dvx = Derivative(planes[1].dx, inv_w.dx, v, w);
-  const FloatV duy = Derivative(planes[0].dy, inv_w.dy, u, w);
-  const FloatV dvy = Derivative(planes[1].dy, inv_w.dy, v, w);
+  const FloatV* s = slopes.s;
+  using S = TexelBatch;
+  const FloatV dux = Derivative(s[S::u_dx], s[S::inv_w_dx], u, w);
+  const FloatV dvx = Derivative(s[S::v_dx], s[S::inv_w_dx], v, w);
+  const FloatV duy = Derivative(s[S::u_dy], s[S::inv_w_dy], u, w);
+  const FloatV dvy = Derivative(s[S::v_dy], s[S::inv_w_dy], v, w);
   const FloatV size_u = hn::Set(df, static_cast<float>(texture.width()));
   const FloatV size_v = hn::Set(df, static_cast<float>(texture.height()));
   const FloatV xu = hn::Mul(LinearPart(m, 0, dux, dvx), size_u);
@@ -218,6 +238,9 @@ void SampleBatch(const TextureMap& map, const pipeline::Plane* planes, const pip
   const glm::mat3& m = map.transform;
   const Filter filter = map.sampler.filter;
   const FloatV top = hn::Set(df, static_cast<float>(texture.level_count() - 1));
+  // The level of detail's plane slopes when every pixel is of one triangle.
+  const Slopes triangle =
+      filter == Filter::trilinear && !batch.slopes ? TriangleSlopes(planes, inv_w) : Slopes{};
   for (int j = 0; j < batch.count; j += lanes) {
     const FloatV u = hn::LoadU(df, batch.u + j), v = hn::LoadU(df, batch.v + j);
     // transform_texcoord()
@@ -243,7 +266,8 @@ void SampleBatch(const TextureMap& map, const pipeline::Plane* planes, const pip
     if (filter == Filter::bilinear) {
       near.store(Bilinear(src, hn::Zero(di), ut, vt));
     } else {
-      const FloatV lod = LevelOfDetail(texture, m, planes, inv_w, u, v, hn::LoadU(df, batch.w + j));
+      const FloatV lod = LevelOfDetail(texture, m, batch.slopes ? PixelSlopes(batch, j) : triangle,
+                                       u, v, hn::LoadU(df, batch.w + j));
       // sample_levels(): clamp to the chain, blend the two nearest levels.
       const FloatV l = hn::IfThenElse(hn::Gt(lod, hn::Zero(df)), StdMin(lod, top), hn::Zero(df));
       const IntV l0 = hn::ConvertTo(di, l);
@@ -298,8 +322,19 @@ void sample_batch(const TextureMap& map, const pipeline::Plane* planes,
   }
   for (int j = 0; j < batch.count; ++j) {  // Fragment::ddx/ddy, then sample_map_at()
     const float u = batch.u[j], v = batch.v[j], w = batch.w[j];
-    const glm::vec2 dx{(planes[0].dx - u * inv_w.dx) * w, (planes[1].dx - v * inv_w.dx) * w};
-    const glm::vec2 dy{(planes[0].dy - u * inv_w.dy) * w, (planes[1].dy - v * inv_w.dy) * w};
+    using S = TexelBatch;
+    float s[S::kSlopes];
+    if (batch.slopes != nullptr) {
+      for (int k = 0; k < S::kSlopes; ++k) s[k] = batch.slopes[k][j];
+    } else {
+      const float one[S::kSlopes] = {planes[0].dx, planes[1].dx, planes[0].dy,
+                                     planes[1].dy, inv_w.dx,     inv_w.dy};
+      std::copy_n(one, S::kSlopes, s);
+    }
+    const glm::vec2 dx{(s[S::u_dx] - u * s[S::inv_w_dx]) * w,
+                       (s[S::v_dx] - v * s[S::inv_w_dx]) * w};
+    const glm::vec2 dy{(s[S::u_dy] - u * s[S::inv_w_dy]) * w,
+                       (s[S::v_dy] - v * s[S::inv_w_dy]) * w};
     const glm::vec4 texel = sample_map_at(map, {u, v}, dx, dy);
     for (int c = 0; c < 4; ++c) batch.rgba[j][c] = texel[c];
   }

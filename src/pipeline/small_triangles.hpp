@@ -1,0 +1,141 @@
+// Stage: raster + shade, the small-triangle path: triangles whose bounding box in the tile is
+// a few pixels skip raster.hpp's 8x8 blocks. Their covered pixels are found one at a time,
+// and those of consecutive small triangles of one draw wait to be shaded together
+// (WaitingPixels).
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+
+#include "pipeline/block_raster.hpp"
+#include "pipeline/fixed_point.hpp"
+#include "pipeline/pixel_writer.hpp"
+#include "pipeline/setup.hpp"
+
+namespace facet::pipeline {
+
+// Triangles whose bounding box in the tile is at most this many pixels skip the block
+// machinery: for them, one pixel at a time is cheaper than classifying and dispatching blocks
+// (measured on bunny-close and million: 16 to 256 all gain on 0, 64 at least as much as any).
+inline constexpr int kSmallTrianglePixels = 64;
+
+// The covered pixels of the small triangle t's bounding box [x0, x1] x [y0, y1] (inclusive)
+// that pass the depth test: their positions and depths go to out.x, y, z from entry `first`
+// on; returns how many. Same arithmetic as cover_block, so the same pixels get the same
+// values. Without branches: every pixel of the box is written to the next free entry, which
+// only the covered ones that pass the depth test claim (whether a box pixel is covered is as
+// good as random to the branch predictor); so entries up to first + the box's pixel count are
+// written.
+template <class Shading>
+int find_small_pixels(const TileContext& tile, const SetupTriangle& t, int x0, int y0, int x1,
+                      int y1, PackedPixels& out, int first) {
+  const float* depth = tile.depth;
+  const std::int64_t step[3] = {std::int64_t{t.a[0]} * kSubpixelScale,
+                                std::int64_t{t.a[1]} * kSubpixelScale,
+                                std::int64_t{t.a[2]} * kSubpixelScale};
+  int count = first;
+  for (int y = y0; y <= y1; ++y) {
+    const std::int64_t cy = pixel_centre(y), cx = pixel_centre(x0);
+    std::int64_t e[3];
+    for (int i = 0; i < 3; ++i)
+      e[i] = std::int64_t{t.a[i]} * cx + std::int64_t{t.b[i]} * cy + t.c[i];
+    const float py = static_cast<float>(y) + 0.5f;
+    const float z_row = evaluate_row(t.z, t.ref_y, py);
+    const float* depth_row =
+        depth + static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride - tile.x0;
+    for (int x = x0; x <= x1; ++x) {
+      bool pass = (e[0] | e[1] | e[2]) >= 0;
+      for (int i = 0; i < 3; ++i) e[i] += step[i];
+      const float z = evaluate_in_row(z_row, t.z, t.ref_x, static_cast<float>(x) + 0.5f);
+      if constexpr (depth_tested<Shading>()) pass &= z < depth_row[x];  // less; NaN fails
+      out.x[count] = static_cast<std::int16_t>(x);
+      out.y[count] = static_cast<std::int16_t>(y);
+      out.z[count] = z;
+      count += pass;
+    }
+  }
+  return count - first;
+}
+
+// The loop over the bounding box [x0, x1] x [y0, y1] (inclusive), for small triangles: finds
+// the covered pixels that pass the depth test one at a time, then interpolates their varyings
+// with SIMD (interpolate_pixels) and shades them.
+template <class Shading, AlphaMode kAlpha>
+void raster_small_triangle(TileContext& tile, const SetupTriangle& t, int x0, int y0, int x1,
+                           int y1, PixelWriter<Shading, kAlpha>& out) {
+  static_assert(kSmallTrianglePixels <= PackedPixels::kCapacity);
+  PackedPixels found;
+  found.count = find_small_pixels<Shading>(tile, t, x0, y0, x1, y1, found, 0);
+  if (found.count == 0) return;
+  found.pad(0);  // interpolate_pixels reads whole vectors of positions
+  interpolate_pixels(t, out.fragment.planes, Shading::kVaryings, 0, found.count, found.x, found.y,
+                     found.w, found.v);
+  out.shade(found);
+}
+
+// Pixels of consecutive small triangles of one draw, waiting to be shaded together. Shaded a
+// triangle at a time, a few pixels each (islands' small triangles average three), every
+// triangle paid the SIMD sampling and shading calls' fixed costs and mostly empty lanes. Only
+// opaque, depth-tested and -writing, batch-shaded draws wait (PixelWriter::kWaits); whatever
+// else the tile draws first shades and writes what waits (flush_waiting). A waiting pixel
+// passed the depth test against the tile as it was before the others waited; when written it
+// is tested again, against what the pixels before it wrote: so a pixel writes exactly when
+// drawing the triangles one by one would have written it, with the same color.
+struct WaitingPixels {
+  PackedPixels pixels;
+  // Each pixel's triangle's plane slopes for the texture's level of detail (TexelBatch).
+  alignas(64) float slopes[shading::TexelBatch::kSlopes][PackedPixels::kCapacity];
+  std::uint32_t draw = 0;
+  void (*flush)(TileContext&) = nullptr;  // shades and writes them; null: none wait
+};
+
+// Boxes of at most this many pixels join the waiting pixels: interpolate_pixels writes up to
+// 7 entries past the last one found, and those must stay in the arrays.
+inline constexpr int kMaxWaitingBox = PackedPixels::kCapacity - 8;
+
+// Shades and writes whatever waits in the tile (WaitingPixels).
+inline void flush_waiting(TileContext& tile) {
+  if (tile.waiting != nullptr && tile.waiting->flush != nullptr) tile.waiting->flush(tile);
+}
+
+template <class Shading, AlphaMode kAlpha>
+void write_waiting(TileContext& tile) {
+  WaitingPixels& waiting = *tile.waiting;
+  PackedPixels& pixels = waiting.pixels;
+  PixelWriter<Shading, kAlpha> out(tile, waiting.draw);
+  out.shade_waiting(pixels, waiting.slopes);
+  tile.pixels_shaded += out.shaded;
+  pixels.count = 0;
+  waiting.flush = nullptr;
+}
+
+// Adds small triangle t's pixels in its bounding box [x0, x1] x [y0, y1] (inclusive, at most
+// kMaxWaitingBox pixels) to the tile's waiting pixels.
+template <class Shading, AlphaMode kAlpha>
+void add_waiting(TileContext& tile, const SetupTriangle& t, int x0, int y0, int x1, int y1) {
+  WaitingPixels& waiting = *tile.waiting;
+  PackedPixels& pixels = waiting.pixels;
+  const int box = (x1 - x0 + 1) * (y1 - y0 + 1);
+  if (waiting.flush != nullptr && (waiting.draw != t.draw || pixels.count + box > kMaxWaitingBox)) {
+    waiting.flush(tile);
+  }
+  const int first = pixels.count;
+  const int found = find_small_pixels<Shading>(tile, t, x0, y0, x1, y1, pixels, first);
+  if (found == 0) return;
+  const Plane* planes = tile.frame->planes.data() + t.varying_planes;
+  interpolate_pixels(t, planes, Shading::kVaryings, first, found, pixels.x, pixels.y, pixels.w,
+                     pixels.v);
+  if constexpr (base_color_texcoord<Shading>() >= 0) {
+    const Plane* uv = planes + base_color_texcoord<Shading>();
+    const float slopes[shading::TexelBatch::kSlopes] = {uv[0].dx, uv[1].dx,   uv[0].dy,
+                                                        uv[1].dy, t.inv_w.dx, t.inv_w.dy};
+    for (int k = 0; k < shading::TexelBatch::kSlopes; ++k) {
+      std::fill_n(waiting.slopes[k] + first, found, slopes[k]);
+    }
+  }
+  pixels.count = first + found;
+  waiting.draw = t.draw;
+  waiting.flush = &write_waiting<Shading, kAlpha>;
+}
+
+}  // namespace facet::pipeline

@@ -102,6 +102,9 @@ template <class Shading, AlphaMode kAlpha>
 void write_waiting(TileContext& tile) {
   WaitingPixels& waiting = *tile.waiting;
   PackedPixels& pixels = waiting.pixels;
+  for (int n = pixels.count; n % 8 != 0; ++n) {  // read by the SIMD sampler, then ignored
+    for (auto& slope : waiting.slopes) slope[n] = 0.0f;
+  }
   PixelWriter<Shading, kAlpha> out(tile, waiting.draw);
   out.shade_waiting(pixels, waiting.slopes);
   tile.pixels_shaded += out.shaded;
@@ -122,6 +125,8 @@ void add_waiting(TileContext& tile, const SetupTriangle& t, int x0, int y0, int 
   const int first = pixels.count;
   const int found = find_small_pixels<Shading>(tile, t, x0, y0, x1, y1, pixels, first);
   if (found == 0) return;
+  pixels.count = first + found;
+  pixels.pad(0);  // interpolate_pixels reads whole vectors of positions
   const Plane* planes = tile.frame->planes.data() + t.varying_planes;
   interpolate_pixels(t, planes, Shading::kVaryings, first, found, pixels.x, pixels.y, pixels.w,
                      pixels.v);
@@ -133,7 +138,6 @@ void add_waiting(TileContext& tile, const SetupTriangle& t, int x0, int y0, int 
       std::fill_n(waiting.slopes[k] + first, found, slopes[k]);
     }
   }
-  pixels.count = first + found;
   waiting.draw = t.draw;
   waiting.flush = &write_waiting<Shading, kAlpha>;
 }

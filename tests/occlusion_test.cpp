@@ -1,6 +1,7 @@
 // Hidden work skipped: a tile's bin starts at the last triangle that hides everything before
-// it (pipeline/occlusion.cpp), and 8x8 blocks behind what is drawn are rejected (raster.hpp).
-// Both must leave every pixel as drawing everything would.
+// it, small bins skip per 8x8 block what a later triangle hides there (pipeline/occlusion.cpp),
+// and 8x8 blocks behind what is drawn are rejected (raster.hpp). All must leave every pixel as
+// drawing everything would.
 #include <gtest/gtest.h>
 
 #include "facet/renderer.hpp"
@@ -17,10 +18,10 @@ struct Layer {
 };
 
 // Draws the layers in order, each an unlit single color; returns the image and the stats.
-// Small tiles, so that most of them lie off the quads' diagonals.
-Framebuffer draw_layers(const std::vector<Layer>& layers, FrameStats* stats) {
+// Small tiles by default, so that most of them lie off the quads' diagonals.
+Framebuffer draw_layers(const std::vector<Layer>& layers, FrameStats* stats, int tile_size = 16) {
   RenderSettings settings;
-  settings.tile_size = 16;
+  settings.tile_size = tile_size;
   Renderer renderer(settings);
   Framebuffer fb(kWidth, kHeight);
   renderer.begin_frame(test_camera(kWidth, kHeight));
@@ -54,6 +55,25 @@ TEST(Occlusion, BackToFrontLayersShadeLittleMoreThanTheFrontOne) {
   // All six layers would be 6 * pixels; only tiles a quad's diagonal crosses keep them all.
   const std::uint64_t pixels = std::uint64_t{kWidth} * kHeight;
   EXPECT_LT(stats.pixels_shaded, 3 * pixels);
+  EXPECT_GE(stats.pixels_shaded, pixels);
+}
+
+// With large tiles every tile but two lies on a quad's diagonal, where neither of its triangles
+// covers the tile: there the skipping works block by block, and only the blocks the diagonal
+// crosses shade every layer.
+TEST(Occlusion, BackToFrontLayersInLargeTilesShadeTheDiagonalBlocksOnly) {
+  std::vector<Layer> layers;
+  for (int i = 0; i < 6; ++i) {
+    layers.push_back(full_screen(-10.0f + i, {0.1f * i, 0.5f, 1.0f - 0.1f * i, 1.0f}));
+  }
+  FrameStats stats;
+  Framebuffer fb = draw_layers(layers, &stats, 64);
+  Framebuffer front = draw_layers({layers.back()}, nullptr, 64);
+  EXPECT_EQ(fb.rgba8(), front.rgba8());
+  EXPECT_EQ(fb.depth(), front.depth());
+  // Tile by tile: four of six tiles would shade all six layers, over 4 times the pixels.
+  const std::uint64_t pixels = std::uint64_t{kWidth} * kHeight;
+  EXPECT_LT(stats.pixels_shaded, 2 * pixels);
   EXPECT_GE(stats.pixels_shaded, pixels);
 }
 

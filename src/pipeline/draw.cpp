@@ -281,14 +281,23 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
   pipeline::clear_tile(tile, background);
   pipeline::WaitingPixels waiting;
   tile.waiting = &waiting;
-  // Skip what the tile's last full, opaque, nearest triangle hides anyway.
+  // Skip what the tile's last full, opaque, nearest triangle hides anyway; in bins of a few
+  // (large) triangles, also what such triangles hide block by block.
   bin +=
       pipeline::first_visible_entry(frame, bin, bin_end - bin, tile.x0, tile.y0, tile.x1, tile.y1);
+  const std::uint32_t* const first_drawn = bin;
+  std::uint32_t block_starts[pipeline::kMaxTileBlocks];
+  if (bin_end - bin <= static_cast<std::ptrdiff_t>(pipeline::kMaxBlockOcclusionEntries)) {
+    pipeline::first_visible_entries_per_block(frame, bin, bin_end - bin, tile.x0, tile.y0, tile.x1,
+                                              tile.y1, tile.blocks_x, block_starts);
+    tile.block_starts = block_starts;
+  }
   // The environment is drawn late, into what no opaque triangle covered (fill_background):
   // before the first primitive that could write color without depth, or at the end.
   bool background_pending = background.environment != nullptr;
   for (; bin != bin_end; ++bin) {
     const std::uint32_t entry = *bin;
+    tile.entry = static_cast<std::uint32_t>(bin - first_drawn);
     if (entry & pipeline::kLineBit) {
       // The overdraw heat map counts triangles; a line would overwrite the count.
       if (debug == DebugView::overdraw) continue;

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "pipeline/bin.hpp"
+#include "pipeline/pixel_writer.hpp"
 #include "pipeline/setup.hpp"
 
 namespace facet::pipeline {
@@ -51,6 +52,47 @@ std::size_t first_visible_entry(const Frame& frame, const std::uint32_t* bin, st
     nearest_so_far = std::min(nearest_so_far, range.nearest);
   }
   return first;
+}
+
+void first_visible_entries_per_block(const Frame& frame, const std::uint32_t* bin,
+                                     std::size_t count, int x0, int y0, int x1, int y1,
+                                     int blocks_x, std::uint32_t* starts) {
+  const int blocks_y = (y1 - y0 + kBlockSize - 1) / kBlockSize;
+  // Per block, the nearest depth any entry so far can write there.
+  float nearest_so_far[kMaxTileBlocks];
+  for (int b = 0; b < blocks_x * blocks_y; ++b) {
+    starts[b] = 0;
+    nearest_so_far[b] = std::numeric_limits<float>::infinity();
+  }
+  for (std::size_t i = 0; i < count; ++i) {
+    if (bin[i] & kLineBit) return;  // lines are not hidden (nor do they hide)
+    const SetupTriangle& t = frame.triangles[bin[i]];
+    const DrawPipeline& pipeline = frame.draws[t.draw].pipeline;
+    if (!pipeline.depth_tested) return;  // it would show through whatever is drawn later
+    // The triangle's box in the tile, and the blocks it overlaps.
+    const int left = std::max(t.min_x, x0), right = std::min(t.max_x, x1 - 1);
+    const int top = std::max(t.min_y, y0), bottom = std::min(t.max_y, y1 - 1);
+    if (left > right || top > bottom) continue;
+    for (int by = (top - y0) / kBlockSize; by <= (bottom - y0) / kBlockSize; ++by) {
+      const int block_y0 = y0 + by * kBlockSize, block_y1 = std::min(block_y0 + kBlockSize, y1);
+      for (int bx = (left - x0) / kBlockSize; bx <= (right - x0) / kBlockSize; ++bx) {
+        const int block_x0 = x0 + bx * kBlockSize, block_x1 = std::min(block_x0 + kBlockSize, x1);
+        // One that covers no pixel centre of the block changes nothing there. (Its box may:
+        // a quad's two triangles share theirs, and each would bound the other's depth.)
+        if (!triangle_may_touch(t, block_x0, block_y0, block_x1, block_y1)) continue;
+        const DepthRange range =
+            depth_range_over(t, std::max(left, block_x0), std::max(top, block_y0),
+                             std::min(right, block_x1 - 1), std::min(bottom, block_y1 - 1));
+        if (!(range.nearest == range.nearest)) return;  // NaN: no bound
+        const int b = by * blocks_x + bx;
+        if (pipeline.occludes && i > starts[b] && range.farthest < nearest_so_far[b] &&
+            triangle_covers(t, block_x0, block_y0, block_x1, block_y1)) {
+          starts[b] = static_cast<std::uint32_t>(i);
+        }
+        nearest_so_far[b] = std::min(nearest_so_far[b], range.nearest);
+      }
+    }
+  }
 }
 
 }  // namespace facet::pipeline

@@ -1,6 +1,7 @@
 // Stage: raster, before a tile's first triangle. Reads the tile's bin (bin.cpp) and finds the
-// last triangle that hides everything binned before it, so raster.hpp never shades what would
-// be overdrawn: a full-screen opaque surface drawn last costs one layer, not all of them.
+// last triangle that hides everything binned before it (in the tile, and in small bins in each
+// 8x8 block), so raster.hpp never shades what would be overdrawn: a full-screen opaque surface
+// drawn last costs one layer, not all of them.
 #pragma once
 
 #include <cstddef>
@@ -21,5 +22,19 @@ namespace facet::pipeline {
 // clear depth exactly where it passes against anything they wrote.
 std::size_t first_visible_entry(const Frame& frame, const std::uint32_t* bin, std::size_t count,
                                 int x0, int y0, int x1, int y1);
+
+// Bins of at most this many entries also look for hidden work per 8x8 block: the look costs
+// a depth bound per entry and block, which pays when a few large triangles overdraw each
+// other (where no single one covers the tile: along the seam of a full-screen quad's two
+// triangles), not in bins of many small ones.
+inline constexpr std::size_t kMaxBlockOcclusionEntries = 64;
+
+// The same per 8x8 block of the tile [x0, x1) x [y0, y1) (blocks_x blocks per row, aligned to
+// the tile's origin): starts[b] = index into bin[0 .. count) of the first entry that can change
+// block b's pixels, by the conditions above over the block instead of the tile. raster.hpp
+// skips block b of every triangle before starts[b].
+void first_visible_entries_per_block(const Frame& frame, const std::uint32_t* bin,
+                                     std::size_t count, int x0, int y0, int x1, int y1,
+                                     int blocks_x, std::uint32_t* starts);
 
 }  // namespace facet::pipeline

@@ -25,6 +25,7 @@ namespace facet::pipeline {
 
 // Largest tile edge the renderer accepts (RenderSettings::tile_size).
 inline constexpr int kMaxTileSize = 128;
+inline constexpr int kMaxTileBlocks = (kMaxTileSize / kBlockSize) * (kMaxTileSize / kBlockSize);
 
 struct WaitingPixels;
 
@@ -39,6 +40,11 @@ struct TileContext {
   // clear depth; lowered when a triangle writes a whole block (raster_triangle).
   float* block_max_depth = nullptr;
   int blocks_x = 0;
+  // Per block, the index of the first triangle that can change it, counted from the first
+  // bin entry drawn (occlusion.hpp's first_visible_entries_per_block), or null: every one can.
+  // `entry` is the index of the triangle being drawn, counted the same way.
+  const std::uint32_t* block_starts = nullptr;
+  std::uint32_t entry = 0;
   std::uint64_t pixels_shaded = 0;
   // Pixels of small triangles waiting to be shaded together (WaitingPixels), or null: none
   // ever wait.

@@ -105,6 +105,8 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
     in.y_end = std::min(y1, block_y + kBlockSize - 1) - block_y + 1;
     for (int bx = (x0 - tile.x0) / kBlockSize; bx <= (x1 - tile.x0) / kBlockSize; ++bx) {
       const int block_x = tile.x0 + bx * kBlockSize;
+      if (tile.block_starts != nullptr && tile.entry < tile.block_starts[by * tile.blocks_x + bx])
+        continue;  // a later triangle hides this one here
       in.x_begin = std::max(x0, block_x) - block_x;
       in.x_end = std::min(x1, block_x + kBlockSize - 1) - block_x + 1;
       if (!classify_edges(t, block_x, block_y, in)) continue;

@@ -88,6 +88,19 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
     return;
   }
   constexpr bool kDepthTest = depth_tested<Shading>();
+  const int bx0 = (x0 - tile.x0) / kBlockSize, bx1 = (x1 - tile.x0) / kBlockSize;
+  const int by0 = (y0 - tile.y0) / kBlockSize, by1 = (y1 - tile.y0) / kBlockSize;
+  if constexpr (kDepthTest) {
+    // The blocks' depth bounds over the whole box first: a triangle behind everything drawn
+    // there (a far layer drawn after a near one) is done without a block's edge tests.
+    float farthest_drawn = 0.0f;
+    for (int by = by0; by <= by1; ++by) {
+      for (int bx = bx0; bx <= bx1; ++bx) {
+        farthest_drawn = std::max(farthest_drawn, tile.block_max_depth[by * tile.blocks_x + bx]);
+      }
+    }
+    if (depth_range_over(t, x0, y0, x1, y1).nearest >= farthest_drawn) return;  // NaN goes on
+  }
   // Writes that leave every pixel of a block at a depth we know: the block's bound can drop.
   constexpr bool kTightensBound =
       PixelWriter<Shading, kAlpha>::kDepthWrite && kAlpha == AlphaMode::opaque;
@@ -99,11 +112,11 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
   in.depth_stride = tile.stride;
   alignas(64) BlockFragments block;
   PackedPixels pixels;
-  for (int by = (y0 - tile.y0) / kBlockSize; by <= (y1 - tile.y0) / kBlockSize; ++by) {
+  for (int by = by0; by <= by1; ++by) {
     const int block_y = tile.y0 + by * kBlockSize;
     in.y_begin = std::max(y0, block_y) - block_y;
     in.y_end = std::min(y1, block_y + kBlockSize - 1) - block_y + 1;
-    for (int bx = (x0 - tile.x0) / kBlockSize; bx <= (x1 - tile.x0) / kBlockSize; ++bx) {
+    for (int bx = bx0; bx <= bx1; ++bx) {
       const int block_x = tile.x0 + bx * kBlockSize;
       if (tile.block_starts != nullptr && tile.entry < tile.block_starts[by * tile.blocks_x + bx])
         continue;  // a later triangle hides this one here

@@ -287,9 +287,9 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
       pipeline::first_visible_entry(frame, bin, bin_end - bin, tile.x0, tile.y0, tile.x1, tile.y1);
   const std::uint32_t* const first_drawn = bin;
   std::uint32_t block_starts[pipeline::kMaxTileBlocks];
-  if (bin_end - bin <= static_cast<std::ptrdiff_t>(pipeline::kMaxBlockOcclusionEntries)) {
-    pipeline::first_visible_entries_per_block(frame, bin, bin_end - bin, tile.x0, tile.y0, tile.x1,
-                                              tile.y1, tile.blocks_x, block_starts);
+  if (bin_end - bin <= static_cast<std::ptrdiff_t>(pipeline::kMaxBlockOcclusionEntries) &&
+      pipeline::first_visible_entries_per_block(frame, bin, bin_end - bin, tile.x0, tile.y0,
+                                                tile.x1, tile.y1, tile.blocks_x, block_starts)) {
     tile.block_starts = block_starts;
   }
   // The environment is drawn late, into what no opaque triangle covered (fill_background):

@@ -54,9 +54,35 @@ std::size_t first_visible_entry(const Frame& frame, const std::uint32_t* bin, st
   return first;
 }
 
-void first_visible_entries_per_block(const Frame& frame, const std::uint32_t* bin,
+namespace {
+
+// Whether some entry of an occluding draw can be nearer somewhere in the tile than an earlier
+// one: what hiding it in any block needs (its farthest depth in the block is at least its
+// nearest in the tile, the earlier one's nearest in the block at most its farthest in the
+// tile). Layers drawn nearest first never are: their blocks skip the look.
+bool any_entry_nearer_than_one_before(const Frame& frame, const std::uint32_t* bin,
+                                      std::size_t count, int x0, int y0, int x1, int y1) {
+  float farthest_before = -std::numeric_limits<float>::infinity();
+  for (std::size_t i = 0; i < count; ++i) {
+    if (bin[i] & kLineBit) return false;  // as below: nothing after it is looked at
+    const SetupTriangle& t = frame.triangles[bin[i]];
+    const DrawPipeline& pipeline = frame.draws[t.draw].pipeline;
+    if (!pipeline.depth_tested) return false;
+    const DepthRange range = depth_range_over(t, std::max(t.min_x, x0), std::max(t.min_y, y0),
+                                              std::min(t.max_x, x1 - 1), std::min(t.max_y, y1 - 1));
+    if (!(range.nearest == range.nearest)) return false;  // NaN: no bound
+    if (pipeline.occludes && range.nearest < farthest_before) return true;
+    farthest_before = std::max(farthest_before, range.farthest);
+  }
+  return false;
+}
+
+}  // namespace
+
+bool first_visible_entries_per_block(const Frame& frame, const std::uint32_t* bin,
                                      std::size_t count, int x0, int y0, int x1, int y1,
                                      int blocks_x, std::uint32_t* starts) {
+  if (!any_entry_nearer_than_one_before(frame, bin, count, x0, y0, x1, y1)) return false;
   const int blocks_y = (y1 - y0 + kBlockSize - 1) / kBlockSize;
   // Per block, the nearest depth any entry so far can write there.
   float nearest_so_far[kMaxTileBlocks];
@@ -65,10 +91,10 @@ void first_visible_entries_per_block(const Frame& frame, const std::uint32_t* bi
     nearest_so_far[b] = std::numeric_limits<float>::infinity();
   }
   for (std::size_t i = 0; i < count; ++i) {
-    if (bin[i] & kLineBit) return;  // lines are not hidden (nor do they hide)
+    if (bin[i] & kLineBit) return true;  // lines are not hidden (nor do they hide)
     const SetupTriangle& t = frame.triangles[bin[i]];
     const DrawPipeline& pipeline = frame.draws[t.draw].pipeline;
-    if (!pipeline.depth_tested) return;  // it would show through whatever is drawn later
+    if (!pipeline.depth_tested) return true;  // it would show through whatever is drawn later
     // The triangle's box in the tile, and the blocks it overlaps.
     const int left = std::max(t.min_x, x0), right = std::min(t.max_x, x1 - 1);
     const int top = std::max(t.min_y, y0), bottom = std::min(t.max_y, y1 - 1);
@@ -83,7 +109,7 @@ void first_visible_entries_per_block(const Frame& frame, const std::uint32_t* bi
         const DepthRange range =
             depth_range_over(t, std::max(left, block_x0), std::max(top, block_y0),
                              std::min(right, block_x1 - 1), std::min(bottom, block_y1 - 1));
-        if (!(range.nearest == range.nearest)) return;  // NaN: no bound
+        if (!(range.nearest == range.nearest)) return true;  // NaN: no bound
         const int b = by * blocks_x + bx;
         if (pipeline.occludes && i > starts[b] && range.farthest < nearest_so_far[b] &&
             triangle_covers(t, block_x0, block_y0, block_x1, block_y1)) {
@@ -93,6 +119,7 @@ void first_visible_entries_per_block(const Frame& frame, const std::uint32_t* bi
       }
     }
   }
+  return true;
 }
 
 }  // namespace facet::pipeline

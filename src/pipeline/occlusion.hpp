@@ -32,8 +32,9 @@ inline constexpr std::size_t kMaxBlockOcclusionEntries = 64;
 // The same per 8x8 block of the tile [x0, x1) x [y0, y1) (blocks_x blocks per row, aligned to
 // the tile's origin): starts[b] = index into bin[0 .. count) of the first entry that can change
 // block b's pixels, by the conditions above over the block instead of the tile. raster.hpp
-// skips block b of every triangle before starts[b].
-void first_visible_entries_per_block(const Frame& frame, const std::uint32_t* bin,
+// skips block b of every triangle before starts[b]. False, with starts unset, when no block can
+// start later than the first entry.
+bool first_visible_entries_per_block(const Frame& frame, const std::uint32_t* bin,
                                      std::size_t count, int x0, int y0, int x1, int y1,
                                      int blocks_x, std::uint32_t* starts);
 

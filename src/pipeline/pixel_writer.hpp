@@ -89,8 +89,8 @@ constexpr bool batch_shaded() {
   return requires { &Shading::fragment_batch; };
 }
 
-// Covered pixels of one triangle that passed the depth test, packed, waiting to be shaded: a
-// block's or a small triangle's worth at most.
+// Covered pixels that passed the depth test, packed, waiting to be shaded: a block's, a small
+// triangle's or several small triangles' of one draw (WaitingPixels) at most.
 struct PackedPixels {
   static constexpr int kCapacity = kBlockPixels;
   int count = 0;

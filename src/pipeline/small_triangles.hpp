@@ -98,6 +98,7 @@ inline void flush_waiting(TileContext& tile) {
   if (tile.waiting != nullptr && tile.waiting->flush != nullptr) tile.waiting->flush(tile);
 }
 
+// WaitingPixels::flush for draws of this shading model and alpha mode.
 template <class Shading, AlphaMode kAlpha>
 void write_waiting(TileContext& tile) {
   WaitingPixels& waiting = *tile.waiting;

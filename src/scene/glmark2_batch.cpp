@@ -21,25 +21,6 @@ using namespace shading::HWY_NAMESPACE;  // batch_math-inl.h
 using shading::DrawUniforms;
 using shading::ShadeInput;
 
-// as_unorm8(): clamped to [0, 1] (NaN -> 0), quantized to 8 bits, decoded through the sRGB
-// table (a gather).
-HWY_INLINE BatchV AsUnorm8(BatchV c) {
-  const BatchTag d;
-  const hn::RebindToSigned<BatchTag> di;
-  const BatchV one = hn::Set(d, 1.0f);
-  const BatchV clamped =
-      hn::IfThenElseZero(hn::Gt(c, hn::Zero(d)), hn::IfThenElse(hn::Lt(one, c), one, c));
-  const auto code =
-      hn::ConvertTo(di, hn::Add(hn::Mul(clamped, hn::Set(d, 255.0f)), hn::Set(d, 0.5f)));
-  return hn::GatherIndex(d, shading::kSrgbTables.decode.data(), code);
-}
-
-HWY_INLINE void Unorm8Output(const Vec3V& rgb, int count, float (*rgba)[4]) {
-  const BatchV color[4] = {AsUnorm8(rgb.x), AsUnorm8(rgb.y), AsUnorm8(rgb.z),
-                           hn::Set(BatchTag(), 1.0f)};
-  StoreColors(color, count, rgba);
-}
-
 // pow100(): x^64 x^32 x^4 by repeated squaring, ((x32 x32) x32) x4.
 HWY_INLINE BatchV Pow100(BatchV x) {
   const BatchV x2 = hn::Mul(x, x), x4 = hn::Mul(x2, x2), x8 = hn::Mul(x4, x4);
@@ -69,15 +50,17 @@ void ShadeGlmark2Batch(BatchShader shader, const DrawUniforms& u, const ShadeInp
   using Shader = BatchShader;
   const BatchTag d;
   const int lanes = static_cast<int>(hn::Lanes(d));
+  // Every shader ends in unorm8_output() (glmark2_shading.hpp), whose as_unorm8() is a display
+  // value: its codes are stored per vector, then decoded once for the batch.
+  alignas(64) std::int32_t codes[3][shading::kShadeBatch];
   for (int j = 0; j < in.count; j += lanes) {
-    const int count = in.count - j;
     switch (shader) {
       case Shader::basic_light_texture: {
         BatchV t[4];
         hn::LoadInterleaved4(d, &in.base_texel[j][0], t[0], t[1], t[2], t[3]);
         const Vec3V light = Load3(in.v, 0, j);
-        Unorm8Output({hn::Mul(t[0], light.x), hn::Mul(t[1], light.y), hn::Mul(t[2], light.z)},
-                     count, rgba + j);
+        StoreDisplayCodes({hn::Mul(t[0], light.x), hn::Mul(t[1], light.y), hn::Mul(t[2], light.z)},
+                          j, codes);
         break;
       }
       case Shader::blinn_phong_inf: {
@@ -87,7 +70,7 @@ void ShadeGlmark2Batch(BatchShader shader, const DrawUniforms& u, const ShadeInp
         const BatchV specular =
             hn::Mul(hn::Set(d, 0.8f), Pow100(StdMax(Dot(n, Set3(kHalfVector)), hn::Zero(d))));
         const BatchV gray = hn::Add(hn::Set(d, 0.1f), specular);
-        Unorm8Output({gray, gray, hn::Add(gray, diffuse)}, count, rgba + j);
+        StoreDisplayCodes({gray, gray, hn::Add(gray, diffuse)}, j, codes);
         break;
       }
       case Shader::phong: {
@@ -102,10 +85,10 @@ void ShadeGlmark2Batch(BatchShader shader, const DrawUniforms& u, const ShadeInp
         const BatchV diffuse = StdMax(hn::Zero(d), Dot(n, light));
         const BatchV lit = hn::Mul(hn::Set(d, 0.8f), diffuse);
         const BatchV base = hn::Add(specular, hn::Set(d, 0.02f));
-        Unorm8Output({hn::Add(base, hn::Mul(lit, hn::Set(d, u.base_color.r))),
-                      hn::Add(base, hn::Mul(lit, hn::Set(d, u.base_color.g))),
-                      hn::Add(base, hn::Mul(lit, hn::Set(d, u.base_color.b)))},
-                     count, rgba + j);
+        StoreDisplayCodes({hn::Add(base, hn::Mul(lit, hn::Set(d, u.base_color.r))),
+                           hn::Add(base, hn::Mul(lit, hn::Set(d, u.base_color.g))),
+                           hn::Add(base, hn::Mul(lit, hn::Set(d, u.base_color.b)))},
+                          j, codes);
         break;
       }
       case Shader::cel: {
@@ -136,12 +119,12 @@ void ShadeGlmark2Batch(BatchShader shader, const DrawUniforms& u, const ShadeInp
           return hn::IfThenElse(highlight, hn::Add(hn::Set(d, 0.7f), hn::Mul(hn::Set(d, 0.3f), c)),
                                 c);
         };
-        Unorm8Output({brighten(hn::Zero(d)), brighten(green), brighten(hn::Zero(d))}, count,
-                     rgba + j);
+        StoreDisplayCodes({brighten(hn::Zero(d)), brighten(green), brighten(hn::Zero(d))}, j,
+                          codes);
         break;
       }
       case Shader::bump_poly:
-        Unorm8Output(BumpLight(Normalize(Load3(in.v, 0, j))), count, rgba + j);
+        StoreDisplayCodes(BumpLight(Normalize(Load3(in.v, 0, j))), j, codes);
         break;
       case Shader::bump_normals: {
         // normalize(normal_matrix * (texel * 2 - 1))
@@ -158,11 +141,12 @@ void ShadeGlmark2Batch(BatchShader shader, const DrawUniforms& u, const ShadeInp
               hn::Add(hn::Mul(hn::Set(d, m[0][r]), raw[0]), hn::Mul(hn::Set(d, m[1][r]), raw[1])),
               hn::Mul(hn::Set(d, m[2][r]), raw[2]));
         }
-        Unorm8Output(BumpLight(Normalize({turned[0], turned[1], turned[2]})), count, rgba + j);
+        StoreDisplayCodes(BumpLight(Normalize({turned[0], turned[1], turned[2]})), j, codes);
         break;
       }
     }
   }
+  DecodeDisplayCodes(codes, in.count, rgba);
 }
 
 }  // namespace facet::bench::glmark2::HWY_NAMESPACE

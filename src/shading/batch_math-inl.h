@@ -15,6 +15,7 @@
 #include <cstring>
 #include <limits>
 
+#include "shading/color.hpp"
 #include "shading/portable_math.hpp"
 #include "shading/shade_batch.hpp"
 
@@ -139,6 +140,32 @@ HWY_INLINE BatchV PortableExp(BatchV x) {
 // portable_pow(x, s) for one s (s == 0 is the caller's: x^0 = 1).
 HWY_INLINE BatchV PortablePow(BatchV x, float s) {
   return PortableExp2(hn::Mul(hn::Set(BatchTag(), s), PortableLog2(x)));
+}
+
+// Display values (models.hpp's display_channel, glmark2's as_unorm8): a value clamped to
+// [0, 1] (NaN to 0), times 255, plus a half, truncated to its 8-bit code, which
+// DecodeDisplayCodes turns back into the linear value that resolve encodes to that code.
+using DisplayCodes = std::int32_t (*)[kShadeBatch];
+HWY_INLINE void StoreDisplayCodes(const Vec3V& rgb, int j, DisplayCodes codes) {
+  const BatchTag d;
+  const hn::RebindToSigned<BatchTag> di;
+  const BatchV channel[3] = {rgb.x, rgb.y, rgb.z};
+  for (int c = 0; c < 3; ++c) {
+    const BatchV clamped =
+        StdMin(hn::IfThenElseZero(hn::Gt(channel[c], hn::Zero(d)), channel[c]), hn::Set(d, 1.0f));
+    hn::Store(hn::ConvertTo(di, hn::Add(hn::Mul(clamped, hn::Set(d, 255.0f)), hn::Set(d, 0.5f))),
+              di, codes[c] + j);
+  }
+}
+
+// rgba[n] = the decoded codes of pixel n, alpha 1, for n < count: the sRGB table read one
+// channel at a time after the SIMD loop (gathers were slower, as in resolve).
+HWY_INLINE void DecodeDisplayCodes(DisplayCodes codes, int count, float (*rgba)[4]) {
+  const auto& decode = srgb_tables().decode;
+  for (int n = 0; n < count; ++n) {
+    for (int c = 0; c < 3; ++c) rgba[n][c] = decode[codes[c][n]];
+    rgba[n][3] = 1.0f;
+  }
 }
 
 // Writes the first `count` lanes' colors as RGBA (the rest may lie past the batch's end).

@@ -17,7 +17,6 @@
 #include <limits>
 
 #include "shading/batch_math-inl.h"
-#include "shading/color.hpp"
 #include "shading/portable_math.hpp"
 #include "shading/surface.hpp"
 
@@ -116,35 +115,20 @@ HWY_INLINE Vec3V SpecularLight(const DrawUniforms& u, bool blinn, const Vec3V& n
   return color;
 }
 
-// display_channel()'s 8-bit code (models.hpp): the value clamped to [0, 1] (NaN to 0), times
-// 255, plus a half, truncated.
-HWY_INLINE hn::Vec<hn::RebindToSigned<FloatTag>> DisplayCode(FloatV v) {
-  const FloatTag d;
-  const FloatV clamped = StdMin(hn::IfThenElseZero(hn::Gt(v, hn::Zero(d)), v), hn::Set(d, 1.0f));
-  return hn::ConvertTo(hn::RebindToSigned<FloatTag>(),
-                       hn::Add(hn::Mul(clamped, hn::Set(d, 255.0f)), hn::Set(d, 0.5f)));
-}
-
-// NormalsShading::fragment(): display_value(safe_normalize(n) * 0.5 + 0.5). SIMD finds each
-// channel's code; the decode table is then read one channel at a time (gathers are slower),
-// and fog, if any, is applied to the decoded colors in SIMD again.
+// NormalsShading::fragment(): display_value(safe_normalize(n) * 0.5 + 0.5), then fog, if any,
+// on the decoded colors in SIMD again.
 void ShadeNormals(const ShadeInput& in, float (*rgba)[4]) {
   const FloatTag d;
-  const hn::RebindToSigned<FloatTag> di;
   const int lanes = static_cast<int>(hn::Lanes(d));
   const FloatV half = hn::Set(d, 0.5f);
   alignas(64) std::int32_t codes[3][kShadeBatch];
   for (int j = 0; j < in.count; j += lanes) {
     const Vec3V n = SafeNormalize(Load3(in.v, 0, j));
-    hn::Store(DisplayCode(hn::Add(hn::Mul(n.x, half), half)), di, codes[0] + j);
-    hn::Store(DisplayCode(hn::Add(hn::Mul(n.y, half), half)), di, codes[1] + j);
-    hn::Store(DisplayCode(hn::Add(hn::Mul(n.z, half), half)), di, codes[2] + j);
+    StoreDisplayCodes({hn::Add(hn::Mul(n.x, half), half), hn::Add(hn::Mul(n.y, half), half),
+                       hn::Add(hn::Mul(n.z, half), half)},
+                      j, codes);
   }
-  const SrgbTables& tables = srgb_tables();
-  for (int n = 0; n < in.count; ++n) {
-    for (int c = 0; c < 3; ++c) rgba[n][c] = tables.decode[codes[c][n]];
-    rgba[n][3] = 1.0f;
-  }
+  DecodeDisplayCodes(codes, in.count, rgba);
   if (in.fog == nullptr || in.fog->mode == FogMode::none) return;
   for (int j = 0; j < in.count; j += lanes) {
     alignas(64) float padded[8][4] = {};  // rgba may end before the vector does

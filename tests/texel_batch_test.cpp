@@ -106,7 +106,9 @@ TEST(TexelBatch, GivesSampleMapsBitsOnEveryTarget) {
               c.batch.v = c.v;
               c.batch.w = c.w;
               if (rng() % 2 == 0) c.batch.slopes = c.slopes;  // pixels of several triangles
-              shading::sample_batch(map, c.planes, c.inv_w, c.batch);
+              c.batch.planes = c.planes;
+              c.batch.inv_w = &c.inv_w;
+              shading::sample_batch(map, c.batch);
               for (int j = 0; j < c.batch.count; ++j) {
                 const glm::vec4 expected = scalar_sample(map, c, j);
                 const float* texel = c.batch.rgba[j];

@@ -342,9 +342,11 @@ class PixelWriter {
         texels_.v = v[kTexcoordSlot + 1];
         texels_.w = w;
         texels_.slopes = slopes;
-        static const Plane kNoPlanes[2] = {};
-        shading::sample_batch(*base_map_, slopes ? kNoPlanes : fragment.planes + kTexcoordSlot,
-                              slopes ? kNoPlanes[0] : t_->inv_w, texels_);
+        if (slopes == nullptr) {
+          texels_.planes = fragment.planes + kTexcoordSlot;
+          texels_.inv_w = &t_->inv_w;
+        }
+        shading::sample_batch(*base_map_, texels_);
         return texels_.rgba;
       }
     }

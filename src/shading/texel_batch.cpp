@@ -183,12 +183,10 @@ HWY_INLINE FloatV Derivative(FloatV plane_slope, FloatV inv_w_slope, FloatV valu
 struct Slopes {
   FloatV s[TexelBatch::kSlopes];
 };
-HWY_INLINE Slopes TriangleSlopes(const pipeline::Plane* planes, const pipeline::Plane& inv_w) {
+HWY_INLINE Slopes TriangleSlopes(const TexelBatch& batch) {
   const FloatTag df;
-  const float one[TexelBatch::kSlopes] = {planes[0].dx, planes[1].dx, planes[0].dy,
-                                          planes[1].dy, inv_w.dx,     inv_w.dy};
   Slopes out;
-  for (int k = 0; k < TexelBatch::kSlopes; ++k) out.s[k] = hn::Set(df, one[k]);
+  for (int k = 0; k < TexelBatch::kSlopes; ++k) out.s[k] = hn::Set(df, batch.slope(k, 0));
   return out;
 }
 HWY_INLINE Slopes PixelSlopes(const TexelBatch& batch, int j) {
@@ -226,8 +224,7 @@ HWY_INLINE FloatV LevelOfDetail(const Texture& texture, const glm::mat3& m, cons
   return hn::Mul(hn::Set(df, 0.5f), PortableLog2(rho2));
 }
 
-void SampleBatch(const TextureMap& map, const pipeline::Plane* planes, const pipeline::Plane& inv_w,
-                 TexelBatch& batch) {
+void SampleBatch(const TextureMap& map, TexelBatch& batch) {
   const FloatTag df;
   const IntTag di;
   const int lanes = static_cast<int>(hn::Lanes(df));
@@ -240,7 +237,7 @@ void SampleBatch(const TextureMap& map, const pipeline::Plane* planes, const pip
   const FloatV top = hn::Set(df, static_cast<float>(texture.level_count() - 1));
   // The level of detail's plane slopes when every pixel is of one triangle.
   const Slopes triangle =
-      filter == Filter::trilinear && !batch.slopes ? TriangleSlopes(planes, inv_w) : Slopes{};
+      filter == Filter::trilinear && !batch.slopes ? TriangleSlopes(batch) : Slopes{};
   for (int j = 0; j < batch.count; j += lanes) {
     const FloatV u = hn::LoadU(df, batch.u + j), v = hn::LoadU(df, batch.v + j);
     // transform_texcoord()
@@ -314,23 +311,16 @@ bool simd_samples(const TextureMap& map) {
 
 }  // namespace
 
-void sample_batch(const TextureMap& map, const pipeline::Plane* planes,
-                  const pipeline::Plane& inv_w, TexelBatch& batch) {
+void sample_batch(const TextureMap& map, TexelBatch& batch) {
   if (simd_samples(map)) {
-    HWY_DYNAMIC_DISPATCH(SampleBatch)(map, planes, inv_w, batch);
+    HWY_DYNAMIC_DISPATCH(SampleBatch)(map, batch);
     return;
   }
   for (int j = 0; j < batch.count; ++j) {  // Fragment::ddx/ddy, then sample_map_at()
     const float u = batch.u[j], v = batch.v[j], w = batch.w[j];
     using S = TexelBatch;
     float s[S::kSlopes];
-    if (batch.slopes != nullptr) {
-      for (int k = 0; k < S::kSlopes; ++k) s[k] = batch.slopes[k][j];
-    } else {
-      const float one[S::kSlopes] = {planes[0].dx, planes[1].dx, planes[0].dy,
-                                     planes[1].dy, inv_w.dx,     inv_w.dy};
-      std::copy_n(one, S::kSlopes, s);
-    }
+    for (int k = 0; k < S::kSlopes; ++k) s[k] = batch.slope(k, j);
     const glm::vec2 dx{(s[S::u_dx] - u * s[S::inv_w_dx]) * w,
                        (s[S::v_dx] - v * s[S::inv_w_dx]) * w};
     const glm::vec2 dy{(s[S::u_dy] - u * s[S::inv_w_dy]) * w,

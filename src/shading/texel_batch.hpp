@@ -23,19 +23,38 @@ struct TexelBatch {
   const float* u = nullptr;
   const float* v = nullptr;
   const float* w = nullptr;
-  // Pixels of several triangles: each pixel's triangle's plane slopes, kSlopes arrays of
-  // kTexelBatch entries (readable as u is), in the order of the Slope names; they replace
-  // sample_batch's planes and inv_w. Null: every pixel is of the triangle those describe.
+  // Where the exact derivatives for the level of detail come from (as Fragment::ddx/ddy):
+  // pixels of one triangle use its u/w and v/w planes (two in a row) and its 1/w plane;
+  // pixels of several triangles (slopes set) each their triangle's plane slopes, kSlopes arrays
+  // of kTexelBatch entries (readable as u is) in the order of the Slope names.
+  const pipeline::Plane* planes = nullptr;
+  const pipeline::Plane* inv_w = nullptr;
   enum Slope { u_dx, v_dx, u_dy, v_dy, inv_w_dx, inv_w_dy, kSlopes };
   const float (*slopes)[kTexelBatch] = nullptr;
+
+  // Slope k of pixel j's triangle.
+  float slope(int k, int j) const {
+    if (slopes != nullptr) return slopes[k][j];
+    switch (k) {
+      case u_dx:
+        return planes[0].dx;
+      case v_dx:
+        return planes[1].dx;
+      case u_dy:
+        return planes[0].dy;
+      case v_dy:
+        return planes[1].dy;
+      case inv_w_dx:
+        return inv_w->dx;
+      default:
+        return inv_w->dy;
+    }
+  }
   // Out: linear RGBA of each pixel's texel.
   alignas(64) float rgba[kTexelBatch][4];
 };
 
-// Samples map at every pixel of the batch. planes: the triangle's u/w and v/w planes (two in a
-// row), inv_w its 1/w plane; they give the exact derivatives, as Fragment::ddx/ddy do (both
-// unused when batch.slopes is set).
-void sample_batch(const TextureMap& map, const pipeline::Plane* planes,
-                  const pipeline::Plane& inv_w, TexelBatch& batch);
+// Samples map at every pixel of the batch.
+void sample_batch(const TextureMap& map, TexelBatch& batch);
 
 }  // namespace facet::shading

@@ -243,14 +243,10 @@ class PixelWriter {
       alignas(64) float colors[PackedPixels::kCapacity][4];
       Shading::fragment_batch(uniforms_, {pixels.count, pixels.w, pixels.v, texels, &fog_}, colors);
       for (int n = 0; n < pixels.count; ++n) {
-        const std::ptrdiff_t pixel =
-            static_cast<std::ptrdiff_t>(pixels.y[n] - tile_.y0) * tile_.stride +
-            (pixels.x[n] - tile_.x0);
-        if (!(pixels.z[n] < tile_.depth[pixel])) continue;  // a pixel before it is nearer
+        const int x = pixels.x[n], y = pixels.y[n];
+        if (!(pixels.z[n] < tile_.depth[index(x, y)])) continue;  // a pixel before it is nearer
         const float* c = colors[n];
-        blend_into<Shading, kAlpha>(tile_.color[pixel], glm::vec4(c[0], c[1], c[2], c[3]));
-        tile_.depth[pixel] = pixels.z[n];
-        ++shaded;
+        store<true>(x, y, pixels.z[n], pixels.w[n], glm::vec4(c[0], c[1], c[2], c[3]));
       }
     }
   }
@@ -264,8 +260,7 @@ class PixelWriter {
       const Texels texels = sample_base_map(kBlockPixels, block.v, block.w);
       alignas(64) float colors[kBlockPixels][4];
       Shading::fragment_batch(uniforms_, {kBlockPixels, block.w, block.v, texels, &fog_}, colors);
-      const std::ptrdiff_t first =
-          static_cast<std::ptrdiff_t>(block_y - tile_.y0) * tile_.stride + (block_x - tile_.x0);
+      const std::ptrdiff_t first = index(block_x, block_y);
       for (int row = 0; row < kBlockSize; ++row) {
         const std::ptrdiff_t pixel = first + static_cast<std::ptrdiff_t>(row) * tile_.stride;
         std::memcpy(&tile_.color[pixel], colors[row * kBlockSize], sizeof(float) * 4 * kBlockSize);
@@ -299,8 +294,7 @@ class PixelWriter {
       }
     }
     if constexpr (!kFogged) shading::apply_fog(color, w, fog_);
-    const std::ptrdiff_t pixel =
-        static_cast<std::ptrdiff_t>(y - tile_.y0) * tile_.stride + (x - tile_.x0);
+    const std::ptrdiff_t pixel = index(x, y);
     blend_into<Shading, kAlpha>(tile_.color[pixel], color);
     if constexpr (kDepthWrite) tile_.depth[pixel] = z;
     ++shaded;
@@ -312,6 +306,11 @@ class PixelWriter {
 
  private:
   static constexpr int kTexcoordSlot = base_color_texcoord<Shading>();  // -1: none
+
+  // Where frame pixel (x, y) is in the tile's buffers.
+  std::ptrdiff_t index(int x, int y) const {
+    return static_cast<std::ptrdiff_t>(y - tile_.y0) * tile_.stride + (x - tile_.x0);
+  }
 
   using EdgeScalesOrNone = std::conditional_t<edge_overlay<Shading>(), EdgeScales, std::monostate>;
   PixelWriter(TileContext& tile, std::uint32_t draw, const SetupTriangle* t,

@@ -137,17 +137,11 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
       in.depth = tile.depth + block_offset;
       cover_block(in, block);
       if (block.mask == 0) continue;
+      int written = 0;
       if (block.mask == ~std::uint64_t{0} && out.full_blocks()) {
         out.shade_full_block(block, block_x, block_y);
-        if constexpr (kTightensBound) {
-          float largest = 0.0f;
-          for (int i = 0; i < kBlockPixels; ++i) largest = std::max(largest, block.z[i]);
-          max_depth = std::min(max_depth, largest);
-        }
-        continue;
-      }
-      int written = 0;
-      if (out.batches()) {
+        written = kBlockPixels;
+      } else if (out.batches()) {
         pixels.count = 0;
         for (std::uint64_t m = block.mask; m != 0; m &= m - 1) {
           const int i = std::countr_zero(m);

@@ -50,8 +50,8 @@ void ShadeGlmark2Batch(BatchShader shader, const DrawUniforms& u, const ShadeInp
   using Shader = BatchShader;
   const BatchTag d;
   const int lanes = static_cast<int>(hn::Lanes(d));
-  // Every shader ends in unorm8_output() (glmark2_shading.hpp), whose as_unorm8() is a display
-  // value: its codes are stored per vector, then decoded once for the batch.
+  // Every shader ends in unorm8_output() (glmark2_shading.hpp), a display value: its codes are
+  // stored per vector, then decoded once for the batch.
   alignas(64) std::int32_t codes[3][shading::kShadeBatch];
   for (int j = 0; j < in.count; j += lanes) {
     switch (shader) {

@@ -9,12 +9,11 @@
 #pragma once
 
 #include <algorithm>
-#include <cstdint>
 #include <glm/glm.hpp>
 
 #include "scene/glmark2_batch.hpp"
-#include "shading/color.hpp"
 #include "shading/fragment.hpp"
+#include "shading/models.hpp"
 #include "shading/surface.hpp"
 #include "shading/uniforms.hpp"
 
@@ -31,15 +30,9 @@ inline const glm::vec3 kHalfVector{0.40824829f, 0.40824829f, 0.81649658f};
 
 // glmark2 writes its colour to an RGBA8 UNORM buffer: clamp, then round to the nearest of 256
 // codes. facet's 8-bit target is sRGB-encoded at resolve, so the fragment returns the linear
-// value whose sRGB code is exactly that UNORM code: the stored bytes are then glmark2's.
-// (The encode inverts decode_srgb8 exactly: each decoded code lies inside its own interval.)
-inline float as_unorm8(float c) {
-  const float clamped = c > 0.0f ? std::min(c, 1.0f) : 0.0f;  // NaN -> 0
-  return shading::decode_srgb8(static_cast<std::uint8_t>(clamped * 255.0f + 0.5f));
-}
-inline glm::vec4 unorm8_output(glm::vec3 rgb) {
-  return {as_unorm8(rgb.r), as_unorm8(rgb.g), as_unorm8(rgb.b), 1.0f};
-}
+// value whose sRGB code is exactly that UNORM code: the stored bytes are then glmark2's. That
+// is what facet's debug views return too (models.hpp's display_value).
+inline glm::vec4 unorm8_output(glm::vec3 rgb) { return shading::display_value(rgb); }
 
 // pow(x, 100) and pow(x, 10) for x in [0, 1] by repeated squaring: x^100 = x^64 x^32 x^4.
 inline float pow100(float x) {

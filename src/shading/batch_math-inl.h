@@ -142,7 +142,7 @@ HWY_INLINE BatchV PortablePow(BatchV x, float s) {
   return PortableExp2(hn::Mul(hn::Set(BatchTag(), s), PortableLog2(x)));
 }
 
-// Display values (models.hpp's display_channel, glmark2's as_unorm8): a value clamped to
+// Display values (models.hpp's display_channel; glmark2's output too): a value clamped to
 // [0, 1] (NaN to 0), times 255, plus a half, truncated to its 8-bit code, which
 // DecodeDisplayCodes turns back into the linear value that resolve encodes to that code.
 using DisplayCodes = std::int32_t (*)[kShadeBatch];

@@ -1,10 +1,10 @@
 // The built-in unlit, Lambert, Phong and Blinn-Phong models and the normals view evaluated for
 // a batch of pixels at once, with SIMD (shade_batch.cpp, compiled for every target Highway
-// supports): the raster loop (pipeline/raster.hpp) packs the covered pixels of a triangle, then
-// shades them together instead of calling the model's fragment() per pixel. Same operations as
-// their fragment() (models.hpp, lit_models.hpp) lane by lane, so the same bits; draws the batch
-// code does not cover (point or spot lights, emissive, normal or specular maps, reflections) keep
-// fragment().
+// supports): the raster loop (pipeline/raster.hpp) packs the covered pixels of a triangle (or of
+// several small ones), then shades them together instead of calling the model's fragment() per
+// pixel. Same operations as their fragment() (models.hpp, lit_models.hpp) lane by lane, so the same
+// bits; draws the batch code does not cover (point or spot lights, emissive, normal or specular
+// maps, reflections) keep fragment().
 #pragma once
 
 #include "pipeline/frame.hpp"
@@ -16,7 +16,8 @@ inline constexpr int kShadeBatch = 64;
 
 enum class BatchModel { unlit, lambert, phong, blinn_phong, normals };
 
-// Packed pixels of one triangle: n-th pixel's clip w is w[n], its varying k is v[k][n]. Arrays
+// Packed pixels of one draw (of one triangle, or of several small ones: pipeline/
+// small_triangles.hpp): n-th pixel's clip w is w[n], its varying k is v[k][n]. Arrays
 // hold kShadeBatch entries; those from count up to the next multiple of 8 must be readable
 // (they are computed, then ignored).
 struct ShadeInput {

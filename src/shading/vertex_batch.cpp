@@ -75,13 +75,13 @@ void GouraudVertexBatch(const DrawUniforms& u, const VertexBatchInput& in,
     }
   }
   // The texture coordinate and material_color(): copies and one product, per vertex.
+  VertexInput vertex;
   for (int n = 0; n < in.count; ++n) {
     const glm::vec2 texcoord = in.texcoords ? in.texcoords[n] : glm::vec2(0.0f);
     out[kTexcoordSlot][n] = texcoord.x;
     out[kTexcoordSlot + 1][n] = texcoord.y;
-    // Without vertex colors the color is white, and base_color * 1 is base_color bit for bit.
-    const glm::vec4 color =
-        u.use_vertex_colors && in.colors ? u.base_color * in.colors[n] : u.base_color;
+    vertex.color = in.colors ? in.colors[n] : glm::vec4(1.0f);  // white without vertex colors
+    const glm::vec4 color = material_color(vertex, u);
     for (int c = 0; c < 4; ++c) out[kColorSlot + c][n] = color[c];
   }
 }

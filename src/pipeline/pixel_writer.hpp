@@ -46,8 +46,8 @@ struct TileContext {
   const std::uint32_t* block_starts = nullptr;
   std::uint32_t entry = 0;
   std::uint64_t pixels_shaded = 0;
-  // Pixels of small triangles waiting to be shaded together (WaitingPixels), or null: none
-  // ever wait.
+  // Pixels of small triangles waiting to be shaded together (WaitingPixels): the tile task's
+  // own (draw.cpp's render_tile sets it before the first triangle).
   WaitingPixels* waiting = nullptr;
 };
 

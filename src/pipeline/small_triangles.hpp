@@ -95,7 +95,7 @@ inline constexpr int kMaxWaitingBox = PackedPixels::kCapacity - 8;
 
 // Shades and writes whatever waits in the tile (WaitingPixels).
 inline void flush_waiting(TileContext& tile) {
-  if (tile.waiting != nullptr && tile.waiting->flush != nullptr) tile.waiting->flush(tile);
+  if (tile.waiting->flush != nullptr) tile.waiting->flush(tile);
 }
 
 // WaitingPixels::flush for draws of this shading model and alpha mode.

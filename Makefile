@@ -27,6 +27,12 @@ SCENE_IMAGE ?= islands.png
 # ctest -R regex for the tests that run under ThreadSanitizer: the threaded raster tests.
 TSAN_TEST_REGEX ?= ^(Determinism|SimdTargets|Occlusion)\.|^DebugView\.ImagesAreTheSameForAnyThreadCount$$
 
+# The sanitizer and fuzz builds optimize less (-O1) and keep only line tables (-g1): that is
+# enough for a report's stack trace with file and line, and builds about 40 % faster than
+# RelWithDebInfo's -O2 -g, with the same test time (ASan build 233 s instead of ~400 s, suite 70 s
+# both ways, on this project's 2-core machine).
+CHECKED_BUILD_FLAGS := -DCMAKE_BUILD_TYPE=RelWithDebInfo '-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG'
+
 # Any sanitizer report fails the run, with a stack trace.
 ASAN_RUNTIME_OPTIONS := halt_on_error=1:detect_leaks=1:check_initialization_order=1:strict_init_order=1
 UBSAN_RUNTIME_OPTIONS := halt_on_error=1:print_stacktrace=1
@@ -86,7 +92,7 @@ test-asan: export ASAN_OPTIONS := $(ASAN_RUNTIME_OPTIONS)
 test-asan: export UBSAN_OPTIONS := $(UBSAN_RUNTIME_OPTIONS)
 test-asan: deps
 	@if [ ! -f $(ASAN_DIR)/CMakeCache.txt ]; then \
-	  cmake -S . -B $(ASAN_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFACET_SANITIZE=address \
+	  cmake -S . -B $(ASAN_DIR) $(CHECKED_BUILD_FLAGS) -DFACET_SANITIZE=address \
 	    -DFACET_INSTALL_TEST=OFF; \
 	fi
 	cmake --build $(ASAN_DIR) -j$(JOBS)
@@ -96,7 +102,7 @@ test-asan: deps
 test-tsan: export TSAN_OPTIONS := $(TSAN_RUNTIME_OPTIONS)
 test-tsan: deps
 	@if [ ! -f $(TSAN_DIR)/CMakeCache.txt ]; then \
-	  cmake -S . -B $(TSAN_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFACET_SANITIZE=thread \
+	  cmake -S . -B $(TSAN_DIR) $(CHECKED_BUILD_FLAGS) -DFACET_SANITIZE=thread \
 	    -DFACET_INSTALL_TEST=OFF; \
 	fi
 	cmake --build $(TSAN_DIR) -j$(JOBS) --target facet_tests
@@ -107,7 +113,7 @@ test-tsan: deps
 # with the fuzzer's whole report.
 test-fuzz: deps
 	@if [ ! -f $(FUZZ_DIR)/CMakeCache.txt ]; then \
-	  CXX=clang++ cmake -S . -B $(FUZZ_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFACET_FUZZ=ON \
+	  CXX=clang++ cmake -S . -B $(FUZZ_DIR) $(CHECKED_BUILD_FLAGS) -DFACET_FUZZ=ON \
 	    -DFACET_BUILD_TESTS=OFF -DFACET_INSTALL_TEST=OFF; \
 	fi
 	cmake --build $(FUZZ_DIR) -j$(JOBS) --target facet_fuzz

@@ -89,6 +89,7 @@ TEST(TexelBatch, GivesSampleMapsBitsOnEveryTarget) {
   std::mt19937 rng(20261122);
   const std::shared_ptr<const Texture> textures[] = {
       random_texture(rng, 64, 32), random_texture(rng, 24, 40), random_texture(rng, 1, 1),
+      random_texture(rng, 1024, 2),  // 11 levels: more than one vector of the level table
       Texture::from_rgba32f(8, 8, std::vector<float>(8 * 8 * 4, 0.25f))};
   const glm::mat3 transforms[] = {
       glm::mat3(1.0f), glm::mat3(2.0f, 0.5f, 0.0f, -0.25f, 3.0f, 0.0f, 0.1f, 0.7f, 1.0f)};

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <utility>
 
 #include "facet/error.hpp"
 #include "support/render_helpers.hpp"
@@ -100,6 +101,24 @@ TEST(Degenerate, BadSizesAndIndicesAreReportedNotCrashed) {
   bad.threads = 0;
   bad.tile_size = 48;
   EXPECT_THROW(Renderer{bad}, Error);
+}
+
+TEST(Degenerate, PixelReadsOutsideTheImageOrWithoutDepthThrow) {
+  const Framebuffer with_depth(4, 3);
+  EXPECT_EQ(with_depth.depth_at(3, 2), 1.0f);
+  EXPECT_NO_THROW(with_depth.pixel(3, 2));
+  for (auto [x, y] : {std::pair{-1, 0}, {4, 0}, {0, -1}, {0, 3}}) {
+    EXPECT_THROW(with_depth.pixel(x, y), Error) << x << ", " << y;
+    EXPECT_THROW(with_depth.depth_at(x, y), Error) << x << ", " << y;
+  }
+  const Framebuffer color_only(4, 3, ColorFormat::rgba32f, DepthImage::none);
+  EXPECT_NO_THROW(color_only.pixel(0, 0));
+  try {
+    color_only.depth_at(0, 0);
+    FAIL() << "depth_at without a depth image must throw";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("DepthImage::none"), std::string::npos) << e.what();
+  }
 }
 
 TEST(Degenerate, StripsKeepTheirWinding) {

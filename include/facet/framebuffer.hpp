@@ -2,6 +2,7 @@
 // asked not to keep one, a 32-bit float depth image of the same size; from 1x1 up to 8192x8192.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <glm/vec4.hpp>
 #include <vector>
@@ -40,10 +41,12 @@ class Framebuffer {
   const std::vector<float>& depth() const { return depth_; }
   bool has_depth() const { return !depth_.empty(); }
 
-  // Linear color of one pixel, whatever the format (sRGB decoded).
+  // Linear color of one pixel, whatever the format (sRGB decoded). Throws facet::Error if
+  // (x, y) is outside the image.
   glm::vec4 pixel(int x, int y) const;
-  // Only with a depth image (has_depth()).
-  float depth_at(int x, int y) const { return depth_[static_cast<size_t>(y) * width_ + x]; }
+  // Depth of one pixel. Throws facet::Error if (x, y) is outside the image or there is no
+  // depth image (DepthImage::none).
+  float depth_at(int x, int y) const;
 
  private:
   int width_;
@@ -52,6 +55,9 @@ class Framebuffer {
   std::vector<std::uint8_t> rgba8_;
   std::vector<float> rgba32f_;
   std::vector<float> depth_;
+
+  // Index of pixel (x, y); throws facet::Error naming `what` if it is outside the image.
+  std::size_t checked_index(int x, int y, const char* what) const;
 };
 
 }  // namespace facet

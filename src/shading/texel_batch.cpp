@@ -257,8 +257,8 @@ void SampleBatch(const TextureMap& map, TexelBatch& batch) {
   LevelTable levels;
   levels.count = texture.level_count();
   std::copy_n(linear.offsets, levels.count, levels.offset);
-  const Source src{linear.texels,    &levels,            texture.width(),
-                   texture.height(), map.sampler.wrap_u, map.sampler.wrap_v};
+  const Source src{linear.texels,      &levels,           texture.width(), texture.height(),
+                   map.sampler.wrap_u, map.sampler.wrap_v};
   const glm::mat3& m = map.transform;
   const Filter filter = map.sampler.filter;
   const FloatV top = hn::Set(df, static_cast<float>(texture.level_count() - 1));

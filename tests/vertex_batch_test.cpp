@@ -1,4 +1,4 @@
-// The SIMD vertex form of the Gouraud model (shading/vertex_batch.cpp) gives vertex()'s bits on
+// The SIMD vertex form of the Gouraud models (shading/vertex_batch.cpp) gives vertex()'s bits on
 // every SIMD target: lit by zero to three directional lights, from any side, with and without
 // texture coordinates, vertex colors and a highlight, for every run length; and it declines
 // point and spot lights.
@@ -45,7 +45,9 @@ void randomize(std::mt19937& rng, Draw& d) {
   d.material.shininess = rng() % 5 == 0 ? 0.0f : 1.0f + unit(rng) * 127.0f;
 }
 
-TEST(VertexBatch, GouraudGivesVertexsBitsOnEveryTarget) {
+// Compares Model::vertex_batch with Model::vertex() for random draws and vertices.
+template <class Model>
+void expect_vertex_batch_gives_vertexs_bits() {
   std::mt19937 rng(20261122);
   std::uniform_real_distribution<float> any(-3.0f, 3.0f), unit(0.0f, 1.0f);
   int compared = 0;
@@ -76,7 +78,7 @@ TEST(VertexBatch, GouraudGivesVertexsBitsOnEveryTarget) {
       in.texcoords = with_texcoords ? texcoords.data() : nullptr;
       in.colors = with_colors ? colors.data() : nullptr;
       alignas(64) float out[pipeline::kMaxVaryings][kVertexBatch];
-      GouraudShading::vertex_batch(draw.uniforms, in, out);
+      Model::vertex_batch(draw.uniforms, in, out);
       for (int n = 0; n < count; ++n) {
         shading::VertexInput vertex;
         vertex.position = positions[n];
@@ -84,9 +86,9 @@ TEST(VertexBatch, GouraudGivesVertexsBitsOnEveryTarget) {
         vertex.color = with_colors ? colors[n] : glm::vec4(1.0f);
         vertex.texcoord = with_texcoords ? texcoords[n] : glm::vec2(0.0f);
         vertex.tangent = glm::vec4(0.0f);
-        float expected[GouraudShading::kVaryings];
-        GouraudShading::vertex(vertex, draw.uniforms, expected);
-        for (int k = 0; k < GouraudShading::kVaryings; ++k) {
+        float expected[Model::kVaryings];
+        Model::vertex(vertex, draw.uniforms, expected);
+        for (int k = 0; k < Model::kVaryings; ++k) {
           ASSERT_EQ(std::memcmp(&expected[k], &out[k][n], sizeof(float)), 0)
               << hwy::TargetName(target) << ", round " << round << ", vertex " << n << ", varying "
               << k << ": " << out[k][n] << ", vertex() gives " << expected[k];
@@ -96,6 +98,14 @@ TEST(VertexBatch, GouraudGivesVertexsBitsOnEveryTarget) {
     }
   }
   EXPECT_GT(compared, 1000);
+}
+
+TEST(VertexBatch, GouraudGivesVertexsBitsOnEveryTarget) {
+  expect_vertex_batch_gives_vertexs_bits<GouraudShading>();
+}
+
+TEST(VertexBatch, ConstantColorGouraudGivesVertexsBitsOnEveryTarget) {
+  expect_vertex_batch_gives_vertexs_bits<shading::ConstantColorGouraudShading>();
 }
 
 TEST(VertexBatch, GouraudDeclinesPointAndSpotLights) {

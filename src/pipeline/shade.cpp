@@ -62,4 +62,13 @@ DrawPipeline pipeline_for(ShadingModel model, AlphaMode alpha) {
   return make_pipeline<LambertShading>();
 }
 
+DrawPipeline pipeline_for(const Material& material, const Mesh& mesh) {
+  const bool constant_color = !material.base_color_map && !material.emissive_map &&
+                              !(material.use_vertex_colors && !mesh.colors.empty());
+  if (material.shading == ShadingModel::gouraud && constant_color) {
+    return with_alpha<shading::ConstantColorGouraudShading>(material.alpha_mode);
+  }
+  return pipeline_for(material.shading, material.alpha_mode);
+}
+
 }  // namespace facet::pipeline

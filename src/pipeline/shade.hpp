@@ -4,6 +4,7 @@
 #pragma once
 
 #include "facet/material.hpp"
+#include "facet/mesh.hpp"
 #include "pipeline/frame.hpp"
 #include "pipeline/raster.hpp"
 
@@ -11,6 +12,11 @@ namespace facet::pipeline {
 
 // The pipeline for a built-in shading model and alpha mode.
 DrawPipeline pipeline_for(ShadingModel model, AlphaMode alpha = AlphaMode::opaque);
+
+// The pipeline for a draw: its material's shading model and alpha mode, where the mesh and
+// material allow in a cheaper form (Gouraud of one constant surface color interpolates only
+// its light).
+DrawPipeline pipeline_for(const Material& material, const Mesh& mesh);
 
 // The pipeline for any shading model type (see shading/models.hpp for what it provides);
 // also how tests plug in their own models.

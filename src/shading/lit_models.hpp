@@ -55,14 +55,14 @@ using PhongShading = PhongShadingT<false>;
 using BlinnPhongShading = PhongShadingT<true>;
 
 // Gouraud: Blinn-Phong evaluated at the vertices; the pixel interpolates diffuse and
-// specular light and applies the texture. Layout: texture coordinate and color as in the
-// surface layout (so sample_map works), then diffuse light (6-8) and specular light (9-11).
-struct GouraudShading {
-  static constexpr int kVaryings = 12;
-  static constexpr int kDiffuseSlot = 6;
-  static constexpr int kSpecularSlot = 9;
+// specular light. GouraudLight<kDiffuse> is the lighting both layouts share: the diffuse
+// light at slots kDiffuse..kDiffuse+2, the specular light at the next three.
+template <int kDiffuse>
+struct GouraudLight {
+  static constexpr int kDiffuseSlot = kDiffuse;
+  static constexpr int kSpecularSlot = kDiffuse + 3;
   static constexpr int kNormalSlot = -1;  // lit in vertex(); see face_without_normals()
-  static constexpr int kBaseColorTexcoord = kTexcoordSlot;
+  static constexpr GouraudLayout kLayout{kDiffuse, kDiffuse != 0};
   static void light_vertex(glm::vec3 position, glm::vec3 normal, const DrawUniforms& u,
                            float* out) {
     glm::vec3 view = safe_normalize(u.eye - position);
@@ -83,22 +83,46 @@ struct GouraudShading {
   static bool batch_vertices(const DrawUniforms& u) { return gouraud_batches_vertices(u); }
   static void vertex_batch(const DrawUniforms& u, const VertexBatchInput& in,
                            float (*out)[kVertexBatch]) {
-    gouraud_vertex_batch(u, in, out);
+    gouraud_vertex_batch(u, in, kLayout, out);
   }
+  // A mesh without normals is lit per triangle with its face normal at its centre.
+  static void face_without_normals(glm::vec3 normal, glm::vec3 centre, const DrawUniforms& u,
+                                   float* v[3]) {
+    for (int i = 0; i < 3; ++i) light_vertex(centre, normal, u, v[i]);  // writes the light
+  }
+};
+
+// Gouraud with a texture or vertex colors. Layout: texture coordinate and color as in the
+// surface layout (so sample_map works), then diffuse light (6-8) and specular light (9-11).
+struct GouraudShading : GouraudLight<6> {
+  static constexpr int kVaryings = 12;
+  static constexpr int kBaseColorTexcoord = kTexcoordSlot;
+  static_assert(kColorSlot + 4 <= kDiffuseSlot);
   static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
     glm::vec3 position = glm::vec3(u.model * glm::vec4(in.position, 1.0f));
     light_vertex(position, in.normal, u, out);
     store(out + kTexcoordSlot, in.texcoord);
     store(out + kColorSlot, material_color(in, u));
   }
-  // A mesh without normals is lit per triangle with its face normal at its centre.
-  static void face_without_normals(glm::vec3 normal, glm::vec3 centre, const DrawUniforms& u,
-                                   float* v[3]) {
-    for (int i = 0; i < 3; ++i) light_vertex(centre, normal, u, v[i]);  // writes slots 6-11
-  }
   static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
     glm::vec4 albedo = load4(f.v + kColorSlot);
     if (u.material->base_color_map) albedo *= base_color_texel(f, u);
+    glm::vec3 color = glm::vec3(albedo) * load3(f.v + kDiffuseSlot) + load3(f.v + kSpecularSlot);
+    return {color + emission(f, u), albedo.a};
+  }
+};
+
+// Gouraud for a draw whose surface color is one constant: no base color or emissive map, no
+// vertex colors (pipeline_for in pipeline/shade.cpp decides). It interpolates only the light,
+// 6 varyings instead of 12: half the plane set-up and interpolation of scenes of many small
+// triangles (million), and the color is the material's exactly, not an interpolated constant.
+struct ConstantColorGouraudShading : GouraudLight<0> {
+  static constexpr int kVaryings = 6;
+  static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
+    light_vertex(glm::vec3(u.model * glm::vec4(in.position, 1.0f)), in.normal, u, out);
+  }
+  static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
+    const glm::vec4 albedo = u.base_color;
     glm::vec3 color = glm::vec3(albedo) * load3(f.v + kDiffuseSlot) + load3(f.v + kSpecularSlot);
     return {color + emission(f, u), albedo.a};
   }

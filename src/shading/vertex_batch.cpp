@@ -1,6 +1,6 @@
 // Batch vertex lighting of the Gouraud model (see vertex_batch.hpp). Highway compiles this file
 // once per SIMD target (foreach_target.h re-includes it); HWY_DYNAMIC_DISPATCH picks the best
-// the CPU has. Each step repeats GouraudShading::vertex() with the same IEEE operations in the
+// the CPU has. Each step repeats the Gouraud models' vertex() with the same IEEE operations in the
 // same order (glm's mat4 x vec4 is (m0 x + m1 y) + (m2 z + m3 w); no fused multiply-add), so
 // every target gives its bits; vertex_batch_test checks it.
 #undef HWY_TARGET_INCLUDE
@@ -17,10 +17,7 @@ HWY_BEFORE_NAMESPACE();
 namespace facet::shading::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-// GouraudShading's layout (lit_models.hpp): diffuse light, then specular light.
-constexpr int kDiffuseSlot = 6, kSpecularSlot = 9;
-
-void GouraudVertexBatch(const DrawUniforms& u, const VertexBatchInput& in,
+void GouraudVertexBatch(const DrawUniforms& u, const VertexBatchInput& in, GouraudLayout layout,
                         float (*out)[kVertexBatch]) {
   const BatchTag d;
   const int lanes = static_cast<int>(hn::Lanes(d));
@@ -70,10 +67,11 @@ void GouraudVertexBatch(const DrawUniforms& u, const VertexBatchInput& in,
       }
     }
     for (int c = 0; c < 3; ++c) {
-      hn::Store(diffuse[c], d, out[kDiffuseSlot + c] + j);
-      hn::Store(specular[c], d, out[kSpecularSlot + c] + j);
+      hn::Store(diffuse[c], d, out[layout.diffuse + c] + j);
+      hn::Store(specular[c], d, out[layout.diffuse + 3 + c] + j);
     }
   }
+  if (!layout.with_surface) return;
   // The texture coordinate and material_color(): copies and one product, per vertex.
   VertexInput vertex;
   for (int n = 0; n < in.count; ++n) {
@@ -101,9 +99,9 @@ bool gouraud_batches_vertices(const DrawUniforms& u) {
   return true;
 }
 
-void gouraud_vertex_batch(const DrawUniforms& u, const VertexBatchInput& in,
+void gouraud_vertex_batch(const DrawUniforms& u, const VertexBatchInput& in, GouraudLayout layout,
                           float (*out)[kVertexBatch]) {
-  HWY_DYNAMIC_DISPATCH(GouraudVertexBatch)(u, in, out);
+  HWY_DYNAMIC_DISPATCH(GouraudVertexBatch)(u, in, layout, out);
 }
 
 }  // namespace facet::shading

@@ -27,8 +27,16 @@ struct VertexBatchInput {
 // Whether gouraud_vertex_batch can light this draw: every light directional.
 bool gouraud_batches_vertices(const DrawUniforms& u);
 
-// out[k][n]: varying k of vertex n, as GouraudShading::vertex() writes it.
-void gouraud_vertex_batch(const DrawUniforms& u, const VertexBatchInput& in,
+// Where the Gouraud models (lit_models.hpp) keep their varyings: the diffuse light at slots
+// diffuse..diffuse+2, the specular light at diffuse+3..diffuse+5, and, when with_surface, the
+// texture coordinate and material_color() at kTexcoordSlot and kColorSlot (surface.hpp).
+struct GouraudLayout {
+  int diffuse;
+  bool with_surface;
+};
+
+// out[k][n]: varying k of vertex n, as the Gouraud model of that layout's vertex() writes it.
+void gouraud_vertex_batch(const DrawUniforms& u, const VertexBatchInput& in, GouraudLayout layout,
                           float (*out)[kVertexBatch]);
 
 }  // namespace facet::shading

@@ -1,0 +1,89 @@
+// Gouraud draws of one constant surface color interpolate only their light
+// (ConstantColorGouraudShading, 6 varyings): chosen exactly when nothing in the draw varies the
+// color, and drawing what the 12-varying Gouraud model draws, but for the last bit of rounding
+// of the interpolated constant color that it no longer has.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <glm/gtc/matrix_transform.hpp>
+#include <memory>
+
+#include "facet/procedural.hpp"
+#include "pipeline/draw.hpp"
+#include "pipeline/shade.hpp"
+#include "shading/lit_models.hpp"
+#include "support/render_helpers.hpp"
+
+namespace facet::test {
+namespace {
+
+Material gouraud_material() {
+  Material m;
+  m.shading = ShadingModel::gouraud;
+  m.base_color = {0.8f, 0.45f, 0.2f, 1.0f};
+  m.specular_color = glm::vec3(0.6f);
+  m.shininess = 24.0f;
+  m.emissive = {0.05f, 0.0f, 0.02f};
+  return m;
+}
+
+TEST(ConstantColorGouraud, IsChosenOnlyWhenNothingVariesTheColor) {
+  const Mesh plain = uv_sphere(1.0f, 8, 4);
+  Mesh colored = plain;
+  colored.colors.assign(colored.positions.size(), glm::vec4(0.5f));
+  const std::shared_ptr<const Texture> texture =
+      Texture::from_rgba8(1, 1, {255, 255, 255, 255}, true, "white");
+  constexpr int kConstant = shading::ConstantColorGouraudShading::kVaryings;
+  constexpr int kFull = shading::GouraudShading::kVaryings;
+  static_assert(kConstant < kFull);
+
+  Material m = gouraud_material();
+  EXPECT_EQ(pipeline::pipeline_for(m, plain).varyings, kConstant);
+  EXPECT_EQ(pipeline::pipeline_for(m, colored).varyings, kFull);
+  m.use_vertex_colors = false;  // the colors are ignored
+  EXPECT_EQ(pipeline::pipeline_for(m, colored).varyings, kConstant);
+  Material textured = gouraud_material();
+  textured.base_color_map.texture = texture;
+  EXPECT_EQ(pipeline::pipeline_for(textured, plain).varyings, kFull);
+  Material glowing = gouraud_material();
+  glowing.emissive_map.texture = texture;
+  EXPECT_EQ(pipeline::pipeline_for(glowing, plain).varyings, kFull);
+  Material lambert = gouraud_material();
+  lambert.shading = ShadingModel::lambert;
+  EXPECT_EQ(pipeline::pipeline_for(lambert, plain).varyings,
+            pipeline::pipeline_for(ShadingModel::lambert).varyings);
+}
+
+TEST(ConstantColorGouraud, DrawsWhatTheFullGouraudModelDraws) {
+  constexpr int kWidth = 160, kHeight = 120;
+  const Mesh sphere = uv_sphere(1.0f, 40, 20);  // normals: lit per vertex
+  Mesh faceted = sphere;
+  faceted.normals.clear();  // lit per face (face_without_normals)
+  const Material material = gouraud_material();
+  const glm::mat4 left = glm::translate(glm::mat4(1.0f), glm::vec3(-1.2f, 0.0f, -4.0f));
+  const glm::mat4 right = glm::translate(glm::mat4(1.0f), glm::vec3(1.2f, 0.0f, -4.0f));
+  auto render = [&](const pipeline::DrawPipeline& pipe) {
+    Renderer renderer;
+    Framebuffer fb(kWidth, kHeight);
+    renderer.begin_frame(test_camera(kWidth, kHeight));
+    pipeline::draw_with_pipeline(renderer, sphere, material, left, pipe);
+    pipeline::draw_with_pipeline(renderer, faceted, material, right, pipe);
+    renderer.finish(fb);
+    return fb;
+  };
+  const Framebuffer full = render(pipeline::make_pipeline<shading::GouraudShading>());
+  const Framebuffer constant = render(pipeline::pipeline_for(material, sphere));
+  int lit = 0, differing = 0;
+  for (std::size_t i = 0; i < full.rgba8().size(); ++i) {
+    const int difference = std::abs(full.rgba8()[i] - constant.rgba8()[i]);
+    ASSERT_LE(difference, 1) << "byte " << i;
+    differing += difference != 0;
+    lit += i % 4 == 0 && full.rgba8()[i] != 0;
+  }
+  EXPECT_GT(lit, kWidth * kHeight / 5);  // the spheres are there
+  EXPECT_LT(differing, lit / 20);        // and almost every byte is the same
+  EXPECT_EQ(full.depth(), constant.depth());
+}
+
+}  // namespace
+}  // namespace facet::test

@@ -304,15 +304,43 @@ TEST(ViewInput, F3F4ChangeTheFieldOfViewF7TheShadingF8TheThreads) {
   EXPECT_EQ(changed_fraction(all, one), 0.0);
 }
 
-TEST(ViewInput, F1ShowsTheHelpPanelInTheMiddle) {
+// The help is drawn at the window's resolution, not into the frame: at a 320x180 render
+// resolution in a 1280x720 window it is whole (the frame could not hold its rows) and centred,
+// with rows of the picture above and below it; the frame itself (F12) is left as it was.
+TEST(ViewInput, F1ShowsTheWholeHelpPanelInTheMiddleOfTheWindow) {
   SKIP_WITHOUT_TOOLS();
   Session s = run_session("f1", kIslands +
-                                    "xdotool key F1\nsleep 3\nshot\nxdotool key F1\n"
-                                    "sleep 3\nshot\nstop_view\n");
+                                    "xdotool windowsize --sync \"$WID\" 1280 720\n"
+                                    "wait_size 1280 720\nwindow_shot\n"
+                                    "xdotool key F1\nsleep 3\nwindow_shot\nshot\n"
+                                    "xdotool key F1\nsleep 3\nwindow_shot\nstop_view\n");
   ASSERT_EQ(s.result.exit_code, 0) << s.result.stderr_text;
-  Rgba8Image plain = s.image(shot_name(1)), help = s.image(shot_name(2));
-  EXPECT_GT(changed_fraction(plain, help), 0.3);
-  EXPECT_EQ(changed_fraction(plain, s.image(shot_name(3))), 0.0);  // F1 again hides it
+  const Rgba8Image plain = s.image("facet-window-1.png"), help = s.image("facet-window-2.png");
+  ASSERT_EQ(help.width, 1280);
+  ASSERT_EQ(help.height, 720);
+  ASSERT_EQ(plain.pixels.size(), help.pixels.size());
+  // The rows and columns the help changed.
+  int top = help.height, bottom = -1, left = help.width, right = -1;
+  for (int y = 0; y < help.height; ++y) {
+    for (int x = 0; x < help.width; ++x) {
+      const std::size_t i = (static_cast<std::size_t>(y) * help.width + x) * 4;
+      int delta = 0;
+      for (int c = 0; c < 3; ++c)
+        delta = std::max(delta, std::abs(plain.pixels[i + c] - help.pixels[i + c]));
+      if (delta <= 8) continue;
+      top = std::min(top, y), bottom = std::max(bottom, y);
+      left = std::min(left, x), right = std::max(right, x);
+    }
+  }
+  ASSERT_GE(bottom, top) << "F1 changed nothing in the window";
+  EXPECT_GT(bottom - top, 300);  // more rows than a 180-pixel frame has: window pixels
+  EXPECT_GT(top, 20);            // whole: picture rows above and below it
+  EXPECT_LT(bottom, 700);
+  EXPECT_LT(std::abs((top + bottom) / 2 - 360), 8);  // centred
+  EXPECT_LT(std::abs((left + right) / 2 - 640), 8);
+  EXPECT_EQ(changed_fraction(plain, s.image("facet-window-3.png")), 0.0);  // F1 again hides it
+  EXPECT_EQ(changed_fraction(s.image(shot_name(1)), s.image(shot_name(2))),
+            0.0);  // not in the frame
 }
 
 TEST(ViewInput, F6RaisesAndF5LowersTheRenderResolution) {

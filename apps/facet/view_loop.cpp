@@ -163,7 +163,10 @@ void ViewLoop::render(double now, double dt) {
                                                         : "first person (Tab)";
   if (sound_)
     info.sound = !sound_->available() ? "off (no device)" : sound_->muted() ? "muted" : "on (M)";
-  overlay_.draw(frame_, info, settings_.overlay, settings_.help, now, dt);
+  int window_width = 0, window_height = 0;
+  window_.window_size(window_width, window_height);
+  layer_ = overlay_.draw(frame_, info, settings_.overlay, settings_.help, window_width,
+                         window_height, now, dt);
 }
 
 // Saves the frame and says on stdout what it shows: the settings and the camera, so scripts
@@ -188,7 +191,7 @@ void ViewLoop::save_frame() {
 
 void ViewLoop::save_window() {
   std::string name = next_file_name("facet-window");
-  Framebuffer shot = window_.capture(frame_);
+  Framebuffer shot = window_.capture(frame_, layer_);
   write_image(shot, name);
   std::printf("view: saved %s (window %dx%d)\n", name.c_str(), shot.width(), shot.height());
   std::fflush(stdout);
@@ -218,7 +221,7 @@ int ViewLoop::run() {
         frames == 0 ? dt * 1000.0 : smoothed_ms_ + (dt * 1000.0 - smoothed_ms_) * kSmoothing;
     controls_.update(dt);
     render(std::chrono::duration<double>(now - begin_).count(), dt);
-    window_.present(frame_);
+    window_.present(frame_, layer_);
     ++frames;
     if (save_frame_ || save_window_) save_screenshots();
     if (setup_.frames > 0 && frames >= setup_.frames) break;

@@ -1,6 +1,7 @@
 // The viewer's frame loop: reads events (function keys, camera input, overlay input), moves
 // the camera (input or a camera path), animates and sounds the islands world, renders with
-// facet, draws the overlay into the frame, shows it, and saves screenshots.
+// facet, draws the overlay (into the frame, or the help over the window), shows it, and saves
+// screenshots.
 #pragma once
 
 #include <chrono>
@@ -66,6 +67,7 @@ class ViewLoop {
   std::unique_ptr<Renderer> renderer_;
   Framebuffer frame_;
   ViewOverlay overlay_;
+  WindowLayer layer_;  // what the overlay draws at the window's resolution this frame
   std::unique_ptr<IslandsSound> sound_;
   Clock::time_point begin_;
   Camera last_camera_;  // what the last frame was rendered with

@@ -71,6 +71,34 @@ void help_panel(const ImVec2& display) {
   ImGui::End();
 }
 
+// The box in display pixels that the panels' vertices reach, within the display.
+OverlayRect panels_box(const ImDrawData& data, int display_width, int display_height) {
+  float x0 = static_cast<float>(display_width), y0 = static_cast<float>(display_height);
+  float x1 = 0.0f, y1 = 0.0f;
+  for (int l = 0; l < data.CmdListsCount; ++l) {
+    for (const ImDrawVert& v : data.CmdLists[l]->VtxBuffer) {
+      x0 = std::min(x0, v.pos.x), y0 = std::min(y0, v.pos.y);
+      x1 = std::max(x1, v.pos.x), y1 = std::max(y1, v.pos.y);
+    }
+  }
+  return {std::max(0, static_cast<int>(std::floor(x0))),
+          std::max(0, static_cast<int>(std::floor(y0))),
+          std::min(display_width, static_cast<int>(std::ceil(x1))),
+          std::min(display_height, static_cast<int>(std::ceil(y1)))};
+}
+
+// draw_overlay blends "over" in the image: over transparent black that leaves color x alpha,
+// and a window blends straight alpha.
+void to_straight_alpha(std::vector<std::uint8_t>& rgba) {
+  for (std::size_t i = 0; i < rgba.size(); i += 4) {
+    const unsigned alpha = rgba[i + 3];
+    if (alpha == 0 || alpha == 255) continue;
+    for (std::size_t c = i; c < i + 3; ++c) {
+      rgba[c] = static_cast<std::uint8_t>(std::min(255u, (rgba[c] * 255u + alpha / 2) / alpha));
+    }
+  }
+}
+
 }  // namespace
 
 ViewOverlay::ViewOverlay() {
@@ -89,7 +117,7 @@ ViewOverlay::ViewOverlay() {
   font_ = Texture::from_rgba8(width, height, std::move(rgba), false, "imgui-font");
   io.Fonts->SetTexID(static_cast<ImTextureID>(font_.get()));
   ImGui::StyleColorsDark();
-  // Tight rows, so the help panel fits a 640x360 frame.
+  // Tight rows, so the help panel fits a 640x360 window.
   ImGui::GetStyle().ItemSpacing.y = 1.0f;
   ImGui::GetStyle().CellPadding.y = 0.0f;
 }
@@ -124,31 +152,55 @@ void ViewOverlay::show_change(const std::string& message, double now) {
   change_until_ = now + kChangeSeconds;
 }
 
-void ViewOverlay::draw(Framebuffer& frame, const OverlayInfo& info, bool stats, bool help,
-                       double now, double dt) {
-  bool changing = now < change_until_;
-  if (!stats && !help && !changing) return;
+WindowLayer ViewOverlay::draw(Framebuffer& frame, const OverlayInfo& info, bool stats, bool help,
+                              int window_width, int window_height, double now, double dt) {
+  const bool changing = now < change_until_;
+  if (!stats && !help && !changing) return {};
   ImGui::SetCurrentContext(context_);
   ImGuiIO& io = ImGui::GetIO();
-  io.DisplaySize = ImVec2(static_cast<float>(frame.width()), static_cast<float>(frame.height()));
   io.DeltaTime = static_cast<float>(std::max(dt, 1e-4));
+  if (help) return draw_layer(window_width, window_height, changing);
+  io.DisplaySize = ImVec2(static_cast<float>(frame.width()), static_cast<float>(frame.height()));
   ImGui::NewFrame();
-  if (stats && !help) stats_panel(info);  // the help covers it anyway
+  if (stats) stats_panel(info);
   if (changing) change_panel(change_, io.DisplaySize);
-  if (help) help_panel(io.DisplaySize);
   ImGui::Render();
-  render_draw_data(frame);
+  render_draw_data(frame, ImVec2(0.0f, 0.0f));
+  return {};
 }
 
-void ViewOverlay::render_draw_data(Framebuffer& frame) {
+// The help (which covers the statistics anyway) and the change panel over the whole window,
+// drawn into an image of just the panels' box, which the window blends over the frame.
+WindowLayer ViewOverlay::draw_layer(int window_width, int window_height, bool changing) {
+  ImGuiIO& io = ImGui::GetIO();
+  io.DisplaySize = ImVec2(static_cast<float>(window_width), static_cast<float>(window_height));
+  ImGui::NewFrame();
+  if (changing) change_panel(change_, io.DisplaySize);
+  help_panel(io.DisplaySize);
+  ImGui::Render();
+
+  const OverlayRect box = panels_box(*ImGui::GetDrawData(), window_width, window_height);
+  const int left = box.x0, top = box.y0, right = box.x1, bottom = box.y1;
+  if (left >= right || top >= bottom) return {};  // nothing drawn (a panel's first frame)
+
+  if (!layer_ || layer_->width() != right - left || layer_->height() != bottom - top) {
+    layer_.emplace(right - left, bottom - top, ColorFormat::rgba8_srgb, DepthImage::none);
+  }
+  std::vector<std::uint8_t>& rgba = layer_->rgba8();
+  std::fill(rgba.begin(), rgba.end(), std::uint8_t{0});
+  render_draw_data(*layer_, ImVec2(static_cast<float>(left), static_cast<float>(top)));
+  to_straight_alpha(rgba);
+  return {&*layer_, left, top};
+}
+
+void ViewOverlay::render_draw_data(Framebuffer& target, ImVec2 origin) {
   const ImDrawData* data = ImGui::GetDrawData();
+  const float left = data->DisplayPos.x + origin.x, top = data->DisplayPos.y + origin.y;
   for (int l = 0; l < data->CmdListsCount; ++l) {
     const ImDrawList* list = data->CmdLists[l];
     vertices_.clear();
     for (const ImDrawVert& v : list->VtxBuffer) {
-      vertices_.push_back({{v.pos.x - data->DisplayPos.x, v.pos.y - data->DisplayPos.y},
-                           {v.uv.x, v.uv.y},
-                           unpack_color(v.col)});
+      vertices_.push_back({{v.pos.x - left, v.pos.y - top}, {v.uv.x, v.uv.y}, unpack_color(v.col)});
     }
     indices_.assign(list->IdxBuffer.begin(), list->IdxBuffer.end());
     for (const ImDrawCmd& cmd : list->CmdBuffer) {
@@ -158,11 +210,10 @@ void ViewOverlay::render_draw_data(Framebuffer& frame) {
       draw.vertices = std::span<const OverlayVertex>(vertices_).subspan(cmd.VtxOffset);
       draw.indices = std::span<const std::uint32_t>(indices_).subspan(cmd.IdxOffset, cmd.ElemCount);
       draw.texture = static_cast<const Texture*>(cmd.GetTexID());
-      draw.scissor = {static_cast<int>(std::floor(clip.x - data->DisplayPos.x)),
-                      static_cast<int>(std::floor(clip.y - data->DisplayPos.y)),
-                      static_cast<int>(std::ceil(clip.z - data->DisplayPos.x)),
-                      static_cast<int>(std::ceil(clip.w - data->DisplayPos.y))};
-      draw_overlay(frame, draw);
+      draw.scissor = {
+          static_cast<int>(std::floor(clip.x - left)), static_cast<int>(std::floor(clip.y - top)),
+          static_cast<int>(std::ceil(clip.z - left)), static_cast<int>(std::ceil(clip.w - top))};
+      draw_overlay(target, draw);
     }
   }
 }

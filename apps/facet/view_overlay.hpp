@@ -1,10 +1,12 @@
 // The viewer's overlay: Dear ImGui panels (frame statistics, the last setting changed, the F1
-// help) whose draw lists facet itself draws into the frame with draw_overlay (no OpenGL, no
-// ImGui renderer backend). Input reaches ImGui from the SDL events the loop already reads.
+// help) whose draw lists facet itself draws with draw_overlay (no OpenGL, no ImGui renderer
+// backend): into the frame, or, for the help, into a layer the window shows at its own
+// resolution. Input reaches ImGui from the SDL events the loop already reads.
 #pragma once
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,9 +14,11 @@
 #include "facet/framebuffer.hpp"
 #include "facet/overlay.hpp"
 #include "facet/texture.hpp"
+#include "view_window.hpp"
 
 union SDL_Event;
 struct ImGuiContext;
+struct ImVec2;
 
 namespace facet::cli {
 
@@ -41,13 +45,18 @@ class ViewOverlay {
   void handle(const SDL_Event& event);
   // Shows `message` in the change panel for two seconds from `now` (seconds).
   void show_change(const std::string& message, double now);
-  // Builds this frame's panels and draws them over `frame`: the statistics when `stats`, the
-  // help when `help`, the change panel while it lasts.
-  void draw(Framebuffer& frame, const OverlayInfo& info, bool stats, bool help, double now,
-            double dt);
+  // Builds this frame's panels and draws them. Without `help`: the statistics (when `stats`)
+  // and the change panel (while it lasts) over `frame`. With `help`: the help and the change
+  // panel at the window's resolution instead (window_width x window_height), into the returned
+  // layer, so that the help is whole and readable at any render resolution (it does not fit a
+  // 320x180 frame). The layer has no image when nothing is drawn in it.
+  WindowLayer draw(Framebuffer& frame, const OverlayInfo& info, bool stats, bool help,
+                   int window_width, int window_height, double now, double dt);
 
  private:
-  void render_draw_data(Framebuffer& frame);
+  WindowLayer draw_layer(int window_width, int window_height, bool changing);
+  // Draws ImGui's draw data into target, whose top-left corner is at `origin` on ImGui's display.
+  void render_draw_data(Framebuffer& target, ImVec2 origin);
 
   ImGuiContext* context_ = nullptr;
   std::shared_ptr<Texture> font_;
@@ -55,6 +64,7 @@ class ViewOverlay {
   double change_until_ = -1.0;
   std::vector<OverlayVertex> vertices_;  // one draw list's, reused
   std::vector<std::uint32_t> indices_;
+  std::optional<Framebuffer> layer_;  // the window layer's image, remade when its size changes
 };
 
 }  // namespace facet::cli

@@ -59,14 +59,15 @@ ViewWindow::ViewWindow(const std::string& title, int width, int height)
 ViewWindow::~ViewWindow() { close(); }
 
 void ViewWindow::close() {
+  if (layer_texture_) SDL_DestroyTexture(layer_texture_);
   if (texture_) SDL_DestroyTexture(texture_);
   if (renderer_) SDL_DestroyRenderer(renderer_);
   if (window_) SDL_DestroyWindow(window_);
-  texture_ = nullptr, renderer_ = nullptr, window_ = nullptr;
+  layer_texture_ = nullptr, texture_ = nullptr, renderer_ = nullptr, window_ = nullptr;
   SDL_Quit();
 }
 
-void ViewWindow::draw(const Framebuffer& frame) {
+void ViewWindow::draw(const Framebuffer& frame, const WindowLayer& layer) {
   if (frame.width() != width_ || frame.height() != height_ ||
       frame.format() != ColorFormat::rgba8_srgb) {
     throw Error("view: the frame does not match the window's texture");
@@ -75,10 +76,37 @@ void ViewWindow::draw(const Framebuffer& frame) {
   SDL_SetRenderDrawColor(renderer_, 0, 0, 0, 255);
   SDL_RenderClear(renderer_);
   SDL_RenderCopy(renderer_, texture_, nullptr, nullptr);
+  if (layer.image != nullptr) draw_layer(layer);
 }
 
-void ViewWindow::present(const Framebuffer& frame) {
-  draw(frame);
+void ViewWindow::draw_layer(const WindowLayer& layer) {
+  const Framebuffer& image = *layer.image;
+  if (image.format() != ColorFormat::rgba8_srgb) {
+    throw Error("view: the window layer must be an rgba8_srgb framebuffer");
+  }
+  if (image.width() != layer_width_ || image.height() != layer_height_) {
+    if (layer_texture_) SDL_DestroyTexture(layer_texture_);
+    layer_texture_ = SDL_CreateTexture(renderer_, SDL_PIXELFORMAT_RGBA32,
+                                       SDL_TEXTUREACCESS_STREAMING, image.width(), image.height());
+    layer_width_ = layer_texture_ ? image.width() : 0;
+    layer_height_ = layer_texture_ ? image.height() : 0;
+    if (!layer_texture_) {
+      throw Error(std::string("view: cannot create the overlay's texture (") + SDL_GetError() +
+                  ")");
+    }
+    SDL_SetTextureBlendMode(layer_texture_, SDL_BLENDMODE_BLEND);
+  }
+  SDL_UpdateTexture(layer_texture_, nullptr, image.rgba8().data(), image.width() * 4);
+  // In window pixels: lift the logical size (the frame's) for this copy.
+  SDL_RenderSetLogicalSize(renderer_, 0, 0);
+  SDL_RenderSetViewport(renderer_, nullptr);
+  const SDL_Rect where{layer.x, layer.y, image.width(), image.height()};
+  SDL_RenderCopy(renderer_, layer_texture_, nullptr, &where);
+  SDL_RenderSetLogicalSize(renderer_, width_, height_);
+}
+
+void ViewWindow::present(const Framebuffer& frame, const WindowLayer& layer) {
+  draw(frame, layer);
   SDL_RenderPresent(renderer_);
 }
 
@@ -111,8 +139,8 @@ void ViewWindow::window_size(int& width, int& height) const {
   SDL_GetRendererOutputSize(renderer_, &width, &height);
 }
 
-Framebuffer ViewWindow::capture(const Framebuffer& frame) {
-  draw(frame);
+Framebuffer ViewWindow::capture(const Framebuffer& frame, const WindowLayer& layer) {
+  draw(frame, layer);
   int width = 0, height = 0;
   window_size(width, height);
   Framebuffer shot(width, height);

@@ -55,14 +55,15 @@ using PhongShading = PhongShadingT<false>;
 using BlinnPhongShading = PhongShadingT<true>;
 
 // Gouraud: Blinn-Phong evaluated at the vertices; the pixel interpolates diffuse and
-// specular light. GouraudLight<kDiffuse> is the lighting both layouts share: the diffuse
-// light at slots kDiffuse..kDiffuse+2, the specular light at the next three.
-template <int kDiffuse>
+// specular light. GouraudLight is the lighting both layouts share: the diffuse light at slots
+// kDiffuse..kDiffuse+2, the specular light at the next three, after the surface layout's
+// texture coordinate and color if kWithSurface.
+template <int kDiffuse, bool kWithSurface>
 struct GouraudLight {
   static constexpr int kDiffuseSlot = kDiffuse;
   static constexpr int kSpecularSlot = kDiffuse + 3;
   static constexpr int kNormalSlot = -1;  // lit in vertex(); see face_without_normals()
-  static constexpr GouraudLayout kLayout{kDiffuse, kDiffuse != 0};
+  static constexpr GouraudLayout kLayout{kDiffuse, kWithSurface};
   static void light_vertex(glm::vec3 position, glm::vec3 normal, const DrawUniforms& u,
                            float* out) {
     glm::vec3 view = safe_normalize(u.eye - position);
@@ -94,7 +95,7 @@ struct GouraudLight {
 
 // Gouraud with a texture or vertex colors. Layout: texture coordinate and color as in the
 // surface layout (so sample_map works), then diffuse light (6-8) and specular light (9-11).
-struct GouraudShading : GouraudLight<6> {
+struct GouraudShading : GouraudLight<6, true> {
   static constexpr int kVaryings = 12;
   static constexpr int kBaseColorTexcoord = kTexcoordSlot;
   static_assert(kColorSlot + 4 <= kDiffuseSlot);
@@ -116,7 +117,7 @@ struct GouraudShading : GouraudLight<6> {
 // vertex colors (pipeline_for in pipeline/shade.cpp decides). It interpolates only the light,
 // 6 varyings instead of 12: half the plane set-up and interpolation of scenes of many small
 // triangles (million), and the color is the material's exactly, not an interpolated constant.
-struct ConstantColorGouraudShading : GouraudLight<0> {
+struct ConstantColorGouraudShading : GouraudLight<0, false> {
   static constexpr int kVaryings = 6;
   static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
     light_vertex(glm::vec3(u.model * glm::vec4(in.position, 1.0f)), in.normal, u, out);

@@ -1,6 +1,7 @@
 // Writing rendered images: PNG through libpng, PPM (P6) by hand. Both go to a temporary file
 // beside the target that is renamed into place only after a complete, checked write.
 #include <png.h>
+#include <zlib.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -68,9 +69,13 @@ void write_png(std::FILE* file, const Framebuffer& fb, const std::vector<std::ui
   png_set_IHDR(png, info, fb.width(), fb.height(), 8, PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
-  // zlib level 2: a 1080p frame compresses ~3x faster than the default 6 for a few percent
-  // more bytes; thumbnails and frame sequences care more about time.
-  png_set_compression_level(png, 2);
+  // Thumbnails and frame sequences care about time. Each row filtered by its left neighbour
+  // (SUB) instead of libpng trying all five filters per row, and zlib's run-length strategy
+  // (Z_RLE, which needs no match search): 1.6x to 2.8x faster to write than all filters at
+  // level 2, and no bigger (islands 1080p 113 -> 68 ms, bunny 66 -> 28 ms, 0 to 25 % smaller;
+  // BENCHMARKS.md).
+  png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
+  png_set_compression_strategy(png, Z_RLE);
   png_write_info(png, info);
   png_write_image(png, rows.data());
   png_write_end(png, nullptr);

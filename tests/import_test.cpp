@@ -439,6 +439,62 @@ TEST(SmoothNormals, KeepsOtherAttributesAndSplitsUvSeamsOnlyForUv) {
   for (const glm::vec3& n : mesh.normals) EXPECT_EQ(n, glm::vec3(0, 0, 1));
 }
 
+// --- join_identical_vertices -----------------------------------------------------------------
+
+// Corner k of triangle t: every attribute, for comparing meshes triangle by triangle.
+struct Corner {
+  glm::vec3 position, normal;
+  glm::vec2 texcoord;
+  bool operator==(const Corner&) const = default;
+};
+Corner corner_of(const Mesh& mesh, std::size_t t, int k) {
+  const std::size_t i = mesh.indices.empty() ? 3 * t + k : mesh.indices[3 * t + k];
+  return {mesh.positions[i], mesh.normals[i],
+          mesh.texcoords.empty() ? glm::vec2(-1.0f) : mesh.texcoords[i]};
+}
+
+TEST(JoinIdenticalVertices, JoinsOnlyIdenticalCornersAndKeepsEveryTriangle) {
+  Mesh mesh = unit_cube_soup();  // 36 corners, one normal per face
+  for (std::size_t i = 0; i < mesh.positions.size(); i += 6) {
+    const glm::vec3* p = &mesh.positions[i];
+    const glm::vec3 n = glm::normalize(glm::cross(p[1] - p[0], p[2] - p[0]));
+    for (int k = 0; k < 6; ++k) mesh.normals.push_back(n);
+  }
+  mesh.texcoords.assign(36, glm::vec2(0.25f));
+  mesh.texcoords[3] = glm::vec2(0.5f);  // the first face's second triangle: a uv seam corner
+  const Mesh before = mesh;
+  join_identical_vertices(mesh);
+  // Each face's 4 corners, plus the seam corner that differs from its twin only in uv.
+  EXPECT_EQ(mesh.positions.size(), 25u);
+  EXPECT_EQ(mesh.normals.size(), 25u);
+  EXPECT_EQ(mesh.texcoords.size(), 25u);
+  ASSERT_EQ(mesh.indices.size(), 36u);
+  for (std::size_t t = 0; t < 12; ++t) {
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_EQ(corner_of(mesh, t, k), corner_of(before, t, k)) << "triangle " << t;
+    }
+  }
+  // An indexed mesh keeps its triangles too, and joining twice changes nothing more.
+  const Mesh joined = mesh;
+  join_identical_vertices(mesh);
+  EXPECT_EQ(mesh.positions, joined.positions);
+  EXPECT_EQ(mesh.indices, joined.indices);
+}
+
+TEST(ImportContent, ModelsWithNormalsAreIndexedWithTheirCornersKept) {
+  const fs::path path = kModels / "OBJ" / "WusonOBJ.obj";  // v, vt and vn, 3732 faces
+  if (!fs::exists(path)) GTEST_SKIP() << "assimp-testmodels is not installed";
+  Scene scene = import_scene(path.string());
+  std::size_t vertices = 0, corners = 0;
+  for (const auto& mesh : scene.meshes) {
+    ASSERT_FALSE(mesh->indices.empty());
+    ASSERT_EQ(mesh->normals.size(), mesh->positions.size());
+    vertices += mesh->positions.size();
+    corners += mesh->indices.size();
+  }
+  EXPECT_GT(corners, 3 * vertices) << "each vertex is shared by several corners";
+}
+
 TEST(Tangents, FollowUAndHandedness) {
   Mesh mesh;
   mesh.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};

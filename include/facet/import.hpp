@@ -31,6 +31,9 @@ Mesh parse_d(const std::string& text, const std::string& name);  // name used in
 // Smooth vertex normals for a triangle mesh (area-weighted, split at crease_angle_degrees):
 // vertices are duplicated where the split needs it.
 void compute_smooth_normals(Mesh& mesh, float crease_angle_degrees = 80.0f);
+// Makes vertices whose attributes are all identical (bit for bit, -0 and +0 alike) one vertex,
+// the first of them, with indices; the triangles and what they draw stay the same.
+void join_identical_vertices(Mesh& mesh);
 // Tangents (xyz, w = handedness) from positions, normals and texture coordinates.
 void compute_tangents(Mesh& mesh);
 

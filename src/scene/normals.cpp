@@ -44,15 +44,24 @@ std::vector<Triangle> triangles_of(const Mesh& mesh) {
   return out;
 }
 
-// Bit-exact keys: welding must only merge vertices that are truly identical.
+// Bit-exact keys: welding must only merge vertices that are truly identical. Fixed size (a
+// vertex's attributes are at most 3 + 3 + 2 + 4 + 4 floats), so that keys never allocate:
+// a mesh's load made hundreds of thousands of them.
 struct Bits {
-  std::vector<std::uint32_t> words;
-  bool operator==(const Bits&) const = default;
+  static constexpr int kMaxWords = 16;
+  std::array<std::uint32_t, kMaxWords> words;
+  int count = 0;
+  void clear() { count = 0; }
+  void push_back(std::uint32_t w) { words[count++] = w; }
+  bool operator==(const Bits& other) const {
+    return count == other.count &&
+           std::equal(words.begin(), words.begin() + count, other.words.begin());
+  }
 };
 struct BitsHash {
   std::size_t operator()(const Bits& b) const {
     std::uint64_t h = 1469598103934665603ull;  // FNV-1a over the words
-    for (std::uint32_t w : b.words) h = (h ^ w) * 1099511628211ull;
+    for (int i = 0; i < b.count; ++i) h = (h ^ b.words[i]) * 1099511628211ull;
     return static_cast<std::size_t>(h);
   }
 };
@@ -64,30 +73,34 @@ void append_bits(Bits& key, const V& value) {
     if (f == 0.0f) f = 0.0f;  // -0 and +0 weld
     std::uint32_t w;
     std::memcpy(&w, &f, sizeof w);
-    key.words.push_back(w);
+    key.push_back(w);
   }
 }
 
-// Ids such that two vertices share an id exactly when every attribute is identical; and ids
-// for positions alone (the smoothing neighbourhood).
+// Ids such that two vertices share an id exactly when every attribute is identical (the id of
+// the first of them), normals only if `with_normals`; and ids for positions alone (the
+// smoothing neighbourhood).
 struct Welding {
   std::vector<std::uint32_t> vertex_id;
   std::vector<std::uint32_t> position_id;
   std::uint32_t position_count = 0;
 };
 
-Welding weld(const Mesh& mesh) {
+Welding weld(const Mesh& mesh, bool with_normals) {
   Welding w;
   const std::size_t n = mesh.positions.size();
   w.vertex_id.resize(n);
   w.position_id.resize(n);
   std::unordered_map<Bits, std::uint32_t, BitsHash> vertices, positions;
+  vertices.reserve(n);
+  positions.reserve(n);
   Bits key;
   for (std::size_t i = 0; i < n; ++i) {
-    key.words.clear();
+    key.clear();
     append_bits(key, mesh.positions[i]);
     auto [p, p_new] = positions.try_emplace(key, static_cast<std::uint32_t>(positions.size()));
     w.position_id[i] = p->second;
+    if (with_normals && !mesh.normals.empty()) append_bits(key, mesh.normals[i]);
     if (!mesh.texcoords.empty()) append_bits(key, mesh.texcoords[i]);
     if (!mesh.colors.empty()) append_bits(key, mesh.colors[i]);
     if (!mesh.tangents.empty()) append_bits(key, mesh.tangents[i]);
@@ -155,7 +168,9 @@ class CornerNormals {
     const std::uint32_t position = w_.position_id[vertex];
     const auto& here = around_[position];
     if (here.size() <= kBusyPosition) return corner_normal(here, faces_, face, cos_crease_);
-    key_.words.assign({position, faces_[face].degenerate ? 1u : 0u});
+    key_.clear();
+    key_.push_back(position);
+    key_.push_back(faces_[face].degenerate ? 1u : 0u);
     append_bits(key_, faces_[face].unit);
     auto [it, fresh] = busy_.try_emplace(key_);
     if (fresh) it->second = corner_normal(here, faces_, face, cos_crease_);
@@ -182,7 +197,7 @@ void compute_smooth_normals(Mesh& mesh, float crease_angle_degrees) {
   mesh.validate();  // the helpers above trust the indices
   if (mesh.topology == Topology::lines || mesh.positions.empty()) return;
   const std::vector<Triangle> triangles = triangles_of(mesh);
-  const Welding w = weld(mesh);
+  const Welding w = weld(mesh, false);  // the normals are replaced
   std::vector<Face> faces(triangles.size());
   for (std::size_t f = 0; f < triangles.size(); ++f) faces[f] = face_normal(mesh, triangles[f]);
   const auto around = faces_around(triangles, faces, w);
@@ -197,11 +212,13 @@ void compute_smooth_normals(Mesh& mesh, float crease_angle_degrees) {
   out.indices.reserve(triangles.size() * 3);
   Bits key;
   std::unordered_map<Bits, std::uint32_t, BitsHash> output_vertex;
+  output_vertex.reserve(mesh.positions.size());
   for (std::size_t f = 0; f < triangles.size(); ++f) {
     for (std::uint32_t v : triangles[f]) {
       const std::uint32_t source = w.vertex_id[v];
       const glm::vec3 n = corner_normals(v, static_cast<std::uint32_t>(f));
-      key.words.assign(1, source);
+      key.clear();
+      key.push_back(source);
       append_bits(key, n);
       auto [it, added] =
           output_vertex.try_emplace(key, static_cast<std::uint32_t>(out.positions.size()));
@@ -216,6 +233,35 @@ void compute_smooth_normals(Mesh& mesh, float crease_angle_degrees) {
     }
   }
   mesh = std::move(out);
+}
+
+void join_identical_vertices(Mesh& mesh) {
+  mesh.validate();
+  const Welding w = weld(mesh, true);
+  // The first vertex of each set of identical ones is kept, in their order.
+  std::vector<std::uint32_t> new_index(mesh.positions.size());
+  std::uint32_t kept = 0;
+  for (std::size_t i = 0; i < new_index.size(); ++i) {
+    new_index[i] = w.vertex_id[i] == i ? kept++ : new_index[w.vertex_id[i]];
+  }
+  if (kept == mesh.positions.size()) return;  // nothing to join
+  auto compact = [&](auto& attribute) {
+    if (attribute.empty()) return;
+    for (std::size_t i = 0; i < new_index.size(); ++i) {
+      if (w.vertex_id[i] == i) attribute[new_index[i]] = attribute[i];
+    }
+    attribute.resize(kept);
+  };
+  compact(mesh.positions);
+  compact(mesh.normals);
+  compact(mesh.texcoords);
+  compact(mesh.colors);
+  compact(mesh.tangents);
+  if (mesh.indices.empty()) {
+    mesh.indices = std::move(new_index);  // vertex i of the old list is now this one
+  } else {
+    for (std::uint32_t& index : mesh.indices) index = new_index[index];
+  }
 }
 
 void compute_tangents(Mesh& mesh) {

@@ -86,28 +86,57 @@ struct Welding {
   std::uint32_t position_count = 0;
 };
 
+// For each item i < n, the first item whose key (key_of(item, Bits&)) equals its own. An
+// open-addressing table of item indices whose keys are rebuilt to compare them: nothing is
+// stored or allocated per key.
+template <class KeyOf>
+std::vector<std::uint32_t> first_with_equal_key(std::size_t n, const KeyOf& key_of) {
+  constexpr std::uint32_t kEmpty = ~std::uint32_t{0};
+  std::size_t size = 16;
+  while (size < 2 * n) size *= 2;  // at most half full
+  std::vector<std::uint32_t> table(size, kEmpty);
+  std::vector<std::uint32_t> first(n);
+  Bits key, other;
+  for (std::uint32_t i = 0; i < n; ++i) {
+    key_of(i, key);
+    const std::uint64_t h = BitsHash{}(key);
+    for (std::size_t slot = (h ^ (h >> 32)) & (size - 1);; slot = (slot + 1) & (size - 1)) {
+      const std::uint32_t j = table[slot];
+      if (j == kEmpty) {
+        table[slot] = first[i] = i;
+        break;
+      }
+      key_of(j, other);
+      if (other == key) {
+        first[i] = j;
+        break;
+      }
+    }
+  }
+  return first;
+}
+
 Welding weld(const Mesh& mesh, bool with_normals) {
   Welding w;
   const std::size_t n = mesh.positions.size();
-  w.vertex_id.resize(n);
+  const std::vector<std::uint32_t> same_position =
+      first_with_equal_key(n, [&](std::uint32_t i, Bits& key) {
+        key.clear();
+        append_bits(key, mesh.positions[i]);
+      });
   w.position_id.resize(n);
-  std::unordered_map<Bits, std::uint32_t, BitsHash> vertices, positions;
-  vertices.reserve(n);
-  positions.reserve(n);
-  Bits key;
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < n; ++i) {  // numbered in order of first appearance
+    w.position_id[i] = same_position[i] == i ? w.position_count++ : w.position_id[same_position[i]];
+  }
+  // The first vertex with these attributes represents them all.
+  w.vertex_id = first_with_equal_key(n, [&](std::uint32_t i, Bits& key) {
     key.clear();
     append_bits(key, mesh.positions[i]);
-    auto [p, p_new] = positions.try_emplace(key, static_cast<std::uint32_t>(positions.size()));
-    w.position_id[i] = p->second;
     if (with_normals && !mesh.normals.empty()) append_bits(key, mesh.normals[i]);
     if (!mesh.texcoords.empty()) append_bits(key, mesh.texcoords[i]);
     if (!mesh.colors.empty()) append_bits(key, mesh.colors[i]);
     if (!mesh.tangents.empty()) append_bits(key, mesh.tangents[i]);
-    auto [v, v_new] = vertices.try_emplace(key, static_cast<std::uint32_t>(i));
-    w.vertex_id[i] = v->second;  // the first vertex with these attributes represents them all
-  }
-  w.position_count = static_cast<std::uint32_t>(positions.size());
+  });
   return w;
 }
 
@@ -210,26 +239,34 @@ void compute_smooth_normals(Mesh& mesh, float crease_angle_degrees) {
   Mesh out;
   out.topology = Topology::triangles;
   out.indices.reserve(triangles.size() * 3);
-  Bits key;
-  std::unordered_map<Bits, std::uint32_t, BitsHash> output_vertex;
-  output_vertex.reserve(mesh.positions.size());
+  // Output vertices are (source vertex, normal) pairs, in order of first use. Each source
+  // vertex has one or a few (more only along creases): a chain of them per source.
+  constexpr std::uint32_t kNone = ~std::uint32_t{0};
+  std::vector<std::uint32_t> first_output(mesh.positions.size(), kNone), next_output;
+  Bits normal_bits, other_bits;
   for (std::size_t f = 0; f < triangles.size(); ++f) {
     for (std::uint32_t v : triangles[f]) {
       const std::uint32_t source = w.vertex_id[v];
       const glm::vec3 n = corner_normals(v, static_cast<std::uint32_t>(f));
-      key.clear();
-      key.push_back(source);
-      append_bits(key, n);
-      auto [it, added] =
-          output_vertex.try_emplace(key, static_cast<std::uint32_t>(out.positions.size()));
-      if (added) {
+      normal_bits.clear();
+      append_bits(normal_bits, n);
+      std::uint32_t o = first_output[source];
+      for (; o != kNone; o = next_output[o]) {
+        other_bits.clear();
+        append_bits(other_bits, out.normals[o]);
+        if (other_bits == normal_bits) break;
+      }
+      if (o == kNone) {
+        o = static_cast<std::uint32_t>(out.positions.size());
         out.positions.push_back(mesh.positions[source]);
         out.normals.push_back(n);
         copy_attribute(out.texcoords, mesh.texcoords, source);
         copy_attribute(out.colors, mesh.colors, source);
         copy_attribute(out.tangents, mesh.tangents, source);
+        next_output.push_back(first_output[source]);
+        first_output[source] = o;
       }
-      out.indices.push_back(it->second);
+      out.indices.push_back(o);
     }
   }
   mesh = std::move(out);

@@ -1,8 +1,8 @@
 // Writing rendered images: PNG through libpng, PPM (P6) by hand. Both go to a temporary file
 // beside the target that is renamed into place only after a complete, checked write.
 #include <png.h>
-#include <zlib.h>
 #include <unistd.h>
+#include <zlib.h>
 
 #include <algorithm>
 #include <cctype>

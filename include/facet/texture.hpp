@@ -3,6 +3,7 @@
 // sampling always returns linear RGBA.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
@@ -68,8 +69,11 @@ class Texture {
   float lod(glm::vec2 duv_dx, glm::vec2 duv_dy) const;
 
   // Every level as linear float RGBA in one array, level l starting at float offsets[l]: what
-  // the SIMD batch sampler gathers from. texels is null when the texture keeps no such copy
-  // (rgba32f textures, and rgba8 ones over 2^20 texels); sample() works for every texture.
+  // the SIMD batch sampler reads. offsets holds zeros after the last level up to a multiple of
+  // kLevelOffsetsPadding entries, so SIMD code may load it a whole vector at a time. texels is
+  // null when the texture keeps no such copy (rgba32f textures, and rgba8 ones over 2^20
+  // texels); sample() works for every texture.
+  static constexpr std::size_t kLevelOffsetsPadding = 16;
   struct LinearLevels {
     const float* texels = nullptr;
     const std::int32_t* offsets = nullptr;

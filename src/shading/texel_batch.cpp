@@ -79,31 +79,26 @@ HWY_INLINE Pair WrapPair(Wrap mode, IntV i, IntV size) {
   return {WrapOne(mode, i, size), WrapOne(mode, hn::Add(i, hn::Set(di, 1)), size)};
 }
 
-// Level l's first float in the linear texels, padded so that whole vectors can be loaded.
-struct LevelTable {
-  alignas(64) std::int32_t offset[kMaxBatchSampledLevels] = {};
-  int count = 0;
-};
-
 // What the sampling steps share for one texture.
 struct Source {
   const float* texels;
-  const LevelTable* levels;
-  int width, height;
+  const std::int32_t* offsets;  // padded: whole vectors may be loaded (Texture::LinearLevels)
+  int levels, width, height;
   Wrap wrap_u, wrap_v;
 };
 
-// levels.offset[level] per lane (0 <= level < levels.count) with permutes of the table's
-// vectors instead of a gather (slow on this project's machines). The table is read a vector
-// at a time from its start; a lane takes its entry from the last vector that starts at or
-// before its level.
-HWY_INLINE IntV LevelOffset(const LevelTable& levels, IntV level) {
+// src.offsets[level] per lane (0 <= level < src.levels) with permutes of the offsets' vectors
+// instead of a gather (slow on this project's machines). The offsets are read a vector at a
+// time from their start; a lane takes its entry from the last vector that starts at or before
+// its level.
+HWY_INLINE IntV LevelOffset(const Source& src, IntV level) {
   const IntTag di;
   const int lanes = static_cast<int>(hn::Lanes(di));
+  static_assert(Texture::kLevelOffsetsPadding % kMaxLanes == 0);
   const IntV in_vector = hn::Set(di, lanes - 1);
   IntV offset = hn::Zero(di);
-  for (int first = 0; first < levels.count; first += lanes) {
-    const IntV part = hn::LoadU(di, levels.offset + first);
+  for (int first = 0; first < src.levels; first += lanes) {
+    const IntV part = hn::LoadU(di, src.offsets + first);
     const IntV index = hn::And(hn::Sub(level, hn::Set(di, first)), in_vector);
     const IntV picked = hn::TableLookupLanes(part, hn::IndicesFromVec(di, index));
     offset = hn::IfThenElse(hn::Gt(level, hn::Set(di, first - 1)), picked, offset);
@@ -144,7 +139,7 @@ HWY_INLINE Footprint Bilinear(const Source& src, IntV level, FloatV u, FloatV v)
   const Pair xs = WrapPair(src.wrap_u, i0, w), ys = WrapPair(src.wrap_v, j0, h);
   const IntV last_row = hn::Sub(h, hn::Set(di, 1));
   const IntV r0 = hn::Sub(last_row, ys.first), r1 = hn::Sub(last_row, ys.second);
-  const IntV offset = LevelOffset(*src.levels, level);
+  const IntV offset = LevelOffset(src, level);
   fp.texel[0] = TexelOffset(offset, w, xs.first, r0);
   fp.texel[1] = TexelOffset(offset, w, xs.second, r0);
   fp.texel[2] = TexelOffset(offset, w, xs.first, r1);
@@ -254,11 +249,8 @@ void SampleBatch(const TextureMap& map, TexelBatch& batch) {
   const int lanes = static_cast<int>(hn::Lanes(df));
   const Texture& texture = *map.texture;
   const Texture::LinearLevels linear = texture.linear_levels();
-  LevelTable levels;
-  levels.count = texture.level_count();
-  std::copy_n(linear.offsets, levels.count, levels.offset);
-  const Source src{linear.texels,      &levels,           texture.width(), texture.height(),
-                   map.sampler.wrap_u, map.sampler.wrap_v};
+  const Source src{linear.texels,    linear.offsets,     texture.level_count(), texture.width(),
+                   texture.height(), map.sampler.wrap_u, map.sampler.wrap_v};
   const glm::mat3& m = map.transform;
   const Filter filter = map.sampler.filter;
   const FloatV top = hn::Set(df, static_cast<float>(texture.level_count() - 1));
@@ -329,7 +321,6 @@ namespace {
 bool simd_samples(const TextureMap& map) {
   const Texture& texture = *map.texture;
   if (texture.linear_levels().texels == nullptr) return false;
-  if (texture.level_count() > kMaxBatchSampledLevels) return false;
   auto wraps_as_mask = [](Wrap mode, int size) {
     return mode == Wrap::clamp_to_edge || (size & (size - 1)) == 0;
   };

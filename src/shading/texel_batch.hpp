@@ -54,10 +54,6 @@ struct TexelBatch {
   alignas(64) float rgba[kTexelBatch][4];
 };
 
-// The SIMD sampler handles textures of up to this many levels (rgba8 textures keep linear
-// levels up to 2^20 texels, which is at most 21 levels: a 2^20 x 1 texture).
-constexpr int kMaxBatchSampledLevels = 32;
-
 // Samples map at every pixel of the batch.
 void sample_batch(const TextureMap& map, TexelBatch& batch);
 

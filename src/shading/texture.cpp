@@ -342,6 +342,9 @@ std::shared_ptr<Texture> Texture::from_rgba8(int width, int height, std::vector<
       texture->linear_offsets_.push_back(static_cast<std::int32_t>(total));
       total += level.rgba8.size();
     }
+    std::vector<std::int32_t>& offsets = texture->linear_offsets_;
+    offsets.resize((offsets.size() + kLevelOffsetsPadding - 1) / kLevelOffsetsPadding *
+                   kLevelOffsetsPadding);  // zeros (LinearLevels)
     texture->linear_.resize(total);
     for (std::size_t l = 0; l < texture->levels_.size(); ++l) {
       const Level& level = texture->levels_[l];

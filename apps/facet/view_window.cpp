@@ -86,14 +86,14 @@ void ViewWindow::draw_layer(const WindowLayer& layer) {
   }
   if (image.width() != layer_width_ || image.height() != layer_height_) {
     if (layer_texture_) SDL_DestroyTexture(layer_texture_);
+    layer_width_ = layer_height_ = 0;
     layer_texture_ = SDL_CreateTexture(renderer_, SDL_PIXELFORMAT_RGBA32,
                                        SDL_TEXTUREACCESS_STREAMING, image.width(), image.height());
-    layer_width_ = layer_texture_ ? image.width() : 0;
-    layer_height_ = layer_texture_ ? image.height() : 0;
     if (!layer_texture_) {
       throw Error(std::string("view: cannot create the overlay's texture (") + SDL_GetError() +
                   ")");
     }
+    layer_width_ = image.width(), layer_height_ = image.height();
     SDL_SetTextureBlendMode(layer_texture_, SDL_BLENDMODE_BLEND);
   }
   SDL_UpdateTexture(layer_texture_, nullptr, image.rgba8().data(), image.width() * 4);

@@ -91,6 +91,11 @@ struct GouraudLight {
                                    float* v[3]) {
     for (int i = 0; i < 3; ++i) light_vertex(centre, normal, u, v[i]);  // writes the light
   }
+  // The pixel: albedo x interpolated diffuse light + specular light + emission.
+  static glm::vec4 lit(glm::vec4 albedo, const Fragment& f, const DrawUniforms& u) {
+    glm::vec3 color = glm::vec3(albedo) * load3(f.v + kDiffuseSlot) + load3(f.v + kSpecularSlot);
+    return {color + emission(f, u), albedo.a};
+  }
 };
 
 // Gouraud with a texture or vertex colors. Layout: texture coordinate and color as in the
@@ -108,8 +113,7 @@ struct GouraudShading : GouraudLight<6, true> {
   static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
     glm::vec4 albedo = load4(f.v + kColorSlot);
     if (u.material->base_color_map) albedo *= base_color_texel(f, u);
-    glm::vec3 color = glm::vec3(albedo) * load3(f.v + kDiffuseSlot) + load3(f.v + kSpecularSlot);
-    return {color + emission(f, u), albedo.a};
+    return lit(albedo, f, u);
   }
 };
 
@@ -123,9 +127,7 @@ struct ConstantColorGouraudShading : GouraudLight<0, false> {
     light_vertex(glm::vec3(u.model * glm::vec4(in.position, 1.0f)), in.normal, u, out);
   }
   static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
-    const glm::vec4 albedo = u.base_color;
-    glm::vec3 color = glm::vec3(albedo) * load3(f.v + kDiffuseSlot) + load3(f.v + kSpecularSlot);
-    return {color + emission(f, u), albedo.a};
+    return lit(u.base_color, f, u);
   }
 };
 

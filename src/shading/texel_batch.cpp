@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cstring>
 #include <limits>
+#include <utility>
 
 #include "facet/texture.hpp"
 #include "shading/batch_math-inl.h"
@@ -147,16 +148,16 @@ HWY_INLINE Footprint Bilinear(const Source& src, IntV level, FloatV u, FloatV v)
   return fp;
 }
 
-// One vector of lanes' footprints, stored for the per-pixel blend.
-struct StoredFootprint {
-  alignas(32) std::int32_t texel[4][kMaxLanes];
-  alignas(32) float a[kMaxLanes], b[kMaxLanes];
-  void store(const Footprint& fp) {
+// Every pixel's footprint, stored a vector at a time for the per-pixel blend.
+struct StoredFootprints {
+  alignas(32) std::int32_t texel[4][kTexelBatch];
+  alignas(32) float a[kTexelBatch], b[kTexelBatch];
+  void store(int j, const Footprint& fp) {
     const FloatTag df;
     const IntTag di;
-    for (int t = 0; t < 4; ++t) hn::Store(fp.texel[t], di, texel[t]);
-    hn::Store(fp.a, df, a);
-    hn::Store(fp.b, df, b);
+    for (int t = 0; t < 4; ++t) hn::Store(fp.texel[t], di, texel[t] + j);
+    hn::Store(fp.a, df, a + j);
+    hn::Store(fp.b, df, b + j);
   }
 };
 
@@ -174,7 +175,7 @@ HWY_INLINE Texel LoadTexel(const float* p) {
 HWY_INLINE Texel Lerp(Texel a, Texel b, float f) { return a * (1.0f - f) + b * f; }
 
 // The bilinear blend of lane k's footprint (sample_bilinear()'s last three lines).
-HWY_INLINE Texel Blend(const float* texels, const StoredFootprint& fp, int k) {
+HWY_INLINE Texel Blend(const float* texels, const StoredFootprints& fp, int k) {
   const Texel bottom =
       Lerp(LoadTexel(texels + fp.texel[0][k]), LoadTexel(texels + fp.texel[1][k]), fp.a[k]);
   const Texel top =
@@ -257,52 +258,65 @@ void SampleBatch(const TextureMap& map, TexelBatch& batch) {
   // The level of detail's plane slopes when every pixel is of one triangle.
   const Slopes triangle =
       filter == Filter::trilinear && !batch.slopes ? TriangleSlopes(batch) : Slopes{};
-  for (int j = 0; j < batch.count; j += lanes) {
+  // transform_texcoord() of the pixels from j
+  auto transformed = [&](int j) HWY_ATTR {
     const FloatV u = hn::LoadU(df, batch.u + j), v = hn::LoadU(df, batch.v + j);
-    // transform_texcoord()
-    const FloatV ut =
+    return std::pair{
         hn::Add(hn::Add(hn::Mul(hn::Set(df, m[0][0]), u), hn::Mul(hn::Set(df, m[1][0]), v)),
-                hn::Set(df, m[2][0]));
-    const FloatV vt =
+                hn::Set(df, m[2][0])),
         hn::Add(hn::Add(hn::Mul(hn::Set(df, m[0][1]), u), hn::Mul(hn::Set(df, m[1][1]), v)),
-                hn::Set(df, m[2][1]));
-    const int active = std::min(lanes, batch.count - j);
-    float* out = batch.rgba[j];
-    if (filter == Filter::nearest) {
+                hn::Set(df, m[2][1]))};
+  };
+  if (filter == Filter::nearest) {
+    for (int j = 0; j < batch.count; j += lanes) {
+      const auto [ut, vt] = transformed(j);
       alignas(32) std::int32_t texel[kMaxLanes];
       hn::Store(Nearest(src, ut, vt), di, texel);
-      for (int k = 0; k < active; ++k) {
-        std::memcpy(out + 4 * k, src.texels + texel[k], 4 * sizeof(float));
+      for (int k = 0; k < std::min(lanes, batch.count - j); ++k) {
+        std::memcpy(batch.rgba[j + k], src.texels + texel[k], 4 * sizeof(float));
       }
+    }
+    return;
+  }
+  // Three passes over the batch, each a short loop of independent vectors, so that the CPU
+  // overlaps one vector's long dependency chains (the level of detail's logarithm above all)
+  // with the next one's. In one loop, each vector's per-pixel blends stood between them: 16 %
+  // slower on overdraw, 13 % on texture:mipmap.
+  //
+  // 1. Each pixel's mip level and the fraction toward the next (sample_levels(): clamp to the
+  // chain, blend the two nearest levels); level 0 and no fraction for bilinear.
+  alignas(32) std::int32_t level[kTexelBatch];
+  alignas(32) float fraction[kTexelBatch];
+  for (int j = 0; j < batch.count; j += lanes) {
+    if (filter == Filter::bilinear) {
+      hn::Store(hn::Zero(di), di, level + j);
+      hn::Store(hn::Zero(df), df, fraction + j);
       continue;
     }
-    StoredFootprint near, far;
-    alignas(32) float fraction[kMaxLanes];
-    bool blends = false;
-    if (filter == Filter::bilinear) {
-      near.store(Bilinear(src, hn::Zero(di), ut, vt));
-    } else {
-      const FloatV lod = LevelOfDetail(texture, m, batch.slopes ? PixelSlopes(batch, j) : triangle,
-                                       u, v, hn::LoadU(df, batch.w + j));
-      // sample_levels(): clamp to the chain, blend the two nearest levels.
-      const FloatV l = hn::IfThenElse(hn::Gt(lod, hn::Zero(df)), StdMin(lod, top), hn::Zero(df));
-      const IntV l0 = hn::ConvertTo(di, l);
-      const FloatV f = hn::Sub(l, hn::ConvertTo(df, l0));
-      near.store(Bilinear(src, l0, ut, vt));
-      hn::Store(f, df, fraction);
-      blends = !hn::AllFalse(df, hn::Gt(f, hn::Zero(df)));
-      if (blends) {
-        const IntV l1 = hn::Min(hn::Add(l0, hn::Set(di, 1)), hn::ConvertTo(di, top));
-        far.store(Bilinear(src, l1, ut, vt));
-      }
+    const FloatV lod = LevelOfDetail(texture, m, batch.slopes ? PixelSlopes(batch, j) : triangle,
+                                     hn::LoadU(df, batch.u + j), hn::LoadU(df, batch.v + j),
+                                     hn::LoadU(df, batch.w + j));
+    const FloatV l = hn::IfThenElse(hn::Gt(lod, hn::Zero(df)), StdMin(lod, top), hn::Zero(df));
+    const IntV l0 = hn::ConvertTo(di, l);
+    hn::Store(l0, di, level + j);
+    hn::Store(hn::Sub(l, hn::ConvertTo(df, l0)), df, fraction + j);
+  }
+  // 2. Each pixel's footprint in its level, and in the next one where it blends.
+  StoredFootprints near, far;
+  for (int j = 0; j < batch.count; j += lanes) {
+    const auto [ut, vt] = transformed(j);
+    const IntV l0 = hn::Load(di, level + j);
+    near.store(j, Bilinear(src, l0, ut, vt));
+    if (!hn::AllFalse(df, hn::Gt(hn::Load(df, fraction + j), hn::Zero(df)))) {
+      const IntV l1 = hn::Min(hn::Add(l0, hn::Set(di, 1)), hn::ConvertTo(di, top));
+      far.store(j, Bilinear(src, l1, ut, vt));
     }
-    for (int k = 0; k < active; ++k) {
-      Texel texel = Blend(src.texels, near, k);
-      if (blends && fraction[k] > 0.0f) {
-        texel = Lerp(texel, Blend(src.texels, far, k), fraction[k]);
-      }
-      std::memcpy(out + 4 * k, &texel, sizeof texel);
-    }
+  }
+  // 3. Each pixel's blend.
+  for (int k = 0; k < batch.count; ++k) {
+    Texel texel = Blend(src.texels, near, k);
+    if (fraction[k] > 0.0f) texel = Lerp(texel, Blend(src.texels, far, k), fraction[k]);
+    std::memcpy(batch.rgba[k], &texel, sizeof texel);
   }
 }
 

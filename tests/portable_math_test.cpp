@@ -11,6 +11,7 @@
 namespace facet::test {
 namespace {
 
+using shading::lod_log2;
 using shading::portable_exp;
 using shading::portable_log2;
 using shading::portable_pow;
@@ -35,6 +36,35 @@ TEST(PortableMath, Log2OfSpecialValues) {
   EXPECT_TRUE(std::isnan(portable_log2(-1.0f)));
   EXPECT_TRUE(std::isnan(portable_log2(kNaN)));
   EXPECT_NEAR(portable_log2(std::numeric_limits<float>::denorm_min()), -149.0, 1e-4);
+}
+
+TEST(PortableMath, LodLog2IsWithinAThousandthOfALevel) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> exponent(-125.0f, 127.0f);
+  for (int i = 0; i < 200000; ++i) {
+    const float x = std::exp2(exponent(rng));
+    ASSERT_NEAR(lod_log2(x), std::log2(static_cast<double>(x)), 1e-3) << "x = " << x;
+  }
+  // Increasing, also across the octaves where the polynomial restarts.
+  for (int e = -20; e <= 20; ++e) {
+    const float power = std::ldexp(1.0f, e);
+    float previous = lod_log2(std::nextafter(power, 0.0f) * 0.999f);
+    for (float x = std::nextafter(power, 0.0f) * 0.999f; x < power * 1.001f;
+         x = std::nextafter(x, power * 2.0f)) {
+      ASSERT_GE(lod_log2(x), previous) << "x = " << x;
+      previous = lod_log2(x);
+    }
+    EXPECT_EQ(lod_log2(power), static_cast<float>(e));
+  }
+}
+
+TEST(PortableMath, LodLog2OfSpecialValues) {
+  EXPECT_EQ(lod_log2(0.0f), -kInf);
+  EXPECT_EQ(lod_log2(kInf), kInf);
+  EXPECT_TRUE(std::isnan(lod_log2(-1.0f)));
+  EXPECT_TRUE(std::isnan(lod_log2(kNaN)));
+  // Subnormals: far below level 0, which is all the level of detail needs.
+  EXPECT_LT(lod_log2(std::numeric_limits<float>::denorm_min()), -126.0f);
 }
 
 TEST(PortableMath, ExpIsExpToFloatPrecision) {

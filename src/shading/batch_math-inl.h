@@ -113,6 +113,26 @@ HWY_INLINE BatchV PortableLog2(BatchV x) {
   return hn::IfThenElse(hn::Eq(x, infinity), infinity, result);
 }
 
+HWY_INLINE BatchV LodLog2(BatchV x) {
+  namespace c = portable_math;
+  const BatchTag df;
+  const hn::RebindToSigned<BatchTag> di;
+  const auto bits = hn::BitCast(di, x);
+  const BatchV e = hn::ConvertTo(df, hn::Sub(hn::ShiftRight<23>(bits), hn::Set(di, 127)));
+  const BatchV f = hn::Sub(
+      hn::BitCast(df, hn::Or(hn::And(bits, hn::Set(di, 0x007fffff)), hn::Set(di, 0x3f800000))),
+      hn::Set(df, 1.0f));
+  BatchV poly = hn::Add(hn::Set(df, c::kLodLog2C2), hn::Mul(f, hn::Set(df, c::kLodLog2C3)));
+  poly = hn::Add(hn::Set(df, c::kLodLog2C1), hn::Mul(f, poly));
+  const BatchV result = hn::Add(e, hn::Mul(f, poly));
+  const BatchV infinity = hn::Set(df, std::numeric_limits<float>::infinity());
+  const BatchV zero_or_invalid =
+      hn::IfThenElse(hn::Eq(x, hn::Zero(df)), hn::Neg(infinity),
+                     hn::Set(df, std::numeric_limits<float>::quiet_NaN()));
+  return hn::IfThenElse(hn::Eq(x, infinity), infinity,
+                        hn::IfThenElse(hn::Gt(x, hn::Zero(df)), result, zero_or_invalid));
+}
+
 HWY_INLINE BatchV PortableExp2(BatchV t) {
   namespace c = portable_math;
   const BatchTag d;

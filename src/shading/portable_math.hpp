@@ -3,8 +3,8 @@
 // batch code (texel_batch.cpp, shade_batch.cpp repeat these steps lane by lane) compute the
 // same bits on every CPU. glibc's log2f, expf and powf pick their implementation per CPU (FMA
 // or not), and a libm call per pixel was a fifth of a trilinear-textured frame.
-//   portable_log2  texture level of detail      portable_exp  exponential fog
-//   portable_pow   specular highlights (x^s for x >= 0)
+//   lod_log2       texture level of detail      portable_exp  exponential fog
+//   portable_pow   specular highlights (x^s for x >= 0, through portable_log2)
 #pragma once
 
 #include <bit>
@@ -34,6 +34,11 @@ inline constexpr float kExp2C7 = 1.52527338e-05f;
 inline constexpr float kExp2Lowest = -126.5f;  // below: 0 (subnormal results are not needed)
 inline constexpr float kExp2Highest = 127.5f;  // from here: +inf
 inline constexpr float kLog2E = 1.44269504f;
+// lod_log2: log2(1 + f) for f in [0, 1) as f (c1 + f (c2 + f c3)), fitted for the smallest
+// largest error with c1 + c2 + c3 = 1 (so octaves join); increasing on [0, 1].
+inline constexpr float kLodLog2C1 = 1.42286066f;
+inline constexpr float kLodLog2C2 = -0.582073628f;
+inline constexpr float kLodLog2C3 = 0.15921297f;
 }  // namespace portable_math
 
 // log2(x) to within 1e-6 for every positive normal or subnormal x; -inf for 0, +inf for +inf,
@@ -61,6 +66,23 @@ inline float portable_log2(float x) {
   const float s = (m - 1.0f) / (m + 1.0f);
   const float s2 = s * s;
   return e + s * (kLog2C1 + s2 * (kLog2C3 + s2 * (kLog2C5 + s2 * kLog2C7)));
+}
+
+// log2(x) to within 0.001 for positive normal x, for the texture level of detail: a thousandth
+// of a mip level is far below what shows, and without portable_log2's division and range
+// reduction the batch sampler's level of detail costs half as much. Subnormal x give about
+// -127 (far below level 0 all the same); -inf for 0, +inf for +inf, NaN for NaN and negative x.
+inline float lod_log2(float x) {
+  using namespace portable_math;
+  if (!(x > 0.0f)) {
+    return x == 0.0f ? -std::numeric_limits<float>::infinity()
+                     : std::numeric_limits<float>::quiet_NaN();
+  }
+  if (x == std::numeric_limits<float>::infinity()) return x;
+  const std::int32_t bits = std::bit_cast<std::int32_t>(x);
+  const float e = static_cast<float>((bits >> 23) - 127);
+  const float f = std::bit_cast<float>((bits & 0x007fffff) | 0x3f800000) - 1.0f;  // [0, 1)
+  return e + f * (kLodLog2C1 + f * (kLodLog2C2 + f * kLodLog2C3));
 }
 
 // 2^t to within 2e-7 relative for results in the normal range; 0 below it, +inf above, NaN

@@ -241,7 +241,7 @@ HWY_INLINE FloatV LevelOfDetail(const Texture& texture, const glm::mat3& m, cons
   const FloatV yv = hn::Mul(LinearPart(m, 1, duy, dvy), size_v);
   const FloatV rho2 =
       StdMax(hn::Add(hn::Mul(xu, xu), hn::Mul(xv, xv)), hn::Add(hn::Mul(yu, yu), hn::Mul(yv, yv)));
-  return hn::Mul(hn::Set(df, 0.5f), PortableLog2(rho2));
+  return hn::Mul(hn::Set(df, 0.5f), LodLog2(rho2));
 }
 
 void SampleBatch(const TextureMap& map, TexelBatch& batch) {

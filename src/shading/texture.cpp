@@ -403,13 +403,14 @@ glm::vec4 Texture::sample(const Sampler& sampler, glm::vec2 uv, float lod) const
 
 // OpenGL 4.6 §8.14.1, equation 8.4 without anisotropy: rho is the longer of the two
 // screen-pixel footprint edges measured in base-level texels, lod = log2(rho). Computed from
-// squared lengths (0.5 * log2(rho^2)) to save the square roots, with portable_log2 (the same bits
-// on every CPU and in the SIMD batch sampler). Not clamped: sample() does.
+// squared lengths (0.5 * log2(rho^2)) to save the square roots, with lod_log2 (within a
+// thousandth of a level; the same bits on every CPU and in the SIMD batch sampler). Not
+// clamped: sample() does.
 float Texture::lod(glm::vec2 duv_dx, glm::vec2 duv_dy) const {
   const glm::vec2 size(static_cast<float>(width()), static_cast<float>(height()));
   const glm::vec2 dx = duv_dx * size, dy = duv_dy * size;
   const float rho2 = std::max(dx.x * dx.x + dx.y * dx.y, dy.x * dy.x + dy.y * dy.y);
-  return 0.5f * shading::portable_log2(rho2);
+  return 0.5f * shading::lod_log2(rho2);
 }
 
 std::shared_ptr<const Texture> missing_texture() {

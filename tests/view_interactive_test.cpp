@@ -343,6 +343,35 @@ TEST(ViewInput, F1ShowsTheWholeHelpPanelInTheMiddleOfTheWindow) {
             0.0);  // not in the frame
 }
 
+// A small render resolution opens a window big enough for the help: 320x180 opens at twice
+// that, where F1 shows the whole panel, with picture rows above and below it.
+TEST(ViewInput, SmallRendersOpenAWindowTheHelpFits) {
+  SKIP_WITHOUT_TOOLS();
+  Session s = run_session("f1_small", kIslands +
+                                          "window_shot\nxdotool key F1\nsleep 3\n"
+                                          "window_shot\nstop_view\n");
+  ASSERT_EQ(s.result.exit_code, 0) << s.result.stderr_text;
+  const Rgba8Image plain = s.image("facet-window-1.png"), help = s.image("facet-window-2.png");
+  ASSERT_EQ(help.width, 640);
+  ASSERT_EQ(help.height, 360);
+  ASSERT_EQ(plain.pixels.size(), help.pixels.size());
+  int top = help.height, bottom = -1;
+  for (int y = 0; y < help.height; ++y) {
+    for (int x = 0; x < help.width; ++x) {
+      const std::size_t i = (static_cast<std::size_t>(y) * help.width + x) * 4;
+      for (int c = 0; c < 3; ++c) {
+        if (std::abs(plain.pixels[i + c] - help.pixels[i + c]) > 8) {
+          top = std::min(top, y), bottom = std::max(bottom, y);
+        }
+      }
+    }
+  }
+  ASSERT_GE(bottom, top) << "F1 changed nothing in the window";
+  EXPECT_GT(bottom - top, 250);  // the whole key table
+  EXPECT_GT(top, 0);             // and not cut off: picture rows above and below it
+  EXPECT_LT(bottom, help.height - 1);
+}
+
 TEST(ViewInput, F6RaisesAndF5LowersTheRenderResolution) {
   SKIP_WITHOUT_TOOLS();
   Session s =
@@ -367,10 +396,10 @@ TEST(ViewInput, F11TogglesFullscreen) {
                                      "xdotool key F11\nshot\nwindow_shot\n"
                                      "xdotool key F11\nshot\nstop_view\n");
   ASSERT_EQ(s.result.exit_code, 0) << s.result.stderr_text;
-  EXPECT_EQ(shot_log(s, 1).window_w, 320);
+  EXPECT_EQ(shot_log(s, 1).window_w, 640);   // a 320x180 render opens a 640x360 window
   EXPECT_EQ(shot_log(s, 2).window_w, 1920);  // the whole 1920x1080 screen
   EXPECT_EQ(shot_log(s, 2).window_h, 1080);
-  EXPECT_EQ(shot_log(s, 3).window_w, 320);  // and back
+  EXPECT_EQ(shot_log(s, 3).window_w, 640);  // and back
   Rgba8Image window = s.image("facet-window-1.png");
   EXPECT_EQ(window.width, 1920);
   EXPECT_EQ(window.height, 1080);

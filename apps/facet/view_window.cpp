@@ -4,6 +4,7 @@
 #define SDL_MAIN_HANDLED  // facet has its own main(); SDL must not rename it
 #include <SDL.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <string>
 
@@ -36,9 +37,14 @@ ViewWindow::ViewWindow(const std::string& title, int width, int height)
     SDL_Quit();
     throw Error("view: cannot open the display (" + message + ")" + kNoDisplayHint);
   }
-  window_ = SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, width,
-                             height, SDL_WINDOW_RESIZABLE);
-  if (window_) renderer_ = SDL_CreateRenderer(window_, -1, SDL_RENDERER_SOFTWARE);
+  const int scale =
+      std::max({1, (kMinWidth + width - 1) / width, (kMinHeight + height - 1) / height});
+  window_ = SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
+                             width * scale, height * scale, SDL_WINDOW_RESIZABLE);
+  if (window_) {
+    SDL_SetWindowMinimumSize(window_, kMinWidth, kMinHeight);
+    renderer_ = SDL_CreateRenderer(window_, -1, SDL_RENDERER_SOFTWARE);
+  }
   SDL_SetHint(SDL_HINT_RENDER_SCALE_QUALITY, "linear");  // smooth scaling of the texture
   // The frame is uploaded as bytes R, G, B, A, which SDL_PIXELFORMAT_RGBA32 names on any
   // endianness.

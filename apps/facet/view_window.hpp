@@ -25,8 +25,13 @@ struct WindowLayer {
 
 class ViewWindow {
  public:
-  // Opens a resizable window showing width x height frames. Throws facet::Error with one line
-  // suggesting xvfb-run or `facet render` when there is no display.
+  // The smallest window: the F1 help panel's rows fit it (view_overlay.cpp).
+  static constexpr int kMinWidth = 640, kMinHeight = 360;
+
+  // Opens a resizable window showing width x height frames, at that size times the smallest
+  // whole number that makes it at least kMinWidth x kMinHeight (a 320x180 render opens a
+  // 640x360 window). Throws facet::Error with one line suggesting xvfb-run or `facet render`
+  // when there is no display.
   ViewWindow(const std::string& title, int width, int height);
   ~ViewWindow();
   ViewWindow(const ViewWindow&) = delete;

@@ -65,8 +65,8 @@ class Texture {
 
   // Level of detail from the screen-space derivatives of uv (per pixel): log2 of the larger
   // footprint edge in texels of the base level (OpenGL 4.6 8.14.1 without anisotropy), to
-  // within a thousandth of a level. Not clamped (-inf for zero derivatives); sample() clamps to the
-  // levels that exist.
+  // within a thousandth of a level. Not clamped (-inf for zero derivatives); sample() clamps
+  // to the levels that exist.
   float lod(glm::vec2 duv_dx, glm::vec2 duv_dy) const;
 
   // Every level as linear float RGBA in one array, level l starting at float offsets[l]: what

@@ -113,6 +113,7 @@ HWY_INLINE BatchV PortableLog2(BatchV x) {
   return hn::IfThenElse(hn::Eq(x, infinity), infinity, result);
 }
 
+// lod_log2() of portable_math.hpp, lane by lane.
 HWY_INLINE BatchV LodLog2(BatchV x) {
   namespace c = portable_math;
   const BatchTag df;

@@ -152,6 +152,27 @@ double changed_fraction(const Rgba8Image& a, const Rgba8Image& b) {
   return n ? static_cast<double>(changed) / n : 0.0;
 }
 
+// The rows and columns where two images of one size differ by more than 8 in a channel (top
+// > bottom when they do not).
+struct ChangedBox {
+  int top, bottom, left, right;
+};
+ChangedBox changed_box(const Rgba8Image& a, const Rgba8Image& b) {
+  ChangedBox box{a.height, -1, a.width, -1};
+  for (int y = 0; y < a.height; ++y) {
+    for (int x = 0; x < a.width; ++x) {
+      const std::size_t i = (static_cast<std::size_t>(y) * a.width + x) * 4;
+      int delta = 0;
+      for (int c = 0; c < 3; ++c)
+        delta = std::max(delta, std::abs(a.pixels[i + c] - b.pixels[i + c]));
+      if (delta <= 8) continue;
+      box.top = std::min(box.top, y), box.bottom = std::max(box.bottom, y);
+      box.left = std::min(box.left, x), box.right = std::max(box.right, x);
+    }
+  }
+  return box;
+}
+
 bool is_black_row(const Rgba8Image& image, int y) {
   for (int x = 0; x < image.width; ++x) {
     const std::uint8_t* p = &image.pixels[(static_cast<std::size_t>(y) * image.width + x) * 4];
@@ -319,19 +340,7 @@ TEST(ViewInput, F1ShowsTheWholeHelpPanelInTheMiddleOfTheWindow) {
   ASSERT_EQ(help.width, 1280);
   ASSERT_EQ(help.height, 720);
   ASSERT_EQ(plain.pixels.size(), help.pixels.size());
-  // The rows and columns the help changed.
-  int top = help.height, bottom = -1, left = help.width, right = -1;
-  for (int y = 0; y < help.height; ++y) {
-    for (int x = 0; x < help.width; ++x) {
-      const std::size_t i = (static_cast<std::size_t>(y) * help.width + x) * 4;
-      int delta = 0;
-      for (int c = 0; c < 3; ++c)
-        delta = std::max(delta, std::abs(plain.pixels[i + c] - help.pixels[i + c]));
-      if (delta <= 8) continue;
-      top = std::min(top, y), bottom = std::max(bottom, y);
-      left = std::min(left, x), right = std::max(right, x);
-    }
-  }
+  const auto [top, bottom, left, right] = changed_box(plain, help);
   ASSERT_GE(bottom, top) << "F1 changed nothing in the window";
   EXPECT_GT(bottom - top, 300);  // more rows than a 180-pixel frame has: window pixels
   EXPECT_GT(top, 20);            // whole: picture rows above and below it
@@ -344,7 +353,7 @@ TEST(ViewInput, F1ShowsTheWholeHelpPanelInTheMiddleOfTheWindow) {
 }
 
 // A small render resolution opens a window big enough for the help: 320x180 opens at twice
-// that, where F1 shows the whole panel, with picture rows above and below it.
+// that, where F1 shows the whole panel with the picture all around it.
 TEST(ViewInput, SmallRendersOpenAWindowTheHelpFits) {
   SKIP_WITHOUT_TOOLS();
   Session s = run_session("f1_small", kIslands +
@@ -355,21 +364,13 @@ TEST(ViewInput, SmallRendersOpenAWindowTheHelpFits) {
   ASSERT_EQ(help.width, 640);
   ASSERT_EQ(help.height, 360);
   ASSERT_EQ(plain.pixels.size(), help.pixels.size());
-  int top = help.height, bottom = -1;
-  for (int y = 0; y < help.height; ++y) {
-    for (int x = 0; x < help.width; ++x) {
-      const std::size_t i = (static_cast<std::size_t>(y) * help.width + x) * 4;
-      for (int c = 0; c < 3; ++c) {
-        if (std::abs(plain.pixels[i + c] - help.pixels[i + c]) > 8) {
-          top = std::min(top, y), bottom = std::max(bottom, y);
-        }
-      }
-    }
-  }
+  const auto [top, bottom, left, right] = changed_box(plain, help);
   ASSERT_GE(bottom, top) << "F1 changed nothing in the window";
   EXPECT_GT(bottom - top, 250);  // the whole key table
   EXPECT_GT(top, 0);             // and not cut off: picture rows above and below it
   EXPECT_LT(bottom, help.height - 1);
+  EXPECT_GT(left, 0);  // and picture columns left and right of it
+  EXPECT_LT(right, help.width - 1);
 }
 
 TEST(ViewInput, F6RaisesAndF5LowersTheRenderResolution) {

@@ -20,6 +20,27 @@ bool may_hide(const Frame& frame, std::uint32_t entry, int x0, int y0, int x1, i
          frame.draws[t.draw].pipeline.occludes;
 }
 
+// An entry an occlusion scan may look past: a triangle of a depth-tested draw. Scans stop at
+// anything else, a line (lines are not hidden, nor do they hide) or a draw without the depth
+// test (it would show through whatever is drawn later): then `triangle` is null.
+struct ScanEntry {
+  const SetupTriangle* triangle = nullptr;
+  bool occludes = false;  // its draw writes depth and is opaque (DrawPipeline::occludes)
+};
+ScanEntry scan_entry(const Frame& frame, std::uint32_t entry) {
+  if (entry & kLineBit) return {};
+  const SetupTriangle& t = frame.triangles[entry];
+  const DrawPipeline& pipeline = frame.draws[t.draw].pipeline;
+  if (!pipeline.depth_tested) return {};
+  return {&t, pipeline.occludes};
+}
+
+// depth_range_over the part of t's bounding box in the rectangle [x0, x1) x [y0, y1).
+DepthRange depth_range_within(const SetupTriangle& t, int x0, int y0, int x1, int y1) {
+  return depth_range_over(t, std::max(t.min_x, x0), std::max(t.min_y, y0),
+                          std::min(t.max_x, x1 - 1), std::min(t.max_y, y1 - 1));
+}
+
 }  // namespace
 
 std::size_t first_visible_entry(const Frame& frame, const std::uint32_t* bin, std::size_t count,
@@ -37,14 +58,12 @@ std::size_t first_visible_entry(const Frame& frame, const std::uint32_t* bin, st
   // The nearest depth any entry so far can write in the tile.
   float nearest_so_far = std::numeric_limits<float>::infinity();
   for (std::size_t i = 0; i <= last_candidate; ++i) {
-    if (bin[i] & kLineBit) break;  // lines are not hidden (nor do they hide)
-    const SetupTriangle& t = frame.triangles[bin[i]];
-    const DrawPipeline& pipeline = frame.draws[t.draw].pipeline;
-    if (!pipeline.depth_tested) break;  // it would show through whatever is drawn later
-    const DepthRange range = depth_range_over(t, std::max(t.min_x, x0), std::max(t.min_y, y0),
-                                              std::min(t.max_x, x1 - 1), std::min(t.max_y, y1 - 1));
+    const ScanEntry e = scan_entry(frame, bin[i]);
+    if (!e.triangle) break;
+    const SetupTriangle& t = *e.triangle;
+    const DepthRange range = depth_range_within(t, x0, y0, x1, y1);
     if (!(range.nearest == range.nearest)) break;  // NaN: no bound
-    if (pipeline.occludes && i > first && range.farthest < nearest_so_far &&
+    if (e.occludes && i > first && range.farthest < nearest_so_far &&
         triangle_covers(t, x0, y0, x1, y1)) {
       // In a covered tile the bounding box clipped to it is the tile, so range is over it.
       first = i;
@@ -64,14 +83,11 @@ bool any_entry_nearer_than_one_before(const Frame& frame, const std::uint32_t* b
                                       std::size_t count, int x0, int y0, int x1, int y1) {
   float farthest_before = -std::numeric_limits<float>::infinity();
   for (std::size_t i = 0; i < count; ++i) {
-    if (bin[i] & kLineBit) return false;  // as below: nothing after it is looked at
-    const SetupTriangle& t = frame.triangles[bin[i]];
-    const DrawPipeline& pipeline = frame.draws[t.draw].pipeline;
-    if (!pipeline.depth_tested) return false;
-    const DepthRange range = depth_range_over(t, std::max(t.min_x, x0), std::max(t.min_y, y0),
-                                              std::min(t.max_x, x1 - 1), std::min(t.max_y, y1 - 1));
+    const ScanEntry e = scan_entry(frame, bin[i]);
+    if (!e.triangle) return false;  // as below: nothing after it is looked at
+    const DepthRange range = depth_range_within(*e.triangle, x0, y0, x1, y1);
     if (!(range.nearest == range.nearest)) return false;  // NaN: no bound
-    if (pipeline.occludes && range.nearest < farthest_before) return true;
+    if (e.occludes && range.nearest < farthest_before) return true;
     farthest_before = std::max(farthest_before, range.farthest);
   }
   return false;
@@ -91,10 +107,9 @@ bool first_visible_entries_per_block(const Frame& frame, const std::uint32_t* bi
     nearest_so_far[b] = std::numeric_limits<float>::infinity();
   }
   for (std::size_t i = 0; i < count; ++i) {
-    if (bin[i] & kLineBit) return true;  // lines are not hidden (nor do they hide)
-    const SetupTriangle& t = frame.triangles[bin[i]];
-    const DrawPipeline& pipeline = frame.draws[t.draw].pipeline;
-    if (!pipeline.depth_tested) return true;  // it would show through whatever is drawn later
+    const ScanEntry e = scan_entry(frame, bin[i]);
+    if (!e.triangle) return true;
+    const SetupTriangle& t = *e.triangle;
     // The triangle's box in the tile, and the blocks it overlaps.
     const int left = std::max(t.min_x, x0), right = std::min(t.max_x, x1 - 1);
     const int top = std::max(t.min_y, y0), bottom = std::min(t.max_y, y1 - 1);
@@ -111,7 +126,7 @@ bool first_visible_entries_per_block(const Frame& frame, const std::uint32_t* bi
                              std::min(right, block_x1 - 1), std::min(bottom, block_y1 - 1));
         if (!(range.nearest == range.nearest)) return true;  // NaN: no bound
         const int b = by * blocks_x + bx;
-        if (pipeline.occludes && i > starts[b] && range.farthest < nearest_so_far[b] &&
+        if (e.occludes && i > starts[b] && range.farthest < nearest_so_far[b] &&
             triangle_covers(t, block_x0, block_y0, block_x1, block_y1)) {
           starts[b] = static_cast<std::uint32_t>(i);
         }

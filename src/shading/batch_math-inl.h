@@ -82,12 +82,22 @@ HWY_INLINE Vec3V SafeNormalize(const Vec3V& v) {
 HWY_INLINE BatchV StdMax(BatchV a, BatchV b) { return hn::IfThenElse(hn::Lt(a, b), b, a); }
 HWY_INLINE BatchV StdMin(BatchV a, BatchV b) { return hn::IfThenElse(hn::Lt(b, a), b, a); }
 
+// log2 of x where it is positive and finite, log2_special(x) (portable_math.hpp) elsewhere.
+HWY_INLINE BatchV WithLog2Special(BatchV x, BatchV log2) {
+  const BatchTag df;
+  const BatchV infinity = hn::Set(df, std::numeric_limits<float>::infinity());
+  const BatchV zero_or_invalid =
+      hn::IfThenElse(hn::Eq(x, hn::Zero(df)), hn::Neg(infinity),
+                     hn::Set(df, std::numeric_limits<float>::quiet_NaN()));
+  const BatchV result = hn::IfThenElse(hn::Gt(x, hn::Zero(df)), log2, zero_or_invalid);
+  return hn::IfThenElse(hn::Eq(x, infinity), infinity, result);
+}
+
 // portable_math.hpp, lane by lane.
 HWY_INLINE BatchV PortableLog2(BatchV x) {
   namespace c = portable_math;
   const BatchTag df;
   const hn::RebindToSigned<BatchTag> di;
-  const auto positive = hn::Gt(x, hn::Zero(df));
   const auto subnormal = hn::Lt(x, hn::Set(df, c::kSmallestNormal));
   const BatchV scaled = hn::IfThenElse(subnormal, hn::Mul(x, hn::Set(df, c::kTwoTo23)), x);
   const BatchV bias = hn::IfThenElse(subnormal, hn::Set(df, 150.0f), hn::Set(df, 127.0f));
@@ -104,13 +114,7 @@ HWY_INLINE BatchV PortableLog2(BatchV x) {
   BatchV poly = hn::Add(hn::Set(df, c::kLog2C5), hn::Mul(s2, hn::Set(df, c::kLog2C7)));
   poly = hn::Add(hn::Set(df, c::kLog2C3), hn::Mul(s2, poly));
   poly = hn::Add(hn::Set(df, c::kLog2C1), hn::Mul(s2, poly));
-  BatchV result = hn::Add(e, hn::Mul(s, poly));
-  const BatchV infinity = hn::Set(df, std::numeric_limits<float>::infinity());
-  const BatchV zero_or_invalid =
-      hn::IfThenElse(hn::Eq(x, hn::Zero(df)), hn::Neg(infinity),
-                     hn::Set(df, std::numeric_limits<float>::quiet_NaN()));
-  result = hn::IfThenElse(positive, result, zero_or_invalid);
-  return hn::IfThenElse(hn::Eq(x, infinity), infinity, result);
+  return WithLog2Special(x, hn::Add(e, hn::Mul(s, poly)));
 }
 
 // lod_log2() of portable_math.hpp, lane by lane.
@@ -125,13 +129,7 @@ HWY_INLINE BatchV LodLog2(BatchV x) {
       hn::Set(df, 1.0f));
   BatchV poly = hn::Add(hn::Set(df, c::kLodLog2C2), hn::Mul(f, hn::Set(df, c::kLodLog2C3)));
   poly = hn::Add(hn::Set(df, c::kLodLog2C1), hn::Mul(f, poly));
-  const BatchV result = hn::Add(e, hn::Mul(f, poly));
-  const BatchV infinity = hn::Set(df, std::numeric_limits<float>::infinity());
-  const BatchV zero_or_invalid =
-      hn::IfThenElse(hn::Eq(x, hn::Zero(df)), hn::Neg(infinity),
-                     hn::Set(df, std::numeric_limits<float>::quiet_NaN()));
-  return hn::IfThenElse(hn::Eq(x, infinity), infinity,
-                        hn::IfThenElse(hn::Gt(x, hn::Zero(df)), result, zero_or_invalid));
+  return WithLog2Special(x, hn::Add(e, hn::Mul(f, poly)));
 }
 
 HWY_INLINE BatchV PortableExp2(BatchV t) {

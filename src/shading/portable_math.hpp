@@ -41,16 +41,19 @@ inline constexpr float kLodLog2C2 = -0.582073628f;
 inline constexpr float kLodLog2C3 = 0.15921297f;
 }  // namespace portable_math
 
+// log2 where x is not positive and finite: -inf for 0, +inf for +inf, NaN for NaN and negative x.
+inline float log2_special(float x) {
+  if (x == std::numeric_limits<float>::infinity()) return x;
+  return x == 0.0f ? -std::numeric_limits<float>::infinity()
+                   : std::numeric_limits<float>::quiet_NaN();
+}
+
 // log2(x) to within 1e-6 for every positive normal or subnormal x; -inf for 0, +inf for +inf,
 // NaN for NaN and negative x. Reduction: x = m * 2^e with m in [sqrt(1/2), sqrt(2)), then
 // |s| <= 0.1716, where the atanh series to s^7 leaves an error below 5e-8.
 inline float portable_log2(float x) {
   using namespace portable_math;
-  if (!(x > 0.0f)) {
-    return x == 0.0f ? -std::numeric_limits<float>::infinity()
-                     : std::numeric_limits<float>::quiet_NaN();
-  }
-  if (x == std::numeric_limits<float>::infinity()) return x;
+  if (!(x > 0.0f) || x == std::numeric_limits<float>::infinity()) return log2_special(x);
   float bias = 127.0f;
   if (x < kSmallestNormal) {  // subnormal: scale into the normal range first (exact)
     x *= kTwoTo23;
@@ -74,11 +77,7 @@ inline float portable_log2(float x) {
 // -127 (far below level 0 all the same); -inf for 0, +inf for +inf, NaN for NaN and negative x.
 inline float lod_log2(float x) {
   using namespace portable_math;
-  if (!(x > 0.0f)) {
-    return x == 0.0f ? -std::numeric_limits<float>::infinity()
-                     : std::numeric_limits<float>::quiet_NaN();
-  }
-  if (x == std::numeric_limits<float>::infinity()) return x;
+  if (!(x > 0.0f) || x == std::numeric_limits<float>::infinity()) return log2_special(x);
   const std::int32_t bits = std::bit_cast<std::int32_t>(x);
   const float e = static_cast<float>((bits >> 23) - 127);
   const float f = std::bit_cast<float>((bits & 0x007fffff) | 0x3f800000) - 1.0f;  // [0, 1)

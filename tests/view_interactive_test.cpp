@@ -373,6 +373,18 @@ TEST(ViewInput, SmallRendersOpenAWindowTheHelpFits) {
   EXPECT_LT(right, help.width - 1);
 }
 
+// The whole multiple stops at the display: 500x100 would need 2000x400 on a 1920-pixel screen,
+// so it opens at three times, 1500 wide, and as tall as the smallest window.
+TEST(ViewInput, AWindowOpensNoWiderThanTheDisplay) {
+  SKIP_WITHOUT_TOOLS();
+  Session s = run_session("wide",
+                          "start_view --scene shapes --size 500x100 --overlay off\n"
+                          "stop_view\n");
+  ASSERT_EQ(s.result.exit_code, 0) << s.result.stderr_text;
+  EXPECT_EQ(shot_log(s, 1).window_w, 1500);
+  EXPECT_EQ(shot_log(s, 1).window_h, 360);
+}
+
 TEST(ViewInput, F6RaisesAndF5LowersTheRenderResolution) {
   SKIP_WITHOUT_TOOLS();
   Session s =

@@ -37,10 +37,15 @@ ViewWindow::ViewWindow(const std::string& title, int width, int height)
     SDL_Quit();
     throw Error("view: cannot open the display (" + message + ")" + kNoDisplayHint);
   }
-  const int scale =
-      std::max({1, (kMinWidth + width - 1) / width, (kMinHeight + height - 1) / height});
+  int scale = std::max({1, (kMinWidth + width - 1) / width, (kMinHeight + height - 1) / height});
+  // No bigger than the display, though: a 500x100 render would ask for 2000x400.
+  SDL_DisplayMode display;
+  if (SDL_GetDesktopDisplayMode(0, &display) == 0) {
+    while (scale > 1 && (width * scale > display.w || height * scale > display.h)) --scale;
+  }
   window_ = SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
-                             width * scale, height * scale, SDL_WINDOW_RESIZABLE);
+                             std::max(width * scale, kMinWidth),
+                             std::max(height * scale, kMinHeight), SDL_WINDOW_RESIZABLE);
   if (window_) {
     SDL_SetWindowMinimumSize(window_, kMinWidth, kMinHeight);
     renderer_ = SDL_CreateRenderer(window_, -1, SDL_RENDERER_SOFTWARE);

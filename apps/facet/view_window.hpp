@@ -28,10 +28,11 @@ class ViewWindow {
   // The smallest window: the F1 help panel's rows fit it (view_overlay.cpp).
   static constexpr int kMinWidth = 640, kMinHeight = 360;
 
-  // Opens a resizable window showing width x height frames, at that size times the smallest
-  // whole number that makes it at least kMinWidth x kMinHeight (a 320x180 render opens a
-  // 640x360 window). Throws facet::Error with one line suggesting xvfb-run or `facet render`
-  // when there is no display.
+  // Opens a resizable window showing width x height frames. Its size is the frame's times the
+  // smallest whole number that makes it at least kMinWidth x kMinHeight (a 320x180 render
+  // opens a 640x360 window), a smaller multiple where that would not fit the display, and never
+  // less than kMinWidth x kMinHeight. Throws facet::Error with one line suggesting xvfb-run or
+  // `facet render` when there is no display.
   ViewWindow(const std::string& title, int width, int height);
   ~ViewWindow();
   ViewWindow(const ViewWindow&) = delete;

@@ -77,8 +77,8 @@ void append_bits(Bits& key, const V& value) {
   }
 }
 
-// Ids such that two vertices share an id exactly when every attribute is identical (the id of
-// the first of them), normals only if `with_normals`; and ids for positions alone (the
+// What smoothing welds by: ids such that two vertices share an id exactly when every attribute
+// but the normal is identical (the id of the first of them), and ids for positions alone (the
 // smoothing neighbourhood).
 struct Welding {
   std::vector<std::uint32_t> vertex_id;
@@ -116,7 +116,20 @@ std::vector<std::uint32_t> first_with_equal_key(std::size_t n, const KeyOf& key_
   return first;
 }
 
-Welding weld(const Mesh& mesh, bool with_normals) {
+// For each vertex, the first vertex whose attributes are all identical to its own (normals
+// compared only if `with_normals`).
+std::vector<std::uint32_t> identical_vertices(const Mesh& mesh, bool with_normals) {
+  return first_with_equal_key(mesh.positions.size(), [&](std::uint32_t i, Bits& key) {
+    key.clear();
+    append_bits(key, mesh.positions[i]);
+    if (with_normals && !mesh.normals.empty()) append_bits(key, mesh.normals[i]);
+    if (!mesh.texcoords.empty()) append_bits(key, mesh.texcoords[i]);
+    if (!mesh.colors.empty()) append_bits(key, mesh.colors[i]);
+    if (!mesh.tangents.empty()) append_bits(key, mesh.tangents[i]);
+  });
+}
+
+Welding weld(const Mesh& mesh) {
   Welding w;
   const std::size_t n = mesh.positions.size();
   const std::vector<std::uint32_t> same_position =
@@ -128,15 +141,7 @@ Welding weld(const Mesh& mesh, bool with_normals) {
   for (std::size_t i = 0; i < n; ++i) {  // numbered in order of first appearance
     w.position_id[i] = same_position[i] == i ? w.position_count++ : w.position_id[same_position[i]];
   }
-  // The first vertex with these attributes represents them all.
-  w.vertex_id = first_with_equal_key(n, [&](std::uint32_t i, Bits& key) {
-    key.clear();
-    append_bits(key, mesh.positions[i]);
-    if (with_normals && !mesh.normals.empty()) append_bits(key, mesh.normals[i]);
-    if (!mesh.texcoords.empty()) append_bits(key, mesh.texcoords[i]);
-    if (!mesh.colors.empty()) append_bits(key, mesh.colors[i]);
-    if (!mesh.tangents.empty()) append_bits(key, mesh.tangents[i]);
-  });
+  w.vertex_id = identical_vertices(mesh, false);  // the normals are being replaced
   return w;
 }
 
@@ -226,7 +231,7 @@ void compute_smooth_normals(Mesh& mesh, float crease_angle_degrees) {
   mesh.validate();  // the helpers above trust the indices
   if (mesh.topology == Topology::lines || mesh.positions.empty()) return;
   const std::vector<Triangle> triangles = triangles_of(mesh);
-  const Welding w = weld(mesh, false);  // the normals are replaced
+  const Welding w = weld(mesh);
   std::vector<Face> faces(triangles.size());
   for (std::size_t f = 0; f < triangles.size(); ++f) faces[f] = face_normal(mesh, triangles[f]);
   const auto around = faces_around(triangles, faces, w);
@@ -274,18 +279,18 @@ void compute_smooth_normals(Mesh& mesh, float crease_angle_degrees) {
 
 void join_identical_vertices(Mesh& mesh) {
   mesh.validate();
-  const Welding w = weld(mesh, true);
+  const std::vector<std::uint32_t> first = identical_vertices(mesh, true);
   // The first vertex of each set of identical ones is kept, in their order.
   std::vector<std::uint32_t> new_index(mesh.positions.size());
   std::uint32_t kept = 0;
   for (std::size_t i = 0; i < new_index.size(); ++i) {
-    new_index[i] = w.vertex_id[i] == i ? kept++ : new_index[w.vertex_id[i]];
+    new_index[i] = first[i] == i ? kept++ : new_index[first[i]];
   }
   if (kept == mesh.positions.size()) return;  // nothing to join
   auto compact = [&](auto& attribute) {
     if (attribute.empty()) return;
     for (std::size_t i = 0; i < new_index.size(); ++i) {
-      if (w.vertex_id[i] == i) attribute[new_index[i]] = attribute[i];
+      if (first[i] == i) attribute[new_index[i]] = attribute[i];
     }
     attribute.resize(kept);
   };

@@ -287,12 +287,11 @@ void SampleBatch(const TextureMap& map, TexelBatch& batch) {
   // chain, blend the two nearest levels); level 0 and no fraction for bilinear.
   alignas(32) std::int32_t level[kTexelBatch];
   alignas(32) float fraction[kTexelBatch];
-  for (int j = 0; j < batch.count; j += lanes) {
-    if (filter == Filter::bilinear) {
-      hn::Store(hn::Zero(di), di, level + j);
-      hn::Store(hn::Zero(df), df, fraction + j);
-      continue;
-    }
+  if (filter == Filter::bilinear) {
+    std::fill_n(level, kTexelBatch, 0);
+    std::fill_n(fraction, kTexelBatch, 0.0f);
+  }
+  for (int j = 0; filter == Filter::trilinear && j < batch.count; j += lanes) {
     const FloatV lod = LevelOfDetail(texture, m, batch.slopes ? PixelSlopes(batch, j) : triangle,
                                      hn::LoadU(df, batch.u + j), hn::LoadU(df, batch.v + j),
                                      hn::LoadU(df, batch.w + j));
@@ -303,12 +302,13 @@ void SampleBatch(const TextureMap& map, TexelBatch& batch) {
   }
   // 2. Each pixel's footprint in its level, and in the next one where it blends.
   StoredFootprints near, far;
+  const IntV top_level = hn::Set(di, texture.level_count() - 1);
   for (int j = 0; j < batch.count; j += lanes) {
     const auto [ut, vt] = transformed(j);
     const IntV l0 = hn::Load(di, level + j);
     near.store(j, Bilinear(src, l0, ut, vt));
     if (!hn::AllFalse(df, hn::Gt(hn::Load(df, fraction + j), hn::Zero(df)))) {
-      const IntV l1 = hn::Min(hn::Add(l0, hn::Set(di, 1)), hn::ConvertTo(di, top));
+      const IntV l1 = hn::Min(hn::Add(l0, hn::Set(di, 1)), top_level);
       far.store(j, Bilinear(src, l1, ut, vt));
     }
   }

@@ -11,15 +11,6 @@
 namespace facet::pipeline {
 namespace {
 
-// Whether entry could hide the tile: an occluding draw's triangle whose bounding box holds the
-// tile (a cheap look before the exact tests).
-bool may_hide(const Frame& frame, std::uint32_t entry, int x0, int y0, int x1, int y1) {
-  if (entry & kLineBit) return false;
-  const SetupTriangle& t = frame.triangles[entry];
-  return t.min_x <= x0 && t.min_y <= y0 && t.max_x >= x1 - 1 && t.max_y >= y1 - 1 &&
-         frame.draws[t.draw].pipeline.occludes;
-}
-
 // An entry an occlusion scan may look past: a triangle of a depth-tested draw. Scans stop at
 // anything else, a line (lines are not hidden, nor do they hide) or a draw without the depth
 // test (it would show through whatever is drawn later): then `triangle` is null.
@@ -39,6 +30,15 @@ ScanEntry scan_entry(const Frame& frame, std::uint32_t entry) {
 DepthRange depth_range_within(const SetupTriangle& t, int x0, int y0, int x1, int y1) {
   return depth_range_over(t, std::max(t.min_x, x0), std::max(t.min_y, y0),
                           std::min(t.max_x, x1 - 1), std::min(t.max_y, y1 - 1));
+}
+
+// Whether entry could hide the tile: an occluding draw's triangle whose bounding box holds the
+// tile (a cheap look before the exact tests).
+bool may_hide(const Frame& frame, std::uint32_t entry, int x0, int y0, int x1, int y1) {
+  const ScanEntry e = scan_entry(frame, entry);
+  if (!e.occludes) return false;
+  const SetupTriangle& t = *e.triangle;
+  return t.min_x <= x0 && t.min_y <= y0 && t.max_x >= x1 - 1 && t.max_y >= y1 - 1;
 }
 
 }  // namespace

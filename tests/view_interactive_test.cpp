@@ -173,6 +173,18 @@ ChangedBox changed_box(const Rgba8Image& a, const Rgba8Image& b) {
   return box;
 }
 
+// Where the F1 help changed the window: between its first window shot (without the help) and
+// its second (with it), both expected width x height. An empty box (top > bottom) if the sizes
+// are wrong, after saying so.
+ChangedBox help_box(const Session& s, int width, int height) {
+  const Rgba8Image plain = s.image("facet-window-1.png"), help = s.image("facet-window-2.png");
+  EXPECT_EQ(help.width, width);
+  EXPECT_EQ(help.height, height);
+  if (help.width != width || help.height != height || plain.pixels.size() != help.pixels.size())
+    return {height, -1, width, -1};
+  return changed_box(plain, help);
+}
+
 bool is_black_row(const Rgba8Image& image, int y) {
   for (int x = 0; x < image.width; ++x) {
     const std::uint8_t* p = &image.pixels[(static_cast<std::size_t>(y) * image.width + x) * 4];
@@ -336,11 +348,8 @@ TEST(ViewInput, F1ShowsTheWholeHelpPanelInTheMiddleOfTheWindow) {
                                     "xdotool key F1\nsleep 3\nwindow_shot\nshot\n"
                                     "xdotool key F1\nsleep 3\nwindow_shot\nstop_view\n");
   ASSERT_EQ(s.result.exit_code, 0) << s.result.stderr_text;
-  const Rgba8Image plain = s.image("facet-window-1.png"), help = s.image("facet-window-2.png");
-  ASSERT_EQ(help.width, 1280);
-  ASSERT_EQ(help.height, 720);
-  ASSERT_EQ(plain.pixels.size(), help.pixels.size());
-  const auto [top, bottom, left, right] = changed_box(plain, help);
+  const Rgba8Image plain = s.image("facet-window-1.png");
+  const auto [top, bottom, left, right] = help_box(s, 1280, 720);
   ASSERT_GE(bottom, top) << "F1 changed nothing in the window";
   EXPECT_GT(bottom - top, 300);  // more rows than a 180-pixel frame has: window pixels
   EXPECT_GT(top, 20);            // whole: picture rows above and below it
@@ -360,17 +369,13 @@ TEST(ViewInput, SmallRendersOpenAWindowTheHelpFits) {
                                           "window_shot\nxdotool key F1\nsleep 3\n"
                                           "window_shot\nstop_view\n");
   ASSERT_EQ(s.result.exit_code, 0) << s.result.stderr_text;
-  const Rgba8Image plain = s.image("facet-window-1.png"), help = s.image("facet-window-2.png");
-  ASSERT_EQ(help.width, 640);
-  ASSERT_EQ(help.height, 360);
-  ASSERT_EQ(plain.pixels.size(), help.pixels.size());
-  const auto [top, bottom, left, right] = changed_box(plain, help);
+  const auto [top, bottom, left, right] = help_box(s, 640, 360);
   ASSERT_GE(bottom, top) << "F1 changed nothing in the window";
   EXPECT_GT(bottom - top, 250);  // the whole key table
   EXPECT_GT(top, 0);             // and not cut off: picture rows above and below it
-  EXPECT_LT(bottom, help.height - 1);
+  EXPECT_LT(bottom, 360 - 1);
   EXPECT_GT(left, 0);  // and picture columns left and right of it
-  EXPECT_LT(right, help.width - 1);
+  EXPECT_LT(right, 640 - 1);
 }
 
 // The whole multiple stops at the display: 500x100 would need 2000x400 on a 1920-pixel screen,

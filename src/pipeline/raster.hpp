@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <bit>
 #include <cstdint>
+#include <limits>
 
 #include "pipeline/block_raster.hpp"
 #include "pipeline/fixed_point.hpp"
@@ -103,6 +104,8 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
   constexpr bool kDepthTest = depth_tested<Shading>();
   const int bx0 = (x0 - tile.x0) / kBlockSize, bx1 = (x1 - tile.x0) / kBlockSize;
   const int by0 = (y0 - tile.y0) / kBlockSize, by1 = (y1 - tile.y0) / kBlockSize;
+  // The triangle's depths over its whole box (NaN: unknown, each block is tested).
+  DepthRange box_depth{0.0f, std::numeric_limits<float>::quiet_NaN()};
   if constexpr (kDepthTest) {
     // The blocks' depth bounds over the whole box first: a triangle behind everything drawn
     // there (a far layer drawn after a near one) is done without a block's edge tests.
@@ -112,7 +115,8 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
         farthest_drawn = std::max(farthest_drawn, tile.block_max_depth[by * tile.blocks_x + bx]);
       }
     }
-    if (depth_range_over(t, x0, y0, x1, y1).nearest >= farthest_drawn) return;  // NaN goes on
+    box_depth = depth_range_over(t, x0, y0, x1, y1);
+    if (box_depth.nearest >= farthest_drawn) return;  // NaN goes on
   }
   // Writes that leave every pixel of a block at a depth we know: the block's bound can drop.
   constexpr bool kTightensBound =
@@ -139,7 +143,10 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
       in.px0 = static_cast<float>(block_x) + 0.5f;
       in.py0 = static_cast<float>(block_y) + 0.5f;
       float& max_depth = tile.block_max_depth[by * tile.blocks_x + bx];
-      if constexpr (kDepthTest) {
+      // A block's depths lie within the box's (exact bounds, depth_range_over), so where the
+      // triangle's farthest is in front of the block's bound, no pixel can fail there and its
+      // own bounds need not be computed: every block of a first layer.
+      if (kDepthTest && !(box_depth.farthest < max_depth)) {
         const float nearest = depth_range_over(t, block_x + in.x_begin, block_y + in.y_begin,
                                                block_x + in.x_end - 1, block_y + in.y_end - 1)
                                   .nearest;

@@ -54,20 +54,6 @@ inline std::uint64_t block_pixels_mask(int width, int height) {
   return mask;
 }
 
-// The largest depth of the block pixels in `pixels`, which all passed a depth test (so none is
-// NaN; depths are in [0, 1]). Eight independent maxima, so that the 64 comparisons do not wait
-// on each other: one chain of them was a third of raster_triangle's time on overdraw.
-inline float largest_depth(const BlockFragments& block, std::uint64_t pixels) {
-  float largest[kBlockSize] = {};
-  for (int i = 0; i < kBlockPixels; i += kBlockSize) {
-    for (int k = 0; k < kBlockSize; ++k) {
-      const float z = (pixels >> (i + k) & 1) != 0 ? block.z[i + k] : 0.0f;
-      largest[k] = std::max(largest[k], z);
-    }
-  }
-  return *std::max_element(largest, largest + kBlockSize);
-}
-
 // Rasterizes one triangle into the tile; a template over the shading model and the alpha
 // mode so that the per-pixel loop is specialised once per draw state (shade.cpp builds the
 // table). Small triangles of draws whose pixels may wait join the tile's waiting pixels
@@ -183,10 +169,17 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
       }
       if constexpr (kTightensBound) {
         // Every pixel of the block written by this triangle: their largest depth bounds it.
-        const std::uint64_t all = block_pixels_mask(std::min(kBlockSize, tile.x1 - block_x),
-                                                    std::min(kBlockSize, tile.y1 - block_y));
+        // That is the triangle's farthest over the block's corners (depth_range_over: the
+        // same arithmetic as cover_block's depths, monotonic in x and y), four evaluations
+        // instead of a search of all 64.
+        const int width = std::min(kBlockSize, tile.x1 - block_x);
+        const int height = std::min(kBlockSize, tile.y1 - block_y);
+        const std::uint64_t all = block_pixels_mask(width, height);
         if (block.mask == all && written == std::popcount(all)) {
-          max_depth = std::min(max_depth, largest_depth(block, all));
+          const float farthest =
+              depth_range_over(t, block_x, block_y, block_x + width - 1, block_y + height - 1)
+                  .farthest;
+          max_depth = std::min(max_depth, farthest);
         }
       }
     }

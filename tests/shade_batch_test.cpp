@@ -82,6 +82,8 @@ void randomize(std::mt19937& rng, Draw& d) {
       d.lighting.fog.density = unit(rng) * 0.2f;
   }
   d.lighting.fog.color = {unit(rng), unit(rng), unit(rng)};
+  // Display values decoded to linear, or kept as code / 255 (models.hpp's display_value).
+  d.uniforms.display_referred = rng() % 2 == 0;
 }
 
 template <class Shading>

@@ -85,5 +85,39 @@ TEST(SrgbRow, GivesTheScalarCodesOnEveryTarget) {
   EXPECT_GT(compared, 100000);
 }
 
+// Display-referred frames' resolve: every code's display value (code / 255) back to the code,
+// and every channel of the probe values clamped and rounded as alpha is, on every target.
+TEST(Unorm8Row, RoundsEveryChannelAsAlphaOnEveryTarget) {
+  std::vector<glm::vec4> codes(64);
+  std::vector<float> values = probe_values();
+  for (std::int64_t target : simd_targets()) {
+    ForcedTarget forced(target);
+    for (int first = 0; first < 256; first += 64) {
+      for (int i = 0; i < 64; ++i) {
+        const float shown = static_cast<float>(first + i) * shading::kInverse255;
+        codes[i] = glm::vec4(shown, shown, shown, shown);
+      }
+      std::vector<std::uint8_t> out(4 * 64);
+      pipeline::round_unorm8_row(codes.data(), 64, out.data());
+      for (int i = 0; i < 4 * 64; ++i) {
+        ASSERT_EQ(out[i], first + i / 4) << hwy::TargetName(target) << ", code " << first + i / 4;
+      }
+    }
+    for (int count : {1, 3, 16, 65}) {
+      for (std::size_t start = 0; start + 4 * count <= values.size(); start += 4 * count) {
+        std::vector<std::uint8_t> out(4 * count);
+        pipeline::round_unorm8_row(reinterpret_cast<const glm::vec4*>(&values[start]), count,
+                                   out.data());
+        for (int i = 0; i < 4 * count; ++i) {
+          const float v = values[start + i];
+          const float c = v > 0.0f ? std::min(v, 1.0f) : 0.0f;
+          ASSERT_EQ(out[i], static_cast<std::uint8_t>(c * 255.0f + 0.5f))
+              << hwy::TargetName(target) << ", row of " << count << ": " << v;
+        }
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace facet::test

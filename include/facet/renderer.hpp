@@ -47,6 +47,10 @@ struct FrameStats {
   // resolve time as a share of their whole time, applied to ms_raster).
   double ms_resolve = 0;
   double ms_total = 0;
+  // Every color was a display value, an 8-bit code (as the normals, depth and texcoords
+  // models write): resolve rounded them to bytes instead of sRGB-encoding them, with the same
+  // result.
+  bool display_referred = false;
 };
 
 class Renderer {

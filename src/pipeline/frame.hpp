@@ -84,6 +84,9 @@ struct DrawPipeline {
   bool draws_edges = false;     // wireframe: edges become lines (line.cpp)
   bool depth_tested = true;     // false for debug counters that see through everything
   bool occludes = true;         // opaque, depth-tested and depth-writing (occlusion.hpp)
+  // Writes display values only (shading/models.hpp's DisplayReferred), unblended: frames of
+  // such draws alone skip the sRGB encode (draw.cpp's display_referred_frame).
+  bool display_referred = false;
 };
 
 struct DrawRecord {

@@ -26,11 +26,17 @@ inline void encode_pixel(const shading::SrgbTables& tables, const glm::vec4& c, 
   out[3] = static_cast<std::uint8_t>(a * 255.0f + 0.5f);
 }
 
-// Writes one row of linear colors (scaled by the exposure) in the target's format.
+// Writes one row of linear colors (scaled by the exposure) in the target's format; or of
+// display values, to an 8-bit target, rounded as they are.
 void store_row(Framebuffer& target, std::size_t first_pixel, const glm::vec4* colors, int count,
-               float scale) {
+               float scale, bool display_referred = false) {
   if (target.format() == ColorFormat::rgba8_srgb) {
-    encode_srgb_row(colors, count, scale, target.rgba8().data() + first_pixel * 4);
+    std::uint8_t* out = target.rgba8().data() + first_pixel * 4;
+    if (display_referred) {
+      round_unorm8_row(colors, count, out);
+    } else {
+      encode_srgb_row(colors, count, scale, out);
+    }
   } else {
     float* out = target.rgba32f().data() + first_pixel * 4;
     for (int i = 0; i < count; ++i, out += 4) {
@@ -74,12 +80,13 @@ void fill_background(TileContext& tile, const Background& background) {
   }
 }
 
-void resolve_tile(const TileContext& tile, float scale, Framebuffer& target) {
+void resolve_tile(const TileContext& tile, float scale, bool display_referred,
+                  Framebuffer& target) {
   for (int y = tile.y0; y < tile.y1; ++y) {
     const glm::vec4* color = tile.color + static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride;
     const float* depth = tile.depth + static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride;
     std::size_t row = static_cast<std::size_t>(y) * target.width();
-    store_row(target, row + tile.x0, color, tile.x1 - tile.x0, scale);
+    store_row(target, row + tile.x0, color, tile.x1 - tile.x0, scale, display_referred);
     if (target.has_depth()) {
       std::copy_n(depth, tile.x1 - tile.x0, target.depth().data() + row + tile.x0);
     }

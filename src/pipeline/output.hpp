@@ -28,8 +28,10 @@ void clear_tile(TileContext& tile, const Background& background);
 // write depth (render_tile calls it before anything else, and at the end): most of the sky
 // behind a scene then costs nothing.
 void fill_background(TileContext& tile, const Background& background);
-// Writes the tile to the framebuffer; colors are scaled by `scale` (exposure) first.
-void resolve_tile(const TileContext& tile, float scale, Framebuffer& target);
+// Writes the tile to the framebuffer; colors are scaled by `scale` (exposure) first. In a
+// display-referred frame (draw.cpp) the tile holds display values, which an 8-bit target
+// takes as they are, rounded to 8 bits, instead of sRGB-encoded (scale is then 1).
+void resolve_tile(const TileContext& tile, float scale, bool display_referred, Framebuffer& target);
 // A tile with an empty bin under a plain clear color is written straight from it.
 void resolve_cleared_tile(const TileContext& tile, const glm::vec4& color, float scale,
                           Framebuffer& target);

@@ -63,6 +63,13 @@ constexpr bool additive() {
   return false;
 }
 
+// Models whose fragment() returns display values (shading/models.hpp's DisplayReferred).
+template <class Shading>
+constexpr bool display_referred() {
+  if constexpr (requires { Shading::kDisplayReferred; }) return Shading::kDisplayReferred;
+  return false;
+}
+
 // Models with kEdgeOverlay draw the triangle's edges over their shading: pixels closer to an
 // edge than kOverlayHalfWidth pixels take the draw's wire color. Measured from the edge
 // functions, so the edges sit exactly on the surface: no depth fighting with the fill.

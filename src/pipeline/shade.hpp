@@ -39,6 +39,8 @@ DrawPipeline make_pipeline() {
   }
   p.depth_tested = depth_tested<Shading>();
   p.occludes = p.depth_tested && kAlpha == AlphaMode::opaque && !additive<Shading>();
+  p.display_referred = display_referred<Shading>() && !additive<Shading>() &&
+                       (kAlpha == AlphaMode::opaque || kAlpha == AlphaMode::mask);
   return p;
 }
 

@@ -63,6 +63,30 @@ void EncodeSrgbRow(const glm::vec4* colors, int count, float scale, std::uint8_t
   }
 }
 
+// Every channel as EncodeSrgbRow rounds alpha.
+void RoundUnorm8Row(const glm::vec4* colors, int count, std::uint8_t* rgba) {
+  const FloatTag df;
+  const IntTag di;
+  const hn::Rebind<std::uint8_t, FloatTag> du8;
+  const int lanes = static_cast<int>(hn::Lanes(df));
+  const auto zero = hn::Zero(df), one = hn::Set(df, 1.0f);
+  const auto codes = hn::Set(df, 255.0f), half = hn::Set(df, 0.5f);
+  const float* in = &colors[0].x;
+  const int floats = 4 * count;
+  int j = 0;
+  for (; j + lanes <= floats; j += lanes) {
+    const auto x = hn::LoadU(df, in + j);
+    const auto c = hn::Min(hn::IfThenElseZero(hn::Gt(x, zero), x), one);
+    // A multiplication then an addition, not fused: the scalar rounding exactly.
+    const auto code = hn::ConvertTo(di, hn::Add(hn::Mul(c, codes), half));
+    hn::StoreU(hn::DemoteTo(du8, code), du8, rgba + j);
+  }
+  for (; j < floats; ++j) {
+    const float c = in[j] > 0.0f ? std::min(in[j], 1.0f) : 0.0f;
+    rgba[j] = static_cast<std::uint8_t>(c * 255.0f + 0.5f);
+  }
+}
+
 }  // namespace facet::pipeline::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
 
@@ -70,9 +94,14 @@ HWY_AFTER_NAMESPACE();
 namespace facet::pipeline {
 
 HWY_EXPORT(EncodeSrgbRow);
+HWY_EXPORT(RoundUnorm8Row);
 
 void encode_srgb_row(const glm::vec4* colors, int count, float scale, std::uint8_t* rgba) {
   HWY_DYNAMIC_DISPATCH(EncodeSrgbRow)(colors, count, scale, rgba);
+}
+
+void round_unorm8_row(const glm::vec4* colors, int count, std::uint8_t* rgba) {
+  HWY_DYNAMIC_DISPATCH(RoundUnorm8Row)(colors, count, rgba);
 }
 
 }  // namespace facet::pipeline

@@ -1,9 +1,9 @@
-// Stage: output, the SIMD part of resolve. resolve_tile (output.cpp) turns each tile row of
-// linear colors into 8-bit sRGB here (srgb_row.cpp, compiled for every target Highway supports):
-// SIMD lanes scale, clamp and find each channel's slice of the encoding table
+// Stage: output, the SIMD part of resolve (srgb_row.cpp, compiled for every target Highway
+// supports). resolve_tile (output.cpp) turns each tile row of linear colors into 8-bit sRGB
+// here: SIMD lanes scale, clamp and find each channel's slice of the encoding table
 // (shading/color.hpp), then each channel's code is looked up one at a time (gathers were slower
 // than scalar loads on every CPU tried). Twice as fast as encoding a channel at a time, and
-// bit for bit the same.
+// bit for bit the same. Rows of display values only need rounding (round_unorm8_row).
 #pragma once
 
 #include <cstdint>
@@ -15,5 +15,9 @@ namespace facet::pipeline {
 // shading::encode_srgb8 encodes them; alpha (not scaled) clamped to [0, 1] and rounded to 8
 // bits. NaN encodes as 0.
 void encode_srgb_row(const glm::vec4* colors, int count, float scale, std::uint8_t* rgba);
+
+// rgba[4 i + c] for the count colors, every channel clamped to [0, 1] (NaN to 0) and rounded
+// to 8 bits as encode_srgb_row rounds alpha: the resolve of display values (output.hpp).
+void round_unorm8_row(const glm::vec4* colors, int count, std::uint8_t* rgba);
 
 }  // namespace facet::pipeline

@@ -29,10 +29,12 @@ inline const glm::vec3 kLightDirection{2.0f / 3.0f, 2.0f / 3.0f, 1.0f / 3.0f};
 inline const glm::vec3 kHalfVector{0.40824829f, 0.40824829f, 0.81649658f};
 
 // glmark2 writes its colour to an RGBA8 UNORM buffer: clamp, then round to the nearest of 256
-// codes. facet's 8-bit target is sRGB-encoded at resolve, so the fragment returns the linear
-// value whose sRGB code is exactly that UNORM code: the stored bytes are then glmark2's. That
-// is what facet's debug views return too (models.hpp's display_value).
-inline glm::vec4 unorm8_output(glm::vec3 rgb) { return shading::display_value(rgb); }
+// codes. The fragment returns that code as a display value (models.hpp's display_value, as
+// facet's debug views do): the linear value whose sRGB code is exactly that UNORM code, or in
+// frames of display values alone the code / 255. Either way the stored bytes are glmark2's.
+inline glm::vec4 unorm8_output(glm::vec3 rgb, const DrawUniforms& u) {
+  return shading::display_value(rgb, u);
+}
 
 // pow(x, 100) and pow(x, 10) for x in [0, 1] by repeated squaring: x^100 = x^64 x^32 x^4.
 inline float pow100(float x) {
@@ -48,22 +50,23 @@ inline float pow10(float x) {
 // Color = max(N.L, 0) x MaterialDiffuse (the material's base colour); the pixel shows it.
 // (No batch form: its fragment is a clamp and a table lookup per channel, cheaper than packing
 // the pixels for SIMD; build and gouraud were 7-11 % slower with one.)
-struct BasicLightShading {
+struct BasicLightShading : shading::DisplayReferred {
   static constexpr int kVaryings = 3;
   static constexpr int kNormalSlot = -1;  // the scenes' meshes carry normals
   static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
     const float diffuse = std::max(glm::dot(in.normal, kLightDirection), 0.0f);
     shading::store(out, diffuse * glm::vec3(u.base_color));
   }
-  static glm::vec4 fragment(const Fragment& f, const DrawUniforms&) {
-    return unorm8_output(shading::load3(f.v));
+  static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
+    return unorm8_output(shading::load3(f.v), u);
   }
 };
 
 // light-basic.vert + light-basic-tex.frag (texture): the per-vertex light above times the
 // texel of the material's base colour map (its sampler: bilinear or trilinear, clamped).
 // Layout: colour (3), texture coordinate (2).
-struct BasicLightTextureShading : BatchForm<BatchShader::basic_light_texture> {
+struct BasicLightTextureShading : BatchForm<BatchShader::basic_light_texture>,
+                                  shading::DisplayReferred {
   static constexpr int kVaryings = 5;
   static constexpr int kNormalSlot = -1;
   static constexpr int kTexcoord = 3;
@@ -74,7 +77,7 @@ struct BasicLightTextureShading : BatchForm<BatchShader::basic_light_texture> {
   static constexpr int kBaseColorTexcoord = kTexcoord;
   static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
     const glm::vec4 texel = shading::base_color_texel(f, u, kTexcoord);
-    return unorm8_output(glm::vec3(texel) * shading::load3(f.v));
+    return unorm8_output(glm::vec3(texel) * shading::load3(f.v), u);
   }
 };
 
@@ -91,12 +94,14 @@ struct InterpolatedNormal {
 // light-advanced.vert/.frag (blinn-phong-inf): per pixel, directional light and viewer at
 // infinity; ambient 0.1, diffuse 0.8 x blue, specular 0.8 x white, shininess 100 — constants
 // of the shader, not uniforms.
-struct BlinnPhongInfShading : InterpolatedNormal, BatchForm<BatchShader::blinn_phong_inf> {
-  static glm::vec4 fragment(const Fragment& f, const DrawUniforms&) {
+struct BlinnPhongInfShading : InterpolatedNormal,
+                              BatchForm<BatchShader::blinn_phong_inf>,
+                              shading::DisplayReferred {
+  static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
     const glm::vec3 n = glm::normalize(shading::load3(f.v));
     const float diffuse = 0.8f * std::max(glm::dot(n, kLightDirection), 0.0f);
     const float specular = 0.8f * pow100(std::max(glm::dot(n, kHalfVector), 0.0f));
-    return unorm8_output(glm::vec3(0.1f + specular, 0.1f + specular, 0.1f + specular + diffuse));
+    return unorm8_output(glm::vec3(0.1f + specular, 0.1f + specular, 0.1f + specular + diffuse), u);
   }
 };
 
@@ -114,7 +119,7 @@ struct EyeNormalPosition {
 
 // light-phong.frag with num-lights=1: a point light at eye (0, 1, 0) with diffuse colour 0.8,
 // MaterialDiffuse the material's base colour; ambient 0.1 x 0.2, specular 0.8, shininess 100.
-struct PhongShading : EyeNormalPosition, BatchForm<BatchShader::phong> {
+struct PhongShading : EyeNormalPosition, BatchForm<BatchShader::phong>, shading::DisplayReferred {
   static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
     const glm::vec3 p = shading::load3(f.v + kPosition);
     const glm::vec3 eye_direction = glm::normalize(-p);
@@ -123,15 +128,15 @@ struct PhongShading : EyeNormalPosition, BatchForm<BatchShader::phong> {
     const glm::vec3 reflection = glm::reflect(-light_direction, n);
     const float specular = 0.8f * pow100(std::max(0.0f, glm::dot(reflection, eye_direction)));
     const float diffuse = std::max(0.0f, glm::dot(n, light_direction));
-    return unorm8_output(glm::vec3(specular + 0.02f) + 0.8f * diffuse * glm::vec3(u.base_color));
+    return unorm8_output(glm::vec3(specular + 0.02f) + 0.8f * diffuse * glm::vec3(u.base_color), u);
   }
 };
 
 // light-cel.frag: its own light at eye (4, 3, 1), two-tone green, a black outline where the
 // surface turns away from the viewer, and a thresholded white highlight.
-struct CelShading : EyeNormalPosition, BatchForm<BatchShader::cel> {
+struct CelShading : EyeNormalPosition, BatchForm<BatchShader::cel>, shading::DisplayReferred {
   static constexpr float kLightLength = 5.19615242f;  // length(vec4(4, 3, 1, 1)) = sqrt 27
-  static glm::vec4 fragment(const Fragment& f, const DrawUniforms&) {
+  static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
     const glm::vec3 p = shading::load3(f.v + kPosition);
     const glm::vec3 vertex_light = glm::vec3(4.0f, 3.0f, 1.0f) - p;
     const glm::vec3 n = glm::normalize(shading::load3(f.v));
@@ -145,21 +150,21 @@ struct CelShading : EyeNormalPosition, BatchForm<BatchShader::cel> {
     if (glm::dot(v, n) < glm::mix(0.1f, 0.4f, max_n_dot_l)) color = glm::vec3(0.0f);
     const float specular = pow10(std::max(0.0f, glm::dot(glm::reflect(-l, n), v)));
     if (n_dot_l > 0.0f && attenuation * specular > 0.5f) color = 0.7f + 0.3f * color;
-    return unorm8_output(color);
+    return unorm8_output(color, u);
   }
 };
 
 // bump-normals / bump-poly: white Blinn-Phong, ambient 0.1, diffuse 0.8, specular 0.8 x 0.2.
-inline glm::vec4 bump_light(glm::vec3 n) {
+inline glm::vec4 bump_light(glm::vec3 n, const DrawUniforms& u) {
   const float diffuse = 0.8f * std::max(glm::dot(n, kLightDirection), 0.0f);
   const float specular = 0.16f * pow100(std::max(glm::dot(n, kHalfVector), 0.0f));
-  return unorm8_output(glm::vec3(0.1f + diffuse + specular));
+  return unorm8_output(glm::vec3(0.1f + diffuse + specular), u);
 }
 
 // bump-normals.vert/.frag: the normal comes from the material's base colour map, which holds
 // OBJECT-space normals as rgb = n * 0.5 + 0.5 (sampled NEAREST), and is turned to eye space
 // per pixel by the NormalMatrix. The mesh needs no normals.
-struct BumpNormalsShading : BatchForm<BatchShader::bump_normals> {
+struct BumpNormalsShading : BatchForm<BatchShader::bump_normals>, shading::DisplayReferred {
   static constexpr int kVaryings = 2;
   static constexpr int kNormalSlot = -1;
   static constexpr int kBaseColorTexcoord = 0;  // sampled ahead, a batch at a time
@@ -168,14 +173,16 @@ struct BumpNormalsShading : BatchForm<BatchShader::bump_normals> {
   }
   static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
     const glm::vec3 raw{shading::base_color_texel(f, u, 0)};
-    return bump_light(glm::normalize(u.normal_matrix * (raw * 2.0f - 1.0f)));
+    return bump_light(glm::normalize(u.normal_matrix * (raw * 2.0f - 1.0f)), u);
   }
 };
 
 // bump-poly.vert/.frag (high-poly): the same light with the interpolated vertex normal.
-struct BumpPolyShading : InterpolatedNormal, BatchForm<BatchShader::bump_poly> {
-  static glm::vec4 fragment(const Fragment& f, const DrawUniforms&) {
-    return bump_light(glm::normalize(shading::load3(f.v)));
+struct BumpPolyShading : InterpolatedNormal,
+                         BatchForm<BatchShader::bump_poly>,
+                         shading::DisplayReferred {
+  static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
+    return bump_light(glm::normalize(shading::load3(f.v)), u);
   }
 };
 

@@ -161,32 +161,6 @@ HWY_INLINE BatchV PortablePow(BatchV x, float s) {
   return PortableExp2(hn::Mul(hn::Set(BatchTag(), s), PortableLog2(x)));
 }
 
-// Display values (models.hpp's display_channel; glmark2's output too): a value clamped to
-// [0, 1] (NaN to 0), times 255, plus a half, truncated to its 8-bit code, which
-// DecodeDisplayCodes turns back into the linear value that resolve encodes to that code.
-using DisplayCodes = std::int32_t (*)[kShadeBatch];
-HWY_INLINE void StoreDisplayCodes(const Vec3V& rgb, int j, DisplayCodes codes) {
-  const BatchTag d;
-  const hn::RebindToSigned<BatchTag> di;
-  const BatchV channel[3] = {rgb.x, rgb.y, rgb.z};
-  for (int c = 0; c < 3; ++c) {
-    const BatchV clamped =
-        StdMin(hn::IfThenElseZero(hn::Gt(channel[c], hn::Zero(d)), channel[c]), hn::Set(d, 1.0f));
-    hn::Store(hn::ConvertTo(di, hn::Add(hn::Mul(clamped, hn::Set(d, 255.0f)), hn::Set(d, 0.5f))),
-              di, codes[c] + j);
-  }
-}
-
-// rgba[n] = the decoded codes of pixel n, alpha 1, for n < count: the sRGB table read one
-// channel at a time after the SIMD loop (gathers were slower, as in resolve).
-HWY_INLINE void DecodeDisplayCodes(DisplayCodes codes, int count, float (*rgba)[4]) {
-  const auto& decode = srgb_tables().decode;
-  for (int n = 0; n < count; ++n) {
-    for (int c = 0; c < 3; ++c) rgba[n][c] = decode[codes[c][n]];
-    rgba[n][3] = 1.0f;
-  }
-}
-
 // Writes the first `count` lanes' colors as RGBA (the rest may lie past the batch's end).
 HWY_INLINE void StoreColors(const BatchV color[4], int count, float (*rgba)[4]) {
   const BatchTag d;
@@ -200,6 +174,48 @@ HWY_INLINE void StoreColors(const BatchV color[4], int count, float (*rgba)[4]) 
   alignas(32) float out[4 * 8];
   hn::StoreInterleaved4(color[0], color[1], color[2], color[3], d, out);
   std::memcpy(rgba, out, sizeof(float) * 4 * count);
+}
+
+// Display values (models.hpp's display_channel; glmark2's output too): a value clamped to
+// [0, 1] (NaN to 0), times 255, plus a half, truncated to its 8-bit code, which
+// DecodeDisplayCodes turns into the color the tile stores.
+using DisplayCodes = std::int32_t (*)[kShadeBatch];
+HWY_INLINE void StoreDisplayCodes(const Vec3V& rgb, int j, DisplayCodes codes) {
+  const BatchTag d;
+  const hn::RebindToSigned<BatchTag> di;
+  const BatchV channel[3] = {rgb.x, rgb.y, rgb.z};
+  for (int c = 0; c < 3; ++c) {
+    const BatchV clamped =
+        StdMin(hn::IfThenElseZero(hn::Gt(channel[c], hn::Zero(d)), channel[c]), hn::Set(d, 1.0f));
+    hn::Store(hn::ConvertTo(di, hn::Add(hn::Mul(clamped, hn::Set(d, 255.0f)), hn::Set(d, 0.5f))),
+              di, codes[c] + j);
+  }
+}
+
+// rgba[n] = pixel n's codes as display values (models.hpp's display_channel), alpha 1, for
+// n < count. Decoded, the sRGB table is read one channel at a time after the SIMD loop
+// (gathers were slower, as in resolve); in display-referred frames, code / 255 with SIMD.
+HWY_INLINE void DecodeDisplayCodes(DisplayCodes codes, int count, bool referred, float (*rgba)[4]) {
+  if (referred) {
+    const BatchTag d;
+    const hn::RebindToSigned<BatchTag> di;
+    const int lanes = static_cast<int>(hn::Lanes(d));
+    const BatchV inverse_255 = hn::Set(d, kInverse255);
+    for (int j = 0; j < count; j += lanes) {
+      BatchV color[4];
+      for (int c = 0; c < 3; ++c) {
+        color[c] = hn::Mul(hn::ConvertTo(d, hn::Load(di, codes[c] + j)), inverse_255);
+      }
+      color[3] = hn::Set(d, 1.0f);
+      StoreColors(color, count - j, rgba + j);
+    }
+    return;
+  }
+  const auto& decode = srgb_tables().decode;
+  for (int n = 0; n < count; ++n) {
+    for (int c = 0; c < 3; ++c) rgba[n][c] = decode[codes[c][n]];
+    rgba[n][3] = 1.0f;
+  }
 }
 
 }  // namespace facet::shading::HWY_NAMESPACE

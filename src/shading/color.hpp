@@ -48,6 +48,10 @@ inline std::uint8_t encode_srgb8(const SrgbTables& t, float linear) {
 }
 inline std::uint8_t encode_srgb8(float linear) { return encode_srgb8(srgb_tables(), linear); }
 
+// 1 / 255: an 8-bit code c as the value c * kInverse255 in [0, 1], which c * 255 + 0.5
+// truncates back to c.
+inline constexpr float kInverse255 = 1.0f / 255.0f;
+
 // Decodes an 8-bit sRGB code to linear.
 inline float decode_srgb8(std::uint8_t code) { return kSrgbTables.decode[code]; }
 

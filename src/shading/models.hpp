@@ -9,6 +9,9 @@
 //   face(normal, centre, uniforms, v[3])  optional, per triangle before clipping: may rewrite
 //                                    the three vertices' varyings (flat shading)
 //   fragment(fragment, uniforms) -> linear RGBA
+//   kDisplayReferred  optional (inherit DisplayReferred): fragment() returns display values
+//                   (display_value()); frames of such draws alone skip the sRGB encode
+//                   (pipeline/draw.cpp)
 //   kBaseColorTexcoord  optional: the slot of the texture coordinate the base color map is
 //                   read at, through base_color_texel(); the raster loop then samples the map
 //                   for a batch of pixels at once (SIMD) before calling fragment()
@@ -44,17 +47,26 @@ inline glm::vec3 diffuse_light(glm::vec3 albedo, glm::vec3 normal, glm::vec3 pos
   return albedo * light;
 }
 
-// A display value (already what the screen should show) stored so that resolve's sRGB encode
-// gives it back exactly: debug views show data, not light. Quantizing to the 8-bit code and
-// decoding it through the table is exact and much cheaper than pow().
-// NaN shows as 0 (as shade_batch.cpp's DisplayCode has it).
-inline float display_channel(float v) {
+// A display value (already what the screen should show, as an 8-bit code: debug views show
+// data, not light) as the tile stores it. Usually the code decoded to linear, which resolve's
+// sRGB encode gives back exactly (the table is exact and much cheaper than pow()). In a frame
+// whose every color is a display value (DrawUniforms::display_referred, pipeline/draw.cpp)
+// the code / 255 itself, which resolve turns back into the code without the sRGB tables.
+// NaN shows as 0 (as batch_math-inl.h's StoreDisplayCodes has it).
+inline float display_channel(float v, bool referred) {
   const float clamped = v > 0.0f ? std::min(v, 1.0f) : 0.0f;
-  return decode_srgb8(static_cast<std::uint8_t>(clamped * 255.0f + 0.5f));
+  const auto code = static_cast<std::uint8_t>(clamped * 255.0f + 0.5f);
+  return referred ? static_cast<float>(code) * kInverse255 : decode_srgb8(code);
 }
-inline glm::vec4 display_value(glm::vec3 shown) {
-  return {display_channel(shown.x), display_channel(shown.y), display_channel(shown.z), 1.0f};
+inline glm::vec4 display_value(glm::vec3 shown, const DrawUniforms& u) {
+  const bool referred = u.display_referred;
+  return {display_channel(shown.x, referred), display_channel(shown.y, referred),
+          display_channel(shown.z, referred), 1.0f};
 }
+// The mark of models whose fragment() returns display_value()s (kDisplayReferred above).
+struct DisplayReferred {
+  static constexpr bool kDisplayReferred = true;
+};
 
 // base color x vertex color x base color map, no lighting.
 struct UnlitShading : BatchForm<BatchModel::unlit> {
@@ -118,37 +130,37 @@ struct WireOverlayShading : LambertShading {
 };
 
 // Debug view: linear view depth, near -> white, far -> black.
-struct DepthShading {
+struct DepthShading : DisplayReferred {
   static constexpr int kVaryings = 0;
   static constexpr int kNormalSlot = -1;
   static void vertex(const VertexInput&, const DrawUniforms&, float*) {}
   static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
     float t = (f.w - u.near_plane) / (u.far_plane - u.near_plane);
-    return display_value(glm::vec3(std::clamp(1.0f - t, 0.0f, 1.0f)));
+    return display_value(glm::vec3(std::clamp(1.0f - t, 0.0f, 1.0f)), u);
   }
 };
 
 // Debug view: world-space normal, renormalized per pixel, shown as n * 0.5 + 0.5.
-struct NormalsShading : BatchForm<BatchModel::normals> {
+struct NormalsShading : BatchForm<BatchModel::normals>, DisplayReferred {
   static constexpr int kVaryings = 3;
   static constexpr int kNormalSlot = 0;
   static void vertex(const VertexInput& in, const DrawUniforms&, float* out) {
     store(out, in.normal);
   }
-  static glm::vec4 fragment(const Fragment& f, const DrawUniforms&) {
-    return display_value(safe_normalize(load3(f.v)) * 0.5f + 0.5f);
+  static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
+    return display_value(safe_normalize(load3(f.v)) * 0.5f + 0.5f, u);
   }
 };
 
 // Debug view: texture coordinates as red (u) and green (v), fractional part.
-struct TexcoordShading {
+struct TexcoordShading : DisplayReferred {
   static constexpr int kVaryings = 2;
   static constexpr int kNormalSlot = -1;
   static void vertex(const VertexInput& in, const DrawUniforms&, float* out) {
     store(out, in.texcoord);
   }
-  static glm::vec4 fragment(const Fragment& f, const DrawUniforms&) {
-    return display_value({f.v[0] - std::floor(f.v[0]), f.v[1] - std::floor(f.v[1]), 0.0f});
+  static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
+    return display_value({f.v[0] - std::floor(f.v[0]), f.v[1] - std::floor(f.v[1]), 0.0f}, u);
   }
 };
 

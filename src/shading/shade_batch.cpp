@@ -117,7 +117,7 @@ HWY_INLINE Vec3V SpecularLight(const DrawUniforms& u, bool blinn, const Vec3V& n
 
 // NormalsShading::fragment(): display_value(safe_normalize(n) * 0.5 + 0.5), then fog, if any,
 // on the decoded colors in SIMD again.
-void ShadeNormals(const ShadeInput& in, float (*rgba)[4]) {
+void ShadeNormals(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
   const FloatTag d;
   const int lanes = static_cast<int>(hn::Lanes(d));
   const FloatV half = hn::Set(d, 0.5f);
@@ -128,7 +128,7 @@ void ShadeNormals(const ShadeInput& in, float (*rgba)[4]) {
                        hn::Add(hn::Mul(n.z, half), half)},
                       j, codes);
   }
-  DecodeDisplayCodes(codes, in.count, rgba);
+  DecodeDisplayCodes(codes, in.count, u.display_referred, rgba);
   if (in.fog == nullptr || in.fog->mode == FogMode::none) return;
   for (int j = 0; j < in.count; j += lanes) {
     alignas(64) float padded[8][4] = {};  // rgba may end before the vector does
@@ -142,7 +142,7 @@ void ShadeNormals(const ShadeInput& in, float (*rgba)[4]) {
 }
 
 void ShadeBatch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
-  if (model == BatchModel::normals) return ShadeNormals(in, rgba);
+  if (model == BatchModel::normals) return ShadeNormals(u, in, rgba);
   const FloatTag d;
   const int lanes = static_cast<int>(hn::Lanes(d));
   const Material& m = *u.material;

@@ -36,6 +36,9 @@ struct DrawUniforms {
   const Lighting* lighting = nullptr;  // fog and environment
   float near_plane = 0.1f;
   float far_plane = 100.0f;
+  // Every color of the frame is a display value, stored as code / 255 (models.hpp's
+  // display_value; set when the frame runs, pipeline/draw.cpp).
+  bool display_referred = false;
 };
 
 // One vertex as the vertex functions see it: object-space attributes already fetched.

@@ -1,0 +1,149 @@
+// Frames whose every color is a display value (the normals, depth and texcoords views, the
+// glmark2 scenes' models) keep those values as code / 255 in their tiles and round them at
+// resolve, instead of storing decoded linear values that resolve sRGB-encodes back to the same
+// codes (pipeline/draw.cpp's display_referred_frame). The bytes must not change: each frame
+// here is also rendered to a float target, which never takes that path, and encoded as resolve
+// encodes; the 8-bit frame must be that, byte for byte, and must have taken the path.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <functional>
+#include <glm/gtc/matrix_transform.hpp>
+#include <string>
+
+#include "facet/framebuffer.hpp"
+#include "facet/procedural.hpp"
+#include "facet/renderer.hpp"
+#include "facet/teapot.hpp"
+#include "scene/bench_scenes.hpp"
+#include "shading/color.hpp"
+#include "support/render_helpers.hpp"
+
+namespace facet::test {
+namespace {
+
+constexpr int kWidth = 320, kHeight = 180;
+
+// Records one frame into a renderer (begin_frame and draws).
+using Record = std::function<void(Renderer&)>;
+
+// The frame rendered to an 8-bit target; `referred` says whether it took the display path.
+std::vector<std::uint8_t> render_8bit(const Record& record, const RenderSettings& settings,
+                                      bool& referred) {
+  Renderer renderer(settings);
+  Framebuffer frame(kWidth, kHeight);
+  record(renderer);
+  renderer.finish(frame);
+  referred = renderer.stats().display_referred;
+  return frame.rgba8();
+}
+
+// The frame rendered to a float target, then encoded as encode_srgb_row promises (sRGB color,
+// alpha rounded): what the 8-bit target held before display-referred frames.
+std::vector<std::uint8_t> render_float_encoded(const Record& record,
+                                               const RenderSettings& settings) {
+  Renderer renderer(settings);
+  Framebuffer frame(kWidth, kHeight, ColorFormat::rgba32f);
+  record(renderer);
+  renderer.finish(frame);
+  EXPECT_FALSE(renderer.stats().display_referred);
+  std::vector<std::uint8_t> bytes(frame.rgba32f().size());
+  for (std::size_t i = 0; i < bytes.size(); ++i) {
+    const float v = frame.rgba32f()[i];
+    if (i % 4 == 3) {
+      bytes[i] = static_cast<std::uint8_t>((v > 0.0f ? std::min(v, 1.0f) : 0.0f) * 255.0f + 0.5f);
+    } else {
+      bytes[i] = shading::encode_srgb8(v);
+    }
+  }
+  return bytes;
+}
+
+// Compares the two renders of `record`; returns whether the 8-bit one was display-referred.
+bool expect_same_bytes(const Record& record, const RenderSettings& settings,
+                       const std::string& what) {
+  bool referred = false;
+  const std::vector<std::uint8_t> fast = render_8bit(record, settings, referred);
+  const std::vector<std::uint8_t> reference = render_float_encoded(record, settings);
+  EXPECT_EQ(fast.size(), reference.size());
+  std::size_t differing = 0, first = 0;
+  for (std::size_t i = 0; i < std::min(fast.size(), reference.size()); ++i) {
+    if (fast[i] != reference[i] && differing++ == 0) first = i;
+  }
+  EXPECT_EQ(differing, 0u) << what << ": first at byte " << first << " (pixel " << first / 4
+                           << ", channel " << first % 4 << "): " << int{fast[first]} << " vs "
+                           << int{reference[first]};
+  return referred;
+}
+
+// A teapot and a box in a model's shading, in front of a clear color with an odd alpha.
+Record debug_view_scene(ShadingModel model, Lighting lighting = {}) {
+  return [model, lighting](Renderer& renderer) {
+    static const Mesh pot = teapot(6), crate = box({1.0f, 0.6f, 0.8f});
+    renderer.begin_frame(Camera::look_at({2.5f, 1.8f, 3.5f}, {0.0f, 0.3f, 0.0f}, {0, 1, 0}, 45.0f,
+                                         static_cast<float>(kWidth) / kHeight, 0.1f, 20.0f),
+                         lighting);
+    Material material;
+    material.shading = model;
+    renderer.draw(pot, material);
+    renderer.draw(crate, material, glm::translate(glm::mat4(1.0f), {-1.2f, 0.0f, -0.5f}));
+  };
+}
+
+RenderSettings with_clear(glm::vec4 clear) {
+  RenderSettings settings;
+  settings.clear_color = clear;
+  return settings;
+}
+
+TEST(DisplayReferred, DebugViewsGiveTheEncodedBytes) {
+  for (ShadingModel model : {ShadingModel::normals, ShadingModel::depth, ShadingModel::texcoords}) {
+    const std::string name(to_string(model));
+    EXPECT_TRUE(
+        expect_same_bytes(debug_view_scene(model), with_clear({0.3f, 0.55f, 0.07f, 0.6f}), name))
+        << name << " did not take the display-referred path";
+  }
+}
+
+TEST(DisplayReferred, Glmark2ScenesGiveTheEncodedBytes) {
+  if (!std::filesystem::is_directory("/usr/share/glmark2/models")) {
+    GTEST_SKIP() << "/usr/share/glmark2 missing (Debian package glmark2-data)";
+  }
+  for (const std::string& name : bench::glmark2_scene_names()) {
+    const auto scene = bench::make_glmark2_scene(name);
+    ASSERT_NE(scene, nullptr) << name;
+    const Record record = [&](Renderer& renderer) {
+      scene->record(renderer, 0.7, static_cast<float>(kWidth) / kHeight);
+    };
+    EXPECT_TRUE(expect_same_bytes(record, with_clear(scene->clear_color()), name))
+        << name << " did not take the display-referred path";
+  }
+}
+
+// What needs linear colors keeps them: fog, a lit draw among display ones, exposure.
+TEST(DisplayReferred, FramesThatNeedLinearColorsKeepThem) {
+  Lighting fogged;
+  fogged.fog.mode = FogMode::linear;
+  fogged.fog.start = 2.0f, fogged.fog.end = 8.0f;
+  EXPECT_FALSE(expect_same_bytes(debug_view_scene(ShadingModel::normals, fogged),
+                                 with_clear({0.2f, 0.2f, 0.2f, 1.0f}), "fog"));
+
+  const Record mixed = [](Renderer& renderer) {
+    debug_view_scene(ShadingModel::normals)(renderer);
+    static const Mesh ball = uv_sphere(0.4f);
+    Material lit;
+    lit.shading = ShadingModel::lambert;
+    renderer.draw(ball, lit, glm::translate(glm::mat4(1.0f), {1.0f, 0.2f, 0.8f}));
+  };
+  EXPECT_FALSE(expect_same_bytes(mixed, with_clear({0.2f, 0.2f, 0.2f, 1.0f}), "mixed"));
+
+  RenderSettings brighter = with_clear({0.2f, 0.2f, 0.2f, 1.0f});
+  brighter.exposure = 0.5f;
+  bool referred = true;
+  render_8bit(debug_view_scene(ShadingModel::normals), brighter, referred);
+  EXPECT_FALSE(referred);
+}
+
+}  // namespace
+}  // namespace facet::test

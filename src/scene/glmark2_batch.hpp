@@ -17,7 +17,8 @@ enum class BatchShader {
 };
 
 // Linear RGBA of every pixel of `in`, as the shader's fragment() gives it. glmark2's shaders
-// have no fog: the models decline fogged draws (BatchForm below).
+// have no fog: the models decline fogged draws (BatchForm below). rgba holds kShadeBatch
+// colors, as for shading::shade_batch.
 void shade_glmark2_batch(BatchShader shader, const shading::DrawUniforms& u,
                          const shading::ShadeInput& in, float (*rgba)[4]);
 

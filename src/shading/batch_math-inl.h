@@ -161,19 +161,12 @@ HWY_INLINE BatchV PortablePow(BatchV x, float s) {
   return PortableExp2(hn::Mul(hn::Set(BatchTag(), s), PortableLog2(x)));
 }
 
-// Writes the first `count` lanes' colors as RGBA (the rest may lie past the batch's end).
-HWY_INLINE void StoreColors(const BatchV color[4], int count, float (*rgba)[4]) {
-  const BatchTag d;
-  const int lanes = static_cast<int>(hn::Lanes(d));
-  if (count >= lanes) {  // a whole vector, the common case, straight to rgba
-    hn::StoreInterleaved4(color[0], color[1], color[2], color[3], d, &rgba[0][0]);
-    return;
-  }
-  // The batch's last few pixels: a copy of variable size, which GCC makes a "rep movs" (tens
-  // of cycles to start; when every vector took this path it was two thirds of ShadeBatch).
-  alignas(32) float out[4 * 8];
-  hn::StoreInterleaved4(color[0], color[1], color[2], color[3], d, out);
-  std::memcpy(rgba, out, sizeof(float) * 4 * count);
+// Writes a vector's colors as RGBA from rgba[0] on. A batch's colors array holds kShadeBatch
+// entries, a whole number of vectors (shade_batch.hpp), so the lanes past the batch's count
+// write scratch entries. (A copy of just the batch's last few colors, of variable size, was a
+// "rep movs": tens of cycles to start, two thirds of ShadeBatch when every vector took it.)
+HWY_INLINE void StoreColors(const BatchV color[4], float (*rgba)[4]) {
+  hn::StoreInterleaved4(color[0], color[1], color[2], color[3], BatchTag(), &rgba[0][0]);
 }
 
 // Display values (models.hpp's display_channel; glmark2's output too): a value clamped to
@@ -207,7 +200,7 @@ HWY_INLINE void DecodeDisplayCodes(DisplayCodes codes, int count, bool referred,
         color[c] = hn::Mul(hn::ConvertTo(d, hn::Load(di, codes[c] + j)), inverse_255);
       }
       color[3] = hn::Set(d, 1.0f);
-      StoreColors(color, count - j, rgba + j);
+      StoreColors(color, rgba + j);
     }
     return;
   }

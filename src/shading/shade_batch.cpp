@@ -131,13 +131,13 @@ void ShadeNormals(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4])
   DecodeDisplayCodes(codes, in.count, u.display_referred, rgba);
   if (in.fog == nullptr || in.fog->mode == FogMode::none) return;
   for (int j = 0; j < in.count; j += lanes) {
-    alignas(64) float padded[8][4] = {};  // rgba may end before the vector does
+    alignas(64) float padded[8][4] = {};  // rgba past the batch's count may be unset
     const int active = std::min(lanes, in.count - j);
     std::memcpy(padded, rgba + j, sizeof(float) * 4 * active);
     FloatV color[4];
     hn::LoadInterleaved4(d, &padded[0][0], color[0], color[1], color[2], color[3]);
     Fogged(*in.fog, hn::Load(d, in.w + j), color);
-    StoreColors(color, active, rgba + j);
+    StoreColors(color, rgba + j);
   }
 }
 
@@ -184,7 +184,7 @@ void ShadeBatch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, f
     if (in.fog != nullptr && in.fog->mode != FogMode::none) {
       Fogged(*in.fog, hn::Load(d, in.w + j), color);
     }
-    StoreColors(color, in.count - j, rgba + j);
+    StoreColors(color, rgba + j);
   }
 }
 

@@ -33,6 +33,8 @@ struct ShadeInput {
 bool batch_shades(BatchModel model, const DrawUniforms& u);
 
 // Linear RGBA of every pixel, as the model's fragment() gives it (then fogged, if in.fog).
+// rgba holds kShadeBatch colors: those from in.count up to the next multiple of 8 are
+// written too, as scratch.
 void shade_batch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]);
 
 // What a shading model provides to be shaded a batch at a time (models.hpp; the raster loop,

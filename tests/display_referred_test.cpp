@@ -11,6 +11,7 @@
 #include <functional>
 #include <glm/gtc/matrix_transform.hpp>
 #include <string>
+#include <vector>
 
 #include "facet/framebuffer.hpp"
 #include "facet/procedural.hpp"
@@ -18,7 +19,6 @@
 #include "facet/teapot.hpp"
 #include "scene/bench_scenes.hpp"
 #include "shading/color.hpp"
-#include "support/render_helpers.hpp"
 
 namespace facet::test {
 namespace {

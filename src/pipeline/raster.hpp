@@ -130,8 +130,8 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
       in.py0 = static_cast<float>(block_y) + 0.5f;
       float& max_depth = tile.block_max_depth[by * tile.blocks_x + bx];
       // A block's depths lie within the box's (exact bounds, depth_range_over), so where the
-      // triangle's farthest is in front of the block's bound, no pixel can fail there and its
-      // own bounds need not be computed: every block of a first layer.
+      // triangle's farthest is in front of the block's bound, the test below cannot reject the
+      // block and is not computed: every block of a first layer.
       if (kDepthTest && !(box_depth.farthest < max_depth)) {
         const float nearest = depth_range_over(t, block_x + in.x_begin, block_y + in.y_begin,
                                                block_x + in.x_end - 1, block_y + in.y_end - 1)

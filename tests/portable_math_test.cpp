@@ -58,6 +58,16 @@ TEST(PortableMath, LodLog2IsWithinAThousandthOfALevel) {
   }
 }
 
+// The batch sampler takes a footprint of at most one texel (rho^2 <= 1) as magnified without
+// the logarithm (texel_batch.cpp): lod_log2 must not be above 0 there. Below 1/2 it is about
+// -2 + log2(m) <= -1; in [1/2, 1] every float is checked.
+TEST(PortableMath, LodLog2IsNotPositiveUpToOne) {
+  for (float x = 0.5f; x <= 1.0f; x = std::nextafter(x, 2.0f)) {
+    ASSERT_LE(lod_log2(x), 0.0f) << "x = " << x;
+  }
+  for (float x = 1e-30f; x < 0.5f; x *= 1.001f) ASSERT_LT(lod_log2(x), -0.99f) << "x = " << x;
+}
+
 TEST(PortableMath, LodLog2OfSpecialValues) {
   EXPECT_EQ(lod_log2(0.0f), -kInf);
   EXPECT_EQ(lod_log2(kInf), kInf);

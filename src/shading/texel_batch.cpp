@@ -255,6 +255,12 @@ HWY_INLINE void LevelsOfDetail(const Texture& texture, const glm::mat3& m, const
   for (int k = 0; k < W; ++k) {
     const FloatV rho2 = StdMax(hn::Add(hn::Mul(xu[k], xu[k]), hn::Mul(xv[k], xv[k])),
                                hn::Add(hn::Mul(yu[k], yu[k]), hn::Mul(yv[k], yv[k])));
+    // Magnified everywhere (a footprint of at most one texel): the logarithm would be at most
+    // 0 (lod_log2 rises and gives 0 for 1), which the caller takes as level 0 all the same.
+    if (hn::AllTrue(df, hn::Le(rho2, hn::Set(df, 1.0f)))) {
+      lod[k] = hn::Zero(df);
+      continue;
+    }
     lod[k] = hn::Mul(hn::Set(df, 0.5f), LodLog2(rho2));
   }
 }

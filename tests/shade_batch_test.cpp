@@ -121,14 +121,20 @@ void expect_same_bits() {
       if (textured) draw.material.base_color_map.texture = missing_texture();
       const float(*texel)[4] = textured ? in.texel : nullptr;
       if (!Shading::batch_shades(draw.uniforms)) continue;
-      const int count = 1 + static_cast<int>(rng() % kShadeBatch);
-      alignas(64) float rgba[kShadeBatch][4];
-      Shading::fragment_batch(draw.uniforms, {count, in.w, in.v, texel, &draw.lighting.fog}, rgba);
+      // Every fourth round a whole block into rows 13 colors apart, as into a tile.
+      const bool rows = round % 4 == 1;
+      const int count = rows ? kShadeBatch : 1 + static_cast<int>(rng() % kShadeBatch);
+      const int stride = rows ? 13 : 8;
+      alignas(64) float rgba[8 * 13][4];
+      shading::ShadeInput input{count, in.w, in.v, texel, &draw.lighting.fog};
+      input.rgba_row_stride = stride;
+      Shading::fragment_batch(draw.uniforms, input, rgba);
       for (int n = 0; n < count; ++n) {
         const glm::vec4 expected = scalar_fragment<Shading>(in, texel, n, draw.uniforms);
-        ASSERT_EQ(std::memcmp(&expected, rgba[n], sizeof expected), 0)
+        const float* color = rgba[(n / 8) * stride + n % 8];
+        ASSERT_EQ(std::memcmp(&expected, color, sizeof expected), 0)
             << hwy::TargetName(target) << ", round " << round << ", pixel " << n << ": ("
-            << rgba[n][0] << ", " << rgba[n][1] << ", " << rgba[n][2] << ", " << rgba[n][3]
+            << color[0] << ", " << color[1] << ", " << color[2] << ", " << color[3]
             << "), fragment() gives (" << expected.r << ", " << expected.g << ", " << expected.b
             << ", " << expected.a << ")";
         ++compared;

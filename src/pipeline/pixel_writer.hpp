@@ -260,17 +260,18 @@ class PixelWriter {
 
   // A block whose 64 pixels are all covered and pass the depth test, at frame pixel
   // (block_x, block_y): sampled, shaded and fogged with SIMD straight from cover_block's
-  // arrays, then copied into the tile a row at a time; no per-pixel step. Only when
-  // full_blocks().
+  // arrays into the tile's rows (its depths copied a row at a time); no per-pixel step. Only
+  // when full_blocks().
   void shade_full_block(const BlockFragments& block, int block_x, int block_y) {
     if constexpr (kFullBlocks) {
+      static_assert(kBlockSize == 8, "ShadeInput::rgba_row_stride counts rows of 8 pixels");
       const Texels texels = sample_base_map(kBlockPixels, block.v, block.w);
-      alignas(64) float colors[kBlockPixels][4];
-      Shading::fragment_batch(uniforms_, {kBlockPixels, block.w, block.v, texels, &fog_}, colors);
       const std::ptrdiff_t first = index(block_x, block_y);
+      shading::ShadeInput in{kBlockPixels, block.w, block.v, texels, &fog_};
+      in.rgba_row_stride = tile_.stride;
+      Shading::fragment_batch(uniforms_, in, reinterpret_cast<float(*)[4]>(&tile_.color[first]));
       for (int row = 0; row < kBlockSize; ++row) {
         const std::ptrdiff_t pixel = first + static_cast<std::ptrdiff_t>(row) * tile_.stride;
-        std::memcpy(&tile_.color[pixel], colors[row * kBlockSize], sizeof(float) * 4 * kBlockSize);
         std::memcpy(&tile_.depth[pixel], block.z + row * kBlockSize, sizeof(float) * kBlockSize);
       }
       shaded += kBlockPixels;

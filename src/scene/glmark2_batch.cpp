@@ -146,7 +146,7 @@ void ShadeGlmark2Batch(BatchShader shader, const DrawUniforms& u, const ShadeInp
       }
     }
   }
-  DecodeDisplayCodes(codes, in.count, u.display_referred, rgba);
+  DecodeDisplayCodes(codes, in.count, u.display_referred, in.rgba_row_stride, rgba);
 }
 
 }  // namespace facet::bench::glmark2::HWY_NAMESPACE

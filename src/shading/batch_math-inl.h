@@ -161,6 +161,12 @@ HWY_INLINE BatchV PortablePow(BatchV x, float s) {
   return PortableExp2(hn::Mul(hn::Set(BatchTag(), s), PortableLog2(x)));
 }
 
+// Where pixel n's color goes (ShadeInput::rgba_row_stride): a vector of 8 lanes or fewer
+// starting at a multiple of its width stays within one row of 8.
+HWY_INLINE float (*ColorAt(float (*rgba)[4], int row_stride, int n))[4] {
+  return rgba + (n / 8) * row_stride + n % 8;
+}
+
 // Writes a vector's colors as RGBA from rgba[0] on. A batch's colors array holds kShadeBatch
 // entries, a whole number of vectors (shade_batch.hpp), so the lanes past the batch's count
 // write scratch entries. (A copy of just the batch's last few colors, of variable size, was a
@@ -185,10 +191,11 @@ HWY_INLINE void StoreDisplayCodes(const Vec3V& rgb, int j, DisplayCodes codes) {
   }
 }
 
-// rgba[n] = pixel n's codes as display values (models.hpp's display_channel), alpha 1, for
-// n < count. Decoded, the sRGB table is read one channel at a time after the SIMD loop
+// Pixel n's color (ColorAt) = its codes as display values (models.hpp's display_channel),
+// alpha 1, for n < count. Decoded, the sRGB table is read one channel at a time after the SIMD loop
 // (gathers were slower, as in resolve); in display-referred frames, code / 255 with SIMD.
-HWY_INLINE void DecodeDisplayCodes(DisplayCodes codes, int count, bool referred, float (*rgba)[4]) {
+HWY_INLINE void DecodeDisplayCodes(DisplayCodes codes, int count, bool referred, int row_stride,
+                                   float (*rgba)[4]) {
   if (referred) {
     const BatchTag d;
     const hn::RebindToSigned<BatchTag> di;
@@ -200,14 +207,15 @@ HWY_INLINE void DecodeDisplayCodes(DisplayCodes codes, int count, bool referred,
         color[c] = hn::Mul(hn::ConvertTo(d, hn::Load(di, codes[c] + j)), inverse_255);
       }
       color[3] = hn::Set(d, 1.0f);
-      StoreColors(color, rgba + j);
+      StoreColors(color, ColorAt(rgba, row_stride, j));
     }
     return;
   }
   const auto& decode = srgb_tables().decode;
   for (int n = 0; n < count; ++n) {
-    for (int c = 0; c < 3; ++c) rgba[n][c] = decode[codes[c][n]];
-    rgba[n][3] = 1.0f;
+    float* out = *ColorAt(rgba, row_stride, n);
+    for (int c = 0; c < 3; ++c) out[c] = decode[codes[c][n]];
+    out[3] = 1.0f;
   }
 }
 

@@ -128,16 +128,16 @@ void ShadeNormals(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4])
                        hn::Add(hn::Mul(n.z, half), half)},
                       j, codes);
   }
-  DecodeDisplayCodes(codes, in.count, u.display_referred, rgba);
+  DecodeDisplayCodes(codes, in.count, u.display_referred, in.rgba_row_stride, rgba);
   if (in.fog == nullptr || in.fog->mode == FogMode::none) return;
   for (int j = 0; j < in.count; j += lanes) {
     alignas(64) float padded[8][4] = {};  // rgba past the batch's count may be unset
     const int active = std::min(lanes, in.count - j);
-    std::memcpy(padded, rgba + j, sizeof(float) * 4 * active);
+    std::memcpy(padded, ColorAt(rgba, in.rgba_row_stride, j), sizeof(float) * 4 * active);
     FloatV color[4];
     hn::LoadInterleaved4(d, &padded[0][0], color[0], color[1], color[2], color[3]);
     Fogged(*in.fog, hn::Load(d, in.w + j), color);
-    StoreColors(color, rgba + j);
+    StoreColors(color, ColorAt(rgba, in.rgba_row_stride, j));
   }
 }
 
@@ -184,7 +184,7 @@ void ShadeBatch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, f
     if (in.fog != nullptr && in.fog->mode != FogMode::none) {
       Fogged(*in.fog, hn::Load(d, in.w + j), color);
     }
-    StoreColors(color, rgba + j);
+    StoreColors(color, ColorAt(rgba, in.rgba_row_stride, j));
   }
 }
 

@@ -26,6 +26,9 @@ struct ShadeInput {
   const float (*v)[kShadeBatch] = nullptr;
   const float (*base_texel)[4] = nullptr;  // the base color map's texel per pixel, or null
   const Fog* fog = nullptr;  // fog to apply to the colors (fog.hpp's apply_fog), or null
+  // Where pixel n's color goes: rgba[(n / 8) * rgba_row_stride + n % 8]. 8 for a packed array;
+  // a whole 8x8 block (count 64) may go straight into a tile's rows with the tile's stride.
+  int rgba_row_stride = 8;
 };
 
 // Whether shade_batch can shade this draw with this model: every light directional, no
@@ -33,8 +36,8 @@ struct ShadeInput {
 bool batch_shades(BatchModel model, const DrawUniforms& u);
 
 // Linear RGBA of every pixel, as the model's fragment() gives it (then fogged, if in.fog).
-// rgba holds kShadeBatch colors: those from in.count up to the next multiple of 8 are
-// written too, as scratch.
+// rgba holds kShadeBatch colors (with in.rgba_row_stride 8): those from in.count up to the
+// next multiple of 8 are written too, as scratch.
 void shade_batch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]);
 
 // What a shading model provides to be shaded a batch at a time (models.hpp; the raster loop,

@@ -36,7 +36,7 @@ std::vector<std::uint8_t> to_rgba8(const Framebuffer& fb) {
   std::vector<std::uint8_t> out(f.size());
   for (std::size_t i = 0; i < f.size(); i += 4) {
     for (int c = 0; c < 3; ++c) out[i + c] = shading::encode_srgb8(f[i + c]);
-    out[i + 3] = static_cast<std::uint8_t>(std::clamp(f[i + 3], 0.0f, 1.0f) * 255.0f + 0.5f);
+    out[i + 3] = shading::encode_unorm8(f[i + 3]);
   }
   return out;
 }

@@ -34,9 +34,7 @@ glm::vec3 heat(float count, float base) {
 void store_display(Framebuffer& target, std::size_t pixel, glm::vec3 shown) {
   if (target.format() == ColorFormat::rgba8_srgb) {
     std::uint8_t* out = target.rgba8().data() + pixel * 4;
-    for (int c = 0; c < 3; ++c) {
-      out[c] = static_cast<std::uint8_t>(std::clamp(shown[c], 0.0f, 1.0f) * 255.0f + 0.5f);
-    }
+    for (int c = 0; c < 3; ++c) out[c] = shading::encode_unorm8(shown[c]);
     out[3] = 255;
   } else {
     float* out = target.rgba32f().data() + pixel * 4;
@@ -50,8 +48,7 @@ void tint_display(Framebuffer& target, std::size_t pixel, glm::vec3 tint, float 
   if (target.format() == ColorFormat::rgba8_srgb) {
     std::uint8_t* out = target.rgba8().data() + pixel * 4;
     for (int c = 0; c < 3; ++c) {
-      float mixed = glm::mix(out[c] / 255.0f, tint[c], amount);
-      out[c] = static_cast<std::uint8_t>(std::clamp(mixed, 0.0f, 1.0f) * 255.0f + 0.5f);
+      out[c] = shading::encode_unorm8(glm::mix(out[c] / 255.0f, tint[c], amount));
     }
   } else {
     float* out = target.rgba32f().data() + pixel * 4;

@@ -21,9 +21,7 @@ inline void encode_pixel(const shading::SrgbTables& tables, const glm::vec4& c, 
   out[0] = shading::encode_srgb8(tables, c.r * scale);
   out[1] = shading::encode_srgb8(tables, c.g * scale);
   out[2] = shading::encode_srgb8(tables, c.b * scale);
-  // Alpha is linear coverage, never sRGB; clamped as encode_srgb_row does (NaN to 0).
-  const float a = c.a > 0.0f ? std::min(c.a, 1.0f) : 0.0f;
-  out[3] = static_cast<std::uint8_t>(a * 255.0f + 0.5f);
+  out[3] = shading::encode_unorm8(c.a);  // alpha is linear coverage, never sRGB
 }
 
 // Writes one row of linear colors (scaled by the exposure) in the target's format; or of

@@ -58,12 +58,12 @@ void EncodeSrgbRow(const glm::vec4* colors, int count, float scale, std::uint8_t
         const int code = tables.bucket_code[bucket[k]];
         out[k] = static_cast<std::uint8_t>(code + (clamped[k] >= tables.thresholds[code + 1]));
       }
-      out[i + 3] = static_cast<std::uint8_t>(clamped[i + 3] * 255.0f + 0.5f);
+      out[i + 3] = shading::unorm8_of_unit(clamped[i + 3]);
     }
   }
 }
 
-// Every channel as EncodeSrgbRow rounds alpha.
+// Every channel as EncodeSrgbRow rounds alpha (shading::encode_unorm8), lane by lane.
 void RoundUnorm8Row(const glm::vec4* colors, int count, std::uint8_t* rgba) {
   const FloatTag df;
   const IntTag di;
@@ -81,10 +81,7 @@ void RoundUnorm8Row(const glm::vec4* colors, int count, std::uint8_t* rgba) {
     const auto code = hn::ConvertTo(di, hn::Add(hn::Mul(c, codes), half));
     hn::StoreU(hn::DemoteTo(du8, code), du8, rgba + j);
   }
-  for (; j < floats; ++j) {
-    const float c = in[j] > 0.0f ? std::min(in[j], 1.0f) : 0.0f;
-    rgba[j] = static_cast<std::uint8_t>(c * 255.0f + 0.5f);
-  }
+  for (; j < floats; ++j) rgba[j] = shading::encode_unorm8(in[j]);
 }
 
 }  // namespace facet::pipeline::HWY_NAMESPACE

@@ -48,8 +48,17 @@ inline std::uint8_t encode_srgb8(const SrgbTables& t, float linear) {
 }
 inline std::uint8_t encode_srgb8(float linear) { return encode_srgb8(srgb_tables(), linear); }
 
-// 1 / 255: an 8-bit code c as the value c * kInverse255 in [0, 1], which c * 255 + 0.5
-// truncates back to c.
+// A value in [0, 1] (clamped; NaN -> 0, where std::clamp would pass NaN on and NaN to an
+// integer is undefined) rounded to an 8-bit code: alpha, and values that are not light.
+inline std::uint8_t unorm8_of_unit(float unit) {  // unit already in [0, 1]
+  return static_cast<std::uint8_t>(unit * 255.0f + 0.5f);
+}
+inline std::uint8_t encode_unorm8(float v) {
+  return unorm8_of_unit(v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f);
+}
+
+// 1 / 255: an 8-bit code c as the value c * kInverse255 in [0, 1], which encode_unorm8 turns
+// back into c.
 inline constexpr float kInverse255 = 1.0f / 255.0f;
 
 // Decodes an 8-bit sRGB code to linear.

@@ -54,8 +54,7 @@ inline glm::vec3 diffuse_light(glm::vec3 albedo, glm::vec3 normal, glm::vec3 pos
 // the code / 255 itself, which resolve turns back into the code without the sRGB tables.
 // NaN shows as 0 (as batch_math-inl.h's StoreDisplayCodes has it).
 inline float display_channel(float v, bool referred) {
-  const float clamped = v > 0.0f ? std::min(v, 1.0f) : 0.0f;
-  const auto code = static_cast<std::uint8_t>(clamped * 255.0f + 0.5f);
+  const std::uint8_t code = encode_unorm8(v);
   return referred ? static_cast<float>(code) * kInverse255 : decode_srgb8(code);
 }
 inline glm::vec4 display_value(glm::vec3 shown, const DrawUniforms& u) {

@@ -277,12 +277,10 @@ void store_texel(Texture::Level& level, bool srgb, int x, int y, glm::vec4 c) {
     for (int k = 0; k < 4; ++k) level.rgba32f[i + k] = c[k];
     return;
   }
-  auto unorm8 = [](float v) {
-    return static_cast<std::uint8_t>(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f);
-  };
   const SrgbEncoder& encode = srgb_encoder();
-  for (int k = 0; k < 3; ++k) level.rgba8[i + k] = srgb ? encode(c[k]) : unorm8(c[k]);
-  level.rgba8[i + 3] = unorm8(c[3]);
+  for (int k = 0; k < 3; ++k)
+    level.rgba8[i + k] = srgb ? encode(c[k]) : shading::encode_unorm8(c[k]);
+  level.rgba8[i + 3] = shading::encode_unorm8(c[3]);
 }
 
 // The next level: each side halved (rounded down, at least 1); each texel the average, in

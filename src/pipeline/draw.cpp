@@ -24,7 +24,6 @@
 #include "pipeline/output.hpp"
 #include "pipeline/parallel.hpp"
 #include "pipeline/shade.hpp"
-#include "shading/color.hpp"
 #include "shading/lighting.hpp"
 
 namespace facet {
@@ -45,16 +44,6 @@ struct TileBuffers {
   std::vector<float> block_max_depth;  // one per 8x8 block (raster.hpp)
 };
 
-// The clear color as a display value: its sRGB codes / 255 (alpha is never encoded).
-glm::vec4 display_value_of(const glm::vec4& linear) {
-  const shading::SrgbTables& tables = shading::srgb_tables();
-  glm::vec4 shown = linear;
-  for (int c = 0; c < 3; ++c) {
-    shown[c] = static_cast<float>(shading::encode_srgb8(tables, linear[c])) * shading::kInverse255;
-  }
-  return shown;
-}
-
 }  // namespace
 
 struct Renderer::Impl {
@@ -73,7 +62,6 @@ struct Renderer::Impl {
   Lighting lighting;
   bool recording = false;
   std::uint64_t primitives_outside = 0;  // of draws outside the frustum, never recorded
-  bool display_referred = false;         // this frame's (display_referred_frame)
 
   explicit Impl(const RenderSettings& s)
       : settings(s),
@@ -257,10 +245,10 @@ void Renderer::Impl::run(Framebuffer& target) {
   frame.stats.triangles_in += primitives_outside;  // draws dropped whole when recorded
   frame.stats.culled += primitives_outside;
   frame.stats.ms_geometry = ms_since(start);
-  display_referred = display_referred_frame(target);
-  frame.stats.display_referred = display_referred;
-  for (pipeline::DrawRecord& draw : frame.draws) draw.uniforms.display_referred = display_referred;
-  if (display_referred) background.clear_color = display_value_of(settings.clear_color);
+  const bool referred = display_referred_frame(target);
+  background.display_referred = frame.stats.display_referred = referred;
+  for (pipeline::DrawRecord& draw : frame.draws) draw.uniforms.display_referred = referred;
+  if (referred) background.clear_color = pipeline::display_value_of(settings.clear_color);
 
   auto bin_start = Clock::now();
   pipeline::bin_primitives(frame, workers);
@@ -350,7 +338,7 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
   if (background_pending) pipeline::fill_background(tile, background);
   auto resolve_start = Clock::now();
   if (debug == DebugView::none) {
-    pipeline::resolve_tile(tile, scale, display_referred, target);
+    pipeline::resolve_tile(tile, scale, background.display_referred, target);
   } else {
     pipeline::resolve_debug_tile(tile, debug, bin_size, scale, target);
   }

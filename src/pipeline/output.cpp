@@ -46,6 +46,15 @@ void store_row(Framebuffer& target, std::size_t first_pixel, const glm::vec4* co
 
 }  // namespace
 
+glm::vec4 display_value_of(const glm::vec4& linear) {
+  const shading::SrgbTables& tables = shading::srgb_tables();
+  glm::vec4 shown = linear;
+  for (int c = 0; c < 3; ++c) {
+    shown[c] = static_cast<float>(shading::encode_srgb8(tables, linear[c])) * shading::kInverse255;
+  }
+  return shown;
+}
+
 void clear_tile(TileContext& tile, const Background& background) {
   for (int y = 0; y < tile.y1 - tile.y0; ++y) {
     if (!background.environment) {

@@ -14,6 +14,9 @@ namespace facet::pipeline {
 // sky gradient) seen through that pixel.
 struct Background {
   glm::vec4 clear_color{0.0f};
+  // The tiles hold display values (draw.cpp's display_referred_frame): clear_color is one
+  // (display_value_of), and resolve_tile rounds instead of encoding.
+  bool display_referred = false;
   const Environment* environment = nullptr;  // non-null: draw the environment
   glm::mat4 inverse_view_projection{1.0f};
   glm::vec3 eye{0.0f};
@@ -28,9 +31,13 @@ void clear_tile(TileContext& tile, const Background& background);
 // write depth (render_tile calls it before anything else, and at the end): most of the sky
 // behind a scene then costs nothing.
 void fill_background(TileContext& tile, const Background& background);
+// A linear color as the display value a display-referred tile holds for it: its sRGB codes
+// / 255 (alpha is never encoded).
+glm::vec4 display_value_of(const glm::vec4& linear);
 // Writes the tile to the framebuffer; colors are scaled by `scale` (exposure) first. In a
-// display-referred frame (draw.cpp) the tile holds display values, which an 8-bit target
-// takes as they are, rounded to 8 bits, instead of sRGB-encoded (scale is then 1).
+// display-referred frame (Background::display_referred) the tile holds display values, which
+// an 8-bit target takes as they are, rounded to 8 bits, instead of sRGB-encoded (scale is then
+// 1).
 void resolve_tile(const TileContext& tile, float scale, bool display_referred, Framebuffer& target);
 // A tile with an empty bin under a plain clear color is written straight from it.
 void resolve_cleared_tile(const TileContext& tile, const glm::vec4& color, float scale,

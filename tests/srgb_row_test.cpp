@@ -85,6 +85,19 @@ TEST(SrgbRow, GivesTheScalarCodesOnEveryTarget) {
   EXPECT_GT(compared, 100000);
 }
 
+// The one rounding of [0, 1] values to 8 bits: clamped, NaN to 0, every code's value back to
+// the code.
+TEST(EncodeUnorm8, ClampsRoundsAndTakesNaNToZero) {
+  EXPECT_EQ(shading::encode_unorm8(std::numeric_limits<float>::quiet_NaN()), 0);
+  EXPECT_EQ(shading::encode_unorm8(-1.0f), 0);
+  EXPECT_EQ(shading::encode_unorm8(2.0f), 255);
+  EXPECT_EQ(shading::encode_unorm8(std::numeric_limits<float>::infinity()), 255);
+  EXPECT_EQ(shading::encode_unorm8(0.5f), 128);  // 127.5 + 0.5
+  for (int code = 0; code < 256; ++code) {
+    ASSERT_EQ(shading::encode_unorm8(static_cast<float>(code) * shading::kInverse255), code);
+  }
+}
+
 // Display-referred frames' resolve: every code's display value (code / 255) back to the code,
 // and every channel of the probe values clamped and rounded as alpha is, on every target.
 TEST(Unorm8Row, RoundsEveryChannelAsAlphaOnEveryTarget) {

@@ -1,11 +1,13 @@
 // The SIMD sRGB encode of resolve (pipeline/srgb_row.cpp) gives encode_srgb8's codes on every
-// SIMD target: at and around every code's threshold, at the ends and beyond them, for NaN and
-// infinities, with and without exposure, and for rows of every length up to past a chunk.
+// SIMD target: at and around every code's threshold and the edges of its table's runs, at the
+// ends and beyond them, for NaN and infinities, with and without exposure, and for rows of
+// every length up to past a chunk.
 #include "pipeline/srgb_row.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -46,6 +48,14 @@ std::vector<float> probe_values() {
     const float t = tables.thresholds[code];
     values.insert(values.end(), {t, std::nextafter(t, 0.0f), std::nextafter(t, 1.0f)});
   }
+  // The first and last float of each of the row encoder's runs (color.hpp), and the float
+  // below the first run. With a run's code and threshold right, all its floats are.
+  using Tables = shading::SrgbTables;
+  for (int r = 0; r < Tables::kRuns; ++r) {
+    const std::uint32_t start =
+        Tables::kRunBase + (static_cast<std::uint32_t>(r) << Tables::kRunBits);
+    values.insert(values.end(), {std::bit_cast<float>(start), std::bit_cast<float>(start - 1)});
+  }
   std::mt19937 rng(20261122);
   std::uniform_real_distribution<float> any(-0.1f, 1.1f);
   for (int i = 0; i < 2000; ++i) values.push_back(any(rng));
@@ -83,6 +93,41 @@ TEST(SrgbRow, GivesTheScalarCodesOnEveryTarget) {
     }
   }
   EXPECT_GT(compared, 100000);
+}
+
+// What lets the row encoder look each channel up once: no run of its table (color.hpp) holds
+// two thresholds, and each entry gives the code at the run's start and where the next begins.
+TEST(SrgbTables, EachRunHoldsOneThresholdAtMost) {
+  using Tables = shading::SrgbTables;
+  const Tables& tables = shading::srgb_tables();
+  int thresholds_in_runs = 0;
+  for (int r = 0; r < Tables::kRuns; ++r) {
+    const std::uint32_t start =
+        Tables::kRunBase + (static_cast<std::uint32_t>(r) << Tables::kRunBits);
+    const std::uint32_t end = start + Tables::kRunMask + 1;
+    int inside = 0;
+    for (int code = 1; code < 256; ++code) {
+      const std::uint32_t t = std::bit_cast<std::uint32_t>(tables.thresholds[code]);
+      inside += t >= start && t < end;
+    }
+    ASSERT_LE(inside, 1) << "run " << r;
+    thresholds_in_runs += inside;
+    const std::uint32_t entry = tables.run_code[r];
+    const std::uint32_t offset = entry & Tables::kRunOffsetMask;
+    ASSERT_EQ(entry >> Tables::kRunCodeShift, shading::encode_srgb8(std::bit_cast<float>(start)));
+    ASSERT_EQ(offset <= Tables::kRunMask, inside == 1) << "run " << r;
+    if (inside == 1) {
+      ASSERT_EQ(shading::encode_srgb8(std::bit_cast<float>(start + offset)),
+                (entry >> Tables::kRunCodeShift) + 1)
+          << "run " << r;
+      ASSERT_EQ(shading::encode_srgb8(std::bit_cast<float>(start + offset - 1)),
+                entry >> Tables::kRunCodeShift)
+          << "run " << r;
+    }
+  }
+  // Every threshold lies in some run, none in run 0, which also takes every value below it.
+  EXPECT_EQ(thresholds_in_runs, 255);
+  EXPECT_GT(tables.thresholds[1], std::bit_cast<float>(Tables::kRunBase + Tables::kRunMask + 1));
 }
 
 // The one rounding of [0, 1] values to 8 bits: clamped, NaN to 0, every code's value back to

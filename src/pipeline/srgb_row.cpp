@@ -8,6 +8,7 @@
 #include <hwy/highway.h>
 
 #include <algorithm>
+#include <bit>
 
 #include "shading/color.hpp"
 
@@ -18,47 +19,82 @@ namespace hn = hwy::HWY_NAMESPACE;
 using FloatTag = hn::ScalableTag<float>;
 using IntTag = hn::RebindToSigned<FloatTag>;
 
-// Colors per step: the SIMD pass fills arrays for this many, then the lookups read them.
+// Colors per step: the SIMD passes fill and read arrays for this many, the lookups between.
 constexpr int kChunk = 64;
 
 void EncodeSrgbRow(const glm::vec4* colors, int count, float scale, std::uint8_t* rgba) {
   const FloatTag df;
   const IntTag di;
+  const hn::RebindToUnsigned<IntTag> du;
+  const hn::Rebind<std::uint8_t, FloatTag> du8;
   const int lanes = static_cast<int>(hn::Lanes(df));
-  const shading::SrgbTables& tables = shading::srgb_tables();
-  constexpr float kBuckets = static_cast<float>(shading::SrgbTables::kBuckets);
+  using Tables = shading::SrgbTables;
+  const Tables& tables = shading::srgb_tables();
   // Each channel's factor, (scale, scale, scale, 1) over and over: the exposure scales red,
   // green and blue, not alpha. A vector starting at float j reads it from j % 4 on, which
   // covers targets with fewer than four lanes.
   alignas(64) float factor[kChunk + 4];
   for (int j = 0; j < kChunk + 4; ++j) factor[j] = j % 4 == 3 ? 1.0f : scale;
-  // Per channel: its value clamped to [0, 1] (NaN to 0), and its bucket (color.hpp).
-  alignas(64) float clamped[4 * kChunk];
-  alignas(64) std::int32_t bucket[4 * kChunk];
-  const auto zero = hn::Zero(df), one = hn::Set(df, 1.0f), buckets = hn::Set(df, kBuckets);
+  // Per channel: the bits of its value clamped to [0, 1] (NaN to 0) above those of the first
+  // run (color.hpp; 0 below it), and its run. Per color channel, the run's entry; per alpha
+  // channel, its 8-bit rounding (shading::encode_unorm8).
+  alignas(64) std::int32_t above[4 * kChunk];
+  alignas(64) std::int32_t run[4 * kChunk];
+  alignas(64) std::int32_t entry[4 * kChunk];
+  const auto zero = hn::Zero(df), one = hn::Set(df, 1.0f);
+  const auto run_base = hn::Set(di, static_cast<std::int32_t>(Tables::kRunBase));
+  const auto codes = hn::Set(df, 255.0f), half = hn::Set(df, 0.5f);
+  const auto three = hn::Set(di, 3);
+  const auto run_mask = hn::Set(di, static_cast<std::int32_t>(Tables::kRunMask));
+  const auto offset_mask = hn::Set(di, static_cast<std::int32_t>(Tables::kRunOffsetMask));
   for (int first = 0; first < count; first += kChunk) {
     const int floats = 4 * std::min(kChunk, count - first);
     const float* in = &colors[first].x;
+    std::uint8_t* out = rgba + 4 * static_cast<std::ptrdiff_t>(first);
+    // 1. Clamp; the run; alpha's code.
     int j = 0;
     for (; j + lanes <= floats; j += lanes) {
       const auto x = hn::Mul(hn::LoadU(df, in + j), hn::LoadU(df, factor + (j & 3)));
       const auto c = hn::Min(hn::IfThenElseZero(hn::Gt(x, zero), x), one);
-      hn::Store(c, df, clamped + j);
-      hn::Store(hn::ConvertTo(di, hn::Mul(c, buckets)), di, bucket + j);
+      const auto bits_above = hn::Max(hn::Sub(hn::BitCast(di, c), run_base), hn::Zero(di));
+      hn::Store(bits_above, di, above + j);
+      hn::Store(hn::ShiftRight<Tables::kRunBits>(bits_above), di, run + j);
+      // A multiplication then an addition, not fused: unorm8_of_unit exactly.
+      hn::Store(hn::ConvertTo(di, hn::Add(hn::Mul(c, codes), half)), di, entry + j);
     }
     for (; j < floats; ++j) {  // the last few, the same way
       const float x = in[j] * factor[j & 3];
       const float c = x > 0.0f ? std::min(x, 1.0f) : 0.0f;
-      clamped[j] = c;
-      bucket[j] = static_cast<std::int32_t>(c * kBuckets);
+      above[j] =
+          std::max(std::bit_cast<std::int32_t>(c) - static_cast<std::int32_t>(Tables::kRunBase), 0);
+      run[j] = above[j] >> Tables::kRunBits;
+      entry[j] = shading::unorm8_of_unit(c);
     }
-    std::uint8_t* out = rgba + 4 * static_cast<std::ptrdiff_t>(first);
-    for (int i = 0; i < floats; i += 4) {
-      for (int k = i; k < i + 3; ++k) {  // the code at the bucket's start, or the next one
-        const int code = tables.bucket_code[bucket[k]];
-        out[k] = static_cast<std::uint8_t>(code + (clamped[k] >= tables.thresholds[code + 1]));
-      }
-      out[i + 3] = shading::unorm8_of_unit(clamped[i + 3]);
+    // 2. The color channels' runs looked up, one at a time (gathers were slower than scalar
+    // loads on every CPU tried).
+    for (int k = 0; k < floats; k += 4) {
+      entry[k] = static_cast<std::int32_t>(tables.run_code[run[k]]);
+      entry[k + 1] = static_cast<std::int32_t>(tables.run_code[run[k + 1]]);
+      entry[k + 2] = static_cast<std::int32_t>(tables.run_code[run[k + 2]]);
+    }
+    // 3. A color's code: the run's first, or the next from its offset in the run on.
+    j = 0;
+    for (; j + lanes <= floats; j += lanes) {
+      const auto e = hn::Load(di, entry + j);
+      const auto offset = hn::And(hn::Load(di, above + j), run_mask);
+      const auto next = hn::Not(hn::Lt(offset, hn::And(e, offset_mask)));
+      // The mask as a vector is -1 where the next code has begun.
+      const auto code =
+          hn::Sub(hn::ShiftRight<Tables::kRunCodeShift>(e), hn::VecFromMask(di, next));
+      // Alpha's lanes: j % 4 == 3, counted from j & 3 on (vectors of one or two lanes).
+      const auto alpha = hn::Eq(hn::And(hn::Iota(di, j & 3), three), three);
+      const auto byte = hn::IfThenElse(alpha, e, code);
+      hn::StoreU(hn::TruncateTo(du8, hn::BitCast(du, byte)), du8, out + j);
+    }
+    for (; j < floats; ++j) {
+      const std::int32_t e = entry[j];
+      const bool next = (above[j] & Tables::kRunMask) >= (e & Tables::kRunOffsetMask);
+      out[j] = static_cast<std::uint8_t>(j % 4 == 3 ? e : (e >> Tables::kRunCodeShift) + next);
     }
   }
 }

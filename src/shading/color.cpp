@@ -2,6 +2,7 @@
 #include "shading/color.hpp"
 
 #include <algorithm>
+#include <bit>
 
 namespace facet::shading {
 
@@ -16,7 +17,16 @@ SrgbTables::SrgbTables() {
     auto it = std::upper_bound(thresholds.begin(), thresholds.begin() + 256, start);
     bucket_code[b] = static_cast<std::uint8_t>((it - thresholds.begin()) - 1);
   }
-  bucket_code[kBuckets] = 255;
+  for (int r = 0; r < kRuns; ++r) {
+    const std::uint32_t start = kRunBase + (static_cast<std::uint32_t>(r) << kRunBits);
+    const float* next = std::upper_bound(thresholds.begin() + 1, thresholds.begin() + 256,
+                                         std::bit_cast<float>(start));
+    const auto code = static_cast<std::uint32_t>(next - thresholds.begin() - 1);
+    // thresholds[256] (2.0) lies beyond every run: the last code's run holds none.
+    const std::uint32_t offset =
+        std::min(std::bit_cast<std::uint32_t>(*next) - start, kRunMask + 1);
+    run_code[r] = code << kRunCodeShift | offset;
+  }
 }
 
 const SrgbTables kSrgbTables;

@@ -24,13 +24,29 @@ inline float linear_to_srgb(float c) {
 // [0, 1), the code at the slice's start. sRGB's steepest slope (12.92 near black) moves at most
 // 12.92 * 255 / 4096 = 0.8 codes across one slice, so the answer is that code or the next:
 // one lookup and one comparison, still exact.
+//
+// Resolve's row encoder (pipeline/srgb_row.cpp) needs one lookup, not two in a chain: it
+// slices by the float's bits instead. From 2^-14 up to 1, each run of 2^16 consecutive floats
+// (a 128th of an octave) holds at most one threshold (SrgbTables' test checks it), so a run's
+// entry can hold both the code at its start and where in the run the next code begins; below
+// 2^-14 (run 0, which holds no threshold) every value is code 0.
 struct SrgbTables {
   static constexpr int kBuckets = 4096;
   std::array<float, 257> thresholds;  // [256] is a sentinel above every input
   std::array<float, 256> decode;
-  // [kBuckets] is 1.0's code (255), for encoders that clamp to [0, 1] before the lookup
-  // instead of testing both ends (pipeline/srgb_row.cpp).
-  std::array<std::uint8_t, kBuckets + 1> bucket_code;
+  std::array<std::uint8_t, kBuckets> bucket_code;
+
+  static constexpr std::uint32_t kRunBase = 0x38800000;  // the bits of 2^-14
+  static constexpr int kRunBits = 16;
+  static constexpr std::uint32_t kRunMask = (1u << kRunBits) - 1;
+  static constexpr int kRuns = ((0x3F800000 - kRunBase) >> kRunBits) + 1;  // 1.0 starts the last
+  static constexpr int kRunCodeShift = kRunBits + 1;
+  static constexpr std::uint32_t kRunOffsetMask = (1u << kRunCodeShift) - 1;
+  // Run r holds the floats whose bits minus kRunBase are r * 2^16 + (0 ... 2^16 - 1): its
+  // entry is (the code at its start) << kRunCodeShift | (the offset in the run of the first
+  // float of the next code, or 2^16 when the run holds no threshold).
+  std::array<std::uint32_t, kRuns> run_code;
+
   SrgbTables();
 };
 

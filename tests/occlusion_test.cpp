@@ -170,5 +170,39 @@ TEST(Occlusion, LayerOrderDoesNotMatterWithMaskedLayersLinesAndPartialTiles) {
   }
 }
 
+// A tile whose first triangle writes all its pixels is not cleared to the clear color
+// (occlusion.hpp's hides_clear); wherever a pixel is left, the clear must show. One large
+// triangle, drawn by one thread whose tile buffers go from tile to tile: the tiles its long edge
+// crosses lie inside its box, and their pixels beside it must hold the clear color and depth,
+// not what the last tile left there. Coverage from the overdraw counter (which always clears).
+TEST(Occlusion, ClearShowsBesideAFirstTriangleThatFillsItsBoxOnly) {
+  const Mesh triangle = soup({{-40, -40, -5.0f}, {40, -40, -5.0f}, {-40, 40, -5.0f}});
+  const Camera camera = test_camera(kWidth, kHeight);
+  const std::vector<int> covered = coverage_counts({&triangle}, camera, kWidth, kHeight);
+  RenderSettings settings;
+  settings.tile_size = 16;
+  settings.threads = 1;
+  settings.clear_color = {0.0f, 0.0f, 1.0f, 1.0f};
+  const Framebuffer fb =
+      render_unlit({&triangle}, camera, kWidth, kHeight, CullMode::none, settings);
+  int inside = 0, outside = 0;
+  for (int i = 0; i < kWidth * kHeight; ++i) {
+    const std::uint8_t* rgba = &fb.rgba8()[4 * i];
+    if (covered[i] > 0) {
+      ASSERT_EQ(rgba[0], 255) << "pixel " << i;  // render_unlit's white
+      ASSERT_LT(fb.depth()[i], 1.0f) << "pixel " << i;
+      ++inside;
+    } else {
+      ASSERT_EQ(rgba[0], 0) << "pixel " << i;
+      ASSERT_EQ(rgba[2], 255) << "pixel " << i;
+      ASSERT_EQ(fb.depth()[i], 1.0f) << "pixel " << i;
+      ++outside;
+    }
+  }
+  // Both halves of the frame are there to compare.
+  EXPECT_GT(inside, kWidth * kHeight / 3);
+  EXPECT_GT(outside, kWidth * kHeight / 3);
+}
+
 }  // namespace
 }  // namespace facet::test

@@ -297,7 +297,6 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
   tile.color = buffers.color.data();
   tile.depth = buffers.depth.data();
   tile.block_max_depth = buffers.block_max_depth.data();
-  pipeline::clear_tile(tile, background);
   pipeline::WaitingPixels waiting;
   tile.waiting = &waiting;
   // Skip what the tile's last full, opaque, nearest triangle hides anyway; in bins of a few
@@ -305,6 +304,10 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
   bin +=
       pipeline::first_visible_entry(frame, bin, bin_end - bin, tile.x0, tile.y0, tile.x1, tile.y1);
   const std::uint32_t* const first_drawn = bin;
+  // The views count or color what is drawn in their own ways: they always start cleared.
+  const bool color_hidden = debug == DebugView::none && bin != bin_end &&
+                            pipeline::hides_clear(frame, *bin, tile.x0, tile.y0, tile.x1, tile.y1);
+  pipeline::clear_tile(tile, background, color_hidden);
   std::uint32_t block_starts[pipeline::kMaxTileBlocks];
   if (bin_end - bin <= static_cast<std::ptrdiff_t>(pipeline::kMaxBlockOcclusionEntries) &&
       pipeline::first_visible_entries_per_block(frame, bin, bin_end - bin, tile.x0, tile.y0,

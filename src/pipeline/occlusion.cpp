@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "pipeline/bin.hpp"
+#include "pipeline/output.hpp"
 #include "pipeline/pixel_writer.hpp"
 #include "pipeline/setup.hpp"
 
@@ -71,6 +72,13 @@ std::size_t first_visible_entry(const Frame& frame, const std::uint32_t* bin, st
     nearest_so_far = std::min(nearest_so_far, range.nearest);
   }
   return first;
+}
+
+bool hides_clear(const Frame& frame, std::uint32_t entry, int x0, int y0, int x1, int y1) {
+  if (!may_hide(frame, entry, x0, y0, x1, y1)) return false;
+  const SetupTriangle& t = frame.triangles[entry];
+  return depth_range_within(t, x0, y0, x1, y1).farthest < kClearDepth &&  // NaN: false
+         triangle_covers(t, x0, y0, x1, y1);
 }
 
 namespace {

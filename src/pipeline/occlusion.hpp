@@ -23,6 +23,12 @@ namespace facet::pipeline {
 std::size_t first_visible_entry(const Frame& frame, const std::uint32_t* bin, std::size_t count,
                                 int x0, int y0, int x1, int y1);
 
+// Whether entry writes every pixel of the freshly cleared tile [x0, x1) x [y0, y1): an
+// occluding draw's triangle (as above) that covers every pixel centre, nearer than the clear
+// depth (output.hpp's kClearDepth) everywhere there. Drawn first, it leaves nothing of the
+// clear color to see, so render_tile does not clear the color.
+bool hides_clear(const Frame& frame, std::uint32_t entry, int x0, int y0, int x1, int y1);
+
 // Bins of at most this many entries also look for hidden work per 8x8 block: the look costs
 // a depth bound per entry and block, which pays when a few large triangles overdraw each
 // other (where no single one covers the tile: along the seam of a full-screen quad's two

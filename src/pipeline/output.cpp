@@ -13,7 +13,6 @@ namespace facet::pipeline {
 namespace {
 
 // Depth of a cleared pixel: the far plane.
-constexpr float kClearDepth = 1.0f;
 
 // One linear color (scaled by the exposure) as 8-bit sRGB RGBA.
 inline void encode_pixel(const shading::SrgbTables& tables, const glm::vec4& c, float scale,
@@ -55,9 +54,9 @@ glm::vec4 display_value_of(const glm::vec4& linear) {
   return shown;
 }
 
-void clear_tile(TileContext& tile, const Background& background) {
+void clear_tile(TileContext& tile, const Background& background, bool color_hidden) {
   for (int y = 0; y < tile.y1 - tile.y0; ++y) {
-    if (!background.environment) {
+    if (!background.environment && !color_hidden) {
       std::fill_n(tile.color + static_cast<std::ptrdiff_t>(y) * tile.stride, tile.x1 - tile.x0,
                   background.clear_color);
     }

@@ -23,9 +23,13 @@ struct Background {
   int width = 1, height = 1;  // framebuffer size
 };
 
-// Clears depth to the far plane and color to the clear color. An environment background is
-// not drawn here but by fill_background, later, into the pixels nothing covered.
-void clear_tile(TileContext& tile, const Background& background);
+// The depth a tile starts at: the far plane.
+inline constexpr float kClearDepth = 1.0f;
+
+// Clears depth to the far plane and color to the clear color, unless color_hidden (the first
+// triangle drawn writes every pixel: occlusion.hpp's hides_clear). An environment background
+// is not drawn here but by fill_background, later, into the pixels nothing covered.
+void clear_tile(TileContext& tile, const Background& background, bool color_hidden);
 // Draws the environment into the pixels whose depth is still the clear depth. Exact once
 // drawing has only run opaque, depth-writing triangles, which write color exactly where they
 // write depth (render_tile calls it before anything else, and at the end): most of the sky

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "facet/renderer.hpp"
+#include "pipeline/bin.hpp"
 #include "support/render_helpers.hpp"
 
 namespace facet::test {
@@ -202,6 +203,27 @@ TEST(Occlusion, ClearShowsBesideAFirstTriangleThatFillsItsBoxOnly) {
   // Both halves of the frame are there to compare.
   EXPECT_GT(inside, kWidth * kHeight / 3);
   EXPECT_GT(outside, kWidth * kHeight / 3);
+}
+
+// Binning notes the tiles a triangle may hide whole (Frame::bin_may_hide) from its pixel box:
+// the box must hold a whole tile, partial tiles at the frame's right and bottom edges included.
+TEST(Occlusion, BoxHoldsATileExactlyWhenItHoldsAWholeOne) {
+  pipeline::Frame frame;
+  frame.tile_size = 16;
+  frame.width = 203;  // 12 whole tiles and one of 11 pixels per row
+  frame.height = 40;  // two whole tile rows and one of 8 pixels
+  auto holds = [&](int x0, int y0, int x1, int y1) {
+    return pipeline::box_holds_a_tile(frame, x0, y0, x1, y1);
+  };
+  EXPECT_TRUE(holds(0, 0, 15, 15));      // exactly tile (0, 0)
+  EXPECT_FALSE(holds(0, 0, 14, 15));     // a column short
+  EXPECT_FALSE(holds(1, 0, 16, 15));     // straddles two tiles, holds neither
+  EXPECT_TRUE(holds(1, 1, 32, 32));      // tile (1, 1) inside
+  EXPECT_FALSE(holds(1, 1, 30, 40));     // 30 columns, but no whole tile across
+  EXPECT_TRUE(holds(192, 32, 202, 39));  // the partial corner tile, whole
+  EXPECT_FALSE(holds(193, 32, 202, 39));
+  EXPECT_FALSE(holds(192, 33, 202, 39));
+  EXPECT_TRUE(holds(150, 20, 202, 39));  // ending at the frame's corner
 }
 
 }  // namespace

@@ -66,30 +66,34 @@ bool may_touch_tile(const Frame& frame, const SetupTriangle& t, int tx, int ty) 
                             std::min((ty + 1) * ts, frame.height));
 }
 
-// Calls visit(tile, entry) for every tile each primitive of entries [begin, end) may cover,
-// in submission order.
+// Calls visit(tile, entry, hides) for every tile each primitive of entries [begin, end) may
+// cover, in submission order; hides: the entry may hide the whole tile (Frame::bin_may_hide).
 template <class Visit>
 void for_each_binning(const Frame& frame, std::size_t begin, std::size_t end, Visit&& visit) {
   for_each_entry(frame, begin, end, [&](const SequenceEntry& e) {
     const std::uint32_t entry = e.index;
     const int tx0 = e.tile_x0, tx1 = e.tile_x1, ty0 = e.tile_y0, ty1 = e.tile_y1;
-    const int span_x = tx1 - tx0 + 1;
-    if (span_x * (ty1 - ty0 + 1) <= kMaskedTiles) {  // setup said which tiles
+    if (e.tiles != 0) {  // setup said which tiles
       // Walked row by row, the bit index counting along: no division per entry.
       std::uint32_t bit = 1;
       for (int ty = ty0; ty <= ty1; ++ty) {
         for (int tx = tx0; tx <= tx1; ++tx, bit <<= 1) {
-          if (e.tiles & bit) visit(static_cast<std::size_t>(ty) * frame.tiles_x + tx, entry);
+          if (e.tiles & bit) visit(static_cast<std::size_t>(ty) * frame.tiles_x + tx, entry, false);
         }
       }
       return;
     }
     // Large triangles skip the tiles their bounding box touches but their edges exclude.
     const SetupTriangle* tri = (entry & kLineBit) ? nullptr : &frame.triangles[entry];
+    const bool occludes = tri && frame.draws[tri->draw].pipeline.occludes;
+    const int ts = frame.tile_size;
     for (int ty = ty0; ty <= ty1; ++ty) {
       for (int tx = tx0; tx <= tx1; ++tx) {
         if (tri && !may_touch_tile(frame, *tri, tx, ty)) continue;
-        visit(static_cast<std::size_t>(ty) * frame.tiles_x + tx, entry);
+        const bool hides = occludes && tri->min_x <= tx * ts && tri->min_y <= ty * ts &&
+                           tri->max_x >= std::min((tx + 1) * ts, frame.width) - 1 &&
+                           tri->max_y >= std::min((ty + 1) * ts, frame.height) - 1;
+        visit(static_cast<std::size_t>(ty) * frame.tiles_x + tx, entry, hides);
       }
     }
   });
@@ -121,13 +125,19 @@ void bin_primitives(Frame& frame, int workers) {
       std::clamp<std::size_t>(primitives / kPrimitivesPerBinningRun, 1, kMaxBinningRuns);
   auto run_begin = [&](std::size_t run) { return primitives * run / runs; };
   frame.bin_cursors.assign(runs * tiles, 0);  // capacity kept across frames
+  frame.bin_hiders.assign(runs * tiles, 0);
   parallel_tasks(static_cast<int>(runs), workers, [&](int run, int) {
     std::uint32_t* counts = frame.bin_cursors.data() + run * tiles;
+    std::uint8_t* hiders = frame.bin_hiders.data() + run * tiles;
     for_each_binning(frame, run_begin(run), run_begin(run + 1),
-                     [&](std::size_t tile, std::uint32_t) { ++counts[tile]; });
+                     [&](std::size_t tile, std::uint32_t, bool hides) {
+                       ++counts[tile];
+                       hiders[tile] |= hides;
+                     });
   });
   // Bin starts, and each run's first slot in each bin (the cursors the fill advances).
   frame.bin_start.assign(tiles + 1, 0);
+  frame.bin_may_hide.assign(tiles, 0);
   std::uint32_t total = 0;
   for (std::size_t tile = 0; tile < tiles; ++tile) {
     frame.bin_start[tile] = total;
@@ -136,6 +146,7 @@ void bin_primitives(Frame& frame, int workers) {
       const std::uint32_t count = cursor;
       cursor = total;
       total += count;
+      frame.bin_may_hide[tile] |= frame.bin_hiders[run * tiles + tile];
     }
   }
   frame.bin_start[tiles] = total;
@@ -143,9 +154,10 @@ void bin_primitives(Frame& frame, int workers) {
   frame.bin_entries.resize(total);
   parallel_tasks(static_cast<int>(runs), workers, [&](int run, int) {
     std::uint32_t* cursors = frame.bin_cursors.data() + run * tiles;
-    for_each_binning(
-        frame, run_begin(run), run_begin(run + 1),
-        [&](std::size_t tile, std::uint32_t entry) { frame.bin_entries[cursors[tile]++] = entry; });
+    for_each_binning(frame, run_begin(run), run_begin(run + 1),
+                     [&](std::size_t tile, std::uint32_t entry, bool) {
+                       frame.bin_entries[cursors[tile]++] = entry;
+                     });
   });
 }
 

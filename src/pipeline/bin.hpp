@@ -3,6 +3,7 @@
 // read the bins.
 #pragma once
 
+#include <algorithm>
 #include <bit>
 #include <cstddef>
 #include <cstdint>
@@ -18,10 +19,24 @@ inline constexpr std::size_t kMaxBinningRuns = 16;
 
 void bin_primitives(Frame& frame, int workers);
 
-// SequenceEntry::tiles for a box of several tiles: for a triangle (not null: its edge functions
-// must be final), which tiles it may touch; a line may touch every tile of its box.
+// SequenceEntry::tiles for a box of several tiles (binning_entry: 0 for triangles whose box
+// holds a whole tile, and boxes of more than kMaskedTiles, whose tiles binning tests itself): for a
+// triangle (not null: its edge functions must be final), which tiles it may touch; a line may touch
+// every tile of its box.
 std::uint32_t binning_tile_mask(const Frame& frame, const SetupTriangle* triangle,
                                 const SequenceEntry& e);
+
+// Whether the pixel box [min_x, max_x] x [min_y, max_y] (inside the frame) holds a whole tile
+// (a partial one at the frame's right or bottom edge too). Tile sizes are powers of two.
+inline bool box_holds_a_tile(const Frame& frame, int min_x, int min_y, int max_x, int max_y) {
+  const int ts = frame.tile_size;
+  // Along one axis: the first tile starting in the box ends in it.
+  auto holds = [ts](int lo, int hi, int size) {
+    const int start = (lo + ts - 1) & ~(ts - 1);
+    return start < size && std::min(start + ts, size) - 1 <= hi;
+  };
+  return holds(min_x, max_x, frame.width) && holds(min_y, max_y, frame.height);
+}
 
 // The sequence entry of primitive `index` with the given pixel bounding box (inclusive, inside
 // the frame). Inline: most triangles lie in one tile, and setup calls this for each.
@@ -37,7 +52,11 @@ inline SequenceEntry binning_entry(const Frame& frame, std::uint32_t index,
   e.tile_x1 = static_cast<std::uint16_t>(max_x >> shift);
   e.tile_y1 = static_cast<std::uint16_t>(max_y >> shift);
   const bool one_tile = e.tile_x0 == e.tile_x1 && e.tile_y0 == e.tile_y1;
-  e.tiles = one_tile ? 1u : binning_tile_mask(frame, triangle, e);
+  if (triangle != nullptr && box_holds_a_tile(frame, min_x, min_y, max_x, max_y)) {
+    e.tiles = 0;  // binning tests its tiles, and notes those it may hide
+  } else {
+    e.tiles = one_tile ? 1u : binning_tile_mask(frame, triangle, e);
+  }
   return e;
 }
 

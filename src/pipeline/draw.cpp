@@ -299,13 +299,17 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
   tile.block_max_depth = buffers.block_max_depth.data();
   pipeline::WaitingPixels waiting;
   tile.waiting = &waiting;
-  // Skip what the tile's last full, opaque, nearest triangle hides anyway; in bins of a few
-  // (large) triangles, also what such triangles hide block by block.
-  bin +=
-      pipeline::first_visible_entry(frame, bin, bin_end - bin, tile.x0, tile.y0, tile.x1, tile.y1);
+  // Skip what the tile's last full, opaque, nearest triangle hides anyway (binning noted
+  // whether there may be one); in bins of a few (large) triangles, also what such triangles
+  // hide block by block.
+  const bool may_hide = frame.bin_may_hide[index] != 0;
+  if (may_hide) {
+    bin += pipeline::first_visible_entry(frame, bin, bin_end - bin, tile.x0, tile.y0, tile.x1,
+                                         tile.y1);
+  }
   const std::uint32_t* const first_drawn = bin;
   // The views count or color what is drawn in their own ways: they always start cleared.
-  const bool color_hidden = debug == DebugView::none && bin != bin_end &&
+  const bool color_hidden = debug == DebugView::none && may_hide && bin != bin_end &&
                             pipeline::hides_clear(frame, *bin, tile.x0, tile.y0, tile.x1, tile.y1);
   pipeline::clear_tile(tile, background, color_hidden);
   std::uint32_t block_starts[pipeline::kMaxTileBlocks];

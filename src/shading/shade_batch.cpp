@@ -158,10 +158,15 @@ void ShadeBatch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, f
       for (int c = 0; c < 3; ++c) color[c] = hn::Add(albedo.c[c], emissive[c]);
       color[3] = hn::Add(albedo.c[3], hn::Zero(d));
     } else {
-      // surface_point(): view and normal, the normal facing the viewer if two-sided.
-      const Vec3V position = Load3(in.v, kPositionSlot, j);
-      const Vec3V view = SafeNormalize(
-          {hn::Sub(eye.x, position.x), hn::Sub(eye.y, position.y), hn::Sub(eye.z, position.z)});
+      // surface_point(): view and normal, the normal facing the viewer if two-sided. Lambert
+      // lit from one side needs no view, nor its square root and division.
+      const bool needs_view = two_sided || model != BatchModel::lambert;
+      Vec3V view{hn::Zero(d), hn::Zero(d), hn::Zero(d)};
+      if (needs_view) {
+        const Vec3V position = Load3(in.v, kPositionSlot, j);
+        view = SafeNormalize(
+            {hn::Sub(eye.x, position.x), hn::Sub(eye.y, position.y), hn::Sub(eye.z, position.z)});
+      }
       Vec3V n = SafeNormalize(Load3(in.v, kNormalSlot, j));
       if (two_sided) {
         const auto back = hn::Lt(Dot(n, view), hn::Zero(d));

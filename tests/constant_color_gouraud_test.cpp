@@ -36,22 +36,19 @@ TEST(ConstantColorGouraud, IsChosenOnlyWhenNothingVariesTheColor) {
   constexpr int kConstant = shading::ConstantColorGouraudShading::kVaryings;
   constexpr int kFull = shading::GouraudShading::kVaryings;
   static_assert(kConstant < kFull);
+  const Lighting lights;
 
   Material m = gouraud_material();
-  EXPECT_EQ(pipeline::pipeline_for(m, plain).varyings, kConstant);
-  EXPECT_EQ(pipeline::pipeline_for(m, colored).varyings, kFull);
+  EXPECT_EQ(pipeline::pipeline_for(m, plain, lights).varyings, kConstant);
+  EXPECT_EQ(pipeline::pipeline_for(m, colored, lights).varyings, kFull);
   m.use_vertex_colors = false;  // the colors are ignored
-  EXPECT_EQ(pipeline::pipeline_for(m, colored).varyings, kConstant);
+  EXPECT_EQ(pipeline::pipeline_for(m, colored, lights).varyings, kConstant);
   Material textured = gouraud_material();
   textured.base_color_map.texture = texture;
-  EXPECT_EQ(pipeline::pipeline_for(textured, plain).varyings, kFull);
+  EXPECT_EQ(pipeline::pipeline_for(textured, plain, lights).varyings, kFull);
   Material glowing = gouraud_material();
   glowing.emissive_map.texture = texture;
-  EXPECT_EQ(pipeline::pipeline_for(glowing, plain).varyings, kFull);
-  Material lambert = gouraud_material();
-  lambert.shading = ShadingModel::lambert;
-  EXPECT_EQ(pipeline::pipeline_for(lambert, plain).varyings,
-            pipeline::pipeline_for(ShadingModel::lambert).varyings);
+  EXPECT_EQ(pipeline::pipeline_for(glowing, plain, lights).varyings, kFull);
 }
 
 TEST(ConstantColorGouraud, DrawsWhatTheFullGouraudModelDraws) {
@@ -72,7 +69,7 @@ TEST(ConstantColorGouraud, DrawsWhatTheFullGouraudModelDraws) {
     return fb;
   };
   const Framebuffer full = render(pipeline::make_pipeline<shading::GouraudShading>());
-  const Framebuffer constant = render(pipeline::pipeline_for(material, sphere));
+  const Framebuffer constant = render(pipeline::pipeline_for(material, sphere, Lighting{}));
   int lit = 0, differing = 0;
   for (std::size_t i = 0; i < full.rgba8().size(); ++i) {
     const int difference = std::abs(full.rgba8()[i] - constant.rgba8()[i]);

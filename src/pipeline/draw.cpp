@@ -148,7 +148,7 @@ void Renderer::begin_frame(const Camera& camera, const Lighting& lighting) {
 }
 
 void Renderer::draw(const Mesh& mesh, const Material& material, const glm::mat4& transform) {
-  impl_->record(mesh, material, transform, pipeline::pipeline_for(material, mesh));
+  impl_->record(mesh, material, transform, pipeline::pipeline_for(material, mesh, impl_->lighting));
 }
 
 void Renderer::Impl::record(const Mesh& mesh, const Material& material, const glm::mat4& transform,

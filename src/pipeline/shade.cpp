@@ -1,6 +1,8 @@
 // Stage: shade (see shade.hpp).
 #include "pipeline/shade.hpp"
 
+#include <algorithm>
+
 #include "shading/lit_models.hpp"
 #include "shading/models.hpp"
 
@@ -62,11 +64,17 @@ DrawPipeline pipeline_for(ShadingModel model, AlphaMode alpha) {
   return make_pipeline<LambertShading>();
 }
 
-DrawPipeline pipeline_for(const Material& material, const Mesh& mesh) {
+DrawPipeline pipeline_for(const Material& material, const Mesh& mesh, const Lighting& lighting) {
   const bool constant_color = !material.base_color_map && !material.emissive_map &&
                               !(material.use_vertex_colors && !mesh.colors.empty());
   if (material.shading == ShadingModel::gouraud && constant_color) {
     return with_alpha<shading::ConstantColorGouraudShading>(material.alpha_mode);
+  }
+  const bool directional =
+      std::all_of(lighting.lights.begin(), lighting.lights.end(),
+                  [](const Light& light) { return light.type == LightType::directional; });
+  if (material.shading == ShadingModel::lambert && material.cull != CullMode::none && directional) {
+    return with_alpha<shading::UnpositionedLambertShading>(material.alpha_mode);
   }
   return pipeline_for(material.shading, material.alpha_mode);
 }

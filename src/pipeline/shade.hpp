@@ -3,6 +3,7 @@
 // raster loop instantiated for that model (raster.hpp). No per-pixel dispatch remains.
 #pragma once
 
+#include "facet/light.hpp"
 #include "facet/material.hpp"
 #include "facet/mesh.hpp"
 #include "pipeline/frame.hpp"
@@ -13,10 +14,11 @@ namespace facet::pipeline {
 // The pipeline for a built-in shading model and alpha mode.
 DrawPipeline pipeline_for(ShadingModel model, AlphaMode alpha = AlphaMode::opaque);
 
-// The pipeline for a draw: its material's shading model and alpha mode, where the mesh and
-// material allow in a cheaper form (Gouraud of one constant surface color interpolates only
-// its light).
-DrawPipeline pipeline_for(const Material& material, const Mesh& mesh);
+// The pipeline for a draw: its material's shading model and alpha mode, where the mesh,
+// material and the frame's lights allow in a cheaper form (Gouraud of one constant surface
+// color interpolates only its light; Lambert lit from one side by directional lights only,
+// no position).
+DrawPipeline pipeline_for(const Material& material, const Mesh& mesh, const Lighting& lighting);
 
 // The pipeline for any shading model type (see shading/models.hpp for what it provides);
 // also how tests plug in their own models.

@@ -109,19 +109,35 @@ struct FlatShading {
 };
 
 // Per-pixel Lambert: the interpolated normal is renormalized and lit at each pixel.
-struct LambertShading : BatchForm<BatchModel::lambert> {
-  static constexpr int kVaryings = kSurfaceVaryings;
+// kPositioned false: without the position, for draws lit by directional lights only and from
+// one side (pipeline/shade.cpp decides), which never read it: 9 varyings instead of 12 to set
+// up and interpolate, the same colors.
+template <bool kPositioned>
+struct LambertShadingT : BatchForm<BatchModel::lambert> {
+  static constexpr int kVaryings = kPositioned ? kSurfaceVaryings : kUnpositionedSurfaceVaryings;
   static constexpr int kNormalSlot = shading::kNormalSlot;
   static constexpr int kBaseColorTexcoord = kTexcoordSlot;
   static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
     surface_vertex<kVaryings>(in, u, out);
   }
   static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
-    SurfacePoint s = surface_point<false>(f, u);
-    glm::vec3 color = diffuse_light(glm::vec3(s.albedo), s.normal, s.position, u);
-    return {color + emission(f, u), s.albedo.a};
+    if constexpr (kPositioned) {
+      SurfacePoint s = surface_point<false>(f, u);
+      glm::vec3 color = diffuse_light(glm::vec3(s.albedo), s.normal, s.position, u);
+      return {color + emission(f, u), s.albedo.a};
+    } else {
+      // surface_point() but for the view and position, which only turn back faces and light
+      // from points and spots.
+      const glm::vec3 normal = safe_normalize(load3(f.v + shading::kNormalSlot));
+      glm::vec4 albedo = load4(f.v + kColorSlot);
+      if (u.material->base_color_map) albedo *= base_color_texel(f, u);
+      glm::vec3 color = diffuse_light(glm::vec3(albedo), normal, glm::vec3(0.0f), u);
+      return {color + emission(f, u), albedo.a};
+    }
   }
 };
+using LambertShading = LambertShadingT<true>;
+using UnpositionedLambertShading = LambertShadingT<false>;
 
 // Lambert with the triangle edges drawn on top (the raster loop draws them; raster.hpp).
 struct WireOverlayShading : LambertShading {

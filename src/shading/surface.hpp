@@ -18,10 +18,13 @@ namespace facet::shading {
 
 inline constexpr int kTexcoordSlot = 0;
 inline constexpr int kColorSlot = 2;
-inline constexpr int kPositionSlot = 6;
-inline constexpr int kNormalSlot = 9;
+inline constexpr int kNormalSlot = 6;
+inline constexpr int kPositionSlot = 9;
 inline constexpr int kTangentSlot = 12;
-inline constexpr int kUnlitVaryings = 6;                // texture coordinate and color
+inline constexpr int kUnlitVaryings = 6;  // texture coordinate and color
+// Also without the position: what a surface lit by directional lights only, from one side,
+// reads (no light's direction depends on where the pixel is, and no back face is turned).
+inline constexpr int kUnpositionedSurfaceVaryings = 9;
 inline constexpr int kSurfaceVaryings = 12;             // without tangent
 inline constexpr int kSurfaceVaryingsWithTangent = 16;  // for normal maps
 
@@ -47,9 +50,9 @@ template <int kCount>
 void surface_vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
   store(out + kTexcoordSlot, in.texcoord);
   store(out + kColorSlot, material_color(in, u));
+  if constexpr (kCount > kNormalSlot) store(out + kNormalSlot, in.normal);
   if constexpr (kCount > kPositionSlot) {
     store(out + kPositionSlot, glm::vec3(u.model * glm::vec4(in.position, 1.0f)));
-    store(out + kNormalSlot, in.normal);
   }
   if constexpr (kCount > kTangentSlot) store(out + kTangentSlot, in.tangent);
 }

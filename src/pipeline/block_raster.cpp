@@ -59,6 +59,13 @@ void CoverBlock(const BlockInput& in, BlockFragments& out) {
         pass = hn::And(pass, hn::Lt(z, hn::LoadU(df, depth_row + x)));  // NaN fails
         if (hn::AllFalse(df, pass)) continue;
       }
+      if (!in.interpolate) {
+        std::uint8_t bits = 0;
+        hn::StoreMaskBits(df, pass, &bits);
+        mask |= static_cast<std::uint64_t>(bits) << lane0;
+        hn::Store(z, df, out.z + lane0);
+        continue;
+      }
       if (!have_rows) {
         inv_w_row = evaluate_row(t.inv_w, t.ref_y, py);
         for (int k = 0; k < in.varyings; ++k) {

@@ -38,10 +38,13 @@ struct BlockInput {
   bool depth_test;     // false: every covered pixel passes
   const float* depth;  // the tile's depth at block pixel (0, 0)
   int depth_stride;    // floats per depth row
+  // false: the mask and depths only (BlockFragments::w and v left as they were), for blocks
+  // whose pixels are packed and interpolated afterwards (interpolate_pixels).
+  bool interpolate = true;
 };
 
 // What cover_block finds, structure of arrays indexed by y * 8 + x. Lanes whose mask bit is
-// clear hold unspecified values.
+// clear hold unspecified values; w and v are only filled when BlockInput::interpolate.
 struct BlockFragments {
   std::uint64_t mask;  // bit y * 8 + x: covered and passes the depth test
   alignas(64) float z[kBlockPixels];

@@ -70,6 +70,10 @@ DrawPipeline pipeline_for(const Material& material, const Mesh& mesh, const Ligh
   if (material.shading == ShadingModel::gouraud && constant_color) {
     return with_alpha<shading::ConstantColorGouraudShading>(material.alpha_mode);
   }
+  if (material.shading == ShadingModel::unlit &&
+      !(material.use_vertex_colors && !mesh.colors.empty())) {
+    return with_alpha<shading::ConstantColorUnlitShading>(material.alpha_mode);
+  }
   const bool directional =
       std::all_of(lighting.lights.begin(), lighting.lights.end(),
                   [](const Light& light) { return light.type == LightType::directional; });

@@ -82,6 +82,24 @@ struct UnlitShading : BatchForm<BatchModel::unlit> {
   }
 };
 
+// Unlit for a draw whose color is the material's alone (no vertex colors: pipeline/shade.cpp
+// decides): the texture coordinate is its only varying, and the color is the material's
+// exactly, not an interpolated constant that may be off in the last bit.
+struct ConstantColorUnlitShading : BatchForm<BatchModel::constant_unlit> {
+  static constexpr int kVaryings = 2;
+  static constexpr int kNormalSlot = -1;
+  static constexpr int kBaseColorTexcoord = kTexcoordSlot;
+  static_assert(kTexcoordSlot + 2 <= kVaryings);
+  static void vertex(const VertexInput& in, const DrawUniforms&, float* out) {
+    store(out + kTexcoordSlot, in.texcoord);
+  }
+  static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
+    glm::vec4 color = u.base_color;
+    if (u.material->base_color_map) color *= base_color_texel(f, u);
+    return color + glm::vec4(emission(f, u), 0.0f);
+  }
+};
+
 // The mesh's vertex colors only (white where it has none).
 struct VertexColorShading {
   static constexpr int kVaryings = 4;

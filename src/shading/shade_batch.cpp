@@ -31,10 +31,13 @@ using FloatV = BatchV;
 struct Albedo {
   FloatV c[4];
 };
-HWY_INLINE Albedo LoadAlbedo(const ShadeInput& in, int j) {
+HWY_INLINE Albedo LoadAlbedo(BatchModel model, const DrawUniforms& u, const ShadeInput& in, int j) {
   const FloatTag d;
   Albedo a;
-  for (int c = 0; c < 4; ++c) a.c[c] = hn::Load(d, in.v[kColorSlot + c] + j);
+  for (int c = 0; c < 4; ++c) {
+    a.c[c] = model == BatchModel::constant_unlit ? hn::Set(d, u.base_color[c])
+                                                 : hn::Load(d, in.v[kColorSlot + c] + j);
+  }
   if (in.base_texel != nullptr) {
     FloatV t[4];
     hn::LoadInterleaved4(d, &in.base_texel[j][0], t[0], t[1], t[2], t[3]);
@@ -152,9 +155,9 @@ void ShadeBatch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, f
   const bool two_sided = m.cull == CullMode::none;
   const Vec3V eye{hn::Set(d, u.eye.x), hn::Set(d, u.eye.y), hn::Set(d, u.eye.z)};
   for (int j = 0; j < in.count; j += lanes) {
-    const Albedo albedo = LoadAlbedo(in, j);
+    const Albedo albedo = LoadAlbedo(model, u, in, j);
     FloatV color[4];
-    if (model == BatchModel::unlit) {
+    if (model == BatchModel::unlit || model == BatchModel::constant_unlit) {
       for (int c = 0; c < 3; ++c) color[c] = hn::Add(albedo.c[c], emissive[c]);
       color[3] = hn::Add(albedo.c[3], hn::Zero(d));
     } else {

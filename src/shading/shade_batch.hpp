@@ -14,7 +14,8 @@ namespace facet::shading {
 
 inline constexpr int kShadeBatch = 64;
 
-enum class BatchModel { unlit, lambert, phong, blinn_phong, normals };
+// constant_unlit: unlit with the material's base color instead of an interpolated color.
+enum class BatchModel { unlit, constant_unlit, lambert, phong, blinn_phong, normals };
 
 // Packed pixels of one draw (of one triangle, or of several small ones: pipeline/
 // small_triangles.hpp): n-th pixel's clip w is w[n], its varying k is v[k][n]. Arrays

@@ -1,0 +1,88 @@
+// Unlit draws whose color is the material's alone interpolate only their texture coordinate
+// (ConstantColorUnlitShading, 2 varyings instead of 6): chosen exactly when no vertex colors
+// vary the color, and drawing what the full unlit model draws, but for the last bit of rounding
+// of the interpolated constant color that it no longer has.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <glm/gtc/matrix_transform.hpp>
+#include <memory>
+
+#include "facet/procedural.hpp"
+#include "pipeline/draw.hpp"
+#include "pipeline/shade.hpp"
+#include "shading/models.hpp"
+#include "support/render_helpers.hpp"
+
+namespace facet::test {
+namespace {
+
+constexpr int kConstant = shading::ConstantColorUnlitShading::kVaryings;
+constexpr int kFull = shading::UnlitShading::kVaryings;
+static_assert(kConstant < kFull);
+
+std::shared_ptr<const Texture> checker() {
+  return Texture::from_rgba8(
+      2, 2, {255, 255, 255, 255, 40, 90, 200, 255, 40, 90, 200, 255, 255, 255, 255, 255}, true,
+      "checker");
+}
+
+TEST(ConstantColorUnlit, IsChosenOnlyWhenNoVertexColorVariesTheColor) {
+  const Mesh plain = uv_sphere(1.0f, 8, 4);
+  Mesh colored = plain;
+  colored.colors.assign(colored.positions.size(), glm::vec4(0.5f));
+  const Lighting lights;
+  Material m;
+  m.shading = ShadingModel::unlit;
+  EXPECT_EQ(pipeline::pipeline_for(m, plain, lights).varyings, kConstant);
+  EXPECT_EQ(pipeline::pipeline_for(m, colored, lights).varyings, kFull);
+  m.use_vertex_colors = false;  // the colors are ignored
+  EXPECT_EQ(pipeline::pipeline_for(m, colored, lights).varyings, kConstant);
+  m.base_color_map.texture = checker();  // a texture reads the texture coordinate only
+  EXPECT_EQ(pipeline::pipeline_for(m, colored, lights).varyings, kConstant);
+  m.alpha_mode = AlphaMode::blend;
+  EXPECT_EQ(pipeline::pipeline_for(m, plain, lights).varyings, kConstant);
+}
+
+TEST(ConstantColorUnlit, DrawsWhatTheFullUnlitModelDraws) {
+  constexpr int kWidth = 160, kHeight = 120;
+  const Mesh sphere = uv_sphere(1.0f, 40, 20);
+  Material batched;
+  batched.shading = ShadingModel::unlit;
+  batched.base_color = {0.8f, 0.45f, 0.2f, 1.0f};
+  batched.base_color_map.texture = checker();
+  batched.emissive = {0.05f, 0.0f, 0.02f};
+  // An emissive map keeps the batch shader out: one pixel at a time (fragment()).
+  Material per_pixel = batched;
+  per_pixel.emissive_map.texture = checker();
+  const glm::mat4 left = glm::translate(glm::mat4(1.0f), glm::vec3(-1.2f, 0.0f, -4.0f));
+  const glm::mat4 right = glm::translate(glm::mat4(1.0f), glm::vec3(1.2f, 0.0f, -5.0f));
+  for (const Material* material : {&batched, &per_pixel}) {
+    auto render = [&](const pipeline::DrawPipeline& pipe) {
+      Renderer renderer;
+      Framebuffer fb(kWidth, kHeight);
+      renderer.begin_frame(test_camera(kWidth, kHeight));
+      pipeline::draw_with_pipeline(renderer, sphere, *material, left, pipe);
+      pipeline::draw_with_pipeline(renderer, sphere, *material, right, pipe);
+      renderer.finish(fb);
+      return fb;
+    };
+    const pipeline::DrawPipeline chosen = pipeline::pipeline_for(*material, sphere, Lighting{});
+    ASSERT_EQ(chosen.varyings, kConstant);
+    const Framebuffer full = render(pipeline::make_pipeline<shading::UnlitShading>());
+    const Framebuffer constant = render(chosen);
+    int drawn = 0, differing = 0;
+    for (std::size_t i = 0; i < full.rgba8().size(); ++i) {
+      const int difference = std::abs(full.rgba8()[i] - constant.rgba8()[i]);
+      ASSERT_LE(difference, 1) << "byte " << i;
+      differing += difference != 0;
+      drawn += i % 4 == 0 && full.rgba8()[i] > 0;
+    }
+    EXPECT_GT(drawn, kWidth * kHeight / 8);     // the spheres are there
+    EXPECT_LT(differing, drawn / 20) << drawn;  // and almost every byte is the same
+    EXPECT_EQ(full.depth(), constant.depth());
+  }
+}
+
+}  // namespace
+}  // namespace facet::test

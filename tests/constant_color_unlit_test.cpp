@@ -5,11 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
-#include <glm/gtc/matrix_transform.hpp>
-#include <memory>
 
 #include "facet/procedural.hpp"
-#include "pipeline/draw.hpp"
 #include "pipeline/shade.hpp"
 #include "shading/models.hpp"
 #include "support/render_helpers.hpp"
@@ -20,12 +17,6 @@ namespace {
 constexpr int kConstant = shading::ConstantColorUnlitShading::kVaryings;
 constexpr int kFull = shading::UnlitShading::kVaryings;
 static_assert(kConstant < kFull);
-
-std::shared_ptr<const Texture> checker() {
-  return Texture::from_rgba8(
-      2, 2, {255, 255, 255, 255, 40, 90, 200, 255, 40, 90, 200, 255, 255, 255, 255, 255}, true,
-      "checker");
-}
 
 TEST(ConstantColorUnlit, IsChosenOnlyWhenNoVertexColorVariesTheColor) {
   const Mesh plain = uv_sphere(1.0f, 8, 4);
@@ -38,7 +29,7 @@ TEST(ConstantColorUnlit, IsChosenOnlyWhenNoVertexColorVariesTheColor) {
   EXPECT_EQ(pipeline::pipeline_for(m, colored, lights).varyings, kFull);
   m.use_vertex_colors = false;  // the colors are ignored
   EXPECT_EQ(pipeline::pipeline_for(m, colored, lights).varyings, kConstant);
-  m.base_color_map.texture = checker();  // a texture reads the texture coordinate only
+  m.base_color_map.texture = checker_texture();  // a texture reads the texture coordinate only
   EXPECT_EQ(pipeline::pipeline_for(m, colored, lights).varyings, kConstant);
   m.alpha_mode = AlphaMode::blend;
   EXPECT_EQ(pipeline::pipeline_for(m, plain, lights).varyings, kConstant);
@@ -50,22 +41,14 @@ TEST(ConstantColorUnlit, DrawsWhatTheFullUnlitModelDraws) {
   Material batched;
   batched.shading = ShadingModel::unlit;
   batched.base_color = {0.8f, 0.45f, 0.2f, 1.0f};
-  batched.base_color_map.texture = checker();
+  batched.base_color_map.texture = checker_texture();
   batched.emissive = {0.05f, 0.0f, 0.02f};
   // An emissive map keeps the batch shader out: one pixel at a time (fragment()).
   Material per_pixel = batched;
-  per_pixel.emissive_map.texture = checker();
-  const glm::mat4 left = glm::translate(glm::mat4(1.0f), glm::vec3(-1.2f, 0.0f, -4.0f));
-  const glm::mat4 right = glm::translate(glm::mat4(1.0f), glm::vec3(1.2f, 0.0f, -5.0f));
+  per_pixel.emissive_map.texture = checker_texture();
   for (const Material* material : {&batched, &per_pixel}) {
     auto render = [&](const pipeline::DrawPipeline& pipe) {
-      Renderer renderer;
-      Framebuffer fb(kWidth, kHeight);
-      renderer.begin_frame(test_camera(kWidth, kHeight));
-      pipeline::draw_with_pipeline(renderer, sphere, *material, left, pipe);
-      pipeline::draw_with_pipeline(renderer, sphere, *material, right, pipe);
-      renderer.finish(fb);
-      return fb;
+      return render_side_by_side(sphere, sphere, *material, pipe, kWidth, kHeight);
     };
     const pipeline::DrawPipeline chosen = pipeline::pipeline_for(*material, sphere, Lighting{});
     ASSERT_EQ(chosen.varyings, kConstant);

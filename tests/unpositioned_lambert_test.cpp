@@ -4,11 +4,9 @@
 // time or one pixel at a time.
 #include <gtest/gtest.h>
 
-#include <glm/gtc/matrix_transform.hpp>
 #include <memory>
 
 #include "facet/procedural.hpp"
-#include "pipeline/draw.hpp"
 #include "pipeline/shade.hpp"
 #include "shading/models.hpp"
 #include "support/render_helpers.hpp"
@@ -51,9 +49,7 @@ TEST(UnpositionedLambert, DrawsWhatTheFullLambertModelDraws) {
   }
   Mesh faceted = sphere;
   faceted.normals.clear();  // the face normal fills the normal slot
-  const std::shared_ptr<const Texture> checker = Texture::from_rgba8(
-      2, 2, {255, 255, 255, 255, 40, 90, 200, 255, 40, 90, 200, 255, 255, 255, 255, 255}, true,
-      "checker");
+  const std::shared_ptr<const Texture> checker = checker_texture();
   Material batched;
   batched.shading = ShadingModel::lambert;
   batched.base_color_map.texture = checker;
@@ -68,17 +64,9 @@ TEST(UnpositionedLambert, DrawsWhatTheFullLambertModelDraws) {
   lighting.fog.mode = FogMode::linear;
   lighting.fog.start = 3.0f;
   lighting.fog.end = 9.0f;
-  const glm::mat4 left = glm::translate(glm::mat4(1.0f), glm::vec3(-1.2f, 0.0f, -4.0f));
-  const glm::mat4 right = glm::translate(glm::mat4(1.0f), glm::vec3(1.2f, 0.0f, -5.0f));
   for (const Material* material : {&batched, &per_pixel}) {
     auto render = [&](const pipeline::DrawPipeline& pipe) {
-      Renderer renderer;
-      Framebuffer fb(kWidth, kHeight);
-      renderer.begin_frame(test_camera(kWidth, kHeight), lighting);
-      pipeline::draw_with_pipeline(renderer, sphere, *material, left, pipe);
-      pipeline::draw_with_pipeline(renderer, faceted, *material, right, pipe);
-      renderer.finish(fb);
-      return fb;
+      return render_side_by_side(sphere, faceted, *material, pipe, kWidth, kHeight, &lighting);
     };
     const pipeline::DrawPipeline chosen = pipeline::pipeline_for(*material, sphere, lighting);
     ASSERT_EQ(chosen.varyings, kUnpositioned);

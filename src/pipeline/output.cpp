@@ -12,8 +12,6 @@
 namespace facet::pipeline {
 namespace {
 
-// Depth of a cleared pixel: the far plane.
-
 // One linear color (scaled by the exposure) as 8-bit sRGB RGBA.
 inline void encode_pixel(const shading::SrgbTables& tables, const glm::vec4& c, float scale,
                          std::uint8_t* out) {

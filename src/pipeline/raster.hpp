@@ -141,16 +141,17 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
       const std::ptrdiff_t block_offset =
           static_cast<std::ptrdiff_t>(block_y - tile.y0) * tile.stride + (block_x - tile.x0);
       in.depth = tile.depth + block_offset;
-      // Batches take a block's pixels packed, interpolated afterwards for the packed ones only
-      // (interpolate_pixels: the same values); only a block sure to be whole goes straight to
-      // shade_full_block with cover_block's values. Packing a pixel's w and varyings one by one
-      // was a fifth of islands' raster loop.
+      // Batches take a block's pixels packed, and interpolate_pixels gives the packed ones their
+      // w and varyings (the same values); copying those one by one from cover_block's rows was
+      // a third of raster_triangle's time on the islands. cover_block interpolates only where
+      // the block is likely whole, for shade_full_block: every edge inside, and the triangle
+      // in front of the block's depth bound (exactly whole then in a first layer).
       const bool all_inside = (in.a[0] | in.b[0] | in.e[0] | in.a[1] | in.b[1] | in.e[1] | in.a[2] |
                                in.b[2] | in.e[2]) == 0 &&
                               in.x_begin == 0 && in.x_end == kBlockSize && in.y_begin == 0 &&
                               in.y_end == kBlockSize;
-      const bool surely_whole = all_inside && (!kDepthTest || box_depth.farthest < max_depth);
-      in.interpolate = !out.batches() || (surely_whole && out.full_blocks());
+      const bool likely_whole = all_inside && (!kDepthTest || box_depth.farthest < max_depth);
+      in.interpolate = !out.batches() || (likely_whole && out.full_blocks());
       cover_block(in, block);
       if (block.mask == 0) continue;
       int written = 0;

@@ -40,7 +40,7 @@ void FillSkyRow(const SkyView& view, const Environment& env, int x0, int y, int 
   alignas(32) float rgb[3][8];
   for (int i = 0; i < count; i += lanes) {
     // Only where something shows the sky: its divisions and square roots are most of a
-    // covered pixel's cost otherwise (islands 3 % faster).
+    // covered pixel's cost otherwise.
     bool shows_sky = false;
     if (i + lanes <= count) {
       shows_sky = !hn::AllFalse(d, hn::Eq(hn::LoadU(d, depth + i), hn::Set(d, clear_depth)));

@@ -8,6 +8,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <glm/gtc/matrix_transform.hpp>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -69,6 +70,31 @@ Framebuffer render_unlit(const std::vector<const Mesh*>& meshes, const Camera& c
   for (const Mesh* mesh : meshes) renderer.draw(*mesh, material);
   renderer.finish(fb);
   return fb;
+}
+
+Framebuffer render_side_by_side(const Mesh& left, const Mesh& right, const Material& material,
+                                const pipeline::DrawPipeline& pipe, int width, int height,
+                                const Lighting* lighting) {
+  Renderer renderer;
+  Framebuffer fb(width, height);
+  if (lighting) {
+    renderer.begin_frame(test_camera(width, height), *lighting);
+  } else {
+    renderer.begin_frame(test_camera(width, height));
+  }
+  pipeline::draw_with_pipeline(renderer, left, material,
+                               glm::translate(glm::mat4(1.0f), glm::vec3(-1.2f, 0.0f, -4.0f)),
+                               pipe);
+  pipeline::draw_with_pipeline(renderer, right, material,
+                               glm::translate(glm::mat4(1.0f), glm::vec3(1.2f, 0.0f, -5.0f)), pipe);
+  renderer.finish(fb);
+  return fb;
+}
+
+std::shared_ptr<const Texture> checker_texture() {
+  return Texture::from_rgba8(
+      2, 2, {255, 255, 255, 255, 40, 90, 200, 255, 40, 90, 200, 255, 255, 255, 255, 255}, true,
+      "checker");
 }
 
 Camera test_camera(int width, int height, float fov, float near_plane, float far_plane) {

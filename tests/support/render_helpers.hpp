@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <glm/glm.hpp>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,8 @@
 #include "facet/material.hpp"
 #include "facet/mesh.hpp"
 #include "facet/renderer.hpp"
+#include "facet/texture.hpp"
+#include "pipeline/frame.hpp"
 
 namespace facet::test {
 
@@ -34,6 +37,17 @@ std::vector<int> coverage_counts(const std::vector<const Mesh*>& meshes, const C
 // Renders meshes with an unlit material and returns the framebuffer (color and depth).
 Framebuffer render_unlit(const std::vector<const Mesh*>& meshes, const Camera& camera, int width,
                          int height, CullMode cull = CullMode::none, RenderSettings settings = {});
+
+// Two meshes side by side in front of test_camera (left at x = -1.2, 4 units away; right at
+// x = 1.2, 5 away), both drawn with `pipe` rather than the pipeline their material would get:
+// how a cheaper form of a shading model is compared with the full one.
+// lighting: null for the default lights.
+Framebuffer render_side_by_side(const Mesh& left, const Mesh& right, const Material& material,
+                                const pipeline::DrawPipeline& pipe, int width, int height,
+                                const Lighting* lighting = nullptr);
+
+// A 2x2 sRGB texture of two colors, white and blue, on the diagonals.
+std::shared_ptr<const Texture> checker_texture();
 
 // A camera at the origin looking down -Z with the aspect of width x height.
 Camera test_camera(int width, int height, float fov = 60.0f, float near_plane = 0.1f,

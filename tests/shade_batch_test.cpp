@@ -102,9 +102,10 @@ glm::vec4 scalar_fragment(const Inputs& in, const float (*texel)[4], int n,
 }
 
 // Compares Shading::fragment_batch with fragment() (then apply_fog) over random batches, on
-// every SIMD target; draws its batch_shades declines are skipped (enough must remain).
+// every SIMD target; draws its batch_shades declines are skipped (enough must remain), and so
+// are those `takes` declines (for models chosen only for some draws: pipeline/shade.cpp).
 template <class Shading>
-void expect_same_bits() {
+void expect_same_bits(bool (*takes)(const Draw&) = nullptr) {
   const std::vector<std::int64_t> targets = simd_targets();
   ASSERT_GE(targets.size(), 2u);
   std::mt19937 rng(20261122);
@@ -120,7 +121,7 @@ void expect_same_bits() {
       const bool textured = round % 2 == 0;
       if (textured) draw.material.base_color_map.texture = missing_texture();
       const float(*texel)[4] = textured ? in.texel : nullptr;
-      if (!Shading::batch_shades(draw.uniforms)) continue;
+      if (!Shading::batch_shades(draw.uniforms) || (takes && !takes(draw))) continue;
       // Every fourth round a whole block into rows 13 colors apart, as into a tile.
       const bool rows = round % 4 == 1;
       const int count = rows ? kShadeBatch : 1 + static_cast<int>(rng() % kShadeBatch);
@@ -148,6 +149,20 @@ TEST(ShadeBatch, LambertGivesFragmentsBitsOnEveryTarget) {
   expect_same_bits<shading::LambertShading>();
 }
 
+TEST(ShadeBatch, UnpositionedLambertGivesFragmentsBitsOnEveryTarget) {
+  // Chosen only for draws lit from one side (by directional lights, which are all randomize()
+  // makes).
+  expect_same_bits<shading::UnpositionedLambertShading>(
+      [](const Draw& d) { return d.material.cull != CullMode::none; });
+}
+
+TEST(ShadeBatch, GouraudModelsGiveFragmentsBitsOnEveryTarget) {
+  expect_same_bits<shading::GouraudShading>();
+  // Chosen only for draws without a texture (nor vertex colors, which randomize() has none of).
+  expect_same_bits<shading::ConstantColorGouraudShading>(
+      [](const Draw& d) { return !d.material.base_color_map; });
+}
+
 TEST(ShadeBatch, PhongAndBlinnPhongGiveFragmentsBitsOnEveryTarget) {
   expect_same_bits<shading::PhongShading>();
   expect_same_bits<shading::BlinnPhongShading>();
@@ -155,6 +170,7 @@ TEST(ShadeBatch, PhongAndBlinnPhongGiveFragmentsBitsOnEveryTarget) {
 
 TEST(ShadeBatch, UnlitGivesFragmentsBitsOnEveryTarget) {
   expect_same_bits<shading::UnlitShading>();
+  expect_same_bits<shading::ConstantColorUnlitShading>();
 }
 
 TEST(ShadeBatch, NormalsViewGivesFragmentsBitsOnEveryTarget) {

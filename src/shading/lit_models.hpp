@@ -100,7 +100,7 @@ struct GouraudLight {
 
 // Gouraud with a texture or vertex colors. Layout: texture coordinate and color as in the
 // surface layout (so sample_map works), then diffuse light (6-8) and specular light (9-11).
-struct GouraudShading : GouraudLight<6, true> {
+struct GouraudShading : GouraudLight<kGouraudDiffuseSlot, true>, BatchForm<BatchModel::gouraud> {
   static constexpr int kVaryings = 12;
   static constexpr int kBaseColorTexcoord = kTexcoordSlot;
   static_assert(kColorSlot + 4 <= kDiffuseSlot);
@@ -121,7 +121,8 @@ struct GouraudShading : GouraudLight<6, true> {
 // vertex colors (pipeline_for in pipeline/shade.cpp decides). It interpolates only the light,
 // 6 varyings instead of 12: half the plane set-up and interpolation of scenes of many small
 // triangles (million), and the color is the material's exactly, not an interpolated constant.
-struct ConstantColorGouraudShading : GouraudLight<0, false> {
+struct ConstantColorGouraudShading : GouraudLight<kConstantGouraudDiffuseSlot, false>,
+                                     BatchForm<BatchModel::constant_gouraud> {
   static constexpr int kVaryings = 6;
   static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
     light_vertex(glm::vec3(u.model * glm::vec4(in.position, 1.0f)), in.normal, u, out);

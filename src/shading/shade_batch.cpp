@@ -35,8 +35,9 @@ HWY_INLINE Albedo LoadAlbedo(BatchModel model, const DrawUniforms& u, const Shad
   const FloatTag d;
   Albedo a;
   for (int c = 0; c < 4; ++c) {
-    a.c[c] = model == BatchModel::constant_unlit ? hn::Set(d, u.base_color[c])
-                                                 : hn::Load(d, in.v[kColorSlot + c] + j);
+    const bool constant =
+        model == BatchModel::constant_unlit || model == BatchModel::constant_gouraud;
+    a.c[c] = constant ? hn::Set(d, u.base_color[c]) : hn::Load(d, in.v[kColorSlot + c] + j);
   }
   if (in.base_texel != nullptr) {
     FloatV t[4];
@@ -160,6 +161,16 @@ void ShadeBatch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, f
     if (model == BatchModel::unlit || model == BatchModel::constant_unlit) {
       for (int c = 0; c < 3; ++c) color[c] = hn::Add(albedo.c[c], emissive[c]);
       color[3] = hn::Add(albedo.c[3], hn::Zero(d));
+    } else if (model == BatchModel::gouraud || model == BatchModel::constant_gouraud) {
+      // GouraudLight::lit(): albedo x diffuse light + specular light, then emission.
+      const int diffuse =
+          model == BatchModel::gouraud ? kGouraudDiffuseSlot : kConstantGouraudDiffuseSlot;
+      for (int c = 0; c < 3; ++c) {
+        const FloatV lit = hn::Add(hn::Mul(albedo.c[c], hn::Load(d, in.v[diffuse + c] + j)),
+                                   hn::Load(d, in.v[diffuse + 3 + c] + j));
+        color[c] = hn::Add(lit, emissive[c]);
+      }
+      color[3] = albedo.c[3];
     } else {
       // surface_point(): view and normal, the normal facing the viewer if two-sided. Lambert
       // lit from one side needs no view, nor its square root and division.
@@ -212,7 +223,10 @@ bool batch_shades(BatchModel model, const DrawUniforms& u) {
     if (m.normal_map || m.specular_map) return false;
     if (m.reflectivity > 0.0f && u.lighting->environment.reflections) return false;
   }
-  for (int i = 0; i < u.light_count; ++i) {
+  // Unlit models use no light, and the Gouraud models' lights were applied at the vertices.
+  const bool lit_per_pixel = model == BatchModel::lambert || model == BatchModel::phong ||
+                             model == BatchModel::blinn_phong;
+  for (int i = 0; lit_per_pixel && i < u.light_count; ++i) {
     if (u.lights[i].type != LightType::directional) return false;
   }
   return true;

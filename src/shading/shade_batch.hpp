@@ -14,8 +14,24 @@ namespace facet::shading {
 
 inline constexpr int kShadeBatch = 64;
 
-// constant_unlit: unlit with the material's base color instead of an interpolated color.
-enum class BatchModel { unlit, constant_unlit, lambert, phong, blinn_phong, normals };
+// constant_unlit: unlit with the material's base color instead of an interpolated color;
+// gouraud and constant_gouraud: the Gouraud models (lit_models.hpp), whose pixels combine the
+// light interpolated from their vertices.
+enum class BatchModel {
+  unlit,
+  constant_unlit,
+  lambert,
+  phong,
+  blinn_phong,
+  normals,
+  gouraud,
+  constant_gouraud
+};
+
+// Where the Gouraud models keep their interpolated diffuse light (the specular light follows):
+// after the surface layout's texture coordinate and color, or first for one constant color.
+inline constexpr int kGouraudDiffuseSlot = 6;
+inline constexpr int kConstantGouraudDiffuseSlot = 0;
 
 // Packed pixels of one draw (of one triangle, or of several small ones: pipeline/
 // small_triangles.hpp): n-th pixel's clip w is w[n], its varying k is v[k][n]. Arrays
@@ -32,8 +48,9 @@ struct ShadeInput {
   int rgba_row_stride = 8;
 };
 
-// Whether shade_batch can shade this draw with this model: every light directional, no
-// emissive map; for Phong and Blinn-Phong also no normal or specular map and no reflections.
+// Whether shade_batch can shade this draw with this model: no emissive map; for the models lit
+// per pixel every light directional; for Phong and Blinn-Phong also no normal or specular map
+// and no reflections.
 bool batch_shades(BatchModel model, const DrawUniforms& u);
 
 // Linear RGBA of every pixel, as the model's fragment() gives it (then fogged, if in.fog).

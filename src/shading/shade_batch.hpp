@@ -1,10 +1,10 @@
-// The built-in unlit, Lambert, Phong and Blinn-Phong models and the normals view evaluated for
-// a batch of pixels at once, with SIMD (shade_batch.cpp, compiled for every target Highway
-// supports): the raster loop (pipeline/raster.hpp) packs the covered pixels of a triangle (or of
-// several small ones), then shades them together instead of calling the model's fragment() per
-// pixel. Same operations as their fragment() (models.hpp, lit_models.hpp) lane by lane, so the same
-// bits; draws the batch code does not cover (point or spot lights, emissive, normal or specular
-// maps, reflections) keep fragment().
+// The built-in unlit, Lambert, Phong, Blinn-Phong and Gouraud models and the normals view
+// evaluated for a batch of pixels at once, with SIMD (shade_batch.cpp, compiled for every target
+// Highway supports): the raster loop (pipeline/raster.hpp) packs the covered pixels of a triangle
+// (or of several small ones), then shades them together instead of calling the model's
+// fragment() per pixel. Same operations as their fragment() (models.hpp, lit_models.hpp) lane by
+// lane, so the same bits; draws the batch code does not cover (point or spot lights for the
+// models lit per pixel, emissive, normal or specular maps, reflections) keep fragment().
 #pragma once
 
 #include "pipeline/frame.hpp"

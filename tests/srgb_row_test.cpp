@@ -95,11 +95,17 @@ TEST(SrgbRow, GivesTheScalarCodesOnEveryTarget) {
   EXPECT_GT(compared, 100000);
 }
 
-// What lets the row encoder look each channel up once: no run of its table (color.hpp) holds
-// two thresholds, and each entry gives the code at the run's start and where the next begins.
+// What lets the encoders look each channel up once: no run of their table (color.hpp) holds
+// two thresholds, and each entry gives the code at the run's start and where the next begins,
+// by the definition: the largest code whose threshold is at most the value.
 TEST(SrgbTables, EachRunHoldsOneThresholdAtMost) {
   using Tables = shading::SrgbTables;
   const Tables& tables = shading::srgb_tables();
+  auto code_at = [&](std::uint32_t bits) {
+    const float* after = std::upper_bound(
+        tables.thresholds.begin() + 1, tables.thresholds.begin() + 256, std::bit_cast<float>(bits));
+    return static_cast<std::uint32_t>(after - tables.thresholds.begin() - 1);
+  };
   int thresholds_in_runs = 0;
   for (int r = 0; r < Tables::kRuns; ++r) {
     const std::uint32_t start =
@@ -114,15 +120,11 @@ TEST(SrgbTables, EachRunHoldsOneThresholdAtMost) {
     thresholds_in_runs += inside;
     const std::uint32_t entry = tables.run_code[r];
     const std::uint32_t offset = entry & Tables::kRunOffsetMask;
-    ASSERT_EQ(entry >> Tables::kRunCodeShift, shading::encode_srgb8(std::bit_cast<float>(start)));
+    ASSERT_EQ(entry >> Tables::kRunCodeShift, code_at(start)) << "run " << r;
     ASSERT_EQ(offset <= Tables::kRunMask, inside == 1) << "run " << r;
     if (inside == 1) {
-      ASSERT_EQ(shading::encode_srgb8(std::bit_cast<float>(start + offset)),
-                (entry >> Tables::kRunCodeShift) + 1)
-          << "run " << r;
-      ASSERT_EQ(shading::encode_srgb8(std::bit_cast<float>(start + offset - 1)),
-                entry >> Tables::kRunCodeShift)
-          << "run " << r;
+      ASSERT_EQ(code_at(start + offset), (entry >> Tables::kRunCodeShift) + 1) << "run " << r;
+      ASSERT_EQ(code_at(start + offset - 1), entry >> Tables::kRunCodeShift) << "run " << r;
     }
   }
   // Every threshold lies in some run, none in run 0, which also takes every value below it.

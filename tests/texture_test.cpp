@@ -215,7 +215,7 @@ TEST(Texture, BoxFilterWorksInLinearSpace) {
   EXPECT_NEAR(t->texel(1, 0, 0).r, 0.5f, 0.003f);
 }
 
-// The mip builder's fast sRGB encoder against the plain decode / average / encode_srgb8.
+// The mip builder's sRGB level against the plain decode / average / encode_srgb8.
 TEST(Texture, SrgbMipLevelMatchesAScalarReference) {
   std::mt19937 random(7);
   std::vector<std::uint8_t> rgba(std::size_t{64} * 64 * 4);
@@ -451,7 +451,7 @@ TEST(Texture, UnreadableFilesThrowNamingThePath) {
 namespace facet::shading {
 namespace {
 
-// The fast sRGB encoder against the definition: round(linear_to_srgb(x) * 255) for a dense
+// The table sRGB encoder against the definition: round(linear_to_srgb(x) * 255) for a dense
 // sweep of inputs, including each code's exact threshold and its float neighbours.
 TEST(SrgbEncode, MatchesTheDefinitionEverywhere) {
   auto reference = [](float x) {

@@ -12,11 +12,6 @@ SrgbTables::SrgbTables() {
     thresholds[i] = i == 0 ? 0.0f : srgb_to_linear((static_cast<float>(i) - 0.5f) / 255.0f);
   }
   thresholds[256] = 2.0f;
-  for (int b = 0; b < kBuckets; ++b) {
-    float start = static_cast<float>(b) / kBuckets;
-    auto it = std::upper_bound(thresholds.begin(), thresholds.begin() + 256, start);
-    bucket_code[b] = static_cast<std::uint8_t>((it - thresholds.begin()) - 1);
-  }
   for (int r = 0; r < kRuns; ++r) {
     const std::uint32_t start = kRunBase + (static_cast<std::uint32_t>(r) << kRunBits);
     const float* next = std::upper_bound(thresholds.begin() + 1, thresholds.begin() + 256,

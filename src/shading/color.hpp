@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 
@@ -20,21 +21,15 @@ inline float linear_to_srgb(float c) {
 // sRGB space, decoded). Encoding is "the largest i with thresholds[i] <= linear", which equals
 // round(linear_to_srgb(linear) * 255) without a pow per pixel.
 //
-// A search per pixel is slow, so a second table gives, for each of kBuckets equal slices of
-// [0, 1), the code at the slice's start. sRGB's steepest slope (12.92 near black) moves at most
-// 12.92 * 255 / 4096 = 0.8 codes across one slice, so the answer is that code or the next:
-// one lookup and one comparison, still exact.
-//
-// Resolve's row encoder (pipeline/srgb_row.cpp) needs one lookup, not two in a chain: it
-// slices by the float's bits instead. From 2^-14 up to 1, each run of 2^16 consecutive floats
-// (a 128th of an octave) holds at most one threshold (SrgbTables' test checks it), so a run's
-// entry can hold both the code at its start and where in the run the next code begins; below
-// 2^-14 (run 0, which holds no threshold) every value is code 0.
+// A search per pixel is slow, so a second table slices [2^-14, 1] by the float's bits: each
+// run of 2^16 consecutive floats (a 128th of an octave) holds at most one threshold
+// (srgb_row_test's SrgbTables test checks it), so a run's entry holds both the code at its
+// start and where in the run the next code begins: one lookup and one comparison, still exact.
+// Below 2^-14 (run 0, which holds no threshold) every value is code 0. Resolve's row encoder
+// (pipeline/srgb_row.cpp) does the same a row at a time.
 struct SrgbTables {
-  static constexpr int kBuckets = 4096;
   std::array<float, 257> thresholds;  // [256] is a sentinel above every input
   std::array<float, 256> decode;
-  std::array<std::uint8_t, kBuckets> bucket_code;
 
   static constexpr std::uint32_t kRunBase = 0x38800000;  // the bits of 2^-14
   static constexpr int kRunBits = 16;
@@ -59,8 +54,11 @@ inline const SrgbTables& srgb_tables() { return kSrgbTables; }
 inline std::uint8_t encode_srgb8(const SrgbTables& t, float linear) {
   if (!(linear > 0.0f)) return 0;  // also catches NaN
   if (linear >= 1.0f) return 255;
-  int code = t.bucket_code[static_cast<int>(linear * SrgbTables::kBuckets)];
-  return static_cast<std::uint8_t>(linear >= t.thresholds[code + 1] ? code + 1 : code);
+  const std::uint32_t bits = std::bit_cast<std::uint32_t>(linear);
+  const std::uint32_t above = bits > SrgbTables::kRunBase ? bits - SrgbTables::kRunBase : 0;
+  const std::uint32_t entry = t.run_code[above >> SrgbTables::kRunBits];
+  const bool next = (above & SrgbTables::kRunMask) >= (entry & SrgbTables::kRunOffsetMask);
+  return static_cast<std::uint8_t>((entry >> SrgbTables::kRunCodeShift) + next);
 }
 inline std::uint8_t encode_srgb8(float linear) { return encode_srgb8(srgb_tables(), linear); }
 

@@ -241,45 +241,14 @@ glm::vec4 linear_texel(const Texture::Level& level, bool srgb, int x, int y) {
   return to_vec4(Rgba8Reader(level, srgb)(x, y));
 }
 
-// encode_srgb8, faster for the millions of texels of a mip chain, and exactly equal to it:
-// [0, 1) is cut into 4096 intervals; as encoding is monotonic, an interval whose two ends
-// encode to the same code maps entirely to it. Only the few intervals holding a code boundary
-// (at most 255 of 4096) ask encode_srgb8 (a binary search).
-class SrgbEncoder {
- public:
-  SrgbEncoder() {
-    for (int k = 0; k < kIntervals; ++k) {
-      const float lo = static_cast<float>(k) / kIntervals;
-      const float hi = std::nextafter(static_cast<float>(k + 1) / kIntervals, 0.0f);
-      const std::uint8_t a = shading::encode_srgb8(lo), b = shading::encode_srgb8(hi);
-      code_[k] = static_cast<std::int16_t>(a == b ? a : -1);
-    }
-  }
-  std::uint8_t operator()(float linear) const {
-    if (!(linear > 0.0f) || linear >= 1.0f) return shading::encode_srgb8(linear);
-    const int c = code_[static_cast<int>(linear * kIntervals)];  // exact: a power-of-2 scale
-    return c >= 0 ? static_cast<std::uint8_t>(c) : shading::encode_srgb8(linear);
-  }
-
- private:
-  static constexpr int kIntervals = 4096;
-  std::array<std::int16_t, kIntervals> code_;  // -1: a code boundary inside the interval
-};
-
-const SrgbEncoder& srgb_encoder() {
-  static const SrgbEncoder kEncoder;
-  return kEncoder;
-}
-
 void store_texel(Texture::Level& level, bool srgb, int x, int y, glm::vec4 c) {
   const std::size_t i = (static_cast<std::size_t>(y) * level.width + x) * 4;
   if (!level.rgba32f.empty()) {
     for (int k = 0; k < 4; ++k) level.rgba32f[i + k] = c[k];
     return;
   }
-  const SrgbEncoder& encode = srgb_encoder();
   for (int k = 0; k < 3; ++k)
-    level.rgba8[i + k] = srgb ? encode(c[k]) : shading::encode_unorm8(c[k]);
+    level.rgba8[i + k] = srgb ? shading::encode_srgb8(c[k]) : shading::encode_unorm8(c[k]);
   level.rgba8[i + 3] = shading::encode_unorm8(c[3]);
 }
 

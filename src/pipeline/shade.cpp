@@ -65,13 +65,12 @@ DrawPipeline pipeline_for(ShadingModel model, AlphaMode alpha) {
 }
 
 DrawPipeline pipeline_for(const Material& material, const Mesh& mesh, const Lighting& lighting) {
-  const bool constant_color = !material.base_color_map && !material.emissive_map &&
-                              !(material.use_vertex_colors && !mesh.colors.empty());
-  if (material.shading == ShadingModel::gouraud && constant_color) {
+  const bool vertex_colored = material.use_vertex_colors && !mesh.colors.empty();
+  if (material.shading == ShadingModel::gouraud && !vertex_colored && !material.base_color_map &&
+      !material.emissive_map) {
     return with_alpha<shading::ConstantColorGouraudShading>(material.alpha_mode);
   }
-  if (material.shading == ShadingModel::unlit &&
-      !(material.use_vertex_colors && !mesh.colors.empty())) {
+  if (material.shading == ShadingModel::unlit && !vertex_colored) {
     return with_alpha<shading::ConstantColorUnlitShading>(material.alpha_mode);
   }
   const bool directional =

@@ -139,19 +139,9 @@ struct LambertShadingT : BatchForm<BatchModel::lambert> {
     surface_vertex<kVaryings>(in, u, out);
   }
   static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
-    if constexpr (kPositioned) {
-      SurfacePoint s = surface_point<false>(f, u);
-      glm::vec3 color = diffuse_light(glm::vec3(s.albedo), s.normal, s.position, u);
-      return {color + emission(f, u), s.albedo.a};
-    } else {
-      // surface_point() but for the view and position, which only turn back faces and light
-      // from points and spots.
-      const glm::vec3 normal = safe_normalize(load3(f.v + shading::kNormalSlot));
-      glm::vec4 albedo = load4(f.v + kColorSlot);
-      if (u.material->base_color_map) albedo *= base_color_texel(f, u);
-      glm::vec3 color = diffuse_light(glm::vec3(albedo), normal, glm::vec3(0.0f), u);
-      return {color + emission(f, u), albedo.a};
-    }
+    SurfacePoint s = surface_point<false, kPositioned>(f, u);
+    glm::vec3 color = diffuse_light(glm::vec3(s.albedo), s.normal, s.position, u);
+    return {color + emission(f, u), s.albedo.a};
   }
 };
 using LambertShading = LambertShadingT<true>;

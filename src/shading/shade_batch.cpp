@@ -154,6 +154,8 @@ void ShadeBatch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, f
   const FloatV emissive[3] = {hn::Set(d, m.emissive.x), hn::Set(d, m.emissive.y),
                               hn::Set(d, m.emissive.z)};
   const bool two_sided = m.cull == CullMode::none;
+  // Lambert lit from one side needs no view, nor its square root and division.
+  const bool needs_view = two_sided || model != BatchModel::lambert;
   const Vec3V eye{hn::Set(d, u.eye.x), hn::Set(d, u.eye.y), hn::Set(d, u.eye.z)};
   for (int j = 0; j < in.count; j += lanes) {
     const Albedo albedo = LoadAlbedo(model, u, in, j);
@@ -172,9 +174,7 @@ void ShadeBatch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, f
       }
       color[3] = albedo.c[3];
     } else {
-      // surface_point(): view and normal, the normal facing the viewer if two-sided. Lambert
-      // lit from one side needs no view, nor its square root and division.
-      const bool needs_view = two_sided || model != BatchModel::lambert;
+      // surface_point(): view and normal, the normal facing the viewer if two-sided.
       Vec3V view{hn::Zero(d), hn::Zero(d), hn::Zero(d)};
       if (needs_view) {
         const Vec3V position = Load3(in.v, kPositionSlot, j);

@@ -25,15 +25,19 @@ glm::vec4 sample_map(const TextureMap& map, const Fragment& f, int slot) {
                        {f.ddy(slot), f.ddy(slot + 1)});
 }
 
-template <bool kWithTangent>
+template <bool kWithTangent, bool kPositioned>
 SurfacePoint surface_point(const Fragment& f, const DrawUniforms& u) {
   const Material& m = *u.material;
   SurfacePoint s;
-  s.position = load3(f.v + kPositionSlot);
-  s.view = safe_normalize(u.eye - s.position);
   glm::vec3 n = safe_normalize(load3(f.v + kNormalSlot));
-  // Two-sided materials light their back faces as fronts.
-  if (m.cull == CullMode::none && glm::dot(n, s.view) < 0.0f) n = -n;
+  if constexpr (kPositioned) {
+    s.position = load3(f.v + kPositionSlot);
+    s.view = safe_normalize(u.eye - s.position);
+    // Two-sided materials light their back faces as fronts.
+    if (m.cull == CullMode::none && glm::dot(n, s.view) < 0.0f) n = -n;
+  } else {
+    s.position = s.view = glm::vec3(0.0f);
+  }
   if constexpr (kWithTangent) {
     glm::vec4 tangent = load4(f.v + kTangentSlot);
     if (m.normal_map && glm::dot(glm::vec3(tangent), glm::vec3(tangent)) > 0.0f) {
@@ -55,6 +59,7 @@ SurfacePoint surface_point(const Fragment& f, const DrawUniforms& u) {
 
 template SurfacePoint surface_point<true>(const Fragment&, const DrawUniforms&);
 template SurfacePoint surface_point<false>(const Fragment&, const DrawUniforms&);
+template SurfacePoint surface_point<false, false>(const Fragment&, const DrawUniforms&);
 
 glm::vec3 mapped_emission(const Fragment& f, const DrawUniforms& u) {
   const Material& m = *u.material;

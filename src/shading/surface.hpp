@@ -87,7 +87,10 @@ struct SurfacePoint {
 };
 
 // The lit models' common start. kWithTangent: the layout holds tangents (normal mapping).
-template <bool kWithTangent>
+// kPositioned false: the layout holds no position (kUnpositionedSurfaceVaryings), for draws lit
+// from one side by directional lights only; position and view are then zero and the normal is
+// not turned toward the viewer.
+template <bool kWithTangent, bool kPositioned = true>
 SurfacePoint surface_point(const Fragment& f, const DrawUniforms& u);
 
 // Emissive light of the material (factor x map). Most materials emit nothing: that test is

@@ -226,10 +226,7 @@ bool batch_shades(BatchModel model, const DrawUniforms& u) {
   // Unlit models use no light, and the Gouraud models' lights were applied at the vertices.
   const bool lit_per_pixel = model == BatchModel::lambert || model == BatchModel::phong ||
                              model == BatchModel::blinn_phong;
-  for (int i = 0; lit_per_pixel && i < u.light_count; ++i) {
-    if (u.lights[i].type != LightType::directional) return false;
-  }
-  return true;
+  return !lit_per_pixel || only_directional_lights(u);
 }
 
 void shade_batch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {

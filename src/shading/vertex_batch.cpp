@@ -92,12 +92,7 @@ namespace facet::shading {
 
 HWY_EXPORT(GouraudVertexBatch);
 
-bool gouraud_batches_vertices(const DrawUniforms& u) {
-  for (int i = 0; i < u.light_count; ++i) {
-    if (u.lights[i].type != LightType::directional) return false;
-  }
-  return true;
-}
+bool gouraud_batches_vertices(const DrawUniforms& u) { return only_directional_lights(u); }
 
 void gouraud_vertex_batch(const DrawUniforms& u, const VertexBatchInput& in, GouraudLayout layout,
                           float (*out)[kVertexBatch]) {

@@ -31,13 +31,13 @@ using FloatV = BatchV;
 struct Albedo {
   FloatV c[4];
 };
-HWY_INLINE Albedo LoadAlbedo(BatchModel model, const DrawUniforms& u, const ShadeInput& in, int j) {
+// The surface color of pixels j...: the interpolated color, or `constant` (the material's,
+// for the constant-color forms) when not null; times the base color map's texel, if any.
+HWY_INLINE Albedo LoadAlbedo(const ShadeInput& in, int j, const Albedo* constant) {
   const FloatTag d;
   Albedo a;
   for (int c = 0; c < 4; ++c) {
-    const bool constant =
-        model == BatchModel::constant_unlit || model == BatchModel::constant_gouraud;
-    a.c[c] = constant ? hn::Set(d, u.base_color[c]) : hn::Load(d, in.v[kColorSlot + c] + j);
+    a.c[c] = constant ? constant->c[c] : hn::Load(d, in.v[kColorSlot + c] + j);
   }
   if (in.base_texel != nullptr) {
     FloatV t[4];
@@ -157,8 +157,12 @@ void ShadeBatch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, f
   // Lambert lit from one side needs no view, nor its square root and division.
   const bool needs_view = two_sided || model != BatchModel::lambert;
   const Vec3V eye{hn::Set(d, u.eye.x), hn::Set(d, u.eye.y), hn::Set(d, u.eye.z)};
+  const Albedo base{{hn::Set(d, u.base_color.r), hn::Set(d, u.base_color.g),
+                     hn::Set(d, u.base_color.b), hn::Set(d, u.base_color.a)}};
+  const bool constant_color =
+      model == BatchModel::constant_unlit || model == BatchModel::constant_gouraud;
   for (int j = 0; j < in.count; j += lanes) {
-    const Albedo albedo = LoadAlbedo(model, u, in, j);
+    const Albedo albedo = LoadAlbedo(in, j, constant_color ? &base : nullptr);
     FloatV color[4];
     if (model == BatchModel::unlit || model == BatchModel::constant_unlit) {
       for (int c = 0; c < 3; ++c) color[c] = hn::Add(albedo.c[c], emissive[c]);

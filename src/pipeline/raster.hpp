@@ -21,8 +21,11 @@ namespace facet::pipeline {
 // Classifies the three edges at the four corners of the block rectangle in.[xy]_begin/end
 // (exact, in 64 bits) and fills the 32-bit edge values cover_block steps with (block_raster.hpp
 // says why 32 bits hold them). An edge inside at all four corners is inside at every pixel
-// between them; false when one edge is outside at all four (no pixel covered).
-inline bool classify_edges(const SetupTriangle& t, int block_x, int block_y, BlockInput& in) {
+// between them. Returns whether the rectangle lies outside some edge (no pixel covered),
+// inside all three (every pixel covered), or crosses an edge.
+enum class EdgeCover { outside, crossed, inside };
+inline EdgeCover classify_edges(const SetupTriangle& t, int block_x, int block_y, BlockInput& in) {
+  EdgeCover cover = EdgeCover::inside;
   for (int i = 0; i < 3; ++i) {
     const std::int64_t at_origin = std::int64_t{t.a[i]} * pixel_centre(block_x) +
                                    std::int64_t{t.b[i]} * pixel_centre(block_y) + t.c[i];
@@ -37,12 +40,13 @@ inline bool classify_edges(const SetupTriangle& t, int block_x, int block_y, Blo
       in.e[i] = in.a[i] = in.b[i] = 0;
       continue;
     }
-    if ((c00 & c10 & c01 & c11) < 0) return false;  // outside at every corner
+    if ((c00 & c10 & c01 & c11) < 0) return EdgeCover::outside;  // outside at every corner
     in.e[i] = static_cast<std::int32_t>(e);
     in.a[i] = t.a[i];
     in.b[i] = t.b[i];
+    cover = EdgeCover::crossed;
   }
-  return true;
+  return cover;
 }
 
 // Bits of the block pixels that lie inside the tile (all 64 except at the frame's right and
@@ -125,7 +129,8 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
         continue;  // a later triangle hides this one here
       in.x_begin = std::max(x0, block_x) - block_x;
       in.x_end = std::min(x1, block_x + kBlockSize - 1) - block_x + 1;
-      if (!classify_edges(t, block_x, block_y, in)) continue;
+      const EdgeCover edges = classify_edges(t, block_x, block_y, in);
+      if (edges == EdgeCover::outside) continue;
       in.px0 = static_cast<float>(block_x) + 0.5f;
       in.py0 = static_cast<float>(block_y) + 0.5f;
       float& max_depth = tile.block_max_depth[by * tile.blocks_x + bx];
@@ -146,10 +151,8 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
       // a third of raster_triangle's time on the islands. cover_block interpolates only where
       // the block is likely whole, for shade_full_block: every edge inside, and the triangle
       // in front of the block's depth bound (exactly whole then in a first layer).
-      const bool all_inside = (in.a[0] | in.b[0] | in.e[0] | in.a[1] | in.b[1] | in.e[1] | in.a[2] |
-                               in.b[2] | in.e[2]) == 0 &&
-                              in.x_begin == 0 && in.x_end == kBlockSize && in.y_begin == 0 &&
-                              in.y_end == kBlockSize;
+      const bool all_inside = edges == EdgeCover::inside && in.x_begin == 0 &&
+                              in.x_end == kBlockSize && in.y_begin == 0 && in.y_end == kBlockSize;
       const bool likely_whole = all_inside && (!kDepthTest || box_depth.farthest < max_depth);
       in.interpolate = !out.batches() || (likely_whole && out.full_blocks());
       cover_block(in, block);

@@ -23,15 +23,6 @@ struct LightData {
 
 struct DrawUniforms {
   glm::mat4 model{1.0f};
-
-  // Whether every light of the draw's frame is directional: what the batch forms of the models lit
-  // per pixel (shade_batch.hpp) and per vertex (vertex_batch.hpp) take.
-  inline bool only_directional_lights(const DrawUniforms& u) {
-    for (int i = 0; i < u.light_count; ++i) {
-      if (u.lights[i].type != LightType::directional) return false;
-    }
-    return true;
-  }
   glm::mat4 model_view_projection{1.0f};
   glm::mat3 normal_matrix{1.0f};  // inverse transpose of model's upper 3x3
   glm::vec4 base_color{1.0f};
@@ -49,6 +40,15 @@ struct DrawUniforms {
   // display_value; set when the frame runs, pipeline/draw.cpp).
   bool display_referred = false;
 };
+
+// Whether every light of the draw's frame is directional: what the batch forms of the models lit
+// per pixel (shade_batch.hpp) and per vertex (vertex_batch.hpp) take.
+inline bool only_directional_lights(const DrawUniforms& u) {
+  for (int i = 0; i < u.light_count; ++i) {
+    if (u.lights[i].type != LightType::directional) return false;
+  }
+  return true;
+}
 
 // One vertex as the vertex functions see it: object-space attributes already fetched.
 struct VertexInput {

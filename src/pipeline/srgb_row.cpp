@@ -8,7 +8,6 @@
 #include <hwy/highway.h>
 
 #include <algorithm>
-#include <bit>
 
 #include "shading/color.hpp"
 
@@ -49,11 +48,13 @@ void EncodeSrgbRow(const glm::vec4* colors, int count, float scale, std::uint8_t
   const auto offset_mask = hn::Set(di, static_cast<std::int32_t>(Tables::kRunOffsetMask));
   for (int first = 0; first < count; first += kChunk) {
     const int floats = 4 * std::min(kChunk, count - first);
+    // The floats of whole vectors, a whole number of colors (lanes are 1, 2 or a multiple of
+    // 4); the colors past them are encoded one channel at a time at the end.
+    const int whole = floats - floats % lanes;
     const float* in = &colors[first].x;
     std::uint8_t* out = rgba + 4 * static_cast<std::ptrdiff_t>(first);
     // 1. Clamp; the run; alpha's code.
-    int j = 0;
-    for (; j + lanes <= floats; j += lanes) {
+    for (int j = 0; j < whole; j += lanes) {
       const auto x = hn::Mul(hn::LoadU(df, in + j), hn::LoadU(df, factor + (j & 3)));
       const auto c = hn::Min(hn::IfThenElseZero(hn::Gt(x, zero), x), one);
       const auto bits_above = hn::Max(hn::Sub(hn::BitCast(di, c), run_base), hn::Zero(di));
@@ -62,24 +63,15 @@ void EncodeSrgbRow(const glm::vec4* colors, int count, float scale, std::uint8_t
       // A multiplication then an addition, not fused: unorm8_of_unit exactly.
       hn::Store(hn::ConvertTo(di, hn::Add(hn::Mul(c, codes), half)), di, entry + j);
     }
-    for (; j < floats; ++j) {  // the last few, the same way
-      const float x = in[j] * factor[j & 3];
-      const float c = x > 0.0f ? std::min(x, 1.0f) : 0.0f;
-      above[j] =
-          std::max(std::bit_cast<std::int32_t>(c) - static_cast<std::int32_t>(Tables::kRunBase), 0);
-      run[j] = above[j] >> Tables::kRunBits;
-      entry[j] = shading::unorm8_of_unit(c);
-    }
     // 2. The color channels' runs looked up, one at a time (gathers were slower than scalar
     // loads on every CPU tried).
-    for (int k = 0; k < floats; k += 4) {
+    for (int k = 0; k < whole; k += 4) {
       entry[k] = static_cast<std::int32_t>(tables.run_code[run[k]]);
       entry[k + 1] = static_cast<std::int32_t>(tables.run_code[run[k + 1]]);
       entry[k + 2] = static_cast<std::int32_t>(tables.run_code[run[k + 2]]);
     }
     // 3. A color's code: the run's first, or the next from its offset in the run on.
-    j = 0;
-    for (; j + lanes <= floats; j += lanes) {
+    for (int j = 0; j < whole; j += lanes) {
       const auto e = hn::Load(di, entry + j);
       const auto offset = hn::And(hn::Load(di, above + j), run_mask);
       const auto next = hn::Not(hn::Lt(offset, hn::And(e, offset_mask)));
@@ -91,10 +83,9 @@ void EncodeSrgbRow(const glm::vec4* colors, int count, float scale, std::uint8_t
       const auto byte = hn::IfThenElse(alpha, e, code);
       hn::StoreU(hn::TruncateTo(du8, hn::BitCast(du, byte)), du8, out + j);
     }
-    for (; j < floats; ++j) {
-      const std::int32_t e = entry[j];
-      const bool next = (above[j] & Tables::kRunMask) >= (e & Tables::kRunOffsetMask);
-      out[j] = static_cast<std::uint8_t>(j % 4 == 3 ? e : (e >> Tables::kRunCodeShift) + next);
+    for (int j = whole; j < floats; ++j) {  // the same codes, by the scalar encoders
+      out[j] =
+          j % 4 == 3 ? shading::encode_unorm8(in[j]) : shading::encode_srgb8(tables, in[j] * scale);
     }
   }
 }

@@ -8,6 +8,9 @@
 #include <hwy/foreach_target.h>  // must come before highway.h
 #include <hwy/highway.h>
 
+#include <algorithm>
+
+#include "pipeline/fixed_point.hpp"
 #include "pipeline/setup.hpp"
 
 HWY_BEFORE_NAMESPACE();
@@ -116,6 +119,68 @@ void InterpolatePixels(const SetupTriangle& t, const Plane* planes, int varyings
   }
 }
 
+int FindBoxPixels(const SetupTriangle& t, int x0, int y0, int width, int height, const float* depth,
+                  int depth_stride, bool depth_test, std::int16_t* xs, std::int16_t* ys,
+                  float* zs) {
+  const FloatTag df;
+  const IntTag di;
+  const hn::Rebind<std::int16_t, FloatTag> d16;
+  const int lanes = static_cast<int>(hn::Lanes(df));
+  // Edge i at box pixel (dx, dy) is e[i] + a*dx + b*dy, as for blocks (block_raster.hpp): E
+  // at the box's first pixel centre over 256, floored. With |a|, |b| <= 2^23 and dx, dy <= 63,
+  // a*dx and b*dy stay within 2^29, so e clamped to +-2^30 keeps every sign and 32 bits hold
+  // the sums, even for a big triangle whose box in the tile is small. (Lanes past the box's
+  // width may wrap around; in_box drops them.)
+  constexpr std::int64_t kClamp = std::int64_t{1} << 30;
+  std::int32_t e_first[3];
+  for (int i = 0; i < 3; ++i) {
+    const std::int64_t at_origin =
+        std::int64_t{t.a[i]} * pixel_centre(x0) + std::int64_t{t.b[i]} * pixel_centre(y0) + t.c[i];
+    e_first[i] = static_cast<std::int32_t>(
+        std::clamp(at_origin >> kSubpixelBits, -kClamp, kClamp));  // shift: floor
+  }
+  alignas(32) static constexpr std::int32_t kLanes[kBlockSize] = {0, 1, 2, 3, 4, 5, 6, 7};
+  const auto half = hn::Set(df, 0.5f);
+  int count = 0;
+  // A box row at a time (a vector holds it but for boxes over eight pixels wide, which split
+  // into vectors of eight columns).
+  for (int x = 0; x < width; x += lanes) {
+    const auto column = hn::Add(hn::Load(di, kLanes), hn::Set(di, x));
+    const auto in_box = hn::Lt(column, hn::Set(di, width));
+    hn::Vec<IntTag> along_row[3];
+    for (int i = 0; i < 3; ++i) along_row[i] = hn::Mul(hn::Set(di, t.a[i]), column);
+    const auto frame_x = hn::Add(column, hn::Set(di, x0));
+    // evaluate_in_row's dx * (px - ref_x), the same for every row.
+    const auto z_along_row =
+        hn::Mul(hn::Set(df, t.z.dx),
+                hn::Sub(hn::Add(hn::ConvertTo(df, frame_x), half), hn::Set(df, t.ref_x)));
+    std::int32_t e[3] = {e_first[0], e_first[1], e_first[2]};
+    for (int row = 0; row < height; ++row) {
+      auto edges = hn::Zero(di);
+      for (int i = 0; i < 3; ++i) edges = hn::Or(edges, hn::Add(hn::Set(di, e[i]), along_row[i]));
+      for (int i = 0; i < 3; ++i) e[i] += t.b[i];
+      // No branches on the masks: whether a row of a small triangle's box is covered, and
+      // passes the depth test, is as good as random to the branch predictor.
+      auto pass = hn::RebindMask(df, hn::AndNot(hn::Lt(edges, hn::Zero(di)), in_box));
+      const int y = y0 + row;
+      const float z_row = evaluate_row(t.z, t.ref_y, static_cast<float>(y) + 0.5f);
+      const auto z = hn::Add(hn::Set(df, z_row), z_along_row);
+      if (depth_test) {
+        const float* depth_row = depth + static_cast<std::ptrdiff_t>(row) * depth_stride + x;
+        pass = hn::And(pass, hn::Lt(z, hn::LoadU(df, depth_row)));  // NaN fails
+      }
+      const auto n = hn::CountTrue(df, pass);
+      hn::BlendedStore(hn::Compress(z, pass), hn::FirstN(df, n), df, zs + count);
+      const auto first_n = hn::FirstN(d16, n);
+      hn::BlendedStore(hn::DemoteTo(d16, hn::Compress(frame_x, hn::RebindMask(di, pass))), first_n,
+                       d16, xs + count);
+      hn::BlendedStore(hn::Set(d16, static_cast<std::int16_t>(y)), first_n, d16, ys + count);
+      count += static_cast<int>(n);
+    }
+  }
+  return count;
+}
+
 const char* TargetName() { return hwy::TargetName(HWY_TARGET); }
 
 }  // namespace facet::pipeline::HWY_NAMESPACE
@@ -127,6 +192,14 @@ namespace facet::pipeline {
 HWY_EXPORT(CoverBlock);
 HWY_EXPORT(TargetName);
 HWY_EXPORT(InterpolatePixels);
+HWY_EXPORT(FindBoxPixels);
+
+int find_box_pixels(const SetupTriangle& t, int x0, int y0, int width, int height,
+                    const float* depth, int depth_stride, bool depth_test, std::int16_t* x,
+                    std::int16_t* y, float* z) {
+  return HWY_DYNAMIC_DISPATCH(FindBoxPixels)(t, x0, y0, width, height, depth, depth_stride,
+                                             depth_test, x, y, z);
+}
 
 void interpolate_pixels(const SetupTriangle& t, const Plane* varying_planes, int varyings,
                         int first, int count, const std::int16_t* x, const std::int16_t* y,

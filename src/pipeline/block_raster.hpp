@@ -65,6 +65,21 @@ void interpolate_pixels(const SetupTriangle& t, const Plane* varying_planes, int
                         int first, int count, const std::int16_t* x, const std::int16_t* y,
                         float* w, float (*v)[kBlockPixels]);
 
+// Floats the tile's depth buffer holds past its last pixel: find_box_pixels reads whole
+// vectors of a box row, which at the tile's last row may reach past its end.
+inline constexpr int kDepthSlack = kBlockSize;
+
+// The small-triangle path's pixel search (small_triangles.hpp): the pixels of the box of
+// `width` x `height` pixels at frame pixel (x0, y0) whose centres triangle t covers and, if
+// depth_test, whose depth is less than the tile's there (`depth` points at the box's first
+// pixel, rows `depth_stride` floats apart, kDepthSlack readable floats after the last).
+// Their positions and depths go to x[n], y[n], z[n] from n = 0, nothing past them is written;
+// returns how many. The box holds at most kBlockPixels pixels. Same coverage as the 64-bit
+// edge functions, same depths as evaluate_row and evaluate_in_row, on every SIMD target.
+int find_box_pixels(const SetupTriangle& t, int x0, int y0, int width, int height,
+                    const float* depth, int depth_stride, bool depth_test, std::int16_t* x,
+                    std::int16_t* y, float* z);
+
 // Name of the SIMD target cover_block runs on now (e.g. "AVX2"), for bench output and tests.
 const char* simd_target_name();
 

@@ -207,7 +207,7 @@ void Renderer::Impl::prepare_tiles(const Framebuffer& target) {
   for (TileBuffers& buffers : tile_buffers) {
     if (buffers.color.size() >= pixels) continue;
     buffers.color.resize(pixels);
-    buffers.depth.resize(pixels);
+    buffers.depth.resize(pixels + pipeline::kDepthSlack);  // find_box_pixels reads past rows
     buffers.block_max_depth.resize(static_cast<std::size_t>(blocks_x) * blocks_x);
   }
 }

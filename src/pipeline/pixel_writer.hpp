@@ -35,7 +35,7 @@ struct TileContext {
   int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // pixel rectangle [x0, x1) x [y0, y1)
   int stride = 0;                      // pixels per row of the tile buffers
   glm::vec4* color = nullptr;          // linear RGBA
-  float* depth = nullptr;
+  float* depth = nullptr;              // kDepthSlack more floats readable after the last row's
   // Per 8x8 block (row-major, blocks_x per row): no depth in the block is larger. Starts at the
   // clear depth; lowered when a triangle writes a whole block (raster_triangle).
   float* block_max_depth = nullptr;

@@ -1,6 +1,6 @@
 // Stage: raster + shade, the small-triangle path: triangles whose bounding box in the tile is
-// a few pixels skip raster.hpp's 8x8 blocks. Their covered pixels are found one at a time,
-// and those of consecutive small triangles of one draw wait to be shaded together
+// a few pixels skip raster.hpp's 8x8 blocks. Their covered pixels are found a box row at a
+// time, and those of consecutive small triangles of one draw wait to be shaded together
 // (WaitingPixels).
 #pragma once
 
@@ -8,9 +8,7 @@
 #include <cstdint>
 
 #include "pipeline/block_raster.hpp"
-#include "pipeline/fixed_point.hpp"
 #include "pipeline/pixel_writer.hpp"
-#include "pipeline/setup.hpp"
 
 namespace facet::pipeline {
 
@@ -22,44 +20,19 @@ inline constexpr int kSmallTrianglePixels = 64;
 // The covered pixels of the small triangle t's bounding box [x0, x1] x [y0, y1] (inclusive)
 // that pass the depth test: their positions and depths go to out.x, y, z from entry `first`
 // on; returns how many. Same arithmetic as cover_block, so the same pixels get the same
-// values. Without branches: every pixel of the box is written to the next free entry, which
-// only the covered ones that pass the depth test claim (whether a box pixel is covered is as
-// good as random to the branch predictor); so entries up to first + the box's pixel count are
-// written.
+// values; SIMD across a box row (find_box_pixels).
 template <class Shading>
 int find_small_pixels(const TileContext& tile, const SetupTriangle& t, int x0, int y0, int x1,
                       int y1, PackedPixels& out, int first) {
-  const float* depth = tile.depth;
-  const std::int64_t step[3] = {std::int64_t{t.a[0]} * kSubpixelScale,
-                                std::int64_t{t.a[1]} * kSubpixelScale,
-                                std::int64_t{t.a[2]} * kSubpixelScale};
-  int count = first;
-  for (int y = y0; y <= y1; ++y) {
-    const std::int64_t cy = pixel_centre(y), cx = pixel_centre(x0);
-    std::int64_t e[3];
-    for (int i = 0; i < 3; ++i)
-      e[i] = std::int64_t{t.a[i]} * cx + std::int64_t{t.b[i]} * cy + t.c[i];
-    const float py = static_cast<float>(y) + 0.5f;
-    const float z_row = evaluate_row(t.z, t.ref_y, py);
-    const float* depth_row =
-        depth + static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride - tile.x0;
-    for (int x = x0; x <= x1; ++x) {
-      bool pass = (e[0] | e[1] | e[2]) >= 0;
-      for (int i = 0; i < 3; ++i) e[i] += step[i];
-      const float z = evaluate_in_row(z_row, t.z, t.ref_x, static_cast<float>(x) + 0.5f);
-      if constexpr (depth_tested<Shading>()) pass &= z < depth_row[x];  // less; NaN fails
-      out.x[count] = static_cast<std::int16_t>(x);
-      out.y[count] = static_cast<std::int16_t>(y);
-      out.z[count] = z;
-      count += pass;
-    }
-  }
-  return count - first;
+  const float* depth =
+      tile.depth + static_cast<std::ptrdiff_t>(y0 - tile.y0) * tile.stride + (x0 - tile.x0);
+  return find_box_pixels(t, x0, y0, x1 - x0 + 1, y1 - y0 + 1, depth, tile.stride,
+                         depth_tested<Shading>(), out.x + first, out.y + first, out.z + first);
 }
 
 // The loop over the bounding box [x0, x1] x [y0, y1] (inclusive), for small triangles: finds
-// the covered pixels that pass the depth test one at a time, then interpolates their varyings
-// with SIMD (interpolate_pixels) and shades them.
+// the covered pixels that pass the depth test a box row at a time, then interpolates their
+// varyings with SIMD (interpolate_pixels) and shades them.
 template <class Shading, AlphaMode kAlpha>
 void raster_small_triangle(TileContext& tile, const SetupTriangle& t, int x0, int y0, int x1,
                            int y1, PixelWriter<Shading, kAlpha>& out) {

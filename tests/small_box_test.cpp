@@ -1,0 +1,137 @@
+// The small-triangle path's SIMD pixel search (find_box_pixels, block_raster.hpp) finds, on every
+// SIMD target, exactly the pixels of a box whose centres the 64-bit edge functions put inside
+// the triangle and whose depth passes the test, with the depths evaluate() gives: for small
+// triangles over their own box, and for big ones over a small box (as when a big triangle's box
+// in a tile is a few pixels at the tile's corner), where the 32-bit edge values are clamped.
+#include <gtest/gtest.h>
+#include <hwy/targets.h>
+
+#include <algorithm>
+#include <random>
+#include <tuple>
+#include <vector>
+
+#include "pipeline/block_raster.hpp"
+#include "pipeline/primitive_sink.hpp"
+#include "pipeline/setup.hpp"
+#include "support/forced_target.hpp"
+
+namespace facet::test {
+namespace {
+
+using pipeline::SetupTriangle;
+
+constexpr int kWidth = 1920, kHeight = 1080;
+
+// The triangle through three screen vertices (fixed point) as setup gives it to raster, or
+// false when setup drops it.
+bool set_up(const pipeline::ScreenVertex s[3], SetupTriangle& out) {
+  pipeline::Frame frame;
+  frame.width = kWidth, frame.height = kHeight, frame.tile_size = 64;
+  frame.tiles_x = kWidth / 64 + 1, frame.tiles_y = kHeight / 64 + 1;
+  frame.triangles.resize(1);
+  pipeline::GeometryChunk chunk;
+  chunk.triangles = {0, 1, 0};
+  pipeline::PrimitiveSink sink(frame, chunk, 0);
+  const float* no_varyings[3] = {nullptr, nullptr, nullptr};
+  const bool front = pipeline::signed_area(s[0], s[1], s[2]) < 0;
+  if (!pipeline::setup_projected_triangle(sink, kWidth, kHeight, 0, s, no_varyings, 0, front))
+    return false;
+  out = frame.triangles[0];
+  return true;
+}
+
+struct Found {
+  int x, y;
+  float z;
+  bool operator==(const Found&) const = default;
+  bool operator<(const Found& o) const { return std::tie(y, x) < std::tie(o.y, o.x); }
+};
+
+// What find_box_pixels must find, by definition, pixel by pixel.
+std::vector<Found> expected(const SetupTriangle& t, int x0, int y0, int width, int height,
+                            const std::vector<float>& depth, int stride) {
+  std::vector<Found> out;
+  for (int y = y0; y < y0 + height; ++y) {
+    for (int x = x0; x < x0 + width; ++x) {
+      bool inside = true;
+      for (int i = 0; i < 3; ++i) {
+        inside &= std::int64_t{t.a[i]} * pipeline::pixel_centre(x) +
+                      std::int64_t{t.b[i]} * pipeline::pixel_centre(y) + t.c[i] >=
+                  0;
+      }
+      const float z = pipeline::evaluate(t.z, t.ref_x, t.ref_y, static_cast<float>(x) + 0.5f,
+                                         static_cast<float>(y) + 0.5f);
+      if (inside && z < depth[(y - y0) * stride + (x - x0)]) out.push_back({x, y, z});
+    }
+  }
+  return out;
+}
+
+std::vector<Found> found(const SetupTriangle& t, int x0, int y0, int width, int height,
+                         const std::vector<float>& depth, int stride) {
+  std::int16_t xs[pipeline::kBlockPixels], ys[pipeline::kBlockPixels];
+  float zs[pipeline::kBlockPixels];
+  const int n =
+      pipeline::find_box_pixels(t, x0, y0, width, height, depth.data(), stride, true, xs, ys, zs);
+  std::vector<Found> out;
+  for (int k = 0; k < n; ++k) out.push_back({xs[k], ys[k], zs[k]});
+  std::sort(out.begin(), out.end());  // rows of boxes over eight wide come a vector at a time
+  return out;
+}
+
+TEST(SmallBoxes, FindExactlyThePixelsTheEdgeFunctionsCover) {
+  std::mt19937 rng(20261122);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  int tried = 0, with_pixels = 0, clamped = 0;
+  for (std::int64_t target : simd_targets()) {
+    ForcedTarget forced(target);
+    for (int n = 0; n < 3000; ++n) {
+      // Half small triangles (a few pixels), half big ones (up to the guard band).
+      const float size = n % 2 == 0 ? 12.0f : 12000.0f;
+      const float cx = 100.0f + unit(rng) * (kWidth - 200),
+                  cy = 100.0f + unit(rng) * (kHeight - 200);
+      pipeline::ScreenVertex s[3];
+      for (auto& v : s) {
+        v.x = pipeline::snap(cx + (unit(rng) - 0.5f) * size);
+        v.y = pipeline::snap(cy + (unit(rng) - 0.5f) * size);
+        v.z = unit(rng);
+        v.inv_w = 1.0f;
+      }
+      SetupTriangle t;
+      if (!set_up(s, t)) continue;
+      // A box of at most 64 pixels: the triangle's own (cut down), or one around its centre.
+      std::uniform_int_distribution<int> side(1, 16);
+      int width = side(rng), height = std::min(side(rng), 64 / width);
+      int x0 = static_cast<int>(cx) - width / 2, y0 = static_cast<int>(cy) - height / 2;
+      if (n % 2 == 0) {
+        x0 = t.min_x, y0 = t.min_y;
+        width = std::min(t.max_x - t.min_x + 1, 8);
+        height = std::min(t.max_y - t.min_y + 1, 64 / width);
+      }
+      for (int i = 0; i < 3; ++i) {  // an edge value beyond 32 bits' reach: clamped
+        const std::int64_t e = std::int64_t{t.a[i]} * pipeline::pixel_centre(x0) +
+                               std::int64_t{t.b[i]} * pipeline::pixel_centre(y0) + t.c[i];
+        clamped += (e >> pipeline::kSubpixelBits) > (std::int64_t{1} << 30) ||
+                   (e >> pipeline::kSubpixelBits) < -(std::int64_t{1} << 30);
+      }
+      // A depth buffer in which some pixels are nearer than the triangle, with room for the
+      // whole vectors find_box_pixels reads past each row.
+      const int stride = 64;
+      std::vector<float> depth(static_cast<std::size_t>(height) * stride + pipeline::kDepthSlack);
+      for (float& d : depth) d = unit(rng) < 0.2f ? 0.0f : 1.0f;
+      const std::vector<Found> want = expected(t, x0, y0, width, height, depth, stride);
+      ASSERT_EQ(found(t, x0, y0, width, height, depth, stride), want)
+          << hwy::TargetName(target) << ", triangle " << n;
+      ++tried;
+      with_pixels += !want.empty();
+    }
+  }
+  // The cases above must have happened (and often found pixels), or the test proves nothing.
+  EXPECT_GT(tried, 3000);
+  EXPECT_GT(with_pixels, tried / 4);
+  EXPECT_GT(clamped, 500);
+}
+
+}  // namespace
+}  // namespace facet::test

@@ -17,10 +17,11 @@ namespace {
 
 constexpr int kWidth = 96, kHeight = 64;
 
-// Small triangles (a few pixels across) crowded into the middle of the view at random depths,
-// with texture coordinates and normals that vary.
-Mesh crowded_triangles(std::mt19937& rng, int count) {
-  std::uniform_real_distribution<float> centre(-0.3f, 0.3f), corner(-0.08f, 0.08f),
+// Triangles crowded into the middle of the view at random depths, with texture coordinates and
+// normals that vary: small ones (a few pixels across), or with `spread` 0.3, boxes of up to a
+// few hundred pixels, which wait a band of rows at a time (small_triangles.hpp).
+Mesh crowded_triangles(std::mt19937& rng, int count, float spread = 0.08f) {
+  std::uniform_real_distribution<float> centre(-0.3f, 0.3f), corner(-spread, spread),
       depth(-6.0f, -3.0f), any(-1.0f, 1.0f);
   Mesh mesh;
   for (int i = 0; i < count; ++i) {
@@ -57,11 +58,11 @@ std::shared_ptr<const Texture> stripes() {
   return Texture::from_rgba8(32, 32, rgba, true, "stripes");
 }
 
-TEST(WaitingPixels, GiveTheImageOfDrawingTrianglesOneByOne) {
-  std::mt19937 rng(20261122);
-  const Mesh mesh = crowded_triangles(rng, 400);
+// Draws the crowd all at once and one triangle a draw (a draw change writes what waits), in
+// every shading model whose pixels wait: the same image, depths and pixel count.
+void expect_one_by_one_image(const Mesh& mesh, int count) {
   std::vector<Mesh> singles;
-  for (int i = 0; i < 400; ++i) singles.push_back(triangle_of(mesh, i));
+  for (int i = 0; i < count; ++i) singles.push_back(triangle_of(mesh, i));
   Lighting lighting;
   lighting.fog.mode = FogMode::exponential;
   lighting.fog.density = 0.1f;
@@ -85,6 +86,16 @@ TEST(WaitingPixels, GiveTheImageOfDrawingTrianglesOneByOne) {
     EXPECT_EQ(together.depth(), one_by_one.depth()) << static_cast<int>(model);
     ASSERT_EQ(together.rgba8(), one_by_one.rgba8()) << static_cast<int>(model);
   }
+}
+
+TEST(WaitingPixels, GiveTheImageOfDrawingTrianglesOneByOne) {
+  std::mt19937 rng(20261122);
+  expect_one_by_one_image(crowded_triangles(rng, 400), 400);
+}
+
+TEST(WaitingPixels, GiveTheImageOfDrawingBiggerTrianglesOneByOne) {
+  std::mt19937 rng(20261123);
+  expect_one_by_one_image(crowded_triangles(rng, 150, 0.3f), 150);
 }
 
 // The test above is only worth something if triangles overlap, nearer ones after farther

@@ -79,7 +79,7 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
   if (x0 > x1 || y0 > y1) return;
   const int box = (x1 - x0 + 1) * (y1 - y0 + 1);
   if constexpr (PixelWriter<Shading, kAlpha>::kWaits) {
-    if (box <= kMaxWaitingBox && tile.frame->draws[t.draw].batch_shaded) {
+    if (box_may_wait(x1 - x0 + 1, y1 - y0 + 1) && tile.frame->draws[t.draw].batch_shaded) {
       add_waiting<Shading, kAlpha>(tile, t, x0, y0, x1, y1);
       return;
     }

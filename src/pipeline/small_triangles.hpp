@@ -1,7 +1,7 @@
 // Stage: raster + shade, the small-triangle path: triangles whose bounding box in the tile is
-// a few pixels skip raster.hpp's 8x8 blocks. Their covered pixels are found a box row at a
-// time, and those of consecutive small triangles of one draw wait to be shaded together
-// (WaitingPixels).
+// a few pixels (up to kMaxWaitingTriangleBox for draws whose pixels wait) skip raster.hpp's
+// 8x8 blocks. Their covered pixels are found a box row at a time, and those of consecutive
+// small triangles of one draw wait to be shaded together (WaitingPixels).
 #pragma once
 
 #include <algorithm>
@@ -62,9 +62,21 @@ struct WaitingPixels {
   void (*flush)(TileContext&) = nullptr;  // shades and writes them; null: none wait
 };
 
-// Boxes of at most this many pixels join the waiting pixels: interpolate_pixels writes up to
-// 7 entries past the last one found, and those must stay in the arrays.
+// Boxes of at most this many pixels join the waiting pixels in one piece: interpolate_pixels
+// writes up to 7 entries past the last one found, and those must stay in the arrays.
 inline constexpr int kMaxWaitingBox = PackedPixels::kCapacity - 8;
+
+// Triangles whose box in the tile is at most this many pixels, and at most kMaxWaitingBox
+// wide, wait too, a band of rows of at most kMaxWaitingBox pixels at a time. Up to this size,
+// finding their pixels a box row at a time and shading them with other triangles' beats
+// raster.hpp's 8x8 blocks: against boxes of one band only, bunny-close 22 % faster, the
+// islands 5 % (128: 10 % and 4 %; 512 and 1024 gained nothing more).
+inline constexpr int kMaxWaitingTriangleBox = 256;
+
+// Whether a triangle whose box in the tile is width x height pixels may wait (add_waiting).
+inline bool box_may_wait(int width, int height) {
+  return width * height <= kMaxWaitingTriangleBox && width <= kMaxWaitingBox;
+}
 
 // Shades and writes whatever waits in the tile (WaitingPixels).
 inline void flush_waiting(TileContext& tile) {
@@ -86,10 +98,10 @@ void write_waiting(TileContext& tile) {
   waiting.flush = nullptr;
 }
 
-// Adds small triangle t's pixels in its bounding box [x0, x1] x [y0, y1] (inclusive, at most
-// kMaxWaitingBox pixels) to the tile's waiting pixels.
+// Adds triangle t's pixels in the box [x0, x1] x [y0, y1] (inclusive, at most kMaxWaitingBox
+// pixels) to the tile's waiting pixels.
 template <class Shading, AlphaMode kAlpha>
-void add_waiting(TileContext& tile, const SetupTriangle& t, int x0, int y0, int x1, int y1) {
+void add_waiting_band(TileContext& tile, const SetupTriangle& t, int x0, int y0, int x1, int y1) {
   WaitingPixels& waiting = *tile.waiting;
   PackedPixels& pixels = waiting.pixels;
   const int box = (x1 - x0 + 1) * (y1 - y0 + 1);
@@ -114,6 +126,16 @@ void add_waiting(TileContext& tile, const SetupTriangle& t, int x0, int y0, int 
   }
   waiting.draw = t.draw;
   waiting.flush = &write_waiting<Shading, kAlpha>;
+}
+
+// Adds small triangle t's pixels in its bounding box [x0, x1] x [y0, y1] (inclusive;
+// box_may_wait) to the tile's waiting pixels, a band of rows at a time.
+template <class Shading, AlphaMode kAlpha>
+void add_waiting(TileContext& tile, const SetupTriangle& t, int x0, int y0, int x1, int y1) {
+  const int rows = kMaxWaitingBox / (x1 - x0 + 1);
+  for (int y = y0; y <= y1; y += rows) {
+    add_waiting_band<Shading, kAlpha>(tile, t, x0, y, x1, std::min(y + rows - 1, y1));
+  }
 }
 
 }  // namespace facet::pipeline

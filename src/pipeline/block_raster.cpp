@@ -119,35 +119,25 @@ void InterpolatePixels(const SetupTriangle& t, const Plane* planes, int varyings
   }
 }
 
-int FindBoxPixels(const SetupTriangle& t, int x0, int y0, int width, int height, const float* depth,
-                  int depth_stride, bool depth_test, std::int16_t* xs, std::int16_t* ys,
-                  float* zs) {
-  const FloatTag df;
-  const IntTag di;
-  const hn::Rebind<std::int16_t, FloatTag> d16;
+// FindBoxPixels' rows, vectors of DF's lanes at a time; e_first: the edges at the box's first
+// pixel, as FindBoxPixels says.
+template <class DF>
+HWY_INLINE int FindBoxRows(DF df, const SetupTriangle& t, const std::int32_t e_first[3], int x0,
+                           int y0, int width, int height, const float* depth, int depth_stride,
+                           bool depth_test, std::int16_t* xs, std::int16_t* ys, float* zs) {
+  const hn::RebindToSigned<DF> di;
+  const hn::Rebind<std::int16_t, DF> d16;
   const int lanes = static_cast<int>(hn::Lanes(df));
-  // Edge i at box pixel (dx, dy) is e[i] + a*dx + b*dy, as for blocks (block_raster.hpp): E
-  // at the box's first pixel centre over 256, floored. With |a|, |b| <= 2^23 and dx, dy <= 63,
-  // a*dx and b*dy stay within 2^29, so e clamped to +-2^30 keeps every sign and 32 bits hold
-  // the sums, even for a big triangle whose box in the tile is small. (Lanes past the box's
-  // width may wrap around; in_box drops them.)
-  constexpr std::int64_t kClamp = std::int64_t{1} << 30;
-  std::int32_t e_first[3];
-  for (int i = 0; i < 3; ++i) {
-    const std::int64_t at_origin =
-        std::int64_t{t.a[i]} * pixel_centre(x0) + std::int64_t{t.b[i]} * pixel_centre(y0) + t.c[i];
-    e_first[i] = static_cast<std::int32_t>(
-        std::clamp(at_origin >> kSubpixelBits, -kClamp, kClamp));  // shift: floor
-  }
-  alignas(32) static constexpr std::int32_t kLanes[kBlockSize] = {0, 1, 2, 3, 4, 5, 6, 7};
+  alignas(64) static constexpr std::int32_t kLanes[16] = {0, 1, 2,  3,  4,  5,  6,  7,
+                                                          8, 9, 10, 11, 12, 13, 14, 15};
   const auto half = hn::Set(df, 0.5f);
   int count = 0;
-  // A box row at a time (a vector holds it but for boxes over eight pixels wide, which split
-  // into vectors of eight columns).
+  // A box row at a time (a vector holds it but for boxes wider than a vector, which split into
+  // vectors of columns).
   for (int x = 0; x < width; x += lanes) {
     const auto column = hn::Add(hn::Load(di, kLanes), hn::Set(di, x));
     const auto in_box = hn::Lt(column, hn::Set(di, width));
-    hn::Vec<IntTag> along_row[3];
+    hn::Vec<decltype(di)> along_row[3];
     for (int i = 0; i < 3; ++i) along_row[i] = hn::Mul(hn::Set(di, t.a[i]), column);
     const auto frame_x = hn::Add(column, hn::Set(di, x0));
     // evaluate_in_row's dx * (px - ref_x), the same for every row.
@@ -179,6 +169,31 @@ int FindBoxPixels(const SetupTriangle& t, int x0, int y0, int width, int height,
     }
   }
   return count;
+}
+
+int FindBoxPixels(const SetupTriangle& t, int x0, int y0, int width, int height, const float* depth,
+                  int depth_stride, bool depth_test, std::int16_t* xs, std::int16_t* ys,
+                  float* zs) {
+  // Edge i at box pixel (dx, dy) is e[i] + a*dx + b*dy, as for blocks (block_raster.hpp): E
+  // at the box's first pixel centre over 256, floored. With |a|, |b| <= 2^23 and dx, dy <= 63,
+  // a*dx and b*dy stay within 2^29, so e clamped to +-2^30 keeps every sign and 32 bits hold
+  // the sums, even for a big triangle whose box in the tile is small. (Lanes past the box's
+  // width may wrap around; in_box drops them.)
+  constexpr std::int64_t kClamp = std::int64_t{1} << 30;
+  std::int32_t e_first[3];
+  for (int i = 0; i < 3; ++i) {
+    const std::int64_t at_origin =
+        std::int64_t{t.a[i]} * pixel_centre(x0) + std::int64_t{t.b[i]} * pixel_centre(y0) + t.c[i];
+    e_first[i] = static_cast<std::int32_t>(
+        std::clamp(at_origin >> kSubpixelBits, -kClamp, kClamp));  // shift: floor
+  }
+  // Rows of eight pixels at most in vectors of eight, wider ones in vectors of up to sixteen.
+  if (width > kBlockSize) {
+    return FindBoxRows(hn::CappedTag<float, 16>(), t, e_first, x0, y0, width, height, depth,
+                       depth_stride, depth_test, xs, ys, zs);
+  }
+  return FindBoxRows(FloatTag(), t, e_first, x0, y0, width, height, depth, depth_stride, depth_test,
+                     xs, ys, zs);
 }
 
 const char* TargetName() { return hwy::TargetName(HWY_TARGET); }

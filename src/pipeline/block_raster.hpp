@@ -67,7 +67,7 @@ void interpolate_pixels(const SetupTriangle& t, const Plane* varying_planes, int
 
 // Floats the tile's depth buffer holds past its last pixel: find_box_pixels reads whole
 // vectors of a box row, which at the tile's last row may reach past its end.
-inline constexpr int kDepthSlack = kBlockSize;
+inline constexpr int kDepthSlack = 16;
 
 // The small-triangle path's pixel search (small_triangles.hpp): the pixels of the box of
 // `width` x `height` pixels at frame pixel (x0, y0) whose centres triangle t covers and, if

@@ -55,6 +55,12 @@ void raster_small_triangle(TileContext& tile, const SetupTriangle& t, int x0, in
 // is tested again, against what the pixels before it wrote: so a pixel writes exactly when
 // drawing the triangles one by one would have written it, with the same color.
 struct WaitingPixels {
+  // Positions start at zero: interpolate_pixels reads whole vectors of them, the entries after
+  // the last one found too, which then hold zeros or earlier pixels' positions (ignored).
+  WaitingPixels() {
+    std::fill_n(pixels.x, PackedPixels::kCapacity, 0);
+    std::fill_n(pixels.y, PackedPixels::kCapacity, 0);
+  }
   PackedPixels pixels;
   // Each pixel's triangle's plane slopes for the texture's level of detail (TexelBatch).
   alignas(64) float slopes[shading::TexelBatch::kSlopes][PackedPixels::kCapacity];
@@ -112,7 +118,6 @@ void add_waiting_band(TileContext& tile, const SetupTriangle& t, int x0, int y0,
   const int found = find_small_pixels<Shading>(tile, t, x0, y0, x1, y1, pixels, first);
   if (found == 0) return;
   pixels.count = first + found;
-  pixels.pad(0);  // interpolate_pixels reads whole vectors of positions
   const Plane* planes = tile.frame->planes.data() + t.varying_planes;
   interpolate_pixels(t, planes, Shading::kVaryings, first, found, pixels.x, pixels.y, pixels.w,
                      pixels.v);

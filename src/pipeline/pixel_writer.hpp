@@ -101,8 +101,10 @@ constexpr bool batch_shaded() {
 struct PackedPixels {
   static constexpr int kCapacity = kBlockPixels;
   int count = 0;
-  std::int16_t x[kCapacity], y[kCapacity];
-  alignas(64) float z[kCapacity];
+  // Positions and depths have room for as many again: a small triangle's pixels may be found
+  // past a full batch before they move to the front of the next (WaitingPixels).
+  std::int16_t x[2 * kCapacity], y[2 * kCapacity];
+  alignas(64) float z[2 * kCapacity];
   alignas(64) float w[kCapacity];
   alignas(64) float v[kMaxVaryings][kCapacity];
 

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <iterator>
 
 #include "pipeline/block_raster.hpp"
 #include "pipeline/pixel_writer.hpp"
@@ -58,8 +59,8 @@ struct WaitingPixels {
   // Positions start at zero: interpolate_pixels reads whole vectors of them, the entries after
   // the last one found too, which then hold zeros or earlier pixels' positions (ignored).
   WaitingPixels() {
-    std::fill_n(pixels.x, PackedPixels::kCapacity, 0);
-    std::fill_n(pixels.y, PackedPixels::kCapacity, 0);
+    std::fill(std::begin(pixels.x), std::end(pixels.x), 0);
+    std::fill(std::begin(pixels.y), std::end(pixels.y), 0);
   }
   PackedPixels pixels;
   // Each pixel's triangle's plane slopes for the texture's level of detail (TexelBatch).
@@ -110,13 +111,30 @@ template <class Shading, AlphaMode kAlpha>
 void add_waiting_band(TileContext& tile, const SetupTriangle& t, int x0, int y0, int x1, int y1) {
   WaitingPixels& waiting = *tile.waiting;
   PackedPixels& pixels = waiting.pixels;
+  // A triangle covers about half its box: what waits is shaded first when even that would not
+  // fit. Otherwise the pixels are found after what waits (the arrays have room for a whole
+  // box past a batch), and when they do not fit after all, what waited is shaded and they move
+  // to the front: batches fill with pixels found rather than with boxes.
   const int box = (x1 - x0 + 1) * (y1 - y0 + 1);
-  if (waiting.flush != nullptr && (waiting.draw != t.draw || pixels.count + box > kMaxWaitingBox)) {
+  if (waiting.flush != nullptr &&
+      (waiting.draw != t.draw || pixels.count + box / 2 > kMaxWaitingBox)) {
     waiting.flush(tile);
   }
-  const int first = pixels.count;
+  int first = pixels.count;
   const int found = find_small_pixels<Shading>(tile, t, x0, y0, x1, y1, pixels, first);
   if (found == 0) return;
+  if (first + found > kMaxWaitingBox) {
+    std::int16_t x[kMaxWaitingBox], y[kMaxWaitingBox];
+    float z[kMaxWaitingBox];
+    std::copy_n(pixels.x + first, found, x);
+    std::copy_n(pixels.y + first, found, y);
+    std::copy_n(pixels.z + first, found, z);
+    waiting.flush(tile);  // pads past what waited: over these
+    std::copy_n(x, found, pixels.x);
+    std::copy_n(y, found, pixels.y);
+    std::copy_n(z, found, pixels.z);
+    first = 0;
+  }
   pixels.count = first + found;
   const Plane* planes = tile.frame->planes.data() + t.varying_planes;
   interpolate_pixels(t, planes, Shading::kVaryings, first, found, pixels.x, pixels.y, pixels.w,

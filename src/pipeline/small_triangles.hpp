@@ -76,9 +76,11 @@ inline constexpr int kMaxWaitingBox = PackedPixels::kCapacity - 8;
 // Triangles whose box in the tile is at most this many pixels, and at most kMaxWaitingBox
 // wide, wait too, a band of rows of at most kMaxWaitingBox pixels at a time. Up to this size,
 // finding their pixels a box row at a time and shading them with other triangles' beats
-// raster.hpp's 8x8 blocks: against boxes of one band only, bunny-close 22 % faster, the
-// islands 5 % (128: 10 % and 4 %; 512 and 1024 gained nothing more).
-inline constexpr int kMaxWaitingTriangleBox = 256;
+// raster.hpp's 8x8 blocks: against boxes of one band only, 256 made bunny-close 22 % faster
+// and the islands 5 % (128: 10 % and 4 %); once batches filled with pixels found rather than
+// boxes (add_waiting_band), 512 gained 1 to 2 % more (bunny-close, phong, the islands; twice),
+// 1024 nothing more.
+inline constexpr int kMaxWaitingTriangleBox = 512;
 
 // Whether a triangle whose box in the tile is width x height pixels may wait (add_waiting).
 inline bool box_may_wait(int width, int height) {

@@ -55,11 +55,7 @@ std::vector<Found> expected(const SetupTriangle& t, int x0, int y0, int width, i
   for (int y = y0; y < y0 + height; ++y) {
     for (int x = x0; x < x0 + width; ++x) {
       bool inside = true;
-      for (int i = 0; i < 3; ++i) {
-        inside &= std::int64_t{t.a[i]} * pipeline::pixel_centre(x) +
-                      std::int64_t{t.b[i]} * pipeline::pixel_centre(y) + t.c[i] >=
-                  0;
-      }
+      for (int i = 0; i < 3; ++i) inside &= pipeline::edge_at_centre(t, i, x, y) >= 0;
       const float z = pipeline::evaluate(t.z, t.ref_x, t.ref_y, static_cast<float>(x) + 0.5f,
                                          static_cast<float>(y) + 0.5f);
       if (inside && z < depth[(y - y0) * stride + (x - x0)]) out.push_back({x, y, z});
@@ -110,10 +106,8 @@ TEST(SmallBoxes, FindExactlyThePixelsTheEdgeFunctionsCover) {
         height = std::min(t.max_y - t.min_y + 1, 64 / width);
       }
       for (int i = 0; i < 3; ++i) {  // an edge value beyond 32 bits' reach: clamped
-        const std::int64_t e = std::int64_t{t.a[i]} * pipeline::pixel_centre(x0) +
-                               std::int64_t{t.b[i]} * pipeline::pixel_centre(y0) + t.c[i];
-        clamped += (e >> pipeline::kSubpixelBits) > (std::int64_t{1} << 30) ||
-                   (e >> pipeline::kSubpixelBits) < -(std::int64_t{1} << 30);
+        const std::int64_t e = pipeline::edge_at_centre(t, i, x0, y0) >> pipeline::kSubpixelBits;
+        clamped += e > (std::int64_t{1} << 30) || e < -(std::int64_t{1} << 30);
       }
       // A depth buffer in which some pixels are nearer than the triangle, with room for the
       // whole vectors find_box_pixels reads past each row.

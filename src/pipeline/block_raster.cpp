@@ -182,10 +182,8 @@ int FindBoxPixels(const SetupTriangle& t, int x0, int y0, int width, int height,
   constexpr std::int64_t kClamp = std::int64_t{1} << 30;
   std::int32_t e_first[3];
   for (int i = 0; i < 3; ++i) {
-    const std::int64_t at_origin =
-        std::int64_t{t.a[i]} * pixel_centre(x0) + std::int64_t{t.b[i]} * pixel_centre(y0) + t.c[i];
     e_first[i] = static_cast<std::int32_t>(
-        std::clamp(at_origin >> kSubpixelBits, -kClamp, kClamp));  // shift: floor
+        std::clamp(edge_at_centre(t, i, x0, y0) >> kSubpixelBits, -kClamp, kClamp));  // floor
   }
   // Rows of eight pixels at most in vectors of eight, wider ones in vectors of up to sixteen.
   if (width > kBlockSize) {

@@ -15,6 +15,7 @@
 #include "facet/material.hpp"
 #include "facet/mesh.hpp"
 #include "facet/renderer.hpp"
+#include "pipeline/fixed_point.hpp"
 #include "shading/uniforms.hpp"
 #include "shading/vertex_batch.hpp"
 
@@ -136,6 +137,11 @@ struct SetupTriangle {
   std::uint32_t varying_planes;    // index of the first of the draw's varying planes (v / w)
   std::uint32_t draw;              // index into Frame::draws
 };
+
+// Edge function i of triangle t at the centre of pixel (x, y): exact in 64 bits.
+inline std::int64_t edge_at_centre(const SetupTriangle& t, int i, int x, int y) {
+  return std::int64_t{t.a[i]} * pixel_centre(x) + std::int64_t{t.b[i]} * pixel_centre(y) + t.c[i];
+}
 
 inline constexpr std::uint32_t kLineBit = 0x80000000u;
 

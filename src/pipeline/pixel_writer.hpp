@@ -136,11 +136,10 @@ struct EdgeScales {
 
 // Distance in pixels from pixel (x, y)'s centre to the triangle's nearest edge (inside: >= 0).
 inline float distance_to_edges(const SetupTriangle& t, const EdgeScales& scales, int x, int y) {
-  const std::int64_t cx = pixel_centre(x), cy = pixel_centre(y);
   double distance = std::numeric_limits<double>::max();
   for (int i = 0; i < 3; ++i) {
-    const std::int64_t e = std::int64_t{t.a[i]} * cx + std::int64_t{t.b[i]} * cy + t.c[i];
-    distance = std::min(distance, static_cast<double>(e) * scales.per_unit[i]);
+    const auto e = static_cast<double>(edge_at_centre(t, i, x, y));
+    distance = std::min(distance, e * scales.per_unit[i]);
   }
   return static_cast<float>(distance);
 }

@@ -27,9 +27,8 @@ enum class EdgeCover { outside, crossed, inside };
 inline EdgeCover classify_edges(const SetupTriangle& t, int block_x, int block_y, BlockInput& in) {
   EdgeCover cover = EdgeCover::inside;
   for (int i = 0; i < 3; ++i) {
-    const std::int64_t at_origin = std::int64_t{t.a[i]} * pixel_centre(block_x) +
-                                   std::int64_t{t.b[i]} * pixel_centre(block_y) + t.c[i];
-    const std::int64_t e = at_origin >> kSubpixelBits;  // floor(E / 256): arithmetic shift
+    // floor(E / 256): an arithmetic shift.
+    const std::int64_t e = edge_at_centre(t, i, block_x, block_y) >> kSubpixelBits;
     const std::int64_t ax0 = std::int64_t{t.a[i]} * in.x_begin,
                        ax1 = std::int64_t{t.a[i]} * (in.x_end - 1);
     const std::int64_t by0 = std::int64_t{t.b[i]} * in.y_begin,

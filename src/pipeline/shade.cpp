@@ -1,8 +1,6 @@
 // Stage: shade (see shade.hpp).
 #include "pipeline/shade.hpp"
 
-#include <algorithm>
-
 #include "shading/lit_models.hpp"
 #include "shading/models.hpp"
 
@@ -73,10 +71,8 @@ DrawPipeline pipeline_for(const Material& material, const Mesh& mesh, const Ligh
   if (material.shading == ShadingModel::unlit && !vertex_colored) {
     return with_alpha<shading::ConstantColorUnlitShading>(material.alpha_mode);
   }
-  const bool directional =
-      std::all_of(lighting.lights.begin(), lighting.lights.end(),
-                  [](const Light& light) { return light.type == LightType::directional; });
-  if (material.shading == ShadingModel::lambert && material.cull != CullMode::none && directional) {
+  if (material.shading == ShadingModel::lambert && material.cull != CullMode::none &&
+      shading::all_directional(lighting.lights)) {
     return with_alpha<shading::UnpositionedLambertShading>(material.alpha_mode);
   }
   return pipeline_for(material.shading, material.alpha_mode);

@@ -2,7 +2,10 @@
 // (pipeline/draw.cpp), read by vertex and fragment functions (shading/models.hpp).
 #pragma once
 
+#include <algorithm>
 #include <glm/glm.hpp>
+#include <iterator>
+#include <span>
 
 #include "facet/light.hpp"
 #include "facet/material.hpp"
@@ -41,13 +44,16 @@ struct DrawUniforms {
   bool display_referred = false;
 };
 
-// Whether every light of the draw's frame is directional: what the batch forms of the models lit
-// per pixel (shade_batch.hpp) and per vertex (vertex_batch.hpp) take.
+// Whether every light (Light or LightData) is directional: what the batch forms of the models
+// lit per pixel (shade_batch.hpp) and per vertex (vertex_batch.hpp) take, through the frame's
+// lights in the draw's uniforms, and the Lambert form without the position (pipeline_for).
+template <class Lights>
+bool all_directional(const Lights& lights) {
+  return std::all_of(std::begin(lights), std::end(lights),
+                     [](const auto& light) { return light.type == LightType::directional; });
+}
 inline bool only_directional_lights(const DrawUniforms& u) {
-  for (int i = 0; i < u.light_count; ++i) {
-    if (u.lights[i].type != LightType::directional) return false;
-  }
-  return true;
+  return all_directional(std::span(u.lights, static_cast<std::size_t>(u.light_count)));
 }
 
 // One vertex as the vertex functions see it: object-space attributes already fetched.

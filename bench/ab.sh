@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # ab.sh — A/B of two facet binaries on benchmark scenes, run alternately so that the machine's
 # slow and fast spells fall on both: for each scene, ROUNDS runs of each binary (one frame count
-# each), then the median of the runs' medians and the smallest of their minimums, in ms.
+# each), then the median of the runs' medians and the smallest of their minimums, in ms, and the
+# median of the rounds' ratios (new median / old median).
 #
 # Usage: bench/ab.sh OLD_BINARY NEW_BINARY ROUNDS SCENE...
 # Environment: THREADS (default 1), SIZE (default facet's 1920x1080), FRAMES (default 12).
@@ -21,6 +22,13 @@ for scene in "$@"; do
     read -r med min < <(run "$old" "$scene"); old_med+=("$med"); old_min+=("$min")
     read -r med min < <(run "$new" "$scene"); new_med+=("$med"); new_min+=("$min")
   done
+  # Each round's two runs are a minute apart at most: their ratio is the least disturbed by the
+  # machine's slow spells, which can slow a whole run by half.
+  ratios=()
+  for i in "${!old_med[@]}"; do
+    ratios+=("$(awk -v a="${old_med[$i]}" -v b="${new_med[$i]}" 'BEGIN { printf "%.4f", b / a }')")
+  done
   echo "$scene  median: old=$(median "${old_med[@]}") new=$(median "${new_med[@]}")" \
-    "  min: old=$(smallest "${old_min[@]}") new=$(smallest "${new_min[@]}")"
+    "  min: old=$(smallest "${old_min[@]}") new=$(smallest "${new_min[@]}")" \
+    "  new/old: $(median "${ratios[@]}") (median of the rounds')"
 done

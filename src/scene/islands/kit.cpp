@@ -196,6 +196,8 @@ void WorldBuilder::place_in_chunk(const Model& model, glm::vec2 anchor) {
   chunks_[key].add(model);
 }
 
+void WorldBuilder::place_last(const Model& model) { last_.add(model); }
+
 int WorldBuilder::add_node(const std::string& name, const Model& model, const glm::mat4& where,
                            int parent) {
   SceneNode node;
@@ -219,6 +221,8 @@ Scene WorldBuilder::finish() {
              glm::mat4(1.0f));
   }
   chunks_.clear();
+  if (last_.triangle_count() != 0) add_node("scenery drawn last", last_, glm::mat4(1.0f));
+  last_ = Model{};
   return std::move(scene_);
 }
 

@@ -227,7 +227,7 @@ Camera start_camera(const Terrain& terrain) {
 IslandsWorld build_world() {
   const Terrain terrain(land_plan());
   WorldBuilder world(make_island_textures());
-  world.place(Terrain::ocean(map::kMapCentre, 7000.0f));       // beyond the far plane every way
+  world.place_last(Terrain::ocean(map::kMapCentre, 7000.0f));  // beyond the far plane every way
   place_land(world, terrain, {-180, -180}, {180, 180}, 0.8f);  // the first island
   place_land(world, terrain, {180, -60}, {420, 180}, 1.25f);   // the second island
   world.place_in_chunk(terrain.water(), terrain.falls_centre_xz());

@@ -39,6 +39,11 @@ struct FrameStats {
   std::uint64_t culled = 0;        // rejected: outside the frustum, back/front-facing, degenerate
   std::uint64_t clipped = 0;       // needed clipping against a plane
   std::uint64_t drawn = 0;         // triangles set up and binned (after clipping)
+  // Pixels the shading model ran for, a measure of work rather than of the image: the pixels
+  // of small triangles of one draw are shaded together, each having passed the depth test as
+  // the tile was before the others, so a pixel that a later triangle of the batch covers
+  // nearer is shaded too (and then not written). It changes with how many pixels wait
+  // together, never the image.
   std::uint64_t pixels_shaded = 0;
   double ms_geometry = 0;  // vertex transform, clip, cull, setup
   double ms_binning = 0;

@@ -190,10 +190,17 @@ void WorldBuilder::place(const Model& model, const glm::mat4& where) {
   place_in_chunk(Model{}.add(model, where), {where[3].x, where[3].z});
 }
 
+Model& WorldBuilder::chunk(Chunks& chunks, glm::vec2 anchor) {
+  return chunks[{static_cast<int>(std::floor(anchor.x / kChunk)),
+                 static_cast<int>(std::floor(anchor.y / kChunk))}];
+}
+
 void WorldBuilder::place_in_chunk(const Model& model, glm::vec2 anchor) {
-  const std::pair<int, int> key(static_cast<int>(std::floor(anchor.x / kChunk)),
-                                static_cast<int>(std::floor(anchor.y / kChunk)));
-  chunks_[key].add(model);
+  chunk(scenery_, anchor).add(model);
+}
+
+void WorldBuilder::place_ground(const Model& model, glm::vec2 anchor) {
+  chunk(ground_, anchor).add(model);
 }
 
 void WorldBuilder::place_last(const Model& model) { last_.add(model); }
@@ -214,14 +221,19 @@ int WorldBuilder::add_node(const std::string& name, const Model& model, const gl
   return static_cast<int>(scene_.nodes.size()) - 1;
 }
 
-Scene WorldBuilder::finish() {
-  for (const auto& [key, model] : chunks_) {
+void WorldBuilder::add_chunks(const std::string& layer, Chunks& chunks) {
+  for (const auto& [key, model] : chunks) {
     if (model.triangle_count() == 0) continue;  // open sea
-    add_node("scenery " + std::to_string(key.first) + "," + std::to_string(key.second), model,
+    add_node(layer + " " + std::to_string(key.first) + "," + std::to_string(key.second), model,
              glm::mat4(1.0f));
   }
-  chunks_.clear();
-  if (last_.triangle_count() != 0) add_node("scenery drawn last", last_, glm::mat4(1.0f));
+  chunks.clear();
+}
+
+Scene WorldBuilder::finish() {
+  add_chunks("scenery", scenery_);
+  add_chunks("ground", ground_);
+  if (last_.triangle_count() != 0) add_node("sea", last_, glm::mat4(1.0f));
   last_ = Model{};
   return std::move(scene_);
 }

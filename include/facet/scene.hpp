@@ -40,6 +40,8 @@ struct Bounds {
 };
 
 struct Scene {
+  // Meshes do not change once in a scene (draw_scene has the renderer check each once): to
+  // change one, put a new one in its place.
   std::vector<std::shared_ptr<const Mesh>> meshes;
   std::vector<Material> materials;
   std::vector<std::shared_ptr<const Texture>> textures;  // every texture the materials use

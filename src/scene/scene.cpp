@@ -75,7 +75,7 @@ void draw_scene(Renderer& renderer, const Scene& scene) {
     if (node.instances.empty()) continue;
     glm::mat4 m = scene.world_transform(static_cast<int>(n));
     for (const MeshInstance& instance : node.instances) {
-      renderer.draw(*scene.meshes[instance.mesh], scene.materials[instance.material], m);
+      renderer.draw(scene.meshes[instance.mesh], scene.materials[instance.material], m);
     }
   }
 }

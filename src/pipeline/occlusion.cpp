@@ -55,6 +55,14 @@ std::size_t first_visible_entry(const Frame& frame, const std::uint32_t* bin, st
     }
   }
   if (last_candidate == 0) return 0;
+  // The scan reads every entry's triangle up to the last candidate, a cache miss each. Once an
+  // entry lies nearer somewhere in the tile than the last candidate lies anywhere (a tree in
+  // front of the ground drawn after it), the last candidate cannot hide what came before: the
+  // scan stops there and keeps the best hider found so far, leaving any between to be drawn.
+  const SetupTriangle& last = frame.triangles[bin[last_candidate]];
+  const float last_farthest = triangle_covers(last, x0, y0, x1, y1)
+                                  ? depth_range_within(last, x0, y0, x1, y1).farthest
+                                  : -std::numeric_limits<float>::infinity();  // no stop
   std::size_t first = 0;
   // The nearest depth any entry so far can write in the tile.
   float nearest_so_far = std::numeric_limits<float>::infinity();
@@ -70,6 +78,7 @@ std::size_t first_visible_entry(const Frame& frame, const std::uint32_t* bin, st
       first = i;
     }
     nearest_so_far = std::min(nearest_so_far, range.nearest);
+    if (nearest_so_far <= last_farthest) break;  // NaN farthest: never
   }
   return first;
 }

@@ -11,8 +11,9 @@
 
 namespace facet::pipeline {
 
-// Index into bin[0 .. count) of the first entry that can change the tile's pixels. Entry i
-// hides all before it when
+// Index into bin[0 .. count) of an entry before which no entry can change the tile's pixels
+// (0 if it finds none; it may miss a hider to save reading every entry). Entry i hides all
+// before it when
 //   * its draw is opaque, depth-tested and depth-writing (DrawPipeline::occludes),
 //   * it covers every pixel centre of the tile (its three edges are >= 0 at the four corners),
 //   * its farthest depth in the tile is nearer than the nearest depth any earlier entry can

@@ -83,8 +83,8 @@ class Model {
   std::array<Mesh, kSurfaceCount> meshes_;
 };
 
-// Static scenery is merged per surface within square chunks of the map, so a renderer (or a
-// future culling pass) can skip the chunks out of view while each still draws in few calls.
+// Static scenery is merged per surface within square chunks of the map, so the renderer skips
+// the chunks out of view whole (its draw culling) while each still draws in few calls.
 // Scenery is drawn in three layers: what stands on the ground, then the ground, then what lies
 // under both (the sea). The depth test then skips the ground and the sea behind the things in
 // front of them, instead of shading them first and covering them later: 823,081 pixels shaded

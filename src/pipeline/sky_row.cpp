@@ -38,18 +38,23 @@ void FillSkyRow(const SkyView& view, const Environment& env, int x0, int y, int 
     return hn::Add(hn::Mul(hn::Set(d, a[c]), hn::Sub(one, t)), hn::Mul(hn::Set(d, b[c]), t));
   };
   alignas(32) float rgb[3][8];
+  // Highway's Iota builds its lanes in memory: once, not in the loop. Whole numbers below 2^24
+  // add exactly, so x0 + i + lane is the same float either way.
+  const FloatV lane = hn::Iota(d, 0.0f);
   for (int i = 0; i < count; i += lanes) {
     // Only where something shows the sky: its divisions and square roots are most of a
     // covered pixel's cost otherwise.
-    bool shows_sky = false;
+    bool shows_sky = false, all_sky = false;
     if (i + lanes <= count) {
-      shows_sky = !hn::AllFalse(d, hn::Eq(hn::LoadU(d, depth + i), hn::Set(d, clear_depth)));
+      const auto sky = hn::Eq(hn::LoadU(d, depth + i), hn::Set(d, clear_depth));
+      shows_sky = !hn::AllFalse(d, sky);
+      all_sky = hn::AllTrue(d, sky);
     } else {
       for (int k = i; k < count; ++k) shows_sky |= depth[k] == clear_depth;
     }
     if (!shows_sky) continue;
     // ndc_x = (x + 0.5) / width * 2 - 1
-    const FloatV x = hn::Iota(d, static_cast<float>(x0 + i));
+    const FloatV x = hn::Add(lane, hn::Set(d, static_cast<float>(x0 + i)));
     const FloatV ndc_x = hn::Sub(
         hn::Mul(hn::Div(hn::Add(x, hn::Set(d, 0.5f)), hn::Set(d, width)), hn::Set(d, 2.0f)), one);
     FloatV far[4];
@@ -67,11 +72,17 @@ void FillSkyRow(const SkyView& view, const Environment& env, int x0, int y, int 
     const FloatV below_t = hn::Mul(hn::Neg(up), hn::Set(d, 4.0f));
     const FloatV t_above = hn::Sqrt(up);
     const FloatV t_below = hn::Sqrt(hn::IfThenElse(hn::Lt(one, below_t), one, below_t));
+    FloatV color[3];
     for (int c = 0; c < 3; ++c) {
-      const FloatV color = hn::IfThenElse(above, mix(env.sky_horizon, env.sky_zenith, t_above, c),
-                                          mix(env.sky_horizon, env.ground, t_below, c));
-      hn::Store(hn::Mul(color, hn::Set(d, env.intensity)), d, rgb[c]);
+      color[c] = hn::Mul(hn::IfThenElse(above, mix(env.sky_horizon, env.sky_zenith, t_above, c),
+                                        mix(env.sky_horizon, env.ground, t_below, c)),
+                         hn::Set(d, env.intensity));
     }
+    if (all_sky) {  // most of the sky: whole vectors of it, stored as (r, g, b, 1) colors
+      hn::StoreInterleaved4(color[0], color[1], color[2], one, d, &colors[i].r);
+      continue;
+    }
+    for (int c = 0; c < 3; ++c) hn::Store(color[c], d, rgb[c]);
     const int active = std::min(lanes, count - i);
     for (int k = 0; k < active; ++k) {
       if (depth[i + k] != clear_depth) continue;  // drawn over

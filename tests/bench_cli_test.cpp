@@ -30,7 +30,9 @@ TEST(BenchCli, PrintsOneRowPerSceneWithEveryStageAndWritesJson) {
   auto dir = fresh_test_dir("facet_bench_cli_", "table");
   const std::string json = (dir / "out.json").string();
   std::string command = FACET_CLI;
-  command += " bench --scene overdraw --size 96x54 --frames 3 --warmup 1 --threads 2 --json ";
+  command +=
+      " bench --scene overdraw --size 96x54 --frames 3 --warmup 1 --threads 2 --tile-size 32 "
+      "--json ";
   command += json;
   CommandResult r = run_command(command);
   ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
@@ -50,16 +52,16 @@ TEST(BenchCli, PrintsOneRowPerSceneWithEveryStageAndWritesJson) {
   std::ifstream file(json);
   std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
   for (const char* key :
-       {"\"size\": \"96x54\"", "\"threads\": 2", "\"frames\": 3", "\"name\": \"overdraw\"",
-        "\"median_ms\"", "\"triangles_per_s\"", "\"pixels_per_s\"", "\"geometry_ms\"",
-        "\"binning_ms\"", "\"raster_ms\"", "\"resolve_ms\""}) {
+       {"\"size\": \"96x54\"", "\"threads\": 2", "\"tile_size\": 32", "\"frames\": 3",
+        "\"name\": \"overdraw\"", "\"median_ms\"", "\"triangles_per_s\"", "\"pixels_per_s\"",
+        "\"geometry_ms\"", "\"binning_ms\"", "\"raster_ms\"", "\"resolve_ms\""}) {
     EXPECT_NE(text.find(key), std::string::npos) << key << " missing from\n" << text;
   }
 }
 
 TEST(BenchCli, BadValuesGiveOneErrorLine) {
-  for (const char* args :
-       {"--scene no_such_scene", "--frames 0", "--warmup -1", "--threads -2", "--size 0x10"}) {
+  for (const char* args : {"--scene no_such_scene", "--frames 0", "--warmup -1", "--threads -2",
+                           "--size 0x10", "--tile-size 48"}) {
     std::string command = FACET_CLI;
     command += " bench --size 32x18 ";
     command += args;

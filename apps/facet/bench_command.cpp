@@ -37,6 +37,7 @@ SceneResult run_scene(const std::string& name, const BenchOptions& o, const Imag
   auto scene = bench::make_bench_scene(name);  // setup: not timed
   RenderSettings settings;
   settings.threads = o.threads;
+  settings.tile_size = o.tile_size;
   settings.clear_color = scene->clear_color();
   Renderer renderer(settings);
   // Color only, as glmark2's frames are: both depth-test, neither reads the depth back.
@@ -81,8 +82,8 @@ void write_json(const std::string& path, const BenchOptions& o, const ImageSize&
   std::ofstream out(path);
   if (!out) throw Error(o.json + ": cannot write");
   out << "{\n  \"size\": \"" << size.width << "x" << size.height
-      << "\",\n  \"threads\": " << o.threads << ",\n  \"frames\": " << o.frames
-      << ",\n  \"scenes\": [\n";
+      << "\",\n  \"threads\": " << o.threads << ",\n  \"tile_size\": " << o.tile_size
+      << ",\n  \"frames\": " << o.frames << ",\n  \"scenes\": [\n";
   for (std::size_t i = 0; i < results.size(); ++i) {
     const SceneResult& r = results[i];
     out << "    {\"name\": \"" << r.name << "\", \"median_ms\": " << r.median_ms
@@ -107,6 +108,8 @@ CLI::App* add_bench_command(CLI::App& app, BenchOptions& o) {
       ->capture_default_str();
   cmd->add_option("--warmup", o.warmup, "Frames rendered before measuring")->capture_default_str();
   cmd->add_option("--threads", o.threads, "Worker threads, 0 = all cores")->capture_default_str();
+  cmd->add_option("--tile-size", o.tile_size, "Tile edge in pixels: 16, 32, 64 or 128")
+      ->capture_default_str();
   cmd->add_option("--json", o.json, "Also write the results to this JSON file");
   return cmd;
 }
@@ -116,6 +119,9 @@ int run_bench(const BenchOptions& o) {
   if (o.frames < 1) throw Error("--frames: must be at least 1");
   if (o.warmup < 0) throw Error("--warmup: must be 0 or more");
   if (o.threads < 0) throw Error("--threads: must be 0 (all cores) or more");
+  if (o.tile_size != 16 && o.tile_size != 32 && o.tile_size != 64 && o.tile_size != 128) {
+    throw Error("--tile-size: must be 16, 32, 64 or 128, got " + std::to_string(o.tile_size));
+  }
   std::vector<std::string> names =
       o.scene == "all" ? bench::bench_scene_names() : std::vector<std::string>{o.scene};
   std::vector<SceneResult> results;

@@ -13,6 +13,7 @@ struct BenchOptions {
   int frames = 50;
   int warmup = 5;
   int threads = 0;
+  int tile_size = 64;
   std::string json;  // empty: no JSON file
 };
 

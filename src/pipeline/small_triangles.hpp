@@ -145,8 +145,15 @@ void add_waiting_band(TileContext& tile, const SetupTriangle& t, int x0, int y0,
     const Plane* uv = planes + base_color_texcoord<Shading>();
     const float slopes[shading::TexelBatch::kSlopes] = {uv[0].dx, uv[1].dx,   uv[0].dy,
                                                         uv[1].dy, t.inv_w.dx, t.inv_w.dy};
+    // Whole runs of eight (vector stores, no remainder loop): the entries past the last pixel
+    // are before kMaxWaitingBox + 8, inside the arrays, and later pixels or the pad overwrite
+    // them.
+    static_assert(kMaxWaitingBox + 8 <= PackedPixels::kCapacity);
     for (int k = 0; k < shading::TexelBatch::kSlopes; ++k) {
-      std::fill_n(waiting.slopes[k] + first, found, slopes[k]);
+      float* out = waiting.slopes[k] + first;
+      for (int j = 0; j < found; j += 8) {
+        for (int lane = 0; lane < 8; ++lane) out[j + lane] = slopes[k];
+      }
     }
   }
   waiting.draw = t.draw;

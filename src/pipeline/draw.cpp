@@ -89,6 +89,8 @@ struct Renderer::Impl {
   void record(const Mesh& mesh, const std::optional<pipeline::MeshBox>& box,
               const Material& material, const glm::mat4& transform,
               const pipeline::DrawPipeline& pipe);
+  // The bounds of a mesh drawn through a shared pointer, checked the first time (draw()).
+  const std::optional<pipeline::MeshBox>& checked_bounds(const std::shared_ptr<const Mesh>& mesh);
   // Records a draw of any mesh: checks it first.
   void check_and_record(const Mesh& mesh, const Material& material, const glm::mat4& transform,
                         const pipeline::DrawPipeline& pipe);
@@ -175,22 +177,28 @@ void Renderer::draw(const Mesh& mesh, const Material& material, const glm::mat4&
 
 void Renderer::draw(const std::shared_ptr<const Mesh>& mesh, const Material& material,
                     const glm::mat4& transform) {
-  if (!impl_->recording) throw Error("renderer: draw() called before begin_frame()");
+  const std::optional<pipeline::MeshBox>& box = impl_->checked_bounds(mesh);
+  impl_->record(*mesh, box, material, transform,
+                pipeline::pipeline_for(material, *mesh, impl_->lighting));
+}
+
+const std::optional<pipeline::MeshBox>& Renderer::Impl::checked_bounds(
+    const std::shared_ptr<const Mesh>& mesh) {
+  if (!recording) throw Error("renderer: draw() called before begin_frame()");
   if (!mesh) throw Error("renderer: draw() of a null mesh pointer");
-  auto [entry, added] = impl_->checked_meshes.try_emplace(mesh.get());
+  auto [entry, added] = checked_meshes.try_emplace(mesh.get());
   if (added) {
     try {
       mesh->validate();
     } catch (...) {
-      impl_->checked_meshes.erase(entry);
+      checked_meshes.erase(entry);
       throw;
     }
     entry->second.mesh = mesh;
     entry->second.box = pipeline::finite_bounds(*mesh);
   }
-  entry->second.last_frame = impl_->frame_number;
-  impl_->record(*mesh, entry->second.box, material, transform,
-                pipeline::pipeline_for(material, *mesh, impl_->lighting));
+  entry->second.last_frame = frame_number;
+  return entry->second.box;
 }
 
 void Renderer::Impl::check_and_record(const Mesh& mesh, const Material& material,
@@ -436,6 +444,14 @@ namespace pipeline {
 void draw_with_pipeline(Renderer& renderer, const Mesh& mesh, const Material& material,
                         const glm::mat4& transform, const DrawPipeline& pipe) {
   RendererAccess::impl(renderer).check_and_record(mesh, material, transform, pipe);
+}
+
+void draw_with_pipeline(Renderer& renderer, const std::shared_ptr<const Mesh>& mesh,
+                        const Material& material, const glm::mat4& transform,
+                        const DrawPipeline& pipe) {
+  auto& impl = RendererAccess::impl(renderer);  // Impl is private: not named here
+  const std::optional<MeshBox>& box = impl.checked_bounds(mesh);
+  impl.record(*mesh, box, material, transform, pipe);
 }
 
 }  // namespace pipeline

@@ -2,6 +2,8 @@
 // explicit DrawPipeline (e.g. a test's own shading model) instead of the material's.
 #pragma once
 
+#include <memory>
+
 #include "facet/renderer.hpp"
 #include "pipeline/frame.hpp"
 
@@ -9,5 +11,9 @@ namespace facet::pipeline {
 
 void draw_with_pipeline(Renderer& renderer, const Mesh& mesh, const Material& material,
                         const glm::mat4& transform, const DrawPipeline& pipeline);
+// The same for a mesh that does not change (as Renderer::draw's shared-pointer form).
+void draw_with_pipeline(Renderer& renderer, const std::shared_ptr<const Mesh>& mesh,
+                        const Material& material, const glm::mat4& transform,
+                        const DrawPipeline& pipeline);
 
 }  // namespace facet::pipeline

@@ -65,7 +65,7 @@ class Glmark2Scene : public BenchScene {
  public:
   Glmark2Scene(Mesh mesh, const View& view, Rotation rotation, Material material,
                const pipeline::DrawPipeline& pipeline)
-      : mesh_(std::move(mesh)),
+      : mesh_(std::make_shared<const Mesh>(std::move(mesh))),
         view_(view),
         rotation_(rotation),
         material_(std::move(material)),
@@ -89,7 +89,7 @@ class Glmark2Scene : public BenchScene {
   }
 
  private:
-  Mesh mesh_;
+  std::shared_ptr<const Mesh> mesh_;  // does not change: checked once by the renderer
   View view_;
   Rotation rotation_;
   Material material_;

@@ -25,8 +25,8 @@ std::shared_ptr<const Mesh> load_first_mesh(const std::string& path) {
   return scene.meshes.at(0);
 }
 
-// The scenes' meshes do not change: they are drawn through shared pointers, which the renderer
-// checks once (as a GPU driver checks a vertex buffer once, as glmark2 uses them).
+// The scenes' meshes do not change: they are drawn through shared pointers, so the renderer
+// checks each once, as a GPU driver checks the vertex buffers glmark2 draws from.
 
 // bunny.obj (70k triangles, indexed) in the normals view, fov 45, near 0.1, far 100, looking
 // at the origin from (0, 0.1, distance).

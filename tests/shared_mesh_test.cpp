@@ -64,6 +64,7 @@ TEST(SharedMesh, ABadMeshIsRefusedEveryTimeAndANewOneInItsPlaceIsChecked) {
   const auto bad_mesh = std::make_shared<const Mesh>(bad);
   Renderer renderer;
   Framebuffer fb(kWidth, kHeight);
+  EXPECT_THROW(renderer.draw(bad_mesh, Material{}), Error);  // before begin_frame()
   for (int frame = 0; frame < 2; ++frame) {
     renderer.begin_frame(test_camera(kWidth, kHeight));
     try {

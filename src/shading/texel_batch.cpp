@@ -184,6 +184,62 @@ HWY_INLINE Texel Blend(const float* texels, const StoredFootprints& fp, int k) {
   return Lerp(bottom, top, fp.b[k]);
 }
 
+#if HWY_MAX_BYTES >= 64
+// Blend() and the blend toward the next level for pixels k .. k + 3 in one 16-lane vector
+// (lanes 4p .. 4p + 3 are pixel k + p's channels), for the whole groups of four of the batch;
+// returns how many pixels it did. The same operations per lane as the scalar blends; a pixel
+// whose fraction is 0 keeps its level's blend (a select: the scalar code skips the lerp).
+HWY_INLINE int BlendFours(const float* texels, const StoredFootprints& near,
+                          const StoredFootprints& far, const float* fraction, int count,
+                          float (*rgba)[4]) {
+  const hn::Full512<float> d;
+  const hn::Full256<float> d8;
+  const hn::Full128<float> d4;
+  const hn::RebindToSigned<decltype(d)> di;
+  alignas(64) static constexpr std::int32_t kPixelOfLane[16] = {0, 0, 0, 0, 1, 1, 1, 1,
+                                                                2, 2, 2, 2, 3, 3, 3, 3};
+  const auto spread = hn::IndicesFromVec(d, hn::Load(di, kPixelOfLane));
+  const auto one = hn::Set(d, 1.0f);
+  // Each of the four pixels' value at k + p, spread to its four lanes.
+  auto per_pixel = [&](const float* values) HWY_ATTR {
+    const auto four = hn::LoadDup128(d, values);
+    return hn::TableLookupLanes(four, spread);
+  };
+  // Lerp() of texture.cpp, lane by lane.
+  auto lerp = [&](auto a, auto b, auto f) HWY_ATTR {
+    const auto from_a = hn::Mul(a, hn::Sub(one, f));
+    return hn::Add(from_a, hn::Mul(b, f));
+  };
+  // Footprint texel t of pixels k .. k + 3, one pixel's RGBA in each quarter of the vector.
+  auto texel = [&](const StoredFootprints& fp, int t, int k) HWY_ATTR {
+    const auto low = hn::Combine(d8, hn::LoadU(d4, texels + fp.texel[t][k + 1]),
+                                 hn::LoadU(d4, texels + fp.texel[t][k]));
+    const auto high = hn::Combine(d8, hn::LoadU(d4, texels + fp.texel[t][k + 3]),
+                                  hn::LoadU(d4, texels + fp.texel[t][k + 2]));
+    return hn::Combine(d, high, low);
+  };
+  auto blend = [&](const StoredFootprints& fp, int k) HWY_ATTR {
+    const auto a = per_pixel(fp.a + k);
+    const auto bottom = lerp(texel(fp, 0, k), texel(fp, 1, k), a);
+    const auto top = lerp(texel(fp, 2, k), texel(fp, 3, k), a);
+    return lerp(bottom, top, per_pixel(fp.b + k));
+  };
+  int k = 0;
+  for (; k + 4 <= count; k += 4) {
+    auto color = blend(near, k);
+    const auto f = per_pixel(fraction + k);
+    const auto blends = hn::Gt(f, hn::Zero(d));
+    // A pixel with a fraction lies in a vector of eight whose next-level footprints were
+    // stored (phase 2), so all four pixels' are there.
+    if (!hn::AllFalse(d, blends)) {
+      color = hn::IfThenElse(blends, lerp(color, blend(far, k), f), color);
+    }
+    hn::StoreU(color, d, rgba[k]);
+  }
+  return k;
+}
+#endif
+
 // sample_nearest() of texture.cpp (base level): the texel's offset.
 HWY_INLINE IntV Nearest(const Source& src, FloatV u, FloatV v) {
   const FloatTag df;
@@ -346,8 +402,12 @@ void SampleBatch(const TextureMap& map, TexelBatch& batch) {
       far.store(j, Bilinear(src, l1, ut, vt));
     }
   }
-  // 3. Each pixel's blend.
-  for (int k = 0; k < batch.count; ++k) {
+  // 3. Each pixel's blend: four pixels a vector where it has sixteen lanes, then one at a time.
+  int k = 0;
+#if HWY_MAX_BYTES >= 64
+  k = BlendFours(src.texels, near, far, fraction, batch.count, batch.rgba);
+#endif
+  for (; k < batch.count; ++k) {
     Texel texel = Blend(src.texels, near, k);
     if (fraction[k] > 0.0f) texel = Lerp(texel, Blend(src.texels, far, k), fraction[k]);
     std::memcpy(batch.rgba[k], &texel, sizeof texel);

@@ -184,7 +184,7 @@ HWY_INLINE Texel Blend(const float* texels, const StoredFootprints& fp, int k) {
   return Lerp(bottom, top, fp.b[k]);
 }
 
-#if HWY_MAX_BYTES >= 64
+#if HWY_ARCH_X86 && HWY_MAX_BYTES >= 64  // AVX-512: 512-bit vectors exist
 // Blend() and the blend toward the next level for pixels k .. k + 3 in one 16-lane vector
 // (lanes 4p .. 4p + 3 are pixel k + p's channels), for the whole groups of four of the batch;
 // returns how many pixels it did. The same operations per lane as the scalar blends; a pixel
@@ -192,6 +192,9 @@ HWY_INLINE Texel Blend(const float* texels, const StoredFootprints& fp, int k) {
 HWY_INLINE int BlendFours(const float* texels, const StoredFootprints& near,
                           const StoredFootprints& far, const float* fraction, int count,
                           float (*rgba)[4]) {
+  // A group of four pixels lies in one of phase 2's vectors, so where one of them blends
+  // toward the next level, all four have their next-level footprints stored.
+  static_assert(hn::MaxLanes(FloatTag()) % 4 == 0);
   const hn::Full512<float> d;
   const hn::Full256<float> d8;
   const hn::Full128<float> d4;
@@ -229,8 +232,6 @@ HWY_INLINE int BlendFours(const float* texels, const StoredFootprints& near,
     auto color = blend(near, k);
     const auto f = per_pixel(fraction + k);
     const auto blends = hn::Gt(f, hn::Zero(d));
-    // A pixel with a fraction lies in a vector of eight whose next-level footprints were
-    // stored (phase 2), so all four pixels' are there.
     if (!hn::AllFalse(d, blends)) {
       color = hn::IfThenElse(blends, lerp(color, blend(far, k), f), color);
     }
@@ -404,7 +405,7 @@ void SampleBatch(const TextureMap& map, TexelBatch& batch) {
   }
   // 3. Each pixel's blend: four pixels a vector where it has sixteen lanes, then one at a time.
   int k = 0;
-#if HWY_MAX_BYTES >= 64
+#if HWY_ARCH_X86 && HWY_MAX_BYTES >= 64  // AVX-512: 512-bit vectors exist
   k = BlendFours(src.texels, near, far, fraction, batch.count, batch.rgba);
 #endif
   for (; k < batch.count; ++k) {

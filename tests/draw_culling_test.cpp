@@ -1,10 +1,12 @@
 // Whole draws outside the view frustum are dropped before their vertices are transformed
-// (pipeline/draw_culling.cpp); draws that reach into the view are kept.
+// (pipeline/draw_culling.cpp); draws that reach into the view are kept. Draws whose bounds need
+// no clipping are told apart from those that may.
 #include "pipeline/draw_culling.hpp"
 
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <random>
 
 #include "support/render_helpers.hpp"
 
@@ -76,6 +78,63 @@ TEST(DrawCulling, BoundsSeeEveryCoordinateOfEveryVertex) {
     EXPECT_EQ(box->low, glm::vec3(0, 1 - count, 0));
     EXPECT_EQ(box->high, glm::vec3(count - 1, 0, 0.5f * (count - 1)));
   }
+}
+
+pipeline::MeshBox box_around(glm::vec3 centre, glm::vec3 half_size) {
+  return {centre - half_size, centre + half_size};
+}
+
+TEST(DrawCulling, BoxesThatMayNeedClippingAreToldApart) {
+  const glm::mat4 view_projection = test_camera(kWidth, kHeight).view_projection();
+  const pipeline::ClipBounds guard = pipeline::guard_band_bounds(kWidth, kHeight);
+  auto inside = [&](glm::vec3 centre, glm::vec3 half_size) {
+    return pipeline::box_inside_clip_bounds(box_around(centre, half_size), view_projection, guard);
+  };
+  // In view; across the left edge of the view but well inside the guard band (8192 pixels).
+  EXPECT_TRUE(inside({0, 0, -10}, glm::vec3(1)));
+  EXPECT_TRUE(inside({-6.6f, 0, -10}, glm::vec3(1)));
+  // Across the near plane (0.1), behind the eye, across the far plane (100), and so wide
+  // that it leaves the guard band.
+  EXPECT_FALSE(inside({0, 0, -0.5f}, glm::vec3(1)));
+  EXPECT_FALSE(inside({0, 0, 5}, glm::vec3(1)));
+  EXPECT_FALSE(inside({0, 0, -100}, glm::vec3(1)));
+  EXPECT_FALSE(inside({0, 0, -10}, {1e5f, 1, 1}));
+}
+
+// Where box_inside_clip_bounds says yes, no point of the box gets a code that asks for
+// clipping from the vertex stage's transform and outcode(): corners and points inside, for
+// random boxes and cameras, many of them close to a plane.
+TEST(DrawCulling, NoPointOfABoxInsideTheClipBoundsNeedsClipping) {
+  std::mt19937 rng(20261123);
+  std::uniform_real_distribution<float> any(-1.0f, 1.0f), unit(0.0f, 1.0f);
+  int accepted = 0, rejected = 0;
+  for (int round = 0; round < 4000; ++round) {
+    const glm::vec3 eye(any(rng) * 20, any(rng) * 20, any(rng) * 20);
+    const float near_plane = 0.05f + unit(rng), far_plane = near_plane + 1 + unit(rng) * 200;
+    const Camera camera =
+        Camera::look_at(eye, eye + glm::vec3(any(rng), any(rng), any(rng)), {0, 1, 0},
+                        20 + unit(rng) * 120, 0.5f + unit(rng) * 2, near_plane, far_plane);
+    const int width = 16 + static_cast<int>(rng() % 4000), height = 16 + rng() % 4000;
+    const pipeline::ClipBounds guard = pipeline::guard_band_bounds(width, height);
+    const glm::mat4 view_projection = camera.view_projection();
+    const glm::vec3 centre = eye + glm::vec3(any(rng), any(rng), any(rng)) * far_plane;
+    const glm::vec3 half_size =
+        glm::vec3(unit(rng), unit(rng), unit(rng)) * (rng() % 2 ? 0.01f : far_plane);
+    const pipeline::MeshBox box = box_around(centre, half_size);
+    if (!pipeline::box_inside_clip_bounds(box, view_projection, guard)) {
+      ++rejected;
+      continue;
+    }
+    ++accepted;
+    for (int k = 0; k < 32; ++k) {
+      const glm::vec3 t = k < 8 ? glm::vec3(k & 1, k >> 1 & 1, k >> 2 & 1)
+                                : glm::vec3(unit(rng), unit(rng), unit(rng));
+      const glm::vec4 clip = view_projection * glm::vec4(box.low + t * (box.high - box.low), 1);
+      ASSERT_EQ(pipeline::outcode(clip, guard), 0u) << "round " << round;
+    }
+  }
+  EXPECT_GT(accepted, 100);
+  EXPECT_GT(rejected, 100);
 }
 
 TEST(DrawCulling, DroppedDrawsCountAsCulledAndDrawNothing) {

@@ -1,7 +1,8 @@
 // The SIMD vertex form of the Gouraud models (shading/vertex_batch.cpp) gives vertex()'s bits on
 // every SIMD target: lit by zero to three directional lights, from any side, with and without
 // texture coordinates, vertex colors and a highlight, for every run length; and it declines
-// point and spot lights.
+// point and spot lights. The batch form of the unlit and Lambert models (surface_vertex_batch)
+// gives their vertex()'s bits too.
 #include "shading/vertex_batch.hpp"
 
 #include <gtest/gtest.h>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "shading/lit_models.hpp"
+#include "shading/models.hpp"
 #include "support/forced_target.hpp"
 
 namespace facet::test {
@@ -106,6 +108,12 @@ TEST(VertexBatch, GouraudGivesVertexsBitsOnEveryTarget) {
 
 TEST(VertexBatch, ConstantColorGouraudGivesVertexsBitsOnEveryTarget) {
   expect_vertex_batch_gives_vertexs_bits<shading::ConstantColorGouraudShading>();
+}
+
+TEST(VertexBatch, SurfaceModelsGiveVertexsBits) {
+  expect_vertex_batch_gives_vertexs_bits<shading::UnlitShading>();
+  expect_vertex_batch_gives_vertexs_bits<shading::LambertShading>();
+  expect_vertex_batch_gives_vertexs_bits<shading::UnpositionedLambertShading>();
 }
 
 TEST(VertexBatch, GouraudDeclinesPointAndSpotLights) {

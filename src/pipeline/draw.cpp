@@ -219,6 +219,7 @@ void Renderer::Impl::record(const Mesh& mesh, const std::optional<pipeline::Mesh
   }
   pipeline::DrawRecord record;
   record.mesh = &mesh;
+  record.bounds = box;
   record.material = material;
   record.pipeline = pipeline::debug_pipeline(settings.debug_view, pipe);
   if (is_blended(material.alpha_mode) && box) {
@@ -275,6 +276,7 @@ void Renderer::Impl::run(Framebuffer& target) {
   // Per-draw pointers into frame-wide data, set now that the draw list no longer grows.
   frame.lights.clear();
   for (const Light& light : lighting.lights) frame.lights.push_back(shading::prepare_light(light));
+  const pipeline::ClipBounds guard = pipeline::guard_band_bounds(frame.width, frame.height);
   for (pipeline::DrawRecord& draw : frame.draws) {
     draw.uniforms.lights = frame.lights.data();
     draw.uniforms.light_count = static_cast<int>(frame.lights.size());
@@ -285,6 +287,8 @@ void Renderer::Impl::run(Framebuffer& target) {
     draw.batch_shaded = draw.pipeline.batch_shades && draw.pipeline.batch_shades(draw.uniforms);
     draw.batch_vertices =
         draw.pipeline.batches_vertices && draw.pipeline.batches_vertices(draw.uniforms);
+    draw.clip_free = draw.bounds && pipeline::box_inside_clip_bounds(
+                                        *draw.bounds, draw.uniforms.model_view_projection, guard);
   }
   order_draws();
   background.clear_color = settings.clear_color;

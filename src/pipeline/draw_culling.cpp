@@ -83,4 +83,31 @@ bool box_outside_frustum(const MeshBox& box, const glm::mat4& model_view_project
   return outside != 0;
 }
 
+bool box_inside_clip_bounds(const MeshBox& box, const glm::mat4& model_view_projection,
+                            const ClipBounds& guard) {
+  // The outcode() tests, each a linear function of the position: positive at every corner
+  // means positive all over the box. One margin for the whole box, from its largest
+  // magnitudes: a vertex anywhere inside errs by a few ulp of |M| |p| <= |M| |corner|max, far
+  // below 1e-5 of it (so a vertex of the box never gets a code that asks for clipping).
+  constexpr float kMargin = 1e-5f;
+  const glm::vec4 largest(glm::max(glm::abs(box.low), glm::abs(box.high)), 1.0f);
+  glm::mat4 magnitude;
+  for (int column = 0; column < 4; ++column)
+    magnitude[column] = glm::abs(model_view_projection[column]);
+  const glm::vec4 size = magnitude * largest;
+  const float x_margin = kMargin * (size.x + guard.gx * size.w);
+  const float y_margin = kMargin * (size.y + guard.gy * size.w);
+  const float z_margin = kMargin * (size.z + size.w);
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::vec4 p(corner & 1 ? box.high.x : box.low.x, corner & 2 ? box.high.y : box.low.y,
+                      corner & 4 ? box.high.z : box.low.z, 1.0f);
+    const glm::vec4 c = model_view_projection * p;
+    const bool inside = c.z + c.w > z_margin && c.w - c.z > z_margin &&
+                        c.x + guard.gx * c.w > x_margin && guard.gx * c.w - c.x > x_margin &&
+                        c.y + guard.gy * c.w > y_margin && guard.gy * c.w - c.y > y_margin;
+    if (!inside) return false;  // also when NaN
+  }
+  return true;
+}
+
 }  // namespace facet::pipeline

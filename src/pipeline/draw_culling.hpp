@@ -7,20 +7,22 @@
 #include <optional>
 
 #include "facet/mesh.hpp"
+#include "pipeline/clip.hpp"
 
 namespace facet::pipeline {
 
-// Object-space bounding box of a mesh's positions.
-struct MeshBox {
-  glm::vec3 low, high;
-};
-
-// The box, or nothing for an empty mesh or one with a non-finite position (the pipeline skips
-// those triangles itself, so no box can stand for them).
+// The mesh's bounding box (frame.hpp's MeshBox), or nothing for an empty mesh or one with a
+// non-finite position (the pipeline skips those triangles itself, so no box can stand for them).
 std::optional<MeshBox> finite_bounds(const Mesh& mesh);
 
 // True when all eight corners of the box are outside one and the same clip plane of
 // model_view_projection: then every triangle inside it would be culled anyway.
 bool box_outside_frustum(const MeshBox& box, const glm::mat4& model_view_projection);
+
+// True when every point of the box transforms to inside the guard band and between the near
+// and far planes, with a margin over the vertex stage's rounding: then none of the draw's
+// triangles needs clipping, and the vertex stage need not keep what only the clipper reads.
+bool box_inside_clip_bounds(const MeshBox& box, const glm::mat4& model_view_projection,
+                            const ClipBounds& guard);
 
 }  // namespace facet::pipeline

@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <optional>
 #include <vector>
 
 #include "facet/material.hpp"
@@ -52,7 +53,10 @@ struct ProjectedVertex {
 
 // A draw's transformed vertices, reused across frames.
 struct DrawVertices {
-  std::vector<ClipVertex> clip;            // what the clipper and the per-triangle hooks read
+  // What the clipper, the per-triangle hooks and the edges read; not written (clip_written
+  // false) for a draw that reads none of them, whose planes come from over_w alone.
+  std::vector<ClipVertex> clip;
+  bool clip_written = true;
   std::vector<ProjectedVertex> projected;  // what culling and setup read
   // varyings[k] * screen.inv_w, `varyings` floats per vertex: the values setup's planes pass
   // through (perspective-correct interpolation interpolates v / w). Empty when the draw has
@@ -90,14 +94,23 @@ struct DrawPipeline {
   bool display_referred = false;
 };
 
+// Object-space bounding box of a mesh's positions (draw_culling.hpp).
+struct MeshBox {
+  glm::vec3 low, high;
+};
+
 struct DrawRecord {
   const Mesh* mesh = nullptr;
-  float view_depth = 0.0f;  // of the mesh's bounds centre: blended draws sort on it
+  std::optional<MeshBox> bounds;  // none for a mesh with non-finite positions
+  float view_depth = 0.0f;        // of the mesh's bounds centre: blended draws sort on it
   Material material;
   shading::DrawUniforms uniforms;
   DrawPipeline pipeline;
   bool batch_shaded = false;    // pipeline.batch_shades(uniforms), once per frame (draw.cpp)
   bool batch_vertices = false;  // pipeline.batches_vertices(uniforms), likewise
+  // Its bounds are inside the guard band and between near and far (box_inside_clip_bounds),
+  // so no triangle of it needs clipping; also decided once per frame.
+  bool clip_free = false;
 };
 
 // The per-triangle hooks primitive assembly runs before setup: a face normal for shading

@@ -2,6 +2,7 @@
 #include "pipeline/primitive.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 #include "pipeline/clip.hpp"
@@ -95,8 +96,8 @@ struct Assembler {
     const std::uint32_t i0 = a.i0, i1 = a.i1, i2 = a.i2;
     const bool front_facing = a.front_facing;
     const DrawPipeline& pipe = draw.pipeline;
-    const ClipVertex* in[3] = {&vertices.clip[i0], &vertices.clip[i1], &vertices.clip[i2]};
     if (pipe.draws_edges) {
+      const ClipVertex* in[3] = {&vertices.clip[i0], &vertices.clip[i1], &vertices.clip[i2]};
       for (int i = 0; i < 3; ++i)
         edge(in[i]->clip, in[(i + 1) % 3]->clip, draw.uniforms.wire_color);
     }
@@ -120,7 +121,10 @@ struct Assembler {
       return;
     }
 
-    // The per-triangle hooks and the clipper rewrite vertices: work on copies.
+    // The per-triangle hooks and the clipper rewrite vertices: work on copies. (A draw whose
+    // vertex stage skipped the clip vertices has neither: its bounds said no clipping.)
+    assert(vertices.clip_written);
+    const ClipVertex* in[3] = {&vertices.clip[i0], &vertices.clip[i1], &vertices.clip[i2]};
     ClipPolygon polygon;
     polygon.count = 3;
     ClipVertex* v = polygon.vertices;

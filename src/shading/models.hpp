@@ -67,8 +67,19 @@ struct DisplayReferred {
   static constexpr bool kDisplayReferred = true;
 };
 
+// vertex() for a run of vertices (vertex_batch.hpp) for the models whose vertex() is
+// surface_vertex<kCount>(): copies and products, so the vertex stage takes it for every draw.
+template <int kCount>
+struct SurfaceVertexBatch {
+  static bool batch_vertices(const DrawUniforms&) { return true; }
+  static void vertex_batch(const DrawUniforms& u, const VertexBatchInput& in,
+                           float (*out)[kVertexBatch]) {
+    surface_vertex_batch<kCount>(u, in, out);
+  }
+};
+
 // base color x vertex color x base color map, no lighting.
-struct UnlitShading : BatchForm<BatchModel::unlit> {
+struct UnlitShading : BatchForm<BatchModel::unlit>, SurfaceVertexBatch<kUnlitVaryings> {
   static constexpr int kVaryings = kUnlitVaryings;
   static constexpr int kNormalSlot = -1;
   static constexpr int kBaseColorTexcoord = kTexcoordSlot;
@@ -131,7 +142,9 @@ struct FlatShading {
 // one side (pipeline/shade.cpp decides), which never read it: 9 varyings instead of 12 to set
 // up and interpolate, the same colors.
 template <bool kPositioned>
-struct LambertShadingT : BatchForm<BatchModel::lambert> {
+struct LambertShadingT
+    : BatchForm<BatchModel::lambert>,
+      SurfaceVertexBatch<kPositioned ? kSurfaceVaryings : kUnpositionedSurfaceVaryings> {
   static constexpr int kVaryings = kPositioned ? kSurfaceVaryings : kUnpositionedSurfaceVaryings;
   static constexpr int kNormalSlot = shading::kNormalSlot;
   static constexpr int kBaseColorTexcoord = kTexcoordSlot;

@@ -1,18 +1,20 @@
 // The varying layout shared by the lit shading models, and the per-pixel surface they light:
 // position, (normal-mapped) normal, view direction and albedo with its texture applied.
 //
-//   slot  0-1  texture coordinate   6-8  world position
-//         2-5  color (material x    9-11  world normal
+//   slot  0-1  texture coordinate   6-8  world normal
+//         2-5  color (material x    9-11  world position
 //              vertex color)       12-15  world tangent, w = handedness
 // Ordered by how many models need them, so a model that needs fewer interpolates a prefix:
 // unlit uses slots 0-5 only.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <glm/glm.hpp>
 
 #include "shading/fragment.hpp"
 #include "shading/uniforms.hpp"
+#include "shading/vertex_batch.hpp"
 
 namespace facet::shading {
 
@@ -55,6 +57,37 @@ void surface_vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
     store(out + kPositionSlot, glm::vec3(u.model * glm::vec4(in.position, 1.0f)));
   }
   if constexpr (kCount > kTangentSlot) store(out + kTangentSlot, in.tangent);
+}
+
+// surface_vertex() for a run of vertices (the batch form, vertex_batch.hpp): out[k][n] is slot
+// k of vertex n. The same operations, so the same bits, without a call and a VertexInput per
+// vertex; each slot is a loop of its own that the compiler vectorizes. Layouts without the
+// tangent, which the batch input does not carry.
+template <int kCount>
+void surface_vertex_batch(const DrawUniforms& u, const VertexBatchInput& in,
+                          float (*out)[kVertexBatch]) {
+  static_assert(kCount <= kTangentSlot, "the batch input has no tangents");
+  const int count = in.count;
+  for (int n = 0; n < count; ++n) {
+    const glm::vec2 uv = in.texcoords ? in.texcoords[n] : glm::vec2(0.0f);
+    out[kTexcoordSlot][n] = uv.x;
+    out[kTexcoordSlot + 1][n] = uv.y;
+  }
+  for (int n = 0; n < count; ++n) {
+    const glm::vec4 color = u.use_vertex_colors
+                                ? u.base_color * (in.colors ? in.colors[n] : glm::vec4(1.0f))
+                                : u.base_color;
+    for (int c = 0; c < 4; ++c) out[kColorSlot + c][n] = color[c];
+  }
+  if constexpr (kCount > kNormalSlot) {
+    for (int c = 0; c < 3; ++c) std::copy_n(in.normal[c], count, out[kNormalSlot + c]);
+  }
+  if constexpr (kCount > kPositionSlot) {
+    for (int n = 0; n < count; ++n) {
+      const glm::vec4 position = u.model * glm::vec4(in.positions[n], 1.0f);
+      for (int c = 0; c < 3; ++c) out[kPositionSlot + c][n] = position[c];
+    }
+  }
 }
 
 // The texture coordinate through a map's transform, spelled out ((m00 u + m10 v) + m20) so

@@ -66,8 +66,9 @@ std::vector<Found> expected(const SetupTriangle& t, int x0, int y0, int width, i
 
 std::vector<Found> found(const SetupTriangle& t, int x0, int y0, int width, int height,
                          const std::vector<float>& depth, int stride) {
-  std::int16_t xs[pipeline::kBlockPixels], ys[pipeline::kBlockPixels];
-  float zs[pipeline::kBlockPixels];
+  constexpr int kRoom = pipeline::kBlockPixels + pipeline::kBoxSearchSlack;
+  std::int16_t xs[kRoom], ys[kRoom];
+  float zs[kRoom];
   const int n =
       pipeline::find_box_pixels(t, x0, y0, width, height, depth.data(), stride, true, xs, ys, zs);
   std::vector<Found> out;

@@ -160,11 +160,10 @@ HWY_INLINE int FindBoxRows(DF df, const SetupTriangle& t, const std::int32_t e_f
         pass = hn::And(pass, hn::Lt(z, hn::LoadU(df, depth_row)));  // NaN fails
       }
       const auto n = hn::CountTrue(df, pass);
-      hn::BlendedStore(hn::Compress(z, pass), hn::FirstN(df, n), df, zs + count);
-      const auto first_n = hn::FirstN(d16, n);
-      hn::BlendedStore(hn::DemoteTo(d16, hn::Compress(frame_x, hn::RebindMask(di, pass))), first_n,
-                       d16, xs + count);
-      hn::BlendedStore(hn::Set(d16, static_cast<std::int16_t>(y)), first_n, d16, ys + count);
+      hn::StoreU(hn::Compress(z, pass), df, zs + count);
+      hn::StoreU(hn::DemoteTo(d16, hn::Compress(frame_x, hn::RebindMask(di, pass))), d16,
+                 xs + count);
+      hn::StoreU(hn::Set(d16, static_cast<std::int16_t>(y)), d16, ys + count);
       count += static_cast<int>(n);
     }
   }

@@ -57,7 +57,8 @@ void raster_small_triangle(TileContext& tile, const SetupTriangle& t, int x0, in
 // drawing the triangles one by one would have written it, with the same color.
 struct WaitingPixels {
   // Positions start at zero: interpolate_pixels reads whole vectors of them, the entries after
-  // the last one found too, which then hold zeros or earlier pixels' positions (ignored).
+  // the last one found too, which then hold zeros, earlier pixels' positions or what the
+  // search stored past what it found (all inside the tile; ignored).
   WaitingPixels() {
     std::fill(std::begin(pixels.x), std::end(pixels.x), 0);
     std::fill(std::begin(pixels.y), std::end(pixels.y), 0);
@@ -72,6 +73,10 @@ struct WaitingPixels {
 // Boxes of at most this many pixels join the waiting pixels in one piece: interpolate_pixels
 // writes up to 7 entries past the last one found, and those must stay in the arrays.
 inline constexpr int kMaxWaitingBox = PackedPixels::kCapacity - 8;
+// A search starts after at most kMaxWaitingBox waiting pixels, finds at most a box's pixels
+// and stores up to kBoxSearchSlack entries past them: all inside the positions' arrays.
+static_assert(kMaxWaitingBox + kBlockPixels + kBoxSearchSlack <=
+              static_cast<int>(std::size(PackedPixels{}.x)));
 
 // Triangles whose box in the tile is at most this many pixels, and at most kMaxWaitingBox
 // wide, wait too, a band of rows of at most kMaxWaitingBox pixels at a time. Up to this size,

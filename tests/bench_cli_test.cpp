@@ -54,7 +54,9 @@ TEST(BenchCli, PrintsOneRowPerSceneWithEveryStageAndWritesJson) {
   for (const char* key :
        {"\"size\": \"96x54\"", "\"threads\": 2", "\"tile_size\": 32", "\"frames\": 3",
         "\"name\": \"overdraw\"", "\"median_ms\"", "\"triangles_per_s\"", "\"pixels_per_s\"",
-        "\"geometry_ms\"", "\"binning_ms\"", "\"raster_ms\"", "\"resolve_ms\""}) {
+        "\"geometry_ms\"", "\"binning_ms\"", "\"raster_ms\"", "\"resolve_ms\"",
+        // overdraw is eight quads, all in view and facing the camera
+        "\"triangles_in\": 16", "\"triangles_drawn\": 16", "\"pixels_shaded\""}) {
     EXPECT_NE(text.find(key), std::string::npos) << key << " missing from\n" << text;
   }
 }

@@ -24,7 +24,8 @@ struct SceneResult {
   // Medians of the stages: raster is raster + shade, resolve the tiles' conversion to the
   // framebuffer (FrameStats::ms_resolve).
   double geometry_ms = 0, binning_ms = 0, raster_ms = 0, resolve_ms = 0;
-  std::uint64_t triangles = 0, pixels = 0;
+  // The last frame's work: triangles submitted and drawn, pixels shaded.
+  std::uint64_t triangles = 0, drawn = 0, pixels = 0;
 };
 
 double median(std::vector<double> v) {
@@ -71,6 +72,7 @@ SceneResult run_scene(const std::string& name, const BenchOptions& o, const Imag
   r.raster_ms = median(raster);
   r.resolve_ms = median(resolve);
   r.triangles = renderer.stats().triangles_in;
+  r.drawn = renderer.stats().drawn;
   r.pixels = renderer.stats().pixels_shaded;
   r.triangles_per_s = r.triangles / (r.median_ms / 1000.0);
   r.pixels_per_s = r.pixels / (r.median_ms / 1000.0);
@@ -91,7 +93,9 @@ void write_json(const std::string& path, const BenchOptions& o, const ImageSize&
         << ", \"triangles_per_s\": " << r.triangles_per_s
         << ", \"pixels_per_s\": " << r.pixels_per_s << ", \"geometry_ms\": " << r.geometry_ms
         << ", \"binning_ms\": " << r.binning_ms << ", \"raster_ms\": " << r.raster_ms
-        << ", \"resolve_ms\": " << r.resolve_ms << "}" << (i + 1 < results.size() ? ",\n" : "\n");
+        << ", \"resolve_ms\": " << r.resolve_ms << ", \"triangles_in\": " << r.triangles
+        << ", \"triangles_drawn\": " << r.drawn << ", \"pixels_shaded\": " << r.pixels << "}"
+        << (i + 1 < results.size() ? ",\n" : "\n");
   }
   out << "  ]\n}\n";
 }

@@ -225,5 +225,14 @@ void cover_block(const BlockInput& in, BlockFragments& out) {
 
 const char* simd_target_name() { return HWY_DYNAMIC_DISPATCH(TargetName)(); }
 
+RasterKernels raster_kernels() {
+  // What HWY_DYNAMIC_DISPATCH calls; before any target is chosen, each table's entry is a
+  // function that chooses one and then calls the right kernel, so the pointers are right then
+  // too.
+  const std::size_t index = hwy::GetChosenTarget().GetIndex();
+  return {HWY_DISPATCH_TABLE(CoverBlock)[index], HWY_DISPATCH_TABLE(InterpolatePixels)[index],
+          HWY_DISPATCH_TABLE(FindBoxPixels)[index]};
+}
+
 }  // namespace facet::pipeline
 #endif  // HWY_ONCE

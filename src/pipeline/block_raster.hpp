@@ -87,4 +87,20 @@ int find_box_pixels(const SetupTriangle& t, int x0, int y0, int width, int heigh
 // Name of the SIMD target cover_block runs on now (e.g. "AVX2"), for bench output and tests.
 const char* simd_target_name();
 
+// The three kernels above for the SIMD target chosen now, as plain function pointers. The
+// raster loops call them a triangle or a block at a time, where each call through the
+// functions above also asked libhwy for the chosen target and copied its arguments again
+// (find_box_pixels' and interpolate_pixels' own time was 3 % of million's frame). Each tile
+// fetches them once (TileContext), so a target forced between frames is still honoured.
+struct RasterKernels {
+  void (*cover_block)(const BlockInput& in, BlockFragments& out);
+  void (*interpolate_pixels)(const SetupTriangle& t, const Plane* varying_planes, int varyings,
+                             int first, int count, const std::int16_t* x, const std::int16_t* y,
+                             float* w, float (*v)[kBlockPixels]);
+  int (*find_box_pixels)(const SetupTriangle& t, int x0, int y0, int width, int height,
+                         const float* depth, int depth_stride, bool depth_test, std::int16_t* x,
+                         std::int16_t* y, float* z);
+};
+RasterKernels raster_kernels();
+
 }  // namespace facet::pipeline

@@ -49,6 +49,7 @@ struct TileContext {
   // Pixels of small triangles waiting to be shaded together (WaitingPixels): the tile task's
   // own (draw.cpp's render_tile sets it before the first triangle).
   WaitingPixels* waiting = nullptr;
+  RasterKernels kernels = raster_kernels();  // the SIMD kernels, for the target chosen now
 };
 
 // Shading models may opt out of the depth test (debug counters) and blend additively.

@@ -154,7 +154,7 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
                               in.x_end == kBlockSize && in.y_begin == 0 && in.y_end == kBlockSize;
       const bool likely_whole = all_inside && (!kDepthTest || box_depth.farthest < max_depth);
       in.interpolate = !out.batches() || (likely_whole && out.full_blocks());
-      cover_block(in, block);
+      tile.kernels.cover_block(in, block);
       if (block.mask == 0) continue;
       int written = 0;
       if (block.mask == ~std::uint64_t{0} && out.full_blocks() && in.interpolate) {
@@ -170,8 +170,8 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
           pixels.z[n] = block.z[i];
         }
         pixels.pad(0);  // interpolate_pixels reads whole vectors of positions
-        interpolate_pixels(t, out.fragment.planes, Shading::kVaryings, 0, pixels.count, pixels.x,
-                           pixels.y, pixels.w, pixels.v);
+        tile.kernels.interpolate_pixels(t, out.fragment.planes, Shading::kVaryings, 0, pixels.count,
+                                        pixels.x, pixels.y, pixels.w, pixels.v);
         written = out.shade(pixels);
       } else {
         for (std::uint64_t m = block.mask; m != 0; m &= m - 1) {

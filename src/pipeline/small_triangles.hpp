@@ -27,8 +27,9 @@ int find_small_pixels(const TileContext& tile, const SetupTriangle& t, int x0, i
                       int y1, PackedPixels& out, int first) {
   const float* depth =
       tile.depth + static_cast<std::ptrdiff_t>(y0 - tile.y0) * tile.stride + (x0 - tile.x0);
-  return find_box_pixels(t, x0, y0, x1 - x0 + 1, y1 - y0 + 1, depth, tile.stride,
-                         depth_tested<Shading>(), out.x + first, out.y + first, out.z + first);
+  return tile.kernels.find_box_pixels(t, x0, y0, x1 - x0 + 1, y1 - y0 + 1, depth, tile.stride,
+                                      depth_tested<Shading>(), out.x + first, out.y + first,
+                                      out.z + first);
 }
 
 // The loop over the bounding box [x0, x1] x [y0, y1] (inclusive), for small triangles: finds
@@ -42,8 +43,8 @@ void raster_small_triangle(TileContext& tile, const SetupTriangle& t, int x0, in
   found.count = find_small_pixels<Shading>(tile, t, x0, y0, x1, y1, found, 0);
   if (found.count == 0) return;
   found.pad(0);  // interpolate_pixels reads whole vectors of positions
-  interpolate_pixels(t, out.fragment.planes, Shading::kVaryings, 0, found.count, found.x, found.y,
-                     found.w, found.v);
+  tile.kernels.interpolate_pixels(t, out.fragment.planes, Shading::kVaryings, 0, found.count,
+                                  found.x, found.y, found.w, found.v);
   out.shade(found);
 }
 
@@ -144,8 +145,8 @@ void add_waiting_band(TileContext& tile, const SetupTriangle& t, int x0, int y0,
   }
   pixels.count = first + found;
   const Plane* planes = tile.frame->planes.data() + t.varying_planes;
-  interpolate_pixels(t, planes, Shading::kVaryings, first, found, pixels.x, pixels.y, pixels.w,
-                     pixels.v);
+  tile.kernels.interpolate_pixels(t, planes, Shading::kVaryings, first, found, pixels.x, pixels.y,
+                                  pixels.w, pixels.v);
   if constexpr (base_color_texcoord<Shading>() >= 0) {
     const Plane* uv = planes + base_color_texcoord<Shading>();
     const float slopes[shading::TexelBatch::kSlopes] = {uv[0].dx, uv[1].dx,   uv[0].dy,

@@ -128,5 +128,19 @@ TEST(SmallBoxes, FindExactlyThePixelsTheEdgeFunctionsCover) {
   EXPECT_GT(clamped, 500);
 }
 
+// The raster loops call the kernels through pointers fetched per tile (RasterKernels): each
+// forced target gets its own, so the image tests that force every target run every target's
+// kernels.
+TEST(SmallBoxes, KernelPointersFollowTheChosenTarget) {
+  std::vector<const void*> seen;
+  for (std::int64_t target : simd_targets()) {
+    ForcedTarget forced(target);
+    const auto kernel = reinterpret_cast<const void*>(pipeline::raster_kernels().find_box_pixels);
+    EXPECT_EQ(std::find(seen.begin(), seen.end(), kernel), seen.end()) << hwy::TargetName(target);
+    seen.push_back(kernel);
+  }
+  EXPECT_GT(seen.size(), 1u);
+}
+
 }  // namespace
 }  // namespace facet::test

@@ -226,10 +226,12 @@ void cover_block(const BlockInput& in, BlockFragments& out) {
 const char* simd_target_name() { return HWY_DYNAMIC_DISPATCH(TargetName)(); }
 
 RasterKernels raster_kernels() {
-  // What HWY_DYNAMIC_DISPATCH calls; before any target is chosen, each table's entry is a
-  // function that chooses one and then calls the right kernel, so the pointers are right then
-  // too.
-  const std::size_t index = hwy::GetChosenTarget().GetIndex();
+  // What HWY_DYNAMIC_DISPATCH would call. Until a target is chosen (at the first dispatch, and
+  // again after a test forces one), its tables lead to a function that chooses one on every
+  // call: choose it here, as that function does.
+  hwy::ChosenTarget& chosen = hwy::GetChosenTarget();
+  if (!chosen.IsInitialized()) chosen.Update(hwy::SupportedTargets());
+  const std::size_t index = chosen.GetIndex();
   return {HWY_DISPATCH_TABLE(CoverBlock)[index], HWY_DISPATCH_TABLE(InterpolatePixels)[index],
           HWY_DISPATCH_TABLE(FindBoxPixels)[index]};
 }

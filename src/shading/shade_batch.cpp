@@ -145,8 +145,36 @@ void ShadeNormals(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4])
   }
 }
 
+// The constant-color unlit model with a base color map and no fog: each pixel's color is the
+// material's times its texel, plus the emission, channel by channel. Done on the colors as they
+// lie, RGBA, four pixels to a 16-lane vector, rather than turned into a vector per channel and
+// back, which was most of what this model's shading cost (overdraw's textured quads). Returns
+// false where vectors do not hold whole pixels.
+bool ShadeConstantUnlitAsRgba(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
+  const hn::ScalableTag<float> d;
+  const int lanes = static_cast<int>(hn::Lanes(d));
+  if (lanes % 4 != 0 || lanes > 32) return false;
+  const int pixels = lanes / 4;  // per vector: 1, 2, 4 or 8, within one row of 8 (ColorAt)
+  const Material& m = *u.material;
+  alignas(16)
+      const float factor[4] = {u.base_color.r, u.base_color.g, u.base_color.b, u.base_color.a};
+  alignas(16) const float added[4] = {m.emissive.x, m.emissive.y, m.emissive.z, 0.0f};
+  const auto base = hn::LoadDup128(d, factor), emission = hn::LoadDup128(d, added);
+  const int padded = (in.count + 7) / 8 * 8;  // as the per-channel loop writes them
+  for (int n = 0; n < padded; n += pixels) {
+    const auto texel = hn::LoadU(d, in.base_texel[n]);
+    hn::StoreU(hn::Add(hn::Mul(base, texel), emission), d, *ColorAt(rgba, in.rgba_row_stride, n));
+  }
+  return true;
+}
+
 void ShadeBatch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
   if (model == BatchModel::normals) return ShadeNormals(u, in, rgba);
+  const bool fogged = in.fog != nullptr && in.fog->mode != FogMode::none;
+  if (model == BatchModel::constant_unlit && in.base_texel != nullptr && !fogged &&
+      ShadeConstantUnlitAsRgba(u, in, rgba)) {
+    return;
+  }
   const FloatTag d;
   const int lanes = static_cast<int>(hn::Lanes(d));
   const Material& m = *u.material;
@@ -204,9 +232,7 @@ void ShadeBatch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, f
       for (int c = 0; c < 3; ++c) color[c] = hn::Add(color[c], emissive[c]);
       color[3] = albedo.c[3];
     }
-    if (in.fog != nullptr && in.fog->mode != FogMode::none) {
-      Fogged(*in.fog, hn::Load(d, in.w + j), color);
-    }
+    if (fogged) Fogged(*in.fog, hn::Load(d, in.w + j), color);
     StoreColors(color, ColorAt(rgba, in.rgba_row_stride, j));
   }
 }

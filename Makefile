@@ -24,7 +24,8 @@ FUZZ_SECONDS ?= 60
 JOBS ?= $(shell nproc)
 PREFIX ?= /usr/local
 SCENE_IMAGE ?= islands.png
-# ctest -R regex for the tests that run under ThreadSanitizer: the threaded raster tests.
+# ctest -R regex for the tests that run under ThreadSanitizer: the threaded raster tests (the
+# TSan build compiles only their files: tests/CMakeLists.txt).
 TSAN_TEST_REGEX ?= ^(Determinism|SimdTargets|Occlusion)\.|^DebugView\.ImagesAreTheSameForAnyThreadCount$$
 
 # The sanitizer and fuzz builds optimize less (-O1) and keep only line tables (-g1): that is

@@ -181,6 +181,7 @@ TEST(ShadeBatch, NormalsViewGivesFragmentsBitsOnEveryTarget) {
 // their map.
 TEST(ShadeBatch, Glmark2ShadersGiveFragmentsBitsOnEveryTarget) {
   using namespace bench::glmark2;
+  expect_same_bits<BasicLightShading>();
   expect_same_bits<BasicLightTextureShading>();
   expect_same_bits<BlinnPhongInfShading>();
   expect_same_bits<PhongShading>();

@@ -55,6 +55,11 @@ void ShadeGlmark2Batch(BatchShader shader, const DrawUniforms& u, const ShadeInp
   alignas(64) std::int32_t codes[3][shading::kShadeBatch];
   for (int j = 0; j < in.count; j += lanes) {
     switch (shader) {
+      case Shader::basic_light: {
+        const Vec3V light = Load3(in.v, 0, j);
+        StoreDisplayCodes(light, j, codes);
+        break;
+      }
       case Shader::basic_light_texture: {
         BatchV t[4];
         hn::LoadInterleaved4(d, &in.base_texel[j][0], t[0], t[1], t[2], t[3]);

@@ -8,6 +8,7 @@
 namespace facet::bench::glmark2 {
 
 enum class BatchShader {
+  basic_light,
   basic_light_texture,
   blinn_phong_inf,
   phong,

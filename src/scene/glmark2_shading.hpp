@@ -48,9 +48,10 @@ inline float pow10(float x) {
 
 // light-basic.vert/.frag (build, gouraud): Lambert per vertex, no ambient, no specular.
 // Color = max(N.L, 0) x MaterialDiffuse (the material's base colour); the pixel shows it.
-// (No batch form: its fragment is a clamp and a table lookup per channel, cheaper than packing
-// the pixels for SIMD; build and gouraud were 7-11 % slower with one.)
-struct BasicLightShading : shading::DisplayReferred {
+// Its batch form shades a partly covered block's 64 lanes as they lie (kShadeBlocksUnpacked):
+// a clamp and a rounding per channel cost less than packing the covered pixels.
+struct BasicLightShading : BatchForm<BatchShader::basic_light>, shading::DisplayReferred {
+  static constexpr bool kShadeBlocksUnpacked = true;
   static constexpr int kVaryings = 3;
   static constexpr int kNormalSlot = -1;  // the scenes' meshes carry normals
   static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {

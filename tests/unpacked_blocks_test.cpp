@@ -1,0 +1,56 @@
+// A model whose batch form shades a partly covered block's 64 lanes as they lie
+// (kShadeBlocksUnpacked: glmark2's per-vertex light) draws exactly what the same model draws
+// with its covered pixels packed first, and what it draws one pixel at a time with fragment().
+#include <gtest/gtest.h>
+
+#include "facet/procedural.hpp"
+#include "pipeline/shade.hpp"
+#include "scene/glmark2_shading.hpp"
+#include "support/render_helpers.hpp"
+
+namespace facet::test {
+namespace {
+
+using bench::glmark2::BasicLightShading;
+
+// The same model with its covered pixels packed before they are shaded.
+struct PackedBasicLight : BasicLightShading {
+  static constexpr bool kShadeBlocksUnpacked = false;
+};
+
+// The same model without a batch form: fragment() per pixel.
+struct PerPixelBasicLight : shading::DisplayReferred {
+  static constexpr int kVaryings = BasicLightShading::kVaryings;
+  static constexpr int kNormalSlot = BasicLightShading::kNormalSlot;
+  static void vertex(const shading::VertexInput& in, const shading::DrawUniforms& u, float* out) {
+    BasicLightShading::vertex(in, u, out);
+  }
+  static glm::vec4 fragment(const shading::Fragment& f, const shading::DrawUniforms& u) {
+    return BasicLightShading::fragment(f, u);
+  }
+};
+
+TEST(UnpackedBlocks, DrawWhatPackedAndPerPixelShadingDraw) {
+  // Big triangles (many blocks partly covered along their edges) and small ones.
+  constexpr int kWidth = 320, kHeight = 240;
+  const Mesh coarse = uv_sphere(1.0f, 10, 6);
+  const Mesh fine = uv_sphere(0.8f, 48, 24);
+  Material material;
+  material.base_color = {0.9f, 0.6f, 0.3f, 1.0f};
+  auto render = [&](const pipeline::DrawPipeline& pipe) {
+    return render_side_by_side(coarse, fine, material, pipe, kWidth, kHeight);
+  };
+  const Framebuffer unpacked = render(pipeline::make_pipeline<BasicLightShading>());
+  const Framebuffer packed = render(pipeline::make_pipeline<PackedBasicLight>());
+  const Framebuffer per_pixel = render(pipeline::make_pipeline<PerPixelBasicLight>());
+  int lit = 0;
+  for (std::size_t i = 0; i < unpacked.rgba8().size(); ++i) {
+    ASSERT_EQ(unpacked.rgba8()[i], packed.rgba8()[i]) << "byte " << i;
+    ASSERT_EQ(unpacked.rgba8()[i], per_pixel.rgba8()[i]) << "byte " << i;
+    lit += i % 4 == 0 && unpacked.rgba8()[i] > 0;
+  }
+  EXPECT_GT(lit, kWidth * kHeight / 8);
+}
+
+}  // namespace
+}  // namespace facet::test

@@ -103,7 +103,7 @@ TEST(DrawCulling, BoxesThatMayNeedClippingAreToldApart) {
 
 // Where box_inside_clip_bounds says yes, no point of the box gets a code that asks for
 // clipping from the vertex stage's transform and outcode(): corners and points inside, for
-// random boxes and cameras, many of them close to a plane.
+// random boxes (tiny and huge) and cameras (any field of view, near and far, frame size).
 TEST(DrawCulling, NoPointOfABoxInsideTheClipBoundsNeedsClipping) {
   std::mt19937 rng(20261123);
   std::uniform_real_distribution<float> any(-1.0f, 1.0f), unit(0.0f, 1.0f);

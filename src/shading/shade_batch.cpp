@@ -155,10 +155,10 @@ bool ShadeConstantUnlitAsRgba(const DrawUniforms& u, const ShadeInput& in, float
   const int lanes = static_cast<int>(hn::Lanes(d));
   if (lanes % 4 != 0 || lanes > 32) return false;
   const int pixels = lanes / 4;  // per vector: 1, 2, 4 or 8, within one row of 8 (ColorAt)
-  const Material& m = *u.material;
-  alignas(16)
-      const float factor[4] = {u.base_color.r, u.base_color.g, u.base_color.b, u.base_color.a};
-  alignas(16) const float added[4] = {m.emissive.x, m.emissive.y, m.emissive.z, 0.0f};
+  const glm::vec4& c = u.base_color;
+  const glm::vec3& e = u.material->emissive;
+  alignas(16) const float factor[4] = {c.r, c.g, c.b, c.a};
+  alignas(16) const float added[4] = {e.x, e.y, e.z, 0.0f};
   const auto base = hn::LoadDup128(d, factor), emission = hn::LoadDup128(d, added);
   const int padded = (in.count + 7) / 8 * 8;  // as the per-channel loop writes them
   for (int n = 0; n < padded; n += pixels) {

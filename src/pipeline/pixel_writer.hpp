@@ -90,17 +90,6 @@ constexpr int base_color_texcoord() {
   return -1;
 }
 
-// Models whose batch form is so cheap a lane (a clamp and a rounding) that a partly covered
-// block is shaded in all its 64 lanes as cover_block left them, rather than packed first
-// (kShadeBlocksUnpacked; PixelWriter::shade_block). No base color map: nothing to sample.
-template <class Shading>
-constexpr bool shades_blocks_unpacked() {
-  if constexpr (requires { Shading::kShadeBlocksUnpacked; }) {
-    return Shading::kShadeBlocksUnpacked && base_color_texcoord<Shading>() < 0;
-  }
-  return false;
-}
-
 // Models with fragment_batch are shaded a batch of pixels at a time with SIMD when their
 // batch_shades accepts the draw (shading/shade_batch.hpp).
 template <class Shading>
@@ -291,26 +280,6 @@ class PixelWriter {
       shaded += kBlockPixels;
     }
   }
-
-  // The covered pixels of a block (mask bit y * 8 + x) at frame pixel (block_x, block_y),
-  // shaded in all 64 lanes with SIMD straight from cover_block's arrays, then written one by
-  // one; returns how many were written. Only when blocks_unpacked().
-  int shade_block(const BlockFragments& block, int block_x, int block_y) {
-    int written = 0;
-    if constexpr (shades_blocks_unpacked<Shading>()) {
-      alignas(64) float colors[kBlockPixels][4];
-      Shading::fragment_batch(uniforms_, {kBlockPixels, block.w, block.v, nullptr, batch_fog()},
-                              colors);
-      for (std::uint64_t m = block.mask; m != 0; m &= m - 1) {
-        const int i = std::countr_zero(m);
-        const float* c = colors[i];
-        written += store<kBatchFogs>(block_x + i % kBlockSize, block_y + i / kBlockSize, block.z[i],
-                                     block.w[i], glm::vec4(c[0], c[1], c[2], c[3]));
-      }
-    }
-    return written;
-  }
-  bool blocks_unpacked() const { return shades_blocks_unpacked<Shading>() && batch_; }
 
   // Whether shade() does anything in batches; if not, raster loops may skip packing and call
   // write() per pixel.

@@ -153,16 +153,13 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
       const bool all_inside = edges == EdgeCover::inside && in.x_begin == 0 &&
                               in.x_end == kBlockSize && in.y_begin == 0 && in.y_end == kBlockSize;
       const bool likely_whole = all_inside && (!kDepthTest || box_depth.farthest < max_depth);
-      in.interpolate =
-          !out.batches() || out.blocks_unpacked() || (likely_whole && out.full_blocks());
+      in.interpolate = !out.batches() || (likely_whole && out.full_blocks());
       tile.kernels.cover_block(in, block);
       if (block.mask == 0) continue;
       int written = 0;
       if (block.mask == ~std::uint64_t{0} && out.full_blocks() && in.interpolate) {
         out.shade_full_block(block, block_x, block_y);
         written = kBlockPixels;
-      } else if (out.blocks_unpacked()) {
-        written = out.shade_block(block, block_x, block_y);
       } else if (out.batches()) {
         pixels.count = 0;
         for (std::uint64_t m = block.mask; m != 0; m &= m - 1) {

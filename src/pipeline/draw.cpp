@@ -25,6 +25,7 @@
 #include "pipeline/output.hpp"
 #include "pipeline/parallel.hpp"
 #include "pipeline/shade.hpp"
+#include "pipeline/vertex.hpp"
 #include "shading/lighting.hpp"
 
 namespace facet {
@@ -287,8 +288,7 @@ void Renderer::Impl::run(Framebuffer& target) {
     draw.batch_shaded = draw.pipeline.batch_shades && draw.pipeline.batch_shades(draw.uniforms);
     draw.batch_vertices =
         draw.pipeline.batches_vertices && draw.pipeline.batches_vertices(draw.uniforms);
-    draw.clip_free = draw.bounds && pipeline::box_inside_clip_bounds(
-                                        *draw.bounds, draw.uniforms.model_view_projection, guard);
+    draw.clip_vertices = pipeline::keeps_clip_vertices(draw, guard);
   }
   order_draws();
   background.clear_color = settings.clear_color;

@@ -108,9 +108,9 @@ struct DrawRecord {
   DrawPipeline pipeline;
   bool batch_shaded = false;    // pipeline.batch_shades(uniforms), once per frame (draw.cpp)
   bool batch_vertices = false;  // pipeline.batches_vertices(uniforms), likewise
-  // Its bounds are inside the guard band and between near and far (box_inside_clip_bounds),
-  // so no triangle of it needs clipping; also decided once per frame.
-  bool clip_free = false;
+  // Its vertex stage writes ClipVertex (vertex.hpp's keeps_clip_vertices); also decided once
+  // per frame.
+  bool clip_vertices = true;
 };
 
 // The per-triangle hooks primitive assembly runs before setup: a face normal for shading

@@ -52,21 +52,34 @@ std::optional<MeshBox> finite_bounds(const Mesh& mesh) {
   return box;
 }
 
+namespace {
+
+// Corner k of the box (bit 0: x high, bit 1: y high, bit 2: z high), as a point.
+glm::vec4 corner_of(const MeshBox& box, int k) {
+  return {k & 1 ? box.high.x : box.low.x, k & 2 ? box.high.y : box.low.y,
+          k & 4 ? box.high.z : box.low.z, 1.0f};
+}
+
+// |M| element by element: |M| |p| bounds the magnitudes that M p sums, for the rounding margins.
+glm::mat4 magnitudes(const glm::mat4& m) {
+  glm::mat4 out;
+  for (int column = 0; column < 4; ++column) out[column] = glm::abs(m[column]);
+  return out;
+}
+
+}  // namespace
+
 bool box_outside_frustum(const MeshBox& box, const glm::mat4& model_view_projection) {
-  const glm::vec3 &low = box.low, &high = box.high;
   // Bit i of `outside` stays set while every corner so far is outside plane i:
   // x < -w, x > w, y < -w, y > w, z < -w (near), z > w (far). The margin covers the rounding
   // by which the vertex stage's transform of a vertex may differ from this one's of a corner:
   // a float dot product of four terms errs by at most 4 ulp of the sum of their magnitudes,
   // |M| |p|, and 1e-5 of that is far above it.
   constexpr float kMargin = 1e-5f;
-  glm::mat4 magnitude;
-  for (int column = 0; column < 4; ++column)
-    magnitude[column] = glm::abs(model_view_projection[column]);
+  const glm::mat4 magnitude = magnitudes(model_view_projection);
   unsigned outside = 0x3f;
   for (int corner = 0; corner < 8 && outside != 0; ++corner) {
-    const glm::vec4 p(corner & 1 ? high.x : low.x, corner & 2 ? high.y : low.y,
-                      corner & 4 ? high.z : low.z, 1.0f);
+    const glm::vec4 p = corner_of(box, corner);
     const glm::vec4 c = model_view_projection * p;
     const glm::vec4 size = magnitude * glm::abs(p);
     const float x_margin = kMargin * (size.x + size.w), y_margin = kMargin * (size.y + size.w);
@@ -91,17 +104,12 @@ bool box_inside_clip_bounds(const MeshBox& box, const glm::mat4& model_view_proj
   // below 1e-5 of it (so a vertex of the box never gets a code that asks for clipping).
   constexpr float kMargin = 1e-5f;
   const glm::vec4 largest(glm::max(glm::abs(box.low), glm::abs(box.high)), 1.0f);
-  glm::mat4 magnitude;
-  for (int column = 0; column < 4; ++column)
-    magnitude[column] = glm::abs(model_view_projection[column]);
-  const glm::vec4 size = magnitude * largest;
+  const glm::vec4 size = magnitudes(model_view_projection) * largest;
   const float x_margin = kMargin * (size.x + guard.gx * size.w);
   const float y_margin = kMargin * (size.y + guard.gy * size.w);
   const float z_margin = kMargin * (size.z + size.w);
   for (int corner = 0; corner < 8; ++corner) {
-    const glm::vec4 p(corner & 1 ? box.high.x : box.low.x, corner & 2 ? box.high.y : box.low.y,
-                      corner & 4 ? box.high.z : box.low.z, 1.0f);
-    const glm::vec4 c = model_view_projection * p;
+    const glm::vec4 c = model_view_projection * corner_of(box, corner);
     const bool inside = c.z + c.w > z_margin && c.w - c.z > z_margin &&
                         c.x + guard.gx * c.w > x_margin && guard.gx * c.w - c.x > x_margin &&
                         c.y + guard.gy * c.w > y_margin && guard.gy * c.w - c.y > y_margin;

@@ -69,8 +69,8 @@ std::vector<Found> found(const SetupTriangle& t, int x0, int y0, int width, int 
   constexpr int kRoom = pipeline::kBlockPixels + pipeline::kBoxSearchSlack;
   std::int16_t xs[kRoom], ys[kRoom];
   float zs[kRoom];
-  const int n =
-      pipeline::find_box_pixels(t, x0, y0, width, height, depth.data(), stride, true, xs, ys, zs);
+  const int n = pipeline::raster_kernels().find_box_pixels(t, x0, y0, width, height, depth.data(),
+                                                           stride, true, xs, ys, zs);
   std::vector<Found> out;
   for (int k = 0; k < n; ++k) out.push_back({xs[k], ys[k], zs[k]});
   std::sort(out.begin(), out.end());  // rows of boxes over eight wide come a vector at a time

@@ -206,23 +206,6 @@ HWY_EXPORT(TargetName);
 HWY_EXPORT(InterpolatePixels);
 HWY_EXPORT(FindBoxPixels);
 
-int find_box_pixels(const SetupTriangle& t, int x0, int y0, int width, int height,
-                    const float* depth, int depth_stride, bool depth_test, std::int16_t* x,
-                    std::int16_t* y, float* z) {
-  return HWY_DYNAMIC_DISPATCH(FindBoxPixels)(t, x0, y0, width, height, depth, depth_stride,
-                                             depth_test, x, y, z);
-}
-
-void interpolate_pixels(const SetupTriangle& t, const Plane* varying_planes, int varyings,
-                        int first, int count, const std::int16_t* x, const std::int16_t* y,
-                        float* w, float (*v)[kBlockPixels]) {
-  HWY_DYNAMIC_DISPATCH(InterpolatePixels)(t, varying_planes, varyings, first, count, x, y, w, v);
-}
-
-void cover_block(const BlockInput& in, BlockFragments& out) {
-  HWY_DYNAMIC_DISPATCH(CoverBlock)(in, out);
-}
-
 const char* simd_target_name() { return HWY_DYNAMIC_DISPATCH(TargetName)(); }
 
 RasterKernels raster_kernels() {

@@ -52,55 +52,48 @@ struct BlockFragments {
   alignas(64) float v[kMaxVaryings][kBlockPixels];
 };
 
-// Fills out for one block. The arithmetic is the scalar path's, lane by lane (same operations
-// in the same order, no fused multiply-add), so every SIMD target gives identical values.
-void cover_block(const BlockInput& in, BlockFragments& out);
-
-// The small-triangle path's part of cover_block (raster.hpp): clip w and the perspective-
-// correct varyings of `count` pixels of triangle t at frame pixels (x[n], y[n]), n = first ...
-// first + count - 1, into w[n] and v[k][n], the same values cover_block gives. Computes whole
-// vectors: entries up to first + the next multiple of 8 past count are written too (from x, y
-// there, which must be readable), so that must stay within kBlockPixels.
-void interpolate_pixels(const SetupTriangle& t, const Plane* varying_planes, int varyings,
-                        int first, int count, const std::int16_t* x, const std::int16_t* y,
-                        float* w, float (*v)[kBlockPixels]);
-
-// Floats the tile's depth buffer holds past its last pixel: find_box_pixels reads whole
+// Floats the tile's depth buffer holds past its last pixel: the pixel search reads whole
 // vectors of a box row, which at the tile's last row may reach past its end.
 inline constexpr int kDepthSlack = 16;
 
-// The small-triangle path's pixel search (small_triangles.hpp): the pixels of the box of
-// `width` x `height` pixels at frame pixel (x0, y0) whose centres triangle t covers and, if
-// depth_test, whose depth is less than the tile's there (`depth` points at the box's first
-// pixel, rows `depth_stride` floats apart, kDepthSlack readable floats after the last).
-// Their positions and depths go to x[n], y[n], z[n] from n = 0; returns how many. Each row is
-// stored as whole vectors, so up to kBoxSearchSlack entries past the last found are written
-// too, with values of no use (the box's other pixels, or zeros): full stores, unlike masked
-// ones, forward to the interpolation's loads right after (InterpolatePixels 14 % faster on
-// million). The box holds at most kBlockPixels pixels. Same coverage as the 64-bit edge
-// functions, same depths as evaluate_row and evaluate_in_row, on every SIMD target.
+// Entries the pixel search may write past the last pixel it finds (RasterKernels).
 inline constexpr int kBoxSearchSlack = 16;
-int find_box_pixels(const SetupTriangle& t, int x0, int y0, int width, int height,
-                    const float* depth, int depth_stride, bool depth_test, std::int16_t* x,
-                    std::int16_t* y, float* z);
 
-// Name of the SIMD target cover_block runs on now (e.g. "AVX2"), for bench output and tests.
-const char* simd_target_name();
-
-// The three kernels above for the SIMD target chosen now, as plain function pointers. The
-// raster loops call them a triangle or a block at a time, where each call through the
-// functions above also asked libhwy for the chosen target and copied its arguments again
-// (find_box_pixels' and interpolate_pixels' own time was 3 % of million's frame). Each tile
-// fetches them once (TileContext), so a target forced between frames is still honoured.
+// The raster's SIMD kernels (block_raster.cpp, compiled for every target Highway supports) for
+// the target chosen now, as plain function pointers: the raster loops call them a triangle or
+// a block at a time, and dispatching each call (asking libhwy for the chosen target, then
+// copying the arguments again in a wrapper) was 3 % of million's frame. Each tile fetches them
+// once (TileContext), so a target forced between frames (tests) is still honoured. Every
+// kernel repeats the scalar path's arithmetic lane by lane (same operations in the same order,
+// no fused multiply-add), so every target gives identical values.
 struct RasterKernels {
+  // Fills out for one block.
   void (*cover_block)(const BlockInput& in, BlockFragments& out);
+  // The small-triangle path's part of cover_block (raster.hpp): clip w and the perspective-
+  // correct varyings of `count` pixels of triangle t at frame pixels (x[n], y[n]), n = first
+  // ... first + count - 1, into w[n] and v[k][n], the same values cover_block gives. Computes
+  // whole vectors: entries up to first + the next multiple of 8 past count are written too
+  // (from x, y there, which must be readable), so that must stay within kBlockPixels.
   void (*interpolate_pixels)(const SetupTriangle& t, const Plane* varying_planes, int varyings,
                              int first, int count, const std::int16_t* x, const std::int16_t* y,
                              float* w, float (*v)[kBlockPixels]);
+  // The small-triangle path's pixel search (small_triangles.hpp): the pixels of the box of
+  // `width` x `height` pixels at frame pixel (x0, y0) whose centres triangle t covers and, if
+  // depth_test, whose depth is less than the tile's there (`depth` points at the box's first
+  // pixel, rows `depth_stride` floats apart, kDepthSlack readable floats after the last).
+  // Their positions and depths go to x[n], y[n], z[n] from n = 0; returns how many. Each row
+  // is stored as whole vectors, so up to kBoxSearchSlack entries past the last found are
+  // written too, with values of no use (the box's other pixels, or zeros): full stores, unlike
+  // masked ones, forward to the interpolation's loads right after (InterpolatePixels 14 %
+  // faster on million). The box holds at most kBlockPixels pixels. Same coverage as the
+  // 64-bit edge functions, same depths as evaluate_row and evaluate_in_row.
   int (*find_box_pixels)(const SetupTriangle& t, int x0, int y0, int width, int height,
                          const float* depth, int depth_stride, bool depth_test, std::int16_t* x,
                          std::int16_t* y, float* z);
 };
 RasterKernels raster_kernels();
+
+// Name of the SIMD target the kernels run on now (e.g. "AVX2"), for bench output and tests.
+const char* simd_target_name();
 
 }  // namespace facet::pipeline

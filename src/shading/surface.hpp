@@ -68,16 +68,25 @@ void surface_vertex_batch(const DrawUniforms& u, const VertexBatchInput& in,
                           float (*out)[kVertexBatch]) {
   static_assert(kCount <= kTangentSlot, "the batch input has no tangents");
   const int count = in.count;
-  for (int n = 0; n < count; ++n) {
-    const glm::vec2 uv = in.texcoords ? in.texcoords[n] : glm::vec2(0.0f);
-    out[kTexcoordSlot][n] = uv.x;
-    out[kTexcoordSlot + 1][n] = uv.y;
+  // The per-draw choices are made once, outside the loops over the vertices.
+  for (int c = 0; c < 2; ++c) {
+    float* slot = out[kTexcoordSlot + c];
+    if (in.texcoords == nullptr) {
+      std::fill_n(slot, count, 0.0f);
+    } else {
+      for (int n = 0; n < count; ++n) slot[n] = in.texcoords[n][c];
+    }
   }
-  for (int n = 0; n < count; ++n) {
-    const glm::vec4 color = u.use_vertex_colors
-                                ? u.base_color * (in.colors ? in.colors[n] : glm::vec4(1.0f))
-                                : u.base_color;
-    for (int c = 0; c < 4; ++c) out[kColorSlot + c][n] = color[c];
+  // material_color(): white vertex colors where the mesh has none, multiplied all the same.
+  const bool vary = u.use_vertex_colors && in.colors != nullptr;
+  const glm::vec4 same = u.use_vertex_colors ? u.base_color * glm::vec4(1.0f) : u.base_color;
+  for (int c = 0; c < 4; ++c) {
+    float* slot = out[kColorSlot + c];
+    if (vary) {
+      for (int n = 0; n < count; ++n) slot[n] = u.base_color[c] * in.colors[n][c];
+    } else {
+      std::fill_n(slot, count, same[c]);
+    }
   }
   if constexpr (kCount > kNormalSlot) {
     for (int c = 0; c < 3; ++c) std::copy_n(in.normal[c], count, out[kNormalSlot + c]);

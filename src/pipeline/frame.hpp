@@ -51,6 +51,10 @@ struct ProjectedVertex {
   ScreenVertex screen;  // meaningful only when codes say the vertex needs no clipping
 };
 
+// Floats DrawVertices::over_w holds past its last vertex: batched setup (setup_batch.cpp) reads
+// a vertex's varyings in whole vectors.
+inline constexpr int kOverWSlack = 16;
+
 // A draw's transformed vertices, reused across frames.
 struct DrawVertices {
   // What the clipper, the per-triangle hooks and the edges read; not written (clip_written

@@ -143,7 +143,8 @@ void run_geometry(Frame& frame, int workers) {
       frame.geometry_tasks.push_back({k, end, true});
       small_vertices = std::max(small_vertices, vertex_count);
       small_over_w = std::max(
-          small_over_w, vertex_count * static_cast<std::size_t>(frame.draws[d].pipeline.varyings));
+          small_over_w,
+          vertex_count * static_cast<std::size_t>(frame.draws[d].pipeline.varyings) + kOverWSlack);
     } else {
       transform_vertices(frame.draws[d], frame.width, frame.height, workers, frame.vertices[d]);
       for (; k < end; ++k) frame.geometry_tasks.push_back({k, k + 1, false});

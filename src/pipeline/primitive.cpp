@@ -7,6 +7,7 @@
 
 #include "pipeline/clip.hpp"
 #include "pipeline/setup.hpp"
+#include "pipeline/setup_batch.hpp"
 
 namespace facet::pipeline {
 namespace {
@@ -28,6 +29,10 @@ struct Assembler {
   const DrawVertices& vertices;
   ClipBounds guard;
   bool hooks = has_triangle_hooks(draw);
+  // Triangles that need no clipping wait here to be set up together (setup_batch.hpp); any
+  // other primitive first sets up those waiting, so the sink keeps submission order.
+  SetupBatchKernel setup_kernel = nullptr;  // null: each is set up as it comes
+  SetupBatch* batch = nullptr;
 
   bool cull(bool front_facing) const {
     switch (draw.material.cull) {
@@ -111,6 +116,10 @@ struct Assembler {
       planes = a.codes >> kGuardCodeShift & kFrustumCodes;
     }
     if (planes == 0 && !hooks) {  // the common case: set up from the projected vertices
+      if (setup_kernel != nullptr) {
+        wait_for_setup(a);
+        return;
+      }
       const ScreenVertex s[3] = {vertices.projected[i0].screen, vertices.projected[i1].screen,
                                  vertices.projected[i2].screen};
       const int n = pipe.varyings;
@@ -121,6 +130,7 @@ struct Assembler {
       return;
     }
 
+    set_up_waiting();
     // The per-triangle hooks and the clipper rewrite vertices: work on copies. (A draw whose
     // vertex stage skipped the clip vertices has neither: its bounds said no clipping.)
     assert(vertices.clip_written);
@@ -158,6 +168,26 @@ struct Assembler {
     }
   }
 
+  // Puts a triangle that needs no clipping in the batch, setting the batch up once full.
+  void wait_for_setup(const Accepted& a) {
+    SetupBatch& b = *batch;
+    const int l = b.count;
+    const std::uint32_t index[3] = {a.i0, a.i1, a.i2};
+    for (int i = 0; i < 3; ++i) {
+      const ScreenVertex& s = vertices.projected[index[i]].screen;
+      b.x[i][l] = s.x, b.y[i][l] = s.y, b.z[i][l] = s.z, b.inv_w[i][l] = s.inv_w;
+      b.over_w[i][l] = vertices.over_w.data() + index[i] * draw.pipeline.varyings;
+    }
+    b.front_facing[l] = a.front_facing;
+    if (++b.count == kSetupBatch) set_up_waiting();
+  }
+
+  void set_up_waiting() {
+    if (batch == nullptr || batch->count == 0) return;
+    counts.culled += setup_kernel(*batch, {out, width, height, draw_index, draw.pipeline.varyings});
+    batch->count = 0;
+  }
+
   void line(std::uint32_t i0, std::uint32_t i1) {
     const unsigned code0 = vertices.projected[i0].codes, code1 = vertices.projected[i1].codes;
     if (((code0 | code1) & kNotFinite) || (code0 & code1 & kFrustumCodes)) {
@@ -185,6 +215,12 @@ void assemble_primitives(const Frame& frame, std::uint32_t draw_index, const Dra
     for (std::size_t p = begin; p < end; ++p) assembler.line(index(2 * p), index(2 * p + 1));
     return;
   }
+  // Edges come before their triangle's fill, so wireframe draws set up one at a time.
+  SetupBatch batch;
+  if (!assembler.hooks && !draw.pipeline.draws_edges) {
+    assembler.setup_kernel = setup_batch_kernel();
+    assembler.batch = &batch;
+  }
   Assembler::Accepted accepted[kCullBatch];
   for (std::size_t first = begin; first < end; first += kCullBatch) {
     const std::size_t last = std::min(end, first + kCullBatch);
@@ -204,6 +240,7 @@ void assemble_primitives(const Frame& frame, std::uint32_t draw_index, const Dra
     }
     for (std::size_t k = 0; k < count; ++k) assembler.assemble(accepted[k]);
   }
+  assembler.set_up_waiting();
 }
 
 }  // namespace facet::pipeline

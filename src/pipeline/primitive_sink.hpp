@@ -22,6 +22,7 @@ struct TriangleSlot {
   SetupTriangle* triangle;
   Plane* planes;              // `varyings` planes to fill
   std::uint32_t plane_index;  // what SetupTriangle::varying_planes must say
+  std::uint32_t entry_index;  // what its sequence entry says
 };
 
 class PrimitiveSink {
@@ -39,21 +40,39 @@ class PrimitiveSink {
   // (binning's tile tests read them). Always inline: setup calls it for every triangle, and
   // GCC kept it out of line.
   [[gnu::always_inline]] TriangleSlot add_triangle(const SetupTriangle& edges) {
+    const TriangleSlot slot = reserve_triangle();
+    append(slot.entry_index, &edges, edges.min_x, edges.min_y, edges.max_x, edges.max_y);
+    return slot;
+  }
+
+  // add_triangle in two steps, for a triangle set up in place: its slot, then (once its edge
+  // functions and bounding box are written there) its sequence entry. Copying a triangle set up
+  // field by field elsewhere reads back wider than it was written, which stalls store
+  // forwarding. A slot's planes stay valid until the next slot is reserved.
+  [[gnu::always_inline]] TriangleSlot reserve_triangle() {
     GeometryChunk::Region& r = chunk_.triangles;
     if (r.used < r.capacity) {
       const std::uint32_t index = r.begin + r.used;
       const std::uint32_t plane_index = chunk_.planes_begin + r.used * varyings_;
       ++r.used;
-      append(index, &edges, edges.min_x, edges.min_y, edges.max_x, edges.max_y);
-      return {triangles_ + index, planes_ + plane_index, plane_index};
+      return {triangles_ + index, planes_ + plane_index, plane_index, index};
     }
     PrimitiveBuffer& o = chunk_.overflow;
     const auto index = static_cast<std::uint32_t>(o.triangles.size());
     const auto plane_index = static_cast<std::uint32_t>(o.planes.size());
     o.triangles.emplace_back();
     o.planes.resize(plane_index + varyings_);
-    append(index | kOverflowBit, &edges, edges.min_x, edges.min_y, edges.max_x, edges.max_y);
-    return {&o.triangles.back(), o.planes.data() + plane_index, plane_index};
+    return {&o.triangles.back(), o.planes.data() + plane_index, plane_index, index | kOverflowBit};
+  }
+  // How many planes may be written from slot.planes on: its own, and scratch in the later
+  // slots of its region (which this sink fills after it, in order).
+  [[gnu::always_inline]] std::uint32_t plane_room(const TriangleSlot& slot) const {
+    if (slot.entry_index & kOverflowBit) return varyings_;
+    return chunk_.planes_begin + chunk_.triangles.capacity * varyings_ - slot.plane_index;
+  }
+  [[gnu::always_inline]] void add_reserved_triangle(const TriangleSlot& slot) {
+    const SetupTriangle& t = *slot.triangle;
+    append(slot.entry_index, &t, t.min_x, t.min_y, t.max_x, t.max_y);
   }
 
   // A place for the next line, whose pixel bounding box is given.

@@ -100,7 +100,7 @@ void transform_vertices(const DrawRecord& draw, int width, int height, int worke
   if (out.clip_written) out.clip.resize(count);
   out.projected.resize(count);
   // Only setup's fast path reads over_w, and it never runs for draws with hooks.
-  out.over_w.resize(has_triangle_hooks(draw) ? 0 : count * draw.pipeline.varyings);
+  out.over_w.resize(has_triangle_hooks(draw) ? 0 : count * draw.pipeline.varyings + kOverWSlack);
   const VertexPassInput to{mesh.positions.data(),
                            mesh.normals.empty() ? nullptr : mesh.normals.data(),
                            draw.uniforms.model_view_projection,

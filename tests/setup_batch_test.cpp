@@ -1,0 +1,178 @@
+// Batched setup (setup_batch.hpp) writes, on every SIMD target, the same triangles, planes and
+// sequence entries as setting up one triangle at a time (setup_projected_triangle), bit for bit:
+// for small, large, degenerate and flipped triangles, vertices across the guard band, edges on
+// the fill rule's cases, and plane values that overflow or are not numbers; and nothing past
+// the chunk's region of planes changes.
+#include "pipeline/setup_batch.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "pipeline/primitive_sink.hpp"
+#include "pipeline/setup.hpp"
+#include "support/forced_target.hpp"
+
+namespace facet::test {
+namespace {
+
+using pipeline::ScreenVertex;
+
+constexpr int kWidth = 1280, kHeight = 720;
+
+constexpr std::size_t kNextRegion = 32;
+constexpr pipeline::Plane kCanary{1.0f, 2.0f, 3.0f};
+
+struct Triangle {
+  ScreenVertex s[3];
+  std::uint32_t vertex[3];  // into the varyings
+  bool front_facing;
+};
+
+// What setup wrote into a frame of one chunk.
+struct Written {
+  pipeline::Frame frame;
+  pipeline::GeometryChunk chunk;
+  std::uint32_t dropped = 0;
+};
+
+// A frame whose chunk has room for `triangles`, and planes past it.
+void make_frame(std::size_t triangles, int varyings, Written& w) {
+  w.frame.width = kWidth, w.frame.height = kHeight, w.frame.tile_size = 64;
+  w.frame.tiles_x = (kWidth + 63) / 64, w.frame.tiles_y = (kHeight + 63) / 64;
+  w.frame.triangles.assign(triangles, {});
+  // Past the region: planes another chunk's setup would be writing, which must stay as they are.
+  w.frame.planes.assign(triangles * static_cast<std::size_t>(varyings) + kNextRegion, kCanary);
+  w.chunk.triangles = {0, static_cast<std::uint32_t>(triangles), 0};
+}
+
+void one_at_a_time(const std::vector<Triangle>& triangles, const std::vector<float>& over_w,
+                   int varyings, Written& w) {
+  make_frame(triangles.size(), varyings, w);
+  pipeline::PrimitiveSink sink(w.frame, w.chunk, varyings);
+  for (const Triangle& t : triangles) {
+    const float* values[3];
+    for (int i = 0; i < 3; ++i) values[i] = over_w.data() + t.vertex[i] * varyings;
+    if (!pipeline::setup_projected_triangle(sink, kWidth, kHeight, 7, t.s, values, varyings,
+                                            t.front_facing)) {
+      ++w.dropped;
+    }
+  }
+}
+
+// Set up in batches into a chunk with room for `kept` triangles, as many as setup keeps: the
+// last triangles' planes end where the region does.
+void batched(const std::vector<Triangle>& triangles, const std::vector<float>& over_w, int varyings,
+             std::size_t kept, Written& w) {
+  make_frame(kept, varyings, w);
+  pipeline::PrimitiveSink sink(w.frame, w.chunk, varyings);
+  const pipeline::SetupBatchKernel kernel = pipeline::setup_batch_kernel();
+  pipeline::SetupBatch batch;
+  auto flush = [&] {
+    w.dropped += kernel(batch, {sink, kWidth, kHeight, 7, varyings});
+    batch.count = 0;
+  };
+  for (const Triangle& t : triangles) {
+    const int l = batch.count++;
+    for (int i = 0; i < 3; ++i) {
+      batch.x[i][l] = t.s[i].x, batch.y[i][l] = t.s[i].y;
+      batch.z[i][l] = t.s[i].z, batch.inv_w[i][l] = t.s[i].inv_w;
+      batch.over_w[i][l] = over_w.data() + t.vertex[i] * varyings;
+    }
+    batch.front_facing[l] = t.front_facing;
+    if (batch.count == pipeline::kSetupBatch) flush();
+  }
+  if (batch.count > 0) flush();
+}
+
+bool same_bytes(const void* a, const void* b, std::size_t n) { return std::memcmp(a, b, n) == 0; }
+
+// Random triangles of every kind setup meets.
+std::vector<Triangle> awkward_triangles(std::mt19937& rng, std::uint32_t vertices) {
+  constexpr int kScale = pipeline::kSubpixelScale;
+  constexpr int kGuard = 8192 * kScale;
+  std::uniform_int_distribution<int> across_x(-kGuard, kWidth * kScale + kGuard);
+  std::uniform_int_distribution<int> across_y(-kGuard, kHeight * kScale + kGuard);
+  std::uniform_int_distribution<int> on_screen_x(-4 * kScale, (kWidth + 4) * kScale);
+  std::uniform_int_distribution<int> on_screen_y(-4 * kScale, (kHeight + 4) * kScale);
+  std::uniform_int_distribution<int> nearby(-6 * kScale, 6 * kScale);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  const float specials[] = {0.0f,
+                            -0.0f,
+                            1e-30f,
+                            3e38f,
+                            -3e38f,
+                            std::numeric_limits<float>::infinity(),
+                            std::numeric_limits<float>::quiet_NaN()};
+  std::vector<Triangle> out(4000);
+  for (Triangle& t : out) {
+    const int kind = static_cast<int>(rng() % 6);
+    for (int i = 0; i < 3; ++i) {
+      if (kind == 0) {  // anywhere in the guard band
+        t.s[i].x = across_x(rng), t.s[i].y = across_y(rng);
+      } else if (kind == 5) {  // on the pixel grid: edges along rows and columns, on centres
+        t.s[i].x = (on_screen_x(rng) / kScale) * kScale + (rng() % 2) * kScale / 2;
+        t.s[i].y = (on_screen_y(rng) / kScale) * kScale + (rng() % 2) * kScale / 2;
+      } else if (i == 0) {
+        t.s[i].x = on_screen_x(rng), t.s[i].y = on_screen_y(rng);
+      } else {  // a few pixels from vertex 0; sometimes on it (degenerate)
+        t.s[i].x = t.s[0].x + (kind == 1 && rng() % 4 == 0 ? 0 : nearby(rng));
+        t.s[i].y = t.s[0].y + (kind == 1 && rng() % 4 == 0 ? 0 : nearby(rng));
+      }
+      t.s[i].z = rng() % 32 == 0 ? specials[rng() % std::size(specials)] : unit(rng);
+      t.s[i].inv_w = rng() % 32 == 0 ? specials[rng() % std::size(specials)] : unit(rng) * 4.0f;
+      t.vertex[i] = static_cast<std::uint32_t>(rng() % vertices);
+    }
+    if (kind == 4) t.s[2] = t.s[1];  // a repeated vertex
+    // Mostly the facing the winding says; sometimes the other (as after snapping a sliver).
+    const bool clockwise = pipeline::signed_area(t.s[0], t.s[1], t.s[2]) > 0;
+    t.front_facing = (rng() % 8 == 0) == clockwise;
+  }
+  return out;
+}
+
+TEST(SetupBatch, WritesWhatSettingUpOneAtATimeWritesOnEveryTarget) {
+  std::mt19937 rng(11);
+  constexpr std::uint32_t kVertices = 500;
+  const std::vector<Triangle> triangles = awkward_triangles(rng, kVertices);
+  for (int varyings : {0, 1, 3, 6, 8, 9, 16}) {
+    std::vector<float> over_w(kVertices * varyings + pipeline::kOverWSlack);
+    std::uniform_real_distribution<float> value(-2.0f, 2.0f);
+    for (float& v : over_w) {
+      v = rng() % 64 == 0 ? (rng() % 2 ? 3e38f : std::numeric_limits<float>::quiet_NaN())
+                          : value(rng);
+    }
+    Written expected;
+    one_at_a_time(triangles, over_w, varyings, expected);
+    ASSERT_GT(expected.dropped, 100u);  // the awkward cases are there
+    ASSERT_GT(expected.chunk.triangles.used, 2000u);
+    for (std::int64_t target : simd_targets()) {
+      ForcedTarget forced(target);
+      SCOPED_TRACE(hwy::TargetName(target) + std::string(", varyings ") + std::to_string(varyings));
+      Written got;
+      batched(triangles, over_w, varyings, expected.chunk.triangles.used, got);
+      EXPECT_EQ(got.dropped, expected.dropped);
+      ASSERT_EQ(got.chunk.triangles.used, expected.chunk.triangles.used);
+      const std::size_t n = expected.chunk.triangles.used;
+      for (std::size_t i = 0; i < n; ++i) {
+        ASSERT_TRUE(same_bytes(&got.frame.triangles[i], &expected.frame.triangles[i],
+                               sizeof(pipeline::SetupTriangle)))
+            << "triangle " << i;
+      }
+      EXPECT_TRUE(same_bytes(got.frame.planes.data(), expected.frame.planes.data(),
+                             n * varyings * sizeof(pipeline::Plane)));
+      for (std::size_t i = got.frame.planes.size() - kNextRegion; i < got.frame.planes.size(); ++i)
+        EXPECT_TRUE(same_bytes(&got.frame.planes[i], &kCanary, sizeof kCanary)) << "plane " << i;
+      ASSERT_EQ(got.chunk.sequence.size(), expected.chunk.sequence.size());
+      EXPECT_TRUE(same_bytes(got.chunk.sequence.data(), expected.chunk.sequence.data(),
+                             n * sizeof(pipeline::SequenceEntry)));
+    }
+  }
+}
+
+}  // namespace
+}  // namespace facet::test

@@ -45,10 +45,10 @@ class PrimitiveSink {
     return slot;
   }
 
-  // add_triangle in two steps, for a triangle set up in place: its slot, then (once its edge
-  // functions and bounding box are written there) its sequence entry. Copying a triangle set up
-  // field by field elsewhere reads back wider than it was written, which stalls store
-  // forwarding. A slot's planes stay valid until the next slot is reserved.
+  // add_triangle in two steps, for a triangle set up in place (batched setup writes each field
+  // straight into its slot): its slot, then, once its edge functions and bounding box are
+  // written there, its sequence entry. A slot's planes stay valid until the next slot is
+  // reserved.
   [[gnu::always_inline]] TriangleSlot reserve_triangle() {
     GeometryChunk::Region& r = chunk_.triangles;
     if (r.used < r.capacity) {

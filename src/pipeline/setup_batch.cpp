@@ -189,6 +189,7 @@ int SetupBatchLanes(const SetupBatch& b, const SetupBatchTarget& target) {
       t.varying_planes = slot.plane_index;
       t.draw = target.draw;
       target.out.add_reserved_triangle(slot);
+      if (target.varyings == 0) continue;  // (slot.planes may then be null)
 
       const Coefficients one{hn::Set(dd, x1[l]), hn::Set(dd, y1[l]), hn::Set(dd, x2[l]),
                              hn::Set(dd, y2[l]), hn::Set(dd, inv_det[l])};

@@ -8,6 +8,7 @@
 #include "pipeline/parallel.hpp"
 #include "pipeline/setup.hpp"
 #include "pipeline/vertex_pass.hpp"
+#include "pipeline/vertex_rows.hpp"
 
 namespace facet::pipeline {
 namespace {
@@ -40,22 +41,22 @@ void transform_range(const DrawRecord& draw, const VertexPassInput& pass_input, 
                                   has_colors ? &mesh.colors[first] : nullptr},
                                  batch_varyings);
     }
+    store_projected(pass, count, &out.projected[first]);
+    for (std::size_t j = 0; j < count; ++j) {  // the few beyond the pass's screen rounding
+      if (pass.codes[j] & kScalarScreen) {
+        const glm::vec4 clip(pass.x[j], pass.y[j], pass.z[j], pass.w[j]);
+        out.projected[first + j].screen = to_screen(clip, pass_input.width, pass_input.height);
+      }
+    }
+    if (!write_clip) {  // a batch-form draw whose triangles only setup's fast path reads
+      // (to_screen's 1 / w is the pass's: the same division)
+      store_over_w(batch_varyings, pass.inv_w, count, varyings, over_w + first * varyings);
+      continue;
+    }
     for (std::size_t j = 0; j < count; ++j) {
       const std::size_t i = first + j;
-      const glm::vec4 clip(pass.x[j], pass.y[j], pass.z[j], pass.w[j]);
-      ProjectedVertex& p = out.projected[i];
-      p.clip_x = pass.x[j], p.clip_y = pass.y[j], p.clip_w = pass.w[j];
-      p.codes = pass.codes[j] & ~kScalarScreen;
-      p.screen = (pass.codes[j] & kScalarScreen)
-                     ? to_screen(clip, pass_input.width, pass_input.height)
-                     : ScreenVertex{pass.sx[j], pass.sy[j], pass.depth[j], pass.inv_w[j]};
-      if (!write_clip) {  // a batch-form draw whose triangles only setup's fast path reads
-        float* o = over_w + i * varyings;
-        for (int k = 0; k < varyings; ++k) o[k] = batch_varyings[k][j] * p.screen.inv_w;
-        continue;
-      }
       ClipVertex& v = out.clip[i];
-      v.clip = clip;
+      v.clip = glm::vec4(pass.x[j], pass.y[j], pass.z[j], pass.w[j]);
       if (draw.batch_vertices) {
         for (int k = 0; k < varyings; ++k) v.varyings[k] = batch_varyings[k][j];
         continue;
@@ -74,7 +75,7 @@ void transform_range(const DrawRecord& draw, const VertexPassInput& pass_input, 
     // What setup's planes pass through (perspective-correct interpolation of v / w). A loop of
     // its own: read right after the shading model's narrow stores, the varyings' vector loads
     // would stall on store forwarding.
-    for (std::size_t i = first; write_clip && over_w && i < first + count; ++i) {
+    for (std::size_t i = first; over_w && i < first + count; ++i) {
       const float inv_w = out.projected[i].screen.inv_w;
       const float* v = out.clip[i].varyings;
       float* o = over_w + i * varyings;

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "pipeline/clip.hpp"
+#include "pipeline/cull_batch.hpp"
 #include "pipeline/setup.hpp"
 #include "pipeline/setup_batch.hpp"
 
@@ -14,11 +15,6 @@ namespace {
 
 // The frustum's outcode bits of ProjectedVertex::codes.
 constexpr unsigned kFrustumCodes = (1u << kClipPlaneCount) - 1;
-
-// Triangles culled in one go before the survivors are assembled: a tight loop of culling
-// tests overlaps one triangle's facing arithmetic with the next one's, where interleaved with
-// setup each waited for its own.
-constexpr std::size_t kCullBatch = 128;
 
 struct Assembler {
   PrimitiveSink& out;
@@ -34,16 +30,9 @@ struct Assembler {
   SetupBatchKernel setup_kernel = nullptr;  // null: each is set up as it comes
   SetupBatch* batch = nullptr;
 
-  bool cull(bool front_facing) const {
-    switch (draw.material.cull) {
-      case CullMode::back:
-        return !front_facing;
-      case CullMode::front:
-        return front_facing;
-      default:
-        return false;
-    }
-  }
+  bool culls_front = draw.material.cull == CullMode::front;
+  bool culls_back = draw.material.cull == CullMode::back;
+  bool cull(bool front_facing) const { return front_facing ? culls_front : culls_back; }
 
   // Face normal in world space from object-space positions.
   glm::vec3 face_normal(std::uint32_t i0, std::uint32_t i1, std::uint32_t i2) const {
@@ -96,6 +85,23 @@ struct Assembler {
     return true;
   }
 
+  // The planes a triangle whose vertices' codes or-ed are `codes` must be clipped against. Near
+  // and far are the same planes in both bounds; the guard band's sides only need checking when
+  // a vertex is outside the frustum's sides (the guard band contains them).
+  static unsigned clip_planes(unsigned codes) {
+    const unsigned any_out = codes & kFrustumCodes;
+    if (any_out & (kClipLeft | kClipRight | kClipBottom | kClipTop)) {
+      return codes >> kGuardCodeShift & kFrustumCodes;
+    }
+    return any_out & (kClipNear | kClipFar);
+  }
+
+  // Whether a triangle culling accepted goes straight to the setup batch: assemble()'s common
+  // case, tested without its call.
+  bool waits_for_setup(const Accepted& a) const {
+    return setup_kernel != nullptr && draw.pipeline.fills_triangles && clip_planes(a.codes) == 0;
+  }
+
   // Edges, clipping and setup of a triangle culling accepted.
   void assemble(const Accepted& a) {
     const std::uint32_t i0 = a.i0, i1 = a.i1, i2 = a.i2;
@@ -108,13 +114,7 @@ struct Assembler {
     }
     if (!pipe.fills_triangles) return;
 
-    // Near and far are the same planes in both bounds; the guard band's sides only need
-    // checking when a vertex is outside the frustum's sides (the guard band contains them).
-    unsigned any_out = a.codes & kFrustumCodes;
-    unsigned planes = any_out & (kClipNear | kClipFar);
-    if (any_out & (kClipLeft | kClipRight | kClipBottom | kClipTop)) {
-      planes = a.codes >> kGuardCodeShift & kFrustumCodes;
-    }
+    const unsigned planes = clip_planes(a.codes);
     if (planes == 0 && !hooks) {  // the common case: set up from the projected vertices
       if (setup_kernel != nullptr) {
         wait_for_setup(a);
@@ -220,6 +220,33 @@ void assemble_primitives(const Frame& frame, std::uint32_t draw_index, const Dra
   if (!assembler.hooks && !draw.pipeline.draws_edges) {
     assembler.setup_kernel = setup_batch_kernel();
     assembler.batch = &batch;
+  }
+  if (mesh.topology == Topology::triangles && vertices.projected.size() <= kMaxCullBatchVertices) {
+    const CullKernel cull = cull_kernel();
+    CullSurvivors survivors;
+    std::uint32_t listed[3 * kCullBatch];  // a draw without indices lists its vertices in order
+    for (std::size_t first = begin; first < end; first += kCullBatch) {
+      const int count = static_cast<int>(std::min<std::size_t>(end - first, kCullBatch));
+      const std::uint32_t* indices = mesh.indices.data() + 3 * first;
+      if (mesh.indices.empty()) {
+        for (int k = 0; k < 3 * count; ++k) listed[k] = static_cast<std::uint32_t>(3 * first + k);
+        indices = listed;
+      }
+      cull({indices, count, vertices.projected.data(), assembler.culls_front, assembler.culls_back},
+           survivors);
+      counts.culled += static_cast<std::uint64_t>(count - survivors.count);
+      for (int k = 0; k < survivors.count; ++k) {
+        const Assembler::Accepted a{survivors.i0[k], survivors.i1[k], survivors.i2[k],
+                                    survivors.codes[k], survivors.front_facing[k] != 0};
+        if (assembler.waits_for_setup(a)) {
+          assembler.wait_for_setup(a);
+        } else {
+          assembler.assemble(a);
+        }
+      }
+    }
+    assembler.set_up_waiting();
+    return;
   }
   Assembler::Accepted accepted[kCullBatch];
   for (std::size_t first = begin; first < end; first += kCullBatch) {

@@ -27,16 +27,22 @@ HWY_INLINE void LoadVertices(DF df, const float* fields, hn::Vec<hn::RebindToUns
                              hn::Vec<hn::RebindToUnsigned<DF>>& codes) {
   const hn::RebindToUnsigned<DF> du;
 #if HWY_TARGET != HWY_SCALAR && HWY_TARGET != HWY_EMU128
-  if constexpr (hn::MaxLanes(DF()) == 8) {
-    // Each vertex's first 16 bytes (clip x, y, w, codes) loaded whole, two vertices a vector,
-    // then transposed: on AVX-512 machines, cheaper than four gathers.
-    const hn::Half<DF> d4;
-    alignas(32) std::uint32_t at[8];
+  constexpr std::size_t kLanes = hn::MaxLanes(DF());
+  if constexpr (kLanes == 4 || kLanes == 8) {
+    // Each vertex's first 16 bytes (clip x, y, w, codes) loaded whole, then transposed: on
+    // this project's AVX-512 machine, cheaper than four gathers. pair[l] holds vertices l and,
+    // with eight lanes, l + 4.
+    alignas(32) std::uint32_t at[kLanes];
     hn::Store(index, du, at);
     hn::Vec<DF> pair[4];
-    for (int l = 0; l < 4; ++l) {
-      pair[l] = hn::Combine(df, hn::LoadU(d4, fields + 8 * std::size_t{at[l + 4]}),
-                            hn::LoadU(d4, fields + 8 * std::size_t{at[l]}));
+    for (std::size_t l = 0; l < 4; ++l) {
+      if constexpr (kLanes == 8) {
+        const hn::Half<DF> d4;
+        pair[l] = hn::Combine(df, hn::LoadU(d4, fields + 8 * std::size_t{at[l + 4]}),
+                              hn::LoadU(d4, fields + 8 * std::size_t{at[l]}));
+      } else {
+        pair[l] = hn::LoadU(df, fields + 8 * std::size_t{at[l]});
+      }
     }
     const hn::Repartition<std::uint64_t, DF> d64;
     const auto low01 = hn::BitCast(d64, hn::InterleaveLower(df, pair[0], pair[1]));

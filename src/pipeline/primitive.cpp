@@ -198,56 +198,47 @@ struct Assembler {
   }
 };
 
-}  // namespace
+// The mesh's i-th index (its i-th vertex when it has none).
+std::uint32_t vertex_index(const Mesh& mesh, std::size_t i) {
+  return mesh.indices.empty() ? static_cast<std::uint32_t>(i) : mesh.indices[i];
+}
 
-void assemble_primitives(const Frame& frame, std::uint32_t draw_index, const DrawVertices& vertices,
-                         std::size_t begin, std::size_t end, PrimitiveSink& out,
-                         PrimitiveCounts& counts) {
-  const DrawRecord& draw = frame.draws[draw_index];
-  const Mesh& mesh = *draw.mesh;
-  Assembler assembler{
-      out,        counts, frame.width, frame.height,
-      draw_index, draw,   vertices,    guard_band_bounds(frame.width, frame.height)};
-  auto index = [&](std::size_t i) {
-    return mesh.indices.empty() ? static_cast<std::uint32_t>(i) : mesh.indices[i];
-  };
-  if (mesh.topology == Topology::lines) {
-    for (std::size_t p = begin; p < end; ++p) assembler.line(index(2 * p), index(2 * p + 1));
-    return;
-  }
-  // Edges come before their triangle's fill, so wireframe draws set up one at a time.
-  SetupBatch batch;
-  if (!assembler.hooks && !draw.pipeline.draws_edges) {
-    assembler.setup_kernel = setup_batch_kernel();
-    assembler.batch = &batch;
-  }
-  if (mesh.topology == Topology::triangles && vertices.projected.size() <= kMaxCullBatchVertices) {
-    const CullKernel cull = cull_kernel();
-    CullSurvivors survivors;
-    std::uint32_t listed[3 * kCullBatch];  // a draw without indices lists its vertices in order
-    for (std::size_t first = begin; first < end; first += kCullBatch) {
-      const int count = static_cast<int>(std::min<std::size_t>(end - first, kCullBatch));
-      const std::uint32_t* indices = mesh.indices.data() + 3 * first;
-      if (mesh.indices.empty()) {
-        for (int k = 0; k < 3 * count; ++k) listed[k] = static_cast<std::uint32_t>(3 * first + k);
-        indices = listed;
-      }
-      cull({indices, count, vertices.projected.data(), assembler.culls_front, assembler.culls_back},
-           survivors);
-      counts.culled += static_cast<std::uint64_t>(count - survivors.count);
-      for (int k = 0; k < survivors.count; ++k) {
-        const Assembler::Accepted a{survivors.i0[k], survivors.i1[k], survivors.i2[k],
-                                    survivors.codes[k], survivors.front_facing[k] != 0};
-        if (assembler.waits_for_setup(a)) {
-          assembler.wait_for_setup(a);
-        } else {
-          assembler.assemble(a);
-        }
+// Triangle lists: culled a run at a time, several triangles a vector (cull_batch.hpp).
+void assemble_triangle_lists(Assembler& assembler, const Mesh& mesh, std::size_t begin,
+                             std::size_t end) {
+  const CullKernel cull = cull_kernel();
+  CullSurvivors survivors;
+  std::uint32_t listed[3 * kCullBatch];  // a draw without indices lists its vertices in order
+  for (std::size_t first = begin; first < end; first += kCullBatch) {
+    const int count = static_cast<int>(std::min<std::size_t>(end - first, kCullBatch));
+    const std::uint32_t* indices = listed;
+    if (mesh.indices.empty()) {
+      for (int k = 0; k < 3 * count; ++k) listed[k] = static_cast<std::uint32_t>(3 * first + k);
+    } else {
+      indices = mesh.indices.data() + 3 * first;
+    }
+    cull({indices, count, assembler.vertices.projected.data(), assembler.culls_front,
+          assembler.culls_back},
+         survivors);
+    assembler.counts.culled += static_cast<std::uint64_t>(count - survivors.count);
+    for (int k = 0; k < survivors.count; ++k) {
+      const Assembler::Accepted a{survivors.i0[k], survivors.i1[k], survivors.i2[k],
+                                  survivors.codes[k], survivors.front_facing[k] != 0};
+      if (assembler.waits_for_setup(a)) {
+        assembler.wait_for_setup(a);
+      } else {
+        assembler.assemble(a);
       }
     }
-    assembler.set_up_waiting();
-    return;
   }
+}
+
+// Strips, and lists of more vertices than the SIMD culling can index: culled one triangle at a
+// time, a run of them before the survivors are assembled (a tight loop of culling tests
+// overlaps one triangle's facing arithmetic with the next one's).
+void assemble_one_at_a_time(Assembler& assembler, const Mesh& mesh, std::size_t begin,
+                            std::size_t end) {
+  auto index = [&](std::size_t i) { return vertex_index(mesh, i); };
   Assembler::Accepted accepted[kCullBatch];
   for (std::size_t first = begin; first < end; first += kCullBatch) {
     const std::size_t last = std::min(end, first + kCullBatch);
@@ -266,6 +257,35 @@ void assemble_primitives(const Frame& frame, std::uint32_t draw_index, const Dra
       if (assembler.accept(i0, i1, i2, accepted[count])) ++count;
     }
     for (std::size_t k = 0; k < count; ++k) assembler.assemble(accepted[k]);
+  }
+}
+
+}  // namespace
+
+void assemble_primitives(const Frame& frame, std::uint32_t draw_index, const DrawVertices& vertices,
+                         std::size_t begin, std::size_t end, PrimitiveSink& out,
+                         PrimitiveCounts& counts) {
+  const DrawRecord& draw = frame.draws[draw_index];
+  const Mesh& mesh = *draw.mesh;
+  Assembler assembler{
+      out,        counts, frame.width, frame.height,
+      draw_index, draw,   vertices,    guard_band_bounds(frame.width, frame.height)};
+  if (mesh.topology == Topology::lines) {
+    for (std::size_t p = begin; p < end; ++p) {
+      assembler.line(vertex_index(mesh, 2 * p), vertex_index(mesh, 2 * p + 1));
+    }
+    return;
+  }
+  // Edges come before their triangle's fill, so wireframe draws set up one at a time.
+  SetupBatch batch;
+  if (!assembler.hooks && !draw.pipeline.draws_edges) {
+    assembler.setup_kernel = setup_batch_kernel();
+    assembler.batch = &batch;
+  }
+  if (mesh.topology == Topology::triangles && vertices.projected.size() <= kMaxCullBatchVertices) {
+    assemble_triangle_lists(assembler, mesh, begin, end);
+  } else {
+    assemble_one_at_a_time(assembler, mesh, begin, end);
   }
   assembler.set_up_waiting();
 }

@@ -6,6 +6,7 @@
 // homogeneous coordinates, or the facing the draw culls. The survivors are kept in order.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 #include "pipeline/frame.hpp"
@@ -15,8 +16,8 @@ namespace facet::pipeline {
 // Triangles culled in one go before the survivors are assembled.
 inline constexpr int kCullBatch = 128;
 
-// The vertex indices the kernel gathers with are 32-bit element offsets (index x 8 floats):
-// draws with more vertices are culled one triangle at a time.
+// Where the kernel gathers (targets narrower than AVX2), it addresses a vertex by a 32-bit
+// element offset (index x 8 floats): draws with more vertices are culled one triangle at a time.
 inline constexpr std::size_t kMaxCullBatchVertices = std::size_t{1} << 28;
 
 struct CullInput {

@@ -10,6 +10,8 @@
 #include <hwy/foreach_target.h>  // must come before highway.h
 #include <hwy/highway.h>
 
+#include <cstring>
+
 #include "shading/batch_math-inl.h"
 #include "shading/surface.hpp"
 
@@ -21,18 +23,20 @@ void GouraudVertexBatch(const DrawUniforms& u, const VertexBatchInput& in, Goura
                         float (*out)[kVertexBatch]) {
   const BatchTag d;
   const int lanes = static_cast<int>(hn::Lanes(d));
-  // Positions as one array per axis, zero past count (computed, then ignored).
-  alignas(64) float position[3][kVertexBatch];
-  for (int n = 0; n < kVertexBatch; ++n) {
-    for (int c = 0; c < 3; ++c) position[c][n] = n < in.count ? in.positions[n][c] : 0.0f;
-  }
   const glm::mat4& m = u.model;
   const Material& material = *u.material;
   const Vec3V eye = Set3(u.eye);
   for (int j = 0; j < in.count; j += lanes) {
-    // glm::vec3(u.model * glm::vec4(position, 1)).
-    const BatchV x = hn::Load(d, position[0] + j), y = hn::Load(d, position[1] + j),
-                 z = hn::Load(d, position[2] + j);
+    // glm::vec3(u.model * glm::vec4(position, 1)), the positions a vector of each axis (the
+    // last few zero-padded: computed, then ignored).
+    BatchV x, y, z;
+    if (j + lanes <= in.count) {
+      hn::LoadInterleaved3(d, &in.positions[j].x, x, y, z);
+    } else {
+      alignas(64) float padded[3 * kVertexBatch] = {};
+      std::memcpy(padded, &in.positions[j], (in.count - j) * sizeof(glm::vec3));
+      hn::LoadInterleaved3(d, padded, x, y, z);
+    }
     BatchV world[3];
     for (int c = 0; c < 3; ++c) {
       world[c] = hn::Add(hn::Add(hn::Mul(hn::Set(d, m[0][c]), x), hn::Mul(hn::Set(d, m[1][c]), y)),

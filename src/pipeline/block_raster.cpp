@@ -10,6 +10,7 @@
 
 #include <algorithm>
 
+#include "pipeline/chosen_target.hpp"
 #include "pipeline/fixed_point.hpp"
 #include "pipeline/setup.hpp"
 
@@ -209,12 +210,7 @@ HWY_EXPORT(FindBoxPixels);
 const char* simd_target_name() { return HWY_DYNAMIC_DISPATCH(TargetName)(); }
 
 RasterKernels raster_kernels() {
-  // What HWY_DYNAMIC_DISPATCH would call. Until a target is chosen (at the first dispatch, and
-  // again after a test forces one), its tables lead to a function that chooses one on every
-  // call: choose it here, as that function does.
-  hwy::ChosenTarget& chosen = hwy::GetChosenTarget();
-  if (!chosen.IsInitialized()) chosen.Update(hwy::SupportedTargets());
-  const std::size_t index = chosen.GetIndex();
+  const std::size_t index = chosen_target_index();
   return {HWY_DISPATCH_TABLE(CoverBlock)[index], HWY_DISPATCH_TABLE(InterpolatePixels)[index],
           HWY_DISPATCH_TABLE(FindBoxPixels)[index]};
 }

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 
+#include "pipeline/chosen_target.hpp"
 #include "pipeline/clip.hpp"
 
 HWY_BEFORE_NAMESPACE();
@@ -136,12 +137,7 @@ namespace facet::pipeline {
 
 HWY_EXPORT(CullTriangles);
 
-CullKernel cull_kernel() {
-  // What HWY_DYNAMIC_DISPATCH would call (see raster_kernels in block_raster.cpp).
-  hwy::ChosenTarget& chosen = hwy::GetChosenTarget();
-  if (!chosen.IsInitialized()) chosen.Update(hwy::SupportedTargets());
-  return HWY_DISPATCH_TABLE(CullTriangles)[chosen.GetIndex()];
-}
+CullKernel cull_kernel() { return HWY_DISPATCH_TABLE(CullTriangles)[chosen_target_index()]; }
 
 }  // namespace facet::pipeline
 #endif  // HWY_ONCE

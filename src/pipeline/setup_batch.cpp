@@ -16,6 +16,7 @@
 
 #include <algorithm>
 
+#include "pipeline/chosen_target.hpp"
 #include "pipeline/fixed_point.hpp"
 
 HWY_BEFORE_NAMESPACE();
@@ -225,10 +226,7 @@ namespace facet::pipeline {
 HWY_EXPORT(SetupBatchLanes);
 
 SetupBatchKernel setup_batch_kernel() {
-  // What HWY_DYNAMIC_DISPATCH would call (see raster_kernels in block_raster.cpp).
-  hwy::ChosenTarget& chosen = hwy::GetChosenTarget();
-  if (!chosen.IsInitialized()) chosen.Update(hwy::SupportedTargets());
-  return HWY_DISPATCH_TABLE(SetupBatchLanes)[chosen.GetIndex()];
+  return HWY_DISPATCH_TABLE(SetupBatchLanes)[chosen_target_index()];
 }
 
 }  // namespace facet::pipeline

@@ -8,6 +8,7 @@
 #include <hwy/highway.h>
 
 #include <algorithm>
+#include <cstring>
 
 #include "pipeline/chosen_target.hpp"
 #include "pipeline/clip.hpp"
@@ -57,13 +58,18 @@ HWY_INLINE void LoadVertices(DF df, const float* fields, hn::Vec<hn::RebindToUns
     return;
   }
 #endif
-  {
-    const hn::RebindToSigned<DF> di;
-    const auto offset = hn::BitCast(di, hn::ShiftLeft<3>(index));  // 8 floats a vertex
-    x = hn::GatherIndex(df, fields, offset);
-    y = hn::GatherIndex(df, fields + 1, offset);
-    w = hn::GatherIndex(df, fields + 2, offset);
-    codes = hn::GatherIndex(du, reinterpret_cast<const std::uint32_t*>(fields) + 3, offset);
+  {  // narrower targets: lane by lane
+    constexpr std::size_t kMax = hn::MaxLanes(DF());
+    alignas(64) std::uint32_t at[kMax], code[kMax];
+    alignas(64) float xs[kMax], ys[kMax], ws[kMax];
+    hn::Store(index, du, at);
+    for (std::size_t l = 0; l < hn::Lanes(df); ++l) {
+      const float* vertex = fields + 8 * std::size_t{at[l]};
+      xs[l] = vertex[0], ys[l] = vertex[1], ws[l] = vertex[2];
+      std::memcpy(&code[l], vertex + 3, sizeof code[l]);
+    }
+    x = hn::Load(df, xs), y = hn::Load(df, ys), w = hn::Load(df, ws);
+    codes = hn::Load(du, code);
   }
 }
 

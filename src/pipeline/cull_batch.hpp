@@ -1,12 +1,12 @@
 // Stage: primitive assembly, culling several triangles a vector. primitive.cpp culls a draw's
-// triangle lists a run of up to kCullBatch triangles at a time: the kernel (cull_batch.cpp,
-// compiled for every target Highway supports) reads each triangle's three projected vertices
-// and drops it as Assembler::accept (primitive.cpp) would, in the same double operations: for
-// non-finite positions, all three vertices outside one frustum plane, zero orientation in
-// homogeneous coordinates, or the facing the draw culls. The survivors are kept in order.
+// triangles (strips listed as triangles) a run of up to kCullBatch at a time: the kernel
+// (cull_batch.cpp, compiled for every target Highway supports) reads each triangle's three
+// projected vertices and drops it for non-finite positions, all three vertices outside one
+// frustum plane, zero orientation in homogeneous coordinates (homogeneous_orientation's double
+// operations in its order, so every target drops the same triangles), or the facing the draw
+// culls. The survivors are kept in order.
 #pragma once
 
-#include <cstddef>
 #include <cstdint>
 
 #include "pipeline/frame.hpp"
@@ -15,10 +15,6 @@ namespace facet::pipeline {
 
 // Triangles culled in one go before the survivors are assembled.
 inline constexpr int kCullBatch = 128;
-
-// Where the kernel gathers (targets narrower than AVX2), it addresses a vertex by a 32-bit
-// element offset (index x 8 floats): draws with more vertices are culled one triangle at a time.
-inline constexpr std::size_t kMaxCullBatchVertices = std::size_t{1} << 28;
 
 struct CullInput {
   const std::uint32_t* indices;  // three per triangle, in the draw's winding

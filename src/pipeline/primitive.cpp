@@ -32,7 +32,6 @@ struct Assembler {
 
   bool culls_front = draw.material.cull == CullMode::front;
   bool culls_back = draw.material.cull == CullMode::back;
-  bool cull(bool front_facing) const { return front_facing ? culls_front : culls_back; }
 
   // Face normal in world space from object-space positions.
   glm::vec3 face_normal(std::uint32_t i0, std::uint32_t i1, std::uint32_t i2) const {
@@ -57,33 +56,12 @@ struct Assembler {
   }
 
   // A triangle culling let through, for the rest of assembly.
+  // A triangle culling (cull_batch.hpp) kept.
   struct Accepted {
     std::uint32_t i0, i1, i2;
     unsigned codes;  // the three vertices' codes, or-ed
     bool front_facing;
   };
-
-  // Culling alone: true (and `a` filled) if the triangle survives it. It reads only the
-  // vertices' projections (outcodes, facing inputs), so most rejected triangles (facing away,
-  // off screen) never touch their varyings.
-  bool accept(std::uint32_t i0, std::uint32_t i1, std::uint32_t i2, Accepted& a) {
-    const ProjectedVertex* p[3] = {&vertices.projected[i0], &vertices.projected[i1],
-                                   &vertices.projected[i2]};
-    const unsigned code0 = p[0]->codes, code1 = p[1]->codes, code2 = p[2]->codes;
-    if ((code0 | code1 | code2) & kNotFinite) {
-      ++counts.culled;  // NaN/Inf positions: skipped, never rasterized
-      return false;
-    }
-    double orientation = homogeneous_orientation(*p[0], *p[1], *p[2]);
-    bool front_facing = orientation > 0.0;
-    // Trivial reject: all three outside one frustum plane. Zero orientation: degenerate.
-    if ((code0 & code1 & code2 & kFrustumCodes) || orientation == 0.0 || cull(front_facing)) {
-      ++counts.culled;
-      return false;
-    }
-    a = {i0, i1, i2, code0 | code1 | code2, front_facing};
-    return true;
-  }
 
   // The planes a triangle whose vertices' codes or-ed are `codes` must be clipped against. Near
   // and far are the same planes in both bounds; the guard band's sides only need checking when
@@ -203,22 +181,40 @@ std::uint32_t vertex_index(const Mesh& mesh, std::size_t i) {
   return mesh.indices.empty() ? static_cast<std::uint32_t>(i) : mesh.indices[i];
 }
 
-// Triangle lists: culled a run at a time, several triangles a vector (cull_batch.hpp).
-void assemble_triangle_lists(Assembler& assembler, const Mesh& mesh, std::size_t begin,
-                             std::size_t end) {
+// Lists the vertex indices of triangles [first, first + count): a list's three a triangle, a
+// strip's with odd triangles' first two vertices swapped so every triangle keeps the strip's
+// winding. Returns where they are (a list with indices is read in place).
+const std::uint32_t* list_triangles(const Mesh& mesh, std::size_t first, int count,
+                                    std::uint32_t* listed) {
+  if (mesh.topology == Topology::triangles && !mesh.indices.empty()) {
+    return mesh.indices.data() + 3 * first;
+  }
+  for (int k = 0; k < count; ++k) {
+    const std::size_t p = first + static_cast<std::size_t>(k);
+    std::uint32_t* t = listed + 3 * k;
+    if (mesh.topology == Topology::triangles) {
+      t[0] = vertex_index(mesh, 3 * p), t[1] = vertex_index(mesh, 3 * p + 1);
+      t[2] = vertex_index(mesh, 3 * p + 2);
+    } else {
+      t[0] = vertex_index(mesh, p % 2 == 0 ? p : p + 1);
+      t[1] = vertex_index(mesh, p % 2 == 0 ? p + 1 : p);
+      t[2] = vertex_index(mesh, p + 2);
+    }
+  }
+  return listed;
+}
+
+// Triangles [begin, end), culled a run at a time, several triangles a vector (cull_batch.hpp),
+// then assembled in order.
+void assemble_triangles(Assembler& assembler, const Mesh& mesh, std::size_t begin,
+                        std::size_t end) {
   const CullKernel cull = cull_kernel();
   CullSurvivors survivors;
-  std::uint32_t listed[3 * kCullBatch];  // a draw without indices lists its vertices in order
+  std::uint32_t listed[3 * kCullBatch];
   for (std::size_t first = begin; first < end; first += kCullBatch) {
     const int count = static_cast<int>(std::min<std::size_t>(end - first, kCullBatch));
-    const std::uint32_t* indices = listed;
-    if (mesh.indices.empty()) {
-      for (int k = 0; k < 3 * count; ++k) listed[k] = static_cast<std::uint32_t>(3 * first + k);
-    } else {
-      indices = mesh.indices.data() + 3 * first;
-    }
-    cull({indices, count, assembler.vertices.projected.data(), assembler.culls_front,
-          assembler.culls_back},
+    cull({list_triangles(mesh, first, count, listed), count, assembler.vertices.projected.data(),
+          assembler.culls_front, assembler.culls_back},
          survivors);
     assembler.counts.culled += static_cast<std::uint64_t>(count - survivors.count);
     for (int k = 0; k < survivors.count; ++k) {
@@ -230,33 +226,6 @@ void assemble_triangle_lists(Assembler& assembler, const Mesh& mesh, std::size_t
         assembler.assemble(a);
       }
     }
-  }
-}
-
-// Strips, and lists of more vertices than the SIMD culling can index: culled one triangle at a
-// time, a run of them before the survivors are assembled (a tight loop of culling tests
-// overlaps one triangle's facing arithmetic with the next one's).
-void assemble_one_at_a_time(Assembler& assembler, const Mesh& mesh, std::size_t begin,
-                            std::size_t end) {
-  auto index = [&](std::size_t i) { return vertex_index(mesh, i); };
-  Assembler::Accepted accepted[kCullBatch];
-  for (std::size_t first = begin; first < end; first += kCullBatch) {
-    const std::size_t last = std::min(end, first + kCullBatch);
-    std::size_t count = 0;
-    for (std::size_t p = first; p < last; ++p) {
-      std::uint32_t i0, i1, i2;
-      if (mesh.topology == Topology::triangles) {
-        i0 = index(3 * p), i1 = index(3 * p + 1), i2 = index(3 * p + 2);
-      } else if (p % 2 == 0) {  // strip
-        i0 = index(p), i1 = index(p + 1), i2 = index(p + 2);
-      } else {
-        // Odd triangles swap their first two vertices so every triangle keeps the strip's
-        // winding.
-        i0 = index(p + 1), i1 = index(p), i2 = index(p + 2);
-      }
-      if (assembler.accept(i0, i1, i2, accepted[count])) ++count;
-    }
-    for (std::size_t k = 0; k < count; ++k) assembler.assemble(accepted[k]);
   }
 }
 
@@ -282,11 +251,7 @@ void assemble_primitives(const Frame& frame, std::uint32_t draw_index, const Dra
     assembler.setup_kernel = setup_batch_kernel();
     assembler.batch = &batch;
   }
-  if (mesh.topology == Topology::triangles && vertices.projected.size() <= kMaxCullBatchVertices) {
-    assemble_triangle_lists(assembler, mesh, begin, end);
-  } else {
-    assemble_one_at_a_time(assembler, mesh, begin, end);
-  }
+  assemble_triangles(assembler, mesh, begin, end);
   assembler.set_up_waiting();
 }
 

@@ -77,10 +77,11 @@ struct Assembler {
   // Whether a triangle culling accepted goes straight to the setup batch: assemble()'s common
   // case, tested without its call.
   bool waits_for_setup(const Accepted& a) const {
-    return setup_kernel != nullptr && draw.pipeline.fills_triangles && clip_planes(a.codes) == 0;
+    return setup_kernel != nullptr && clip_planes(a.codes) == 0;
   }
 
-  // Edges, clipping and setup of a triangle culling accepted.
+  // Edges, clipping and setup of a triangle culling accepted that does not wait for the setup
+  // batch (waits_for_setup).
   void assemble(const Accepted& a) {
     const std::uint32_t i0 = a.i0, i1 = a.i1, i2 = a.i2;
     const bool front_facing = a.front_facing;
@@ -93,11 +94,7 @@ struct Assembler {
     if (!pipe.fills_triangles) return;
 
     const unsigned planes = clip_planes(a.codes);
-    if (planes == 0 && !hooks) {  // the common case: set up from the projected vertices
-      if (setup_kernel != nullptr) {
-        wait_for_setup(a);
-        return;
-      }
+    if (planes == 0 && !hooks) {  // set up from the projected vertices (wireframe draws)
       const ScreenVertex s[3] = {vertices.projected[i0].screen, vertices.projected[i1].screen,
                                  vertices.projected[i2].screen};
       const int n = pipe.varyings;
@@ -245,9 +242,10 @@ void assemble_primitives(const Frame& frame, std::uint32_t draw_index, const Dra
     }
     return;
   }
-  // Edges come before their triangle's fill, so wireframe draws set up one at a time.
+  // Edges come before their triangle's fill, so wireframe draws set up one at a time (and draws
+  // of edges only set up no triangle).
   SetupBatch batch;
-  if (!assembler.hooks && !draw.pipeline.draws_edges) {
+  if (!assembler.hooks && !draw.pipeline.draws_edges && draw.pipeline.fills_triangles) {
     assembler.setup_kernel = setup_batch_kernel();
     assembler.batch = &batch;
   }

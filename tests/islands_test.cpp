@@ -70,9 +70,11 @@ TEST(Islands, BuildsWithItsMovingPartsAndIsRegistered) {
   EXPECT_EQ(make_builtin_scene("islands").triangle_count(), w.scene.triangle_count());
 }
 
+// At the size `make run` renders it. (Triangles covering no pixel centre are not drawn: at
+// 1280 x 720, 94,741 of the start view's triangles cover one.)
 TEST(Islands, StartViewDrawsAtLeast100kTriangles) {
   EXPECT_GE(world().scene.triangle_count(), 100000u);
-  const Frame frame = render(world().scene, 1280, 720);
+  const Frame frame = render(world().scene, 1920, 1080);
   EXPECT_GE(frame.stats.drawn, 100000u) << "of " << frame.stats.triangles_in << " in";
 }
 

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <random>
 
@@ -38,6 +39,43 @@ TEST(ReferenceEquality, RandomSoupsGiveIdenticalCoverageAndDepth) {
           << soup_index << ": " << fb.depth()[i] << " vs " << expected.depth[i];
     }
   }
+}
+
+// Setup drops small triangles that cover no pixel centre (setup.hpp's kProbedBoxSide), and only
+// those: of tiny triangles, the renderer draws exactly the ones the reference covers a pixel
+// with.
+TEST(ReferenceEquality, TinyTrianglesAreDrawnExactlyWhenTheyCoverAPixelCentre) {
+  std::mt19937 rng(20261123);
+  const Camera camera = test_camera(kWidth, kHeight, 70.0f, 0.5f, 40.0f);
+  // At 3 units from the eye a pixel is about 0.1 units: vertices within 0.12 of a point are
+  // a few pixels apart, their boxes at most 3 pixel centres a side.
+  std::uniform_real_distribution<float> across(-2.5f, 2.5f), up(-1.6f, 1.6f), near(-0.12f, 0.12f);
+  std::vector<glm::vec3> positions;
+  std::uint64_t covering = 0;
+  constexpr int kTriangles = 2000;
+  for (int i = 0; i < kTriangles; ++i) {
+    const glm::vec3 centre{across(rng), up(rng), -3.0f};
+    std::vector<glm::vec3> triangle;
+    for (int v = 0; v < 3; ++v) triangle.push_back(centre + glm::vec3(near(rng), near(rng), 0.0f));
+    const pipeline::ReferenceImage alone = pipeline::reference_rasterize(
+        triangle, camera.view_projection(), CullMode::none, kWidth, kHeight);
+    covering += std::count_if(alone.coverage.begin(), alone.coverage.end(),
+                              [](int n) { return n > 0; }) > 0;
+    positions.insert(positions.end(), triangle.begin(), triangle.end());
+  }
+  // Both kinds are there.
+  ASSERT_GT(covering, 200u);
+  ASSERT_LT(covering, kTriangles - 200u);
+  const Mesh mesh = soup(positions);
+  Renderer renderer;
+  Material material;
+  material.shading = ShadingModel::unlit;
+  material.cull = CullMode::none;
+  renderer.begin_frame(camera);
+  renderer.draw(mesh, material);
+  Framebuffer fb(kWidth, kHeight);
+  renderer.finish(fb);
+  EXPECT_EQ(renderer.stats().drawn, covering);
 }
 
 TEST(ReferenceEquality, ReferenceSeesADifference) {

@@ -1,8 +1,8 @@
 // Batched setup (setup_batch.hpp) writes, on every SIMD target, the same triangles, planes and
 // sequence entries as setting up one triangle at a time (setup_projected_triangle), bit for bit:
-// for small, large, degenerate and flipped triangles, vertices across the guard band, edges on
-// the fill rule's cases, and plane values that overflow or are not numbers; and nothing past
-// the chunk's region of planes changes.
+// for small, tiny (covering a pixel centre or none), large, degenerate and flipped triangles,
+// vertices across the guard band, edges on the fill rule's cases, and plane values that overflow
+// or are not numbers; and nothing past the chunk's region of planes changes.
 #include "pipeline/setup_batch.hpp"
 
 #include <gtest/gtest.h>
@@ -100,6 +100,7 @@ std::vector<Triangle> awkward_triangles(std::mt19937& rng, std::uint32_t vertice
   std::uniform_int_distribution<int> on_screen_x(-4 * kScale, (kWidth + 4) * kScale);
   std::uniform_int_distribution<int> on_screen_y(-4 * kScale, (kHeight + 4) * kScale);
   std::uniform_int_distribution<int> nearby(-6 * kScale, 6 * kScale);
+  std::uniform_int_distribution<int> tiny(-3 * kScale / 2, 3 * kScale / 2);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   const float specials[] = {0.0f,
                             -0.0f,
@@ -110,7 +111,7 @@ std::vector<Triangle> awkward_triangles(std::mt19937& rng, std::uint32_t vertice
                             std::numeric_limits<float>::quiet_NaN()};
   std::vector<Triangle> out(4000);
   for (Triangle& t : out) {
-    const int kind = static_cast<int>(rng() % 6);
+    const int kind = static_cast<int>(rng() % 7);
     for (int i = 0; i < 3; ++i) {
       if (kind == 0) {  // anywhere in the guard band
         t.s[i].x = across_x(rng), t.s[i].y = across_y(rng);
@@ -119,6 +120,11 @@ std::vector<Triangle> awkward_triangles(std::mt19937& rng, std::uint32_t vertice
         t.s[i].y = (on_screen_y(rng) / kScale) * kScale + (rng() % 2) * kScale / 2;
       } else if (i == 0) {
         t.s[i].x = on_screen_x(rng), t.s[i].y = on_screen_y(rng);
+      } else if (kind == 6) {  // within a pixel or two: often between pixel centres, or
+        // on the half-pixel grid with vertex 0, edges through centres
+        const int step = rng() % 2 ? 1 : kScale / 2;
+        t.s[i].x = t.s[0].x + tiny(rng) / step * step,
+        t.s[i].y = t.s[0].y + tiny(rng) / step * step;
       } else {  // a few pixels from vertex 0; sometimes on it (degenerate)
         t.s[i].x = t.s[0].x + (kind == 1 && rng() % 4 == 0 ? 0 : nearby(rng));
         t.s[i].y = t.s[0].y + (kind == 1 && rng() % 4 == 0 ? 0 : nearby(rng));
@@ -127,7 +133,11 @@ std::vector<Triangle> awkward_triangles(std::mt19937& rng, std::uint32_t vertice
       t.s[i].inv_w = rng() % 32 == 0 ? specials[rng() % std::size(specials)] : unit(rng) * 4.0f;
       t.vertex[i] = static_cast<std::uint32_t>(rng() % vertices);
     }
-    if (kind == 4) t.s[2] = t.s[1];  // a repeated vertex
+    if (kind == 4) t.s[2] = t.s[1];     // a repeated vertex
+    if (kind == 6 && rng() % 2 == 0) {  // onto the half-pixel grid, keeping the shape
+      const int dx = t.s[0].x % (kScale / 2), dy = t.s[0].y % (kScale / 2);
+      for (ScreenVertex& v : t.s) v.x -= dx, v.y -= dy;
+    }
     // Mostly the facing the winding says; sometimes the other (as after snapping a sliver).
     const bool clockwise = pipeline::signed_area(t.s[0], t.s[1], t.s[2]) > 0;
     t.front_facing = (rng() % 8 == 0) == clockwise;

@@ -121,9 +121,29 @@ inline int last_centre_at_or_before(std::int64_t hi) {
   return static_cast<int>(floor_div(hi - kHalfPixel, kSubpixelScale));
 }
 
+// Triangles whose pixel box is at most this many pixels a side are dropped at setup when they
+// cover none of its pixel centres (covers_a_centre): they would draw nothing, yet be written,
+// binned and visited by every tile they touch. In `million`, 16 % of the small triangles'
+// tile visits found no pixel, their boxes 3.5 pixels on average.
+inline constexpr int kProbedBoxSide = 6;
+
+// Whether triangle t, its edges and pixel box set, covers the centre of a pixel of its box.
+inline bool covers_a_centre(const SetupTriangle& t) {
+  for (int y = t.min_y; y <= t.max_y; ++y) {
+    for (int x = t.min_x; x <= t.max_x; ++x) {
+      if (edge_at_centre(t, 0, x, y) >= 0 && edge_at_centre(t, 1, x, y) >= 0 &&
+          edge_at_centre(t, 2, x, y) >= 0) {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
 // Sets up one triangle (already clipped to the guard band and in front of the eye) of draw
 // `draw`. `front_facing` is its facing as decided before clipping; the snapped triangle is
-// dropped if it is degenerate or its snapped winding disagrees. Returns true if appended.
+// dropped if it is degenerate, its snapped winding disagrees or, small, it covers no pixel
+// centre (kProbedBoxSide). Returns true if appended.
 bool setup_triangle(PrimitiveSink& out, int width, int height, std::uint32_t draw,
                     const ClipVertex* const v[3], int varyings, bool front_facing);
 
@@ -167,6 +187,10 @@ bool setup_triangle(PrimitiveSink& out, int width, int height, std::uint32_t dra
     t.b[i] = q.x - p.x;
     const std::int64_t bias = is_top_left(q.x - p.x, q.y - p.y) ? 0 : -1;
     t.c[i] = -(std::int64_t{t.a[i]} * p.x + std::int64_t{t.b[i]} * p.y) + bias;
+  }
+  if (t.max_x - t.min_x < kProbedBoxSide && t.max_y - t.min_y < kProbedBoxSide &&
+      !covers_a_centre(t)) {
+    return false;
   }
 
   float px[3], py[3];

@@ -18,6 +18,7 @@
 
 #include "pipeline/chosen_target.hpp"
 #include "pipeline/fixed_point.hpp"
+#include "pipeline/setup.hpp"
 
 HWY_BEFORE_NAMESPACE();
 namespace facet::pipeline::HWY_NAMESPACE {
@@ -69,6 +70,42 @@ struct Coefficients {
     hn::StoreInterleaved3(v0, dx, dy, df, out);
   }
 };
+
+// covers_a_centre (setup.hpp) for the lanes in `probed`, whose boxes are at most
+// kProbedBoxSide pixels a side: whether each covers one of its box's pixel centres. The edge
+// functions (a, b, c as setup_projected_triangle makes them) at the centres, in double,
+// exactly: |a|, |b| <= 2^23, the centres are below 2^21 and |c| < 2^47 (see above).
+HWY_INLINE hn::Mask<IntTag> CoversACentre(const DoubleVec a[3], const DoubleVec b[3],
+                                          const DoubleVec c[3], IntVec box_x0, IntVec box_y0,
+                                          IntVec box_width, IntVec box_height) {
+  const DoubleTag dd;
+  const IntTag di;
+  const DoubleVec scale = hn::Set(dd, kSubpixelScale), half = hn::Set(dd, kHalfPixel);
+  const DoubleVec centre_x = hn::Add(hn::Mul(hn::PromoteTo(dd, box_x0), scale), half);
+  const DoubleVec centre_y = hn::Add(hn::Mul(hn::PromoteTo(dd, box_y0), scale), half);
+  const DoubleVec width = hn::PromoteTo(dd, box_width), height = hn::PromoteTo(dd, box_height);
+  DoubleVec row[3], step_x[3], step_y[3];
+  for (int i = 0; i < 3; ++i) {
+    row[i] = hn::Add(hn::Add(hn::Mul(a[i], centre_x), hn::Mul(b[i], centre_y)), c[i]);
+    step_x[i] = hn::Mul(a[i], scale), step_y[i] = hn::Mul(b[i], scale);
+  }
+  auto covered = hn::FirstN(dd, 0);  // none
+  for (int y = 0; y < kProbedBoxSide; ++y) {
+    DoubleVec e[3] = {row[0], row[1], row[2]};
+    const auto row_in_box = hn::Le(hn::Set(dd, y), height);
+    for (int x = 0; x < kProbedBoxSide; ++x) {
+      const auto inside = hn::And(hn::And(hn::Ge(e[0], hn::Zero(dd)), hn::Ge(e[1], hn::Zero(dd))),
+                                  hn::Ge(e[2], hn::Zero(dd)));
+      const auto in_box = hn::And(row_in_box, hn::Le(hn::Set(dd, x), width));
+      covered = hn::Or(covered, hn::And(inside, in_box));
+      for (int i = 0; i < 3; ++i) e[i] = hn::Add(e[i], step_x[i]);
+    }
+    for (int i = 0; i < 3; ++i) row[i] = hn::Add(row[i], step_y[i]);
+  }
+  // As 32-bit lanes: 1 or 0, converted.
+  const IntVec one_if_covered = hn::DemoteTo(di, hn::IfThenElseZero(covered, hn::Set(dd, 1.0)));
+  return hn::Ne(one_if_covered, hn::Zero(di));
+}
 
 int SetupBatchLanes(const SetupBatch& b, const SetupBatchTarget& target) {
   const DoubleTag dd;
@@ -132,22 +169,34 @@ int SetupBatchLanes(const SetupBatch& b, const SetupBatchTarget& target) {
     const IntVec box_x1 = hn::Min(last_x, last_centre(hn::Max(hn::Max(x[0], x[1]), x[2])));
     const IntVec box_y1 = hn::Min(last_y, last_centre(hn::Max(hn::Max(y[0], y[1]), y[2])));
     keep = hn::AndNot(hn::Or(hn::Gt(box_x0, box_x1), hn::Gt(box_y0, box_y1)), keep);
-    hn::Store(hn::VecFromMask(di, keep), di, kept);
     hn::Store(box_x0, di, min_x), hn::Store(box_y0, di, min_y);
     hn::Store(box_x1, di, max_x), hn::Store(box_y1, di, max_y);
 
     // Edge i from p = vertex i to q = vertex i + 1: a = p.y - q.y, b = q.x - p.x, and c with
     // the fill rule's bias: -1 unless the edge is top (a = 0, b > 0) or left (a > 0).
+    DoubleVec edge_a[3], edge_b[3], edge_c[3];
     for (int i = 0; i < 3; ++i) {
       const int j = (i + 1) % 3;
       const IntVec ai = hn::Sub(y[i], y[j]), bi = hn::Sub(x[j], x[i]);
       const auto top_left = hn::Or(hn::Gt(ai, zero), hn::And(hn::Eq(ai, zero), hn::Gt(bi, zero)));
       const IntVec bias = hn::VecFromMask(di, hn::Not(top_left));
-      const DoubleVec products = hn::Add(hn::Mul(hn::PromoteTo(dd, ai), hn::PromoteTo(dd, x[i])),
-                                         hn::Mul(hn::PromoteTo(dd, bi), hn::PromoteTo(dd, y[i])));
+      edge_a[i] = hn::PromoteTo(dd, ai), edge_b[i] = hn::PromoteTo(dd, bi);
+      const DoubleVec products = hn::Add(hn::Mul(edge_a[i], hn::PromoteTo(dd, x[i])),
+                                         hn::Mul(edge_b[i], hn::PromoteTo(dd, y[i])));
+      edge_c[i] = hn::Sub(hn::PromoteTo(dd, bias), products);
       hn::Store(ai, di, a[i]), hn::Store(bi, di, bx[i]);
-      hn::Store(hn::ConvertTo(dl, hn::Sub(hn::PromoteTo(dd, bias), products)), dl, c[i]);
+      hn::Store(hn::ConvertTo(dl, edge_c[i]), dl, c[i]);
     }
+    // Small triangles covering no pixel centre: dropped.
+    const IntVec box_width = hn::Sub(box_x1, box_x0), box_height = hn::Sub(box_y1, box_y0);
+    const auto probed = hn::And(keep, hn::And(hn::Lt(box_width, hn::Set(di, kProbedBoxSide)),
+                                              hn::Lt(box_height, hn::Set(di, kProbedBoxSide))));
+    if (!hn::AllFalse(di, probed)) {
+      const auto covers =
+          CoversACentre(edge_a, edge_b, edge_c, box_x0, box_y0, box_width, box_height);
+      keep = hn::AndNot(hn::AndNot(covers, probed), keep);
+    }
+    hn::Store(hn::VecFromMask(di, keep), di, kept);
 
     // PlaneSolver over the vertices in pixels, and the depth and 1 / w planes.
     FloatVec px[3], py[3];

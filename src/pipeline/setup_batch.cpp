@@ -15,6 +15,7 @@
 #include <hwy/highway.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "pipeline/chosen_target.hpp"
 #include "pipeline/fixed_point.hpp"
@@ -72,39 +73,50 @@ struct Coefficients {
 };
 
 // covers_a_centre (setup.hpp) for the lanes in `probed`, whose boxes are at most
-// kProbedBoxSide pixels a side: whether each covers one of its box's pixel centres. The edge
-// functions (a, b, c as setup_projected_triangle makes them) at the centres, in double,
-// exactly: |a|, |b| <= 2^23, the centres are below 2^21 and |c| < 2^47 (see above).
+// kProbedBoxSide pixels a side: whether each covers one of its box's pixel centres, that is
+// whether the largest, over those centres, of the smallest of the three edge functions is at
+// least 0. The edge functions (a, b, c as setup_projected_triangle makes them) in double,
+// exactly: |a|, |b| <= 2^23, the centres are below 2^21 and |c| < 2^47 (see above). The
+// centres visited are the largest probed box's; those past a lane's own box count as -inf.
+// (Min and max, not comparisons per centre and edge: the probe was a fifth of the kernel.)
 HWY_INLINE hn::Mask<IntTag> CoversACentre(const DoubleVec a[3], const DoubleVec b[3],
                                           const DoubleVec c[3], IntVec box_x0, IntVec box_y0,
-                                          IntVec box_width, IntVec box_height) {
+                                          IntVec box_width, IntVec box_height,
+                                          hn::Mask<IntTag> probed) {
   const DoubleTag dd;
   const IntTag di;
+  const int columns = hn::GetLane(hn::MaxOfLanes(di, hn::IfThenElseZero(probed, box_width))) + 1;
+  const int rows = hn::GetLane(hn::MaxOfLanes(di, hn::IfThenElseZero(probed, box_height))) + 1;
   const DoubleVec scale = hn::Set(dd, kSubpixelScale), half = hn::Set(dd, kHalfPixel);
   const DoubleVec centre_x = hn::Add(hn::Mul(hn::PromoteTo(dd, box_x0), scale), half);
   const DoubleVec centre_y = hn::Add(hn::Mul(hn::PromoteTo(dd, box_y0), scale), half);
   const DoubleVec width = hn::PromoteTo(dd, box_width), height = hn::PromoteTo(dd, box_height);
+  const DoubleVec in = hn::Set(dd, HUGE_VAL), out = hn::Set(dd, -HUGE_VAL);
+  // +inf for a column in the lane's box, -inf past it.
+  DoubleVec column_limit[kProbedBoxSide];
+  for (int x = 0; x < columns; ++x) {
+    column_limit[x] = hn::IfThenElse(hn::Le(hn::Set(dd, x), width), in, out);
+  }
   DoubleVec row[3], step_x[3], step_y[3];
   for (int i = 0; i < 3; ++i) {
     row[i] = hn::Add(hn::Add(hn::Mul(a[i], centre_x), hn::Mul(b[i], centre_y)), c[i]);
     step_x[i] = hn::Mul(a[i], scale), step_y[i] = hn::Mul(b[i], scale);
   }
-  auto covered = hn::FirstN(dd, 0);  // none
-  for (int y = 0; y < kProbedBoxSide; ++y) {
-    DoubleVec e[3] = {row[0], row[1], row[2]};
-    const auto row_in_box = hn::Le(hn::Set(dd, y), height);
-    for (int x = 0; x < kProbedBoxSide; ++x) {
-      const auto inside = hn::And(hn::And(hn::Ge(e[0], hn::Zero(dd)), hn::Ge(e[1], hn::Zero(dd))),
-                                  hn::Ge(e[2], hn::Zero(dd)));
-      const auto in_box = hn::And(row_in_box, hn::Le(hn::Set(dd, x), width));
-      covered = hn::Or(covered, hn::And(inside, in_box));
+  DoubleVec best = out;
+  for (int y = 0; y < rows; ++y) {
+    // A row past the lane's box: -inf in edge 0, which steps along the row keep.
+    DoubleVec e[3] = {hn::Min(row[0], hn::IfThenElse(hn::Le(hn::Set(dd, y), height), in, out)),
+                      row[1], row[2]};
+    for (int x = 0; x < columns; ++x) {
+      const DoubleVec smallest = hn::Min(hn::Min(e[0], e[1]), hn::Min(e[2], column_limit[x]));
+      best = hn::Max(best, smallest);
       for (int i = 0; i < 3; ++i) e[i] = hn::Add(e[i], step_x[i]);
     }
     for (int i = 0; i < 3; ++i) row[i] = hn::Add(row[i], step_y[i]);
   }
   // As 32-bit lanes: 1 or 0, converted.
-  const IntVec one_if_covered = hn::DemoteTo(di, hn::IfThenElseZero(covered, hn::Set(dd, 1.0)));
-  return hn::Ne(one_if_covered, hn::Zero(di));
+  const DoubleVec one_if_covered = hn::IfThenElseZero(hn::Ge(best, hn::Zero(dd)), hn::Set(dd, 1.0));
+  return hn::Ne(hn::DemoteTo(di, one_if_covered), hn::Zero(di));
 }
 
 int SetupBatchLanes(const SetupBatch& b, const SetupBatchTarget& target) {
@@ -193,7 +205,7 @@ int SetupBatchLanes(const SetupBatch& b, const SetupBatchTarget& target) {
                                               hn::Lt(box_height, hn::Set(di, kProbedBoxSide))));
     if (!hn::AllFalse(di, probed)) {
       const auto covers =
-          CoversACentre(edge_a, edge_b, edge_c, box_x0, box_y0, box_width, box_height);
+          CoversACentre(edge_a, edge_b, edge_c, box_x0, box_y0, box_width, box_height, probed);
       keep = hn::AndNot(hn::AndNot(covers, probed), keep);
     }
     hn::Store(hn::VecFromMask(di, keep), di, kept);

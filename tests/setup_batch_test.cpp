@@ -142,6 +142,20 @@ std::vector<Triangle> awkward_triangles(std::mt19937& rng, std::uint32_t vertice
     const bool clockwise = pipeline::signed_area(t.s[0], t.s[1], t.s[2]) > 0;
     t.front_facing = (rng() % 8 == 0) == clockwise;
   }
+  // Long slivers whose pixel boxes the frame's corners clamp to one pixel, whose centre they
+  // miss: small boxes, but not probed (they span more than kProbedSpan), so kept.
+  for (int corner = 0; corner < 2; ++corner) {
+    Triangle t{};
+    const int far = -1000 * kScale;
+    const int xs[3] = {far, kScale, far}, ys[3] = {kScale * 6 / 10, far, far};
+    for (int i = 0; i < 3; ++i) {
+      t.s[i].x = corner == 0 ? xs[i] : kWidth * kScale - xs[i];
+      t.s[i].y = corner == 0 ? ys[i] : kHeight * kScale - ys[i];
+      t.s[i].z = 0.5f, t.s[i].inv_w = 1.0f;
+    }
+    t.front_facing = pipeline::signed_area(t.s[0], t.s[1], t.s[2]) < 0;
+    out.push_back(t);
+  }
   return out;
 }
 

@@ -125,7 +125,11 @@ inline int last_centre_at_or_before(std::int64_t hi) {
 // cover none of its pixel centres (covers_a_centre): they would draw nothing, yet be written,
 // binned and visited by every tile they touch. In `million`, 16 % of the small triangles'
 // tile visits found no pixel, their boxes 3.5 pixels on average.
-inline constexpr int kProbedBoxSide = 6;
+inline constexpr int kProbedBoxSide = 4;
+// ... and whose vertices span less than this many fixed-point units (64 pixels) a side, which
+// a box of at most kProbedBoxSide centres a side does unless the frame's edge clamped it: the
+// batch kernel's probe then computes in 32 bits (setup_batch.cpp).
+inline constexpr std::int32_t kProbedSpan = 1 << 14;
 
 // Whether triangle t, its edges and pixel box set, covers the centre of a pixel of its box.
 inline bool covers_a_centre(const SetupTriangle& t) {
@@ -189,7 +193,7 @@ bool setup_triangle(PrimitiveSink& out, int width, int height, std::uint32_t dra
     t.c[i] = -(std::int64_t{t.a[i]} * p.x + std::int64_t{t.b[i]} * p.y) + bias;
   }
   if (t.max_x - t.min_x < kProbedBoxSide && t.max_y - t.min_y < kProbedBoxSide &&
-      !covers_a_centre(t)) {
+      max_x - min_x < kProbedSpan && max_y - min_y < kProbedSpan && !covers_a_centre(t)) {
     return false;
   }
 

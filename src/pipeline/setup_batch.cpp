@@ -15,7 +15,7 @@
 #include <hwy/highway.h>
 
 #include <algorithm>
-#include <cmath>
+#include <limits>
 
 #include "pipeline/chosen_target.hpp"
 #include "pipeline/fixed_point.hpp"
@@ -73,50 +73,48 @@ struct Coefficients {
 };
 
 // covers_a_centre (setup.hpp) for the lanes in `probed`, whose boxes are at most
-// kProbedBoxSide pixels a side: whether each covers one of its box's pixel centres, that is
-// whether the largest, over those centres, of the smallest of the three edge functions is at
-// least 0. The edge functions (a, b, c as setup_projected_triangle makes them) in double,
-// exactly: |a|, |b| <= 2^23, the centres are below 2^21 and |c| < 2^47 (see above). The
-// centres visited are the largest probed box's; those past a lane's own box count as -inf.
-// (Min and max, not comparisons per centre and edge: the probe was a fifth of the kernel.)
-HWY_INLINE hn::Mask<IntTag> CoversACentre(const DoubleVec a[3], const DoubleVec b[3],
-                                          const DoubleVec c[3], IntVec box_x0, IntVec box_y0,
-                                          IntVec box_width, IntVec box_height,
+// kProbedBoxSide pixels a side and whose triangles span less than kProbedSpan: whether each
+// covers one of its box's pixel centres, that is whether at one of them no edge function is
+// negative. Edge i from vertex (x_i, y_i) at centre (X, Y) is a_i (X - x_i) + b_i (Y - y_i) +
+// bias_i, the value a_i X + b_i Y + c_i setup_projected_triangle's c gives, exactly in 32
+// bits: |a|, |b| and |X - x_i| stay below 2^15, the products below 2^30. The centres visited
+// are the largest probed box's; the sign bit marks those past a lane's own box. (Comparisons
+// per centre and edge in double made the probe a fifth of the kernel.)
+HWY_INLINE hn::Mask<IntTag> CoversACentre(const IntVec x[3], const IntVec y[3], const IntVec a[3],
+                                          const IntVec b[3], const IntVec bias[3], IntVec box_x0,
+                                          IntVec box_y0, IntVec box_width, IntVec box_height,
                                           hn::Mask<IntTag> probed) {
-  const DoubleTag dd;
   const IntTag di;
   const int columns = hn::GetLane(hn::MaxOfLanes(di, hn::IfThenElseZero(probed, box_width))) + 1;
   const int rows = hn::GetLane(hn::MaxOfLanes(di, hn::IfThenElseZero(probed, box_height))) + 1;
-  const DoubleVec scale = hn::Set(dd, kSubpixelScale), half = hn::Set(dd, kHalfPixel);
-  const DoubleVec centre_x = hn::Add(hn::Mul(hn::PromoteTo(dd, box_x0), scale), half);
-  const DoubleVec centre_y = hn::Add(hn::Mul(hn::PromoteTo(dd, box_y0), scale), half);
-  const DoubleVec width = hn::PromoteTo(dd, box_width), height = hn::PromoteTo(dd, box_height);
-  const DoubleVec in = hn::Set(dd, HUGE_VAL), out = hn::Set(dd, -HUGE_VAL);
-  // +inf for a column in the lane's box, -inf past it.
-  DoubleVec column_limit[kProbedBoxSide];
-  for (int x = 0; x < columns; ++x) {
-    column_limit[x] = hn::IfThenElse(hn::Le(hn::Set(dd, x), width), in, out);
+  const IntVec half = hn::Set(di, kHalfPixel);
+  const IntVec centre_x = hn::Add(hn::ShiftLeft<kSubpixelBits>(box_x0), half);
+  const IntVec centre_y = hn::Add(hn::ShiftLeft<kSubpixelBits>(box_y0), half);
+  const IntVec outside = hn::Set(di, std::numeric_limits<std::int32_t>::min());
+  IntVec column_limit[kProbedBoxSide];  // the sign bit past the lane's box, else 0
+  for (int column = 0; column < columns; ++column) {
+    column_limit[column] = hn::IfThenElseZero(hn::Gt(hn::Set(di, column), box_width), outside);
   }
-  DoubleVec row[3], step_x[3], step_y[3];
+  IntVec row[3], step_x[3], step_y[3];
   for (int i = 0; i < 3; ++i) {
-    row[i] = hn::Add(hn::Add(hn::Mul(a[i], centre_x), hn::Mul(b[i], centre_y)), c[i]);
-    step_x[i] = hn::Mul(a[i], scale), step_y[i] = hn::Mul(b[i], scale);
+    row[i] = hn::Add(
+        hn::Add(hn::Mul(a[i], hn::Sub(centre_x, x[i])), hn::Mul(b[i], hn::Sub(centre_y, y[i]))),
+        bias[i]);
+    step_x[i] = hn::ShiftLeft<kSubpixelBits>(a[i]), step_y[i] = hn::ShiftLeft<kSubpixelBits>(b[i]);
   }
-  DoubleVec best = out;
-  for (int y = 0; y < rows; ++y) {
-    // A row past the lane's box: -inf in edge 0, which steps along the row keep.
-    DoubleVec e[3] = {hn::Min(row[0], hn::IfThenElse(hn::Le(hn::Set(dd, y), height), in, out)),
-                      row[1], row[2]};
-    for (int x = 0; x < columns; ++x) {
-      const DoubleVec smallest = hn::Min(hn::Min(e[0], e[1]), hn::Min(e[2], column_limit[x]));
-      best = hn::Max(best, smallest);
+  // The sign bit stays set in a lane while every centre so far has a negative edge.
+  IntVec all_outside = hn::Set(di, -1);
+  for (int r = 0; r < rows; ++r) {
+    IntVec e[3] = {row[0], row[1], row[2]};
+    IntVec row_outside = hn::IfThenElseZero(hn::Gt(hn::Set(di, r), box_height), outside);
+    for (int column = 0; column < columns; ++column) {
+      const IntVec signs = hn::Or(hn::Or(e[0], e[1]), hn::Or(e[2], column_limit[column]));
+      all_outside = hn::And(all_outside, hn::Or(signs, row_outside));
       for (int i = 0; i < 3; ++i) e[i] = hn::Add(e[i], step_x[i]);
     }
     for (int i = 0; i < 3; ++i) row[i] = hn::Add(row[i], step_y[i]);
   }
-  // As 32-bit lanes: 1 or 0, converted.
-  const DoubleVec one_if_covered = hn::IfThenElseZero(hn::Ge(best, hn::Zero(dd)), hn::Set(dd, 1.0));
-  return hn::Ne(hn::DemoteTo(di, one_if_covered), hn::Zero(di));
+  return hn::Not(hn::Lt(all_outside, hn::Zero(di)));
 }
 
 int SetupBatchLanes(const SetupBatch& b, const SetupBatchTarget& target) {
@@ -176,36 +174,40 @@ int SetupBatchLanes(const SetupBatch& b, const SetupBatchTarget& target) {
     const auto last_centre = [&](IntVec hi) {
       return hn::ShiftRight<kSubpixelBits>(hn::Sub(hi, hn::Set(di, kHalfPixel)));
     };
-    const IntVec box_x0 = hn::Max(zero, first_centre(hn::Min(hn::Min(x[0], x[1]), x[2])));
-    const IntVec box_y0 = hn::Max(zero, first_centre(hn::Min(hn::Min(y[0], y[1]), y[2])));
-    const IntVec box_x1 = hn::Min(last_x, last_centre(hn::Max(hn::Max(x[0], x[1]), x[2])));
-    const IntVec box_y1 = hn::Min(last_y, last_centre(hn::Max(hn::Max(y[0], y[1]), y[2])));
+    const IntVec low_x = hn::Min(hn::Min(x[0], x[1]), x[2]);
+    const IntVec low_y = hn::Min(hn::Min(y[0], y[1]), y[2]);
+    const IntVec high_x = hn::Max(hn::Max(x[0], x[1]), x[2]);
+    const IntVec high_y = hn::Max(hn::Max(y[0], y[1]), y[2]);
+    const IntVec box_x0 = hn::Max(zero, first_centre(low_x));
+    const IntVec box_y0 = hn::Max(zero, first_centre(low_y));
+    const IntVec box_x1 = hn::Min(last_x, last_centre(high_x));
+    const IntVec box_y1 = hn::Min(last_y, last_centre(high_y));
     keep = hn::AndNot(hn::Or(hn::Gt(box_x0, box_x1), hn::Gt(box_y0, box_y1)), keep);
     hn::Store(box_x0, di, min_x), hn::Store(box_y0, di, min_y);
     hn::Store(box_x1, di, max_x), hn::Store(box_y1, di, max_y);
 
     // Edge i from p = vertex i to q = vertex i + 1: a = p.y - q.y, b = q.x - p.x, and c with
     // the fill rule's bias: -1 unless the edge is top (a = 0, b > 0) or left (a > 0).
-    DoubleVec edge_a[3], edge_b[3], edge_c[3];
+    IntVec edge_a[3], edge_b[3], bias[3];
     for (int i = 0; i < 3; ++i) {
       const int j = (i + 1) % 3;
       const IntVec ai = hn::Sub(y[i], y[j]), bi = hn::Sub(x[j], x[i]);
       const auto top_left = hn::Or(hn::Gt(ai, zero), hn::And(hn::Eq(ai, zero), hn::Gt(bi, zero)));
-      const IntVec bias = hn::VecFromMask(di, hn::Not(top_left));
-      edge_a[i] = hn::PromoteTo(dd, ai), edge_b[i] = hn::PromoteTo(dd, bi);
-      const DoubleVec products = hn::Add(hn::Mul(edge_a[i], hn::PromoteTo(dd, x[i])),
-                                         hn::Mul(edge_b[i], hn::PromoteTo(dd, y[i])));
-      edge_c[i] = hn::Sub(hn::PromoteTo(dd, bias), products);
+      edge_a[i] = ai, edge_b[i] = bi, bias[i] = hn::VecFromMask(di, hn::Not(top_left));
+      const DoubleVec products = hn::Add(hn::Mul(hn::PromoteTo(dd, ai), hn::PromoteTo(dd, x[i])),
+                                         hn::Mul(hn::PromoteTo(dd, bi), hn::PromoteTo(dd, y[i])));
       hn::Store(ai, di, a[i]), hn::Store(bi, di, bx[i]);
-      hn::Store(hn::ConvertTo(dl, edge_c[i]), dl, c[i]);
+      hn::Store(hn::ConvertTo(dl, hn::Sub(hn::PromoteTo(dd, bias[i]), products)), dl, c[i]);
     }
     // Small triangles covering no pixel centre: dropped.
     const IntVec box_width = hn::Sub(box_x1, box_x0), box_height = hn::Sub(box_y1, box_y0);
-    const auto probed = hn::And(keep, hn::And(hn::Lt(box_width, hn::Set(di, kProbedBoxSide)),
-                                              hn::Lt(box_height, hn::Set(di, kProbedBoxSide))));
+    const IntVec side = hn::Set(di, kProbedBoxSide), span = hn::Set(di, kProbedSpan);
+    const auto probed = hn::And(
+        hn::And(keep, hn::And(hn::Lt(box_width, side), hn::Lt(box_height, side))),
+        hn::And(hn::Lt(hn::Sub(high_x, low_x), span), hn::Lt(hn::Sub(high_y, low_y), span)));
     if (!hn::AllFalse(di, probed)) {
       const auto covers =
-          CoversACentre(edge_a, edge_b, edge_c, box_x0, box_y0, box_width, box_height, probed);
+          CoversACentre(x, y, edge_a, edge_b, bias, box_x0, box_y0, box_width, box_height, probed);
       keep = hn::AndNot(hn::AndNot(covers, probed), keep);
     }
     hn::Store(hn::VecFromMask(di, keep), di, kept);

@@ -71,7 +71,7 @@ TEST(Islands, BuildsWithItsMovingPartsAndIsRegistered) {
 }
 
 // At the size `make run` renders it. (Triangles covering no pixel centre are not drawn: at
-// 1280 x 720, 94,741 of the start view's triangles cover one.)
+// 1280 x 720, about 95,000 of the start view's triangles cover one.)
 TEST(Islands, StartViewDrawsAtLeast100kTriangles) {
   EXPECT_GE(world().scene.triangle_count(), 100000u);
   const Frame frame = render(world().scene, 1920, 1080);

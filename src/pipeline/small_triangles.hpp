@@ -69,6 +69,16 @@ struct WaitingPixels {
   alignas(64) float slopes[shading::TexelBatch::kSlopes][PackedPixels::kCapacity];
   std::uint32_t draw = 0;
   void (*flush)(TileContext&) = nullptr;  // shades and writes them; null: none wait
+  // Each waiting triangle's run of pixels, in order. Their varyings are interpolated when they
+  // are shaded (write_waiting), not as each triangle's pixels are found: read right after the
+  // search stored them, the positions' loads spanned several of its row stores and waited for
+  // them to retire.
+  struct Run {
+    const SetupTriangle* triangle;
+    int first, count;
+  };
+  Run runs[PackedPixels::kCapacity];
+  int run_count = 0;
 };
 
 // Boxes of at most this many pixels join the waiting pixels in one piece: interpolate_pixels
@@ -103,6 +113,14 @@ template <class Shading, AlphaMode kAlpha>
 void write_waiting(TileContext& tile) {
   WaitingPixels& waiting = *tile.waiting;
   PackedPixels& pixels = waiting.pixels;
+  const Plane* planes = tile.frame->planes.data();
+  for (int r = 0; r < waiting.run_count; ++r) {
+    const WaitingPixels::Run& run = waiting.runs[r];
+    tile.kernels.interpolate_pixels(*run.triangle, planes + run.triangle->varying_planes,
+                                    Shading::kVaryings, run.first, run.count, pixels.x, pixels.y,
+                                    pixels.w, pixels.v);
+  }
+  waiting.run_count = 0;
   for (int n = pixels.count; n % 8 != 0; ++n) {  // read by the SIMD sampler, then ignored
     for (auto& slope : waiting.slopes) slope[n] = 0.0f;
   }
@@ -144,11 +162,9 @@ void add_waiting_band(TileContext& tile, const SetupTriangle& t, int x0, int y0,
     first = 0;
   }
   pixels.count = first + found;
-  const Plane* planes = tile.frame->planes.data() + t.varying_planes;
-  tile.kernels.interpolate_pixels(t, planes, Shading::kVaryings, first, found, pixels.x, pixels.y,
-                                  pixels.w, pixels.v);
+  waiting.runs[waiting.run_count++] = {&t, first, found};
   if constexpr (base_color_texcoord<Shading>() >= 0) {
-    const Plane* uv = planes + base_color_texcoord<Shading>();
+    const Plane* uv = tile.frame->planes.data() + t.varying_planes + base_color_texcoord<Shading>();
     const float slopes[shading::TexelBatch::kSlopes] = {uv[0].dx, uv[1].dx,   uv[0].dy,
                                                         uv[1].dy, t.inv_w.dx, t.inv_w.dy};
     // Whole runs of eight (vector stores, no remainder loop): the entries past the last pixel

@@ -69,13 +69,13 @@ struct WaitingPixels {
   alignas(64) float slopes[shading::TexelBatch::kSlopes][PackedPixels::kCapacity];
   std::uint32_t draw = 0;
   void (*flush)(TileContext&) = nullptr;  // shades and writes them; null: none wait
-  // Each waiting triangle's run of pixels, in order. Their varyings are interpolated when they
-  // are shaded (write_waiting), not as each triangle's pixels are found: read right after the
-  // search stored them, the positions' loads spanned several of its row stores and waited for
-  // them to retire.
+  // Each waiting triangle and its number of pixels, in order: each run of pixels starts where
+  // the one before ends. Their varyings are interpolated when they are shaded (write_waiting),
+  // not as each triangle's pixels are found: read right after the search stored them, the
+  // positions' loads spanned several of its row stores and waited for them to retire.
   struct Run {
     const SetupTriangle* triangle;
-    int first, count;
+    int count;
   };
   Run runs[PackedPixels::kCapacity];
   int run_count = 0;
@@ -114,10 +114,10 @@ void write_waiting(TileContext& tile) {
   WaitingPixels& waiting = *tile.waiting;
   PackedPixels& pixels = waiting.pixels;
   const Plane* planes = tile.frame->planes.data();
-  for (int r = 0; r < waiting.run_count; ++r) {
+  for (int r = 0, first = 0; r < waiting.run_count; first += waiting.runs[r++].count) {
     const WaitingPixels::Run& run = waiting.runs[r];
     tile.kernels.interpolate_pixels(*run.triangle, planes + run.triangle->varying_planes,
-                                    Shading::kVaryings, run.first, run.count, pixels.x, pixels.y,
+                                    Shading::kVaryings, first, run.count, pixels.x, pixels.y,
                                     pixels.w, pixels.v);
   }
   waiting.run_count = 0;
@@ -162,7 +162,7 @@ void add_waiting_band(TileContext& tile, const SetupTriangle& t, int x0, int y0,
     first = 0;
   }
   pixels.count = first + found;
-  waiting.runs[waiting.run_count++] = {&t, first, found};
+  waiting.runs[waiting.run_count++] = {&t, found};
   if constexpr (base_color_texcoord<Shading>() >= 0) {
     const Plane* uv = tile.frame->planes.data() + t.varying_planes + base_color_texcoord<Shading>();
     const float slopes[shading::TexelBatch::kSlopes] = {uv[0].dx, uv[1].dx,   uv[0].dy,

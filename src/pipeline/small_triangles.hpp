@@ -114,11 +114,13 @@ void write_waiting(TileContext& tile) {
   WaitingPixels& waiting = *tile.waiting;
   PackedPixels& pixels = waiting.pixels;
   const Plane* planes = tile.frame->planes.data();
-  for (int r = 0, first = 0; r < waiting.run_count; first += waiting.runs[r++].count) {
+  int first = 0;  // each run starts where the one before ends
+  for (int r = 0; r < waiting.run_count; ++r) {
     const WaitingPixels::Run& run = waiting.runs[r];
     tile.kernels.interpolate_pixels(*run.triangle, planes + run.triangle->varying_planes,
                                     Shading::kVaryings, first, run.count, pixels.x, pixels.y,
                                     pixels.w, pixels.v);
+    first += run.count;
   }
   waiting.run_count = 0;
   for (int n = pixels.count; n % 8 != 0; ++n) {  // read by the SIMD sampler, then ignored

@@ -1,6 +1,7 @@
 // The small-triangle path's SIMD pixel search (find_box_pixels, block_raster.hpp) finds, on every
 // SIMD target, exactly the pixels of a box whose centres the 64-bit edge functions put inside
-// the triangle and whose depth passes the test, with the depths evaluate() gives: for small
+// the triangle and whose depth passes the test, and interpolate_pixels then gives them the
+// depths evaluate() gives (the depths the search tested, computed again): for small
 // triangles over their own box, and for big ones over a small box (as when a big triangle's box
 // in a tile is a few pixels at the tile's corner), where the 32-bit edge values are clamped.
 #include <gtest/gtest.h>
@@ -67,10 +68,12 @@ std::vector<Found> expected(const SetupTriangle& t, int x0, int y0, int width, i
 std::vector<Found> found(const SetupTriangle& t, int x0, int y0, int width, int height,
                          const std::vector<float>& depth, int stride) {
   constexpr int kRoom = pipeline::kBlockPixels + pipeline::kBoxSearchSlack;
-  std::int16_t xs[kRoom], ys[kRoom];
-  float zs[kRoom];
-  const int n = pipeline::raster_kernels().find_box_pixels(t, x0, y0, width, height, depth.data(),
-                                                           stride, true, xs, ys, zs);
+  std::int16_t xs[kRoom] = {}, ys[kRoom] = {};
+  alignas(64) float zs[pipeline::kBlockPixels], ws[pipeline::kBlockPixels];
+  const pipeline::RasterKernels kernels = pipeline::raster_kernels();
+  const int n =
+      kernels.find_box_pixels(t, x0, y0, width, height, depth.data(), stride, true, xs, ys);
+  kernels.interpolate_pixels(t, nullptr, 0, 0, n, xs, ys, zs, ws, nullptr);
   std::vector<Found> out;
   for (int k = 0; k < n; ++k) out.push_back({xs[k], ys[k], zs[k]});
   std::sort(out.begin(), out.end());  // rows of boxes over eight wide come a vector at a time

@@ -96,8 +96,8 @@ void CoverBlock(const BlockInput& in, BlockFragments& out) {
 }
 
 void InterpolatePixels(const SetupTriangle& t, const Plane* planes, int varyings, int first,
-                       int count, const std::int16_t* xs, const std::int16_t* ys, float* w,
-                       float (*v)[kBlockPixels]) {
+                       int count, const std::int16_t* xs, const std::int16_t* ys, float* z,
+                       float* w, float (*v)[kBlockPixels]) {
   const FloatTag df;
   const IntTag di;
   const hn::Rebind<std::int16_t, FloatTag> d16;
@@ -113,6 +113,7 @@ void InterpolatePixels(const SetupTriangle& t, const Plane* planes, int varyings
       const auto row = hn::Add(hn::Set(df, p.at_ref), hn::Mul(hn::Set(df, p.dy), relative_y));
       return hn::Add(row, hn::Mul(hn::Set(df, p.dx), relative_x));
     };
+    hn::StoreU(evaluate(t.z), df, z + j);
     const auto clip_w = hn::Div(hn::Set(df, 1.0f), evaluate(t.inv_w));
     hn::StoreU(clip_w, df, w + j);
     for (int k = 0; k < varyings; ++k)
@@ -125,7 +126,7 @@ void InterpolatePixels(const SetupTriangle& t, const Plane* planes, int varyings
 template <class DF>
 HWY_INLINE int FindBoxRows(DF df, const SetupTriangle& t, const std::int32_t e_first[3], int x0,
                            int y0, int width, int height, const float* depth, int depth_stride,
-                           bool depth_test, std::int16_t* xs, std::int16_t* ys, float* zs) {
+                           bool depth_test, std::int16_t* xs, std::int16_t* ys) {
   const hn::RebindToSigned<DF> di;
   const hn::Rebind<std::int16_t, DF> d16;
   const int lanes = static_cast<int>(hn::Lanes(df));
@@ -161,7 +162,6 @@ HWY_INLINE int FindBoxRows(DF df, const SetupTriangle& t, const std::int32_t e_f
         pass = hn::And(pass, hn::Lt(z, hn::LoadU(df, depth_row)));  // NaN fails
       }
       const auto n = hn::CountTrue(df, pass);
-      hn::StoreU(hn::Compress(z, pass), df, zs + count);
       hn::StoreU(hn::DemoteTo(d16, hn::Compress(frame_x, hn::RebindMask(di, pass))), d16,
                  xs + count);
       hn::StoreU(hn::Set(d16, static_cast<std::int16_t>(y)), d16, ys + count);
@@ -172,8 +172,7 @@ HWY_INLINE int FindBoxRows(DF df, const SetupTriangle& t, const std::int32_t e_f
 }
 
 int FindBoxPixels(const SetupTriangle& t, int x0, int y0, int width, int height, const float* depth,
-                  int depth_stride, bool depth_test, std::int16_t* xs, std::int16_t* ys,
-                  float* zs) {
+                  int depth_stride, bool depth_test, std::int16_t* xs, std::int16_t* ys) {
   // Edge i at box pixel (dx, dy) is e[i] + a*dx + b*dy, as for blocks (block_raster.hpp): E
   // at the box's first pixel centre over 256, floored. With |a|, |b| <= 2^23 and dx, dy <= 63,
   // a*dx and b*dy stay within 2^29, so e clamped to +-2^30 keeps every sign and 32 bits hold
@@ -188,10 +187,10 @@ int FindBoxPixels(const SetupTriangle& t, int x0, int y0, int width, int height,
   // Rows of eight pixels at most in vectors of eight, wider ones in vectors of up to sixteen.
   if (width > kBlockSize) {
     return FindBoxRows(hn::CappedTag<float, 16>(), t, e_first, x0, y0, width, height, depth,
-                       depth_stride, depth_test, xs, ys, zs);
+                       depth_stride, depth_test, xs, ys);
   }
   return FindBoxRows(FloatTag(), t, e_first, x0, y0, width, height, depth, depth_stride, depth_test,
-                     xs, ys, zs);
+                     xs, ys);
 }
 
 const char* TargetName() { return hwy::TargetName(HWY_TARGET); }

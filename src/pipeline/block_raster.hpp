@@ -69,27 +69,30 @@ inline constexpr int kBoxSearchSlack = 16;
 struct RasterKernels {
   // Fills out for one block.
   void (*cover_block)(const BlockInput& in, BlockFragments& out);
-  // The small-triangle path's part of cover_block (raster.hpp): clip w and the perspective-
-  // correct varyings of `count` pixels of triangle t at frame pixels (x[n], y[n]), n = first
-  // ... first + count - 1, into w[n] and v[k][n], the same values cover_block gives. Computes
-  // whole vectors: entries up to first + the next multiple of 8 past count are written too
-  // (from x, y there, which must be readable), so that must stay within kBlockPixels.
+  // The small-triangle path's part of cover_block (raster.hpp): the depth, clip w and the
+  // perspective-correct varyings of `count` pixels of triangle t at frame pixels (x[n], y[n]),
+  // n = first ... first + count - 1, into z[n], w[n] and v[k][n], the same values cover_block
+  // gives. Computes whole vectors: entries up to first + the next multiple of 8 past count are
+  // written too (from x, y there, which must be readable), so that must stay within
+  // kBlockPixels.
   void (*interpolate_pixels)(const SetupTriangle& t, const Plane* varying_planes, int varyings,
                              int first, int count, const std::int16_t* x, const std::int16_t* y,
-                             float* w, float (*v)[kBlockPixels]);
+                             float* z, float* w, float (*v)[kBlockPixels]);
   // The small-triangle path's pixel search (small_triangles.hpp): the pixels of the box of
   // `width` x `height` pixels at frame pixel (x0, y0) whose centres triangle t covers and, if
   // depth_test, whose depth is less than the tile's there (`depth` points at the box's first
   // pixel, rows `depth_stride` floats apart, kDepthSlack readable floats after the last).
-  // Their positions and depths go to x[n], y[n], z[n] from n = 0; returns how many. Each row
-  // is stored as whole vectors, so up to kBoxSearchSlack entries past the last found are
-  // written too, with values of no use (the box's other pixels, or zeros): full stores, unlike
-  // masked ones, forward to the interpolation's loads right after (InterpolatePixels 14 %
-  // faster on million). The box holds at most kBlockPixels pixels. Same coverage as the
-  // 64-bit edge functions, same depths as evaluate_row and evaluate_in_row.
+  // Their positions go to x[n], y[n] from n = 0; returns how many. Each row is stored as whole
+  // vectors, so up to kBoxSearchSlack entries past the last found are written too, with values
+  // of no use (the box's other pixels, or zeros): full stores, unlike masked ones, forward to
+  // the interpolation's loads (InterpolatePixels 14 % faster on million). The box holds at
+  // most kBlockPixels pixels. Same coverage as the 64-bit edge functions, same depths as
+  // evaluate_row and evaluate_in_row. The depths it tests are not stored: interpolate_pixels
+  // computes them again, as it does w, with the same operations. (Compressing them too was a
+  // second compress per row, the search's largest cost.)
   int (*find_box_pixels)(const SetupTriangle& t, int x0, int y0, int width, int height,
                          const float* depth, int depth_stride, bool depth_test, std::int16_t* x,
-                         std::int16_t* y, float* z);
+                         std::int16_t* y);
 };
 RasterKernels raster_kernels();
 

@@ -102,11 +102,11 @@ constexpr bool batch_shaded() {
 struct PackedPixels {
   static constexpr int kCapacity = kBlockPixels;
   int count = 0;
-  // Positions and depths have room for as many again: a small triangle's pixels may be found
-  // past a full batch before they move to the front of the next (WaitingPixels); and for the
-  // whole vectors the search stores past the last it finds.
+  // Positions have room for as many again: a small triangle's pixels may be found past a full
+  // batch before they move to the front of the next (WaitingPixels); and for the whole vectors
+  // the search stores past the last it finds. Depths, like w, come from interpolate_pixels.
   std::int16_t x[2 * kCapacity + kBoxSearchSlack], y[2 * kCapacity + kBoxSearchSlack];
-  alignas(64) float z[2 * kCapacity + kBoxSearchSlack];
+  alignas(64) float z[kCapacity];
   alignas(64) float w[kCapacity];
   alignas(64) float v[kMaxVaryings][kCapacity];
 

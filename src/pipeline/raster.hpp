@@ -167,11 +167,10 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
           const int n = pixels.count++;
           pixels.x[n] = static_cast<std::int16_t>(block_x + i % kBlockSize);
           pixels.y[n] = static_cast<std::int16_t>(block_y + i / kBlockSize);
-          pixels.z[n] = block.z[i];
         }
         pixels.pad(0);  // interpolate_pixels reads whole vectors of positions
         tile.kernels.interpolate_pixels(t, out.fragment.planes, Shading::kVaryings, 0, pixels.count,
-                                        pixels.x, pixels.y, pixels.w, pixels.v);
+                                        pixels.x, pixels.y, pixels.z, pixels.w, pixels.v);
         written = out.shade(pixels);
       } else {
         for (std::uint64_t m = block.mask; m != 0; m &= m - 1) {

@@ -19,17 +19,16 @@ namespace facet::pipeline {
 inline constexpr int kSmallTrianglePixels = 64;
 
 // The covered pixels of the small triangle t's bounding box [x0, x1] x [y0, y1] (inclusive)
-// that pass the depth test: their positions and depths go to out.x, y, z from entry `first`
-// on; returns how many. Same arithmetic as cover_block, so the same pixels get the same
-// values; SIMD across a box row (find_box_pixels).
+// that pass the depth test: their positions go to out.x, y from entry `first` on (their depths
+// come with their interpolation); returns how many. Same arithmetic as cover_block, so the same
+// pixels get the same values; SIMD across a box row (find_box_pixels).
 template <class Shading>
 int find_small_pixels(const TileContext& tile, const SetupTriangle& t, int x0, int y0, int x1,
                       int y1, PackedPixels& out, int first) {
   const float* depth =
       tile.depth + static_cast<std::ptrdiff_t>(y0 - tile.y0) * tile.stride + (x0 - tile.x0);
   return tile.kernels.find_box_pixels(t, x0, y0, x1 - x0 + 1, y1 - y0 + 1, depth, tile.stride,
-                                      depth_tested<Shading>(), out.x + first, out.y + first,
-                                      out.z + first);
+                                      depth_tested<Shading>(), out.x + first, out.y + first);
 }
 
 // The loop over the bounding box [x0, x1] x [y0, y1] (inclusive), for small triangles: finds
@@ -44,7 +43,7 @@ void raster_small_triangle(TileContext& tile, const SetupTriangle& t, int x0, in
   if (found.count == 0) return;
   found.pad(0);  // interpolate_pixels reads whole vectors of positions
   tile.kernels.interpolate_pixels(t, out.fragment.planes, Shading::kVaryings, 0, found.count,
-                                  found.x, found.y, found.w, found.v);
+                                  found.x, found.y, found.z, found.w, found.v);
   out.shade(found);
 }
 
@@ -119,7 +118,7 @@ void write_waiting(TileContext& tile) {
     const WaitingPixels::Run& run = waiting.runs[r];
     tile.kernels.interpolate_pixels(*run.triangle, planes + run.triangle->varying_planes,
                                     Shading::kVaryings, first, run.count, pixels.x, pixels.y,
-                                    pixels.w, pixels.v);
+                                    pixels.z, pixels.w, pixels.v);
     first += run.count;
   }
   waiting.run_count = 0;
@@ -153,14 +152,11 @@ void add_waiting_band(TileContext& tile, const SetupTriangle& t, int x0, int y0,
   if (found == 0) return;
   if (first + found > kMaxWaitingBox) {
     std::int16_t x[kMaxWaitingBox], y[kMaxWaitingBox];
-    float z[kMaxWaitingBox];
     std::copy_n(pixels.x + first, found, x);
     std::copy_n(pixels.y + first, found, y);
-    std::copy_n(pixels.z + first, found, z);
     waiting.flush(tile);  // pads past what waited: over these
     std::copy_n(x, found, pixels.x);
     std::copy_n(y, found, pixels.y);
-    std::copy_n(z, found, pixels.z);
     first = 0;
   }
   pixels.count = first + found;

@@ -6,13 +6,18 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <glm/geometric.hpp>
+#include <set>
 #include <string>
+#include <tuple>
 
 #include "facet/image_io.hpp"
 #include "facet/renderer.hpp"
 #include "facet/scene.hpp"
+#include "scene/islands/kit.hpp"
 #include "support/golden.hpp"
 
 namespace facet::test {
@@ -122,6 +127,54 @@ TEST(Islands, PropellersAndWaterTurnAndFlow) {
   const glm::vec3 boat = w.boat_position();
   w.animate(3600.1);
   EXPECT_GT(glm::length(w.boat_position() - boat), 0.1f);
+}
+
+// The ground's levels of detail (SceneNode::coarser) have the same points along their chunk's
+// edges, so chunks drawn at different levels meet without cracks; and coarser levels have
+// fewer triangles. (Points under the sea are left out: the ground hidden there is not drawn.)
+TEST(Islands, GroundLevelsMeetAtTheChunkEdges) {
+  const Scene& scene = world().scene;
+  int ground_chunks = 0, with_levels = 0;
+  for (const SceneNode& node : scene.nodes) {
+    int i = 0, j = 0;
+    if (std::sscanf(node.name.c_str(), "ground %d,%d", &i, &j) != 2) continue;
+    ++ground_chunks;
+    if (node.coarser.empty()) continue;
+    ++with_levels;
+    const float chunk = islands::WorldBuilder::kChunk;
+    const float x0 = chunk * i, z0 = chunk * j, x1 = x0 + chunk, z1 = z0 + chunk;
+    auto on_edge = [&](glm::vec3 p) {
+      auto near = [](float a, float b) { return std::abs(a - b) < 1e-3f; };
+      return p.y > 0.0f && (near(p.x, x0) || near(p.x, x1) || near(p.z, z0) || near(p.z, z1));
+    };
+    auto edge_points = [&](const std::vector<MeshInstance>& instances) {
+      std::set<std::tuple<float, float, float>> points;
+      for (const MeshInstance& instance : instances) {
+        for (glm::vec3 p : scene.meshes[instance.mesh]->positions) {
+          if (on_edge(p)) points.insert({p.x, p.y, p.z});
+        }
+      }
+      return points;
+    };
+    auto triangles = [&](const std::vector<MeshInstance>& instances) {
+      std::size_t n = 0;
+      for (const MeshInstance& instance : instances)
+        n += scene.meshes[instance.mesh]->primitive_count();
+      return n;
+    };
+    const auto full = edge_points(node.instances);
+    std::size_t finer = triangles(node.instances);
+    for (const DetailLevel& level : node.coarser) {
+      ASSERT_EQ(edge_points(level.instances), full) << node.name << " from " << level.distance;
+      const std::size_t n = triangles(level.instances);
+      if (finer > 8) {  // (a chunk all but under the sea may keep its few)
+        EXPECT_LT(n, finer) << node.name << " from " << level.distance;
+      }
+      finer = n;
+    }
+  }
+  EXPECT_GT(ground_chunks, 100);
+  EXPECT_EQ(with_levels, ground_chunks);
 }
 
 TEST(Islands, StartViewMatchesGolden) {

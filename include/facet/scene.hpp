@@ -23,13 +23,6 @@ struct MeshInstance {
   int material = 0;  // index into Scene::materials
 };
 
-struct SceneNode {
-  std::string name;
-  glm::mat4 transform{1.0f};  // relative to the parent
-  int parent = -1;            // index into Scene::nodes, or -1 for a root; parents come first
-  std::vector<MeshInstance> instances;
-};
-
 // Axis-aligned bounds; empty when min > max.
 struct Bounds {
   glm::vec3 min{1e30f};
@@ -37,6 +30,30 @@ struct Bounds {
   bool empty() const { return min.x > max.x; }
   glm::vec3 centre() const { return (min + max) * 0.5f; }
   void add(glm::vec3 p);
+};
+
+// A coarser stand-in for a node's instances, drawn instead of them from `distance` away on.
+struct DetailLevel {
+  float distance = 0.0f;
+  std::vector<MeshInstance> instances;
+};
+
+struct SceneNode {
+  std::string name;
+  glm::mat4 transform{1.0f};  // relative to the parent
+  int parent = -1;            // index into Scene::nodes, or -1 for a root; parents come first
+  std::vector<MeshInstance> instances;
+  // Levels of detail, by increasing distance (none: `instances` from everywhere). The distance
+  // is the camera's eye to the nearest point of `detail_bounds` (node space, around every
+  // level), measured as if the field of view were 60 degrees: a narrower one, which magnifies,
+  // counts the node as nearer.
+  std::vector<DetailLevel> coarser;
+  Bounds detail_bounds;
+
+  // The instances to draw for a camera at `eye` with a vertical field of view of
+  // `fov_y_degrees`, the node's world transform being `world`.
+  const std::vector<MeshInstance>& instances_seen_from(const glm::mat4& world, glm::vec3 eye,
+                                                       float fov_y_degrees) const;
 };
 
 struct Scene {
@@ -69,7 +86,8 @@ Scene make_shapes_scene();
 std::vector<std::string> builtin_scene_names();
 Scene make_builtin_scene(const std::string& name);
 
-// Records every mesh instance of the scene (the scene must live until renderer.finish()).
+// Records every mesh instance of the scene (the scene must live until renderer.finish()), at
+// the level of detail each node has for the camera of renderer.begin_frame().
 void draw_scene(Renderer& renderer, const Scene& scene);
 
 // A camera that frames the whole scene from a pleasant three-quarter view: from the front

@@ -157,6 +157,8 @@ void Renderer::begin_frame(const Camera& camera) {
   begin_frame(camera, kDefaultLighting);
 }
 
+const Camera& Renderer::camera() const { return impl_->camera; }
+
 void Renderer::begin_frame(const Camera& camera, const Lighting& lighting) {
   camera.validate();
   impl_->camera = camera;

@@ -69,12 +69,36 @@ std::size_t Scene::triangle_count() const {
   return count;
 }
 
+const std::vector<MeshInstance>& SceneNode::instances_seen_from(const glm::mat4& world,
+                                                                glm::vec3 eye,
+                                                                float fov_y_degrees) const {
+  if (coarser.empty() || detail_bounds.empty()) return instances;
+  // The world-space box around the node-space one; the eye's nearest point in it.
+  Bounds box;
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::vec3 p((corner & 1) ? detail_bounds.max.x : detail_bounds.min.x,
+                      (corner & 2) ? detail_bounds.max.y : detail_bounds.min.y,
+                      (corner & 4) ? detail_bounds.max.z : detail_bounds.min.z);
+    box.add(glm::vec3(world * glm::vec4(p, 1.0f)));
+  }
+  const float tan_half_60 = std::tan(glm::radians(30.0f));
+  const float distance = glm::length(eye - glm::clamp(eye, box.min, box.max)) *
+                         std::tan(glm::radians(fov_y_degrees) * 0.5f) / tan_half_60;
+  const std::vector<MeshInstance>* chosen = &instances;
+  for (const DetailLevel& level : coarser) {
+    if (distance >= level.distance) chosen = &level.instances;
+  }
+  return *chosen;
+}
+
 void draw_scene(Renderer& renderer, const Scene& scene) {
+  const Camera& camera = renderer.camera();
   for (std::size_t n = 0; n < scene.nodes.size(); ++n) {
     const SceneNode& node = scene.nodes[n];
-    if (node.instances.empty()) continue;
+    if (node.instances.empty() && node.coarser.empty()) continue;
     glm::mat4 m = scene.world_transform(static_cast<int>(n));
-    for (const MeshInstance& instance : node.instances) {
+    for (const MeshInstance& instance :
+         node.instances_seen_from(m, camera.eye, camera.fov_y_degrees)) {
       renderer.draw(scene.meshes[instance.mesh], scene.materials[instance.material], m);
     }
   }

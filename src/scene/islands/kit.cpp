@@ -1,6 +1,7 @@
 // The world-builder kit (see kit.hpp): transforms, Model composition and the surface materials.
 #include "scene/islands/kit.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <glm/geometric.hpp>
@@ -9,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "facet/error.hpp"
 #include "facet/procedural.hpp"
 
 namespace facet::islands {
@@ -190,20 +192,45 @@ void WorldBuilder::place(const Model& model, const glm::mat4& where) {
   place_in_chunk(Model{}.add(model, where), {where[3].x, where[3].z});
 }
 
-Model& WorldBuilder::chunk(Chunks& chunks, glm::vec2 anchor) {
-  return chunks[{static_cast<int>(std::floor(anchor.x / kChunk)),
-                 static_cast<int>(std::floor(anchor.y / kChunk))}];
+WorldBuilder::ChunkKey WorldBuilder::chunk_key(glm::vec2 anchor) {
+  return {static_cast<int>(std::floor(anchor.x / kChunk)),
+          static_cast<int>(std::floor(anchor.y / kChunk))};
 }
 
 void WorldBuilder::place_in_chunk(const Model& model, glm::vec2 anchor) {
-  chunk(scenery_, anchor).add(model);
+  scenery_[chunk_key(anchor)].add(model);
 }
 
-void WorldBuilder::place_ground(const Model& model, glm::vec2 anchor) {
-  chunk(ground_, anchor).add(model);
+void WorldBuilder::place_ground(std::vector<Model> levels, std::span<const float> distances,
+                                glm::vec2 anchor) {
+  if (levels.size() != distances.size() + 1) {
+    throw Error("world builder: ground levels need one distance each past the first");
+  }
+  GroundChunk& chunk = ground_[chunk_key(anchor)];
+  if (chunk.levels.empty()) {
+    chunk.levels = std::move(levels);
+    chunk.distances.assign(distances.begin(), distances.end());
+    return;
+  }
+  if (!std::equal(distances.begin(), distances.end(), chunk.distances.begin(),
+                  chunk.distances.end())) {
+    throw Error("world builder: ground placed in one chunk at different levels of detail");
+  }
+  for (std::size_t k = 0; k < levels.size(); ++k) chunk.levels[k].add(levels[k]);
 }
 
 void WorldBuilder::place_last(const Model& model) { last_.add(model); }
+
+std::vector<MeshInstance> WorldBuilder::add_meshes(const Model& model) {
+  std::vector<MeshInstance> instances;
+  for (std::size_t s = 0; s < kSurfaceCount; ++s) {
+    const Mesh& mesh = model.mesh(static_cast<Surface>(s));
+    if (mesh.positions.empty()) continue;
+    scene_.meshes.push_back(std::make_shared<const Mesh>(mesh));
+    instances.push_back({static_cast<int>(scene_.meshes.size()) - 1, static_cast<int>(s)});
+  }
+  return instances;
+}
 
 int WorldBuilder::add_node(const std::string& name, const Model& model, const glm::mat4& where,
                            int parent) {
@@ -211,12 +238,7 @@ int WorldBuilder::add_node(const std::string& name, const Model& model, const gl
   node.name = name;
   node.transform = where;
   node.parent = parent;
-  for (std::size_t s = 0; s < kSurfaceCount; ++s) {
-    const Mesh& mesh = model.mesh(static_cast<Surface>(s));
-    if (mesh.positions.empty()) continue;
-    scene_.meshes.push_back(std::make_shared<const Mesh>(mesh));
-    node.instances.push_back({static_cast<int>(scene_.meshes.size()) - 1, static_cast<int>(s)});
-  }
+  node.instances = add_meshes(model);
   scene_.nodes.push_back(std::move(node));
   return static_cast<int>(scene_.nodes.size()) - 1;
 }
@@ -230,9 +252,28 @@ void WorldBuilder::add_chunks(const std::string& layer, Chunks& chunks) {
   chunks.clear();
 }
 
+void WorldBuilder::add_ground_chunks() {
+  for (const auto& [key, chunk] : ground_) {
+    if (chunk.levels[0].triangle_count() == 0) continue;  // open sea
+    SceneNode node;
+    node.name = "ground " + std::to_string(key.first) + "," + std::to_string(key.second);
+    node.instances = add_meshes(chunk.levels[0]);
+    for (std::size_t k = 1; k < chunk.levels.size(); ++k) {
+      node.coarser.push_back({chunk.distances[k - 1], add_meshes(chunk.levels[k])});
+    }
+    for (const Model& level : chunk.levels) {
+      for (std::size_t s = 0; s < kSurfaceCount; ++s) {
+        for (glm::vec3 p : level.mesh(static_cast<Surface>(s)).positions) node.detail_bounds.add(p);
+      }
+    }
+    scene_.nodes.push_back(std::move(node));
+  }
+  ground_.clear();
+}
+
 Scene WorldBuilder::finish() {
   add_chunks("scenery", scenery_);
-  add_chunks("ground", ground_);
+  add_ground_chunks();
   if (last_.triangle_count() != 0) add_node("sea", last_, glm::mat4(1.0f));
   last_ = Model{};
   return std::move(scene_);

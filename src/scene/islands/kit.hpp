@@ -11,8 +11,10 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 #include <map>
+#include <span>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "facet/mesh.hpp"
 #include "facet/scene.hpp"
@@ -101,8 +103,9 @@ class WorldBuilder {
   void place(const Model& model, const glm::mat4& where = glm::mat4(1.0f));
   // Static scenery already in world space, merged into the chunk holding `anchor` (x, z).
   void place_in_chunk(const Model& model, glm::vec2 anchor);
-  // The ground, already in world space: as place_in_chunk, drawn after the scenery.
-  void place_ground(const Model& model, glm::vec2 anchor);
+  // The ground of the chunk holding `anchor` (x, z), already in world space, drawn after the
+  // scenery: levels[0] near, levels[k] from distances[k - 1] on (SceneNode::coarser).
+  void place_ground(std::vector<Model> levels, std::span<const float> distances, glm::vec2 anchor);
   // Static scenery drawn after everything else, such as the sea around the islands.
   void place_last(const Model& model);
   // A part that moves: its own node (under `parent`, or a root), one instance per surface.
@@ -115,12 +118,21 @@ class WorldBuilder {
   Scene& scene() { return scene_; }
 
  private:
-  using Chunks = std::map<std::pair<int, int>, Model>;  // ordered: the same scene every time
-  static Model& chunk(Chunks& chunks, glm::vec2 anchor);
+  using ChunkKey = std::pair<int, int>;
+  using Chunks = std::map<ChunkKey, Model>;  // ordered: the same scene every time
+  struct GroundChunk {
+    std::vector<Model> levels;
+    std::vector<float> distances;
+  };
+  static ChunkKey chunk_key(glm::vec2 anchor);
+  // One mesh per surface the model uses, added to the scene.
+  std::vector<MeshInstance> add_meshes(const Model& model);
   void add_chunks(const std::string& layer, Chunks& chunks);
+  void add_ground_chunks();
 
   Scene scene_;
-  Chunks scenery_, ground_;
+  Chunks scenery_;
+  std::map<ChunkKey, GroundChunk> ground_;
   Model last_;
 };
 

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <span>
 #include <vector>
 
 #include "scene/islands/kit.hpp"
@@ -80,8 +81,12 @@ class Terrain {
   glm::vec3 falls_centre() const { return falls_centre_; }
   glm::vec2 falls_centre_xz() const { return {falls_centre_.x, falls_centre_.z}; }
 
-  // The ground over a rectangle, `cell` metres per grid square: grass, sand and rock.
-  Model land(glm::vec2 min, glm::vec2 max, float cell) const;
+  // The ground over a rectangle (grass, sand and rock) at levels of detail: level k keeps
+  // every steps[k]-th line of a grid of `cell` metres squares (and the last line). Every level
+  // has all the grid's points along the rectangle's edges, so rectangles side by side meet
+  // without cracks whatever their levels.
+  std::vector<Model> land(glm::vec2 min, glm::vec2 max, float cell,
+                          std::span<const int> steps) const;
   // The river, the stream above the falls, the falling sheet and the foam at its foot.
   Model water() const;
   // The sea: a square of `size` metres around `centre` at sea level.

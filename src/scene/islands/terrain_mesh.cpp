@@ -2,6 +2,7 @@
 // triangles are sorted into grass, sand and rock, and the water as strips along the courses with
 // the falling sheet between them.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <glm/geometric.hpp>
@@ -123,9 +124,105 @@ Mesh course_surface(const std::vector<Terrain::Sample>& course, float extend) {
   return ribbon(left, right, normals, uvs, 2.0f * width / kRiverTile, {0.0f, 1.0f, 0.0f});
 }
 
+// The grid lines a level keeps: every step-th of 0 ... n, and n.
+std::vector<int> kept_lines(int n, int step) {
+  std::vector<int> lines;
+  for (int i = 0; i < n; i += step) lines.push_back(i);
+  lines.push_back(n);
+  return lines;
+}
+
+// The triangles of a grid at one level of detail, counter-clockwise seen from above (x east,
+// z south): cells between the kept lines, two triangles each, but for a cell with a side on
+// the grid's edge that spans several grid squares. That cell fans out from a point at its
+// centre (added to the grid, its height from `ground`) to every grid point of such sides, so
+// that the edge has the same points at every level and chunks side by side meet without
+// cracks whatever their levels. At step 1 every cell is a grid square.
+template <class Ground>
+std::vector<std::array<int, 3>> level_triangles(Grid& g, int step, float cell, Ground ground) {
+  const std::vector<int> xs = kept_lines(g.nx, step), zs = kept_lines(g.nz, step);
+  std::vector<std::array<int, 3>> triangles;
+  for (std::size_t b = 0; b + 1 < zs.size(); ++b) {
+    for (std::size_t a = 0; a + 1 < xs.size(); ++a) {
+      const int x0 = xs[a], x1 = xs[a + 1], z0 = zs[b], z1 = zs[b + 1];
+      const int v00 = g.index(x0, z0), v10 = g.index(x1, z0);
+      const int v01 = g.index(x0, z1), v11 = g.index(x1, z1);
+      const bool west = x0 == 0, east = x1 == g.nx, north = z0 == 0, south = z1 == g.nz;
+      if (!((west || east) && z1 - z0 > 1) && !((north || south) && x1 - x0 > 1)) {
+        triangles.push_back({v00, v01, v11});
+        triangles.push_back({v00, v11, v10});
+        continue;
+      }
+      // The cell's outline in the same turn: down its west side, east along its south side,
+      // up its east side, west along its north side; every grid point of a side on the edge.
+      std::vector<int> outline;
+      for (int z = z0; z < z1; ++z) {
+        if (west || z == z0) outline.push_back(g.index(x0, z));
+      }
+      for (int x = x0; x < x1; ++x) {
+        if (south || x == x0) outline.push_back(g.index(x, z1));
+      }
+      for (int z = z1; z > z0; --z) {
+        if (east || z == z1) outline.push_back(g.index(x1, z));
+      }
+      for (int x = x1; x > x0; --x) {
+        if (north || x == x1) outline.push_back(g.index(x, z0));
+      }
+      const vec2 middle(0.5f * (g.points[v00].x + g.points[v11].x),
+                        0.5f * (g.points[v00].z + g.points[v11].z));
+      const vec2 dx(cell, 0.0f), dz(0.0f, cell);
+      const int centre = static_cast<int>(g.points.size());
+      g.points.push_back({middle.x, ground(middle), middle.y});
+      g.normals.push_back(
+          glm::normalize(vec3(ground(middle - dx) - ground(middle + dx), 2.0f * cell,
+                              ground(middle - dz) - ground(middle + dz))));
+      for (std::size_t k = 0; k < outline.size(); ++k)
+        triangles.push_back({centre, outline[k], outline[(k + 1) % outline.size()]});
+    }
+  }
+  return triangles;
+}
+
+// Grass, sand and rock of triangles of the grid's points.
+Model ground_model(const Grid& g, const std::vector<std::array<int, 3>>& triangles) {
+  Mesh grass, sand, rock;
+  std::vector<std::uint32_t> grass_index(g.points.size(), kNone),
+      sand_index(g.points.size(), kNone);
+  auto shared = [&](Surface surface, int v) {
+    Mesh& mesh = surface == Surface::grass ? grass : sand;
+    std::uint32_t& slot = (surface == Surface::grass ? grass_index : sand_index)[v];
+    if (slot == kNone) {
+      slot = static_cast<std::uint32_t>(mesh.positions.size());
+      const vec3 p = g.points[v];
+      const float tile = surface == Surface::grass ? kGrassTile : kSandTile;
+      add_vertex(mesh, p, g.normals[v], vec2(p.x, -p.z) / tile, tint(surface, p));
+    }
+    return slot;
+  };
+  for (const auto& [a, b, c] : triangles) {
+    const vec3 p[3] = {g.points[a], g.points[b], g.points[c]};
+    if (std::max({p[0].y, p[1].y, p[2].y}) < kHiddenBelow) continue;
+    const vec3 centre = (p[0] + p[1] + p[2]) / 3.0f;
+    const float up = glm::normalize(glm::cross(p[1] - p[0], p[2] - p[0])).y;
+    const Surface surface = classify(centre, up);
+    if (surface == Surface::rock) {
+      add_rock(rock, p);
+      continue;
+    }
+    Mesh& mesh = surface == Surface::grass ? grass : sand;
+    for (int v : {a, b, c}) mesh.indices.push_back(shared(surface, v));
+  }
+  Model model;
+  model.add_keeping_uv(Surface::grass, std::move(grass));
+  model.add_keeping_uv(Surface::sand, std::move(sand));
+  model.add_keeping_uv(Surface::rock, std::move(rock));
+  return model;
+}
+
 }  // namespace
 
-Model Terrain::land(glm::vec2 min, glm::vec2 max, float cell) const {
+std::vector<Model> Terrain::land(glm::vec2 min, glm::vec2 max, float cell,
+                                 std::span<const int> steps) const {
   Grid g;
   g.nx = static_cast<int>(std::ceil((max.x - min.x) / cell));
   g.nz = static_cast<int>(std::ceil((max.y - min.y) / cell));
@@ -144,45 +241,13 @@ Model Terrain::land(glm::vec2 min, glm::vec2 max, float cell) const {
           glm::normalize(vec3(H(i - 1, j) - H(i + 1, j), 2.0f * cell, H(i, j - 1) - H(i, j + 1))));
     }
   }
-
-  Mesh grass, sand, rock;
-  std::vector<std::uint32_t> grass_index(g.points.size(), kNone),
-      sand_index(g.points.size(), kNone);
-  auto shared = [&](Surface surface, int v) {
-    Mesh& mesh = surface == Surface::grass ? grass : sand;
-    std::uint32_t& slot = (surface == Surface::grass ? grass_index : sand_index)[v];
-    if (slot == kNone) {
-      slot = static_cast<std::uint32_t>(mesh.positions.size());
-      const vec3 p = g.points[v];
-      const float tile = surface == Surface::grass ? kGrassTile : kSandTile;
-      add_vertex(mesh, p, g.normals[v], vec2(p.x, -p.z) / tile, tint(surface, p));
-    }
-    return slot;
-  };
-  auto add_triangle = [&](int a, int b, int c) {
-    const vec3 p[3] = {g.points[a], g.points[b], g.points[c]};
-    if (std::max({p[0].y, p[1].y, p[2].y}) < kHiddenBelow) return;
-    const vec3 centre = (p[0] + p[1] + p[2]) / 3.0f;
-    const float up = glm::normalize(glm::cross(p[1] - p[0], p[2] - p[0])).y;
-    const Surface surface = classify(centre, up);
-    if (surface == Surface::rock) return add_rock(rock, p);
-    Mesh& mesh = surface == Surface::grass ? grass : sand;
-    for (int v : {a, b, c}) mesh.indices.push_back(shared(surface, v));
-  };
-  for (int j = 0; j < g.nz; ++j) {
-    for (int i = 0; i < g.nx; ++i) {
-      // Counter-clockwise seen from above (x east, z south).
-      const int v00 = g.index(i, j), v10 = g.index(i + 1, j);
-      const int v01 = g.index(i, j + 1), v11 = g.index(i + 1, j + 1);
-      add_triangle(v00, v01, v11);
-      add_triangle(v00, v11, v10);
-    }
+  std::vector<Model> levels;
+  for (int step : steps) {
+    Grid level = g;  // its fans' centres are its own
+    const auto ground = [this](vec2 p) { return height(p); };
+    levels.push_back(ground_model(level, level_triangles(level, step, cell, ground)));
   }
-  Model model;
-  model.add_keeping_uv(Surface::grass, std::move(grass));
-  model.add_keeping_uv(Surface::sand, std::move(sand));
-  model.add_keeping_uv(Surface::rock, std::move(rock));
-  return model;
+  return levels;
 }
 
 // The falling sheet follows the cliff from the pool up to the stream, hanging a little in

@@ -129,6 +129,13 @@ TEST(Islands, PropellersAndWaterTurnAndFlow) {
   EXPECT_GT(glm::length(w.boat_position() - boat), 0.1f);
 }
 
+std::size_t triangles(const Scene& scene, const std::vector<MeshInstance>& instances) {
+  std::size_t n = 0;
+  for (const MeshInstance& instance : instances)
+    n += scene.meshes[instance.mesh]->primitive_count();
+  return n;
+}
+
 // The ground's levels of detail (SceneNode::coarser) have the same points along their chunk's
 // edges, so chunks drawn at different levels meet without cracks; and coarser levels have
 // fewer triangles. (Points under the sea are left out: the ground hidden there is not drawn.)
@@ -156,17 +163,11 @@ TEST(Islands, GroundLevelsMeetAtTheChunkEdges) {
       }
       return points;
     };
-    auto triangles = [&](const std::vector<MeshInstance>& instances) {
-      std::size_t n = 0;
-      for (const MeshInstance& instance : instances)
-        n += scene.meshes[instance.mesh]->primitive_count();
-      return n;
-    };
     const auto full = edge_points(node.instances);
-    std::size_t finer = triangles(node.instances);
+    std::size_t finer = triangles(scene, node.instances);
     for (const DetailLevel& level : node.coarser) {
       ASSERT_EQ(edge_points(level.instances), full) << node.name << " from " << level.distance;
-      const std::size_t n = triangles(level.instances);
+      const std::size_t n = triangles(scene, level.instances);
       if (finer > 8) {  // (a chunk all but under the sea may keep its few)
         EXPECT_LT(n, finer) << node.name << " from " << level.distance;
       }
@@ -175,6 +176,20 @@ TEST(Islands, GroundLevelsMeetAtTheChunkEdges) {
   }
   EXPECT_GT(ground_chunks, 100);
   EXPECT_EQ(with_levels, ground_chunks);
+}
+
+// Trees, bushes and stones have stand-ins for afar with fewer triangles.
+TEST(Islands, FarSceneryHasFewerTriangles) {
+  const Scene& scene = world().scene;
+  int with_levels = 0;
+  for (const SceneNode& node : scene.nodes) {
+    if (node.name.rfind("scenery ", 0) != 0 || node.coarser.empty()) continue;
+    ++with_levels;
+    ASSERT_EQ(node.coarser.size(), 1u);
+    EXPECT_LT(triangles(scene, node.coarser[0].instances), triangles(scene, node.instances))
+        << node.name;
+  }
+  EXPECT_GT(with_levels, 100);
 }
 
 TEST(Islands, StartViewMatchesGolden) {

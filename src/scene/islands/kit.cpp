@@ -192,13 +192,26 @@ void WorldBuilder::place(const Model& model, const glm::mat4& where) {
   place_in_chunk(Model{}.add(model, where), {where[3].x, where[3].z});
 }
 
+void WorldBuilder::place(const Model& model, const Model& far, const glm::mat4& where) {
+  Chunk& chunk = scenery_chunk({where[3].x, where[3].z});
+  chunk.levels[0].add(model, where);
+  chunk.levels[1].add(far, where);
+  chunk.coarser_differ = true;
+}
+
 WorldBuilder::ChunkKey WorldBuilder::chunk_key(glm::vec2 anchor) {
   return {static_cast<int>(std::floor(anchor.x / kChunk)),
           static_cast<int>(std::floor(anchor.y / kChunk))};
 }
 
+WorldBuilder::Chunk& WorldBuilder::scenery_chunk(glm::vec2 anchor) {
+  Chunk& chunk = scenery_[chunk_key(anchor)];
+  if (chunk.levels.empty()) chunk.levels.resize(2), chunk.distances = {kFarSceneryFrom};
+  return chunk;
+}
+
 void WorldBuilder::place_in_chunk(const Model& model, glm::vec2 anchor) {
-  scenery_[chunk_key(anchor)].add(model);
+  for (Model& level : scenery_chunk(anchor).levels) level.add(model);
 }
 
 void WorldBuilder::place_ground(std::vector<Model> levels, std::span<const float> distances,
@@ -206,7 +219,8 @@ void WorldBuilder::place_ground(std::vector<Model> levels, std::span<const float
   if (levels.size() != distances.size() + 1) {
     throw Error("world builder: ground levels need one distance each past the first");
   }
-  GroundChunk& chunk = ground_[chunk_key(anchor)];
+  Chunk& chunk = ground_[chunk_key(anchor)];
+  chunk.coarser_differ = levels.size() > 1;
   if (chunk.levels.empty()) {
     chunk.levels = std::move(levels);
     chunk.distances.assign(distances.begin(), distances.end());
@@ -244,36 +258,31 @@ int WorldBuilder::add_node(const std::string& name, const Model& model, const gl
 }
 
 void WorldBuilder::add_chunks(const std::string& layer, Chunks& chunks) {
-  for (const auto& [key, model] : chunks) {
-    if (model.triangle_count() == 0) continue;  // open sea
-    add_node(layer + " " + std::to_string(key.first) + "," + std::to_string(key.second), model,
-             glm::mat4(1.0f));
-  }
-  chunks.clear();
-}
-
-void WorldBuilder::add_ground_chunks() {
-  for (const auto& [key, chunk] : ground_) {
+  for (const auto& [key, chunk] : chunks) {
     if (chunk.levels[0].triangle_count() == 0) continue;  // open sea
     SceneNode node;
-    node.name = "ground " + std::to_string(key.first) + "," + std::to_string(key.second);
+    node.name = layer + " " + std::to_string(key.first) + "," + std::to_string(key.second);
     node.instances = add_meshes(chunk.levels[0]);
-    for (std::size_t k = 1; k < chunk.levels.size(); ++k) {
-      node.coarser.push_back({chunk.distances[k - 1], add_meshes(chunk.levels[k])});
-    }
-    for (const Model& level : chunk.levels) {
-      for (std::size_t s = 0; s < kSurfaceCount; ++s) {
-        for (glm::vec3 p : level.mesh(static_cast<Surface>(s)).positions) node.detail_bounds.add(p);
+    if (chunk.coarser_differ) {
+      for (std::size_t k = 1; k < chunk.levels.size(); ++k) {
+        node.coarser.push_back({chunk.distances[k - 1], add_meshes(chunk.levels[k])});
+      }
+      for (const Model& level : chunk.levels) {
+        for (std::size_t s = 0; s < kSurfaceCount; ++s) {
+          for (glm::vec3 p : level.mesh(static_cast<Surface>(s)).positions) {
+            node.detail_bounds.add(p);
+          }
+        }
       }
     }
     scene_.nodes.push_back(std::move(node));
   }
-  ground_.clear();
+  chunks.clear();
 }
 
 Scene WorldBuilder::finish() {
   add_chunks("scenery", scenery_);
-  add_ground_chunks();
+  add_chunks("ground", ground_);
   if (last_.triangle_count() != 0) add_node("sea", last_, glm::mat4(1.0f));
   last_ = Model{};
   return std::move(scene_);

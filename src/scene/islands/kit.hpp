@@ -96,15 +96,21 @@ class WorldBuilder {
   // Metres; a multiple of every terrain cell size. Chunks of 20 m rather than 60 m leave more of
   // the land's vertices out of view at the start camera.
   static constexpr float kChunk = 20.0f;
+  // Where scenery placed with a `far` stand-in switches to it (SceneNode::coarser: metres from
+  // the chunk at a 60 degree field of view). That far, a tree is a few dozen pixels at 720p.
+  // From 150 m the start view drew fewer than 100,000 triangles at 1080p (world.cpp).
+  static constexpr float kFarSceneryFrom = 180.0f;
 
   explicit WorldBuilder(const IslandTextures& textures);
 
-  // Static scenery: `model` placed by `where`, merged into the chunk of where's origin.
+  // Static scenery: `model` placed by `where`, merged into the chunk of where's origin; `far`,
+  // if given, stands in for it from kFarSceneryFrom on.
   void place(const Model& model, const glm::mat4& where = glm::mat4(1.0f));
+  void place(const Model& model, const Model& far, const glm::mat4& where);
   // Static scenery already in world space, merged into the chunk holding `anchor` (x, z).
   void place_in_chunk(const Model& model, glm::vec2 anchor);
   // The ground of the chunk holding `anchor` (x, z), already in world space, drawn after the
-  // scenery: levels[0] near, levels[k] from distances[k - 1] on (SceneNode::coarser).
+  // scenery: levels[0] near, levels[k] from distances[k - 1] on.
   void place_ground(std::vector<Model> levels, std::span<const float> distances, glm::vec2 anchor);
   // Static scenery drawn after everything else, such as the sea around the islands.
   void place_last(const Model& model);
@@ -119,20 +125,21 @@ class WorldBuilder {
 
  private:
   using ChunkKey = std::pair<int, int>;
-  using Chunks = std::map<ChunkKey, Model>;  // ordered: the same scene every time
-  struct GroundChunk {
+  // A chunk's things at levels of detail: levels[0] near, levels[k] from distances[k - 1] on.
+  struct Chunk {
     std::vector<Model> levels;
     std::vector<float> distances;
+    bool coarser_differ = false;  // else only levels[0] is drawn
   };
+  using Chunks = std::map<ChunkKey, Chunk>;  // ordered: the same scene every time
   static ChunkKey chunk_key(glm::vec2 anchor);
+  Chunk& scenery_chunk(glm::vec2 anchor);
   // One mesh per surface the model uses, added to the scene.
   std::vector<MeshInstance> add_meshes(const Model& model);
   void add_chunks(const std::string& layer, Chunks& chunks);
-  void add_ground_chunks();
 
   Scene scene_;
-  Chunks scenery_;
-  std::map<ChunkKey, GroundChunk> ground_;
+  Chunks scenery_, ground_;
   Model last_;
 };
 

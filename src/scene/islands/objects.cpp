@@ -47,8 +47,9 @@ Model window(float width, float height) {
 
 // --- trees -----------------------------------------------------------------------------------
 
-Model conifer(float height, std::uint32_t seed) {
+Model conifer(float height, std::uint32_t seed, Detail detail) {
   Model m;
+  const bool far = detail == Detail::far;
   // Trunks are cones tapering out of sight inside the foliage (no hidden caps to draw), and
   // start below the ground so that trees on slopes never float.
   m.add_keeping_uv(Surface::bark,
@@ -57,32 +58,34 @@ Model conifer(float height, std::uint32_t seed) {
   const vec4 needles = vary(seed, {0.55f, 0.74f, 0.62f}, 0.3f);
   for (int tier = 0; tier < 3; ++tier) {
     const float base = height * (0.18f + 0.24f * tier);
-    m.add_keeping_uv(Surface::foliage,
-                     cone(height * (0.30f - 0.07f * tier), height * (0.42f - 0.04f * tier), 10),
-                     at({0, base, 0}, 20.0f * tier), needles);
+    m.add_keeping_uv(
+        Surface::foliage,
+        cone(height * (0.30f - 0.07f * tier), height * (0.42f - 0.04f * tier), far ? 6 : 10),
+        at({0, base, 0}, 20.0f * tier), needles);
   }
   return m;
 }
 
-Model broadleaf(float height, std::uint32_t seed) {
+Model broadleaf(float height, std::uint32_t seed, Detail detail) {
   Model m;
+  const bool far = detail == Detail::far;
   m.add_keeping_uv(Surface::bark,
                    without_faces_toward(cone(0.06f * height, 0.85f * height, 7), kDown),
                    at({0, -0.5f, 0}));
   const vec4 leaves = vary(seed, {0.95f, 1.0f, 0.8f}, 0.35f);
-  m.add_keeping_uv(Surface::foliage, uv_sphere(0.28f * height, 16, 10),
+  m.add_keeping_uv(Surface::foliage, uv_sphere(0.28f * height, far ? 8 : 16, far ? 5 : 10),
                    at({0, 0.64f * height, 0}) * scale({1.0f, 0.85f, 1.0f}), leaves);
   const float turn = random01(static_cast<int>(seed), 1, 73) * 6.2832f;
   for (int k = 0; k < 2; ++k) {
     const float a = turn + 3.1416f * k, r = 0.2f * height;
-    m.add_keeping_uv(Surface::foliage, uv_sphere(r, 10, 7),
+    m.add_keeping_uv(Surface::foliage, uv_sphere(r, far ? 6 : 10, far ? 4 : 7),
                      at({std::cos(a) * r, (0.52f + 0.18f * k) * height, std::sin(a) * r}),
                      leaves * vec4(vec3(0.92f + 0.12f * k), 1.0f));
   }
   return m;
 }
 
-Model palm(float height, std::uint32_t seed) {
+Model palm(float height, std::uint32_t seed, Detail detail) {
   Model m;
   // The trunk: five segments, each leaning a little more than the one below.
   constexpr int kSegments = 5;
@@ -105,7 +108,7 @@ Model palm(float height, std::uint32_t seed) {
     m.add_keeping_uv(Surface::palm, facing(base, mid_l, mid_r, {0, 1, 0}), f, green);
     m.add_keeping_uv(Surface::palm, facing(mid_l, tip, mid_r, {0, 1, 0}), f, green);
   }
-  for (int k = 0; k < 3; ++k) {
+  for (int k = 0; detail == Detail::full && k < 3; ++k) {  // coconuts
     const float a = 2.1f * k;
     m.add_keeping_uv(
         Surface::bark, uv_sphere(0.035f * height, 8, 5),
@@ -115,25 +118,28 @@ Model palm(float height, std::uint32_t seed) {
   return m;
 }
 
-Model bush(float size, std::uint32_t seed) {
+Model bush(float size, std::uint32_t seed, Detail detail) {
   Model m;
+  const bool far = detail == Detail::far;
   const vec4 leaves = vary(seed, {0.85f, 1.0f, 0.75f}, 0.4f);
   for (int k = 0; k < 3; ++k) {
     const float r = size * (0.5f + 0.15f * jitter(seed, 60 + k));
     const vec3 p(0.45f * size * jitter(seed, 63 + k), 0.25f * size,
                  0.45f * size * jitter(seed, 66 + k));
-    m.add_keeping_uv(Surface::foliage, uv_sphere(r, 8, 5), at(p) * scale({1.0f, 0.7f, 1.0f}),
-                     leaves);
+    m.add_keeping_uv(Surface::foliage, uv_sphere(r, far ? 5 : 8, far ? 3 : 5),
+                     at(p) * scale({1.0f, 0.7f, 1.0f}), leaves);
   }
   return m;
 }
 
-Model boulder(float size, std::uint32_t seed) {
+Model boulder(float size, std::uint32_t seed, Detail detail) {
   Model m;
   // A coarse sphere squashed and stretched by the seed: few facets read as a rough stone.
   const vec3 stretch(1.0f + 0.3f * jitter(seed, 70), 0.6f + 0.2f * jitter(seed, 71),
                      1.0f + 0.3f * jitter(seed, 72));
-  m.add(Surface::rock, uv_sphere(0.5f * size, 7, 5), at({0, 0.1f * size, 0}) * scale(stretch));
+  m.add(Surface::rock,
+        uv_sphere(0.5f * size, detail == Detail::far ? 5 : 7, detail == Detail::far ? 3 : 5),
+        at({0, 0.1f * size, 0}) * scale(stretch));
   return m;
 }
 

@@ -12,12 +12,16 @@
 
 namespace facet::islands {
 
+// How finely a thing is made: `far` for a stand-in seen from afar (fewer facets on its round
+// parts, no small parts), with the same outline and colors.
+enum class Detail { full, far };
+
 // Trees; `seed` varies their proportions and shade.
-Model conifer(float height, std::uint32_t seed);    // stacked cones on a short trunk
-Model broadleaf(float height, std::uint32_t seed);  // a crown of a few spheres
-Model palm(float height, std::uint32_t seed);       // a bent trunk and drooping fronds
-Model bush(float size, std::uint32_t seed);         // a low clump of leaves
-Model boulder(float size, std::uint32_t seed);      // a rough stone, half sunk
+Model conifer(float height, std::uint32_t seed, Detail detail = Detail::full);    // stacked cones
+Model broadleaf(float height, std::uint32_t seed, Detail detail = Detail::full);  // a few spheres
+Model palm(float height, std::uint32_t seed, Detail detail = Detail::full);   // fronds on a trunk
+Model bush(float size, std::uint32_t seed, Detail detail = Detail::full);     // a clump of leaves
+Model boulder(float size, std::uint32_t seed, Detail detail = Detail::full);  // a rough stone
 
 // Brick walls, a tiled gable roof (ridge along X), a door and windows on the +Z front.
 Model house(float width, float depth, float wall_height);

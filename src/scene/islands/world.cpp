@@ -60,8 +60,9 @@ LandPlan land_plan() {
 
 // The ground's levels of detail: every line of its grid near the camera, every second from
 // 150 m, every fourth from 300 m (at a 60 degree field of view). That far, a square of the
-// first island's grid (0.8 m) is a few pixels at most. The start view then takes 364k triangles
-// instead of 426k, and 1080p still draws over 100,000 (from 90 m and 180 m: 320k and 90,000).
+// first island's grid (0.8 m) is a few pixels at most. With the trees' stand-ins (from 180 m,
+// kit.hpp) the start view takes 340k triangles instead of 426k, and 1080p still draws 102,904:
+// the issue asks for 100,000 in view. (Ground levels from 90 and 180 m drew 90,016.)
 constexpr int kGroundSteps[] = {1, 2, 4};
 constexpr float kGroundDetailFrom[] = {150.0f, 300.0f};
 
@@ -119,12 +120,12 @@ bool keep_clear(vec2 p) {
 }
 
 // One tree for a spot: palms by the beach, conifers up the slopes, broadleaf trees between.
-Model tree_for(float ground, std::uint32_t seed) {
+Model tree_for(float ground, std::uint32_t seed, Detail detail) {
   const float r = random01(static_cast<int>(seed), 1, 90);
   const float size = random01(static_cast<int>(seed), 2, 90);
-  if (ground < 4.5f) return palm(7.0f + 4.0f * size, seed);
-  if (ground > 17.0f || r < 0.25f) return conifer(7.0f + 6.0f * size, seed);
-  return broadleaf(6.0f + 4.0f * size, seed);
+  if (ground < 4.5f) return palm(7.0f + 4.0f * size, seed, detail);
+  if (ground > 17.0f || r < 0.25f) return conifer(7.0f + 6.0f * size, seed, detail);
+  return broadleaf(6.0f + 4.0f * size, seed, detail);
 }
 
 // Trees on a jittered grid: dense in forest patches (where low noise is high), scattered
@@ -141,7 +142,8 @@ void plant_forest(WorldBuilder& world, const Terrain& terrain, vec2 min, vec2 ma
       const float ground = terrain.height(p);
       if (ground < 2.6f || ground > 40.0f || keep_clear(p)) continue;
       if (terrain.water_distance(p) < 13.0f || terrain.flatness(p) < 0.82f) continue;
-      world.place(tree_for(ground, seed), at({p.x, ground, p.y}, 360.0f * random01(i, j, 82)));
+      world.place(tree_for(ground, seed, Detail::full), tree_for(ground, seed, Detail::far),
+                  at({p.x, ground, p.y}, 360.0f * random01(i, j, 82)));
     }
   }
 }
@@ -159,9 +161,9 @@ void scatter_undergrowth(WorldBuilder& world, const Terrain& terrain, vec2 min, 
       const float size = 0.8f + 0.8f * random01(i, j, 87);
       const glm::mat4 where = at({p.x, ground, p.y}, 360.0f * random01(i, j, 88));
       if (ground > 2.6f && ground < 25.0f && r < 0.22f && terrain.flatness(p) > 0.85f) {
-        world.place(bush(size, seed), where);
+        world.place(bush(size, seed), bush(size, seed, Detail::far), where);
       } else if ((ground > 20.0f || ground < 2.2f) && r < 0.12f) {
-        world.place(boulder(size, seed), where);
+        world.place(boulder(size, seed), boulder(size, seed, Detail::far), where);
       }
     }
   }

@@ -88,6 +88,8 @@ Terrain::Terrain(const LandPlan& plan) : plan_(plan) {
   river_ = sample(plan.river);
   stream_ = sample(plan.stream);
   place_falls();
+  river_reach_ = reach_of(river_);
+  stream_reach_ = reach_of(stream_);
 }
 
 float Terrain::uncarved(glm::vec2 p) const {
@@ -101,26 +103,51 @@ float Terrain::uncarved(glm::vec2 p) const {
   return h;
 }
 
-float Terrain::carve(const std::vector<Sample>& course, glm::vec2 p) const {
+Terrain::Reach Terrain::reach_of(const std::vector<Sample>& course) {
+  // carve() skips a segment whose bed's edge lies more than kCarveReach from the point; the
+  // segment lies in the box of its two samples, so that box grown by kCarveReach and the widest
+  // bed (and a segment's length, to spare) is conservative: carve() gives the same with the
+  // boxes or without them.
+  Reach reach;
+  for (std::size_t first = 0; first + 1 < course.size(); first += kReachSegments) {
+    const std::size_t last = std::min(first + kReachSegments, course.size() - 1);
+    Box box{course[first].xz, course[first].xz};
+    float widest = 0.0f;
+    for (std::size_t i = first; i <= last; ++i) {
+      box.min = glm::min(box.min, course[i].xz), box.max = glm::max(box.max, course[i].xz);
+      widest = std::max(widest, course[i].half_width);
+    }
+    const glm::vec2 margin(kCarveReach + 2.0f * widest + kSampleSpacing);
+    reach.push_back({box.min - margin, box.max + margin});
+  }
+  return reach;
+}
+
+float Terrain::carve(const std::vector<Sample>& course, const Reach& reach, glm::vec2 p) {
   float lowest = std::numeric_limits<float>::max();
-  for (std::size_t i = 0; i + 1 < course.size(); ++i) {
-    const Sample &a = course[i], &b = course[i + 1];
-    const glm::vec2 ab = b.xz - a.xz;
-    if (std::abs(p.x - a.xz.x) > kCarveReach + 2.0f * a.half_width + kSampleSpacing) continue;
-    const float t =
-        std::clamp(glm::dot(p - a.xz, ab) / std::max(glm::dot(ab, ab), 1e-6f), 0.0f, 1.0f);
-    const float d = glm::length(p - (a.xz + t * ab));
-    const float bank = std::max(0.0f, d - (a.half_width + t * (b.half_width - a.half_width)));
-    if (bank > kCarveReach) continue;
-    const float level = a.level + t * (b.level - a.level);
-    const float slope = a.bank_slope + t * (b.bank_slope - a.bank_slope);
-    lowest = std::min(lowest, channel_height(level, slope, bank));
+  for (std::size_t run = 0; run < reach.size(); ++run) {
+    const Box& box = reach[run];
+    if (p.x < box.min.x || p.y < box.min.y || p.x > box.max.x || p.y > box.max.y) continue;
+    const std::size_t end = std::min((run + 1) * kReachSegments, course.size() - 1);
+    for (std::size_t i = run * kReachSegments; i < end; ++i) {
+      const Sample &a = course[i], &b = course[i + 1];
+      const glm::vec2 ab = b.xz - a.xz;
+      if (std::abs(p.x - a.xz.x) > kCarveReach + 2.0f * a.half_width + kSampleSpacing) continue;
+      const float t =
+          std::clamp(glm::dot(p - a.xz, ab) / std::max(glm::dot(ab, ab), 1e-6f), 0.0f, 1.0f);
+      const float d = glm::length(p - (a.xz + t * ab));
+      const float bank = std::max(0.0f, d - (a.half_width + t * (b.half_width - a.half_width)));
+      if (bank > kCarveReach) continue;
+      const float level = a.level + t * (b.level - a.level);
+      const float slope = a.bank_slope + t * (b.bank_slope - a.bank_slope);
+      lowest = std::min(lowest, channel_height(level, slope, bank));
+    }
   }
   return lowest;
 }
 
 float Terrain::height(glm::vec2 p) const {
-  return std::min({uncarved(p), carve(river_, p), carve(stream_, p)});
+  return std::min({uncarved(p), carve(river_, river_reach_, p), carve(stream_, stream_reach_, p)});
 }
 
 float Terrain::flatness(glm::vec2 p) const {

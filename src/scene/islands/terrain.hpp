@@ -103,13 +103,22 @@ class Terrain {
 
  private:
   float uncarved(glm::vec2 xz) const;
-  float carve(const std::vector<Sample>& course, glm::vec2 xz) const;
+  // Where a course may carve, a box per run of kReachSegments segments: outside a run's box
+  // they carve nothing, and carve() need not look at them.
+  static constexpr std::size_t kReachSegments = 8;
+  struct Box {
+    glm::vec2 min, max;
+  };
+  using Reach = std::vector<Box>;
+  static Reach reach_of(const std::vector<Sample>& course);
+  static float carve(const std::vector<Sample>& course, const Reach& reach, glm::vec2 xz);
   std::vector<Sample> sample(const WaterCourse& water) const;
   void place_falls();
   Mesh falls_sheet(float& pool_edge) const;
 
   LandPlan plan_;
   std::vector<Sample> river_, stream_;
+  Reach river_reach_, stream_reach_;
   glm::vec2 falls_foot_{0.0f}, falls_top_{0.0f};  // where the sheet meets the pool / the cliff top
   glm::vec3 falls_centre_{0.0f};
 };

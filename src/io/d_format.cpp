@@ -1,5 +1,6 @@
 // The classic course format `.d`: a reader that names the file and line of every problem.
-// Written here at load time; the mesh it returns is read by the renderer like any other.
+// Written here at load time; the mesh it returns is read by the renderer like any other. (Reading
+// a file of it is d_import.cpp: this file parses text alone, so its fuzz target links it alone.)
 //
 //   data <vertices> <polygons>     optional header
 //   x y z                          one line per vertex
@@ -227,22 +228,6 @@ Mesh parse_d_geometry(std::string_view text, const std::string& name) {
   return mesh;
 }
 
-Scene import_d_scene(const std::string& path, const ImportOptions& options) {
-  Mesh mesh = parse_d_geometry(read_whole_file(path), path);
-  compute_smooth_normals(mesh, options.crease_angle_degrees);
-  Material material;
-  material.name = "d";
-  material.shading = ShadingModel::blinn_phong;
-  material.base_color = {0.62f, 0.60f, 0.57f, 1.0f};  // a warm grey that shows the shape
-  material.specular_color = glm::vec3(0.3f);
-  material.shininess = 32.0f;
-  // Open models (a terrain patch) are seen from both sides; the format has no winding rule.
-  material.cull = CullMode::none;
-  Scene scene;
-  scene.add_object(std::move(mesh), std::move(material), glm::mat4(1.0f), "d");
-  return scene;
-}
-
 }  // namespace io
 
 Mesh parse_d(const std::string& text, const std::string& name) {
@@ -250,7 +235,5 @@ Mesh parse_d(const std::string& text, const std::string& name) {
   compute_smooth_normals(mesh);
   return mesh;
 }
-
-Mesh read_d_file(const std::string& path) { return parse_d(io::read_whole_file(path), path); }
 
 }  // namespace facet

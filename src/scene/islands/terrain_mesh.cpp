@@ -1,6 +1,6 @@
-// The meshes made from the land's height function (see terrain.hpp): the ground as a grid whose
-// triangles are sorted into grass, sand and rock, and the water as strips along the courses with
-// the falling sheet between them.
+// The meshes made from the land's height function (see terrain.hpp): the ground as a grid, at
+// levels of detail, whose triangles are sorted into grass, sand and rock, and the water as strips
+// along the courses with the falling sheet between them.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -176,14 +176,16 @@ std::vector<std::array<int, 3>> level_triangles(Grid& g, int step, float cell, G
       g.normals.push_back(
           glm::normalize(vec3(ground(middle - dx) - ground(middle + dx), 2.0f * cell,
                               ground(middle - dz) - ground(middle + dz))));
-      for (std::size_t k = 0; k < outline.size(); ++k)
+      for (std::size_t k = 0; k < outline.size(); ++k) {
         triangles.push_back({centre, outline[k], outline[(k + 1) % outline.size()]});
+      }
     }
   }
   return triangles;
 }
 
-// Grass, sand and rock of triangles of the grid's points.
+// Sorts triangles of the grid's points into grass, sand and rock (leaving out those under the
+// sea, kHiddenBelow).
 Model ground_model(const Grid& g, const std::vector<std::array<int, 3>>& triangles) {
   Mesh grass, sand, rock;
   std::vector<std::uint32_t> grass_index(g.points.size(), kNone),

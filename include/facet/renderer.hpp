@@ -71,7 +71,8 @@ class Renderer {
   // Starts recording a frame seen from camera under lighting (default: Lighting{}, one sun).
   void begin_frame(const Camera& camera, const Lighting& lighting);
   void begin_frame(const Camera& camera);
-  // The camera of the frame being recorded (the last begin_frame()'s).
+  // The camera of the frame being recorded: the last begin_frame()'s (before the first, a
+  // default Camera).
   const Camera& camera() const;
   // Records a draw. The mesh is referenced, not copied: it must live until finish(). Throws
   // facet::Error for a mesh that Mesh::validate() rejects.

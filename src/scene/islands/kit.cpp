@@ -206,7 +206,10 @@ WorldBuilder::ChunkKey WorldBuilder::chunk_key(glm::vec2 anchor) {
 
 WorldBuilder::Chunk& WorldBuilder::scenery_chunk(glm::vec2 anchor) {
   Chunk& chunk = scenery_[chunk_key(anchor)];
-  if (chunk.levels.empty()) chunk.levels.resize(2), chunk.distances = {kFarSceneryFrom};
+  if (chunk.levels.empty()) {  // near, and afar (the near things where they have no stand-in)
+    chunk.levels.resize(2);
+    chunk.distances = {kFarSceneryFrom};
+  }
   return chunk;
 }
 

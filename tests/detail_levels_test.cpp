@@ -60,6 +60,22 @@ TEST(DetailLevels, WithoutLevelsOrBoundsTheInstancesAreDrawn) {
   EXPECT_EQ(drawn_mesh(node, glm::mat4(1.0f), {0, 0, 100}), 0);
 }
 
+// The detail bounds hold every level's meshes; nodes without levels keep theirs.
+TEST(DetailLevels, BoundsAreSetAroundEveryLevel) {
+  Scene scene;
+  scene.meshes = {std::make_shared<const Mesh>(cube(2.0f)),
+                  std::make_shared<const Mesh>(box({6.0f, 1.0f, 1.0f}))};
+  SceneNode levelled, plain;
+  levelled.instances = {{0, 0}};
+  levelled.coarser = {{10.0f, {{1, 0}}}};
+  plain.instances = {{1, 0}};
+  scene.nodes = {levelled, plain};
+  scene.bound_detail_levels();
+  EXPECT_EQ(scene.nodes[0].detail_bounds.min, glm::vec3(-3.0f, -1.0f, -1.0f));
+  EXPECT_EQ(scene.nodes[0].detail_bounds.max, glm::vec3(3.0f, 1.0f, 1.0f));
+  EXPECT_TRUE(scene.nodes[1].detail_bounds.empty());
+}
+
 // A red cube near, a green one from 10 away: draw_scene draws the one for the frame's camera.
 TEST(DetailLevels, DrawSceneDrawsTheLevelOfTheFramesCamera) {
   Scene scene;
@@ -71,9 +87,8 @@ TEST(DetailLevels, DrawSceneDrawsTheLevelOfTheFramesCamera) {
   SceneNode node;
   node.instances = {{0, 0}};
   node.coarser = {{10.0f, {{0, 1}}}};
-  node.detail_bounds.add(glm::vec3(-1.0f));
-  node.detail_bounds.add(glm::vec3(1.0f));
   scene.nodes = {node};
+  scene.bound_detail_levels();
   auto centre_pixel = [&](float distance) {
     Renderer renderer;
     Framebuffer frame(32, 32);

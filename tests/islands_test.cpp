@@ -131,8 +131,9 @@ TEST(Islands, PropellersAndWaterTurnAndFlow) {
 
 std::size_t triangles(const Scene& scene, const std::vector<MeshInstance>& instances) {
   std::size_t n = 0;
-  for (const MeshInstance& instance : instances)
+  for (const MeshInstance& instance : instances) {
     n += scene.meshes[instance.mesh]->primitive_count();
+  }
   return n;
 }
 

@@ -45,8 +45,9 @@ struct SceneNode {
   std::vector<MeshInstance> instances;
   // Levels of detail, by increasing distance (none: `instances` from everywhere). The distance
   // is the camera's eye to the nearest point of `detail_bounds` (node space, around every
-  // level), measured as if the field of view were 60 degrees: a narrower one, which magnifies,
-  // counts the node as nearer.
+  // level: Scene::bound_detail_levels() sets it; empty, `instances` are drawn from everywhere),
+  // measured as if the field of view were 60 degrees: a narrower one, which magnifies, counts
+  // the node as nearer.
   std::vector<DetailLevel> coarser;
   Bounds detail_bounds;
 
@@ -76,6 +77,9 @@ struct Scene {
   glm::mat4 world_transform(int node) const;
   // World-space bounds of every mesh instance.
   Bounds bounds() const;
+  // Sets each node's detail_bounds, where it has levels of detail, to the box around the
+  // meshes of all its levels (in node space).
+  void bound_detail_levels();
   std::size_t triangle_count() const;  // over all instances
 };
 

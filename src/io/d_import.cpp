@@ -1,5 +1,9 @@
 // The `.d` format read from a file: as a mesh (read_d_file) or as a scene to render
 // (import_d_scene). The parsing is d_format.cpp's.
+#include <glm/vec3.hpp>
+#include <string>
+#include <utility>
+
 #include "facet/material.hpp"
 #include "facet/scene.hpp"
 #include "io/import_internal.hpp"

@@ -58,6 +58,20 @@ Bounds Scene::bounds() const {
   return b;
 }
 
+void Scene::bound_detail_levels() {
+  for (SceneNode& node : nodes) {
+    if (node.coarser.empty()) continue;
+    node.detail_bounds = Bounds{};
+    auto add = [&](const std::vector<MeshInstance>& instances) {
+      for (const MeshInstance& instance : instances) {
+        for (const glm::vec3& p : meshes[instance.mesh]->positions) node.detail_bounds.add(p);
+      }
+    };
+    add(node.instances);
+    for (const DetailLevel& level : node.coarser) add(level.instances);
+  }
+}
+
 std::size_t Scene::triangle_count() const {
   std::size_t count = 0;
   for (const SceneNode& node : nodes) {
@@ -81,9 +95,9 @@ const std::vector<MeshInstance>& SceneNode::instances_seen_from(const glm::mat4&
                       (corner & 4) ? detail_bounds.max.z : detail_bounds.min.z);
     box.add(glm::vec3(world * glm::vec4(p, 1.0f)));
   }
-  const float tan_half_60 = std::tan(glm::radians(30.0f));
+  constexpr float kTanHalf60 = 0.57735026919f;  // tan(30 degrees) = 1 / sqrt(3)
   const float distance = glm::length(eye - glm::clamp(eye, box.min, box.max)) *
-                         std::tan(glm::radians(fov_y_degrees) * 0.5f) / tan_half_60;
+                         std::tan(glm::radians(fov_y_degrees) * 0.5f) / kTanHalf60;
   const std::vector<MeshInstance>* chosen = &instances;
   for (const DetailLevel& level : coarser) {
     if (distance >= level.distance) chosen = &level.instances;

@@ -266,17 +266,8 @@ void WorldBuilder::add_chunks(const std::string& layer, Chunks& chunks) {
     SceneNode node;
     node.name = layer + " " + std::to_string(key.first) + "," + std::to_string(key.second);
     node.instances = add_meshes(chunk.levels[0]);
-    if (chunk.coarser_differ) {
-      for (std::size_t k = 1; k < chunk.levels.size(); ++k) {
-        node.coarser.push_back({chunk.distances[k - 1], add_meshes(chunk.levels[k])});
-      }
-      for (const Model& level : chunk.levels) {
-        for (std::size_t s = 0; s < kSurfaceCount; ++s) {
-          for (glm::vec3 p : level.mesh(static_cast<Surface>(s)).positions) {
-            node.detail_bounds.add(p);
-          }
-        }
-      }
+    for (std::size_t k = 1; chunk.coarser_differ && k < chunk.levels.size(); ++k) {
+      node.coarser.push_back({chunk.distances[k - 1], add_meshes(chunk.levels[k])});
     }
     scene_.nodes.push_back(std::move(node));
   }
@@ -288,6 +279,7 @@ Scene WorldBuilder::finish() {
   add_chunks("ground", ground_);
   if (last_.triangle_count() != 0) add_node("sea", last_, glm::mat4(1.0f));
   last_ = Model{};
+  scene_.bound_detail_levels();
   return std::move(scene_);
 }
 

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -50,43 +51,71 @@ void make_frame(std::size_t triangles, int varyings, Written& w) {
   w.chunk.triangles = {0, static_cast<std::uint32_t>(triangles), 0};
 }
 
-void one_at_a_time(const std::vector<Triangle>& triangles, const std::vector<float>& over_w,
-                   int varyings, Written& w) {
-  make_frame(triangles.size(), varyings, w);
-  pipeline::PrimitiveSink sink(w.frame, w.chunk, varyings);
+// The triangles as setup's inputs: each corner its own projected vertex, whose varyings are
+// those of the triangle's vertex in `values` (`varyings` floats each).
+struct Inputs {
+  std::vector<pipeline::ProjectedVertex> projected;
+  std::vector<float> over_w;
+  std::vector<std::uint32_t> vertex[3], front_facing;
+};
+Inputs inputs_of(const std::vector<Triangle>& triangles, const std::vector<float>& values,
+                 int varyings) {
+  Inputs in;
   for (const Triangle& t : triangles) {
+    for (int i = 0; i < 3; ++i) {
+      in.vertex[i].push_back(static_cast<std::uint32_t>(in.projected.size()));
+      pipeline::ProjectedVertex p{};
+      p.screen = t.s[i];
+      in.projected.push_back(p);
+      const float* v = values.data() + t.vertex[i] * varyings;
+      in.over_w.insert(in.over_w.end(), v, v + varyings);
+    }
+    in.front_facing.push_back(t.front_facing ? 1 : 0);
+  }
+  in.over_w.resize(in.over_w.size() + pipeline::kOverWSlack);
+  return in;
+}
+
+void one_at_a_time(const Inputs& in, int varyings, Written& w) {
+  const std::size_t n = in.front_facing.size();
+  make_frame(n, varyings, w);
+  pipeline::PrimitiveSink sink(w.frame, w.chunk, varyings);
+  for (std::size_t t = 0; t < n; ++t) {
+    ScreenVertex s[3];
     const float* values[3];
-    for (int i = 0; i < 3; ++i) values[i] = over_w.data() + t.vertex[i] * varyings;
-    if (!pipeline::setup_projected_triangle(sink, kWidth, kHeight, 7, t.s, values, varyings,
-                                            t.front_facing)) {
+    for (int i = 0; i < 3; ++i) {
+      s[i] = in.projected[in.vertex[i][t]].screen;
+      values[i] = in.over_w.data() + in.vertex[i][t] * varyings;
+    }
+    if (!pipeline::setup_projected_triangle(sink, kWidth, kHeight, 7, s, values, varyings,
+                                            in.front_facing[t] != 0)) {
       ++w.dropped;
     }
   }
 }
 
-// Set up in batches into a chunk with room for `kept` triangles, as many as setup keeps: the
-// last triangles' planes end where the region does.
-void batched(const std::vector<Triangle>& triangles, const std::vector<float>& over_w, int varyings,
-             std::size_t kept, Written& w) {
+// Set up in runs of `run` triangles into a chunk with room for `kept` triangles, as many as
+// setup keeps: the last triangles' planes end where the region does. The index arrays have
+// garbage past each run's end (as culling's survivors do), which must not matter.
+void batched(const Inputs& in, int varyings, int run, std::size_t kept, Written& w) {
   make_frame(kept, varyings, w);
   pipeline::PrimitiveSink sink(w.frame, w.chunk, varyings);
   const pipeline::SetupBatchKernel kernel = pipeline::setup_batch_kernel();
-  pipeline::SetupBatch batch;
-  auto flush = [&] {
-    w.dropped += kernel(batch, {sink, kWidth, kHeight, 7, varyings});
-    batch.count = 0;
-  };
-  for (const Triangle& t : triangles) {
-    const int l = batch.count++;
-    for (int i = 0; i < 3; ++i) {
-      batch.x[i][l] = t.s[i].x, batch.y[i][l] = t.s[i].y;
-      batch.z[i][l] = t.s[i].z, batch.inv_w[i][l] = t.s[i].inv_w;
-      batch.over_w[i][l] = over_w.data() + t.vertex[i] * varyings;
-    }
-    batch.front_facing[l] = t.front_facing;
-    if (batch.count == pipeline::kSetupBatch) flush();
+  const std::size_t n = in.front_facing.size();
+  std::vector<std::uint32_t> vertex[3], front_facing;
+  for (std::size_t first = 0; first < n; first += run) {
+    const int count = static_cast<int>(std::min<std::size_t>(run, n - first));
+    const auto copy = [&](const std::vector<std::uint32_t>& from, std::vector<std::uint32_t>& to) {
+      to.assign(count + pipeline::kSetupBatchSlack, 0xdeadbeefu);
+      std::copy_n(from.begin() + first, count, to.begin());
+    };
+    for (int i = 0; i < 3; ++i) copy(in.vertex[i], vertex[i]);
+    copy(in.front_facing, front_facing);
+    const pipeline::SetupBatch batch{
+        count, {vertex[0].data(), vertex[1].data(), vertex[2].data()}, front_facing.data()};
+    w.dropped +=
+        kernel(batch, {sink, kWidth, kHeight, 7, in.projected.data(), in.over_w.data(), varyings});
   }
-  if (batch.count > 0) flush();
 }
 
 bool same_bytes(const void* a, const void* b, std::size_t n) { return std::memcmp(a, b, n) == 0; }
@@ -170,15 +199,17 @@ TEST(SetupBatch, WritesWhatSettingUpOneAtATimeWritesOnEveryTarget) {
       v = rng() % 64 == 0 ? (rng() % 2 ? 3e38f : std::numeric_limits<float>::quiet_NaN())
                           : value(rng);
     }
+    const Inputs in = inputs_of(triangles, over_w, varyings);
     Written expected;
-    one_at_a_time(triangles, over_w, varyings, expected);
+    one_at_a_time(in, varyings, expected);
     ASSERT_GT(expected.dropped, 100u);  // the awkward cases are there
     ASSERT_GT(expected.chunk.triangles.used, 2000u);
     for (std::int64_t target : simd_targets()) {
       ForcedTarget forced(target);
       SCOPED_TRACE(hwy::TargetName(target) + std::string(", varyings ") + std::to_string(varyings));
       Written got;
-      batched(triangles, over_w, varyings, expected.chunk.triangles.used, got);
+      // Runs of a few triangles (a vector and a part), and as long as culling's.
+      batched(in, varyings, varyings % 2 == 0 ? 11 : 128, expected.chunk.triangles.used, got);
       EXPECT_EQ(got.dropped, expected.dropped);
       ASSERT_EQ(got.chunk.triangles.used, expected.chunk.triangles.used);
       const std::size_t n = expected.chunk.triangles.used;

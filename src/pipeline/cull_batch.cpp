@@ -8,10 +8,10 @@
 #include <hwy/highway.h>
 
 #include <algorithm>
-#include <cstring>
 
 #include "pipeline/chosen_target.hpp"
 #include "pipeline/clip.hpp"
+#include "pipeline/projected_load-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace facet::pipeline::HWY_NAMESPACE {
@@ -21,66 +21,12 @@ using DoubleTag = hn::ScalableTag<double>;
 using FloatTag = hn::Rebind<float, DoubleTag>;
 using UintTag = hn::Rebind<std::uint32_t, DoubleTag>;
 
-// Clip x, y, w and the codes of the vertices `index` (lane by lane) of ProjectedVertex array
-// `fields` (8 floats a vertex).
-template <class DF>
-HWY_INLINE void LoadVertices(DF df, const float* fields, hn::Vec<hn::RebindToUnsigned<DF>> index,
-                             hn::Vec<DF>& x, hn::Vec<DF>& y, hn::Vec<DF>& w,
-                             hn::Vec<hn::RebindToUnsigned<DF>>& codes) {
-  const hn::RebindToUnsigned<DF> du;
-#if HWY_TARGET != HWY_SCALAR && HWY_TARGET != HWY_EMU128
-  constexpr std::size_t kLanes = hn::MaxLanes(DF());
-  if constexpr (kLanes == 4 || kLanes == 8) {
-    // Each vertex's first 16 bytes (clip x, y, w, codes) loaded whole, then transposed: on
-    // this project's AVX-512 machine, cheaper than four gathers. pair[l] holds vertices l and,
-    // with eight lanes, l + 4.
-    alignas(32) std::uint32_t at[kLanes];
-    hn::Store(index, du, at);
-    hn::Vec<DF> pair[4];
-    for (std::size_t l = 0; l < 4; ++l) {
-      if constexpr (kLanes == 8) {
-        const hn::Half<DF> d4;
-        pair[l] = hn::Combine(df, hn::LoadU(d4, fields + 8 * std::size_t{at[l + 4]}),
-                              hn::LoadU(d4, fields + 8 * std::size_t{at[l]}));
-      } else {
-        pair[l] = hn::LoadU(df, fields + 8 * std::size_t{at[l]});
-      }
-    }
-    const hn::Repartition<std::uint64_t, DF> d64;
-    const auto low01 = hn::BitCast(d64, hn::InterleaveLower(df, pair[0], pair[1]));
-    const auto high01 = hn::BitCast(d64, hn::InterleaveUpper(df, pair[0], pair[1]));
-    const auto low23 = hn::BitCast(d64, hn::InterleaveLower(df, pair[2], pair[3]));
-    const auto high23 = hn::BitCast(d64, hn::InterleaveUpper(df, pair[2], pair[3]));
-    x = hn::BitCast(df, hn::InterleaveLower(d64, low01, low23));
-    y = hn::BitCast(df, hn::InterleaveUpper(d64, low01, low23));
-    w = hn::BitCast(df, hn::InterleaveLower(d64, high01, high23));
-    codes = hn::BitCast(du, hn::InterleaveUpper(d64, high01, high23));
-    return;
-  }
-#endif
-  {  // narrower targets: lane by lane
-    constexpr std::size_t kMax = hn::MaxLanes(DF());
-    alignas(64) std::uint32_t at[kMax], code[kMax];
-    alignas(64) float xs[kMax], ys[kMax], ws[kMax];
-    hn::Store(index, du, at);
-    for (std::size_t l = 0; l < hn::Lanes(df); ++l) {
-      const float* vertex = fields + 8 * std::size_t{at[l]};
-      xs[l] = vertex[0], ys[l] = vertex[1], ws[l] = vertex[2];
-      std::memcpy(&code[l], vertex + 3, sizeof code[l]);
-    }
-    x = hn::Load(df, xs), y = hn::Load(df, ys), w = hn::Load(df, ws);
-    codes = hn::Load(du, code);
-  }
-}
-
 void CullTriangles(const CullInput& in, CullSurvivors& out) {
   const DoubleTag dd;
   const FloatTag df;
   const UintTag du;
   constexpr std::size_t kLanes = hn::MaxLanes(dd);
   const int lanes = static_cast<int>(hn::Lanes(dd));
-  static_assert(sizeof(ProjectedVertex) == 8 * sizeof(float));
-  const float* fields = &in.projected->clip_x;
   const auto frustum = hn::Set(du, (1u << kClipPlaneCount) - 1);
   const auto not_finite = hn::Set(du, kNotFinite);
   const auto zero_u = hn::Zero(du);
@@ -101,9 +47,10 @@ void CullTriangles(const CullInput& in, CullSurvivors& out) {
     hn::Vec<DoubleTag> x[3], y[3], w[3];
     hn::Vec<UintTag> code[3];
     for (int v = 0; v < 3; ++v) {
-      hn::Vec<FloatTag> xv, yv, wv;
-      LoadVertices(df, fields, index[v], xv, yv, wv, code[v]);
-      x[v] = hn::PromoteTo(dd, xv), y[v] = hn::PromoteTo(dd, yv), w[v] = hn::PromoteTo(dd, wv);
+      hn::Vec<FloatTag> clip[4];  // x, y, w and the codes' bits
+      LoadProjectedFields(df, in.projected, 0, index[v], clip);
+      x[v] = hn::PromoteTo(dd, clip[0]), y[v] = hn::PromoteTo(dd, clip[1]);
+      w[v] = hn::PromoteTo(dd, clip[2]), code[v] = hn::BitCast(du, clip[3]);
     }
     // homogeneous_orientation (primitive.hpp), operation for operation.
     const auto orientation =

@@ -25,10 +25,9 @@ struct Assembler {
   const DrawVertices& vertices;
   ClipBounds guard;
   bool hooks = has_triangle_hooks(draw);
-  // Triangles that need no clipping wait here to be set up together (setup_batch.hpp); any
-  // other primitive first sets up those waiting, so the sink keeps submission order.
-  SetupBatchKernel setup_kernel = nullptr;  // null: each is set up as it comes
-  SetupBatch* batch = nullptr;
+  // Set-up of the triangles that need no clipping, a run of culling's survivors at a time
+  // (setup_batch.hpp); null: each is set up as it comes.
+  SetupBatchKernel setup_kernel = nullptr;
 
   bool culls_front = draw.material.cull == CullMode::front;
   bool culls_back = draw.material.cull == CullMode::back;
@@ -55,7 +54,6 @@ struct Assembler {
     setup_line(out, width, height, p, q, color);
   }
 
-  // A triangle culling let through, for the rest of assembly.
   // A triangle culling (cull_batch.hpp) kept.
   struct Accepted {
     std::uint32_t i0, i1, i2;
@@ -74,14 +72,14 @@ struct Assembler {
     return any_out & (kClipNear | kClipFar);
   }
 
-  // Whether a triangle culling accepted goes straight to the setup batch: assemble()'s common
-  // case, tested without its call.
-  bool waits_for_setup(const Accepted& a) const {
-    return setup_kernel != nullptr && clip_planes(a.codes) == 0;
+  // Whether a triangle culling accepted goes to the setup kernel: assemble()'s common case,
+  // tested without its call.
+  bool batch_set_up(unsigned codes) const {
+    return setup_kernel != nullptr && clip_planes(codes) == 0;
   }
 
-  // Edges, clipping and setup of a triangle culling accepted that does not wait for the setup
-  // batch (waits_for_setup).
+  // Edges, clipping and setup of a triangle culling accepted that the setup kernel does not
+  // take (batch_set_up).
   void assemble(const Accepted& a) {
     const std::uint32_t i0 = a.i0, i1 = a.i1, i2 = a.i2;
     const bool front_facing = a.front_facing;
@@ -105,7 +103,6 @@ struct Assembler {
       return;
     }
 
-    set_up_waiting();
     // The per-triangle hooks and the clipper rewrite vertices: work on copies. (A draw whose
     // vertex stage skipped the clip vertices has neither: its bounds said no clipping.)
     assert(vertices.clip_written);
@@ -143,24 +140,14 @@ struct Assembler {
     }
   }
 
-  // Puts a triangle that needs no clipping in the batch, setting the batch up once full.
-  void wait_for_setup(const Accepted& a) {
-    SetupBatch& b = *batch;
-    const int l = b.count;
-    const std::uint32_t index[3] = {a.i0, a.i1, a.i2};
-    for (int i = 0; i < 3; ++i) {
-      const ScreenVertex& s = vertices.projected[index[i]].screen;
-      b.x[i][l] = s.x, b.y[i][l] = s.y, b.z[i][l] = s.z, b.inv_w[i][l] = s.inv_w;
-      b.over_w[i][l] = vertices.over_w.data() + index[i] * draw.pipeline.varyings;
-    }
-    b.front_facing[l] = a.front_facing;
-    if (++b.count == kSetupBatch) set_up_waiting();
-  }
-
-  void set_up_waiting() {
-    if (batch == nullptr || batch->count == 0) return;
-    counts.culled += setup_kernel(*batch, {out, width, height, draw_index, draw.pipeline.varyings});
-    batch->count = 0;
+  // Sets up survivors [first, end), which need no clipping, with the kernel.
+  void set_up_run(const CullSurvivors& survivors, int first, int end) {
+    if (first == end) return;
+    const SetupBatch batch{end - first,
+                           {survivors.i0 + first, survivors.i1 + first, survivors.i2 + first},
+                           survivors.front_facing + first};
+    counts.culled += setup_kernel(batch, {out, width, height, draw_index, vertices.projected.data(),
+                                          vertices.over_w.data(), draw.pipeline.varyings});
   }
 
   void line(std::uint32_t i0, std::uint32_t i1) {
@@ -214,15 +201,17 @@ void assemble_triangles(Assembler& assembler, const Mesh& mesh, std::size_t begi
           assembler.culls_front, assembler.culls_back},
          survivors);
     assembler.counts.culled += static_cast<std::uint64_t>(count - survivors.count);
+    // Runs of survivors that need no clipping go to the setup kernel whole; the others, in
+    // between, one at a time, so the sink keeps submission order.
+    int run = 0;
     for (int k = 0; k < survivors.count; ++k) {
-      const Assembler::Accepted a{survivors.i0[k], survivors.i1[k], survivors.i2[k],
-                                  survivors.codes[k], survivors.front_facing[k] != 0};
-      if (assembler.waits_for_setup(a)) {
-        assembler.wait_for_setup(a);
-      } else {
-        assembler.assemble(a);
-      }
+      if (assembler.batch_set_up(survivors.codes[k])) continue;
+      assembler.set_up_run(survivors, run, k);
+      run = k + 1;
+      assembler.assemble({survivors.i0[k], survivors.i1[k], survivors.i2[k], survivors.codes[k],
+                          survivors.front_facing[k] != 0});
     }
+    assembler.set_up_run(survivors, run, survivors.count);
   }
 }
 
@@ -244,13 +233,10 @@ void assemble_primitives(const Frame& frame, std::uint32_t draw_index, const Dra
   }
   // Edges come before their triangle's fill, so wireframe draws set up one at a time (and draws
   // of edges only set up no triangle).
-  SetupBatch batch;
   if (!assembler.hooks && !draw.pipeline.draws_edges && draw.pipeline.fills_triangles) {
     assembler.setup_kernel = setup_batch_kernel();
-    assembler.batch = &batch;
   }
   assemble_triangles(assembler, mesh, begin, end);
-  assembler.set_up_waiting();
 }
 
 }  // namespace facet::pipeline

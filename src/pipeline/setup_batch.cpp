@@ -19,6 +19,7 @@
 
 #include "pipeline/chosen_target.hpp"
 #include "pipeline/fixed_point.hpp"
+#include "pipeline/projected_load-inl.h"
 #include "pipeline/setup.hpp"
 
 HWY_BEFORE_NAMESPACE();
@@ -136,12 +137,20 @@ int SetupBatchLanes(const SetupBatch& b, const SetupBatchTarget& target) {
   alignas(64) float z_dx[kLanes], z_dy[kLanes], inv_w_dx[kLanes], inv_w_dy[kLanes];
   alignas(64) double x1[kLanes], y1[kLanes], x2[kLanes], y2[kLanes], inv_det[kLanes];
   int dropped = 0;
+  const hn::RebindToUnsigned<IntTag> du;
   for (int first = 0; first < b.count; first += lanes) {
+    // The lanes past the batch read vertex 0 (the slack's indices are not vertices).
+    const auto valid = hn::FirstN(du, static_cast<std::size_t>(b.count - first));
+    alignas(64) std::uint32_t vertex[3][kLanes];
     IntVec x[3], y[3];
     FloatVec z[3], inv_w[3];
     for (int i = 0; i < 3; ++i) {
-      x[i] = hn::Load(di, b.x[i] + first), y[i] = hn::Load(di, b.y[i] + first);
-      z[i] = hn::Load(df, b.z[i] + first), inv_w[i] = hn::Load(df, b.inv_w[i] + first);
+      const auto index = hn::IfThenElseZero(valid, hn::LoadU(du, b.vertex[i] + first));
+      hn::Store(index, du, vertex[i]);
+      hn::Vec<FloatTag> screen[4];  // x, y (the bits of integers), z, 1 / w
+      LoadProjectedFields(df, target.projected, kScreenField, index, screen);
+      x[i] = hn::BitCast(di, screen[0]), y[i] = hn::BitCast(di, screen[1]);
+      z[i] = screen[2], inv_w[i] = screen[3];
     }
     // signed_area, exactly; then its sign and whether it is zero as 32-bit lanes (a whole number
     // keeps both as a float).
@@ -150,7 +159,8 @@ int SetupBatchLanes(const SetupBatch& b, const SetupBatchTarget& target) {
         hn::Mul(hn::PromoteTo(dd, hn::Sub(y[1], y[0])), hn::PromoteTo(dd, hn::Sub(x[2], x[0]))));
     const FloatVec area_sign = hn::DemoteTo(df, area);
     const auto negative = hn::RebindMask(di, hn::Lt(area_sign, hn::Zero(df)));
-    const auto front = hn::Ne(hn::Load(di, b.front_facing + first), zero);
+    const auto front =
+        hn::RebindMask(di, hn::Ne(hn::LoadU(du, b.front_facing + first), hn::Zero(du)));
     // Degenerate after snapping, or snapping flipped a sliver: dropped.
     auto keep =
         hn::AndNot(hn::Xor(negative, front), hn::RebindMask(di, hn::Ne(area_sign, hn::Zero(df))));
@@ -242,14 +252,14 @@ int SetupBatchLanes(const SetupBatch& b, const SetupBatchTarget& target) {
         ++dropped;
         continue;
       }
-      const int lane = first + l;
       const TriangleSlot slot = target.out.reserve_triangle();
       SetupTriangle& t = *slot.triangle;
       for (int i = 0; i < 3; ++i) t.a[i] = a[i][l], t.b[i] = bx[i][l], t.c[i] = c[i][l];
       t.min_x = min_x[l], t.min_y = min_y[l], t.max_x = max_x[l], t.max_y = max_y[l];
       t.ref_x = ref_x[l], t.ref_y = ref_y[l];
-      t.z = {b.z[0][lane], z_dx[l], z_dy[l]};
-      t.inv_w = {b.inv_w[0][lane], inv_w_dx[l], inv_w_dy[l]};
+      const ScreenVertex& v0 = target.projected[vertex[0][l]].screen;
+      t.z = {v0.z, z_dx[l], z_dy[l]};
+      t.inv_w = {v0.inv_w, inv_w_dx[l], inv_w_dy[l]};
       t.varying_planes = slot.plane_index;
       t.draw = target.draw;
       target.out.add_reserved_triangle(slot);
@@ -258,8 +268,10 @@ int SetupBatchLanes(const SetupBatch& b, const SetupBatchTarget& target) {
       const Coefficients one{hn::Set(dd, x1[l]), hn::Set(dd, y1[l]), hn::Set(dd, x2[l]),
                              hn::Set(dd, y2[l]), hn::Set(dd, inv_det[l])};
       const bool swaps = swapped[l] != 0;
-      const float* const v[3] = {b.over_w[0][lane], b.over_w[swaps ? 2 : 1][lane],
-                                 b.over_w[swaps ? 1 : 2][lane]};
+      const int n = target.varyings;
+      const float* const v[3] = {target.over_w + std::size_t{vertex[0][l]} * n,
+                                 target.over_w + std::size_t{vertex[swaps ? 2 : 1][l]} * n,
+                                 target.over_w + std::size_t{vertex[swaps ? 1 : 2][l]} * n};
       float* planes = &slot.planes[0].at_ref;
       const int whole = target.varyings - target.varyings % lanes;
       int k = 0;

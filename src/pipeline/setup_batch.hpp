@@ -1,5 +1,5 @@
-// Stage: setup, batched. Primitive assembly (primitive.cpp) gathers the triangles that need no
-// clipping into a SetupBatch, and a SIMD kernel (setup_batch.cpp, compiled for every target
+// Stage: setup, batched. Primitive assembly (primitive.cpp) hands the triangles culling kept that
+// need no clipping, a run at a time, to a SIMD kernel (setup_batch.cpp, compiled for every target
 // Highway supports) sets them up: winding, pixel box, edge functions, depth and 1 / w planes
 // with one triangle per lane, then each kept triangle's varying planes with one plane per lane.
 // It writes them, in order, as setup_projected_triangle (setup.hpp) would one at a time, bit for
@@ -14,19 +14,15 @@
 
 namespace facet::pipeline {
 
-// Triangles per batch: a multiple of every target's lane count.
-inline constexpr int kSetupBatch = 32;
-
-// Per triangle (lane): its vertices' screen positions (ScreenVertex) and varyings times 1 / w,
-// in the draw's winding, and the facing culling decided.
+// Triangles to set up, a lane each, by their vertices' indices into the draw's projected
+// vertices and varyings (primitive assembly passes a run of the cull kernel's survivors, which
+// need no clipping, in place): the kernel reads the indices a vector at a time, so each array
+// must be readable kSetupBatchSlack entries past `count` (what is there is not used).
+inline constexpr int kSetupBatchSlack = 16;
 struct SetupBatch {
-  int count = 0;  // lanes [0, count) hold triangles
-  alignas(64) std::int32_t x[3][kSetupBatch] = {};
-  alignas(64) std::int32_t y[3][kSetupBatch] = {};
-  alignas(64) float z[3][kSetupBatch] = {};
-  alignas(64) float inv_w[3][kSetupBatch] = {};
-  alignas(64) std::int32_t front_facing[kSetupBatch] = {};  // 1 or 0
-  const float* over_w[3][kSetupBatch] = {};                 // `varyings` floats each
+  int count = 0;
+  const std::uint32_t* vertex[3] = {};     // in the draw's winding
+  const std::uint32_t* front_facing = {};  // 1 or 0, as culling decided
 };
 
 // What the kernel needs besides the batch.
@@ -34,6 +30,8 @@ struct SetupBatchTarget {
   PrimitiveSink& out;
   int width, height;  // the frame's
   std::uint32_t draw;
+  const ProjectedVertex* projected;  // the draw's, screen parts meaningful (no clipping)
+  const float* over_w;               // `varyings` floats a vertex, kOverWSlack past the last
   int varyings;
 };
 

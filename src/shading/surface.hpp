@@ -80,13 +80,21 @@ void surface_vertex_batch(const DrawUniforms& u, const VertexBatchInput& in,
   // material_color(): white vertex colors where the mesh has none, multiplied all the same.
   const bool vary = u.use_vertex_colors && in.colors != nullptr;
   const glm::vec4 same = u.use_vertex_colors ? u.base_color * glm::vec4(1.0f) : u.base_color;
-  for (int c = 0; c < 4; ++c) {
-    float* slot = out[kColorSlot + c];
-    if (vary) {
-      for (int n = 0; n < count; ++n) slot[n] = u.base_color[c] * in.colors[n][c];
-    } else {
-      std::fill_n(slot, count, same[c]);
+  if (vary) {
+    // The four channels in one loop, the factors in locals: a loop per channel indexed glm's
+    // vec4 by a variable, which GCC compiled into a branch per vertex (nine tenths of this
+    // function's time on the islands).
+    const float r = u.base_color.r, g = u.base_color.g, b = u.base_color.b, a = u.base_color.a;
+    float* red = out[kColorSlot];
+    float* green = out[kColorSlot + 1];
+    float* blue = out[kColorSlot + 2];
+    float* alpha = out[kColorSlot + 3];
+    for (int n = 0; n < count; ++n) {
+      const glm::vec4& color = in.colors[n];
+      red[n] = r * color.r, green[n] = g * color.g, blue[n] = b * color.b, alpha[n] = a * color.a;
     }
+  } else {
+    for (int c = 0; c < 4; ++c) std::fill_n(out[kColorSlot + c], count, same[c]);
   }
   if constexpr (kCount > kNormalSlot) {
     for (int c = 0; c < 3; ++c) std::copy_n(in.normal[c], count, out[kNormalSlot + c]);

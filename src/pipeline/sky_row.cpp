@@ -68,14 +68,16 @@ void FillSkyRow(const SkyView& view, const Environment& env, int x0, int y, int 
         hn::Add(hn::Add(hn::Mul(dir[0], dir[0]), hn::Mul(dir[1], dir[1])), hn::Mul(dir[2], dir[2]));
     const FloatV up = hn::Mul(dir[1], hn::Div(one, hn::Sqrt(length_squared)));
     // The gradient: toward the zenith above the horizon, toward the ground (4x faster) below.
+    // Each lane takes the square root of its own side's argument only: one square root, not
+    // one per side.
     const auto above = hn::Ge(up, hn::Zero(d));
     const FloatV below_t = hn::Mul(hn::Neg(up), hn::Set(d, 4.0f));
-    const FloatV t_above = hn::Sqrt(up);
-    const FloatV t_below = hn::Sqrt(hn::IfThenElse(hn::Lt(one, below_t), one, below_t));
+    const FloatV t =
+        hn::Sqrt(hn::IfThenElse(above, up, hn::IfThenElse(hn::Lt(one, below_t), one, below_t)));
     FloatV color[3];
     for (int c = 0; c < 3; ++c) {
-      color[c] = hn::Mul(hn::IfThenElse(above, mix(env.sky_horizon, env.sky_zenith, t_above, c),
-                                        mix(env.sky_horizon, env.ground, t_below, c)),
+      color[c] = hn::Mul(hn::IfThenElse(above, mix(env.sky_horizon, env.sky_zenith, t, c),
+                                        mix(env.sky_horizon, env.ground, t, c)),
                          hn::Set(d, env.intensity));
     }
     if (all_sky) {  // most of the sky: whole vectors of it, stored as (r, g, b, 1) colors

@@ -194,6 +194,8 @@ void assemble_triangles(Assembler& assembler, const Mesh& mesh, std::size_t begi
                         std::size_t end) {
   const CullKernel cull = cull_kernel();
   CullSurvivors survivors;
+  // The setup kernel reads a run's indices a vector at a time, past the run's end.
+  static_assert(CullSurvivors::kRoom >= kCullBatch + kSetupBatchSlack);
   std::uint32_t listed[3 * kCullBatch];
   for (std::size_t first = begin; first < end; first += kCullBatch) {
     const int count = static_cast<int>(std::min<std::size_t>(end - first, kCullBatch));

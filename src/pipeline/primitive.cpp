@@ -74,12 +74,12 @@ struct Assembler {
 
   // Whether a triangle culling accepted goes to the setup kernel: assemble()'s common case,
   // tested without its call.
-  bool batch_set_up(unsigned codes) const {
+  bool kernel_sets_up(unsigned codes) const {
     return setup_kernel != nullptr && clip_planes(codes) == 0;
   }
 
   // Edges, clipping and setup of a triangle culling accepted that the setup kernel does not
-  // take (batch_set_up).
+  // take (kernel_sets_up).
   void assemble(const Accepted& a) {
     const std::uint32_t i0 = a.i0, i1 = a.i1, i2 = a.i2;
     const bool front_facing = a.front_facing;
@@ -207,7 +207,7 @@ void assemble_triangles(Assembler& assembler, const Mesh& mesh, std::size_t begi
     // between, one at a time, so the sink keeps submission order.
     int run = 0;
     for (int k = 0; k < survivors.count; ++k) {
-      if (assembler.batch_set_up(survivors.codes[k])) continue;
+      if (assembler.kernel_sets_up(survivors.codes[k])) continue;
       assembler.set_up_run(survivors, run, k);
       run = k + 1;
       assembler.assemble({survivors.i0[k], survivors.i1[k], survivors.i2[k], survivors.codes[k],

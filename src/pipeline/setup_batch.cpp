@@ -134,7 +134,8 @@ int SetupBatchLanes(const SetupBatch& b, const SetupBatchTarget& target) {
   alignas(64) std::int64_t c[3][kLanes];
   alignas(64) std::int32_t min_x[kLanes], min_y[kLanes], max_x[kLanes], max_y[kLanes];
   alignas(64) float ref_x[kLanes], ref_y[kLanes];
-  alignas(64) float z_dx[kLanes], z_dy[kLanes], inv_w_dx[kLanes], inv_w_dy[kLanes];
+  alignas(64) float z0[kLanes], z_dx[kLanes], z_dy[kLanes];
+  alignas(64) float inv_w0[kLanes], inv_w_dx[kLanes], inv_w_dy[kLanes];
   alignas(64) double x1[kLanes], y1[kLanes], x2[kLanes], y2[kLanes], inv_det[kLanes];
   int dropped = 0;
   const hn::RebindToUnsigned<IntTag> du;
@@ -241,9 +242,9 @@ int SetupBatchLanes(const SetupBatch& b, const SetupBatchTarget& target) {
     hn::Store(solver.inv_det, dd, inv_det);
     FloatVec dx, dy;
     solver.solve(z[0], z[1], z[2], dx, dy);
-    hn::Store(dx, df, z_dx), hn::Store(dy, df, z_dy);
+    hn::Store(z[0], df, z0), hn::Store(dx, df, z_dx), hn::Store(dy, df, z_dy);
     solver.solve(inv_w[0], inv_w[1], inv_w[2], dx, dy);
-    hn::Store(dx, df, inv_w_dx), hn::Store(dy, df, inv_w_dy);
+    hn::Store(inv_w[0], df, inv_w0), hn::Store(dx, df, inv_w_dx), hn::Store(dy, df, inv_w_dy);
 
     // Each kept triangle in order: its record, then its varying planes a vector at a time.
     const int group = std::min(lanes, b.count - first);
@@ -257,9 +258,8 @@ int SetupBatchLanes(const SetupBatch& b, const SetupBatchTarget& target) {
       for (int i = 0; i < 3; ++i) t.a[i] = a[i][l], t.b[i] = bx[i][l], t.c[i] = c[i][l];
       t.min_x = min_x[l], t.min_y = min_y[l], t.max_x = max_x[l], t.max_y = max_y[l];
       t.ref_x = ref_x[l], t.ref_y = ref_y[l];
-      const ScreenVertex& v0 = target.projected[vertex[0][l]].screen;
-      t.z = {v0.z, z_dx[l], z_dy[l]};
-      t.inv_w = {v0.inv_w, inv_w_dx[l], inv_w_dy[l]};
+      t.z = {z0[l], z_dx[l], z_dy[l]};
+      t.inv_w = {inv_w0[l], inv_w_dx[l], inv_w_dy[l]};
       t.varying_planes = slot.plane_index;
       t.draw = target.draw;
       target.out.add_reserved_triangle(slot);

@@ -15,6 +15,7 @@
 #include <hwy/highway.h>
 
 #include <algorithm>
+#include <bit>
 #include <limits>
 
 #include "pipeline/chosen_target.hpp"
@@ -129,7 +130,7 @@ int SetupBatchLanes(const SetupBatch& b, const SetupBatchTarget& target) {
   const IntVec last_x = hn::Set(di, target.width - 1), last_y = hn::Set(di, target.height - 1);
   const FloatVec to_pixels = hn::Set(df, 1.0f / static_cast<float>(kSubpixelScale));
   // One vector of triangles' results, for the per-triangle part.
-  alignas(64) std::int32_t kept[kLanes], swapped[kLanes];
+  alignas(64) std::int32_t swapped[kLanes];
   alignas(64) std::int32_t a[3][kLanes], bx[3][kLanes];
   alignas(64) std::int64_t c[3][kLanes];
   alignas(64) std::int32_t min_x[kLanes], min_y[kLanes], max_x[kLanes], max_y[kLanes];
@@ -221,7 +222,14 @@ int SetupBatchLanes(const SetupBatch& b, const SetupBatchTarget& target) {
           CoversACentre(x, y, edge_a, edge_b, bias, box_x0, box_y0, box_width, box_height, probed);
       keep = hn::AndNot(hn::AndNot(covers, probed), keep);
     }
-    hn::Store(hn::VecFromMask(di, keep), di, kept);
+    // The kept lanes as bits, visited lowest first below: a test per lane mispredicted on
+    // the many small triangles a batch drops here and there.
+    static_assert(kLanes <= 32);
+    std::uint8_t kept_bytes[(kLanes + 7) / 8] = {};
+    hn::StoreMaskBits(di, hn::And(keep, hn::RebindMask(di, valid)), kept_bytes);
+    std::uint32_t kept = 0;
+    for (std::size_t i = 0; i < sizeof kept_bytes; ++i)
+      kept |= std::uint32_t{kept_bytes[i]} << (8 * i);
 
     // PlaneSolver over the vertices in pixels, and the depth and 1 / w planes.
     FloatVec px[3], py[3];
@@ -247,12 +255,9 @@ int SetupBatchLanes(const SetupBatch& b, const SetupBatchTarget& target) {
     hn::Store(inv_w[0], df, inv_w0), hn::Store(dx, df, inv_w_dx), hn::Store(dy, df, inv_w_dy);
 
     // Each kept triangle in order: its record, then its varying planes a vector at a time.
-    const int group = std::min(lanes, b.count - first);
-    for (int l = 0; l < group; ++l) {
-      if (kept[l] == 0) {
-        ++dropped;
-        continue;
-      }
+    dropped += std::min(lanes, b.count - first) - std::popcount(kept);
+    for (; kept != 0; kept &= kept - 1) {
+      const int l = std::countr_zero(kept);
       const TriangleSlot slot = target.out.reserve_triangle();
       SetupTriangle& t = *slot.triangle;
       for (int i = 0; i < 3; ++i) t.a[i] = a[i][l], t.b[i] = bx[i][l], t.c[i] = c[i][l];

@@ -10,9 +10,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <glm/geometric.hpp>
+#include <map>
 #include <set>
 #include <string>
 #include <tuple>
+#include <utility>
+#include <vector>
 
 #include "facet/image_io.hpp"
 #include "facet/renderer.hpp"
@@ -177,6 +180,64 @@ TEST(Islands, GroundLevelsMeetAtTheChunkEdges) {
   }
   EXPECT_GT(ground_chunks, 100);
   EXPECT_EQ(with_levels, ground_chunks);
+}
+
+// Where the beach line cuts the ground's triangles, the two triangles of an edge are cut at the
+// same point: inside a chunk, at every level, every edge above the hidden sea floor belongs to
+// exactly two triangles. (A cut on one side only would leave a vertex in the middle of the other
+// triangle's edge, where pixels can fall through the ground.)
+TEST(Islands, GroundEdgesInsideAChunkJoinTwoTriangles) {
+  const Scene& scene = world().scene;
+  using Point = std::tuple<float, float, float>;
+  int checked = 0, unjoined = 0;
+  for (const SceneNode& node : scene.nodes) {
+    int i = 0, j = 0;
+    if (std::sscanf(node.name.c_str(), "ground %d,%d", &i, &j) != 2) continue;
+    const float chunk = islands::WorldBuilder::kChunk;
+    const float x0 = chunk * i, z0 = chunk * j, x1 = x0 + chunk, z1 = z0 + chunk;
+    auto on_border = [&](glm::vec3 a, glm::vec3 b) {
+      auto near = [](float u, float v) { return std::abs(u - v) < 1e-3f; };
+      return (near(a.x, x0) && near(b.x, x0)) || (near(a.x, x1) && near(b.x, x1)) ||
+             (near(a.z, z0) && near(b.z, z0)) || (near(a.z, z1) && near(b.z, z1));
+    };
+    std::vector<const std::vector<MeshInstance>*> levels = {&node.instances};
+    for (const DetailLevel& level : node.coarser) levels.push_back(&level.instances);
+    for (const std::vector<MeshInstance>* instances : levels) {
+      std::map<std::pair<Point, Point>, int> edges;  // by their ends, lower first
+      for (const MeshInstance& instance : *instances) {
+        const Mesh& mesh = *scene.meshes[instance.mesh];
+        const std::size_t corners =
+            mesh.indices.empty() ? mesh.positions.size() : mesh.indices.size();
+        auto corner = [&](std::size_t k) {
+          return mesh.positions[mesh.indices.empty() ? k : mesh.indices[k]];
+        };
+        for (std::size_t t = 0; t + 2 < corners; t += 3) {
+          const glm::vec3 p[3] = {corner(t), corner(t + 1), corner(t + 2)};
+          if (glm::length(glm::cross(p[1] - p[0], p[2] - p[0])) == 0.0f) continue;  // no pixels
+          for (int e = 0; e < 3; ++e) {
+            Point a{p[e].x, p[e].y, p[e].z},
+                b{p[(e + 1) % 3].x, p[(e + 1) % 3].y, p[(e + 1) % 3].z};
+            ++edges[std::minmax(a, b)];
+          }
+        }
+      }
+      for (const auto& [ends, count] : edges) {
+        const glm::vec3 a(std::get<0>(ends.first), std::get<1>(ends.first),
+                          std::get<2>(ends.first));
+        const glm::vec3 b(std::get<0>(ends.second), std::get<1>(ends.second),
+                          std::get<2>(ends.second));
+        if (on_border(a, b) || std::max(a.y, b.y) < -0.02f) continue;
+        ++checked;
+        if (count != 2 && ++unjoined <= 5) {
+          ADD_FAILURE() << node.name << ": the edge (" << a.x << ", " << a.y << ", " << a.z
+                        << ") - (" << b.x << ", " << b.y << ", " << b.z << ") joins " << count
+                        << " triangles";
+        }
+      }
+    }
+  }
+  EXPECT_EQ(unjoined, 0);
+  EXPECT_GT(checked, 100000);
 }
 
 // Trees, bushes and stones have stand-ins for afar with fewer triangles.

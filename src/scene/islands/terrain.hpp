@@ -81,7 +81,8 @@ class Terrain {
   glm::vec3 falls_centre() const { return falls_centre_; }
   glm::vec2 falls_centre_xz() const { return {falls_centre_.x, falls_centre_.z}; }
 
-  // The ground over a rectangle (grass, sand and rock) at levels of detail: level k keeps
+  // The ground over a rectangle (grass, sand and rock; the sand ends on the beach line, which
+  // cuts through the grid's triangles) at levels of detail: level k keeps
   // every steps[k]-th line of a grid of `cell` metres squares (and the last line). Every level
   // has all the grid's points along the rectangle's edges, so rectangles side by side meet
   // without cracks whatever their levels.

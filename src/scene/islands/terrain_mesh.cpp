@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <glm/geometric.hpp>
 #include <limits>
+#include <unordered_map>
 #include <vector>
 
 #include "facet/procedural.hpp"
@@ -32,12 +33,16 @@ float smoothstep(float edge0, float edge1, float x) {
   return t * t * (3.0f - 2.0f * t);
 }
 
-Surface classify(vec3 centre, float face_up) {
-  const float n = value_noise(centre.x / 12.0f, centre.z / 12.0f, 41);
-  if (face_up < kCliff || centre.y > 40.0f + 10.0f * n) return Surface::rock;
-  if (centre.y < 1.9f + 0.9f * n) return Surface::sand;  // the beach
-  return Surface::grass;
+// The noise that moves the beach line and the rock line about.
+float lines_noise(vec3 p) { return value_noise(p.x / 12.0f, p.z / 12.0f, 41); }
+
+// Rock: faces steeper than kCliff, and the heights.
+bool is_rock(vec3 centre, float face_up) {
+  return face_up < kCliff || centre.y > 40.0f + 10.0f * lines_noise(centre);
 }
+
+// How far a point stands above the beach line: sand below it, grass above.
+float above_beach(vec3 p) { return p.y - (1.9f + 0.9f * lines_noise(p)); }
 
 // Gentle color variation so the repeating textures do not show their tiling: grass dries
 // toward the heights, sand darkens where the waves wet it.
@@ -185,34 +190,72 @@ std::vector<std::array<int, 3>> level_triangles(Grid& g, int step, float cell, G
 }
 
 // Sorts triangles of the grid's points into grass, sand and rock (leaving out those under the
-// sea, kHiddenBelow).
+// sea, kHiddenBelow). A triangle the beach line crosses is cut along it, so the sand ends on a
+// line through the triangles rather than in steps along their edges. The line crosses an edge
+// at one point, made once from the edge's lower-numbered end and shared by both triangles of
+// the edge (a rock triangle is cut too, all rock): no triangle has a vertex in the middle of
+// its neighbour's edge, where the ground could show gaps.
 Model ground_model(const Grid& g, const std::vector<std::array<int, 3>>& triangles) {
+  std::vector<vec3> points = g.points, normals = g.normals;  // then the crossings
+  std::vector<float> above(points.size());
+  for (std::size_t v = 0; v < points.size(); ++v) above[v] = above_beach(points[v]);
+  std::unordered_map<std::uint64_t, int> crossings;  // lower end << 32 | upper end -> point
+  auto crossing = [&](int a, int b) {
+    const int lo = std::min(a, b), hi = std::max(a, b);
+    const auto [at, added] = crossings.try_emplace(
+        std::uint64_t{static_cast<std::uint32_t>(lo)} << 32 | static_cast<std::uint32_t>(hi),
+        static_cast<int>(points.size()));
+    if (added) {
+      const float t = above[lo] / (above[lo] - above[hi]);
+      points.push_back(glm::mix(points[lo], points[hi], t));
+      normals.push_back(glm::normalize(glm::mix(normals[lo], normals[hi], t)));
+      above.push_back(0.0f);
+    }
+    return at->second;
+  };
+
   Mesh grass, sand, rock;
-  std::vector<std::uint32_t> grass_index(g.points.size(), kNone),
-      sand_index(g.points.size(), kNone);
+  std::vector<std::uint32_t> grass_index, sand_index;
   auto shared = [&](Surface surface, int v) {
     Mesh& mesh = surface == Surface::grass ? grass : sand;
-    std::uint32_t& slot = (surface == Surface::grass ? grass_index : sand_index)[v];
+    std::vector<std::uint32_t>& index = surface == Surface::grass ? grass_index : sand_index;
+    if (index.size() <= static_cast<std::size_t>(v)) index.resize(points.size(), kNone);
+    std::uint32_t& slot = index[v];
     if (slot == kNone) {
       slot = static_cast<std::uint32_t>(mesh.positions.size());
-      const vec3 p = g.points[v];
+      const vec3 p = points[v];
       const float tile = surface == Surface::grass ? kGrassTile : kSandTile;
-      add_vertex(mesh, p, g.normals[v], vec2(p.x, -p.z) / tile, tint(surface, p));
+      add_vertex(mesh, p, normals[v], vec2(p.x, -p.z) / tile, tint(surface, p));
     }
     return slot;
   };
-  for (const auto& [a, b, c] : triangles) {
-    const vec3 p[3] = {g.points[a], g.points[b], g.points[c]};
-    if (std::max({p[0].y, p[1].y, p[2].y}) < kHiddenBelow) continue;
-    const vec3 centre = (p[0] + p[1] + p[2]) / 3.0f;
-    const float up = glm::normalize(glm::cross(p[1] - p[0], p[2] - p[0])).y;
-    const Surface surface = classify(centre, up);
-    if (surface == Surface::rock) {
-      add_rock(rock, p);
-      continue;
-    }
+  auto add = [&](Surface surface, int a, int b, int c) {
+    if (surface == Surface::rock) return add_rock(rock, {points[a], points[b], points[c]});
     Mesh& mesh = surface == Surface::grass ? grass : sand;
     for (int v : {a, b, c}) mesh.indices.push_back(shared(surface, v));
+  };
+  for (const auto& [a, b, c] : triangles) {
+    const vec3 p[3] = {points[a], points[b], points[c]};
+    if (std::max({p[0].y, p[1].y, p[2].y}) < kHiddenBelow) continue;
+    const vec3 centre = (p[0] + p[1] + p[2]) / 3.0f;
+    const bool rocky = is_rock(centre, glm::normalize(glm::cross(p[1] - p[0], p[2] - p[0])).y);
+    const int v[3] = {a, b, c};
+    const bool grassy[3] = {above[a] >= 0.0f, above[b] >= 0.0f, above[c] >= 0.0f};
+    auto surface = [&](bool on_grass) {
+      return rocky ? Surface::rock : on_grass ? Surface::grass : Surface::sand;
+    };
+    if (grassy[0] == grassy[1] && grassy[1] == grassy[2]) {
+      add(surface(grassy[0]), a, b, c);
+      continue;
+    }
+    // The vertex alone on its side of the line, then the other two in the triangle's turn:
+    // the corner it cuts off, and the rest as two triangles.
+    const int i = grassy[1] == grassy[2] ? 0 : grassy[0] == grassy[2] ? 1 : 2;
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    const int ij = crossing(v[i], v[j]), ik = crossing(v[i], v[k]);
+    add(surface(grassy[i]), v[i], ij, ik);
+    add(surface(!grassy[i]), ij, v[j], v[k]);
+    add(surface(!grassy[i]), ij, v[k], ik);
   }
   Model model;
   model.add_keeping_uv(Surface::grass, std::move(grass));

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <glm/geometric.hpp>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <tuple>
@@ -143,19 +144,31 @@ std::size_t triangles(const Scene& scene, const std::vector<MeshInstance>& insta
 // The ground's levels of detail (SceneNode::coarser) have the same points along their chunk's
 // edges, so chunks drawn at different levels meet without cracks; and coarser levels have
 // fewer triangles. (Points under the sea are left out: the ground hidden there is not drawn.)
+// The square in x and z of a ground chunk's node ("ground I,J"); none for other nodes.
+struct ChunkSquare {
+  float x0, z0, x1, z1;
+};
+std::optional<ChunkSquare> ground_chunk(const SceneNode& node) {
+  int i = 0, j = 0;
+  if (std::sscanf(node.name.c_str(), "ground %d,%d", &i, &j) != 2) return std::nullopt;
+  const float chunk = islands::WorldBuilder::kChunk;
+  return ChunkSquare{chunk * i, chunk * j, chunk * (i + 1), chunk * (j + 1)};
+}
+
+// Whether two coordinates are the same line of the chunk grid.
+bool near(float a, float b) { return std::abs(a - b) < 1e-3f; }
+
 TEST(Islands, GroundLevelsMeetAtTheChunkEdges) {
   const Scene& scene = world().scene;
   int ground_chunks = 0, with_levels = 0;
   for (const SceneNode& node : scene.nodes) {
-    int i = 0, j = 0;
-    if (std::sscanf(node.name.c_str(), "ground %d,%d", &i, &j) != 2) continue;
+    const std::optional<ChunkSquare> square = ground_chunk(node);
+    if (!square) continue;
     ++ground_chunks;
     if (node.coarser.empty()) continue;
     ++with_levels;
-    const float chunk = islands::WorldBuilder::kChunk;
-    const float x0 = chunk * i, z0 = chunk * j, x1 = x0 + chunk, z1 = z0 + chunk;
+    const auto [x0, z0, x1, z1] = *square;
     auto on_edge = [&](glm::vec3 p) {
-      auto near = [](float a, float b) { return std::abs(a - b) < 1e-3f; };
       return p.y > 0.0f && (near(p.x, x0) || near(p.x, x1) || near(p.z, z0) || near(p.z, z1));
     };
     auto edge_points = [&](const std::vector<MeshInstance>& instances) {
@@ -188,15 +201,14 @@ TEST(Islands, GroundLevelsMeetAtTheChunkEdges) {
 // triangle's edge, where pixels can fall through the ground.)
 TEST(Islands, GroundEdgesInsideAChunkJoinTwoTriangles) {
   const Scene& scene = world().scene;
-  using Point = std::tuple<float, float, float>;
+  using Point = std::tuple<float, float, float>;  // ordered, for the map's keys
+  auto point = [](glm::vec3 p) { return Point{p.x, p.y, p.z}; };
   int checked = 0, unjoined = 0;
   for (const SceneNode& node : scene.nodes) {
-    int i = 0, j = 0;
-    if (std::sscanf(node.name.c_str(), "ground %d,%d", &i, &j) != 2) continue;
-    const float chunk = islands::WorldBuilder::kChunk;
-    const float x0 = chunk * i, z0 = chunk * j, x1 = x0 + chunk, z1 = z0 + chunk;
+    const std::optional<ChunkSquare> square = ground_chunk(node);
+    if (!square) continue;
+    const auto [x0, z0, x1, z1] = *square;
     auto on_border = [&](glm::vec3 a, glm::vec3 b) {
-      auto near = [](float u, float v) { return std::abs(u - v) < 1e-3f; };
       return (near(a.x, x0) && near(b.x, x0)) || (near(a.x, x1) && near(b.x, x1)) ||
              (near(a.z, z0) && near(b.z, z0)) || (near(a.z, z1) && near(b.z, z1));
     };
@@ -215,17 +227,13 @@ TEST(Islands, GroundEdgesInsideAChunkJoinTwoTriangles) {
           const glm::vec3 p[3] = {corner(t), corner(t + 1), corner(t + 2)};
           if (glm::length(glm::cross(p[1] - p[0], p[2] - p[0])) == 0.0f) continue;  // no pixels
           for (int e = 0; e < 3; ++e) {
-            Point a{p[e].x, p[e].y, p[e].z},
-                b{p[(e + 1) % 3].x, p[(e + 1) % 3].y, p[(e + 1) % 3].z};
-            ++edges[std::minmax(a, b)];
+            ++edges[std::minmax(point(p[e]), point(p[(e + 1) % 3]))];
           }
         }
       }
       for (const auto& [ends, count] : edges) {
-        const glm::vec3 a(std::get<0>(ends.first), std::get<1>(ends.first),
-                          std::get<2>(ends.first));
-        const glm::vec3 b(std::get<0>(ends.second), std::get<1>(ends.second),
-                          std::get<2>(ends.second));
+        const glm::vec3 a = std::make_from_tuple<glm::vec3>(ends.first);
+        const glm::vec3 b = std::make_from_tuple<glm::vec3>(ends.second);
         if (on_border(a, b) || std::max(a.y, b.y) < -0.02f) continue;
         ++checked;
         if (count != 2 && ++unjoined <= 5) {

@@ -224,12 +224,9 @@ int SetupBatchLanes(const SetupBatch& b, const SetupBatchTarget& target) {
     }
     // The kept lanes as bits, visited lowest first below, so that the loop over them has no
     // branch on a dropped lane (a test per lane measured the same on million: BENCHMARKS.md).
-    static_assert(kLanes <= 32);
-    std::uint8_t kept_bytes[(kLanes + 7) / 8] = {};
-    hn::StoreMaskBits(di, hn::And(keep, hn::RebindMask(di, valid)), kept_bytes);
-    std::uint32_t kept = 0;
-    for (std::size_t i = 0; i < sizeof kept_bytes; ++i)
-      kept |= std::uint32_t{kept_bytes[i]} << (8 * i);
+    static_assert(kLanes <= 8);  // one byte of mask bits
+    std::uint8_t kept = 0;
+    hn::StoreMaskBits(di, hn::And(keep, hn::RebindMask(di, valid)), &kept);
 
     // PlaneSolver over the vertices in pixels, and the depth and 1 / w planes.
     FloatVec px[3], py[3];
@@ -256,7 +253,7 @@ int SetupBatchLanes(const SetupBatch& b, const SetupBatchTarget& target) {
 
     // Each kept triangle in order: its record, then its varying planes a vector at a time.
     dropped += std::min(lanes, b.count - first) - std::popcount(kept);
-    for (; kept != 0; kept &= kept - 1) {
+    for (; kept != 0; kept &= static_cast<std::uint8_t>(kept - 1)) {
       const int l = std::countr_zero(kept);
       const TriangleSlot slot = target.out.reserve_triangle();
       SetupTriangle& t = *slot.triangle;

@@ -197,7 +197,7 @@ std::vector<std::array<int, 3>> level_triangles(Grid& g, int step, float cell, G
 // its neighbour's edge, where the ground could show gaps.
 Model ground_model(const Grid& g, const std::vector<std::array<int, 3>>& triangles) {
   std::vector<vec3> points = g.points, normals = g.normals;  // then the crossings
-  std::vector<float> above(points.size());
+  std::vector<float> above(points.size());  // of the grid's points (crossings are on the line)
   for (std::size_t v = 0; v < points.size(); ++v) above[v] = above_beach(points[v]);
   std::unordered_map<std::uint64_t, int> crossings;  // lower end << 32 | upper end -> point
   auto crossing = [&](int a, int b) {
@@ -209,7 +209,6 @@ Model ground_model(const Grid& g, const std::vector<std::array<int, 3>>& triangl
       const float t = above[lo] / (above[lo] - above[hi]);
       points.push_back(glm::mix(points[lo], points[hi], t));
       normals.push_back(glm::normalize(glm::mix(normals[lo], normals[hi], t)));
-      above.push_back(0.0f);
     }
     return at->second;
   };

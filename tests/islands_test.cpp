@@ -141,9 +141,6 @@ std::size_t triangles(const Scene& scene, const std::vector<MeshInstance>& insta
   return n;
 }
 
-// The ground's levels of detail (SceneNode::coarser) have the same points along their chunk's
-// edges, so chunks drawn at different levels meet without cracks; and coarser levels have
-// fewer triangles. (Points under the sea are left out: the ground hidden there is not drawn.)
 // The square in x and z of a ground chunk's node ("ground I,J"); none for other nodes.
 struct ChunkSquare {
   float x0, z0, x1, z1;
@@ -158,6 +155,9 @@ std::optional<ChunkSquare> ground_chunk(const SceneNode& node) {
 // Whether two coordinates are the same line of the chunk grid.
 bool near(float a, float b) { return std::abs(a - b) < 1e-3f; }
 
+// The ground's levels of detail (SceneNode::coarser) have the same points along their chunk's
+// edges, so chunks drawn at different levels meet without cracks; and coarser levels have
+// fewer triangles. (Points under the sea are left out: the ground hidden there is not drawn.)
 TEST(Islands, GroundLevelsMeetAtTheChunkEdges) {
   const Scene& scene = world().scene;
   int ground_chunks = 0, with_levels = 0;

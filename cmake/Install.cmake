@@ -1,8 +1,12 @@
 # Install rules: `cmake --install build --prefix P` puts
-#   P/include/facet/*.hpp                 public headers
-#   P/lib/libfacet.a                      the library
-#   P/bin/facet                           the command-line program
-#   P/lib/cmake/facet/facet*.cmake        the package, so find_package(facet) gives facet::facet
+#   P/include/facet/*.hpp                        public headers (version.hpp generated)
+#   P/lib/libfacet{,-import,-worlds,-sound}.a    the layers (.so with a SONAME when shared)
+#   P/bin/facet                                  the command-line program
+#   P/lib/cmake/facet/facet*.cmake               the package: find_package(facet) gives
+#                                                facet::core, ::import, ::worlds, ::sound and
+#                                                the umbrella facet::facet
+#   P/lib/pkgconfig/facet.pc, facet-all.pc       the core's and the umbrella's link lines
+#   P/share/man/man1/facet.1                     the manual page
 # tests/install/install_and_build_example.cmake checks all of it by building examples/.
 
 include(CMakePackageConfigHelpers)
@@ -13,18 +17,28 @@ set(FACET_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/facet
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/facet
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
         FILES_MATCHING PATTERN "*.hpp")
+install(FILES ${PROJECT_BINARY_DIR}/include/facet/version.hpp
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/facet)
 
-install(TARGETS facet EXPORT facetTargets
+install(TARGETS facet_core facet_import facet_worlds facet_sound facet_all EXPORT facetTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-install(TARGETS facet_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+if(FACET_BUILD_PROGRAM)
+  install(TARGETS facet_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+endif()
+install(FILES ${PROJECT_SOURCE_DIR}/docs/facet.1 DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
 
 install(EXPORT facetTargets
         NAMESPACE facet::
         FILE facetTargets.cmake
         DESTINATION ${FACET_INSTALL_CMAKEDIR})
 
+if(BUILD_SHARED_LIBS)
+  set(FACET_PACKAGE_SHARED TRUE)
+else()
+  set(FACET_PACKAGE_SHARED FALSE)
+endif()
 configure_package_config_file(
   ${PROJECT_SOURCE_DIR}/cmake/facetConfig.cmake.in
   ${PROJECT_BINARY_DIR}/facetConfig.cmake
@@ -35,3 +49,25 @@ write_basic_package_version_file(
   COMPATIBILITY SameMajorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/facetConfig.cmake ${PROJECT_BINARY_DIR}/facetConfigVersion.cmake
         DESTINATION ${FACET_INSTALL_CMAKEDIR})
+
+# pkg-config. A static library's own dependencies must be on the program's link line, so for
+# static builds they are in Libs (plain `pkg-config --libs facet` links); a shared library
+# carries them itself, so they go to Libs.private.
+set(FACET_PC_CORE_DEPS "-lpng16 -ltbb -lhwy")
+set(FACET_PC_ALL_DEPS "${FACET_PC_CORE_DEPS} -lassimp -lopenal")
+if(BUILD_SHARED_LIBS)
+  set(FACET_PC_CORE_LIBS "")
+  set(FACET_PC_CORE_PRIVATE "${FACET_PC_CORE_DEPS}")
+  set(FACET_PC_ALL_LIBS "")
+  set(FACET_PC_ALL_PRIVATE "${FACET_PC_ALL_DEPS}")
+else()
+  set(FACET_PC_CORE_LIBS "${FACET_PC_CORE_DEPS}")
+  set(FACET_PC_CORE_PRIVATE "")
+  set(FACET_PC_ALL_LIBS "${FACET_PC_ALL_DEPS}")
+  set(FACET_PC_ALL_PRIVATE "")
+endif()
+file(RELATIVE_PATH FACET_PC_TO_PREFIX /prefix/${CMAKE_INSTALL_LIBDIR}/pkgconfig /prefix)
+foreach(pc facet facet-all)
+  configure_file(${PROJECT_SOURCE_DIR}/cmake/${pc}.pc.in ${PROJECT_BINARY_DIR}/${pc}.pc @ONLY)
+  install(FILES ${PROJECT_BINARY_DIR}/${pc}.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
+endforeach()

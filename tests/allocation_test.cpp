@@ -7,7 +7,7 @@
 #include <new>
 
 #include "facet/scene.hpp"
-#include "scene/bench_scenes.hpp"
+#include "scenes/bench_scenes.hpp"
 
 // Sanitizer runtimes replace operator new themselves (and check that what they allocate is
 // freed by their own delete); counting is a Release-build test, so it steps aside there.

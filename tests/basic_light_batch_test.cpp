@@ -4,8 +4,8 @@
 #include <gtest/gtest.h>
 
 #include "facet/procedural.hpp"
-#include "pipeline/shade.hpp"
-#include "scene/glmark2_shading.hpp"
+#include "pipeline/record/pipeline_table.hpp"
+#include "scenes/glmark2_shading.hpp"
 #include "support/render_helpers.hpp"
 
 namespace facet::test {

@@ -8,7 +8,7 @@
 #include <memory>
 
 #include "facet/procedural.hpp"
-#include "pipeline/shade.hpp"
+#include "pipeline/record/pipeline_table.hpp"
 #include "shading/lit_models.hpp"
 #include "support/render_helpers.hpp"
 

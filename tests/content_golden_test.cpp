@@ -15,6 +15,7 @@
 #include "facet/scene.hpp"
 #include "facet/teapot.hpp"
 #include "facet/texture.hpp"
+#include "facet/worlds.hpp"
 #include "support/golden.hpp"
 
 namespace facet::test {

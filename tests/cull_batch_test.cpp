@@ -2,7 +2,7 @@
 // triangles the definition keeps, in order: finite positions, not all three vertices outside
 // one frustum plane, non-zero orientation in homogeneous coordinates (homogeneous_orientation,
 // in double), and a facing the draw does not cull.
-#include "pipeline/cull_batch.hpp"
+#include "pipeline/geometry/cull_batch.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,8 +10,8 @@
 #include <random>
 #include <vector>
 
-#include "pipeline/clip.hpp"
-#include "pipeline/primitive.hpp"
+#include "pipeline/geometry/clip.hpp"
+#include "pipeline/geometry/primitive.hpp"
 #include "support/forced_target.hpp"
 
 namespace facet::test {

@@ -4,6 +4,7 @@
 
 #include "facet/renderer.hpp"
 #include "facet/scene.hpp"
+#include "facet/worlds.hpp"
 #include "support/render_helpers.hpp"
 
 namespace facet::test {

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "facet/scene.hpp"
+#include "facet/worlds.hpp"
 #include "support/render_helpers.hpp"
 
 namespace facet::test {

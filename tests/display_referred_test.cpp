@@ -13,12 +13,12 @@
 #include <string>
 #include <vector>
 
+#include "core/color.hpp"
 #include "facet/framebuffer.hpp"
 #include "facet/procedural.hpp"
 #include "facet/renderer.hpp"
 #include "facet/teapot.hpp"
-#include "scene/bench_scenes.hpp"
-#include "shading/color.hpp"
+#include "scenes/bench_scenes.hpp"
 
 namespace facet::test {
 namespace {

@@ -1,7 +1,7 @@
 // Whole draws outside the view frustum are dropped before their vertices are transformed
 // (pipeline/draw_culling.cpp); draws that reach into the view are kept. Draws whose bounds need
 // no clipping are told apart from those that may.
-#include "pipeline/draw_culling.hpp"
+#include "pipeline/record/draw_culling.hpp"
 
 #include <gtest/gtest.h>
 

@@ -10,9 +10,9 @@
 #include <random>
 #include <vector>
 
-#include "pipeline/clip.hpp"
-#include "pipeline/setup.hpp"
-#include "pipeline/vertex_pass.hpp"
+#include "pipeline/geometry/clip.hpp"
+#include "pipeline/geometry/vertex_pass.hpp"
+#include "pipeline/setup/setup.hpp"
 
 namespace facet::test {
 namespace {

@@ -15,8 +15,8 @@
 #include "facet/framebuffer.hpp"
 #include "facet/image_io.hpp"
 #include "facet/renderer.hpp"
-#include "scene/bench_scenes.hpp"
-#include "scene/glmark2_model.hpp"
+#include "scenes/bench_scenes.hpp"
+#include "scenes/glmark2_model.hpp"
 #include "support/render_helpers.hpp"
 
 namespace facet::test {

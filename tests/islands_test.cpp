@@ -21,8 +21,9 @@
 #include "facet/image_io.hpp"
 #include "facet/renderer.hpp"
 #include "facet/scene.hpp"
-#include "scene/islands/kit.hpp"
+#include "facet/worlds.hpp"
 #include "support/golden.hpp"
+#include "worlds/islands/kit.hpp"
 
 namespace facet::test {
 namespace {

@@ -2,8 +2,8 @@
 // have no gaps; line coverage does not depend on the tile size.
 #include <gtest/gtest.h>
 
-#include "pipeline/draw.hpp"
-#include "pipeline/shade.hpp"
+#include "pipeline/record/custom_draw.hpp"
+#include "pipeline/record/pipeline_table.hpp"
 #include "shading/models.hpp"
 #include "support/geometry.hpp"
 #include "support/render_helpers.hpp"

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "facet/renderer.hpp"
-#include "pipeline/bin.hpp"
+#include "pipeline/bin/bin.hpp"
 #include "support/render_helpers.hpp"
 
 namespace facet::test {

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "pipeline/draw.hpp"
-#include "pipeline/shade.hpp"
+#include "pipeline/record/custom_draw.hpp"
+#include "pipeline/record/pipeline_table.hpp"
 #include "support/geometry.hpp"
 #include "support/render_helpers.hpp"
 

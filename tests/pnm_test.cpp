@@ -1,7 +1,7 @@
 // facet's PGM/PPM reader (src/io/pnm.cpp): the four formats with comments in odd places,
 // maxval other than 255, and malformed files, each of which must give a facet::Error that
 // names the file and the problem, never a crash.
-#include "io/pnm.hpp"
+#include "core/pnm.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // facet's own log2, exp and pow (shading/portable_math.hpp), which the scalar and SIMD shading
 // share so that both give the same bits on every CPU: they must be the functions they stand for.
-#include "shading/portable_math.hpp"
+#include "core/portable_math.hpp"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 // for small, tiny (covering a pixel centre or none), large, degenerate and flipped triangles,
 // vertices across the guard band, edges on the fill rule's cases, and plane values that overflow
 // or are not numbers; and nothing past the chunk's region of planes changes.
-#include "pipeline/setup_batch.hpp"
+#include "pipeline/setup/setup_batch.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,8 +14,8 @@
 #include <random>
 #include <vector>
 
-#include "pipeline/primitive_sink.hpp"
-#include "pipeline/setup.hpp"
+#include "pipeline/geometry/primitive_sink.hpp"
+#include "pipeline/setup/setup.hpp"
 #include "support/forced_target.hpp"
 
 namespace facet::test {

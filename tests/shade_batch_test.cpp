@@ -13,7 +13,7 @@
 #include <limits>
 #include <random>
 
-#include "scene/glmark2_shading.hpp"
+#include "scenes/glmark2_shading.hpp"
 #include "shading/fog.hpp"
 #include "shading/lit_models.hpp"
 #include "shading/models.hpp"
@@ -26,7 +26,7 @@ using shading::kShadeBatch;
 
 struct Inputs {
   alignas(64) float w[kShadeBatch] = {};
-  alignas(64) float v[pipeline::kMaxVaryings][kShadeBatch] = {};
+  alignas(64) float v[shading::kMaxVaryings][kShadeBatch] = {};
   alignas(64) float texel[kShadeBatch][4] = {};
 };
 
@@ -34,7 +34,7 @@ void fill(std::mt19937& rng, Inputs& in) {
   std::uniform_real_distribution<float> any(-2.0f, 2.0f), unit(0.0f, 1.0f), depth(0.2f, 50.0f);
   for (int n = 0; n < kShadeBatch; ++n) {
     in.w[n] = depth(rng);
-    for (int k = 0; k < pipeline::kMaxVaryings; ++k) in.v[k][n] = any(rng);
+    for (int k = 0; k < shading::kMaxVaryings; ++k) in.v[k][n] = any(rng);
     for (int c = 0; c < 4; ++c) in.texel[n][c] = unit(rng);
   }
   in.v[shading::kNormalSlot][0] = in.v[shading::kNormalSlot + 1][0] =
@@ -91,7 +91,7 @@ glm::vec4 scalar_fragment(const Inputs& in, const float (*texel)[4], int n,
                           const shading::DrawUniforms& u) {
   shading::Fragment f;
   f.w = in.w[n];
-  for (int k = 0; k < pipeline::kMaxVaryings; ++k) f.v[k] = in.v[k][n];
+  for (int k = 0; k < shading::kMaxVaryings; ++k) f.v[k] = in.v[k][n];
   if (texel != nullptr) {
     f.base_texel = {texel[n][0], texel[n][1], texel[n][2], texel[n][3]};
     f.base_texel_ready = true;

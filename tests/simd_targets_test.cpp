@@ -8,7 +8,7 @@
 #include <random>
 #include <string>
 
-#include "pipeline/block_raster.hpp"
+#include "pipeline/raster/block_raster.hpp"
 #include "pipeline/reference.hpp"
 #include "support/forced_target.hpp"
 #include "support/random_soup.hpp"

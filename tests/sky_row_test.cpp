@@ -1,7 +1,7 @@
 // The SIMD sky-gradient background (pipeline/sky_row.cpp) gives the scalar background's bits on
 // every SIMD target, above and below the horizon, in rows all of sky and rows partly covered,
 // and leaves covered pixels alone.
-#include "pipeline/sky_row.hpp"
+#include "pipeline/output/sky_row.hpp"
 
 #include <gtest/gtest.h>
 

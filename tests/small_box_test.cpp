@@ -12,9 +12,9 @@
 #include <tuple>
 #include <vector>
 
-#include "pipeline/block_raster.hpp"
-#include "pipeline/primitive_sink.hpp"
-#include "pipeline/setup.hpp"
+#include "pipeline/geometry/primitive_sink.hpp"
+#include "pipeline/raster/block_raster.hpp"
+#include "pipeline/setup/setup.hpp"
 #include "support/forced_target.hpp"
 
 namespace facet::test {

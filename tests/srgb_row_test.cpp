@@ -2,7 +2,7 @@
 // SIMD target: at and around every code's threshold and the edges of its table's runs, at the
 // ends and beyond them, for NaN and infinities, with and without exposure, and for rows of
 // every length up to past a chunk.
-#include "pipeline/srgb_row.hpp"
+#include "pipeline/output/srgb_row.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@
 #include <random>
 #include <vector>
 
-#include "shading/color.hpp"
+#include "core/color.hpp"
 #include "support/forced_target.hpp"
 
 namespace facet::test {

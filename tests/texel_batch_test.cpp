@@ -30,8 +30,8 @@ std::shared_ptr<const Texture> random_texture(std::mt19937& rng, int width, int 
 struct Case {
   float u[shading::kTexelBatch] = {}, v[shading::kTexelBatch] = {}, w[shading::kTexelBatch] = {};
   shading::TexelBatch batch;
-  pipeline::Plane planes[2];
-  pipeline::Plane inv_w;
+  shading::Plane planes[2];
+  shading::Plane inv_w;
   float slopes[shading::TexelBatch::kSlopes][shading::kTexelBatch] = {};
 };
 Case random_case(std::mt19937& rng, int count) {
@@ -48,7 +48,7 @@ Case random_case(std::mt19937& rng, int count) {
     c.u[0] = std::numeric_limits<float>::quiet_NaN();
     c.v[1] = 1e30f;
   }
-  for (pipeline::Plane* p : {&c.planes[0], &c.planes[1], &c.inv_w}) {
+  for (shading::Plane* p : {&c.planes[0], &c.planes[1], &c.inv_w}) {
     p->dx = slope(rng);
     p->dy = slope(rng);
   }
@@ -70,8 +70,8 @@ glm::vec4 scalar_sample(const TextureMap& map, const Case& c, int j) {
   f.v[0] = c.batch.u[j];
   f.v[1] = c.batch.v[j];
   f.w = c.batch.w[j];
-  pipeline::Plane planes[2] = {c.planes[0], c.planes[1]};
-  pipeline::Plane inv_w = c.inv_w;
+  shading::Plane planes[2] = {c.planes[0], c.planes[1]};
+  shading::Plane inv_w = c.inv_w;
   if (c.batch.slopes != nullptr) {
     using S = shading::TexelBatch;
     planes[0].dx = c.slopes[S::u_dx][j], planes[0].dy = c.slopes[S::u_dy][j];

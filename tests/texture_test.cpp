@@ -16,10 +16,10 @@
 #include <utility>
 #include <vector>
 
+#include "core/color.hpp"
 #include "facet/error.hpp"
 #include "facet/framebuffer.hpp"
 #include "facet/image_io.hpp"
-#include "shading/color.hpp"
 #include "support/render_helpers.hpp"
 
 namespace facet {

@@ -7,7 +7,7 @@
 #include <memory>
 
 #include "facet/procedural.hpp"
-#include "pipeline/shade.hpp"
+#include "pipeline/record/pipeline_table.hpp"
 #include "shading/models.hpp"
 #include "support/render_helpers.hpp"
 

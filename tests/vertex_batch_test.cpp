@@ -79,7 +79,7 @@ void expect_vertex_batch_gives_vertexs_bits() {
       for (int c = 0; c < 3; ++c) in.normal[c] = normal[c];
       in.texcoords = with_texcoords ? texcoords.data() : nullptr;
       in.colors = with_colors ? colors.data() : nullptr;
-      alignas(64) float out[pipeline::kMaxVaryings][kVertexBatch];
+      alignas(64) float out[shading::kMaxVaryings][kVertexBatch];
       Model::vertex_batch(draw.uniforms, in, out);
       for (int n = 0; n < count; ++n) {
         shading::VertexInput vertex;

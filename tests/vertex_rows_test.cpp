@@ -1,7 +1,7 @@
 // The vertex stage's per-vertex stores (vertex_rows.hpp) write, on every SIMD target, what
 // storing element by element writes, and nothing past the rows they were given: for every
 // varying count and for runs that are not whole groups of eight.
-#include "pipeline/vertex_rows.hpp"
+#include "pipeline/geometry/vertex_rows.hpp"
 
 #include <gtest/gtest.h>
 

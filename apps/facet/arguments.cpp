@@ -5,9 +5,9 @@
 #include <cmath>
 #include <vector>
 
+#include "facet/color.hpp"
 #include "facet/error.hpp"
 #include "facet/framebuffer.hpp"
-#include "shading/color.hpp"
 
 namespace facet::cli {
 namespace {
@@ -69,9 +69,8 @@ glm::vec3 parse_color(const std::string& flag, const std::string& text) {
     if (c[i] < 0.0f || c[i] > 1.0f) {
       throw Error(flag + ": color components must be in [0, 1], got '" + text + "'");
     }
-    c[i] = shading::srgb_to_linear(c[i]);
   }
-  return c;
+  return srgb_to_linear(c);
 }
 
 }  // namespace facet::cli

@@ -12,7 +12,7 @@
 #include "facet/framebuffer.hpp"
 #include "facet/image_io.hpp"
 #include "facet/renderer.hpp"
-#include "scene/bench_scenes.hpp"
+#include "scenes/bench_scenes.hpp"
 
 namespace facet::cli {
 namespace {

@@ -6,6 +6,7 @@
 
 #include "bench_command.hpp"
 #include "facet/error.hpp"
+#include "facet/version.hpp"
 #include "info_command.hpp"
 #include "render_command.hpp"
 #include "view_command.hpp"
@@ -24,6 +25,8 @@ int fail(const std::string& message) {
 int main(int argc, char** argv) {
   CLI::App app{"facet: a CPU software rasterizer. Renders 3D scenes without a GPU."};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("facet ") + facet::version(),
+                       "Print the version and exit");
   facet::cli::RenderOptions render_options;
   CLI::App* render = facet::cli::add_render_command(app, render_options);
   facet::cli::InfoOptions info_options;
@@ -38,6 +41,9 @@ int main(int argc, char** argv) {
     // Print in "all" mode so `facet --help` also lists every subcommand's flags and defaults.
     // help() delegates to the selected subcommand, so `facet render --help` shows just render.
     std::fputs(app.help("", CLI::AppFormatMode::All).c_str(), stdout);
+    return 0;
+  } catch (const CLI::CallForVersion&) {
+    std::printf("facet %s\n", facet::version());
     return 0;
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);

@@ -8,6 +8,7 @@
 #include "facet/import.hpp"
 #include "facet/procedural.hpp"
 #include "facet/texture.hpp"
+#include "facet/worlds.hpp"
 
 namespace facet::cli {
 namespace {

@@ -1,11 +1,13 @@
-// Model import: reads a 3D file into a facet Scene. Formats through assimp (OBJ+MTL, glTF 2.0
-// .gltf/.glb, PLY, STL, 3DS, FBX, COLLADA, OFF, …) and facet's own reader for the classic
-// course format `.d`. Models keep their own coordinates: nothing is rescaled or re-centred.
+// Model import (facet::import): reads a 3D file into a facet Scene. Formats through assimp
+// (OBJ+MTL, glTF 2.0 .gltf/.glb, PLY, STL, 3DS, FBX, COLLADA, OFF, …) and facet's own reader for
+// the classic course format `.d`. Models keep their own coordinates: nothing is rescaled or
+// re-centred.
 #pragma once
 
 #include <functional>
 #include <string>
 
+#include "facet/mesh_tools.hpp"  // normals and tangents for meshes that come without
 #include "facet/scene.hpp"
 
 namespace facet {
@@ -27,14 +29,5 @@ Scene import_scene(const std::string& path, const ImportOptions& options = {});
 // `#` comments and blank lines allowed.
 Mesh read_d_file(const std::string& path);
 Mesh parse_d(const std::string& text, const std::string& name);  // name used in errors
-
-// Smooth vertex normals for a triangle mesh (area-weighted, split at crease_angle_degrees):
-// vertices are duplicated where the split needs it.
-void compute_smooth_normals(Mesh& mesh, float crease_angle_degrees = 80.0f);
-// Makes vertices whose attributes are all identical (bit for bit, -0 and +0 alike) one vertex,
-// the first of them, with indices; the triangles and what they draw stay the same.
-void join_identical_vertices(Mesh& mesh);
-// Tangents (xyz, w = handedness) from positions, normals and texture coordinates.
-void compute_tangents(Mesh& mesh);
 
 }  // namespace facet

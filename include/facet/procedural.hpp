@@ -1,11 +1,12 @@
-// Procedural meshes: the building blocks of the built-in worlds. Every mesh has outward unit
-// normals, texture coordinates in [0, 1] and counter-clockwise front faces (seen from outside).
+// Procedural meshes (facet::worlds): the building blocks of the built-in worlds. Every mesh has
+// outward unit normals, texture coordinates in [0, 1] and counter-clockwise front faces (seen from
+// outside).
 #pragma once
 
-#include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
 #include "facet/mesh.hpp"
+#include "facet/mesh_tools.hpp"  // transformed, append: how the worlds combine these
 
 namespace facet {
 
@@ -29,22 +30,5 @@ Mesh uv_sphere(float radius = 0.5f, int segments = 32, int rings = 16);
 Mesh prism(int sides, float radius, float height);
 // A cone around +Y: base disk at y = 0, apex at y = height.
 Mesh cone(float radius, float height, int segments = 32);
-
-// Texture projections for meshes without texture coordinates (the classic course renderers'
-// way to put a brick or marble image on a cow). Computed from object-space positions around
-// `centre`, so the texture stays fixed to the model as it turns.
-enum class TextureProjection {
-  spherical,    // u = longitude, v = latitude of the direction from the centre
-  cylindrical,  // u = angle around +Y, v = height within the bounds
-  planar,       // u, v = x, y within the bounds (projected along Z)
-};
-// Replaces the mesh's texture coordinates; vertices of triangles that straddle the
-// longitude seam are duplicated so the texture does not smear across it.
-void project_texcoords(Mesh& mesh, TextureProjection projection, glm::vec3 centre);
-
-// Returns the mesh with positions (and normals, tangents) transformed by m.
-Mesh transformed(Mesh mesh, const glm::mat4& m);
-// Appends b to a (same topology required); used to merge shapes into one draw.
-void append(Mesh& a, const Mesh& b);
 
 }  // namespace facet

@@ -83,13 +83,6 @@ struct Scene {
   std::size_t triangle_count() const;  // over all instances
 };
 
-// A rectangle ground, a cube, a sphere, a pyramid and an octagonal prism under one sun.
-Scene make_shapes_scene();
-
-// Names of the built-in scenes, and the scene for a name (throws facet::Error if unknown).
-std::vector<std::string> builtin_scene_names();
-Scene make_builtin_scene(const std::string& name);
-
 // Records every mesh instance of the scene (the scene must live until renderer.finish()), at
 // the level of detail each node has for the camera of renderer.begin_frame().
 void draw_scene(Renderer& renderer, const Scene& scene);

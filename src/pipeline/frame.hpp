@@ -16,14 +16,14 @@
 #include "facet/material.hpp"
 #include "facet/mesh.hpp"
 #include "facet/renderer.hpp"
-#include "pipeline/fixed_point.hpp"
+#include "pipeline/setup/fixed_point.hpp"
 #include "shading/uniforms.hpp"
+#include "shading/varyings.hpp"
 #include "shading/vertex_batch.hpp"
 
 namespace facet::pipeline {
 
-// Largest kVaryings of any shading model; the clipper's vertices have this many slots.
-inline constexpr int kMaxVaryings = 16;
+using shading::kMaxVaryings;
 
 struct ClipVertex {
   glm::vec4 clip;  // homogeneous clip-space position
@@ -131,13 +131,7 @@ inline bool has_triangle_hooks(const DrawRecord& draw) {
   return fills_face_normal(draw) || face_hook(draw) != nullptr;
 }
 
-// Value of an attribute across the screen: value(px, py) = at_ref + dx*(px-ref_x) +
-// dy*(py-ref_y), with (px, py) a pixel centre in pixels and ref the triangle's first vertex.
-struct Plane {
-  float at_ref = 0;
-  float dx = 0;
-  float dy = 0;
-};
+using shading::Plane;
 
 // A triangle ready to rasterize. Edge i is E_i(X, Y) = a[i]*X + b[i]*Y + c[i] in fixed-point
 // units (fixed_point.hpp), positive inside; a pixel is covered when E_i >= 0 for all three

@@ -5,10 +5,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "pipeline/clip.hpp"
-#include "pipeline/fixed_point.hpp"
-#include "pipeline/primitive.hpp"
-#include "pipeline/setup.hpp"
+#include "pipeline/geometry/clip.hpp"
+#include "pipeline/geometry/primitive.hpp"
+#include "pipeline/setup/fixed_point.hpp"
+#include "pipeline/setup/setup.hpp"
 
 namespace facet::pipeline {
 namespace {

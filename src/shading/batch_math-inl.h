@@ -15,8 +15,8 @@
 #include <cstring>
 #include <limits>
 
-#include "shading/color.hpp"
-#include "shading/portable_math.hpp"
+#include "core/color.hpp"
+#include "core/portable_math.hpp"
 #include "shading/shade_batch.hpp"
 
 HWY_BEFORE_NAMESPACE();

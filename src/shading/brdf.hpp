@@ -7,7 +7,7 @@
 #include <cmath>
 #include <glm/glm.hpp>
 
-#include "shading/portable_math.hpp"
+#include "core/portable_math.hpp"
 
 namespace facet::shading {
 

@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-#include "shading/portable_math.hpp"
+#include "core/portable_math.hpp"
 
 namespace facet::shading {
 

@@ -5,15 +5,15 @@
 
 #include <glm/vec4.hpp>
 
-#include "pipeline/frame.hpp"
+#include "shading/varyings.hpp"
 
 namespace facet::shading {
 
 struct Fragment {
-  float v[pipeline::kMaxVaryings];          // perspective-correct varyings
-  float w = 1.0f;                           // clip w = view depth
-  const pipeline::Plane* planes = nullptr;  // v / w planes
-  const pipeline::Plane* inv_w = nullptr;   // 1 / w plane
+  float v[kMaxVaryings];          // perspective-correct varyings
+  float w = 1.0f;                 // clip w = view depth
+  const Plane* planes = nullptr;  // v / w planes
+  const Plane* inv_w = nullptr;   // 1 / w plane
   // The base color map's texel here, when the raster loop sampled it ahead (base_color_texel).
   glm::vec4 base_texel{0.0f};
   bool base_texel_ready = false;

@@ -27,7 +27,7 @@
 #include <cmath>
 #include <glm/glm.hpp>
 
-#include "shading/color.hpp"
+#include "core/color.hpp"
 #include "shading/fragment.hpp"
 #include "shading/lighting.hpp"
 #include "shading/shade_batch.hpp"

@@ -16,8 +16,8 @@
 #include <cstring>
 #include <limits>
 
+#include "core/portable_math.hpp"
 #include "shading/batch_math-inl.h"
-#include "shading/portable_math.hpp"
 #include "shading/surface.hpp"
 
 HWY_BEFORE_NAMESPACE();

@@ -7,8 +7,8 @@
 // models lit per pixel, emissive, normal or specular maps, reflections) keep fragment().
 #pragma once
 
-#include "pipeline/frame.hpp"
 #include "shading/uniforms.hpp"
+#include "shading/varyings.hpp"
 
 namespace facet::shading {
 

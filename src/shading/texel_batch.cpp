@@ -17,9 +17,9 @@
 #include <type_traits>
 #include <utility>
 
+#include "core/portable_math.hpp"
 #include "facet/texture.hpp"
 #include "shading/batch_math-inl.h"
-#include "shading/portable_math.hpp"
 #include "shading/surface.hpp"
 
 HWY_BEFORE_NAMESPACE();

@@ -9,7 +9,7 @@
 #include <cstdint>
 
 #include "facet/material.hpp"
-#include "pipeline/frame.hpp"
+#include "shading/varyings.hpp"
 
 namespace facet::shading {
 
@@ -27,8 +27,8 @@ struct TexelBatch {
   // pixels of one triangle use its u/w and v/w planes (two in a row) and its 1/w plane;
   // pixels of several triangles (slopes set) each their triangle's plane slopes, kSlopes arrays
   // of kTexelBatch entries (readable as u is) in the order of the Slope names.
-  const pipeline::Plane* planes = nullptr;
-  const pipeline::Plane* inv_w = nullptr;
+  const Plane* planes = nullptr;
+  const Plane* inv_w = nullptr;
   enum Slope { u_dx, v_dx, u_dy, v_dy, inv_w_dx, inv_w_dy, kSlopes };
   const float (*slopes)[kTexelBatch] = nullptr;
 

@@ -7,8 +7,8 @@
 #include <cstdint>
 #include <string>
 
+#include "core/pnm.hpp"
 #include "facet/error.hpp"
-#include "io/pnm.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   try {

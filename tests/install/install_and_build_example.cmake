@@ -1,15 +1,21 @@
-# Install test (ctest: InstallAndBuildExample), run as a script with cmake -P:
-#   1. cmake --install BUILD_DIR --prefix WORK_DIR/prefix
-#   2. check the headers, library, program and package files are there; run `facet --help`
-#   3. configure examples/ with CMAKE_PREFIX_PATH=WORK_DIR/prefix (find_package(facet)), build
-#   4. run hello_triangle, which must write a non-empty PNG into WORK_DIR
+# Install test (ctest: InstallAndBuildExample, and InstallSharedAndBuildExample with -DSHARED=ON),
+# run as a script with cmake -P:
+#   1. static: cmake --install BUILD_DIR; shared: configure SOURCE_DIR with BUILD_SHARED_LIBS=ON
+#      (libraries only) into WORK_DIR/build, build and install that
+#   2. check the headers, libraries (and, shared, their SONAME), pkg-config files, man page,
+#      CMake package; run `facet --version` (static: the program is installed too)
+#   3. configure examples/ against the prefix with find_package(facet COMPONENTS core), with
+#      assimp and OpenAL made unfindable, build it and check hello_triangle needs neither
+#   4. build hello_triangle again with plain g++ $(pkg-config --cflags --libs facet)
+#   5. run both; each must write a PNG
 # Any failing step stops the script with FATAL_ERROR, which fails the test.
 #
-# Inputs (-D): SOURCE_DIR (project root), BUILD_DIR (a built tree), WORK_DIR (scratch, wiped),
-#              optional CONFIG (build type), GENERATOR, CXX_COMPILER.
+# Inputs (-D): SOURCE_DIR (project root), BUILD_DIR (a built tree; static only), WORK_DIR
+#              (scratch, wiped), VERSION (the project's), optional SHARED, CONFIG (build type),
+#              GENERATOR, CXX_COMPILER.
 cmake_minimum_required(VERSION 3.25)
 
-foreach(var SOURCE_DIR BUILD_DIR WORK_DIR)
+foreach(var SOURCE_DIR BUILD_DIR WORK_DIR VERSION)
   if(NOT DEFINED ${var} OR "${${var}}" STREQUAL "")
     message(FATAL_ERROR "install test: -D${var}=... is required")
   endif()
@@ -20,7 +26,7 @@ endif()
 
 set(prefix ${WORK_DIR}/prefix)
 set(example_build ${WORK_DIR}/examples-build)
-set(image ${WORK_DIR}/hello_triangle.png)
+set(libdir ${prefix}/lib)
 
 # Runs a command, echoing it; stops the test with the step's name if it fails.
 function(run_step name)
@@ -31,41 +37,120 @@ function(run_step name)
   endif()
 endfunction()
 
+# Fails unless the file exists.
+function(require_file path)
+  if(NOT EXISTS ${path})
+    message(FATAL_ERROR "install test: ${path} was not installed")
+  endif()
+endfunction()
+
+# The shared libraries a program or library was linked against (its ELF NEEDED entries).
+function(needed_libraries binary out)
+  execute_process(COMMAND objdump -p ${binary} OUTPUT_VARIABLE dump RESULT_VARIABLE result)
+  if(NOT result STREQUAL "0")
+    message(FATAL_ERROR "install test: objdump -p ${binary} failed")
+  endif()
+  string(REGEX MATCHALL "NEEDED +[^\n]+" needed "${dump}")
+  set(${out} "${needed}" PARENT_SCOPE)
+endfunction()
+
+# A program of the core alone must not be linked against assimp or OpenAL.
+function(require_core_only binary)
+  needed_libraries(${binary} needed)
+  if(needed MATCHES "assimp|openal")
+    message(FATAL_ERROR "install test: ${binary} needs assimp or OpenAL: ${needed}")
+  endif()
+endfunction()
+
+# Runs hello_triangle and checks that it wrote a PNG.
+function(run_hello binary image)
+  run_step("run ${binary}" ${CMAKE_COMMAND} -E env LD_LIBRARY_PATH=${libdir} ${binary} ${image})
+  if(NOT EXISTS ${image})
+    message(FATAL_ERROR "install test: ${binary} did not write ${image}")
+  endif()
+  file(READ ${image} signature LIMIT 8 HEX)
+  if(NOT signature STREQUAL "89504e470d0a1a0a")
+    message(FATAL_ERROR "install test: ${image} is not a PNG (starts with ${signature})")
+  endif()
+endfunction()
+
 file(REMOVE_RECURSE ${WORK_DIR})
 file(MAKE_DIRECTORY ${WORK_DIR})
 
 # 1. Install.
-run_step("install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix} --config ${CONFIG})
+set(layers facet facet-import facet-worlds facet-sound)
+if(SHARED)
+  set(shared_build ${WORK_DIR}/build)
+  set(configure_facet -S ${SOURCE_DIR} -B ${shared_build} -DCMAKE_BUILD_TYPE=${CONFIG}
+      -DBUILD_SHARED_LIBS=ON -DFACET_BUILD_PROGRAM=OFF -DFACET_BUILD_TESTS=OFF
+      -DCMAKE_INSTALL_LIBDIR=lib)
+  if(GENERATOR)
+    list(APPEND configure_facet -G ${GENERATOR})
+  endif()
+  if(CXX_COMPILER)
+    list(APPEND configure_facet -DCMAKE_CXX_COMPILER=${CXX_COMPILER})
+  endif()
+  run_step("configure shared libraries" ${CMAKE_COMMAND} ${configure_facet})
+  run_step("build shared libraries" ${CMAKE_COMMAND} --build ${shared_build} --config ${CONFIG}
+           --parallel 2)
+  run_step("install" ${CMAKE_COMMAND} --install ${shared_build} --prefix ${prefix}
+           --config ${CONFIG})
+else()
+  run_step("install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix} --config ${CONFIG})
+endif()
 
 # 2. The files a user relies on.
-foreach(file include/facet/facet.hpp include/facet/renderer.hpp bin/facet)
-  if(NOT EXISTS ${prefix}/${file})
-    message(FATAL_ERROR "install test: ${prefix}/${file} was not installed")
+foreach(file include/facet/facet.hpp include/facet/renderer.hpp include/facet/version.hpp
+        include/facet/import.hpp include/facet/worlds.hpp include/facet/sound.hpp
+        lib/pkgconfig/facet.pc lib/pkgconfig/facet-all.pc share/man/man1/facet.1
+        lib/cmake/facet/facetConfig.cmake lib/cmake/facet/facetConfigVersion.cmake)
+  require_file(${prefix}/${file})
+endforeach()
+foreach(layer ${layers})
+  if(SHARED)
+    string(REGEX MATCH "^[0-9]+" major "${VERSION}")
+    require_file(${libdir}/lib${layer}.so.${VERSION})
+    require_file(${libdir}/lib${layer}.so)
+    execute_process(COMMAND objdump -p ${libdir}/lib${layer}.so OUTPUT_VARIABLE dump)
+    if(NOT dump MATCHES "SONAME +lib${layer}\\.so\\.${major}\n")
+      message(FATAL_ERROR "install test: lib${layer}.so has no SONAME lib${layer}.so.${major}")
+    endif()
+  else()
+    require_file(${libdir}/lib${layer}.a)
   endif()
 endforeach()
-file(GLOB_RECURSE library ${prefix}/libfacet.a)
-file(GLOB_RECURSE package_config ${prefix}/facetConfig.cmake)
-file(GLOB_RECURSE package_version ${prefix}/facetConfigVersion.cmake)
-if(NOT library OR NOT package_config OR NOT package_version)
-  message(FATAL_ERROR "install test: missing under ${prefix}: "
-                      "libfacet.a='${library}' facetConfig.cmake='${package_config}' "
-                      "facetConfigVersion.cmake='${package_version}'")
+if(SHARED)
+  needed_libraries(${libdir}/libfacet.so core_needed)
+  if(core_needed MATCHES "assimp|openal|SDL")
+    message(FATAL_ERROR "install test: libfacet.so links more than the core needs: ${core_needed}")
+  endif()
+else()
+  require_file(${prefix}/bin/facet)
+  execute_process(COMMAND ${prefix}/bin/facet --version OUTPUT_VARIABLE version_line
+                  RESULT_VARIABLE result)
+  if(NOT result STREQUAL "0" OR NOT version_line STREQUAL "facet ${VERSION}\n")
+    message(FATAL_ERROR "install test: facet --version printed '${version_line}', not "
+                        "'facet ${VERSION}'")
+  endif()
 endif()
-run_step("installed program runs" ${prefix}/bin/facet --help)
 
-# 3. Build the example against the installed package only (no package registry, no build tree).
+# 3. Build the example against the installed package only (no package registry, no build tree),
+#    with assimp and OpenAL unfindable: the core must not need them.
 set(configure_args
   -S ${SOURCE_DIR}/examples -B ${example_build}
   -DCMAKE_PREFIX_PATH=${prefix}
   -DCMAKE_BUILD_TYPE=${CONFIG}
-  -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF)
+  -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF
+  -DCMAKE_DISABLE_FIND_PACKAGE_assimp=ON
+  -DCMAKE_DISABLE_FIND_PACKAGE_OpenAL=ON)
 if(GENERATOR)
   list(APPEND configure_args -G ${GENERATOR})
 endif()
 if(CXX_COMPILER)
   list(APPEND configure_args -DCMAKE_CXX_COMPILER=${CXX_COMPILER})
 endif()
-run_step("configure examples/ with find_package(facet)" ${CMAKE_COMMAND} ${configure_args})
+run_step("configure examples/ with find_package(facet COMPONENTS core)" ${CMAKE_COMMAND}
+         ${configure_args})
 
 # The package must have come from the scratch prefix, not from a facet installed elsewhere.
 file(STRINGS ${example_build}/CMakeCache.txt facet_dir_line REGEX "^facet_DIR:")
@@ -78,20 +163,22 @@ if(NOT at EQUAL 0)
 endif()
 
 run_step("build examples/" ${CMAKE_COMMAND} --build ${example_build} --config ${CONFIG})
-
-# 4. Run it and check the image.
 find_program(hello hello_triangle PATHS ${example_build} ${example_build}/${CONFIG}
              NO_DEFAULT_PATH REQUIRED)
-run_step("run hello_triangle" ${hello} ${image})
-if(NOT EXISTS ${image})
-  message(FATAL_ERROR "install test: hello_triangle did not write ${image}")
+require_core_only(${hello})
+
+# 4. The same program with plain g++ and pkg-config.
+if(NOT CXX_COMPILER)
+  set(CXX_COMPILER g++)
 endif()
-file(SIZE ${image} image_size)
-if(image_size EQUAL 0)
-  message(FATAL_ERROR "install test: ${image} is empty")
-endif()
-file(READ ${image} signature LIMIT 8 HEX)
-if(NOT signature STREQUAL "89504e470d0a1a0a")
-  message(FATAL_ERROR "install test: ${image} is not a PNG (starts with ${signature})")
-endif()
-message(STATUS "install test: ok, ${image} (${image_size} bytes)")
+set(hello_pc ${WORK_DIR}/hello_triangle_pkg_config)
+run_step("build hello_triangle with pkg-config" sh -c
+  "PKG_CONFIG_PATH='${libdir}/pkgconfig' && export PKG_CONFIG_PATH && \
+   '${CXX_COMPILER}' -O1 '${SOURCE_DIR}/examples/hello_triangle.cpp' -o '${hello_pc}' \
+   $(pkg-config --cflags --libs facet)")
+require_core_only(${hello_pc})
+
+# 5. Run them.
+run_hello(${hello} ${WORK_DIR}/hello_triangle.png)
+run_hello(${hello_pc} ${WORK_DIR}/hello_triangle_pkg_config.png)
+message(STATUS "install test: ok")

@@ -14,8 +14,9 @@
 #include <stdexcept>
 
 #include "facet/scene.hpp"
-#include "pipeline/draw.hpp"
-#include "pipeline/shade.hpp"
+#include "facet/worlds.hpp"
+#include "pipeline/record/custom_draw.hpp"
+#include "pipeline/record/pipeline_table.hpp"
 #include "shading/models.hpp"
 
 namespace facet::test {

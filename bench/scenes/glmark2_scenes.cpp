@@ -1,0 +1,188 @@
+// The glmark2-equivalent benchmark scenes: glmark2 2023.01's benchmarks 1-9 of
+// GLMARK2_SCENES.md (shared bench folder) with the same models, textures, projection, model
+// transforms, animation and shading formulas, so that facet's frame time is measured on the
+// same work as glmark2 on llvmpipe. tests/glmark2_equivalence_test.cpp checks frame 0 against
+// glmark2's own frames.
+//
+// Not here yet: `shadow` and `refract` (§2.6, §2.7). Both render to a texture every frame
+// (a 2W x 2H depth map; refract also a colour target and its mip chain), and facet has no
+// render-to-texture yet. They come once it does.
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+#include <memory>
+#include <string>
+#include <utility>
+
+#include "facet/texture.hpp"
+#include "pipeline/record/custom_draw.hpp"
+#include "pipeline/record/pipeline_table.hpp"
+#include "scenes/bench_scenes.hpp"
+#include "scenes/glmark2_model.hpp"
+#include "scenes/glmark2_shading.hpp"
+
+namespace facet::bench {
+namespace {
+
+const std::string kModels = "/usr/share/glmark2/models/";
+const std::string kTextures = "/usr/share/glmark2/textures/";
+
+// θ = 36°/s x t in every scene: one turn every 10 s (§1.2).
+constexpr double kDegreesPerSecond = 36.0;
+
+// glmark2 draws de-indexed triangle lists (glDrawArrays, §1.4): so do we, so the vertex work
+// is the same (3 vertex-shader runs per face). The image would be the same either way.
+constexpr bool kDeindex = true;
+
+enum class Rotation {
+  y,    // MV = T · Ry(θ)
+  xyz,  // MV = T · Rx(θ) · Ry(θ) · Rz(θ) (texture)
+};
+
+// The projection and where the model sits in eye space.
+struct View {
+  float fov_y_degrees;
+  float near_plane;
+  float far_plane;
+  glm::vec3 translation;  // MV = T(translation) · rotations
+};
+
+// The "fit" camera of §1.4: the bounding box's diagonal D, r = D / 2, fovy = 2 atan(r / (2 + r)),
+// near 2, far 2 + D, and the box centre moved to distance d = distance_offset + r.
+View fit_view(const Glmark2Model& model, float distance_offset) {
+  const glm::vec3 centre = (model.bbox_min + model.bbox_max) * 0.5f;
+  const float diagonal = glm::length(model.bbox_max - model.bbox_min);
+  const float r = diagonal * 0.5f;
+  const float fov = static_cast<float>(glm::degrees(2.0 * std::atan(r / (2.0 + r))));
+  return {fov, 2.0f, 2.0f + diagonal,
+          glm::vec3(-centre.x, -centre.y, -(centre.z + distance_offset + r))};
+}
+
+// The canvas default projection (bump): perspective(60°, W/H, 1, 1024), model at z = -3.5.
+View canvas_view() { return {60.0f, 1.0f, 1024.0f, glm::vec3(0.0f, 0.0f, -3.5f)}; }
+
+// One glmark2 benchmark: one mesh, one draw per frame with the scene's own shading model.
+class Glmark2Scene : public BenchScene {
+ public:
+  Glmark2Scene(Mesh mesh, const View& view, Rotation rotation, Material material,
+               const pipeline::DrawPipeline& pipeline)
+      : mesh_(std::make_shared<const Mesh>(std::move(mesh))),
+        view_(view),
+        rotation_(rotation),
+        material_(std::move(material)),
+        pipeline_(pipeline) {
+    lighting_.lights.clear();  // the shading models carry glmark2's lights themselves
+  }
+
+  void record(Renderer& renderer, double t, float aspect) override {
+    // The camera at the origin looking down -Z is the identity view: world space == glmark2's
+    // eye space, and the projection is gluPerspective (§1.3), as glmark2's.
+    renderer.begin_frame(Camera::look_at({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, view_.fov_y_degrees,
+                                         aspect, view_.near_plane, view_.far_plane),
+                         lighting_);
+    const float theta = static_cast<float>(glm::radians(kDegreesPerSecond * t));
+    // Right-multiplied, as libmatrix does: the rightmost rotation touches the vertex first.
+    glm::mat4 model_view = glm::translate(glm::mat4(1.0f), view_.translation);
+    if (rotation_ == Rotation::xyz) model_view = glm::rotate(model_view, theta, {1, 0, 0});
+    model_view = glm::rotate(model_view, theta, {0, 1, 0});
+    if (rotation_ == Rotation::xyz) model_view = glm::rotate(model_view, theta, {0, 0, 1});
+    pipeline::draw_with_pipeline(renderer, mesh_, material_, model_view, pipeline_);
+  }
+
+ private:
+  std::shared_ptr<const Mesh> mesh_;  // does not change: checked once by the renderer
+  View view_;
+  Rotation rotation_;
+  Material material_;
+  pipeline::DrawPipeline pipeline_;
+  Lighting lighting_;
+};
+
+// glmark2's material colours (MaterialDiffuse): white by default, blue in the shading scenes.
+Material material_with(glm::vec4 diffuse) {
+  Material material;  // back-face culling, CCW front faces: glmark2's GL state (§1.1)
+  material.base_color = diffuse;
+  return material;
+}
+
+// A texture as glmark2 sets it up (§1.5): 8-bit data used as it is (not sRGB), clamped.
+TextureMap texture_map(const std::string& file, Filter filter) {
+  TextureMap map;
+  map.texture = load_texture(kTextures + file, false);
+  map.sampler = {filter, Wrap::clamp_to_edge, Wrap::clamp_to_edge};
+  return map;
+}
+
+const glm::vec4 kWhite{1.0f, 1.0f, 1.0f, 1.0f};
+const glm::vec4 kBlue{0.0f, 0.0f, 1.0f, 1.0f};
+
+// §2.1 build and §2.3 gouraud: per-vertex light on the fitted model.
+std::unique_ptr<BenchScene> basic_light_scene(const std::string& file, glm::vec4 diffuse) {
+  Glmark2Model model = load_3ds(kModels + file);
+  return std::make_unique<Glmark2Scene>(glmark2_mesh(model, {.normals = true, .deindex = kDeindex}),
+                                        fit_view(model, 2.0f), Rotation::y, material_with(diffuse),
+                                        pipeline::make_pipeline<glmark2::BasicLightShading>());
+}
+
+// §2.2: the crate, turning about all three axes, 2.5 + r away.
+std::unique_ptr<BenchScene> texture_scene(Filter filter) {
+  Glmark2Model model = load_3ds(kModels + "cube.3ds");
+  Material material = material_with(kWhite);
+  material.base_color_map = texture_map("crate-base.png", filter);
+  return std::make_unique<Glmark2Scene>(
+      glmark2_mesh(model, {.normals = true, .texcoords = true, .deindex = kDeindex}),
+      fit_view(model, 2.5f), Rotation::xyz, std::move(material),
+      pipeline::make_pipeline<glmark2::BasicLightTextureShading>());
+}
+
+// §2.3: the cat with a per-pixel shading model.
+template <class Shading>
+std::unique_ptr<BenchScene> shading_scene() {
+  Glmark2Model model = load_3ds(kModels + "cat.3ds");
+  return std::make_unique<Glmark2Scene>(glmark2_mesh(model, {.normals = true, .deindex = kDeindex}),
+                                        fit_view(model, 2.0f), Rotation::y, material_with(kBlue),
+                                        pipeline::make_pipeline<Shading>());
+}
+
+// §2.4: the low-poly asteroid lit by its object-space normal map (NEAREST, no mips).
+std::unique_ptr<BenchScene> bump_normals_scene() {
+  Glmark2Model model = load_3ds(kModels + "asteroid-low.3ds");
+  Material material = material_with(kWhite);
+  material.base_color_map = texture_map("asteroid-normal-map.png", Filter::nearest);
+  return std::make_unique<Glmark2Scene>(
+      glmark2_mesh(model, {.texcoords = true, .deindex = kDeindex}), canvas_view(), Rotation::y,
+      std::move(material), pipeline::make_pipeline<glmark2::BumpNormalsShading>());
+}
+
+// §2.5: the high-poly asteroid with its generated normals.
+std::unique_ptr<BenchScene> bump_high_poly_scene() {
+  Glmark2Model model = load_3ds(kModels + "asteroid-high.3ds");
+  return std::make_unique<Glmark2Scene>(glmark2_mesh(model, {.normals = true, .deindex = kDeindex}),
+                                        canvas_view(), Rotation::y, material_with(kWhite),
+                                        pipeline::make_pipeline<glmark2::BumpPolyShading>());
+}
+
+}  // namespace
+
+std::vector<std::string> glmark2_scene_names() {
+  return {
+      "build:use-vbo=true",      "texture:texture-filter=linear",   "texture:texture-filter=mipmap",
+      "shading:shading=gouraud", "shading:shading=blinn-phong-inf", "shading:shading=phong",
+      "shading:shading=cel",     "bump:bump-render=normals",        "bump:bump-render=high-poly"};
+}
+
+std::unique_ptr<BenchScene> make_glmark2_scene(const std::string& name) {
+  if (name == "build:use-vbo=true") return basic_light_scene("horse.3ds", kWhite);
+  if (name == "texture:texture-filter=linear") return texture_scene(Filter::bilinear);
+  if (name == "texture:texture-filter=mipmap") return texture_scene(Filter::trilinear);
+  if (name == "shading:shading=gouraud") return basic_light_scene("cat.3ds", kBlue);
+  if (name == "shading:shading=blinn-phong-inf") {
+    return shading_scene<glmark2::BlinnPhongInfShading>();
+  }
+  if (name == "shading:shading=phong") return shading_scene<glmark2::PhongShading>();
+  if (name == "shading:shading=cel") return shading_scene<glmark2::CelShading>();
+  if (name == "bump:bump-render=normals") return bump_normals_scene();
+  if (name == "bump:bump-render=high-poly") return bump_high_poly_scene();
+  return nullptr;
+}
+
+}  // namespace facet::bench

@@ -1,0 +1,73 @@
+# The library, in layers (see the README's layout): each is its own target and folder and links
+# only what it uses. Includes flow downward only (tools/check_layers.py, run by ctest).
+#
+#   facet::core    src/core, src/shading, src/pipeline   glm, libpng, oneTBB, Highway (stb inside)
+#   facet::import  src/import                            core, assimp
+#   facet::worlds  src/worlds                            core, oneTBB
+#   facet::sound   src/sound                             OpenAL Soft
+#   facet::facet   all four (an interface target: the umbrella for users who want everything)
+#
+# Libraries are static unless BUILD_SHARED_LIBS is on; shared ones carry a SONAME of the major
+# version (libfacet.so.0).
+
+configure_file(${PROJECT_SOURCE_DIR}/cmake/version.hpp.in
+               ${PROJECT_BINARY_DIR}/include/facet/version.hpp @ONLY)
+
+# facet_layer(NAME EXPORT_NAME OUTPUT_NAME SOURCES...): one layer's library target.
+function(facet_layer name export_name output_name)
+  add_library(${name} ${ARGN})
+  add_library(facet::${export_name} ALIAS ${name})
+  target_include_directories(${name}
+    PUBLIC $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/include>
+           $<BUILD_INTERFACE:${PROJECT_BINARY_DIR}/include>
+           $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>
+    PRIVATE ${PROJECT_SOURCE_DIR}/src)
+  target_compile_options(${name} PRIVATE ${FACET_WARNINGS})
+  target_compile_features(${name} PUBLIC cxx_std_20)
+  set_target_properties(${name} PROPERTIES
+    EXPORT_NAME ${export_name}
+    OUTPUT_NAME ${output_name}
+    POSITION_INDEPENDENT_CODE ON
+    VERSION ${PROJECT_VERSION}
+    SOVERSION ${PROJECT_VERSION_MAJOR})
+endfunction()
+
+# The reference rasterizer (src/pipeline/reference.cpp) is the tests' oracle, not part of the
+# library: tests/CMakeLists.txt compiles it.
+file(GLOB_RECURSE FACET_CORE_SOURCES CONFIGURE_DEPENDS
+     ${PROJECT_SOURCE_DIR}/src/core/*.cpp ${PROJECT_SOURCE_DIR}/src/shading/*.cpp
+     ${PROJECT_SOURCE_DIR}/src/pipeline/*.cpp)
+list(REMOVE_ITEM FACET_CORE_SOURCES ${PROJECT_SOURCE_DIR}/src/pipeline/reference.cpp)
+facet_layer(facet_core core facet ${FACET_CORE_SOURCES})
+target_link_libraries(facet_core PUBLIC glm::glm PRIVATE PNG::PNG TBB::tbb hwy::hwy)
+
+file(GLOB FACET_IMPORT_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/import/*.cpp)
+facet_layer(facet_import import facet-import ${FACET_IMPORT_SOURCES})
+target_link_libraries(facet_import PUBLIC facet_core PRIVATE assimp::assimp)
+
+file(GLOB_RECURSE FACET_WORLDS_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/worlds/*.cpp)
+facet_layer(facet_worlds worlds facet-worlds ${FACET_WORLDS_SOURCES})
+target_link_libraries(facet_worlds PUBLIC facet_core PRIVATE TBB::tbb)
+
+file(GLOB FACET_SOUND_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/sound/*.cpp)
+facet_layer(facet_sound sound facet-sound ${FACET_SOUND_SOURCES})
+target_link_libraries(facet_sound PUBLIC facet_core PRIVATE OpenAL::OpenAL)
+
+add_library(facet_all INTERFACE)
+add_library(facet::facet ALIAS facet_all)
+set_target_properties(facet_all PROPERTIES EXPORT_NAME facet)
+target_link_libraries(facet_all INTERFACE facet_core facet_import facet_worlds facet_sound)
+
+# The benchmark scenes (bench/scenes: the glmark2 equivalents, bunny-close, million, ...) are not
+# part of the library: the facet program and the tests link them. They plug their own shading
+# models into the pipeline (src/pipeline/record/custom_draw.hpp), so they see its headers.
+if(FACET_BUILD_PROGRAM OR FACET_BUILD_TESTS)
+  file(GLOB FACET_BENCH_SCENE_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/bench/scenes/*.cpp)
+  add_library(facet_bench_scenes STATIC ${FACET_BENCH_SCENE_SOURCES})
+  target_include_directories(facet_bench_scenes
+    PUBLIC ${PROJECT_SOURCE_DIR}/bench PRIVATE ${PROJECT_SOURCE_DIR}/src)
+  target_link_libraries(facet_bench_scenes PUBLIC facet_core PRIVATE facet_import facet_worlds
+                        hwy::hwy)
+  target_compile_options(facet_bench_scenes PRIVATE ${FACET_WARNINGS})
+  set_target_properties(facet_bench_scenes PROPERTIES POSITION_INDEPENDENT_CODE ON)
+endif()

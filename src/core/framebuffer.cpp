@@ -1,0 +1,54 @@
+// Framebuffer storage.
+#include "facet/framebuffer.hpp"
+
+#include <string>
+
+#include "core/color.hpp"
+#include "facet/error.hpp"
+
+namespace facet {
+
+Framebuffer::Framebuffer(int width, int height, ColorFormat format, DepthImage depth)
+    : width_(width), height_(height), format_(format) {
+  if (width < 1 || height < 1 || width > kMaxSize || height > kMaxSize) {
+    throw Error("framebuffer: size " + std::to_string(width) + "x" + std::to_string(height) +
+                " is outside 1x1 .. " + std::to_string(kMaxSize) + "x" + std::to_string(kMaxSize));
+  }
+  std::size_t pixels = static_cast<std::size_t>(width) * height;
+  if (format == ColorFormat::rgba8_srgb) {
+    rgba8_.assign(pixels * 4, 0);
+  } else {
+    rgba32f_.assign(pixels * 4, 0.0f);
+  }
+  if (depth == DepthImage::keep) depth_.assign(pixels, 1.0f);
+}
+
+std::size_t Framebuffer::checked_index(int x, int y, const char* what) const {
+  if (x < 0 || y < 0 || x >= width_ || y >= height_) {
+    throw Error(std::string("framebuffer: ") + what + " at (" + std::to_string(x) + ", " +
+                std::to_string(y) + ") is outside the " + std::to_string(width_) + "x" +
+                std::to_string(height_) + " image");
+  }
+  return static_cast<std::size_t>(y) * width_ + x;
+}
+
+glm::vec4 Framebuffer::pixel(int x, int y) const {
+  const std::size_t i = checked_index(x, y, "pixel") * 4;
+  if (format_ == ColorFormat::rgba32f) {
+    return {rgba32f_[i], rgba32f_[i + 1], rgba32f_[i + 2], rgba32f_[i + 3]};
+  }
+  return {shading::decode_srgb8(rgba8_[i]), shading::decode_srgb8(rgba8_[i + 1]),
+          shading::decode_srgb8(rgba8_[i + 2]), rgba8_[i + 3] / 255.0f};
+}
+
+float Framebuffer::depth_at(int x, int y) const {
+  const std::size_t i = checked_index(x, y, "depth_at");
+  if (depth_.empty()) {
+    throw Error(
+        "framebuffer: depth_at on a framebuffer made without a depth image "
+        "(DepthImage::none)");
+  }
+  return depth_[i];
+}
+
+}  // namespace facet

@@ -1,0 +1,152 @@
+// Scene: node transforms, bounds, drawing, automatic framing.
+#include "facet/scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/glm.hpp>
+
+#include "facet/error.hpp"
+
+namespace facet {
+namespace {
+
+// Calls visit(p) for every finite world-space vertex position of every mesh instance.
+template <class Visit>
+void for_each_world_vertex(const Scene& scene, Visit&& visit) {
+  for (std::size_t n = 0; n < scene.nodes.size(); ++n) {
+    if (scene.nodes[n].instances.empty()) continue;
+    glm::mat4 m = scene.world_transform(static_cast<int>(n));
+    for (const MeshInstance& instance : scene.nodes[n].instances) {
+      for (const glm::vec3& p : scene.meshes[instance.mesh]->positions) {
+        glm::vec3 w = glm::vec3(m * glm::vec4(p, 1.0f));
+        if (std::isfinite(w.x) && std::isfinite(w.y) && std::isfinite(w.z)) visit(w);
+      }
+    }
+  }
+}
+
+}  // namespace
+
+void Bounds::add(glm::vec3 p) {
+  min = glm::min(min, p);
+  max = glm::max(max, p);
+}
+
+int Scene::add_object(Mesh mesh, Material material, const glm::mat4& transform, std::string name) {
+  meshes.push_back(std::make_shared<const Mesh>(std::move(mesh)));
+  materials.push_back(std::move(material));
+  SceneNode node;
+  node.name = std::move(name);
+  node.transform = transform;
+  node.instances.push_back(
+      {static_cast<int>(meshes.size()) - 1, static_cast<int>(materials.size()) - 1});
+  nodes.push_back(std::move(node));
+  return static_cast<int>(nodes.size()) - 1;
+}
+
+glm::mat4 Scene::world_transform(int node) const {
+  glm::mat4 m = nodes[node].transform;
+  for (int p = nodes[node].parent; p >= 0; p = nodes[p].parent) m = nodes[p].transform * m;
+  return m;
+}
+
+Bounds Scene::bounds() const {
+  Bounds b;
+  for_each_world_vertex(*this, [&b](glm::vec3 p) { b.add(p); });
+  return b;
+}
+
+void Scene::bound_detail_levels() {
+  for (SceneNode& node : nodes) {
+    if (node.coarser.empty()) continue;
+    node.detail_bounds = Bounds{};
+    auto add = [&](const std::vector<MeshInstance>& instances) {
+      for (const MeshInstance& instance : instances) {
+        for (const glm::vec3& p : meshes[instance.mesh]->positions) node.detail_bounds.add(p);
+      }
+    };
+    add(node.instances);
+    for (const DetailLevel& level : node.coarser) add(level.instances);
+  }
+}
+
+std::size_t Scene::triangle_count() const {
+  std::size_t count = 0;
+  for (const SceneNode& node : nodes) {
+    for (const MeshInstance& instance : node.instances) {
+      const Mesh& mesh = *meshes[instance.mesh];
+      if (mesh.topology != Topology::lines) count += mesh.primitive_count();
+    }
+  }
+  return count;
+}
+
+const std::vector<MeshInstance>& SceneNode::instances_seen_from(const glm::mat4& world,
+                                                                glm::vec3 eye,
+                                                                float fov_y_degrees) const {
+  if (coarser.empty() || detail_bounds.empty()) return instances;
+  // The world-space box around the node-space one; the eye's nearest point in it.
+  Bounds box;
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::vec3 p((corner & 1) ? detail_bounds.max.x : detail_bounds.min.x,
+                      (corner & 2) ? detail_bounds.max.y : detail_bounds.min.y,
+                      (corner & 4) ? detail_bounds.max.z : detail_bounds.min.z);
+    box.add(glm::vec3(world * glm::vec4(p, 1.0f)));
+  }
+  constexpr float kTanHalf60 = 0.57735026919f;  // tan(30 degrees) = 1 / sqrt(3)
+  const float distance = glm::length(eye - glm::clamp(eye, box.min, box.max)) *
+                         std::tan(glm::radians(fov_y_degrees) * 0.5f) / kTanHalf60;
+  const std::vector<MeshInstance>* chosen = &instances;
+  for (const DetailLevel& level : coarser) {
+    if (distance >= level.distance) chosen = &level.instances;
+  }
+  return *chosen;
+}
+
+void draw_scene(Renderer& renderer, const Scene& scene) {
+  const Camera& camera = renderer.camera();
+  for (std::size_t n = 0; n < scene.nodes.size(); ++n) {
+    const SceneNode& node = scene.nodes[n];
+    if (node.instances.empty() && node.coarser.empty()) continue;
+    glm::mat4 m = scene.world_transform(static_cast<int>(n));
+    for (const MeshInstance& instance :
+         node.instances_seen_from(m, camera.eye, camera.fov_y_degrees)) {
+      renderer.draw(scene.meshes[instance.mesh], scene.materials[instance.material], m);
+    }
+  }
+}
+
+Camera frame_scene(const Scene& scene, float aspect, float fov_y_degrees) {
+  Bounds b = scene.bounds();
+  if (b.empty()) b.add(glm::vec3(-1.0f)), b.add(glm::vec3(1.0f));
+  glm::vec3 centre = b.centre();
+  float radius = std::max(glm::length(b.max - b.min) * 0.5f, 1e-6f);
+  // Look from the front right, above; then back off until every vertex is in view: a point
+  // at (x, y, z) in view axes (z toward the eye) needs distance >= z + |x| / tan(half fov x),
+  // and the same for y. Fitting the vertices, not the bounding box, frames round models
+  // tightly.
+  glm::vec3 back = glm::normalize(glm::vec3(0.55f, 0.45f, 0.85f));
+  glm::vec3 right = glm::normalize(glm::cross(glm::vec3(0, 1, 0), back));
+  glm::vec3 up = glm::cross(back, right);
+  float tan_y = std::tan(glm::radians(fov_y_degrees) * 0.5f), tan_x = tan_y * aspect;
+  float distance = 0.0f;
+  for_each_world_vertex(scene, [&](glm::vec3 p) {
+    glm::vec3 d = p - centre;
+    float z = glm::dot(d, back);
+    distance = std::max({distance, z + std::abs(glm::dot(d, right)) / tan_x,
+                         z + std::abs(glm::dot(d, up)) / tan_y});
+  });
+  if (!(distance > 0.0f)) distance = radius / tan_y;
+  distance *= 1.08f;  // a margin around the model
+  Camera camera;
+  camera.eye = centre + back * distance;
+  camera.target = centre;
+  camera.up = {0.0f, 1.0f, 0.0f};
+  camera.fov_y_degrees = fov_y_degrees;
+  camera.aspect = aspect;
+  camera.near_plane = std::max(distance - radius * 1.5f, distance * 0.001f);
+  camera.far_plane = distance + radius * 2.0f;
+  return camera;
+}
+
+}  // namespace facet

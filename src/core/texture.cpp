@@ -1,0 +1,403 @@
+// Textures: construction with the mipmap chain, texel fetch and filtered sampling.
+// Written once at load (from_rgba8 / from_rgba32f), then read by the shading stage for every
+// textured pixel through sample(), so sample() allocates nothing and calls nothing virtual.
+//
+// Orientation: texture coordinates follow OpenGL, v = 0 is the BOTTOM row of the image
+// (stored row height - 1) and v = 1 the top, while Level rows are stored top first as image
+// files are. The flip happens in one place, flip() below.
+#include "facet/texture.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <string>
+
+#include "core/color.hpp"
+#include "core/portable_math.hpp"
+#include "facet/error.hpp"
+
+namespace facet {
+namespace {
+
+constexpr int kMaxTextureSize = 16384;
+
+// rgba8 textures up to this many base texels also keep their levels decoded to linear float
+// (Texture::linear_): 16 bytes a texel, so at most 16 MiB plus a third for the mip chain.
+// Larger ones decode through the tables below on every fetch (the same values, more work).
+constexpr std::size_t kMaxLinearTexels = std::size_t{1} << 20;
+
+// 8-bit code -> linear float, for sRGB-encoded color (IEC 61966-2-1) and for plain unorm
+// data (code / 255). Looked up once per sample() call, then indexed per channel.
+struct DecodeTables {
+  std::array<float, 256> srgb;
+  std::array<float, 256> unorm;
+  DecodeTables() {
+    for (int i = 0; i < 256; ++i) {
+      srgb[i] = shading::decode_srgb8(static_cast<std::uint8_t>(i));
+      unorm[i] = static_cast<float>(i) / 255.0f;
+    }
+  }
+};
+
+const DecodeTables& decode_tables() {
+  static const DecodeTables kTables;  // built on first use: no static-initialisation order issue
+  return kTables;
+}
+
+std::string label(const std::string& name) { return name.empty() ? "texture" : name; }
+
+void check_size(int width, int height, std::size_t values, std::size_t expected_per_texel,
+                const std::string& name) {
+  if (width < 1 || height < 1 || width > kMaxTextureSize || height > kMaxTextureSize) {
+    throw Error(label(name) + ": texture size " + std::to_string(width) + "x" +
+                std::to_string(height) + " outside 1x1 .. " + std::to_string(kMaxTextureSize) +
+                "x" + std::to_string(kMaxTextureSize));
+  }
+  const std::size_t expected = static_cast<std::size_t>(width) * height * expected_per_texel;
+  if (values != expected) {
+    throw Error(label(name) + ": texture data has " + std::to_string(values) + " values, " +
+                std::to_string(width) + "x" + std::to_string(height) + " RGBA needs " +
+                std::to_string(expected));
+  }
+}
+
+// One linear RGBA texel in a 128-bit vector, one lane per channel (GCC/Clang vector extension:
+// SSE on x86, NEON on ARM). Lane-wise +, -, * round exactly as the scalar glm::vec4 operations
+// they replace (no fused multiply-add: -ffp-contract=off), so results are the same bits.
+using Texel = float __attribute__((vector_size(16)));
+
+inline Texel load_texel(const float* p) {
+  Texel t;
+  std::memcpy(&t, p, sizeof t);
+  return t;
+}
+inline glm::vec4 to_vec4(Texel t) { return {t[0], t[1], t[2], t[3]}; }
+
+// Readers of linear RGBA texels of one level, one type per storage format, so the sampling
+// functions below are compiled once per format and fetch texels without a format branch.
+struct Rgba8Reader {
+  const std::uint8_t* texels;
+  int width, height;
+  const float* color;  // decode table for r, g, b: sRGB or unorm
+  const float* alpha;  // decode table for alpha: always unorm (alpha is never sRGB)
+
+  Rgba8Reader(const Texture::Level& level, bool srgb)
+      : texels(level.rgba8.data()), width(level.width), height(level.height) {
+    const DecodeTables& tables = decode_tables();
+    color = srgb ? tables.srgb.data() : tables.unorm.data();
+    alpha = tables.unorm.data();
+  }
+  Texel operator()(int x, int row) const {
+    const std::uint8_t* p = texels + (static_cast<std::size_t>(row) * width + x) * 4;
+    return Texel{color[p[0]], color[p[1]], color[p[2]], alpha[p[3]]};
+  }
+};
+
+// Linear float RGBA: rgba32f levels, and rgba8 levels decoded once at load (Texture::linear_).
+struct FloatReader {
+  const float* texels;
+  int width, height;
+
+  Texel operator()(int x, int row) const {
+    return load_texel(texels + (static_cast<std::size_t>(row) * width + x) * 4);
+  }
+};
+
+// A texel-space coordinate made safe to convert to int: NaN and huge values are clamped
+// (to 2^23: beyond it floats are whole numbers anyway, and +1 still fits in an int).
+inline float sanitize(float x) {
+  constexpr float kLimit = 8388608.0f;
+  return x > -kLimit ? std::min(x, kLimit) : -kLimit;  // the comparison is false for NaN
+}
+
+// Floor of a sanitized coordinate, without a libm call: truncate, then step down if negative.
+inline int floor_to_int(float x) {
+  const int t = static_cast<int>(x);
+  return static_cast<float>(t) > x ? t - 1 : t;
+}
+
+// i mod size, always in [0, size). Power-of-two sizes (most textures) take a mask instead of
+// a division: with two's complement, i & (size - 1) is the positive remainder even for i < 0.
+inline int positive_mod(int i, int size) {
+  if ((size & (size - 1)) == 0) return i & (size - 1);
+  const int m = i % size;
+  return m < 0 ? m + size : m;
+}
+
+// Integer texel coordinate -> a coordinate inside [0, size), OpenGL 4.6 §8.14.2 (table 8.20).
+// The mode is a template parameter: sample() picks the instance once per call, so the texel
+// loops have no mode switch.
+template <Wrap kMode>
+inline int wrap(int i, int size) {
+  if constexpr (kMode == Wrap::clamp_to_edge) {
+    return std::clamp(i, 0, size - 1);
+  } else if constexpr (kMode == Wrap::mirrored_repeat) {
+    // Period 2 * size: forwards in [0, size), backwards in [size, 2 * size).
+    const int m = positive_mod(i, 2 * size);
+    return m < size ? m : 2 * size - 1 - m;
+  } else {
+    return positive_mod(i, size);
+  }
+}
+
+// The wrapped pair (i, i + 1) of a bilinear footprint. For repeat the second follows from the
+// first without another division.
+struct TexelPair {
+  int first, second;
+};
+template <Wrap kMode>
+inline TexelPair wrap_pair(int i, int size) {
+  if constexpr (kMode == Wrap::repeat) {
+    const int first = positive_mod(i, size);
+    return {first, first + 1 == size ? 0 : first + 1};
+  } else {
+    return {wrap<kMode>(i, size), wrap<kMode>(i + 1, size)};
+  }
+}
+
+// Wrapped texel coordinate along v (counted from the bottom) -> stored row (top first).
+inline int flip(int j, int height) { return height - 1 - j; }
+
+template <Wrap kU, Wrap kV, class Reader>
+inline Texel sample_nearest(const Reader& read, glm::vec2 uv) {
+  const int w = read.width, h = read.height;
+  const int i = floor_to_int(sanitize(uv.x * static_cast<float>(w)));
+  const int j = floor_to_int(sanitize(uv.y * static_cast<float>(h)));
+  return read(wrap<kU>(i, w), flip(wrap<kV>(j, h), h));
+}
+
+// Bilinear filter, OpenGL 4.6 §8.14.2: texel centres sit at integer + 0.5, so the four texels
+// around uv * size - 0.5 are blended by the fractional part of that position.
+template <Wrap kU, Wrap kV, class Reader>
+inline Texel sample_bilinear(const Reader& read, glm::vec2 uv) {
+  const int w = read.width, h = read.height;
+  const float x = sanitize(uv.x * static_cast<float>(w) - 0.5f);
+  const float y = sanitize(uv.y * static_cast<float>(h) - 0.5f);
+  const int i0 = floor_to_int(x), j0 = floor_to_int(y);
+  const float a = x - static_cast<float>(i0), b = y - static_cast<float>(j0);  // in [0, 1)
+  const TexelPair xs = wrap_pair<kU>(i0, w), ys = wrap_pair<kV>(j0, h);
+  const int x0 = xs.first, x1 = xs.second, r0 = flip(ys.first, h), r1 = flip(ys.second, h);
+  const Texel bottom = read(x0, r0) * (1.0f - a) + read(x1, r0) * a;
+  const Texel top = read(x0, r1) * (1.0f - a) + read(x1, r1) * a;
+  return bottom * (1.0f - b) + top * b;
+}
+
+// The filter switch of Texture::sample(), for one storage format and pair of wrap modes.
+// reader(l) gives the Reader of level l.
+template <Wrap kU, Wrap kV, class MakeReader>
+Texel sample_levels(const MakeReader& reader, int level_count, Filter filter, glm::vec2 uv,
+                    float lod) {
+  switch (filter) {
+    case Filter::nearest:
+      return sample_nearest<kU, kV>(reader(0), uv);
+    case Filter::bilinear:
+      return sample_bilinear<kU, kV>(reader(0), uv);
+    case Filter::trilinear:
+    default: {
+      // Negative lod is magnification (the base level); NaN also lands on level 0.
+      const float top = static_cast<float>(level_count - 1);
+      const float l = lod > 0.0f ? std::min(lod, top) : 0.0f;
+      const int l0 = static_cast<int>(l);
+      const float f = l - static_cast<float>(l0);
+      const Texel a = sample_bilinear<kU, kV>(reader(l0), uv);
+      if (f <= 0.0f) return a;  // also the last level, where l == top
+      const Texel b = sample_bilinear<kU, kV>(reader(l0 + 1), uv);
+      return a * (1.0f - f) + b * f;
+    }
+  }
+}
+
+// Picks the sample_levels instance for the sampler's wrap modes.
+template <class MakeReader>
+Texel sample_wrapped(const MakeReader& reader, int level_count, const Sampler& s, glm::vec2 uv,
+                     float lod) {
+  constexpr Wrap kR = Wrap::repeat, kC = Wrap::clamp_to_edge, kM = Wrap::mirrored_repeat;
+  const Filter f = s.filter;
+  switch (s.wrap_u) {
+    case Wrap::clamp_to_edge:
+      if (s.wrap_v == kC) return sample_levels<kC, kC>(reader, level_count, f, uv, lod);
+      if (s.wrap_v == kM) return sample_levels<kC, kM>(reader, level_count, f, uv, lod);
+      return sample_levels<kC, kR>(reader, level_count, f, uv, lod);
+    case Wrap::mirrored_repeat:
+      if (s.wrap_v == kC) return sample_levels<kM, kC>(reader, level_count, f, uv, lod);
+      if (s.wrap_v == kM) return sample_levels<kM, kM>(reader, level_count, f, uv, lod);
+      return sample_levels<kM, kR>(reader, level_count, f, uv, lod);
+    case Wrap::repeat:
+    default:
+      if (s.wrap_v == kC) return sample_levels<kR, kC>(reader, level_count, f, uv, lod);
+      if (s.wrap_v == kM) return sample_levels<kR, kM>(reader, level_count, f, uv, lod);
+      return sample_levels<kR, kR>(reader, level_count, f, uv, lod);
+  }
+}
+
+// --- mipmap construction ----------------------------------------------------------------
+
+// Linear RGBA of one texel, whatever the format (texel(); not the hot path).
+glm::vec4 linear_texel(const Texture::Level& level, bool srgb, int x, int y) {
+  if (!level.rgba32f.empty()) {
+    return to_vec4(FloatReader{level.rgba32f.data(), level.width, level.height}(x, y));
+  }
+  return to_vec4(Rgba8Reader(level, srgb)(x, y));
+}
+
+void store_texel(Texture::Level& level, bool srgb, int x, int y, glm::vec4 c) {
+  const std::size_t i = (static_cast<std::size_t>(y) * level.width + x) * 4;
+  if (!level.rgba32f.empty()) {
+    for (int k = 0; k < 4; ++k) level.rgba32f[i + k] = c[k];
+    return;
+  }
+  for (int k = 0; k < 3; ++k)
+    level.rgba8[i + k] = srgb ? shading::encode_srgb8(c[k]) : shading::encode_unorm8(c[k]);
+  level.rgba8[i + 3] = shading::encode_unorm8(c[3]);
+}
+
+// The next level: each side halved (rounded down, at least 1); each texel the average, in
+// linear space, of the 2x2 source texels it covers, or of fewer where a side is already 1.
+// (On odd sizes the last source row/column is dropped, as a plain 2x2 box filter does.)
+template <class Reader>
+Texture::Level downsample(const Texture::Level& src, bool srgb, const Reader& read) {
+  Texture::Level dst;
+  dst.width = std::max(1, src.width / 2);
+  dst.height = std::max(1, src.height / 2);
+  const std::size_t values = static_cast<std::size_t>(dst.width) * dst.height * 4;
+  if (src.rgba32f.empty()) {
+    dst.rgba8.resize(values);
+  } else {
+    dst.rgba32f.resize(values);
+  }
+  const int nx = src.width > 1 ? 2 : 1, ny = src.height > 1 ? 2 : 1;
+  const float weight = 1.0f / static_cast<float>(nx * ny);
+  for (int y = 0; y < dst.height; ++y) {
+    for (int x = 0; x < dst.width; ++x) {
+      glm::vec4 sum(0.0f);
+      for (int dy = 0; dy < ny; ++dy) {
+        for (int dx = 0; dx < nx; ++dx) sum += to_vec4(read(2 * x + dx, 2 * y + dy));
+      }
+      store_texel(dst, srgb, x, y, sum * weight);
+    }
+  }
+  return dst;
+}
+
+void build_mip_chain(std::vector<Texture::Level>& levels, bool srgb) {
+  while (levels.back().width > 1 || levels.back().height > 1) {
+    // Filter from the previous (stored) level, as glGenerateMipmap does: one pass per level.
+    const Texture::Level& last = levels.back();
+    Texture::Level next =
+        last.rgba32f.empty()
+            ? downsample(last, srgb, Rgba8Reader(last, srgb))
+            : downsample(last, false, FloatReader{last.rgba32f.data(), last.width, last.height});
+    levels.push_back(std::move(next));
+  }
+}
+
+}  // namespace
+
+std::shared_ptr<Texture> Texture::from_rgba8(int width, int height, std::vector<std::uint8_t> rgba,
+                                             bool srgb, std::string name) {
+  check_size(width, height, rgba.size(), 4, name);
+  std::shared_ptr<Texture> texture(new Texture());  // the constructor is private: no make_shared
+  texture->format_ = Format::rgba8;
+  texture->srgb_ = srgb;
+  texture->name_ = std::move(name);
+  texture->levels_.push_back(Level{width, height, std::move(rgba), {}});
+  build_mip_chain(texture->levels_, srgb);
+  if (static_cast<std::size_t>(width) * height <= kMaxLinearTexels) {
+    std::size_t total = 0;
+    for (const Level& level : texture->levels_) {
+      texture->linear_offsets_.push_back(static_cast<std::int32_t>(total));
+      total += level.rgba8.size();
+    }
+    std::vector<std::int32_t>& offsets = texture->linear_offsets_;
+    offsets.resize((offsets.size() + kLevelOffsetsPadding - 1) / kLevelOffsetsPadding *
+                   kLevelOffsetsPadding);  // zeros (LinearLevels)
+    texture->linear_.resize(total);
+    for (std::size_t l = 0; l < texture->levels_.size(); ++l) {
+      const Level& level = texture->levels_[l];
+      const Rgba8Reader read(level, srgb);
+      float* linear = texture->linear_.data() + texture->linear_offsets_[l];
+      for (int y = 0; y < level.height; ++y) {
+        for (int x = 0; x < level.width; ++x) {
+          const Texel t = read(x, y);
+          std::memcpy(&linear[(static_cast<std::size_t>(y) * level.width + x) * 4], &t, sizeof t);
+        }
+      }
+    }
+  }
+  return texture;
+}
+
+std::shared_ptr<Texture> Texture::from_rgba32f(int width, int height, std::vector<float> rgba,
+                                               std::string name) {
+  check_size(width, height, rgba.size(), 4, name);
+  std::shared_ptr<Texture> texture(new Texture());
+  texture->format_ = Format::rgba32f;
+  texture->name_ = std::move(name);
+  texture->levels_.push_back(Level{width, height, {}, std::move(rgba)});
+  build_mip_chain(texture->levels_, false);
+  return texture;
+}
+
+// x, y address the level as stored: y = 0 is the TOP row (unlike v in sample()).
+glm::vec4 Texture::texel(int level, int x, int y) const {
+  if (level < 0 || level >= level_count() || x < 0 || y < 0 || x >= levels_[level].width ||
+      y >= levels_[level].height) {
+    throw Error(label(name_) + ": texel (" + std::to_string(x) + ", " + std::to_string(y) +
+                ") of level " + std::to_string(level) + " is outside the texture");
+  }
+  return linear_texel(levels_[level], srgb_, x, y);
+}
+
+glm::vec4 Texture::sample(const Sampler& sampler, glm::vec2 uv, float lod) const {
+  const int count = level_count();
+  if (format_ == Format::rgba32f) {
+    const auto reader = [this](int l) {
+      const Level& level = levels_[l];
+      return FloatReader{level.rgba32f.data(), level.width, level.height};
+    };
+    return to_vec4(sample_wrapped(reader, count, sampler, uv, lod));
+  }
+  if (!linear_.empty()) {
+    const auto reader = [this](int l) {
+      return FloatReader{linear_.data() + linear_offsets_[l], levels_[l].width, levels_[l].height};
+    };
+    return to_vec4(sample_wrapped(reader, count, sampler, uv, lod));
+  }
+  const auto reader = [this](int l) { return Rgba8Reader(levels_[l], srgb_); };
+  return to_vec4(sample_wrapped(reader, count, sampler, uv, lod));
+}
+
+// OpenGL 4.6 §8.14.1, equation 8.4 without anisotropy: rho is the longer of the two
+// screen-pixel footprint edges measured in base-level texels, lod = log2(rho). Computed from
+// squared lengths (0.5 * log2(rho^2)) to save the square roots, with lod_log2 (within a
+// thousandth of a level; the same bits on every CPU and in the SIMD batch sampler). Not
+// clamped: sample() does.
+float Texture::lod(glm::vec2 duv_dx, glm::vec2 duv_dy) const {
+  const glm::vec2 size(static_cast<float>(width()), static_cast<float>(height()));
+  const glm::vec2 dx = duv_dx * size, dy = duv_dy * size;
+  const float rho2 = std::max(dx.x * dx.x + dx.y * dx.y, dy.x * dy.x + dy.y * dy.y);
+  return 0.5f * shading::lod_log2(rho2);
+}
+
+std::shared_ptr<const Texture> missing_texture() {
+  // Built once, shared by every material whose texture could not be loaded. 8x8 cells of
+  // 8x8 texels: big cells so the pattern stays crisp under bilinear filtering.
+  static const std::shared_ptr<Texture> kMissing = [] {
+    constexpr int kSize = 64, kCell = 8;
+    std::vector<std::uint8_t> rgba(std::size_t{kSize} * kSize * 4);
+    for (int y = 0; y < kSize; ++y) {
+      for (int x = 0; x < kSize; ++x) {
+        const bool magenta = ((x / kCell) + (y / kCell)) % 2 == 0;
+        std::uint8_t* p = &rgba[static_cast<std::size_t>(y * kSize + x) * 4];
+        p[0] = p[2] = magenta ? 255 : 0;
+        p[1] = 0;
+        p[3] = 255;
+      }
+    }
+    return Texture::from_rgba8(kSize, kSize, std::move(rgba), false, "missing texture");
+  }();
+  return kMissing;
+}
+
+}  // namespace facet

@@ -1,0 +1,92 @@
+// import_scene(): picks the reader for a model file and finishes every imported scene the same
+// way (every mesh validated, something to draw, a default camera). Runs once per model at load
+// time; the Scene it returns is what the renderer reads.
+#include "facet/import.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "facet/error.hpp"
+#include "import/import_internal.hpp"
+
+namespace facet {
+namespace io {
+
+std::string lower_case(std::string_view text) {
+  std::string out(text);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+void warn(const ImportOptions& options, const std::string& message) {
+  if (options.warn) {
+    options.warn(message);
+  } else {
+    std::fprintf(stderr, "facet: warning: %s\n", message.c_str());
+  }
+}
+
+// A model path must name a readable regular file; say which way it does not.
+void check_model_file(const std::string& path) {
+  std::error_code error;
+  if (std::filesystem::is_regular_file(path, error)) return;
+  if (std::filesystem::is_directory(path, error))
+    throw Error(path + ": is a directory, not a model file");
+  throw Error(path + ": no such file");
+}
+
+std::string read_whole_file(const std::string& path) {
+  check_model_file(path);
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad() || !in.is_open()) throw Error(path + ": cannot be read");
+  return bytes;
+}
+
+}  // namespace io
+
+namespace {
+
+// Throws "<path>: mesh N: ..." for the first mesh the renderer could not draw safely.
+void validate_meshes(const Scene& scene, const std::string& path) {
+  for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
+    try {
+      scene.meshes[i]->validate();
+    } catch (const Error& e) {
+      std::string what = e.what();
+      if (what.rfind("mesh: ", 0) == 0) what.erase(0, 6);
+      throw Error(path + ": mesh " + std::to_string(i) + ": " + what);
+    }
+  }
+}
+
+bool has_primitives(const Scene& scene) {
+  for (const SceneNode& node : scene.nodes) {
+    for (const MeshInstance& instance : node.instances) {
+      if (scene.meshes[instance.mesh]->primitive_count() > 0) return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+Scene import_scene(const std::string& path, const ImportOptions& options) {
+  io::check_model_file(path);
+  const std::string extension = io::lower_case(std::filesystem::path(path).extension().string());
+  Scene scene = extension == ".d" ? io::import_d_scene(path, options)
+                                  : io::import_assimp_scene(path, options);
+  validate_meshes(scene, path);
+  // Line-only models (a wireframe OBJ) still draw; a file of points or nothing at all does not.
+  if (!has_primitives(scene)) throw Error(path + ": no triangles to draw");
+  if (!scene.has_file_lights) scene.lighting.lights.clear();  // the caller adds its own
+  scene.camera = frame_scene(scene, 16.0f / 9.0f);
+  return scene;
+}
+
+}  // namespace facet

@@ -1,0 +1,317 @@
+// Every model format assimp reads, converted to a facet Scene: meshes, the node hierarchy,
+// cameras and punctual lights (materials and textures: import_materials.cpp). Runs once per
+// model at load time; the renderer only ever sees the Scene.
+//
+// assimp post-processing is limited to what keeps the file's meaning: triangulate, split
+// meshes by primitive type, validate, drop invalid data. Identical vertices are joined by facet
+// (finish_mesh), and so are normals generated (compute_smooth_normals, with the crease angle).
+// No pre-transforming (the node hierarchy is kept), no rescaling or re-centring.
+#include "import/import_assimp.hpp"
+
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <algorithm>
+#include <assimp/Importer.hpp>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <glm/geometric.hpp>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "facet/error.hpp"
+
+namespace facet::io {
+
+namespace {
+
+// No aiProcess_JoinIdenticalVertices: finish_mesh joins them itself, exactly and several
+// times faster (it took 54 of assimp's 82 ms on glmark2's bunny.obj).
+constexpr unsigned kPostProcess = aiProcess_Triangulate | aiProcess_SortByPType |
+                                  aiProcess_ValidateDataStructure | aiProcess_FindInvalidData;
+
+std::string one_line(std::string text) {
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  std::replace(text.begin(), text.end(), '\r', ' ');
+  while (!text.empty() && text.back() == ' ') text.pop_back();
+  return text.empty() ? "unknown error" : text;
+}
+
+// assimp 5.2's OFF reader allocates whatever the header declares before reading a vertex:
+// invalid/OutOfMemory.off (309 bytes) declares 353535235358 vertices and takes 15 GB and 25 s to
+// fail. A vertex needs at least 6 bytes ("0 0 0\n") and a face 2, so a header the file cannot
+// hold is refused here instead.
+void check_off_header(const std::string& path) {
+  std::string head(4096, '\0');  // the header is at the start; never read a big binary file
+  std::ifstream file(path, std::ios::binary);
+  file.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(file.gcount()));
+  std::istringstream in(head);
+  std::string keyword, line;
+  while (in >> keyword && keyword[0] == '#') std::getline(in, line);
+  if (keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0) return;
+  unsigned long long vertices = 0, faces = 0;
+  if (!(in >> vertices >> faces)) return;  // binary OFF or garbage: assimp will say
+  std::error_code error;
+  const auto size = std::filesystem::file_size(path, error);
+  if (error) return;
+  if (vertices > size / 6 || faces > size / 2 || vertices * 6 + faces * 2 > size) {
+    throw Error(path + ": cannot import: the OFF header declares " + std::to_string(vertices) +
+                " vertices and " + std::to_string(faces) + " faces, more than a file of " +
+                std::to_string(size) + " bytes can hold");
+  }
+}
+
+bool is_gltf(const std::string& path, const aiScene& ai) {
+  const std::string extension = lower_case(std::filesystem::path(path).extension().string());
+  if (extension == ".gltf" || extension == ".glb") return true;
+  for (unsigned i = 0; ai.mMaterials && i < ai.mNumMaterials; ++i) {
+    aiString mode;
+    if (ai.mMaterials[i] && ai.mMaterials[i]->Get("$mat.gltf.alphaMode", 0, 0, mode) == AI_SUCCESS)
+      return true;
+  }
+  return false;
+}
+
+float srgb_to_linear(float c) {
+  c = std::max(c, 0.0f);
+  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
+bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// The attributes of one aiMesh. With SortByPType each aiMesh holds one primitive type; points
+// are dropped (nothing to draw), lines kept as a line mesh.
+std::optional<Mesh> convert_mesh(const aiMesh& in, bool linear_colors) {
+  std::size_t triangles = 0, lines = 0;
+  if (!in.mFaces) return std::nullopt;  // assimp can hand back partial scenes
+  for (unsigned f = 0; f < in.mNumFaces; ++f) {
+    if (!in.mFaces[f].mIndices) continue;
+    triangles += in.mFaces[f].mNumIndices == 3;
+    lines += in.mFaces[f].mNumIndices == 2;
+  }
+  if (!in.mVertices || (triangles == 0 && lines == 0)) return std::nullopt;
+  Mesh mesh;
+  mesh.topology = triangles > 0 ? Topology::triangles : Topology::lines;
+  const unsigned corners = triangles > 0 ? 3 : 2;
+  const unsigned n = in.mNumVertices;
+  mesh.positions.resize(n);
+  for (unsigned i = 0; i < n; ++i)
+    mesh.positions[i] = {in.mVertices[i].x, in.mVertices[i].y, in.mVertices[i].z};
+  if (in.mNormals) {
+    mesh.normals.resize(n);
+    for (unsigned i = 0; i < n; ++i)
+      mesh.normals[i] = {in.mNormals[i].x, in.mNormals[i].y, in.mNormals[i].z};
+  }
+  if (in.mTextureCoords[0]) {
+    mesh.texcoords.resize(n);
+    for (unsigned i = 0; i < n; ++i)
+      mesh.texcoords[i] = {in.mTextureCoords[0][i].x, in.mTextureCoords[0][i].y};
+  }
+  if (in.mColors[0]) {
+    mesh.colors.resize(n);
+    for (unsigned i = 0; i < n; ++i) {
+      const aiColor4D& c = in.mColors[0][i];
+      // glTF vertex colors are linear by definition; PLY/OBJ/... colors are display (sRGB)
+      // values, as Blender reads them.
+      mesh.colors[i] = linear_colors ? glm::vec4(c.r, c.g, c.b, c.a)
+                                     : glm::vec4(srgb_to_linear(c.r), srgb_to_linear(c.g),
+                                                 srgb_to_linear(c.b), c.a);
+    }
+  }
+  if (in.mTangents && in.mBitangents && in.mNormals) {
+    mesh.tangents.resize(n);
+    for (unsigned i = 0; i < n; ++i) {
+      glm::vec3 t(in.mTangents[i].x, in.mTangents[i].y, in.mTangents[i].z);
+      glm::vec3 b(in.mBitangents[i].x, in.mBitangents[i].y, in.mBitangents[i].z);
+      float w = glm::dot(glm::cross(mesh.normals[i], t), b) < 0.0f ? -1.0f : 1.0f;
+      mesh.tangents[i] = glm::vec4(t, w);
+    }
+  }
+  mesh.indices.reserve(static_cast<std::size_t>(corners) * std::max(triangles, lines));
+  for (unsigned f = 0; f < in.mNumFaces; ++f) {
+    const aiFace& face = in.mFaces[f];
+    if (!face.mIndices || face.mNumIndices != corners) continue;
+    mesh.indices.insert(mesh.indices.end(), face.mIndices, face.mIndices + corners);
+  }
+  return mesh;
+}
+
+// Bad per-vertex data that the pipeline could not shade sensibly is repaired or recomputed;
+// positions that are not finite make the model unusable and are reported.
+void repair_attributes(Mesh& mesh, const std::string& where) {
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+    if (!finite(mesh.positions[i])) {
+      throw Error(where + ": vertex " + std::to_string(i) + " has a non-finite position");
+    }
+  }
+  for (glm::vec3& normal : mesh.normals) {
+    float length = glm::length(normal);
+    if (!(length > 1e-12f) || !std::isfinite(length)) {
+      mesh.normals.clear();  // recomputed below: one broken normal spoils a smooth surface
+      break;
+    }
+    normal /= length;
+  }
+  for (glm::vec2& uv : mesh.texcoords) {
+    if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) uv = glm::vec2(0.0f);
+  }
+  for (glm::vec4& color : mesh.colors) {
+    if (!finite(glm::vec3(color)) || !std::isfinite(color.w)) color = glm::vec4(1.0f);
+  }
+  for (const glm::vec4& t : mesh.tangents) {
+    if (!finite(glm::vec3(t)) || !(glm::length(glm::vec3(t)) > 1e-12f)) {
+      mesh.tangents.clear();
+      break;
+    }
+  }
+}
+
+void finish_mesh(Mesh& mesh, const Material& material, const ImportOptions& options,
+                 const std::string& where) {
+  try {
+    mesh.validate();
+  } catch (const Error& e) {
+    std::string what = e.what();
+    if (what.rfind("mesh: ", 0) == 0) what.erase(0, 6);
+    throw Error(where + ": " + what);
+  }
+  repair_attributes(mesh, where);
+  if (mesh.topology == Topology::lines) return;
+  // Either joins identical vertices (assimp hands each face corner its own).
+  if (mesh.normals.empty()) {
+    compute_smooth_normals(mesh, options.crease_angle_degrees);
+  } else {
+    join_identical_vertices(mesh);
+  }
+  if (material.normal_map && !mesh.texcoords.empty() && mesh.tangents.empty()) {
+    compute_tangents(mesh);
+  }
+}
+
+glm::mat4 to_glm(const aiMatrix4x4& m) {
+  // aiMatrix4x4 is row-major (a1 a2 a3 a4 is the first row); glm is column-major.
+  glm::mat4 out;
+  for (int row = 0; row < 4; ++row) {
+    for (int column = 0; column < 4; ++column) out[column][row] = m[row][column];
+  }
+  return out;
+}
+
+struct NodeBuilder {
+  const aiScene& ai;
+  const std::vector<int>& mesh_index;  // aiMesh -> Scene::meshes, -1 if dropped
+  const std::vector<int>& mesh_material;
+  Scene& scene;
+  std::unordered_map<std::string, int> by_name;
+
+  // Depth first, parents before children (SceneNode::parent must come first). A stack rather
+  // than recursion, so a very deep hierarchy cannot overflow the call stack.
+  void build() {
+    struct Pending {
+      const aiNode* node;
+      int parent;
+    };
+    std::vector<Pending> stack;
+    if (ai.mRootNode) stack.push_back({ai.mRootNode, -1});
+    std::unordered_map<const aiNode*, bool> seen;  // assimp validates, but never loop forever
+    while (!stack.empty()) {
+      Pending next = stack.back();
+      stack.pop_back();
+      if (!next.node || !seen.emplace(next.node, true).second) continue;
+      const int index = add(*next.node, next.parent);
+      for (unsigned c = next.node->mChildren ? next.node->mNumChildren : 0; c-- > 0;) {
+        stack.push_back({next.node->mChildren[c], index});
+      }
+    }
+  }
+
+  int add(const aiNode& node, int parent) {
+    SceneNode out;
+    out.name = node.mName.C_Str();
+    out.transform = to_glm(node.mTransformation);
+    out.parent = parent;
+    for (unsigned i = 0; node.mMeshes && i < node.mNumMeshes; ++i) {
+      const unsigned m = node.mMeshes[i];
+      if (m < mesh_index.size() && mesh_index[m] >= 0) {
+        out.instances.push_back({mesh_index[m], mesh_material[m]});
+      }
+    }
+    scene.nodes.push_back(std::move(out));
+    const int index = static_cast<int>(scene.nodes.size()) - 1;
+    by_name.try_emplace(scene.nodes.back().name, index);
+    return index;
+  }
+};
+
+void import_meshes(const aiScene& ai, bool gltf, const std::string& path,
+                   const ImportOptions& options, Scene& scene, std::vector<int>& mesh_index,
+                   std::vector<int>& mesh_material) {
+  mesh_index.assign(ai.mNumMeshes, -1);
+  mesh_material.assign(ai.mNumMeshes, 0);
+  for (unsigned i = 0; ai.mMeshes && i < ai.mNumMeshes; ++i) {
+    if (!ai.mMeshes[i]) continue;
+    std::optional<Mesh> mesh = convert_mesh(*ai.mMeshes[i], gltf);
+    if (!mesh) continue;
+    const unsigned material = ai.mMeshes[i]->mMaterialIndex;
+    mesh_material[i] = material < scene.materials.size() ? static_cast<int>(material) : 0;
+    finish_mesh(*mesh, scene.materials[mesh_material[i]], options,
+                path + ": mesh " + std::to_string(i));
+    scene.meshes.push_back(std::make_shared<const Mesh>(std::move(*mesh)));
+    mesh_index[i] = static_cast<int>(scene.meshes.size()) - 1;
+  }
+}
+
+// Every texture some material uses, once.
+void collect_textures(Scene& scene) {
+  for (const Material& m : scene.materials) {
+    for (const TextureMap* map : {&m.base_color_map, &m.normal_map, &m.specular_map,
+                                  &m.metallic_roughness_map, &m.occlusion_map, &m.emissive_map}) {
+      if (map->texture && std::find(scene.textures.begin(), scene.textures.end(), map->texture) ==
+                              scene.textures.end()) {
+        scene.textures.push_back(map->texture);
+      }
+    }
+  }
+}
+
+Scene convert(const aiScene& ai, const std::string& path, const ImportOptions& options) {
+  const bool gltf = is_gltf(path, ai);
+  Scene scene;
+  TextureLoader textures(ai, path, options);
+  scene.materials = import_materials(ai, gltf, textures);
+  collect_textures(scene);
+  std::vector<int> mesh_index, mesh_material;
+  import_meshes(ai, gltf, path, options, scene, mesh_index, mesh_material);
+  NodeBuilder nodes{ai, mesh_index, mesh_material, scene, {}};
+  nodes.build();
+  import_cameras_and_lights(ai, gltf, path, options, nodes.by_name, scene);
+  return scene;
+}
+
+}  // namespace
+
+Scene import_assimp_scene(const std::string& path, const ImportOptions& options) {
+  check_off_header(path);
+  Assimp::Importer importer;
+  const aiScene* ai = nullptr;
+  try {
+    ai = importer.ReadFile(path, kPostProcess);
+  } catch (const std::exception& e) {  // assimp's DeadlyImportError escapes in some readers
+    throw Error(path + ": cannot import: " + one_line(e.what()));
+  }
+  if (!ai) throw Error(path + ": cannot import: " + one_line(importer.GetErrorString()));
+  try {
+    return convert(*ai, path, options);
+  } catch (const Error&) {
+    throw;
+  } catch (const std::exception& e) {  // bad_alloc on absurd sizes, and the like
+    throw Error(path + ": cannot import: " + one_line(e.what()));
+  }
+}
+
+}  // namespace facet::io

@@ -1,0 +1,56 @@
+// Internal to the assimp importer (import_assimp.cpp): the texture files a model references
+// (import_textures.cpp), its materials (import_materials.cpp), cameras and lights
+// (import_assimp_objects.cpp).
+#pragma once
+
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "facet/material.hpp"
+#include "facet/texture.hpp"
+#include "import/import_internal.hpp"
+
+struct aiScene;
+struct aiMaterial;
+
+namespace facet::io {
+
+// Loads the textures a model references, each (file, sRGB) pair once. A texture that is
+// missing or cannot be decoded is warned about once per file name and comes back null.
+class TextureLoader {
+ public:
+  TextureLoader(const aiScene& scene, const std::string& model_path, const ImportOptions& options);
+  std::shared_ptr<const Texture> load(const std::string& reference, bool srgb);
+
+ private:
+  std::string resolve(const std::string& reference) const;  // empty: not found
+  int embedded_index(const std::string& reference) const;   // -1: not embedded
+  std::shared_ptr<const Texture> decode_embedded(int index, bool srgb) const;
+  void warn_once(const std::string& reference, const std::string& problem);
+
+  const aiScene& scene_;
+  std::string model_path_;
+  std::string model_dir_;
+  const ImportOptions& options_;
+  std::map<std::string, std::string> resolved_;  // reference -> file path, "*N" or "" (missing)
+  std::map<std::pair<std::string, bool>, std::shared_ptr<const Texture>> cache_;
+  std::set<std::string> warned_;
+};
+
+// Every material of the scene, in assimp's order (aiMesh::mMaterialIndex indexes it).
+// gltf: the file is glTF 2.0, so materials are metallic-roughness PBR with glTF conventions.
+std::vector<Material> import_materials(const aiScene& scene, bool gltf, TextureLoader& textures);
+
+// The file's cameras (Scene::cameras) and lights (Scene::lighting, has_file_lights), placed by
+// the nodes they are named after; needs the scene's nodes and meshes (for its size).
+void import_cameras_and_lights(const aiScene& ai, bool gltf, const std::string& path,
+                               const ImportOptions& options,
+                               const std::unordered_map<std::string, int>& node_by_name,
+                               Scene& scene);
+
+}  // namespace facet::io

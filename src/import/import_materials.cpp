@@ -1,0 +1,295 @@
+// assimp materials to facet Materials. Runs once per model at load time.
+//
+// Which shading model a material gets (the renderer's --shading overrides it for a scene):
+//   glTF 2.0                     pbr (metallic-roughness; specular-glossiness converted), or
+//                                unlit for KHR_materials_unlit
+//   a specular color and shininess (OBJ Ks/Ns, 3DS, FBX, COLLADA)   blinn_phong
+//   assimp says flat / unlit     flat / unlit
+//   anything else                lambert
+// Colors are taken as stored (glTF factors are linear by definition; MTL and 3DS colors are
+// used as linear too, as Blender's importers do).
+#include <assimp/GltfMaterial.h>
+#include <assimp/material.h>
+#include <assimp/scene.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <glm/geometric.hpp>
+#include <optional>
+#include <string>
+
+#include "import/import_assimp.hpp"
+
+namespace facet::io {
+namespace {
+
+// glTF sampler filter enums (glTF 2.0 §5.26, the OpenGL values).
+constexpr int kGlNearest = 9728;
+constexpr int kGlLinear = 9729;
+
+std::optional<float> get_float(const aiMaterial& m, const char* key, unsigned type,
+                               unsigned index) {
+  float value = 0.0f;
+  if (m.Get(key, type, index, value) != AI_SUCCESS || !std::isfinite(value)) return std::nullopt;
+  return value;
+}
+
+std::optional<int> get_int(const aiMaterial& m, const char* key, unsigned type, unsigned index) {
+  int value = 0;
+  if (m.Get(key, type, index, value) != AI_SUCCESS) return std::nullopt;
+  return value;
+}
+
+// Colors stored with 3 components read back with alpha 1.
+std::optional<glm::vec4> get_color(const aiMaterial& m, const char* key, unsigned type,
+                                   unsigned index) {
+  aiColor4D c;
+  if (m.Get(key, type, index, c) != AI_SUCCESS) return std::nullopt;
+  glm::vec4 v(c.r, c.g, c.b, c.a);
+  if (!std::isfinite(v.x + v.y + v.z + v.w)) return std::nullopt;
+  return glm::max(v, glm::vec4(0.0f));
+}
+
+Wrap wrap_from(int mode) {
+  switch (mode) {
+    case aiTextureMapMode_Clamp:
+    case aiTextureMapMode_Decal:  // outside [0, 1] shows the border: the closest we have
+      return Wrap::clamp_to_edge;
+    case aiTextureMapMode_Mirror:
+      return Wrap::mirrored_repeat;
+    default:
+      return Wrap::repeat;
+  }
+}
+
+// assimp's aiUVTransform, applied the way its TextureTransform step applies it (every format
+// but glTF):
+// uv' = C * S * R * C^-1 * T * uv, rotating and scaling about the centre C = (0.5, 0.5).
+glm::mat3 uv_matrix(const aiUVTransform& t) {
+  auto translate = [](float x, float y) {
+    glm::mat3 m(1.0f);
+    m[2] = glm::vec3(x, y, 1.0f);
+    return m;
+  };
+  glm::mat3 scale(1.0f);
+  scale[0][0] = t.mScaling.x;
+  scale[1][1] = t.mScaling.y;
+  const float c = std::cos(t.mRotation), s = std::sin(t.mRotation);
+  glm::mat3 rotate(1.0f);
+  rotate[0] = glm::vec3(c, s, 0.0f);
+  rotate[1] = glm::vec3(-s, c, 0.0f);
+  return translate(0.5f, 0.5f) * scale * rotate * translate(-0.5f, -0.5f) *
+         translate(t.mTranslation.x, t.mTranslation.y);
+}
+
+// glTF: assimp encodes KHR_texture_transform into aiUVTransform with its own change of
+// coordinates (glTF2Importer.cpp), which its TextureTransform step does not undo correctly for
+// rotations (the glTF TextureTransformTest's arrows miss their markers). So the glTF values are
+// recovered from assimp's encoding and the transform is rebuilt for v-up texture coordinates:
+// glTF's uv' = T(offset) R(rotation) S(scale) uv with v pointing down, conjugated by v -> 1 - v.
+glm::mat3 gltf_uv_matrix(const aiUVTransform& t) {
+  const float rotation = -t.mRotation, sx = t.mScaling.x, sy = t.mScaling.y;
+  const float c = std::cos(rotation), s = std::sin(rotation);
+  const float offset_x = t.mTranslation.x - 0.5f * sx * (1.0f - c + s);
+  const float offset_y = 0.5f * sy * (s + c - 1.0f) + 1.0f - sy - t.mTranslation.y;
+  glm::mat3 m(1.0f);  // columns
+  m[0] = glm::vec3(c * sx, s * sx, 0.0f);
+  m[1] = glm::vec3(-s * sy, c * sy, 0.0f);
+  m[2] = glm::vec3(offset_x + s * sy, 1.0f - offset_y - c * sy, 1.0f);
+  return m;
+}
+
+Sampler sampler_for(const aiMaterial& m, aiTextureType type) {
+  Sampler sampler;
+  sampler.wrap_u = wrap_from(get_int(m, AI_MATKEY_MAPPINGMODE_U(type, 0)).value_or(0));
+  sampler.wrap_v = wrap_from(get_int(m, AI_MATKEY_MAPPINGMODE_V(type, 0)).value_or(0));
+  const int mag = get_int(m, AI_MATKEY_GLTF_MAPPINGFILTER_MAG(type, 0)).value_or(0);
+  const int min = get_int(m, AI_MATKEY_GLTF_MAPPINGFILTER_MIN(type, 0)).value_or(0);
+  if (mag == kGlNearest) {
+    sampler.filter = Filter::nearest;  // pixel art asks for crisp texels
+  } else if (min == kGlNearest || min == kGlLinear) {
+    sampler.filter = Filter::bilinear;  // the file asks for no mipmaps
+  }
+  return sampler;
+}
+
+// Normal maps are mostly blue-violet (+Z up in tangent space, x and y around 0.5); height maps
+// are grey. OBJ files put either kind in map_bump, so the image decides.
+bool looks_like_normal_map(const Texture& texture) {
+  if (texture.format() != Texture::Format::rgba8) return false;
+  const Texture::Level& level = texture.level(0);
+  const std::size_t count = static_cast<std::size_t>(level.width) * level.height;
+  if (count == 0 || level.rgba8.size() < count * 4) return false;
+  const std::size_t step = std::max<std::size_t>(1, count / 4096);
+  double r = 0, g = 0, b = 0, blueness = 0, samples = 0;
+  for (std::size_t i = 0; i < count; i += step, ++samples) {
+    const std::uint8_t* p = &level.rgba8[i * 4];
+    r += p[0] / 255.0, g += p[1] / 255.0, b += p[2] / 255.0;
+    blueness += (p[2] - std::max(p[0], p[1])) / 255.0;
+  }
+  r /= samples, g /= samples, b /= samples, blueness /= samples;
+  return b > 0.6 && std::abs(r - 0.5) < 0.2 && std::abs(g - 0.5) < 0.2 && blueness > 0.1;
+}
+
+// Perceived brightness, as used by the Khronos spec-gloss to metal-rough conversion.
+float brightness(glm::vec3 c) {
+  return std::sqrt(0.299f * c.r * c.r + 0.587f * c.g * c.g + 0.114f * c.b * c.b);
+}
+
+// KHR_materials_pbrSpecularGlossiness to metallic-roughness, per material factor (textures are
+// not re-baked): the approximation from the glTF sample models' conversion notes. Metallic is
+// solved from how much brighter the specular is than a dielectric's 4 %; roughness = 1 - gloss.
+void convert_specular_glossiness(glm::vec4 diffuse, glm::vec3 specular, float glossiness,
+                                 Material& out) {
+  constexpr float kDielectric = 0.04f;
+  const float specular_strength = std::max({specular.r, specular.g, specular.b});
+  const float one_minus = 1.0f - specular_strength;
+  const float diffuse_brightness = brightness(glm::vec3(diffuse));
+  const float specular_brightness = brightness(specular);
+  float metallic = 0.0f;
+  if (specular_brightness >= kDielectric) {
+    float b = diffuse_brightness * one_minus / (1.0f - kDielectric) + specular_brightness -
+              2.0f * kDielectric;
+    float c = kDielectric - specular_brightness;
+    float root = std::sqrt(std::max(b * b - 4.0f * kDielectric * c, 0.0f));
+    metallic = std::clamp((-b + root) / (2.0f * kDielectric), 0.0f, 1.0f);
+  }
+  glm::vec3 from_diffuse =
+      glm::vec3(diffuse) * one_minus / (1.0f - kDielectric) / std::max(1.0f - metallic, 1e-4f);
+  glm::vec3 from_specular =
+      (specular - glm::vec3(kDielectric * (1.0f - metallic))) / std::max(metallic, 1e-4f);
+  glm::vec3 base = glm::mix(from_diffuse, from_specular, metallic * metallic);
+  out.base_color = glm::vec4(glm::clamp(base, 0.0f, 1.0f), diffuse.a);
+  out.metallic = metallic;
+  out.roughness = std::clamp(1.0f - glossiness, 0.0f, 1.0f);
+}
+
+class MaterialConverter {
+ public:
+  MaterialConverter(const aiMaterial& m, bool gltf, TextureLoader& textures)
+      : m_(m), gltf_(gltf), textures_(textures) {}
+
+  Material convert() {
+    aiString name;
+    if (m_.Get(AI_MATKEY_NAME, name) == AI_SUCCESS) out_.name = name.C_Str();
+    colors();
+    gltf_ ? pbr() : classic();
+    if (get_int(m_, AI_MATKEY_TWOSIDED).value_or(0) != 0) out_.cull = CullMode::none;
+    maps();
+    return out_;
+  }
+
+ private:
+  void colors() {
+    auto base = get_color(m_, AI_MATKEY_BASE_COLOR);
+    if (!base) base = get_color(m_, AI_MATKEY_COLOR_DIFFUSE);
+    if (base) out_.base_color = *base;
+    if (auto emissive = get_color(m_, AI_MATKEY_COLOR_EMISSIVE)) {
+      out_.emissive = glm::vec3(*emissive) *
+                      std::max(get_float(m_, AI_MATKEY_EMISSIVE_INTENSITY).value_or(1.0f), 0.0f);
+    }
+  }
+
+  // glTF: alpha is the base color's own alpha (assimp copies it into opacity as well).
+  void pbr() {
+    out_.shading = ShadingModel::pbr;
+    out_.metallic = std::clamp(get_float(m_, AI_MATKEY_METALLIC_FACTOR).value_or(1.0f), 0.f, 1.f);
+    out_.roughness = std::clamp(get_float(m_, AI_MATKEY_ROUGHNESS_FACTOR).value_or(1.f), 0.f, 1.f);
+    if (auto glossiness = get_float(m_, AI_MATKEY_GLOSSINESS_FACTOR)) {
+      glm::vec3 specular =
+          glm::vec3(get_color(m_, AI_MATKEY_COLOR_SPECULAR).value_or(glm::vec4(1)));
+      convert_specular_glossiness(out_.base_color, specular, *glossiness, out_);
+    }
+    aiString mode;
+    if (m_.Get(AI_MATKEY_GLTF_ALPHAMODE, mode) == AI_SUCCESS) {
+      if (std::strcmp(mode.C_Str(), "MASK") == 0) out_.alpha_mode = AlphaMode::mask;
+      if (std::strcmp(mode.C_Str(), "BLEND") == 0) out_.alpha_mode = AlphaMode::blend;
+    }
+    out_.alpha_cutoff = get_float(m_, AI_MATKEY_GLTF_ALPHACUTOFF).value_or(0.5f);
+    if (shading_mode() == aiShadingMode_Unlit) out_.shading = ShadingModel::unlit;
+  }
+
+  void classic() {
+    if (auto opacity = get_float(m_, AI_MATKEY_OPACITY)) {
+      out_.base_color.a = std::clamp(*opacity, 0.0f, 1.0f);
+    }
+    if (out_.base_color.a < 1.0f) out_.alpha_mode = AlphaMode::blend;
+    glm::vec3 specular = glm::vec3(get_color(m_, AI_MATKEY_COLOR_SPECULAR).value_or(glm::vec4(0)));
+    specular *= std::max(get_float(m_, AI_MATKEY_SHININESS_STRENGTH).value_or(1.0f), 0.0f);
+    // assimp: a shininess of 0 means no specular highlight at all.
+    const float shininess = get_float(m_, AI_MATKEY_SHININESS).value_or(out_.shininess);
+    if (std::max({specular.r, specular.g, specular.b}) > 1e-4f && shininess > 0.0f) {
+      out_.shading = ShadingModel::blinn_phong;
+      out_.specular_color = specular;
+      out_.shininess = std::clamp(shininess, 1.0f, 4096.0f);
+    }
+    const int mode = shading_mode();
+    if (mode == aiShadingMode_Flat) out_.shading = ShadingModel::flat;
+    if (mode == aiShadingMode_NoShading) out_.shading = ShadingModel::unlit;
+  }
+
+  int shading_mode() const { return get_int(m_, AI_MATKEY_SHADING_MODEL).value_or(0); }
+
+  void maps() {
+    out_.base_color_map = load(aiTextureType_BASE_COLOR, true);
+    if (!out_.base_color_map) out_.base_color_map = load(aiTextureType_DIFFUSE, true);
+    out_.normal_map = load(aiTextureType_NORMALS, false);
+    out_.normal_scale = get_float(m_, AI_MATKEY_GLTF_TEXTURE_SCALE(aiTextureType_NORMALS, 0))
+                            .value_or(out_.normal_scale);
+    if (!out_.normal_map && !gltf_) {
+      TextureMap bump = load(aiTextureType_HEIGHT, false, /*checker_when_missing=*/false);
+      if (bump && looks_like_normal_map(*bump.texture)) out_.normal_map = bump;
+    }
+    out_.emissive_map = load(aiTextureType_EMISSIVE, true);
+    // glTF multiplies by emissiveFactor as the spec says; an MTL map_Ke without Ke still glows.
+    if (out_.emissive_map && !gltf_ && glm::length(out_.emissive) == 0.0f) {
+      out_.emissive = glm::vec3(1.0f);
+    }
+    if (gltf_) {
+      out_.metallic_roughness_map = load(aiTextureType_UNKNOWN, false);  // glTF's packed map
+    } else {
+      out_.specular_map = load(aiTextureType_SPECULAR, true);
+    }
+    out_.occlusion_map = load(aiTextureType_LIGHTMAP, false);  // glTF occlusion lands here
+    if (!out_.occlusion_map) out_.occlusion_map = load(aiTextureType_AMBIENT_OCCLUSION, false);
+    out_.occlusion_strength =
+        get_float(m_, AI_MATKEY_GLTF_TEXTURE_STRENGTH(aiTextureType_LIGHTMAP, 0))
+            .value_or(out_.occlusion_strength);
+  }
+
+  TextureMap load(aiTextureType type, bool srgb, bool checker_when_missing = true) {
+    TextureMap map;
+    aiString file;
+    if (m_.GetTextureCount(type) == 0 || m_.GetTexture(type, 0, &file) != AI_SUCCESS) return map;
+    map.texture = textures_.load(file.C_Str(), srgb);
+    if (!map.texture && !checker_when_missing) return map;
+    if (!map.texture) map.texture = missing_texture();
+    map.sampler = sampler_for(m_, type);
+    aiUVTransform transform;
+    if (aiGetMaterialUVTransform(&m_, AI_MATKEY_UVTRANSFORM(type, 0), &transform) == AI_SUCCESS) {
+      map.transform = gltf_ ? gltf_uv_matrix(transform) : uv_matrix(transform);
+    }
+    return map;
+  }
+
+  const aiMaterial& m_;
+  bool gltf_;
+  TextureLoader& textures_;
+  Material out_;
+};
+
+}  // namespace
+
+std::vector<Material> import_materials(const aiScene& scene, bool gltf, TextureLoader& textures) {
+  std::vector<Material> materials;
+  for (unsigned i = 0; scene.mMaterials && i < scene.mNumMaterials; ++i) {
+    materials.push_back(scene.mMaterials[i]
+                            ? MaterialConverter(*scene.mMaterials[i], gltf, textures).convert()
+                            : Material{});
+  }
+  if (materials.empty()) materials.emplace_back();  // meshes always have a material to use
+  return materials;
+}
+
+}  // namespace facet::io

@@ -1,0 +1,244 @@
+// Stage: primitive assembly (see primitive.hpp).
+#include "pipeline/geometry/primitive.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+#include "pipeline/geometry/clip.hpp"
+#include "pipeline/geometry/cull_batch.hpp"
+#include "pipeline/setup/setup.hpp"
+#include "pipeline/setup/setup_batch.hpp"
+
+namespace facet::pipeline {
+namespace {
+
+// The frustum's outcode bits of ProjectedVertex::codes.
+constexpr unsigned kFrustumCodes = (1u << kClipPlaneCount) - 1;
+
+struct Assembler {
+  PrimitiveSink& out;
+  PrimitiveCounts& counts;
+  int width, height;
+  std::uint32_t draw_index;
+  const DrawRecord& draw;
+  const DrawVertices& vertices;
+  ClipBounds guard;
+  bool hooks = has_triangle_hooks(draw);
+  // Set-up of the triangles that need no clipping, a run of culling's survivors at a time
+  // (setup_batch.hpp); null: each is set up as it comes.
+  SetupBatchKernel setup_kernel = nullptr;
+
+  bool culls_front = draw.material.cull == CullMode::front;
+  bool culls_back = draw.material.cull == CullMode::back;
+
+  // Face normal in world space from object-space positions.
+  glm::vec3 face_normal(std::uint32_t i0, std::uint32_t i1, std::uint32_t i2) const {
+    const auto& p = draw.mesh->positions;
+    glm::vec3 n = glm::cross(p[i1] - p[i0], p[i2] - p[i0]);
+    n = draw.uniforms.normal_matrix * n;
+    float length = glm::length(n);
+    return length > 0.0f ? n / length : glm::vec3(0.0f);
+  }
+
+  // Centre of the triangle in world space.
+  glm::vec3 centre(std::uint32_t i0, std::uint32_t i1, std::uint32_t i2) const {
+    const auto& p = draw.mesh->positions;
+    return glm::vec3(draw.uniforms.model * glm::vec4((p[i0] + p[i1] + p[i2]) / 3.0f, 1.0f));
+  }
+
+  void edge(const glm::vec4& a, const glm::vec4& b, const glm::vec4& color) {
+    glm::vec4 p = a, q = b;
+    unsigned planes = outcode(p, guard) | outcode(q, guard);
+    if (planes && !clip_segment(p, q, planes, guard)) return;
+    setup_line(out, width, height, p, q, color);
+  }
+
+  // A triangle culling (cull_batch.hpp) kept.
+  struct Accepted {
+    std::uint32_t i0, i1, i2;
+    unsigned codes;  // the three vertices' codes, or-ed
+    bool front_facing;
+  };
+
+  // The planes a triangle whose vertices' codes or-ed are `codes` must be clipped against. Near
+  // and far are the same planes in both bounds; the guard band's sides only need checking when
+  // a vertex is outside the frustum's sides (the guard band contains them).
+  static unsigned clip_planes(unsigned codes) {
+    const unsigned any_out = codes & kFrustumCodes;
+    if (any_out & (kClipLeft | kClipRight | kClipBottom | kClipTop)) {
+      return codes >> kGuardCodeShift & kFrustumCodes;
+    }
+    return any_out & (kClipNear | kClipFar);
+  }
+
+  // Whether a triangle culling accepted goes to the setup kernel: assemble()'s common case,
+  // tested without its call.
+  bool kernel_sets_up(unsigned codes) const {
+    return setup_kernel != nullptr && clip_planes(codes) == 0;
+  }
+
+  // Edges, clipping and setup of a triangle culling accepted that the setup kernel does not
+  // take (kernel_sets_up).
+  void assemble(const Accepted& a) {
+    const std::uint32_t i0 = a.i0, i1 = a.i1, i2 = a.i2;
+    const bool front_facing = a.front_facing;
+    const DrawPipeline& pipe = draw.pipeline;
+    if (pipe.draws_edges) {
+      const ClipVertex* in[3] = {&vertices.clip[i0], &vertices.clip[i1], &vertices.clip[i2]};
+      for (int i = 0; i < 3; ++i)
+        edge(in[i]->clip, in[(i + 1) % 3]->clip, draw.uniforms.wire_color);
+    }
+    if (!pipe.fills_triangles) return;
+
+    const unsigned planes = clip_planes(a.codes);
+    if (planes == 0 && !hooks) {  // set up from the projected vertices (wireframe draws)
+      const ScreenVertex s[3] = {vertices.projected[i0].screen, vertices.projected[i1].screen,
+                                 vertices.projected[i2].screen};
+      const int n = pipe.varyings;
+      const float* over_w[3] = {vertices.over_w.data() + i0 * n, vertices.over_w.data() + i1 * n,
+                                vertices.over_w.data() + i2 * n};
+      if (!setup_projected_triangle(out, width, height, draw_index, s, over_w, n, front_facing))
+        ++counts.culled;
+      return;
+    }
+
+    // The per-triangle hooks and the clipper rewrite vertices: work on copies. (A draw whose
+    // vertex stage skipped the clip vertices has neither: its bounds said no clipping.)
+    assert(vertices.clip_written);
+    const ClipVertex* in[3] = {&vertices.clip[i0], &vertices.clip[i1], &vertices.clip[i2]};
+    ClipPolygon polygon;
+    polygon.count = 3;
+    ClipVertex* v = polygon.vertices;
+    for (int i = 0; i < 3; ++i) v[i] = *in[i];
+    const bool fill_normal = fills_face_normal(draw);
+    const DrawPipeline::FaceFn face = face_hook(draw);
+    if (fill_normal || face) {
+      glm::vec3 n = face_normal(i0, i1, i2);
+      if (fill_normal) {
+        for (int i = 0; i < 3; ++i) {
+          for (int k = 0; k < 3; ++k) v[i].varyings[pipe.normal_slot + k] = n[k];
+        }
+      }
+      if (face) {
+        float* varyings[3] = {v[0].varyings, v[1].varyings, v[2].varyings};
+        face(n, centre(i0, i1, i2), draw.uniforms, varyings);
+      }
+    }
+    if (planes == 0) {
+      const ClipVertex* tri[3] = {&v[0], &v[1], &v[2]};
+      if (!setup_triangle(out, width, height, draw_index, tri, pipe.varyings, front_facing))
+        ++counts.culled;
+      return;
+    }
+    ++counts.clipped;
+    clip_polygon(polygon, planes, guard, pipe.varyings);
+    // Fan re-triangulation of the convex clipped polygon.
+    for (int i = 1; i + 1 < polygon.count; ++i) {
+      const ClipVertex* tri[3] = {&v[0], &v[i], &v[i + 1]};
+      setup_triangle(out, width, height, draw_index, tri, pipe.varyings, front_facing);
+    }
+  }
+
+  // Sets up survivors [first, end), which need no clipping, with the kernel.
+  void set_up_run(const CullSurvivors& survivors, int first, int end) {
+    if (first == end) return;
+    const SetupBatch batch{end - first,
+                           {survivors.i0 + first, survivors.i1 + first, survivors.i2 + first},
+                           survivors.front_facing + first};
+    counts.culled += setup_kernel(batch, {out, width, height, draw_index, vertices.projected.data(),
+                                          vertices.over_w.data(), draw.pipeline.varyings});
+  }
+
+  void line(std::uint32_t i0, std::uint32_t i1) {
+    const unsigned code0 = vertices.projected[i0].codes, code1 = vertices.projected[i1].codes;
+    if (((code0 | code1) & kNotFinite) || (code0 & code1 & kFrustumCodes)) {
+      ++counts.culled;
+      return;
+    }
+    edge(vertices.clip[i0].clip, vertices.clip[i1].clip, draw.uniforms.base_color);
+  }
+};
+
+// The mesh's i-th index (its i-th vertex when it has none).
+std::uint32_t vertex_index(const Mesh& mesh, std::size_t i) {
+  return mesh.indices.empty() ? static_cast<std::uint32_t>(i) : mesh.indices[i];
+}
+
+// Lists the vertex indices of triangles [first, first + count): a list's three a triangle, a
+// strip's with odd triangles' first two vertices swapped so every triangle keeps the strip's
+// winding. Returns where they are (a list with indices is read in place).
+const std::uint32_t* list_triangles(const Mesh& mesh, std::size_t first, int count,
+                                    std::uint32_t* listed) {
+  if (mesh.topology == Topology::triangles && !mesh.indices.empty()) {
+    return mesh.indices.data() + 3 * first;
+  }
+  for (int k = 0; k < count; ++k) {
+    const std::size_t p = first + static_cast<std::size_t>(k);
+    std::uint32_t* t = listed + 3 * k;
+    if (mesh.topology == Topology::triangles) {
+      t[0] = vertex_index(mesh, 3 * p), t[1] = vertex_index(mesh, 3 * p + 1);
+      t[2] = vertex_index(mesh, 3 * p + 2);
+    } else {
+      t[0] = vertex_index(mesh, p % 2 == 0 ? p : p + 1);
+      t[1] = vertex_index(mesh, p % 2 == 0 ? p + 1 : p);
+      t[2] = vertex_index(mesh, p + 2);
+    }
+  }
+  return listed;
+}
+
+// Triangles [begin, end), culled a run at a time, several triangles a vector (cull_batch.hpp),
+// then assembled in order.
+void assemble_triangles(Assembler& assembler, const Mesh& mesh, std::size_t begin,
+                        std::size_t end) {
+  const CullKernel cull = cull_kernel();
+  CullSurvivors survivors;
+  // The setup kernel reads a run's indices a vector at a time, past the run's end.
+  static_assert(CullSurvivors::kRoom >= kCullBatch + kSetupBatchSlack);
+  std::uint32_t listed[3 * kCullBatch];
+  for (std::size_t first = begin; first < end; first += kCullBatch) {
+    const int count = static_cast<int>(std::min<std::size_t>(end - first, kCullBatch));
+    cull({list_triangles(mesh, first, count, listed), count, assembler.vertices.projected.data(),
+          assembler.culls_front, assembler.culls_back},
+         survivors);
+    assembler.counts.culled += static_cast<std::uint64_t>(count - survivors.count);
+    // Runs of survivors that need no clipping go to the setup kernel whole; the others, in
+    // between, one at a time, so the sink keeps submission order.
+    int run = 0;
+    for (int k = 0; k < survivors.count; ++k) {
+      if (assembler.kernel_sets_up(survivors.codes[k])) continue;
+      assembler.set_up_run(survivors, run, k);
+      run = k + 1;
+      assembler.assemble({survivors.i0[k], survivors.i1[k], survivors.i2[k], survivors.codes[k],
+                          survivors.front_facing[k] != 0});
+    }
+    assembler.set_up_run(survivors, run, survivors.count);
+  }
+}
+
+}  // namespace
+
+void assemble_primitives(const Frame& frame, std::uint32_t draw_index, const DrawVertices& vertices,
+                         std::size_t begin, std::size_t end, PrimitiveSink& out,
+                         PrimitiveCounts& counts) {
+  const DrawRecord& draw = frame.draws[draw_index];
+  const Mesh& mesh = *draw.mesh;
+  Assembler assembler{
+      out,        counts, frame.width, frame.height,
+      draw_index, draw,   vertices,    guard_band_bounds(frame.width, frame.height)};
+  if (mesh.topology == Topology::lines) {
+    for (std::size_t p = begin; p < end; ++p) {
+      assembler.line(vertex_index(mesh, 2 * p), vertex_index(mesh, 2 * p + 1));
+    }
+    return;
+  }
+  // Edges come before their triangle's fill, so wireframe draws set up one at a time (and draws
+  // of edges only set up no triangle).
+  if (!assembler.hooks && !draw.pipeline.draws_edges && draw.pipeline.fills_triangles) {
+    assembler.setup_kernel = setup_batch_kernel();
+  }
+  assemble_triangles(assembler, mesh, begin, end);
+}
+
+}  // namespace facet::pipeline

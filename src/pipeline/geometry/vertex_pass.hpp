@@ -1,0 +1,49 @@
+// Stage: vertex transform, the SIMD part. vertex.cpp hands it a run of up to kVertexPass mesh
+// vertices; vertex_pass.cpp (compiled for every SIMD target Highway supports, picked at run
+// time) computes everything about them that needs no shading model, several vertices at a
+// time: clip position, unit world normal, outcodes and screen position. vertex.cpp then calls
+// the shading model per vertex and stores the results.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <glm/glm.hpp>
+
+#include "pipeline/geometry/clip.hpp"
+#include "pipeline/setup/fixed_point.hpp"
+
+namespace facet::pipeline {
+
+inline constexpr std::size_t kVertexPass = 64;
+
+struct VertexPassInput {
+  const glm::vec3* positions;  // the mesh's
+  const glm::vec3* normals;    // the mesh's, or null: the normals are then zero
+  glm::mat4 model_view_projection;
+  glm::mat3 normal_matrix;
+  int width, height;  // of the framebuffer, for to_screen
+  ClipBounds frustum, guard;
+};
+
+// ProjectedVertex::codes bit set by the pass when the lane's screen position is outside what
+// its rounding trick handles (only vertices beyond the guard band, whose screen position setup
+// never reads): vertex.cpp recomputes those with to_screen, so the stored values are the
+// scalar ones whatever the target.
+inline constexpr std::uint32_t kScalarScreen = 1u << 17;
+
+// Results for vertices [first, first + count), structure of arrays indexed by vertex - first.
+// Each value is computed with the scalar code's operations in its order (glm's for the
+// matrices, outcode() and to_screen() for the rest), lane by lane, so it is bit-identical on
+// every target.
+struct VertexPass {
+  alignas(64) float x[kVertexPass], y[kVertexPass], z[kVertexPass], w[kVertexPass];  // clip
+  alignas(64) float nx[kVertexPass], ny[kVertexPass], nz[kVertexPass];  // unit world normal
+  alignas(64) std::int32_t sx[kVertexPass], sy[kVertexPass];            // ScreenVertex
+  alignas(64) float depth[kVertexPass], inv_w[kVertexPass];
+  alignas(64) std::uint32_t codes[kVertexPass];  // as ProjectedVertex::codes (+ kScalarScreen)
+};
+
+void run_vertex_pass(const VertexPassInput& in, std::size_t first, std::size_t count,
+                     VertexPass& out);
+
+}  // namespace facet::pipeline

@@ -1,0 +1,50 @@
+// Stage: output. Clears a tile's local buffers (lazily: the framebuffer is never read) and
+// resolves the finished tile into the framebuffer once, converting to the target format.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "facet/framebuffer.hpp"
+#include "facet/light.hpp"
+#include "pipeline/raster/raster.hpp"
+
+namespace facet::pipeline {
+
+// What a pixel shows where nothing is drawn: the clear color, or the environment (image or
+// sky gradient) seen through that pixel.
+struct Background {
+  glm::vec4 clear_color{0.0f};
+  // The tiles hold display values (draw.cpp's display_referred_frame): clear_color is one
+  // (display_value_of), and resolve_tile rounds instead of encoding.
+  bool display_referred = false;
+  const Environment* environment = nullptr;  // non-null: draw the environment
+  glm::mat4 inverse_view_projection{1.0f};
+  glm::vec3 eye{0.0f};
+  int width = 1, height = 1;  // framebuffer size
+};
+
+// The depth a tile starts at: the far plane.
+inline constexpr float kClearDepth = 1.0f;
+
+// Clears depth to the far plane and color to the clear color, unless color_hidden (the first
+// triangle drawn writes every pixel: occlusion.hpp's hides_clear). An environment background
+// is not drawn here but by fill_background, later, into the pixels nothing covered.
+void clear_tile(TileContext& tile, const Background& background, bool color_hidden);
+// Draws the environment into the pixels whose depth is still the clear depth. Exact once
+// drawing has only run opaque, depth-writing triangles, which write color exactly where they
+// write depth (render_tile calls it before anything else, and at the end): most of the sky
+// behind a scene then costs nothing.
+void fill_background(TileContext& tile, const Background& background);
+// A linear color as the display value a display-referred tile holds for it: its sRGB codes
+// / 255 (alpha is never encoded).
+glm::vec4 display_value_of(const glm::vec4& linear);
+// Writes the tile to the framebuffer; colors are scaled by `scale` (exposure) first. In a
+// display-referred frame (Background::display_referred) the tile holds display values, which
+// an 8-bit target takes as they are, rounded to 8 bits, instead of sRGB-encoded (scale is then
+// 1).
+void resolve_tile(const TileContext& tile, float scale, bool display_referred, Framebuffer& target);
+// A tile with an empty bin under a plain clear color is written straight from it.
+void resolve_cleared_tile(const TileContext& tile, const glm::vec4& color, float scale,
+                          Framebuffer& target);
+
+}  // namespace facet::pipeline

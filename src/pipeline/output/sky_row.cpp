@@ -1,0 +1,123 @@
+// Stage: output, the sky gradient a row at a time (see sky_row.hpp). Highway compiles this file
+// once per SIMD target; HWY_DYNAMIC_DISPATCH picks the best the CPU has. Each step repeats
+// background_radiance's scalar operations in order: glm's mat4 x vec4 is
+// (m0 x + m1 y) + (m2 z + m3 w), normalize is v * (1 / sqrt(dot)), mix is a (1 - t) + b t;
+// no fused multiply-add.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "pipeline/output/sky_row.cpp"
+#include "pipeline/output/sky_row.hpp"
+
+#include <hwy/foreach_target.h>  // must come before highway.h
+#include <hwy/highway.h>
+
+#include "shading/environment.hpp"
+
+HWY_BEFORE_NAMESPACE();
+namespace facet::pipeline::HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+using FloatTag = hn::CappedTag<float, 8>;
+using FloatV = hn::Vec<FloatTag>;
+
+void FillSkyRow(const SkyView& view, const Environment& env, int x0, int y, int count,
+                const float* depth, float clear_depth, glm::vec4* colors) {
+  const FloatTag d;
+  const int lanes = static_cast<int>(hn::Lanes(d));
+  const glm::mat4& m = view.inverse_view_projection;
+  const float width = static_cast<float>(view.width);
+  const float ndc_y =
+      1.0f - (static_cast<float>(y) + 0.5f) / static_cast<float>(view.height) * 2.0f;
+  // The parts of m x (ndc_x, ndc_y, 1, 1) that do not depend on x: m1 ndc_y and m2 + m3.
+  float with_y[4], constant[4];
+  for (int c = 0; c < 4; ++c) {
+    with_y[c] = m[1][c] * ndc_y;
+    constant[c] = m[2][c] * 1.0f + m[3][c] * 1.0f;
+  }
+  const FloatV one = hn::Set(d, 1.0f);
+  auto mix = [&](const glm::vec3& a, const glm::vec3& b, FloatV t, int c) HWY_ATTR {
+    return hn::Add(hn::Mul(hn::Set(d, a[c]), hn::Sub(one, t)), hn::Mul(hn::Set(d, b[c]), t));
+  };
+  alignas(32) float rgb[3][8];
+  // Highway's Iota builds its lanes in memory: once, not in the loop. Whole numbers below 2^24
+  // add exactly, so x0 + i + lane is the same float either way.
+  const FloatV lane = hn::Iota(d, 0.0f);
+  for (int i = 0; i < count; i += lanes) {
+    // Only where something shows the sky: its divisions and square roots are most of a
+    // covered pixel's cost otherwise.
+    bool shows_sky = false, all_sky = false;
+    if (i + lanes <= count) {
+      const auto sky = hn::Eq(hn::LoadU(d, depth + i), hn::Set(d, clear_depth));
+      shows_sky = !hn::AllFalse(d, sky);
+      all_sky = hn::AllTrue(d, sky);
+    } else {
+      for (int k = i; k < count; ++k) shows_sky |= depth[k] == clear_depth;
+    }
+    if (!shows_sky) continue;
+    // ndc_x = (x + 0.5) / width * 2 - 1
+    const FloatV x = hn::Add(lane, hn::Set(d, static_cast<float>(x0 + i)));
+    const FloatV ndc_x = hn::Sub(
+        hn::Mul(hn::Div(hn::Add(x, hn::Set(d, 0.5f)), hn::Set(d, width)), hn::Set(d, 2.0f)), one);
+    FloatV far[4];
+    for (int c = 0; c < 4; ++c) {
+      far[c] = hn::Add(hn::Add(hn::Mul(hn::Set(d, m[0][c]), ndc_x), hn::Set(d, with_y[c])),
+                       hn::Set(d, constant[c]));
+    }
+    FloatV dir[3];
+    for (int c = 0; c < 3; ++c) dir[c] = hn::Sub(hn::Div(far[c], far[3]), hn::Set(d, view.eye[c]));
+    const FloatV length_squared =
+        hn::Add(hn::Add(hn::Mul(dir[0], dir[0]), hn::Mul(dir[1], dir[1])), hn::Mul(dir[2], dir[2]));
+    const FloatV up = hn::Mul(dir[1], hn::Div(one, hn::Sqrt(length_squared)));
+    // The gradient: toward the zenith above the horizon, toward the ground (4x faster) below.
+    // Each lane takes the square root of its own side's argument only: one square root, not
+    // one per side.
+    const auto above = hn::Ge(up, hn::Zero(d));
+    const FloatV below_t = hn::Mul(hn::Neg(up), hn::Set(d, 4.0f));
+    const FloatV t =
+        hn::Sqrt(hn::IfThenElse(above, up, hn::IfThenElse(hn::Lt(one, below_t), one, below_t)));
+    FloatV color[3];
+    for (int c = 0; c < 3; ++c) {
+      color[c] = hn::Mul(hn::IfThenElse(above, mix(env.sky_horizon, env.sky_zenith, t, c),
+                                        mix(env.sky_horizon, env.ground, t, c)),
+                         hn::Set(d, env.intensity));
+    }
+    if (all_sky) {  // most of the sky: whole vectors of it, stored as (r, g, b, 1) colors
+      hn::StoreInterleaved4(color[0], color[1], color[2], one, d, &colors[i].r);
+      continue;
+    }
+    for (int c = 0; c < 3; ++c) hn::Store(color[c], d, rgb[c]);
+    const int active = std::min(lanes, count - i);
+    for (int k = 0; k < active; ++k) {
+      if (depth[i + k] != clear_depth) continue;  // drawn over
+      glm::vec4& out = colors[i + k];
+      out.r = rgb[0][k];
+      out.g = rgb[1][k];
+      out.b = rgb[2][k];
+      out.a = 1.0f;
+    }
+  }
+}
+
+}  // namespace facet::pipeline::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace facet::pipeline {
+
+HWY_EXPORT(FillSkyRow);
+
+glm::vec3 background_radiance(const SkyView& view, const Environment& environment, int x, int y) {
+  const float ndc_x = (static_cast<float>(x) + 0.5f) / static_cast<float>(view.width) * 2.0f - 1.0f;
+  const float ndc_y =
+      1.0f - (static_cast<float>(y) + 0.5f) / static_cast<float>(view.height) * 2.0f;
+  const glm::vec4 far = view.inverse_view_projection * glm::vec4(ndc_x, ndc_y, 1.0f, 1.0f);
+  const glm::vec3 direction = glm::normalize(glm::vec3(far) / far.w - view.eye);
+  return shading::environment_radiance(environment, direction);
+}
+
+void fill_sky_row(const SkyView& view, const Environment& environment, int x0, int y, int count,
+                  const float* depth, float clear_depth, glm::vec4* colors) {
+  HWY_DYNAMIC_DISPATCH(FillSkyRow)(view, environment, x0, y, count, depth, clear_depth, colors);
+}
+
+}  // namespace facet::pipeline
+#endif  // HWY_ONCE

@@ -1,0 +1,132 @@
+// Stage: output, sRGB encoding a row at a time (see srgb_row.hpp). Highway compiles this file
+// once per SIMD target; HWY_DYNAMIC_DISPATCH picks the best the CPU has.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "pipeline/output/srgb_row.cpp"
+#include "pipeline/output/srgb_row.hpp"
+
+#include <hwy/foreach_target.h>  // must come before highway.h
+#include <hwy/highway.h>
+
+#include <algorithm>
+
+#include "core/color.hpp"
+
+HWY_BEFORE_NAMESPACE();
+namespace facet::pipeline::HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+using FloatTag = hn::ScalableTag<float>;
+using IntTag = hn::RebindToSigned<FloatTag>;
+
+// Colors per step: the SIMD passes fill and read arrays for this many, the lookups between.
+constexpr int kChunk = 64;
+
+void EncodeSrgbRow(const glm::vec4* colors, int count, float scale, std::uint8_t* rgba) {
+  const FloatTag df;
+  const IntTag di;
+  const hn::RebindToUnsigned<IntTag> du;
+  const hn::Rebind<std::uint8_t, FloatTag> du8;
+  const int lanes = static_cast<int>(hn::Lanes(df));
+  using Tables = shading::SrgbTables;
+  const Tables& tables = shading::srgb_tables();
+  // Each channel's factor, (scale, scale, scale, 1) over and over: the exposure scales red,
+  // green and blue, not alpha. A vector starting at float j reads it from j % 4 on, which
+  // covers targets with fewer than four lanes.
+  alignas(64) float factor[kChunk + 4];
+  for (int j = 0; j < kChunk + 4; ++j) factor[j] = j % 4 == 3 ? 1.0f : scale;
+  // Per channel: the bits of its value clamped to [0, 1] (NaN to 0) above those of the first
+  // run (color.hpp; 0 below it), and its run. Per color channel, the run's entry; per alpha
+  // channel, its 8-bit rounding (shading::encode_unorm8).
+  alignas(64) std::int32_t above[4 * kChunk];
+  alignas(64) std::int32_t run[4 * kChunk];
+  alignas(64) std::int32_t entry[4 * kChunk];
+  const auto zero = hn::Zero(df), one = hn::Set(df, 1.0f);
+  const auto run_base = hn::Set(di, static_cast<std::int32_t>(Tables::kRunBase));
+  const auto codes = hn::Set(df, 255.0f), half = hn::Set(df, 0.5f);
+  const auto three = hn::Set(di, 3);
+  const auto run_mask = hn::Set(di, static_cast<std::int32_t>(Tables::kRunMask));
+  const auto offset_mask = hn::Set(di, static_cast<std::int32_t>(Tables::kRunOffsetMask));
+  for (int first = 0; first < count; first += kChunk) {
+    const int floats = 4 * std::min(kChunk, count - first);
+    // The floats of whole vectors, a whole number of colors (lanes are 1, 2 or a multiple of
+    // 4); the colors past them are encoded one channel at a time at the end.
+    const int whole = floats - floats % lanes;
+    const float* in = &colors[first].x;
+    std::uint8_t* out = rgba + 4 * static_cast<std::ptrdiff_t>(first);
+    // 1. Clamp; the run; alpha's code.
+    for (int j = 0; j < whole; j += lanes) {
+      const auto x = hn::Mul(hn::LoadU(df, in + j), hn::LoadU(df, factor + (j & 3)));
+      const auto c = hn::Min(hn::IfThenElseZero(hn::Gt(x, zero), x), one);
+      const auto bits_above = hn::Max(hn::Sub(hn::BitCast(di, c), run_base), hn::Zero(di));
+      hn::Store(bits_above, di, above + j);
+      hn::Store(hn::ShiftRight<Tables::kRunBits>(bits_above), di, run + j);
+      // A multiplication then an addition, not fused: unorm8_of_unit exactly.
+      hn::Store(hn::ConvertTo(di, hn::Add(hn::Mul(c, codes), half)), di, entry + j);
+    }
+    // 2. The color channels' runs looked up, one at a time (gathers were slower than scalar
+    // loads on every CPU tried).
+    for (int k = 0; k < whole; k += 4) {
+      entry[k] = static_cast<std::int32_t>(tables.run_code[run[k]]);
+      entry[k + 1] = static_cast<std::int32_t>(tables.run_code[run[k + 1]]);
+      entry[k + 2] = static_cast<std::int32_t>(tables.run_code[run[k + 2]]);
+    }
+    // 3. A color's code: the run's first, or the next from its offset in the run on.
+    for (int j = 0; j < whole; j += lanes) {
+      const auto e = hn::Load(di, entry + j);
+      const auto offset = hn::And(hn::Load(di, above + j), run_mask);
+      const auto next = hn::Not(hn::Lt(offset, hn::And(e, offset_mask)));
+      // The mask as a vector is -1 where the next code has begun.
+      const auto code =
+          hn::Sub(hn::ShiftRight<Tables::kRunCodeShift>(e), hn::VecFromMask(di, next));
+      // Alpha's lanes: j % 4 == 3, counted from j & 3 on (vectors of one or two lanes).
+      const auto alpha = hn::Eq(hn::And(hn::Iota(di, j & 3), three), three);
+      const auto byte = hn::IfThenElse(alpha, e, code);
+      hn::StoreU(hn::TruncateTo(du8, hn::BitCast(du, byte)), du8, out + j);
+    }
+    for (int j = whole; j < floats; ++j) {  // the same codes, by the scalar encoders
+      out[j] =
+          j % 4 == 3 ? shading::encode_unorm8(in[j]) : shading::encode_srgb8(tables, in[j] * scale);
+    }
+  }
+}
+
+// Every channel as EncodeSrgbRow rounds alpha (shading::encode_unorm8), lane by lane.
+void RoundUnorm8Row(const glm::vec4* colors, int count, std::uint8_t* rgba) {
+  const FloatTag df;
+  const IntTag di;
+  const hn::Rebind<std::uint8_t, FloatTag> du8;
+  const int lanes = static_cast<int>(hn::Lanes(df));
+  const auto zero = hn::Zero(df), one = hn::Set(df, 1.0f);
+  const auto codes = hn::Set(df, 255.0f), half = hn::Set(df, 0.5f);
+  const float* in = &colors[0].x;
+  const int floats = 4 * count;
+  int j = 0;
+  for (; j + lanes <= floats; j += lanes) {
+    const auto x = hn::LoadU(df, in + j);
+    const auto c = hn::Min(hn::IfThenElseZero(hn::Gt(x, zero), x), one);
+    // A multiplication then an addition, not fused: the scalar rounding exactly.
+    const auto code = hn::ConvertTo(di, hn::Add(hn::Mul(c, codes), half));
+    hn::StoreU(hn::DemoteTo(du8, code), du8, rgba + j);
+  }
+  for (; j < floats; ++j) rgba[j] = shading::encode_unorm8(in[j]);
+}
+
+}  // namespace facet::pipeline::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace facet::pipeline {
+
+HWY_EXPORT(EncodeSrgbRow);
+HWY_EXPORT(RoundUnorm8Row);
+
+void encode_srgb_row(const glm::vec4* colors, int count, float scale, std::uint8_t* rgba) {
+  HWY_DYNAMIC_DISPATCH(EncodeSrgbRow)(colors, count, scale, rgba);
+}
+
+void round_unorm8_row(const glm::vec4* colors, int count, std::uint8_t* rgba) {
+  HWY_DYNAMIC_DISPATCH(RoundUnorm8Row)(colors, count, rgba);
+}
+
+}  // namespace facet::pipeline
+#endif  // HWY_ONCE

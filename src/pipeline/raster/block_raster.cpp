@@ -1,0 +1,218 @@
+// Stage: raster, the SIMD part (see block_raster.hpp). Highway compiles this file once per SIMD
+// target (foreach_target.h re-includes it) and HWY_DYNAMIC_DISPATCH picks the best target the
+// CPU has at the first call; tests force each target in turn and expect identical images.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "pipeline/raster/block_raster.cpp"
+#include "pipeline/raster/block_raster.hpp"
+
+#include <hwy/foreach_target.h>  // must come before highway.h
+#include <hwy/highway.h>
+
+#include <algorithm>
+
+#include "pipeline/chosen_target.hpp"
+#include "pipeline/setup/fixed_point.hpp"
+#include "pipeline/setup/setup.hpp"
+
+HWY_BEFORE_NAMESPACE();
+namespace facet::pipeline::HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+// A block row is 8 pixels: one vector on AVX2 and AVX-512 (which then uses 256-bit vectors),
+// two on SSE4 and on EMU128 (Highway's portable fallback, plain C++ on four-lane arrays).
+using FloatTag = hn::CappedTag<float, kBlockSize>;
+using IntTag = hn::RebindToSigned<FloatTag>;
+
+void CoverBlock(const BlockInput& in, BlockFragments& out) {
+  const FloatTag df;
+  const IntTag di;
+  const int lanes = static_cast<int>(hn::Lanes(df));
+  const SetupTriangle& t = *in.triangle;
+  const auto zero = hn::Zero(di);
+  const auto x_begin = hn::Set(di, in.x_begin), x_end = hn::Set(di, in.x_end);
+  float varying_rows[kMaxVaryings];
+  std::uint64_t mask = 0;
+  for (int y = in.y_begin; y < in.y_end; ++y) {
+    // Per-row plane values, exactly as evaluate_row() computes them for the scalar path; only
+    // once a pixel of the row is covered (depth), and passes the depth test (the others): in a
+    // partly covered block, many rows have none.
+    const float py = in.py0 + static_cast<float>(y);
+    bool have_z_row = false, have_rows = false;
+    float z_row = 0.0f, inv_w_row = 0.0f;
+    const float* depth_row = in.depth + static_cast<std::ptrdiff_t>(y) * in.depth_stride;
+    for (int x = 0; x < kBlockSize; x += lanes) {
+      const auto column = hn::Iota(di, x);
+      // Outside some edge when any of the three is negative: test the sign of their OR.
+      auto edges = hn::Set(di, 0);
+      for (int i = 0; i < 3; ++i) {
+        const auto e =
+            hn::Add(hn::Set(di, in.e[i] + in.b[i] * y), hn::Mul(hn::Set(di, in.a[i]), column));
+        edges = hn::Or(edges, e);
+      }
+      const auto inside = hn::AndNot(
+          hn::Lt(edges, zero), hn::And(hn::Not(hn::Lt(column, x_begin)), hn::Lt(column, x_end)));
+      auto pass = hn::RebindMask(df, inside);
+      if (hn::AllFalse(df, pass)) continue;
+      if (!have_z_row) z_row = evaluate_row(t.z, t.ref_y, py), have_z_row = true;
+      const int lane0 = y * kBlockSize + x;
+      // (px - ref_x), then plane = row + dx * (px - ref_x): evaluate_in_row() lane by lane.
+      const auto relative_x =
+          hn::Sub(hn::Iota(df, in.px0 + static_cast<float>(x)), hn::Set(df, t.ref_x));
+      const auto z = hn::Add(hn::Set(df, z_row), hn::Mul(hn::Set(df, t.z.dx), relative_x));
+      if (in.depth_test) {
+        pass = hn::And(pass, hn::Lt(z, hn::LoadU(df, depth_row + x)));  // NaN fails
+        if (hn::AllFalse(df, pass)) continue;
+      }
+      if (!in.interpolate) {
+        std::uint8_t bits = 0;
+        hn::StoreMaskBits(df, pass, &bits);
+        mask |= static_cast<std::uint64_t>(bits) << lane0;
+        hn::Store(z, df, out.z + lane0);
+        continue;
+      }
+      if (!have_rows) {
+        inv_w_row = evaluate_row(t.inv_w, t.ref_y, py);
+        for (int k = 0; k < in.varyings; ++k) {
+          varying_rows[k] = evaluate_row(in.varying_planes[k], t.ref_y, py);
+        }
+        have_rows = true;
+      }
+      std::uint8_t bits = 0;
+      hn::StoreMaskBits(df, pass, &bits);
+      mask |= static_cast<std::uint64_t>(bits) << lane0;
+      hn::Store(z, df, out.z + lane0);
+      const auto inv_w =
+          hn::Add(hn::Set(df, inv_w_row), hn::Mul(hn::Set(df, t.inv_w.dx), relative_x));
+      const auto w = hn::Div(hn::Set(df, 1.0f), inv_w);
+      hn::Store(w, df, out.w + lane0);
+      for (int k = 0; k < in.varyings; ++k) {
+        const auto v_over_w = hn::Add(hn::Set(df, varying_rows[k]),
+                                      hn::Mul(hn::Set(df, in.varying_planes[k].dx), relative_x));
+        hn::Store(hn::Mul(v_over_w, w), df, out.v[k] + lane0);
+      }
+    }
+  }
+  out.mask = mask;
+}
+
+void InterpolatePixels(const SetupTriangle& t, const Plane* planes, int varyings, int first,
+                       int count, const std::int16_t* xs, const std::int16_t* ys, float* z,
+                       float* w, float (*v)[kBlockPixels]) {
+  const FloatTag df;
+  const IntTag di;
+  const hn::Rebind<std::int16_t, FloatTag> d16;
+  const int lanes = static_cast<int>(hn::Lanes(df));
+  const auto half = hn::Set(df, 0.5f);
+  for (int j = first; j < first + count; j += lanes) {
+    // (p - ref) of the pixel centres, as evaluate_row / evaluate_in_row take them.
+    const auto px = hn::Add(hn::ConvertTo(df, hn::PromoteTo(di, hn::LoadU(d16, xs + j))), half);
+    const auto py = hn::Add(hn::ConvertTo(df, hn::PromoteTo(di, hn::LoadU(d16, ys + j))), half);
+    const auto relative_x = hn::Sub(px, hn::Set(df, t.ref_x));
+    const auto relative_y = hn::Sub(py, hn::Set(df, t.ref_y));
+    auto evaluate = [&](const Plane& p) HWY_ATTR {
+      const auto row = hn::Add(hn::Set(df, p.at_ref), hn::Mul(hn::Set(df, p.dy), relative_y));
+      return hn::Add(row, hn::Mul(hn::Set(df, p.dx), relative_x));
+    };
+    hn::StoreU(evaluate(t.z), df, z + j);
+    const auto clip_w = hn::Div(hn::Set(df, 1.0f), evaluate(t.inv_w));
+    hn::StoreU(clip_w, df, w + j);
+    for (int k = 0; k < varyings; ++k)
+      hn::StoreU(hn::Mul(evaluate(planes[k]), clip_w), df, v[k] + j);
+  }
+}
+
+// FindBoxPixels' rows, vectors of DF's lanes at a time; e_first: the edges at the box's first
+// pixel, as FindBoxPixels says.
+template <class DF>
+HWY_INLINE int FindBoxRows(DF df, const SetupTriangle& t, const std::int32_t e_first[3], int x0,
+                           int y0, int width, int height, const float* depth, int depth_stride,
+                           bool depth_test, std::int16_t* xs, std::int16_t* ys) {
+  const hn::RebindToSigned<DF> di;
+  const hn::Rebind<std::int16_t, DF> d16;
+  const int lanes = static_cast<int>(hn::Lanes(df));
+  alignas(64) static constexpr std::int32_t kLanes[16] = {0, 1, 2,  3,  4,  5,  6,  7,
+                                                          8, 9, 10, 11, 12, 13, 14, 15};
+  const auto half = hn::Set(df, 0.5f);
+  int count = 0;
+  // A box row at a time (a vector holds it but for boxes wider than a vector, which split into
+  // vectors of columns).
+  for (int x = 0; x < width; x += lanes) {
+    const auto column = hn::Add(hn::Load(di, kLanes), hn::Set(di, x));
+    const auto in_box = hn::Lt(column, hn::Set(di, width));
+    hn::Vec<decltype(di)> along_row[3];
+    for (int i = 0; i < 3; ++i) along_row[i] = hn::Mul(hn::Set(di, t.a[i]), column);
+    const auto frame_x = hn::Add(column, hn::Set(di, x0));
+    // evaluate_in_row's dx * (px - ref_x), the same for every row.
+    const auto z_along_row =
+        hn::Mul(hn::Set(df, t.z.dx),
+                hn::Sub(hn::Add(hn::ConvertTo(df, frame_x), half), hn::Set(df, t.ref_x)));
+    std::int32_t e[3] = {e_first[0], e_first[1], e_first[2]};
+    for (int row = 0; row < height; ++row) {
+      auto edges = hn::Zero(di);
+      for (int i = 0; i < 3; ++i) edges = hn::Or(edges, hn::Add(hn::Set(di, e[i]), along_row[i]));
+      for (int i = 0; i < 3; ++i) e[i] += t.b[i];
+      // No branches on the masks: whether a row of a small triangle's box is covered, and
+      // passes the depth test, is as good as random to the branch predictor.
+      auto pass = hn::RebindMask(df, hn::AndNot(hn::Lt(edges, hn::Zero(di)), in_box));
+      const int y = y0 + row;
+      const float z_row = evaluate_row(t.z, t.ref_y, static_cast<float>(y) + 0.5f);
+      const auto z = hn::Add(hn::Set(df, z_row), z_along_row);
+      if (depth_test) {
+        const float* depth_row = depth + static_cast<std::ptrdiff_t>(row) * depth_stride + x;
+        pass = hn::And(pass, hn::Lt(z, hn::LoadU(df, depth_row)));  // NaN fails
+      }
+      const auto n = hn::CountTrue(df, pass);
+      hn::StoreU(hn::DemoteTo(d16, hn::Compress(frame_x, hn::RebindMask(di, pass))), d16,
+                 xs + count);
+      hn::StoreU(hn::Set(d16, static_cast<std::int16_t>(y)), d16, ys + count);
+      count += static_cast<int>(n);
+    }
+  }
+  return count;
+}
+
+int FindBoxPixels(const SetupTriangle& t, int x0, int y0, int width, int height, const float* depth,
+                  int depth_stride, bool depth_test, std::int16_t* xs, std::int16_t* ys) {
+  // Edge i at box pixel (dx, dy) is e[i] + a*dx + b*dy, as for blocks (block_raster.hpp): E
+  // at the box's first pixel centre over 256, floored. With |a|, |b| <= 2^23 and dx, dy <= 63,
+  // a*dx and b*dy stay within 2^29, so e clamped to +-2^30 keeps every sign and 32 bits hold
+  // the sums, even for a big triangle whose box in the tile is small. (Lanes past the box's
+  // width may wrap around; in_box drops them.)
+  constexpr std::int64_t kClamp = std::int64_t{1} << 30;
+  std::int32_t e_first[3];
+  for (int i = 0; i < 3; ++i) {
+    e_first[i] = static_cast<std::int32_t>(
+        std::clamp(edge_at_centre(t, i, x0, y0) >> kSubpixelBits, -kClamp, kClamp));  // floor
+  }
+  // Rows of eight pixels at most in vectors of eight, wider ones in vectors of up to sixteen.
+  if (width > kBlockSize) {
+    return FindBoxRows(hn::CappedTag<float, 16>(), t, e_first, x0, y0, width, height, depth,
+                       depth_stride, depth_test, xs, ys);
+  }
+  return FindBoxRows(FloatTag(), t, e_first, x0, y0, width, height, depth, depth_stride, depth_test,
+                     xs, ys);
+}
+
+const char* TargetName() { return hwy::TargetName(HWY_TARGET); }
+
+}  // namespace facet::pipeline::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace facet::pipeline {
+
+HWY_EXPORT(CoverBlock);
+HWY_EXPORT(TargetName);
+HWY_EXPORT(InterpolatePixels);
+HWY_EXPORT(FindBoxPixels);
+
+const char* simd_target_name() { return HWY_DYNAMIC_DISPATCH(TargetName)(); }
+
+RasterKernels raster_kernels() {
+  const std::size_t index = chosen_target_index();
+  return {HWY_DISPATCH_TABLE(CoverBlock)[index], HWY_DISPATCH_TABLE(InterpolatePixels)[index],
+          HWY_DISPATCH_TABLE(FindBoxPixels)[index]};
+}
+
+}  // namespace facet::pipeline
+#endif  // HWY_ONCE

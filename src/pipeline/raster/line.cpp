@@ -1,0 +1,67 @@
+// Stage: line raster. Reads segments from the tile's bin (set up in setup.cpp) and writes
+// the tile's color and depth, like raster.hpp does for triangles.
+//
+// Fill rule for lines: walk the major axis. A segment covers, in each pixel column (x-major)
+// or row (y-major) whose centre lies in the half-open span [start, end), the one pixel that
+// contains the segment's point at that centre. The end is excluded, so a polyline's shared
+// vertex is drawn once and segments never double a pixel. Everything is integer (fixed
+// point), so a pixel's coverage does not depend on which tile evaluates it.
+#include <algorithm>
+#include <cstdlib>
+
+#include "pipeline/raster/raster.hpp"
+
+namespace facet::pipeline {
+namespace {
+
+// Lines pass the depth test against the surface they outline: their depth is interpolated
+// differently from the triangle's plane, so equality needs a little slack.
+constexpr float kLineDepthBias = 2e-5f;
+
+struct Walk {
+  std::int64_t start, end;  // major-axis coordinates (fixed point)
+  std::int64_t minor_start, minor_delta;
+};
+
+// Visits every major-axis pixel p in [lo, hi] whose centre lies in [start, end) (in the walk
+// direction) and the minor-axis pixel holding the segment there.
+template <class Visit>
+void walk(const Walk& w, int lo, int hi, Visit&& visit) {
+  std::int64_t delta = w.end - w.start;
+  for (int p = lo; p <= hi; ++p) {
+    std::int64_t c = pixel_centre(p);
+    bool inside = delta > 0 ? (c >= w.start && c < w.end) : (c <= w.start && c > w.end);
+    if (!inside) continue;
+    // minor = minor_start + (c - start) * minor_delta / delta, floored; delta made positive.
+    std::int64_t num = (c - w.start) * w.minor_delta, den = delta;
+    if (den < 0) num = -num, den = -den;
+    std::int64_t minor = w.minor_start + floor_div(num, den);
+    float t = static_cast<float>(c - w.start) / static_cast<float>(delta);
+    visit(p, static_cast<int>(floor_div(minor, kSubpixelScale)), t);
+  }
+}
+
+}  // namespace
+
+void raster_line(TileContext& tile, const SetupLine& l) {
+  std::int64_t dx = std::int64_t{l.x1} - l.x0, dy = std::int64_t{l.y1} - l.y0;
+  bool x_major = std::llabs(dx) >= std::llabs(dy);
+  auto plot = [&](int x, int y, float t) {
+    if (x < tile.x0 || x >= tile.x1 || y < tile.y0 || y >= tile.y1) return;
+    float z = l.z0 + (l.z1 - l.z0) * t;
+    std::size_t i = static_cast<std::size_t>(y - tile.y0) * tile.stride + (x - tile.x0);
+    if (!(z <= tile.depth[i] + kLineDepthBias)) return;
+    tile.color[i] = l.color;
+    tile.depth[i] = std::min(z, tile.depth[i]);
+    ++tile.pixels_shaded;
+  };
+  if (x_major) {
+    walk({l.x0, l.x1, l.y0, dy}, std::max(l.min_x, tile.x0), std::min(l.max_x, tile.x1 - 1),
+         [&](int x, int y, float t) { plot(x, y, t); });
+  } else {
+    walk({l.y0, l.y1, l.x0, dx}, std::max(l.min_y, tile.y0), std::min(l.max_y, tile.y1 - 1),
+         [&](int y, int x, float t) { plot(x, y, t); });
+  }
+}
+
+}  // namespace facet::pipeline

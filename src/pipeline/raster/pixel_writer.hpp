@@ -1,0 +1,381 @@
+// Stage: raster + shade, the part every raster path shares: the tile being rendered
+// (TileContext, written by raster.hpp's loops, resolved by output.cpp), covered pixels packed
+// for shading (PackedPixels), and PixelWriter, which shades them with the draw's model (a batch
+// at a time with SIMD where the model allows) and writes them with the draw's blending.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <glm/vec4.hpp>
+#include <limits>
+#include <type_traits>
+#include <variant>
+
+#include "pipeline/frame.hpp"
+#include "pipeline/raster/block_raster.hpp"
+#include "pipeline/setup/fixed_point.hpp"
+#include "shading/fog.hpp"
+#include "shading/fragment.hpp"
+#include "shading/shade_batch.hpp"
+#include "shading/texel_batch.hpp"
+
+namespace facet::pipeline {
+
+// Largest tile edge the renderer accepts (RenderSettings::tile_size).
+inline constexpr int kMaxTileSize = 128;
+inline constexpr int kMaxTileBlocks = (kMaxTileSize / kBlockSize) * (kMaxTileSize / kBlockSize);
+
+struct WaitingPixels;
+
+// One tile being rendered: owned by one task for the whole frame, so nothing here is shared.
+struct TileContext {
+  const Frame* frame = nullptr;
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // pixel rectangle [x0, x1) x [y0, y1)
+  int stride = 0;                      // pixels per row of the tile buffers
+  glm::vec4* color = nullptr;          // linear RGBA
+  float* depth = nullptr;              // kDepthSlack more floats readable after the last row's
+  // Per 8x8 block (row-major, blocks_x per row): no depth in the block is larger. Starts at the
+  // clear depth; lowered when a triangle writes a whole block (raster_triangle).
+  float* block_max_depth = nullptr;
+  int blocks_x = 0;
+  // Per block, the index of the first triangle that can change it, counted from the first
+  // bin entry drawn (occlusion.hpp's first_visible_entries_per_block), or null: every one can.
+  // `entry` is the index of the triangle being drawn, counted the same way.
+  const std::uint32_t* block_starts = nullptr;
+  std::uint32_t entry = 0;
+  std::uint64_t pixels_shaded = 0;
+  // Pixels of small triangles waiting to be shaded together (WaitingPixels): the tile task's
+  // own (draw.cpp's render_tile sets it before the first triangle).
+  WaitingPixels* waiting = nullptr;
+  RasterKernels kernels = raster_kernels();  // the SIMD kernels, for the target chosen now
+};
+
+// Shading models may opt out of the depth test (debug counters) and blend additively.
+template <class Shading>
+constexpr bool depth_tested() {
+  if constexpr (requires { Shading::kDepthTest; }) return Shading::kDepthTest;
+  return true;
+}
+template <class Shading>
+constexpr bool additive() {
+  if constexpr (requires { Shading::kAdditive; }) return Shading::kAdditive;
+  return false;
+}
+
+// Models whose fragment() returns display values (shading/models.hpp's DisplayReferred).
+template <class Shading>
+constexpr bool display_referred() {
+  if constexpr (requires { Shading::kDisplayReferred; }) return Shading::kDisplayReferred;
+  return false;
+}
+
+// Models with kEdgeOverlay draw the triangle's edges over their shading: pixels closer to an
+// edge than kOverlayHalfWidth pixels take the draw's wire color. Measured from the edge
+// functions, so the edges sit exactly on the surface: no depth fighting with the fill.
+template <class Shading>
+constexpr bool edge_overlay() {
+  if constexpr (requires { Shading::kEdgeOverlay; }) return Shading::kEdgeOverlay;
+  return false;
+}
+inline constexpr float kOverlayHalfWidth = 0.5f;
+
+// The varying slot of the texture coordinate a model reads its base color map at (through
+// shading::base_color_texel), or -1: such models have the map sampled ahead, a batch of pixels
+// at a time (shading/texel_batch.hpp).
+template <class Shading>
+constexpr int base_color_texcoord() {
+  if constexpr (requires { Shading::kBaseColorTexcoord; }) return Shading::kBaseColorTexcoord;
+  return -1;
+}
+
+// Models with fragment_batch are shaded a batch of pixels at a time with SIMD when their
+// batch_shades accepts the draw (shading/shade_batch.hpp).
+template <class Shading>
+constexpr bool batch_shaded() {
+  return requires { &Shading::fragment_batch; };
+}
+
+// Covered pixels that passed the depth test, packed, waiting to be shaded: a block's, a small
+// triangle's or several small triangles' of one draw (WaitingPixels) at most.
+struct PackedPixels {
+  static constexpr int kCapacity = kBlockPixels;
+  int count = 0;
+  // Positions have room for as many again: a small triangle's pixels may be found past a full
+  // batch before they move to the front of the next (WaitingPixels); and for the whole vectors
+  // the search stores past the last it finds. Depths, like w, come from interpolate_pixels.
+  std::int16_t x[2 * kCapacity + kBoxSearchSlack], y[2 * kCapacity + kBoxSearchSlack];
+  alignas(64) float z[kCapacity];
+  alignas(64) float w[kCapacity];
+  alignas(64) float v[kMaxVaryings][kCapacity];
+
+  // Zeroes the entries from count up to the next multiple of 8 (position, depth, w and the
+  // first `varyings` varyings), which the SIMD code reads (and ignores).
+  void pad(int varyings) {
+    for (int n = count; n % 8 != 0; ++n) {
+      x[n] = y[n] = 0;
+      z[n] = w[n] = 0.0f;
+      for (int k = 0; k < varyings; ++k) v[k][n] = 0.0f;
+    }
+  }
+};
+static_assert(PackedPixels::kCapacity == shading::kTexelBatch &&
+              PackedPixels::kCapacity == shading::kShadeBatch);
+
+// 1 / |(a, b)| of each edge, in pixels: E_i times it is the distance to edge i in pixels (E is
+// in fixed-point units, hence the sub-pixel scale). Only the wire overlay view needs them, so
+// setup does not pay for the square roots; PixelWriter computes them once per triangle.
+struct EdgeScales {
+  double per_unit[3];
+  explicit EdgeScales(const SetupTriangle& t) {
+    for (int i = 0; i < 3; ++i) {
+      const double length = std::sqrt(double(t.a[i]) * t.a[i] + double(t.b[i]) * t.b[i]);
+      per_unit[i] = 1.0 / (length * kSubpixelScale);
+    }
+  }
+};
+
+// Distance in pixels from pixel (x, y)'s centre to the triangle's nearest edge (inside: >= 0).
+inline float distance_to_edges(const SetupTriangle& t, const EdgeScales& scales, int x, int y) {
+  double distance = std::numeric_limits<double>::max();
+  for (int i = 0; i < 3; ++i) {
+    const auto e = static_cast<double>(edge_at_centre(t, i, x, y));
+    distance = std::min(distance, e * scales.per_unit[i]);
+  }
+  return static_cast<float>(distance);
+}
+
+// Writes one shaded color into the tile with the draw's blending.
+template <class Shading, AlphaMode kAlpha>
+void blend_into(glm::vec4& out, const glm::vec4& color) {
+  if constexpr (additive<Shading>()) {
+    out += color;
+  } else if constexpr (kAlpha == AlphaMode::blend) {  // "over", straight alpha
+    out = glm::vec4(glm::vec3(color) * color.a + glm::vec3(out) * (1.0f - color.a),
+                    color.a + out.a * (1.0f - color.a));
+  } else if constexpr (kAlpha == AlphaMode::additive) {
+    out += glm::vec4(glm::vec3(color) * color.a, 0.0f);
+  } else {
+    // Channel by channel: GCC assembles `color` in memory from 4- and 8-byte pieces, and a
+    // 16-byte copy reloading them stalled store forwarding (a third of the normals view's
+    // raster loop).
+    out.r = color.r;
+    out.g = color.g;
+    out.b = color.b;
+    out.a = color.a;
+  }
+}
+
+// Fewer packed pixels than this are shaded one at a time with fragment() even when the model
+// has a batch form: the batch call's fixed cost outweighs its SIMD for them (bunny-far, the
+// normals view of tiny triangles, 8 % faster with 4 than with 1; 8 made islands 3.5 % slower).
+inline constexpr int kMinBatch = 4;
+
+// Shades one covered pixel that passed the depth test and writes it with the draw's blending:
+// the part of the raster loop that is the same for every path (raster.hpp, small_triangles.hpp).
+template <class Shading, AlphaMode kAlpha>
+class PixelWriter {
+  static auto make_edge_scales(const SetupTriangle& t) {
+    if constexpr (edge_overlay<Shading>()) {
+      return EdgeScales(t);
+    } else {
+      return std::monostate{};
+    }
+  }
+
+ public:
+  // Blended draws test depth but do not write it (they are sorted back to front instead).
+  static constexpr bool kDepthWrite =
+      depth_tested<Shading>() && (kAlpha == AlphaMode::opaque || kAlpha == AlphaMode::mask);
+
+  PixelWriter(TileContext& tile, const SetupTriangle& t)
+      : PixelWriter(tile, t.draw, &t, make_edge_scales(t)) {
+    fragment.planes = tile.frame->planes.data() + t.varying_planes;
+    fragment.inv_w = &t.inv_w;
+  }
+
+  // For the pixels of several triangles of draw `draw` (shade_waiting()).
+  PixelWriter(TileContext& tile, std::uint32_t draw) : PixelWriter(tile, draw, nullptr, {}) {}
+
+  // Shades the packed pixels and writes them; returns how many were written (the alpha test
+  // may discard some). The base color map is sampled for all of them at once, and models
+  // with a batch form are shaded all at once (from kMinBatch pixels on), both with SIMD.
+  int shade(PackedPixels& pixels) {
+    if (pixels.count == 0) return 0;
+    if (batches()) pixels.pad(Shading::kVaryings);
+    const Texels texels = sample_base_map(pixels.count, pixels.v, pixels.w);
+    int written = 0;
+    if constexpr (batch_shaded<Shading>()) {
+      if (batch_ && pixels.count >= kMinBatch) {
+        alignas(64) float colors[PackedPixels::kCapacity][4];
+        Shading::fragment_batch(uniforms_, {pixels.count, pixels.w, pixels.v, texels, batch_fog()},
+                                colors);
+        for (int n = 0; n < pixels.count; ++n) {
+          const float* c = colors[n];
+          written += store<kBatchFogs>(pixels.x[n], pixels.y[n], pixels.z[n], pixels.w[n],
+                                       glm::vec4(c[0], c[1], c[2], c[3]));
+        }
+        return written;
+      }
+    }
+    for (int n = 0; n < pixels.count; ++n) {
+      fragment.w = pixels.w[n];
+      for (int k = 0; k < Shading::kVaryings; ++k) fragment.v[k] = pixels.v[k][n];
+      if (texels != nullptr) {
+        fragment.base_texel = {texels[n][0], texels[n][1], texels[n][2], texels[n][3]};
+        fragment.base_texel_ready = true;
+      }
+      written += write(pixels.x[n], pixels.y[n], pixels.z[n]);
+    }
+    return written;
+  }
+
+  // Whether shade_full_block() can take this draw's blocks: opaque, depth-writing, batch-
+  // shaded, no wire overlay (all known here but the draw's lights and material:
+  // DrawRecord::batch_shaded).
+  static constexpr bool kFullBlocks = batch_shaded<Shading>() && kAlpha == AlphaMode::opaque &&
+                                      kDepthWrite && !edge_overlay<Shading>();
+  bool full_blocks() const { return kFullBlocks && batch_; }
+
+  // Whether the draw's small triangles may wait to be shaded with the next ones
+  // (WaitingPixels): as for whole blocks, and depth-tested (a waiting pixel is tested again
+  // when written). Again only when the draw is batch-shaded.
+  static constexpr bool kWaits = kFullBlocks && depth_tested<Shading>();
+
+  // The waiting pixels of several triangles of the draw, whose plane slopes for the base
+  // color map's level of detail are slopes[k][n] (TexelBatch): sampled and shaded with SIMD,
+  // then each written unless the depth test against the tile now fails (WaitingPixels).
+  void shade_waiting(PackedPixels& pixels, const float (*slopes)[PackedPixels::kCapacity]) {
+    if constexpr (kWaits) {
+      pixels.pad(Shading::kVaryings);
+      const Texels texels = sample_base_map(pixels.count, pixels.v, pixels.w, slopes);
+      alignas(64) float colors[PackedPixels::kCapacity][4];
+      Shading::fragment_batch(uniforms_, {pixels.count, pixels.w, pixels.v, texels, &fog_}, colors);
+      for (int n = 0; n < pixels.count; ++n) {
+        const int x = pixels.x[n], y = pixels.y[n];
+        if (!(pixels.z[n] < tile_.depth[index(x, y)])) continue;  // a pixel before it is nearer
+        const float* c = colors[n];
+        store<true>(x, y, pixels.z[n], pixels.w[n], glm::vec4(c[0], c[1], c[2], c[3]));
+      }
+    }
+  }
+
+  // A block whose 64 pixels are all covered and pass the depth test, at frame pixel
+  // (block_x, block_y): sampled, shaded and fogged with SIMD straight from cover_block's
+  // arrays into the tile's rows (its depths copied a row at a time); no per-pixel step. Only
+  // when full_blocks().
+  void shade_full_block(const BlockFragments& block, int block_x, int block_y) {
+    if constexpr (kFullBlocks) {
+      static_assert(kBlockSize == 8, "ShadeInput::rgba_row_stride counts rows of 8 pixels");
+      const Texels texels = sample_base_map(kBlockPixels, block.v, block.w);
+      const std::ptrdiff_t first = index(block_x, block_y);
+      shading::ShadeInput in{kBlockPixels, block.w, block.v, texels, &fog_};
+      in.rgba_row_stride = tile_.stride;
+      Shading::fragment_batch(uniforms_, in, reinterpret_cast<float(*)[4]>(&tile_.color[first]));
+      for (int row = 0; row < kBlockSize; ++row) {
+        const std::ptrdiff_t pixel = first + static_cast<std::ptrdiff_t>(row) * tile_.stride;
+        std::memcpy(&tile_.depth[pixel], block.z + row * kBlockSize, sizeof(float) * kBlockSize);
+      }
+      shaded += kBlockPixels;
+    }
+  }
+
+  // Whether shade() does anything in batches; if not, raster loops may skip packing and call
+  // write() per pixel.
+  bool batches() const { return base_map_ != nullptr || batch_; }
+
+  // Shades `fragment` (w and varyings filled in by the caller) for pixel (x, y) of the frame
+  // at depth z and writes it. False if the alpha test discarded it.
+  bool write(int x, int y, float z) {
+    return store(x, y, z, fragment.w, Shading::fragment(fragment, uniforms_));
+  }
+
+  // Writes the shaded color of pixel (x, y) of the frame, at depth z and clip w, with the
+  // draw's alpha test, overlay, fog and blending.
+  // kFogged: the color has had its fog already (shade_batch applies it).
+  template <bool kFogged = false>
+  bool store(int x, int y, float z, float w, glm::vec4 color) {
+    if constexpr (kAlpha == AlphaMode::mask) {
+      if (!(color.a >= alpha_cutoff_)) return false;  // cut-out: no color, no depth
+    }
+    if constexpr (edge_overlay<Shading>()) {
+      if (distance_to_edges(*t_, edge_scales_, x, y) < kOverlayHalfWidth) {
+        color = uniforms_.wire_color;
+      }
+    }
+    if constexpr (!kFogged) shading::apply_fog(color, w, fog_);
+    const std::ptrdiff_t pixel = index(x, y);
+    blend_into<Shading, kAlpha>(tile_.color[pixel], color);
+    if constexpr (kDepthWrite) tile_.depth[pixel] = z;
+    ++shaded;
+    return true;
+  }
+
+  shading::Fragment fragment;
+  std::uint64_t shaded = 0;
+
+ private:
+  static constexpr int kTexcoordSlot = base_color_texcoord<Shading>();  // -1: none
+
+  // Where frame pixel (x, y) is in the tile's buffers.
+  std::ptrdiff_t index(int x, int y) const {
+    return static_cast<std::ptrdiff_t>(y - tile_.y0) * tile_.stride + (x - tile_.x0);
+  }
+
+  using EdgeScalesOrNone = std::conditional_t<edge_overlay<Shading>(), EdgeScales, std::monostate>;
+  PixelWriter(TileContext& tile, std::uint32_t draw, const SetupTriangle* t,
+              EdgeScalesOrNone edge_scales)
+      : tile_(tile),
+        t_(t),
+        uniforms_(tile.frame->draws[draw].uniforms),
+        fog_(uniforms_.lighting->fog),
+        alpha_cutoff_(uniforms_.material->alpha_cutoff),
+        edge_scales_(edge_scales) {
+    if constexpr (kTexcoordSlot >= 0) {
+      if (uniforms_.material->base_color_map) base_map_ = &uniforms_.material->base_color_map;
+    }
+    if constexpr (batch_shaded<Shading>()) batch_ = tile.frame->draws[draw].batch_shaded;
+  }
+
+  // The base color map sampled for `count` pixels whose varyings and clip w are v[k][n] and
+  // w[n] (PackedPixels and BlockFragments alike): their texels, or null when the model reads
+  // no map or the draw has none. The pixels are of this writer's triangle, or of several whose
+  // plane slopes are `slopes` (TexelBatch).
+  using Texels = const float (*)[4];
+  Texels sample_base_map(int count, const float (*v)[kBlockPixels], const float* w,
+                         const float (*slopes)[kBlockPixels] = nullptr) {
+    if constexpr (kTexcoordSlot >= 0) {
+      if (base_map_) {
+        texels_.count = count;
+        texels_.u = v[kTexcoordSlot];
+        texels_.v = v[kTexcoordSlot + 1];
+        texels_.w = w;
+        texels_.slopes = slopes;
+        if (slopes == nullptr) {
+          texels_.planes = fragment.planes + kTexcoordSlot;
+          texels_.inv_w = &t_->inv_w;
+        }
+        shading::sample_batch(*base_map_, texels_);
+        return texels_.rgba;
+      }
+    }
+    return nullptr;
+  }
+
+  // The batch shader fogs, except under the wire overlay, whose wire color store() fogs.
+  static constexpr bool kBatchFogs = !edge_overlay<Shading>();
+  const Fog* batch_fog() const { return kBatchFogs ? &fog_ : nullptr; }
+  TileContext& tile_;
+  const SetupTriangle* t_;  // null for the pixels of several triangles
+  const shading::DrawUniforms& uniforms_;
+  const Fog& fog_;
+  float alpha_cutoff_;
+  // Only the wire overlay reads it (an empty struct otherwise, and never computed).
+  [[no_unique_address]] EdgeScalesOrNone edge_scales_;
+  const TextureMap* base_map_ = nullptr;  // the map sampled ahead, if any
+  bool batch_ = false;                    // shade() uses Shading::fragment_batch
+  shading::TexelBatch texels_;
+};
+
+}  // namespace facet::pipeline

@@ -1,0 +1,206 @@
+// Stage: raster + shade. Reads one tile's bin (bin.cpp) and, for each triangle in submission
+// order, finds the covered pixel centres with the fixed-point edge functions set up in
+// setup.cpp, tests depth early, shades with the draw's shading model and writes the tile's
+// own color and depth buffers; output.cpp then resolves the tile to the framebuffer.
+#pragma once
+
+#include <algorithm>
+#include <bit>
+#include <cstdint>
+#include <limits>
+
+#include "pipeline/frame.hpp"
+#include "pipeline/raster/block_raster.hpp"
+#include "pipeline/raster/pixel_writer.hpp"
+#include "pipeline/raster/small_triangles.hpp"
+#include "pipeline/setup/fixed_point.hpp"
+#include "pipeline/setup/setup.hpp"
+
+namespace facet::pipeline {
+
+// Classifies the three edges at the four corners of the block rectangle in.[xy]_begin/end
+// (exact, in 64 bits) and fills the 32-bit edge values cover_block steps with (block_raster.hpp
+// says why 32 bits hold them). An edge inside at all four corners is inside at every pixel
+// between them. Returns whether the rectangle lies outside some edge (no pixel covered),
+// inside all three (every pixel covered), or crosses an edge.
+enum class EdgeCover { outside, crossed, inside };
+inline EdgeCover classify_edges(const SetupTriangle& t, int block_x, int block_y, BlockInput& in) {
+  EdgeCover cover = EdgeCover::inside;
+  for (int i = 0; i < 3; ++i) {
+    // floor(E / 256): an arithmetic shift.
+    const std::int64_t e = edge_at_centre(t, i, block_x, block_y) >> kSubpixelBits;
+    const std::int64_t ax0 = std::int64_t{t.a[i]} * in.x_begin,
+                       ax1 = std::int64_t{t.a[i]} * (in.x_end - 1);
+    const std::int64_t by0 = std::int64_t{t.b[i]} * in.y_begin,
+                       by1 = std::int64_t{t.b[i]} * (in.y_end - 1);
+    const std::int64_t c00 = e + ax0 + by0, c10 = e + ax1 + by0, c01 = e + ax0 + by1,
+                       c11 = e + ax1 + by1;
+    if ((c00 | c10 | c01 | c11) >= 0) {  // inside at every corner: no test needed
+      in.e[i] = in.a[i] = in.b[i] = 0;
+      continue;
+    }
+    if ((c00 & c10 & c01 & c11) < 0) return EdgeCover::outside;  // outside at every corner
+    in.e[i] = static_cast<std::int32_t>(e);
+    in.a[i] = t.a[i];
+    in.b[i] = t.b[i];
+    cover = EdgeCover::crossed;
+  }
+  return cover;
+}
+
+// Bits of the block pixels that lie inside the tile (all 64 except at the frame's right and
+// bottom edges).
+inline std::uint64_t block_pixels_mask(int width, int height) {
+  const std::uint64_t row = (std::uint64_t{1} << width) - 1;
+  std::uint64_t mask = 0;
+  for (int y = 0; y < height; ++y) mask |= row << (y * kBlockSize);
+  return mask;
+}
+
+// Rasterizes one triangle into the tile; a template over the shading model and the alpha
+// mode so that the per-pixel loop is specialised once per draw state (shade.cpp builds the
+// table). Small triangles of draws whose pixels may wait join the tile's waiting pixels
+// (small_triangles.hpp); other small triangles, after what waits is written, take
+// raster_small_triangle; the others, likewise after it, are walked in 8x8 blocks:
+//   1. blocks every edge keeps out are skipped, and edges that cover a block are not tested;
+//   2. blocks whose nearest triangle depth is behind everything drawn there are skipped
+//      (tile.block_max_depth, a per-block bound on the depth buffer: hierarchical depth);
+//   3. cover_block finds the covered pixels that pass the depth test, with their depth and
+//      varyings, SIMD across a block row;
+//   4. those pixels are shaded and written (PixelWriter::shade): the base color map sampled
+//      and models with a batch form (fragment_batch) evaluated for all of them at once with
+//      SIMD, other models one pixel at a time; whole covered blocks of opaque batch-shaded
+//      draws go straight into the tile (shade_full_block).
+template <class Shading, AlphaMode kAlpha = AlphaMode::opaque>
+void raster_triangle(TileContext& tile, const SetupTriangle& t) {
+  const int x0 = std::max(t.min_x, tile.x0), x1 = std::min(t.max_x, tile.x1 - 1);
+  const int y0 = std::max(t.min_y, tile.y0), y1 = std::min(t.max_y, tile.y1 - 1);
+  if (x0 > x1 || y0 > y1) return;
+  const int box = (x1 - x0 + 1) * (y1 - y0 + 1);
+  if constexpr (PixelWriter<Shading, kAlpha>::kWaits) {
+    if (box_may_wait(x1 - x0 + 1, y1 - y0 + 1) && tile.frame->draws[t.draw].batch_shaded) {
+      add_waiting<Shading, kAlpha>(tile, t, x0, y0, x1, y1);
+      return;
+    }
+  }
+  flush_waiting(tile);  // this triangle is drawn after them
+  PixelWriter<Shading, kAlpha> out(tile, t);
+  if (box <= kSmallTrianglePixels) {
+    raster_small_triangle(tile, t, x0, y0, x1, y1, out);
+    tile.pixels_shaded += out.shaded;
+    return;
+  }
+  constexpr bool kDepthTest = depth_tested<Shading>();
+  const int bx0 = (x0 - tile.x0) / kBlockSize, bx1 = (x1 - tile.x0) / kBlockSize;
+  const int by0 = (y0 - tile.y0) / kBlockSize, by1 = (y1 - tile.y0) / kBlockSize;
+  // The triangle's depths over its whole box (NaN: unknown, each block is tested).
+  DepthRange box_depth{0.0f, std::numeric_limits<float>::quiet_NaN()};
+  if constexpr (kDepthTest) {
+    // The blocks' depth bounds over the whole box first: a triangle behind everything drawn
+    // there (a far layer drawn after a near one) is done without a block's edge tests.
+    float farthest_drawn = 0.0f;
+    for (int by = by0; by <= by1; ++by) {
+      for (int bx = bx0; bx <= bx1; ++bx) {
+        farthest_drawn = std::max(farthest_drawn, tile.block_max_depth[by * tile.blocks_x + bx]);
+      }
+    }
+    box_depth = depth_range_over(t, x0, y0, x1, y1);
+    if (box_depth.nearest >= farthest_drawn) return;  // NaN goes on
+  }
+  // Writes that leave every pixel of a block at a depth we know: the block's bound can drop.
+  constexpr bool kTightensBound =
+      PixelWriter<Shading, kAlpha>::kDepthWrite && kAlpha == AlphaMode::opaque;
+  BlockInput in;
+  in.triangle = &t;
+  in.varying_planes = out.fragment.planes;
+  in.varyings = Shading::kVaryings;
+  in.depth_test = kDepthTest;
+  in.depth_stride = tile.stride;
+  alignas(64) BlockFragments block;
+  PackedPixels pixels;
+  for (int by = by0; by <= by1; ++by) {
+    const int block_y = tile.y0 + by * kBlockSize;
+    in.y_begin = std::max(y0, block_y) - block_y;
+    in.y_end = std::min(y1, block_y + kBlockSize - 1) - block_y + 1;
+    for (int bx = bx0; bx <= bx1; ++bx) {
+      const int block_x = tile.x0 + bx * kBlockSize;
+      if (tile.block_starts != nullptr && tile.entry < tile.block_starts[by * tile.blocks_x + bx])
+        continue;  // a later triangle hides this one here
+      in.x_begin = std::max(x0, block_x) - block_x;
+      in.x_end = std::min(x1, block_x + kBlockSize - 1) - block_x + 1;
+      const EdgeCover edges = classify_edges(t, block_x, block_y, in);
+      if (edges == EdgeCover::outside) continue;
+      in.px0 = static_cast<float>(block_x) + 0.5f;
+      in.py0 = static_cast<float>(block_y) + 0.5f;
+      float& max_depth = tile.block_max_depth[by * tile.blocks_x + bx];
+      // A block's depths lie within the box's (exact bounds, depth_range_over), so where the
+      // triangle's farthest is in front of the block's bound, the test below cannot reject the
+      // block and is not computed: every block of a first layer.
+      if (kDepthTest && !(box_depth.farthest < max_depth)) {
+        const float nearest = depth_range_over(t, block_x + in.x_begin, block_y + in.y_begin,
+                                               block_x + in.x_end - 1, block_y + in.y_end - 1)
+                                  .nearest;
+        if (nearest >= max_depth) continue;  // every pixel fails "less"; NaN goes on
+      }
+      const std::ptrdiff_t block_offset =
+          static_cast<std::ptrdiff_t>(block_y - tile.y0) * tile.stride + (block_x - tile.x0);
+      in.depth = tile.depth + block_offset;
+      // Batches take a block's pixels packed, and interpolate_pixels gives the packed ones their
+      // w and varyings (the same values); copying those one by one from cover_block's rows was
+      // a third of raster_triangle's time on the islands. cover_block interpolates only where
+      // the block is likely whole, for shade_full_block: every edge inside, and the triangle
+      // in front of the block's depth bound (exactly whole then in a first layer).
+      const bool all_inside = edges == EdgeCover::inside && in.x_begin == 0 &&
+                              in.x_end == kBlockSize && in.y_begin == 0 && in.y_end == kBlockSize;
+      const bool likely_whole = all_inside && (!kDepthTest || box_depth.farthest < max_depth);
+      in.interpolate = !out.batches() || (likely_whole && out.full_blocks());
+      tile.kernels.cover_block(in, block);
+      if (block.mask == 0) continue;
+      int written = 0;
+      if (block.mask == ~std::uint64_t{0} && out.full_blocks() && in.interpolate) {
+        out.shade_full_block(block, block_x, block_y);
+        written = kBlockPixels;
+      } else if (out.batches()) {
+        pixels.count = 0;
+        for (std::uint64_t m = block.mask; m != 0; m &= m - 1) {
+          const int i = std::countr_zero(m);
+          const int n = pixels.count++;
+          pixels.x[n] = static_cast<std::int16_t>(block_x + i % kBlockSize);
+          pixels.y[n] = static_cast<std::int16_t>(block_y + i / kBlockSize);
+        }
+        pixels.pad(0);  // interpolate_pixels reads whole vectors of positions
+        tile.kernels.interpolate_pixels(t, out.fragment.planes, Shading::kVaryings, 0, pixels.count,
+                                        pixels.x, pixels.y, pixels.z, pixels.w, pixels.v);
+        written = out.shade(pixels);
+      } else {
+        for (std::uint64_t m = block.mask; m != 0; m &= m - 1) {
+          const int i = std::countr_zero(m);
+          out.fragment.w = block.w[i];
+          for (int k = 0; k < Shading::kVaryings; ++k) out.fragment.v[k] = block.v[k][i];
+          written += out.write(block_x + i % kBlockSize, block_y + i / kBlockSize, block.z[i]);
+        }
+      }
+      if constexpr (kTightensBound) {
+        // Every pixel of the block written by this triangle: their largest depth bounds it.
+        // That is the triangle's farthest over the block's corners (depth_range_over: the
+        // same arithmetic as cover_block's depths, monotonic in x and y), four evaluations
+        // instead of a search of all 64.
+        const int width = std::min(kBlockSize, tile.x1 - block_x);
+        const int height = std::min(kBlockSize, tile.y1 - block_y);
+        const std::uint64_t all = block_pixels_mask(width, height);
+        if (block.mask == all && written == std::popcount(all)) {
+          const float farthest =
+              depth_range_over(t, block_x, block_y, block_x + width - 1, block_y + height - 1)
+                  .farthest;
+          max_depth = std::min(max_depth, farthest);
+        }
+      }
+    }
+  }
+  tile.pixels_shaded += out.shaded;
+}
+
+// Rasterizes one segment into the tile (line.cpp).
+void raster_line(TileContext& tile, const SetupLine& line);
+
+}  // namespace facet::pipeline

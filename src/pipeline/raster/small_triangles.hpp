@@ -1,0 +1,193 @@
+// Stage: raster + shade, the small-triangle path: triangles whose bounding box in the tile is
+// a few pixels (up to kMaxWaitingTriangleBox for draws whose pixels wait) skip raster.hpp's
+// 8x8 blocks. Their covered pixels are found a box row at a time, and those of consecutive
+// small triangles of one draw wait to be shaded together (WaitingPixels).
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <iterator>
+
+#include "pipeline/raster/block_raster.hpp"
+#include "pipeline/raster/pixel_writer.hpp"
+
+namespace facet::pipeline {
+
+// Triangles whose bounding box in the tile is at most this many pixels skip the block
+// machinery: for them, one pixel at a time is cheaper than classifying and dispatching blocks
+// (measured on bunny-close and million: 16 to 256 all gain on 0, 64 at least as much as any).
+inline constexpr int kSmallTrianglePixels = 64;
+
+// The covered pixels of the small triangle t's bounding box [x0, x1] x [y0, y1] (inclusive)
+// that pass the depth test: their positions go to out.x, y from entry `first` on (their depths
+// come with their interpolation); returns how many. Same arithmetic as cover_block, so the same
+// pixels get the same values; SIMD across a box row (find_box_pixels).
+template <class Shading>
+int find_small_pixels(const TileContext& tile, const SetupTriangle& t, int x0, int y0, int x1,
+                      int y1, PackedPixels& out, int first) {
+  const float* depth =
+      tile.depth + static_cast<std::ptrdiff_t>(y0 - tile.y0) * tile.stride + (x0 - tile.x0);
+  return tile.kernels.find_box_pixels(t, x0, y0, x1 - x0 + 1, y1 - y0 + 1, depth, tile.stride,
+                                      depth_tested<Shading>(), out.x + first, out.y + first);
+}
+
+// The loop over the bounding box [x0, x1] x [y0, y1] (inclusive), for small triangles: finds
+// the covered pixels that pass the depth test a box row at a time, then interpolates their
+// varyings with SIMD (interpolate_pixels) and shades them.
+template <class Shading, AlphaMode kAlpha>
+void raster_small_triangle(TileContext& tile, const SetupTriangle& t, int x0, int y0, int x1,
+                           int y1, PixelWriter<Shading, kAlpha>& out) {
+  static_assert(kSmallTrianglePixels <= PackedPixels::kCapacity);
+  PackedPixels found;
+  found.count = find_small_pixels<Shading>(tile, t, x0, y0, x1, y1, found, 0);
+  if (found.count == 0) return;
+  found.pad(0);  // interpolate_pixels reads whole vectors of positions
+  tile.kernels.interpolate_pixels(t, out.fragment.planes, Shading::kVaryings, 0, found.count,
+                                  found.x, found.y, found.z, found.w, found.v);
+  out.shade(found);
+}
+
+// Pixels of consecutive small triangles of one draw, waiting to be shaded together. Shaded a
+// triangle at a time, a few pixels each (islands' small triangles average three), every
+// triangle paid the SIMD sampling and shading calls' fixed costs and mostly empty lanes. Only
+// opaque, depth-tested and -writing, batch-shaded draws wait (PixelWriter::kWaits); whatever
+// else the tile draws first shades and writes what waits (flush_waiting). A waiting pixel
+// passed the depth test against the tile as it was before the others waited; when written it
+// is tested again, against what the pixels before it wrote: so a pixel writes exactly when
+// drawing the triangles one by one would have written it, with the same color.
+struct WaitingPixels {
+  // Positions start at zero: interpolate_pixels reads whole vectors of them, the entries after
+  // the last one found too, which then hold zeros, earlier pixels' positions or what the
+  // search stored past what it found (all inside the tile; ignored).
+  WaitingPixels() {
+    std::fill(std::begin(pixels.x), std::end(pixels.x), 0);
+    std::fill(std::begin(pixels.y), std::end(pixels.y), 0);
+  }
+  PackedPixels pixels;
+  // Each pixel's triangle's plane slopes for the texture's level of detail (TexelBatch).
+  alignas(64) float slopes[shading::TexelBatch::kSlopes][PackedPixels::kCapacity];
+  std::uint32_t draw = 0;
+  void (*flush)(TileContext&) = nullptr;  // shades and writes them; null: none wait
+  // Each waiting triangle and its number of pixels, in order: each run of pixels starts where
+  // the one before ends. Their varyings are interpolated when they are shaded (write_waiting),
+  // not as each triangle's pixels are found: read right after the search stored them, the
+  // positions' loads spanned several of its row stores and waited for them to retire.
+  struct Run {
+    const SetupTriangle* triangle;
+    int count;
+  };
+  Run runs[PackedPixels::kCapacity];
+  int run_count = 0;
+};
+
+// Boxes of at most this many pixels join the waiting pixels in one piece: interpolate_pixels
+// writes up to 7 entries past the last one found, and those must stay in the arrays.
+inline constexpr int kMaxWaitingBox = PackedPixels::kCapacity - 8;
+// A search starts after at most kMaxWaitingBox waiting pixels, finds at most a box's pixels
+// and stores up to kBoxSearchSlack entries past them: all inside the positions' arrays.
+static_assert(kMaxWaitingBox + kBlockPixels + kBoxSearchSlack <=
+              static_cast<int>(std::size(PackedPixels{}.x)));
+
+// Triangles whose box in the tile is at most this many pixels, and at most kMaxWaitingBox
+// wide, wait too, a band of rows of at most kMaxWaitingBox pixels at a time. Up to this size,
+// finding their pixels a box row at a time and shading them with other triangles' beats
+// raster.hpp's 8x8 blocks: against boxes of one band only, 256 made bunny-close 22 % faster
+// and the islands 5 % (128: 10 % and 4 %); once batches filled with pixels found rather than
+// boxes (add_waiting_band), 512 gained 1 to 2 % more (bunny-close, phong, the islands; twice),
+// 1024 nothing more.
+inline constexpr int kMaxWaitingTriangleBox = 512;
+
+// Whether a triangle whose box in the tile is width x height pixels may wait (add_waiting).
+inline bool box_may_wait(int width, int height) {
+  return width * height <= kMaxWaitingTriangleBox && width <= kMaxWaitingBox;
+}
+
+// Shades and writes whatever waits in the tile (WaitingPixels).
+inline void flush_waiting(TileContext& tile) {
+  if (tile.waiting->flush != nullptr) tile.waiting->flush(tile);
+}
+
+// WaitingPixels::flush for draws of this shading model and alpha mode.
+template <class Shading, AlphaMode kAlpha>
+void write_waiting(TileContext& tile) {
+  WaitingPixels& waiting = *tile.waiting;
+  PackedPixels& pixels = waiting.pixels;
+  const Plane* planes = tile.frame->planes.data();
+  int first = 0;  // each run starts where the one before ends
+  for (int r = 0; r < waiting.run_count; ++r) {
+    const WaitingPixels::Run& run = waiting.runs[r];
+    tile.kernels.interpolate_pixels(*run.triangle, planes + run.triangle->varying_planes,
+                                    Shading::kVaryings, first, run.count, pixels.x, pixels.y,
+                                    pixels.z, pixels.w, pixels.v);
+    first += run.count;
+  }
+  waiting.run_count = 0;
+  for (int n = pixels.count; n % 8 != 0; ++n) {  // read by the SIMD sampler, then ignored
+    for (auto& slope : waiting.slopes) slope[n] = 0.0f;
+  }
+  PixelWriter<Shading, kAlpha> out(tile, waiting.draw);
+  out.shade_waiting(pixels, waiting.slopes);
+  tile.pixels_shaded += out.shaded;
+  pixels.count = 0;
+  waiting.flush = nullptr;
+}
+
+// Adds triangle t's pixels in the box [x0, x1] x [y0, y1] (inclusive, at most kMaxWaitingBox
+// pixels) to the tile's waiting pixels.
+template <class Shading, AlphaMode kAlpha>
+void add_waiting_band(TileContext& tile, const SetupTriangle& t, int x0, int y0, int x1, int y1) {
+  WaitingPixels& waiting = *tile.waiting;
+  PackedPixels& pixels = waiting.pixels;
+  // A triangle covers about half its box: what waits is shaded first when even that would not
+  // fit. Otherwise the pixels are found after what waits (the arrays have room for a whole
+  // box past a batch), and when they do not fit after all, what waited is shaded and they move
+  // to the front: batches fill with pixels found rather than with boxes.
+  const int box = (x1 - x0 + 1) * (y1 - y0 + 1);
+  if (waiting.flush != nullptr &&
+      (waiting.draw != t.draw || pixels.count + box / 2 > kMaxWaitingBox)) {
+    waiting.flush(tile);
+  }
+  int first = pixels.count;
+  const int found = find_small_pixels<Shading>(tile, t, x0, y0, x1, y1, pixels, first);
+  if (found == 0) return;
+  if (first + found > kMaxWaitingBox) {
+    std::int16_t x[kMaxWaitingBox], y[kMaxWaitingBox];
+    std::copy_n(pixels.x + first, found, x);
+    std::copy_n(pixels.y + first, found, y);
+    waiting.flush(tile);  // pads past what waited: over these
+    std::copy_n(x, found, pixels.x);
+    std::copy_n(y, found, pixels.y);
+    first = 0;
+  }
+  pixels.count = first + found;
+  waiting.runs[waiting.run_count++] = {&t, found};
+  if constexpr (base_color_texcoord<Shading>() >= 0) {
+    const Plane* uv = tile.frame->planes.data() + t.varying_planes + base_color_texcoord<Shading>();
+    const float slopes[shading::TexelBatch::kSlopes] = {uv[0].dx, uv[1].dx,   uv[0].dy,
+                                                        uv[1].dy, t.inv_w.dx, t.inv_w.dy};
+    // Whole runs of eight (vector stores, no remainder loop): the entries past the last pixel
+    // are before kMaxWaitingBox + 8, inside the arrays, and later pixels or the pad overwrite
+    // them.
+    static_assert(kMaxWaitingBox + 8 <= PackedPixels::kCapacity);
+    for (int k = 0; k < shading::TexelBatch::kSlopes; ++k) {
+      float* out = waiting.slopes[k] + first;
+      for (int j = 0; j < found; j += 8) {
+        for (int lane = 0; lane < 8; ++lane) out[j + lane] = slopes[k];
+      }
+    }
+  }
+  waiting.draw = t.draw;
+  waiting.flush = &write_waiting<Shading, kAlpha>;
+}
+
+// Adds small triangle t's pixels in its bounding box [x0, x1] x [y0, y1] (inclusive;
+// box_may_wait) to the tile's waiting pixels, a band of rows at a time.
+template <class Shading, AlphaMode kAlpha>
+void add_waiting(TileContext& tile, const SetupTriangle& t, int x0, int y0, int x1, int y1) {
+  const int rows = kMaxWaitingBox / (x1 - x0 + 1);
+  for (int y = y0; y <= y1; y += rows) {
+    add_waiting_band<Shading, kAlpha>(tile, t, x0, y, x1, std::min(y + rows - 1, y1));
+  }
+}
+
+}  // namespace facet::pipeline

@@ -1,0 +1,49 @@
+// Stage: shade — choosing the specialised raster routine. Each draw's shading model selects,
+// once per draw, a DrawPipeline: the vertex function, the per-triangle face hook and the
+// raster loop instantiated for that model (raster.hpp). No per-pixel dispatch remains.
+#pragma once
+
+#include "facet/light.hpp"
+#include "facet/material.hpp"
+#include "facet/mesh.hpp"
+#include "pipeline/frame.hpp"
+#include "pipeline/raster/raster.hpp"
+
+namespace facet::pipeline {
+
+// The pipeline for a built-in shading model and alpha mode.
+DrawPipeline pipeline_for(ShadingModel model, AlphaMode alpha = AlphaMode::opaque);
+
+// The pipeline for a draw: its material's shading model and alpha mode, where the mesh,
+// material and the frame's lights allow in a cheaper form (Gouraud of one constant surface
+// color interpolates only its light; Lambert lit from one side by directional lights only,
+// no position).
+DrawPipeline pipeline_for(const Material& material, const Mesh& mesh, const Lighting& lighting);
+
+// The pipeline for any shading model type (see shading/models.hpp for what it provides);
+// also how tests plug in their own models.
+template <class Shading, AlphaMode kAlpha = AlphaMode::opaque>
+DrawPipeline make_pipeline() {
+  static_assert(Shading::kVaryings <= kMaxVaryings, "raise kMaxVaryings");
+  DrawPipeline p;
+  p.varyings = Shading::kVaryings;
+  p.normal_slot = Shading::kNormalSlot;
+  p.vertex = &Shading::vertex;
+  if constexpr (requires { &Shading::face; }) p.face = &Shading::face;
+  if constexpr (requires { &Shading::face_without_normals; }) {
+    p.face_without_normals = &Shading::face_without_normals;
+  }
+  p.raster = &raster_triangle<Shading, kAlpha>;
+  if constexpr (batch_shaded<Shading>()) p.batch_shades = &Shading::batch_shades;
+  if constexpr (requires { &Shading::vertex_batch; }) {
+    p.vertex_batch = &Shading::vertex_batch;
+    p.batches_vertices = &Shading::batch_vertices;
+  }
+  p.depth_tested = depth_tested<Shading>();
+  p.occludes = p.depth_tested && kAlpha == AlphaMode::opaque && !additive<Shading>();
+  p.display_referred = display_referred<Shading>() && !additive<Shading>() &&
+                       (kAlpha == AlphaMode::opaque || kAlpha == AlphaMode::mask);
+  return p;
+}
+
+}  // namespace facet::pipeline

@@ -1,0 +1,45 @@
+// Stage: setup (see setup.hpp).
+#include "pipeline/setup/setup.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+#include "pipeline/setup/fixed_point.hpp"
+
+namespace facet::pipeline {
+Plane make_plane(const float x[3], const float y[3], const float value[3]) {
+  return PlaneSolver(x, y).plane(value);
+}
+
+bool setup_triangle(PrimitiveSink& out, int width, int height, std::uint32_t draw,
+                    const ClipVertex* const v[3], int varyings, bool front_facing) {
+  ScreenVertex s[3];
+  float over_w[3][kMaxVaryings];
+  for (int i = 0; i < 3; ++i) {
+    s[i] = to_screen(v[i]->clip, width, height);
+    for (int k = 0; k < varyings; ++k) over_w[i][k] = v[i]->varyings[k] * s[i].inv_w;
+  }
+  const float* values[3] = {over_w[0], over_w[1], over_w[2]};
+  return setup_projected_triangle(out, width, height, draw, s, values, varyings, front_facing);
+}
+
+bool setup_line(PrimitiveSink& out, int width, int height, const glm::vec4& a, const glm::vec4& b,
+                const glm::vec4& color) {
+  ScreenVertex s0 = to_screen(a, width, height);
+  ScreenVertex s1 = to_screen(b, width, height);
+  if (s0.x == s1.x && s0.y == s1.y) return false;
+  SetupLine l;
+  l.x0 = s0.x, l.y0 = s0.y, l.x1 = s1.x, l.y1 = s1.y;
+  l.z0 = s0.z, l.z1 = s1.z;
+  l.min_x = std::max(0, static_cast<int>(floor_div(std::min(l.x0, l.x1), kSubpixelScale)));
+  l.min_y = std::max(0, static_cast<int>(floor_div(std::min(l.y0, l.y1), kSubpixelScale)));
+  l.max_x = std::min(width - 1, static_cast<int>(floor_div(std::max(l.x0, l.x1), kSubpixelScale)));
+  l.max_y = std::min(height - 1, static_cast<int>(floor_div(std::max(l.y0, l.y1), kSubpixelScale)));
+  if (l.min_x > l.max_x || l.min_y > l.max_y) return false;
+  l.color = color;
+  out.add_line(l.min_x, l.min_y, l.max_x, l.max_y) = l;
+  return true;
+}
+
+}  // namespace facet::pipeline

@@ -1,0 +1,46 @@
+// Stage: setup, batched. Primitive assembly (primitive.cpp) hands the triangles culling kept that
+// need no clipping, a run at a time, to a SIMD kernel (setup_batch.cpp, compiled for every target
+// Highway supports) sets them up: winding, pixel box, edge functions, depth and 1 / w planes
+// with one triangle per lane, then each kept triangle's varying planes with one plane per lane.
+// It writes them, in order, as setup_projected_triangle (setup.hpp) would one at a time, bit for
+// bit. One at a time, a triangle's setup waits on its own double-precision division and
+// products; across lanes they overlap.
+#pragma once
+
+#include <cstdint>
+
+#include "pipeline/frame.hpp"
+#include "pipeline/geometry/primitive_sink.hpp"
+
+namespace facet::pipeline {
+
+// Triangles to set up, a lane each, by their vertices' indices into the draw's projected
+// vertices and varyings (primitive assembly passes a run of the cull kernel's survivors, which
+// need no clipping, in place): the kernel reads the indices a vector at a time, so each array
+// must be readable kSetupBatchSlack entries past `count` (what is there is not used).
+inline constexpr int kSetupBatchSlack = 16;
+struct SetupBatch {
+  int count = 0;
+  const std::uint32_t* vertex[3] = {};     // in the draw's winding
+  const std::uint32_t* front_facing = {};  // 1 or 0, as culling decided
+};
+
+// What the kernel needs besides the batch.
+struct SetupBatchTarget {
+  PrimitiveSink& out;
+  int width, height;  // the frame's
+  std::uint32_t draw;
+  const ProjectedVertex* projected;  // the draw's, screen parts meaningful (no clipping)
+  const float* over_w;               // `varyings` floats a vertex, kOverWSlack past the last
+  int varyings;
+};
+
+// Sets up the batch's triangles into target.out, in lane order; returns how many it dropped
+// (degenerate or flipped by snapping, or covering no pixel centre).
+using SetupBatchKernel = int (*)(const SetupBatch& batch, const SetupBatchTarget& target);
+
+// The kernel of the SIMD target Highway has chosen (choosing one if none is yet), to fetch once
+// for many batches.
+SetupBatchKernel setup_batch_kernel();
+
+}  // namespace facet::pipeline

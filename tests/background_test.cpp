@@ -1,6 +1,6 @@
 // The environment background is drawn late, only into pixels no opaque triangle covered
-// (pipeline/output.cpp fill_background): the image must be exactly sky where nothing is drawn
-// and exactly the scene elsewhere, and blended surfaces must still blend over the sky.
+// (pipeline/output/output.cpp fill_background): the image must be exactly sky where nothing is
+// drawn and exactly the scene elsewhere, and blended surfaces must still blend over the sky.
 #include <gtest/gtest.h>
 
 #include "facet/renderer.hpp"

@@ -1,7 +1,7 @@
 // Frames whose every color is a display value (the normals, depth and texcoords views, the
 // glmark2 scenes' models) keep those values as code / 255 in their tiles and round them at
 // resolve, instead of storing decoded linear values that resolve sRGB-encodes back to the same
-// codes (pipeline/draw.cpp's display_referred_frame). The bytes must not change: each frame
+// codes (pipeline/frame_run.cpp's display_referred_frame). The bytes must not change: each frame
 // here is also rendered to a float target, which never takes that path, and encoded as resolve
 // encodes; the 8-bit frame must be that, byte for byte, and must have taken the path.
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // Whole draws outside the view frustum are dropped before their vertices are transformed
-// (pipeline/draw_culling.cpp); draws that reach into the view are kept. Draws whose bounds need
-// no clipping are told apart from those that may.
+// (pipeline/record/draw_culling.cpp); draws that reach into the view are kept. Draws whose bounds
+// need no clipping are told apart from those that may.
 #include "pipeline/record/draw_culling.hpp"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // Hidden work skipped: a tile's bin starts at the last triangle that hides everything before
-// it, small bins skip per 8x8 block what a later triangle hides there (pipeline/occlusion.cpp),
-// and 8x8 blocks behind what is drawn are rejected (raster.hpp). All must leave every pixel as
-// drawing everything would.
+// it, small bins skip per 8x8 block what a later triangle hides there
+// (pipeline/raster/occlusion.cpp), and 8x8 blocks behind what is drawn are rejected (raster.hpp).
+// All must leave every pixel as drawing everything would.
 #include <gtest/gtest.h>
 
 #include "facet/renderer.hpp"

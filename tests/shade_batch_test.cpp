@@ -103,7 +103,8 @@ glm::vec4 scalar_fragment(const Inputs& in, const float (*texel)[4], int n,
 
 // Compares Shading::fragment_batch with fragment() (then apply_fog) over random batches, on
 // every SIMD target; draws its batch_shades declines are skipped (enough must remain), and so
-// are those `takes` declines (for models chosen only for some draws: pipeline/shade.cpp).
+// are those `takes` declines (for models chosen only for some draws:
+// pipeline/record/pipeline_table.cpp).
 template <class Shading>
 void expect_same_bits(bool (*takes)(const Draw&) = nullptr) {
   const std::vector<std::int64_t> targets = simd_targets();

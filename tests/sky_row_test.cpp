@@ -1,5 +1,5 @@
-// The SIMD sky-gradient background (pipeline/sky_row.cpp) gives the scalar background's bits on
-// every SIMD target, above and below the horizon, in rows all of sky and rows partly covered,
+// The SIMD sky-gradient background (pipeline/output/sky_row.cpp) gives the scalar background's bits
+// on every SIMD target, above and below the horizon, in rows all of sky and rows partly covered,
 // and leaves covered pixels alone.
 #include "pipeline/output/sky_row.hpp"
 

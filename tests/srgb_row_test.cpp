@@ -1,5 +1,5 @@
-// The SIMD sRGB encode of resolve (pipeline/srgb_row.cpp) gives encode_srgb8's codes on every
-// SIMD target: at and around every code's threshold and the edges of its table's runs, at the
+// The SIMD sRGB encode of resolve (pipeline/output/srgb_row.cpp) gives encode_srgb8's codes on
+// every SIMD target: at and around every code's threshold and the edges of its table's runs, at the
 // ends and beyond them, for NaN and infinities, with and without exposure, and for rows of
 // every length up to past a chunk.
 #include "pipeline/output/srgb_row.hpp"

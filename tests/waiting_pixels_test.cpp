@@ -1,8 +1,8 @@
-// The pixels of a draw's small triangles wait to be shaded together (pipeline/small_triangles.hpp)
-// and are depth-tested again when written: the image, colors and depths, must be the one drawing
-// the same triangles one draw each gives (a draw change writes what waits), for heavily
-// overlapping triangles at random depths in random order, textured with trilinear filtering,
-// lit and fogged, in every shading model whose pixels wait.
+// The pixels of a draw's small triangles wait to be shaded together
+// (pipeline/raster/small_triangles.hpp) and are depth-tested again when written: the image, colors
+// and depths, must be the one drawing the same triangles one draw each gives (a draw change writes
+// what waits), for heavily overlapping triangles at random depths in random order, textured with
+// trilinear filtering, lit and fogged, in every shading model whose pixels wait.
 #include <gtest/gtest.h>
 
 #include <random>

@@ -16,8 +16,8 @@
 namespace facet {
 
 // Debug views that replace the shaded image with what the pipeline did (see
-// src/pipeline/debug_view.cpp). Shading-model views (depth, normals, wireframe) are materials
-// instead: ShadingModel.
+// src/pipeline/output/debug_view.cpp). Shading-model views (depth, normals, wireframe) are
+// materials instead: ShadingModel.
 enum class DebugView {
   none,       // the shaded image
   overdraw,   // heat map of how many triangles covered each pixel (no depth test, no culling

@@ -26,7 +26,7 @@ inline float linear_to_srgb(float c) {
 // (srgb_row_test's SrgbTables test checks it), so a run's entry holds both the code at its
 // start and where in the run the next code begins: one lookup and one comparison, still exact.
 // Below 2^-14 (run 0, which holds no threshold) every value is code 0. Resolve's row encoder
-// (pipeline/srgb_row.cpp) does the same a row at a time.
+// (pipeline/output/srgb_row.cpp) does the same a row at a time.
 struct SrgbTables {
   std::array<float, 257> thresholds;  // [256] is a sentinel above every input
   std::array<float, 256> decode;

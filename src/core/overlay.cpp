@@ -13,7 +13,7 @@
 namespace facet {
 namespace {
 
-// Vertices snap to 1/256 pixel, as the main pipeline's do (pipeline/fixed_point.hpp), so the
+// Vertices snap to 1/256 pixel, as the main pipeline's do (pipeline/setup/fixed_point.hpp), so the
 // edge functions below are exact integers: two triangles sharing an edge compute exactly
 // opposite values on it. Triangles reaching beyond kLimit pixels (or NaN) are not UI and are
 // skipped; within it, coordinates take 28 bits and edge products 58, inside int64.

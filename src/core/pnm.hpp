@@ -1,5 +1,5 @@
 // PNM reader: the Netpbm formats PGM and PPM (P2, P3, P5, P6), parsed from memory into RGBA8.
-// Used by load_texture (src/io/image_read.cpp) and by the fuzz target tests/fuzz/pnm_fuzz.cpp.
+// Used by load_texture (image_read.cpp) and by the fuzz target tests/fuzz/pnm_fuzz.cpp.
 #pragma once
 
 #include <cstddef>

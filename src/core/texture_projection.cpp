@@ -1,4 +1,4 @@
-// Texture projections (see procedural.hpp): spherical, cylindrical, planar.
+// Texture projections (see facet/mesh_tools.hpp): spherical, cylindrical, planar.
 #include <algorithm>
 #include <cmath>
 #include <glm/glm.hpp>

@@ -1,4 +1,4 @@
-// Internal to model import (src/io/import*.cpp, d_format.cpp): the pieces import_scene() is
+// Internal to model import (src/import/): the pieces import_scene() is
 // built from. import.cpp dispatches on the file type and finishes every scene the same way.
 #pragma once
 

@@ -1,10 +1,11 @@
 // The data one frame passes between pipeline stages, in the order they run:
-//   draw.cpp records DrawRecords;
-//   vertex.cpp fills each draw's ClipVertex buffer (clip position + varyings);
-//   primitive.cpp assembles primitives, clip.cpp clips them, setup.cpp appends
+//   renderer.cpp records DrawRecords;
+//   geometry/vertex.cpp fills each draw's ClipVertex buffer (clip position + varyings);
+//   geometry/primitive.cpp assembles primitives, geometry/clip.cpp clips them, setup/ appends
 //   SetupTriangles/SetupLines (and their varying planes) to the Frame;
-//   bin.cpp appends primitive references to the tile bins;
-//   raster.cpp / line.cpp read them per tile; output.cpp resolves tiles to the framebuffer.
+//   bin/bin.cpp appends primitive references to the tile bins;
+//   raster/ (render_tile.cpp, raster.hpp, line.cpp) reads them per tile; output/ resolves
+//   tiles to the framebuffer.
 // Every container is cleared, not freed, between frames, so steady-state frames reuse memory.
 #pragma once
 
@@ -72,7 +73,7 @@ struct TileContext;
 struct SetupTriangle;
 using RasterTriangleFn = void (*)(TileContext&, const SetupTriangle&);
 
-// How a draw is shaded, fixed once per draw (see shading_table.cpp).
+// How a draw is shaded, fixed once per draw (record/pipeline_table.cpp).
 struct DrawPipeline {
   int varyings = 0;
   int normal_slot = -1;
@@ -94,7 +95,7 @@ struct DrawPipeline {
   bool depth_tested = true;     // false for debug counters that see through everything
   bool occludes = true;         // opaque, depth-tested and depth-writing (occlusion.hpp)
   // Writes display values only (shading/models.hpp's DisplayReferred), unblended: frames of
-  // such draws alone skip the sRGB encode (draw.cpp's display_referred_frame).
+  // such draws alone skip the sRGB encode (frame_run.cpp's display_referred_frame).
   bool display_referred = false;
 };
 
@@ -110,7 +111,7 @@ struct DrawRecord {
   Material material;
   shading::DrawUniforms uniforms;
   DrawPipeline pipeline;
-  bool batch_shaded = false;    // pipeline.batch_shades(uniforms), once per frame (draw.cpp)
+  bool batch_shaded = false;    // pipeline.batch_shades(uniforms), once per frame (frame_run.cpp)
   bool batch_vertices = false;  // pipeline.batches_vertices(uniforms), likewise
   // Its vertex stage writes ClipVertex (vertex.hpp's keeps_clip_vertices); also decided once
   // per frame.

@@ -1,5 +1,5 @@
 // Per-target vector helpers shared by the SIMD batch shaders (shade_batch.cpp and
-// scene/glmark2_batch.cpp): included inside each file's HWY_NAMESPACE, once per target, the
+// bench/scenes/glmark2_batch.cpp): included inside each file's HWY_NAMESPACE, once per target, the
 // Highway "-inl.h" way (the guard below toggles with HWY_TARGET_TOGGLE). Each helper repeats
 // a scalar glm or models.hpp step with the same IEEE operations in the same order.
 #if defined(FACET_SHADING_BATCH_MATH_INL_H_) == defined(HWY_TARGET_TOGGLE)

@@ -1,5 +1,5 @@
 // Distance fog (the classic darkening with distance), applied by the raster loop
-// (pipeline/raster.hpp) to every shaded color before it is written.
+// (pipeline/raster/raster.hpp) to every shaded color before it is written.
 #pragma once
 
 #include <glm/glm.hpp>

@@ -118,9 +118,9 @@ struct GouraudShading : GouraudLight<kGouraudDiffuseSlot, true>, BatchForm<Batch
 };
 
 // Gouraud for a draw whose surface color is one constant: no base color or emissive map, no
-// vertex colors (pipeline_for in pipeline/shade.cpp decides). It interpolates only the light,
-// 6 varyings instead of 12: half the plane set-up and interpolation of scenes of many small
-// triangles (million), and the color is the material's exactly, not an interpolated constant.
+// vertex colors (pipeline_for in pipeline/record/pipeline_table.cpp decides). It interpolates only
+// the light, 6 varyings instead of 12: half the plane set-up and interpolation of scenes of many
+// small triangles (million), and the color is the material's exactly, not an interpolated constant.
 struct ConstantColorGouraudShading : GouraudLight<kConstantGouraudDiffuseSlot, false>,
                                      BatchForm<BatchModel::constant_gouraud> {
   static constexpr int kVaryings = 6;

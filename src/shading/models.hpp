@@ -1,4 +1,4 @@
-// The built-in shading models as C++ types. The raster loop (pipeline/raster.hpp) is a
+// The built-in shading models as C++ types. The raster loop (pipeline/raster/raster.hpp) is a
 // template over these, chosen once per draw, so the per-pixel code has no virtual calls.
 //
 // A shading model provides:
@@ -11,7 +11,7 @@
 //   fragment(fragment, uniforms) -> linear RGBA
 //   kDisplayReferred  optional (inherit DisplayReferred): fragment() returns display values
 //                   (display_value()); frames of such draws alone skip the sRGB encode
-//                   (pipeline/draw.cpp)
+//                   (pipeline/renderer.cpp)
 //   kBaseColorTexcoord  optional: the slot of the texture coordinate the base color map is
 //                   read at, through base_color_texel(); the raster loop then samples the map
 //                   for a batch of pixels at once (SIMD) before calling fragment()
@@ -50,7 +50,7 @@ inline glm::vec3 diffuse_light(glm::vec3 albedo, glm::vec3 normal, glm::vec3 pos
 // A display value (already what the screen should show, as an 8-bit code: debug views show
 // data, not light) as the tile stores it. Usually the code decoded to linear, which resolve's
 // sRGB encode gives back exactly (the table is exact and much cheaper than pow()). In a frame
-// whose every color is a display value (DrawUniforms::display_referred, pipeline/draw.cpp)
+// whose every color is a display value (DrawUniforms::display_referred, pipeline/frame_run.cpp)
 // the code / 255 itself, which resolve turns back into the code without the sRGB tables.
 // NaN shows as 0 (as batch_math-inl.h's StoreDisplayCodes has it).
 inline float display_channel(float v, bool referred) {
@@ -93,9 +93,9 @@ struct UnlitShading : BatchForm<BatchModel::unlit>, SurfaceVertexBatch<kUnlitVar
   }
 };
 
-// Unlit for a draw whose color is the material's alone (no vertex colors: pipeline/shade.cpp
-// decides): the texture coordinate is its only varying, and the color is the material's
-// exactly, not an interpolated constant that may be off in the last bit.
+// Unlit for a draw whose color is the material's alone (no vertex colors:
+// pipeline/record/pipeline_table.cpp decides): the texture coordinate is its only varying, and the
+// color is the material's exactly, not an interpolated constant that may be off in the last bit.
 struct ConstantColorUnlitShading : BatchForm<BatchModel::constant_unlit> {
   static constexpr int kVaryings = 2;
   static constexpr int kNormalSlot = -1;
@@ -139,8 +139,8 @@ struct FlatShading {
 
 // Per-pixel Lambert: the interpolated normal is renormalized and lit at each pixel.
 // kPositioned false: without the position, for draws lit by directional lights only and from
-// one side (pipeline/shade.cpp decides), which never read it: 9 varyings instead of 12 to set
-// up and interpolate, the same colors.
+// one side (pipeline/record/pipeline_table.cpp decides), which never read it: 9 varyings instead of
+// 12 to set up and interpolate, the same colors.
 template <bool kPositioned>
 struct LambertShadingT
     : BatchForm<BatchModel::lambert>,

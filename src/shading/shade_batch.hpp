@@ -1,7 +1,7 @@
 // The built-in unlit, Lambert, Phong, Blinn-Phong and Gouraud models and the normals view
 // evaluated for a batch of pixels at once, with SIMD (shade_batch.cpp, compiled for every target
-// Highway supports): the raster loop (pipeline/raster.hpp) packs the covered pixels of a triangle
-// (or of several small ones), then shades them together instead of calling the model's
+// Highway supports): the raster loop (pipeline/raster/raster.hpp) packs the covered pixels of a
+// triangle (or of several small ones), then shades them together instead of calling the model's
 // fragment() per pixel. Same operations as their fragment() (models.hpp, lit_models.hpp) lane by
 // lane, so the same bits; draws the batch code does not cover (point or spot lights for the
 // models lit per pixel, emissive, normal or specular maps, reflections) keep fragment().
@@ -59,7 +59,7 @@ bool batch_shades(BatchModel model, const DrawUniforms& u);
 void shade_batch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]);
 
 // What a shading model provides to be shaded a batch at a time (models.hpp; the raster loop,
-// pipeline/raster.hpp, looks for these two): whether it can take this draw, and the batch
+// pipeline/raster/raster.hpp, looks for these two): whether it can take this draw, and the batch
 // form of fragment(), which also applies in.fog. The built-in models get them from here.
 template <BatchModel kModel>
 struct BatchForm {

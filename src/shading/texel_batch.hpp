@@ -1,9 +1,9 @@
-// Texture sampling for a batch of pixels at once: the raster loop (pipeline/raster.hpp) packs
-// the texture coordinates of up to 64 pixels (of one triangle, or of several small triangles of
-// one draw) and samples the base color map for
-// all of them with SIMD (texel_batch.cpp, compiled for every target Highway supports), instead
-// of one sample_map() call per pixel. Same operations as sample_map_at() lane by lane, so the
-// same bits; textures the SIMD path does not handle take sample_map_at() per pixel.
+// Texture sampling for a batch of pixels at once: the raster loop (pipeline/raster/raster.hpp)
+// packs the texture coordinates of up to 64 pixels (of one triangle, or of several small triangles
+// of one draw) and samples the base color map for all of them with SIMD (texel_batch.cpp, compiled
+// for every target Highway supports), instead of one sample_map() call per pixel. Same operations
+// as sample_map_at() lane by lane, so the same bits; textures the SIMD path does not handle take
+// sample_map_at() per pixel.
 #pragma once
 
 #include <cstdint>

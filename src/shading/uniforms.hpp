@@ -1,5 +1,5 @@
 // Per-draw constants the shading models read: written once per draw by the renderer
-// (pipeline/draw.cpp), read by vertex and fragment functions (shading/models.hpp).
+// (pipeline/renderer.cpp), read by vertex and fragment functions (shading/models.hpp).
 #pragma once
 
 #include <algorithm>
@@ -40,7 +40,7 @@ struct DrawUniforms {
   float near_plane = 0.1f;
   float far_plane = 100.0f;
   // Every color of the frame is a display value, stored as code / 255 (models.hpp's
-  // display_value; set when the frame runs, pipeline/draw.cpp).
+  // display_value; set when the frame runs, pipeline/frame_run.cpp).
   bool display_referred = false;
 };
 

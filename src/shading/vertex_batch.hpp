@@ -1,7 +1,7 @@
 // The Gouraud model's vertex() for a run of vertices at once, with SIMD (vertex_batch.cpp,
-// compiled for every target Highway supports): the vertex stage (pipeline/vertex.cpp) hands it
-// the vertices of one vertex pass instead of calling vertex() for each. Its lighting (a world
-// position, a view direction, a normalized half vector and a power per light) is most of the
+// compiled for every target Highway supports): the vertex stage (pipeline/geometry/vertex.cpp)
+// hands it the vertices of one vertex pass instead of calling vertex() for each. Its lighting (a
+// world position, a view direction, a normalized half vector and a power per light) is most of the
 // geometry stage's time in Gouraud-lit scenes. Same operations as GouraudShading::vertex()
 // (lit_models.hpp) lane by lane, so the same bits; draws with point or spot lights keep
 // vertex().

@@ -1,6 +1,6 @@
 // Stage: binning. Reads the set-up primitives in submission order (the geometry chunks'
-// sequences) and appends each to the bin of every tile it may cover; raster.cpp and line.cpp
-// read the bins.
+// sequences) and appends each to the bin of every tile it may cover; raster/ (render_tile.cpp,
+// line.cpp) read the bins.
 #pragma once
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 // Debug views (RenderSettings::debug_view): what the pipeline did instead of what it shaded.
-// Hooked into the frame at three points in draw.cpp: the draw's pipeline when it is recorded,
+// Hooked into the frame at three points in the renderer: the draw's pipeline when it is recorded,
 // the lighting and background before the frame runs, and the resolve of each tile.
 #pragma once
 

@@ -14,7 +14,7 @@ namespace facet::pipeline {
 // sky gradient) seen through that pixel.
 struct Background {
   glm::vec4 clear_color{0.0f};
-  // The tiles hold display values (draw.cpp's display_referred_frame): clear_color is one
+  // The tiles hold display values (frame_run.cpp's display_referred_frame): clear_color is one
   // (display_value_of), and resolve_tile rounds instead of encoding.
   bool display_referred = false;
   const Environment* environment = nullptr;  // non-null: draw the environment

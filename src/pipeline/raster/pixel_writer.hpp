@@ -47,7 +47,7 @@ struct TileContext {
   std::uint32_t entry = 0;
   std::uint64_t pixels_shaded = 0;
   // Pixels of small triangles waiting to be shaded together (WaitingPixels): the tile task's
-  // own (draw.cpp's render_tile sets it before the first triangle).
+  // own (render_tile.cpp sets it before the first triangle).
   WaitingPixels* waiting = nullptr;
   RasterKernels kernels = raster_kernels();  // the SIMD kernels, for the target chosen now
 };

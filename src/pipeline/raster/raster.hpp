@@ -58,8 +58,8 @@ inline std::uint64_t block_pixels_mask(int width, int height) {
 }
 
 // Rasterizes one triangle into the tile; a template over the shading model and the alpha
-// mode so that the per-pixel loop is specialised once per draw state (shade.cpp builds the
-// table). Small triangles of draws whose pixels may wait join the tile's waiting pixels
+// mode so that the per-pixel loop is specialised once per draw state (record/pipeline_table.cpp
+// builds the table). Small triangles of draws whose pixels may wait join the tile's waiting pixels
 // (small_triangles.hpp); other small triangles, after what waits is written, take
 // raster_small_triangle; the others, likewise after it, are walked in 8x8 blocks:
 //   1. blocks every edge keeps out are skipped, and edges that cover a block are not tested;

@@ -1,4 +1,4 @@
-// Stage: draw recording (draw.cpp), before any vertex is transformed. A draw whose mesh lies
+// Stage: draw recording (renderer.cpp), before any vertex is transformed. A draw whose mesh lies
 // wholly outside the view frustum is dropped there, so big worlds pay only for what is in view.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Stage: shade (see shade.hpp).
+// The table of specialised pipelines (see pipeline_table.hpp).
 #include "pipeline/record/pipeline_table.hpp"
 
 #include "shading/lit_models.hpp"

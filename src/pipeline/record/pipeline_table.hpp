@@ -1,6 +1,6 @@
-// Stage: shade — choosing the specialised raster routine. Each draw's shading model selects,
-// once per draw, a DrawPipeline: the vertex function, the per-triangle face hook and the
-// raster loop instantiated for that model (raster.hpp). No per-pixel dispatch remains.
+// The table of specialised pipelines, read once per draw when it is recorded. Each draw's shading
+// model selects, once per draw, a DrawPipeline: the vertex function, the per-triangle face hook and
+// the raster loop instantiated for that model (raster.hpp). No per-pixel dispatch remains.
 #pragma once
 
 #include "facet/light.hpp"

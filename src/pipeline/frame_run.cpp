@@ -1,0 +1,140 @@
+// The frame, top to bottom (Renderer::finish): geometry — vertex transform, primitive assembly,
+// clip and setup (geometry/, setup/) — then binning (bin/), then per tile in parallel: clear,
+// raster + shade, resolve (raster/render_tile.cpp, output/).
+#include <algorithm>
+#include <glm/matrix.hpp>
+
+#include "pipeline/bin/bin.hpp"
+#include "pipeline/geometry/geometry.hpp"
+#include "pipeline/geometry/vertex.hpp"
+#include "pipeline/output/debug_view.hpp"
+#include "pipeline/output/output.hpp"
+#include "pipeline/parallel.hpp"
+#include "pipeline/raster/raster.hpp"
+#include "pipeline/renderer_impl.hpp"
+#include "shading/lighting.hpp"
+
+namespace facet {
+
+using pipeline::Clock;
+using pipeline::is_blended;
+using pipeline::ms_since;
+using pipeline::TileBuffers;
+
+// Whether every color this frame writes into its tiles is a display value (an 8-bit code, as
+// the debug views and the glmark2 scenes' models write): then the tiles hold code / 255, which
+// resolve rounds back to the code, instead of the code's decoded linear value, which resolve's
+// sRGB encode turns back into the same code at 30 instructions a pixel (a fifth of
+// texture:linear's frame). The bytes are the same either way. Only for 8-bit sRGB targets at
+// exposure 0, without fog, environment, debug view or lines, when every draw's model writes
+// display values unblended.
+bool Renderer::Impl::display_referred_frame(const Framebuffer& target) const {
+  if (target.format() != ColorFormat::rgba8_srgb || settings.exposure != 0.0f) return false;
+  if (background.environment != nullptr || settings.debug_view != DebugView::none) return false;
+  if (lighting.fog.mode != FogMode::none || !frame.lines.empty()) return false;
+  return std::all_of(frame.draws.begin(), frame.draws.end(),
+                     [](const pipeline::DrawRecord& d) { return d.pipeline.display_referred; });
+}
+
+// Transparency: opaque (and cut-out) draws first in submission order, then blended draws back
+// to front, so each blends over what is behind it. Ties keep submission order.
+void Renderer::Impl::order_draws() {
+  frame.draw_order.clear();
+  for (std::uint32_t d = 0; d < frame.draws.size(); ++d) {
+    if (!is_blended(frame.draws[d].material.alpha_mode)) frame.draw_order.push_back(d);
+  }
+  std::size_t first_blended = frame.draw_order.size();
+  for (std::uint32_t d = 0; d < frame.draws.size(); ++d) {
+    if (is_blended(frame.draws[d].material.alpha_mode)) frame.draw_order.push_back(d);
+  }
+  std::stable_sort(frame.draw_order.begin() + first_blended, frame.draw_order.end(),
+                   [&](std::uint32_t a, std::uint32_t b) {
+                     return frame.draws[a].view_depth > frame.draws[b].view_depth;
+                   });
+}
+
+void Renderer::Impl::prepare_tiles(const Framebuffer& target) {
+  frame.width = target.width();
+  frame.height = target.height();
+  frame.tile_size = settings.tile_size;
+  frame.tiles_x = (frame.width + frame.tile_size - 1) / frame.tile_size;
+  frame.tiles_y = (frame.height + frame.tile_size - 1) / frame.tile_size;
+  std::size_t tiles = static_cast<std::size_t>(frame.tiles_x) * frame.tiles_y;
+  tile_pixels_shaded.assign(tiles, 0);
+  tile_ms.assign(tiles, 0.0);
+  tile_resolve_ms.assign(tiles, 0.0);
+  // Every worker's tile buffers are sized here, before the tasks: which worker renders which
+  // tile changes from frame to frame, and a buffer first grown inside a task would allocate
+  // in a steady-state frame.
+  const std::size_t pixels = static_cast<std::size_t>(frame.tile_size) * frame.tile_size;
+  const int blocks_x = (frame.tile_size + pipeline::kBlockSize - 1) / pipeline::kBlockSize;
+  for (TileBuffers& buffers : tile_buffers) {
+    if (buffers.color.size() >= pixels) continue;
+    buffers.color.resize(pixels);
+    buffers.depth.resize(pixels + pipeline::kDepthSlack);  // find_box_pixels reads past rows
+    buffers.block_max_depth.resize(static_cast<std::size_t>(blocks_x) * blocks_x);
+  }
+}
+
+void Renderer::Impl::run(Framebuffer& target) {
+  auto start = Clock::now();
+  frame.stats = {};
+  prepare_tiles(target);
+  // Per-draw pointers into frame-wide data, set now that the draw list no longer grows.
+  frame.lights.clear();
+  for (const Light& light : lighting.lights) frame.lights.push_back(shading::prepare_light(light));
+  const pipeline::ClipBounds guard = pipeline::guard_band_bounds(frame.width, frame.height);
+  for (pipeline::DrawRecord& draw : frame.draws) {
+    draw.uniforms.lights = frame.lights.data();
+    draw.uniforms.light_count = static_cast<int>(frame.lights.size());
+    draw.uniforms.material = &draw.material;
+    draw.uniforms.lighting = &lighting;
+    // Whether the batch form takes the draw depends on its lights and material: decided here
+    // once, not for every triangle.
+    draw.batch_shaded = draw.pipeline.batch_shades && draw.pipeline.batch_shades(draw.uniforms);
+    draw.batch_vertices =
+        draw.pipeline.batches_vertices && draw.pipeline.batches_vertices(draw.uniforms);
+    draw.clip_vertices = pipeline::keeps_clip_vertices(draw, guard);
+  }
+  order_draws();
+  background.clear_color = settings.clear_color;
+  background.environment =
+      lighting.environment.show_as_background ? &lighting.environment : nullptr;
+  background.inverse_view_projection = glm::inverse(frame.view_projection);
+  background.eye = camera.eye;
+  background.width = frame.width;
+  background.height = frame.height;
+  pipeline::prepare_debug_frame(settings.debug_view, lighting, background);
+
+  // Geometry: transform, assemble, clip, cull, set up — merged in submission order.
+  pipeline::run_geometry(frame, workers);
+  frame.stats.triangles_in += primitives_outside;  // draws dropped whole when recorded
+  frame.stats.culled += primitives_outside;
+  frame.stats.ms_geometry = ms_since(start);
+  const bool referred = display_referred_frame(target);
+  background.display_referred = frame.stats.display_referred = referred;
+  for (pipeline::DrawRecord& draw : frame.draws) draw.uniforms.display_referred = referred;
+  if (referred) background.clear_color = pipeline::display_value_of(settings.clear_color);
+
+  auto bin_start = Clock::now();
+  pipeline::bin_primitives(frame, workers);
+  frame.stats.ms_binning = ms_since(bin_start);
+
+  // Raster + shade + resolve: one tile per task, so any thread count gives the same image.
+  auto raster_start = Clock::now();
+  int tiles = frame.tiles_x * frame.tiles_y;
+  pipeline::parallel_tasks(tiles, workers, [&](int tile, int worker) {
+    auto tile_start = Clock::now();
+    render_tile(tile, worker, target);
+    tile_ms[tile] = ms_since(tile_start);
+  });
+  for (std::uint64_t n : tile_pixels_shaded) frame.stats.pixels_shaded += n;
+  frame.stats.ms_raster = ms_since(raster_start);
+  double busy = 0.0, resolving = 0.0;
+  for (std::size_t i = 0; i < tile_ms.size(); ++i)
+    busy += tile_ms[i], resolving += tile_resolve_ms[i];
+  frame.stats.ms_resolve = busy > 0.0 ? frame.stats.ms_raster * (resolving / busy) : 0.0;
+  frame.stats.ms_total = ms_since(start);
+}
+
+}  // namespace facet

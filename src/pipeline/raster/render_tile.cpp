@@ -1,0 +1,133 @@
+// Stage: raster + shade + resolve of one tile (Renderer::Impl::render_tile, one task per tile:
+// frame_run.cpp). Walks the tile's bin in submission order — skipping what occlusion shows
+// hidden (occlusion.hpp) — hands each triangle to its draw's specialised raster routine
+// (raster.hpp) and each line to line.cpp, fills the background where nothing covered, then
+// resolves the tile into the framebuffer (output/).
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "pipeline/output/debug_view.hpp"
+#include "pipeline/output/output.hpp"
+#include "pipeline/raster/occlusion.hpp"
+#include "pipeline/raster/raster.hpp"
+#include "pipeline/renderer_impl.hpp"
+
+namespace facet {
+
+using pipeline::Clock;
+using pipeline::ms_since;
+using pipeline::TileBuffers;
+
+namespace {
+
+// A bin's triangles lie far apart in the frame's arrays, each read for the first time since
+// setup wrote it, and the wait for each was 6 % of bunny-close's frame: render_tile asks for
+// the triangle kPrefetchAhead entries ahead, and for the varying planes of the one half as far
+// ahead (whose triangle, asked for earlier, says where they are). Always inline: out of line,
+// GCC took the function for one without effects (a prefetch changes no value) and dropped
+// its calls.
+constexpr std::ptrdiff_t kPrefetchAhead = 8;
+[[gnu::always_inline]] inline void prefetch_ahead(const pipeline::Frame& frame,
+                                                  const std::uint32_t* bin,
+                                                  const std::uint32_t* bin_end) {
+  if (bin_end - bin > kPrefetchAhead && !(bin[kPrefetchAhead] & pipeline::kLineBit)) {
+    // Every cache line of the record: 104 bytes at multiples of 8 often span three.
+    const auto* far = reinterpret_cast<const char*>(&frame.triangles[bin[kPrefetchAhead]]);
+    static_assert(sizeof(pipeline::SetupTriangle) <= 128);
+    __builtin_prefetch(far);
+    __builtin_prefetch(far + 64);
+    __builtin_prefetch(far + sizeof(pipeline::SetupTriangle) - 1);
+  }
+  if (bin_end - bin > kPrefetchAhead / 2 && !(bin[kPrefetchAhead / 2] & pipeline::kLineBit)) {
+    const pipeline::SetupTriangle& near = frame.triangles[bin[kPrefetchAhead / 2]];
+    __builtin_prefetch(frame.planes.data() + near.varying_planes);
+  }
+}
+
+}  // namespace
+
+void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
+  const int ts = frame.tile_size;
+  pipeline::TileContext tile;
+  tile.frame = &frame;
+  tile.x0 = (index % frame.tiles_x) * ts;
+  tile.y0 = (index / frame.tiles_x) * ts;
+  tile.x1 = std::min(tile.x0 + ts, frame.width);
+  tile.y1 = std::min(tile.y0 + ts, frame.height);
+  tile.stride = ts;
+  const std::uint32_t* bin = frame.bin_entries.data() + frame.bin_start[index];
+  const std::uint32_t* bin_end = frame.bin_entries.data() + frame.bin_start[index + 1];
+  const std::size_t bin_size = static_cast<std::size_t>(bin_end - bin);
+  const float scale = std::exp2(settings.exposure);
+  const DebugView debug = settings.debug_view;
+  if (bin == bin_end && !background.environment && debug == DebugView::none) {
+    // Lazy clear: nothing drawn here, write the clear values directly.
+    auto resolve_start = Clock::now();
+    pipeline::resolve_cleared_tile(tile, settings.clear_color, scale, target);
+    tile_resolve_ms[index] = ms_since(resolve_start);
+    return;
+  }
+  TileBuffers& buffers = tile_buffers[worker];  // sized in prepare_tiles
+  tile.blocks_x = (ts + pipeline::kBlockSize - 1) / pipeline::kBlockSize;
+  tile.color = buffers.color.data();
+  tile.depth = buffers.depth.data();
+  tile.block_max_depth = buffers.block_max_depth.data();
+  pipeline::WaitingPixels waiting;
+  tile.waiting = &waiting;
+  // Skip what the tile's last full, opaque, nearest triangle hides anyway (binning noted
+  // whether there may be one); in bins of a few (large) triangles, also what such triangles
+  // hide block by block.
+  const bool may_hide = frame.bin_may_hide[index] != 0;
+  if (may_hide) {
+    bin += pipeline::first_visible_entry(frame, bin, bin_end - bin, tile.x0, tile.y0, tile.x1,
+                                         tile.y1);
+  }
+  const std::uint32_t* const first_drawn = bin;
+  // The views count or color what is drawn in their own ways: they always start cleared.
+  const bool color_hidden = debug == DebugView::none && may_hide && bin != bin_end &&
+                            pipeline::hides_clear(frame, *bin, tile.x0, tile.y0, tile.x1, tile.y1);
+  pipeline::clear_tile(tile, background, color_hidden);
+  std::uint32_t block_starts[pipeline::kMaxTileBlocks];
+  if (bin_end - bin <= static_cast<std::ptrdiff_t>(pipeline::kMaxBlockOcclusionEntries) &&
+      pipeline::first_visible_entries_per_block(frame, bin, bin_end - bin, tile.x0, tile.y0,
+                                                tile.x1, tile.y1, tile.blocks_x, block_starts)) {
+    tile.block_starts = block_starts;
+  }
+  // The environment is drawn late, into what no opaque triangle covered (fill_background):
+  // before the first primitive that could write color without depth, or at the end.
+  bool background_pending = background.environment != nullptr;
+  for (; bin != bin_end; ++bin) {
+    const std::uint32_t entry = *bin;
+    tile.entry = static_cast<std::uint32_t>(bin - first_drawn);
+    prefetch_ahead(frame, bin, bin_end);
+    if (entry & pipeline::kLineBit) {
+      // The overdraw heat map counts triangles; a line would overwrite the count.
+      if (debug == DebugView::overdraw) continue;
+      pipeline::flush_waiting(tile);
+      if (background_pending)
+        pipeline::fill_background(tile, background), background_pending = false;
+      pipeline::raster_line(tile, frame.lines[entry & ~pipeline::kLineBit]);
+    } else {
+      const pipeline::SetupTriangle& t = frame.triangles[entry];
+      const pipeline::DrawPipeline& draw_pipeline = frame.draws[t.draw].pipeline;
+      if (background_pending && !draw_pipeline.occludes) {
+        pipeline::flush_waiting(tile);
+        pipeline::fill_background(tile, background), background_pending = false;
+      }
+      draw_pipeline.raster(tile, t);
+    }
+  }
+  pipeline::flush_waiting(tile);
+  if (background_pending) pipeline::fill_background(tile, background);
+  auto resolve_start = Clock::now();
+  if (debug == DebugView::none) {
+    pipeline::resolve_tile(tile, scale, background.display_referred, target);
+  } else {
+    pipeline::resolve_debug_tile(tile, debug, bin_size, scale, target);
+  }
+  tile_resolve_ms[index] = ms_since(resolve_start);
+  tile_pixels_shaded[index] = tile.pixels_shaded;
+}
+
+}  // namespace facet

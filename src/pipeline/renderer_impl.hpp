@@ -1,0 +1,98 @@
+// The renderer's state between draw() and finish(): what Renderer records (renderer.cpp), what
+// the frame run reads and keeps (frame_run.cpp), and each worker's tile buffers, which
+// render_tile (raster/render_tile.cpp) draws into.
+#pragma once
+
+#include <tbb/global_control.h>
+#include <tbb/info.h>
+#include <tbb/task_arena.h>
+
+#include <chrono>
+#include <cstdint>
+#include <glm/vec4.hpp>
+#include <memory>
+#include <optional>
+#include <unordered_map>
+#include <vector>
+
+#include "facet/renderer.hpp"
+#include "pipeline/frame.hpp"
+#include "pipeline/output/output.hpp"
+
+namespace facet {
+namespace pipeline {
+
+using Clock = std::chrono::steady_clock;
+
+inline double ms_since(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+inline bool is_blended(AlphaMode mode) {
+  return mode == AlphaMode::blend || mode == AlphaMode::additive;
+}
+
+// A worker's tile buffers, reused for every tile it renders.
+struct TileBuffers {
+  std::vector<glm::vec4> color;
+  std::vector<float> depth;
+  std::vector<float> block_max_depth;  // one per 8x8 block (raster/raster.hpp)
+};
+
+}  // namespace pipeline
+
+struct Renderer::Impl {
+  RenderSettings settings;
+  int workers;
+  // oneTBB caps workers at the core count unless told otherwise; more threads than cores is
+  // a legitimate request (the determinism tests make it), so raise the cap while we live.
+  std::optional<tbb::global_control> allow_workers;
+  tbb::task_arena arena;
+  std::vector<pipeline::TileBuffers> tile_buffers;  // one per worker
+  pipeline::Frame frame;
+  std::vector<std::uint64_t> tile_pixels_shaded;
+  std::vector<double> tile_ms, tile_resolve_ms;  // per tile: its task, and its resolve
+  pipeline::Background background;
+  Camera camera;
+  Lighting lighting;
+  bool recording = false;
+  std::uint64_t primitives_outside = 0;  // of draws outside the frustum, never recorded
+  // Meshes drawn through shared pointers, checked once (Renderer::draw): at the islands' 750
+  // draws a frame, checking every mesh again took 4 % of a 720p frame on 2 threads, all of it
+  // on the recording thread. An entry holds its mesh, so no other mesh can take its address
+  // while it is remembered; it is forgotten a frame after the last that drew it.
+  struct CheckedMesh {
+    std::shared_ptr<const Mesh> mesh;
+    std::optional<pipeline::MeshBox> box;
+    std::uint64_t last_frame = 0;
+  };
+  std::unordered_map<const Mesh*, CheckedMesh> checked_meshes;
+  std::uint64_t frame_number = 0;
+
+  explicit Impl(const RenderSettings& s)
+      : settings(s),
+        workers(s.threads == 0 ? tbb::info::default_concurrency() : s.threads),
+        allow_workers(workers > tbb::info::default_concurrency()
+                          ? std::make_optional<tbb::global_control>(
+                                tbb::global_control::max_allowed_parallelism, workers)
+                          : std::nullopt),
+        arena(workers),
+        tile_buffers(workers) {}
+
+  // Records a draw of a mesh that Mesh::validate() accepts, whose bounds are `box`.
+  void record(const Mesh& mesh, const std::optional<pipeline::MeshBox>& box,
+              const Material& material, const glm::mat4& transform,
+              const pipeline::DrawPipeline& pipe);
+  // The bounds of a mesh drawn through a shared pointer, checked the first time (draw()).
+  const std::optional<pipeline::MeshBox>& checked_bounds(const std::shared_ptr<const Mesh>& mesh);
+  // Records a draw of any mesh: checks it first.
+  void check_and_record(const Mesh& mesh, const Material& material, const glm::mat4& transform,
+                        const pipeline::DrawPipeline& pipe);
+  void prepare_tiles(const Framebuffer& target);
+  void render_tile(int index, int worker, Framebuffer& target);
+  void run(Framebuffer& target);
+  void order_draws();
+  bool display_referred_frame(const Framebuffer& target) const;
+};
+
+}  // namespace facet

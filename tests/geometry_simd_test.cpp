@@ -113,42 +113,5 @@ TEST(GeometrySimd, VertexPassMatchesTheScalarCodeOnEveryTarget) {
   hwy::SetSupportedTargetsForTest(0);
 }
 
-TEST(GeometrySimd, PlanesMatchTheScalarPlaneOnEveryTarget) {
-  std::mt19937 rng(11);
-  std::uniform_real_distribution<float> pixel(0.0f, 2000.0f), value(-2.0f, 2.0f);
-  for (std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-    hwy::SetSupportedTargetsForTest(target);
-    for (int t = 0; t < 2000; ++t) {
-      // Snapped positions (multiples of 1/256), some triangles slivers.
-      float x[3], y[3];
-      for (int i = 0; i < 3; ++i) {
-        x[i] = std::round(pixel(rng) * 256.0f) / 256.0f;
-        y[i] = std::round(pixel(rng) * 256.0f) / 256.0f;
-        if (t % 3 == 0 && i > 0) y[i] = y[0] + static_cast<float>(i) / 256.0f;  // slivers
-      }
-      const pipeline::PlaneSolver solver(x, y);
-      float values[3][pipeline::kMaxVaryings];
-      for (auto& vertex : values) {
-        for (float& v : vertex) v = rng() % 8 == 0 ? value(rng) * 3e38f : value(rng);
-      }
-      const float* rows[3] = {values[0], values[1], values[2]};
-      for (int count : {0, 1, 2, 3, 4, 6, 12, 16}) {
-        pipeline::Plane planes[pipeline::kMaxVaryings];
-        solver.planes(rows, count, planes);
-        for (int k = 0; k < count; ++k) {
-          const pipeline::Plane expected = solver.plane(values[0][k], values[1][k], values[2][k]);
-          ASSERT_TRUE(same_bits(planes[k].at_ref, expected.at_ref) &&
-                      (same_bits(planes[k].dx, expected.dx) ||
-                       (std::isnan(planes[k].dx) && std::isnan(expected.dx))) &&
-                      (same_bits(planes[k].dy, expected.dy) ||
-                       (std::isnan(planes[k].dy) && std::isnan(expected.dy))))
-              << hwy::TargetName(target) << " triangle " << t << " plane " << k << " of " << count;
-        }
-      }
-    }
-  }
-  hwy::SetSupportedTargetsForTest(0);
-}
-
 }  // namespace
 }  // namespace facet::test

@@ -1,5 +1,5 @@
-// Batched setup (setup_batch.hpp) writes, on every SIMD target, the same triangles, planes and
-// sequence entries as setting up one triangle at a time (setup_projected_triangle), bit for bit:
+// The setup kernel (setup_batch.hpp) writes, on every SIMD target, the same triangles, planes
+// and sequence entries as setup's definition one triangle at a time (below), bit for bit:
 // for small, tiny (covering a pixel centre or none), large, degenerate and flipped triangles,
 // vertices across the guard band, edges on the fill rule's cases, and plane values that overflow
 // or are not numbers; and nothing past the chunk's region of planes changes.
@@ -12,6 +12,7 @@
 #include <cstring>
 #include <limits>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "pipeline/geometry/primitive_sink.hpp"
@@ -76,6 +77,65 @@ Inputs inputs_of(const std::vector<Triangle>& triangles, const std::vector<float
   return in;
 }
 
+// Setup's definition, one triangle at a time and plainly: the oracle the kernel is held to.
+// Drops a triangle that snapped to nothing or to the other winding, whose pixel box is empty,
+// or that is small and covers none of its box's pixel centres; otherwise writes its edge
+// functions (top-left rule folded into c), pixel box, and depth, 1 / w and varying planes.
+bool set_up_by_definition(pipeline::PrimitiveSink& out, std::uint32_t draw,
+                          const ScreenVertex screen[3], const float* const over_w[3],
+                          int varyings, bool front_facing) {
+  using namespace pipeline;
+  ScreenVertex s[3] = {screen[0], screen[1], screen[2]};
+  const float* values[3] = {over_w[0], over_w[1], over_w[2]};
+  const std::int64_t area = signed_area(s[0], s[1], s[2]);
+  if (area == 0 || (area < 0) != front_facing) return false;
+  if (area < 0) std::swap(s[1], s[2]), std::swap(values[1], values[2]);
+  SetupTriangle t;
+  const std::int64_t min_x = std::min({s[0].x, s[1].x, s[2].x});
+  const std::int64_t max_x = std::max({s[0].x, s[1].x, s[2].x});
+  const std::int64_t min_y = std::min({s[0].y, s[1].y, s[2].y});
+  const std::int64_t max_y = std::max({s[0].y, s[1].y, s[2].y});
+  t.min_x = std::max(0, first_centre_at_or_after(min_x));
+  t.min_y = std::max(0, first_centre_at_or_after(min_y));
+  t.max_x = std::min(kWidth - 1, last_centre_at_or_before(max_x));
+  t.max_y = std::min(kHeight - 1, last_centre_at_or_before(max_y));
+  if (t.min_x > t.max_x || t.min_y > t.max_y) return false;
+  for (int i = 0; i < 3; ++i) {
+    const ScreenVertex &p = s[i], &q = s[(i + 1) % 3];
+    t.a[i] = p.y - q.y;
+    t.b[i] = q.x - p.x;
+    const std::int64_t bias = is_top_left(q.x - p.x, q.y - p.y) ? 0 : -1;
+    t.c[i] = -(std::int64_t{t.a[i]} * p.x + std::int64_t{t.b[i]} * p.y) + bias;
+  }
+  bool covers = false;
+  for (int y = t.min_y; y <= t.max_y; ++y) {
+    for (int x = t.min_x; x <= t.max_x; ++x) {
+      covers = covers || (edge_at_centre(t, 0, x, y) >= 0 && edge_at_centre(t, 1, x, y) >= 0 &&
+                          edge_at_centre(t, 2, x, y) >= 0);
+    }
+  }
+  if (t.max_x - t.min_x < kProbedBoxSide && t.max_y - t.min_y < kProbedBoxSide &&
+      max_x - min_x < kProbedSpan && max_y - min_y < kProbedSpan && !covers) {
+    return false;
+  }
+  float px[3], py[3];
+  for (int i = 0; i < 3; ++i) {
+    px[i] = static_cast<float>(s[i].x) / kSubpixelScale;
+    py[i] = static_cast<float>(s[i].y) / kSubpixelScale;
+  }
+  t.ref_x = px[0], t.ref_y = py[0];
+  const PlaneSolver solver(px, py);
+  t.z = solver.plane(s[0].z, s[1].z, s[2].z);
+  t.inv_w = solver.plane(s[0].inv_w, s[1].inv_w, s[2].inv_w);
+  const TriangleSlot slot = out.add_triangle(t);
+  for (int k = 0; k < varyings; ++k)
+    slot.planes[k] = solver.plane(values[0][k], values[1][k], values[2][k]);
+  t.varying_planes = slot.plane_index;
+  t.draw = draw;
+  *slot.triangle = t;
+  return true;
+}
+
 void one_at_a_time(const Inputs& in, int varyings, Written& w) {
   const std::size_t n = in.front_facing.size();
   make_frame(n, varyings, w);
@@ -87,10 +147,7 @@ void one_at_a_time(const Inputs& in, int varyings, Written& w) {
       s[i] = in.projected[in.vertex[i][t]].screen;
       values[i] = in.over_w.data() + in.vertex[i][t] * varyings;
     }
-    if (!pipeline::setup_projected_triangle(sink, kWidth, kHeight, 7, s, values, varyings,
-                                            in.front_facing[t] != 0)) {
-      ++w.dropped;
-    }
+    if (!set_up_by_definition(sink, 7, s, values, varyings, in.front_facing[t] != 0)) ++w.dropped;
   }
 }
 
@@ -188,7 +245,7 @@ std::vector<Triangle> awkward_triangles(std::mt19937& rng, std::uint32_t vertice
   return out;
 }
 
-TEST(SetupBatch, WritesWhatSettingUpOneAtATimeWritesOnEveryTarget) {
+TEST(SetupBatch, WritesWhatTheDefinitionWritesOnEveryTarget) {
   std::mt19937 rng(11);
   constexpr std::uint32_t kVertices = 500;
   const std::vector<Triangle> triangles = awkward_triangles(rng, kVertices);

@@ -15,6 +15,7 @@
 #include "pipeline/geometry/primitive_sink.hpp"
 #include "pipeline/raster/block_raster.hpp"
 #include "pipeline/setup/setup.hpp"
+#include "pipeline/setup/setup_batch.hpp"
 #include "support/forced_target.hpp"
 
 namespace facet::test {
@@ -34,9 +35,14 @@ bool set_up(const pipeline::ScreenVertex s[3], SetupTriangle& out) {
   pipeline::GeometryChunk chunk;
   chunk.triangles = {0, 1, 0};
   pipeline::PrimitiveSink sink(frame, chunk, 0);
-  const float* no_varyings[3] = {nullptr, nullptr, nullptr};
-  const bool front = pipeline::signed_area(s[0], s[1], s[2]) < 0;
-  if (!pipeline::setup_projected_triangle(sink, kWidth, kHeight, 0, s, no_varyings, 0, front))
+  pipeline::ProjectedVertex projected[3] = {};
+  for (int i = 0; i < 3; ++i) projected[i].screen = s[i];
+  const float no_varyings[pipeline::kOverWSlack] = {};
+  const std::uint32_t index[3][1 + pipeline::kSetupBatchSlack] = {{0}, {1}, {2}};
+  const std::uint32_t front[1 + pipeline::kSetupBatchSlack] = {
+      pipeline::signed_area(s[0], s[1], s[2]) < 0 ? 1u : 0u};
+  const pipeline::SetupBatch batch{1, {index[0], index[1], index[2]}, front};
+  if (pipeline::setup_batch_kernel()(batch, {sink, kWidth, kHeight, 0, projected, no_varyings, 0}))
     return false;
   out = frame.triangles[0];
   return true;

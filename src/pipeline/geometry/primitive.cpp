@@ -25,9 +25,19 @@ struct Assembler {
   const DrawVertices& vertices;
   ClipBounds guard;
   bool hooks = has_triangle_hooks(draw);
-  // Set-up of the triangles that need no clipping, a run of culling's survivors at a time
-  // (setup_batch.hpp); null: each is set up as it comes.
+  // Every triangle is set up by the setup kernel (setup_batch.hpp): those that need no clipping
+  // a run of culling's survivors at a time, from the draw's projected vertices (unless
+  // by_runs is false: wireframe draws, whose edges come before their triangle's fill, and draws
+  // with per-triangle hooks); the others one clipped fan at a time (set_up_fan).
   SetupBatchKernel setup_kernel = nullptr;
+  bool by_runs = false;
+  // set_up_fan's vertices, projected here; the kernel reads indices and varyings a vector at a
+  // time past their ends (kSetupBatchSlack, kOverWSlack).
+  static constexpr int kMaxFan = kMaxClipVertices - 2;
+  ProjectedVertex fan_vertices[kMaxClipVertices] = {};
+  float fan_over_w[kMaxClipVertices * kMaxVaryings + kOverWSlack] = {};
+  std::uint32_t fan_index[3][kMaxFan + kSetupBatchSlack] = {};
+  std::uint32_t fan_front_facing[kMaxFan + kSetupBatchSlack] = {};
 
   bool culls_front = draw.material.cull == CullMode::front;
   bool culls_back = draw.material.cull == CullMode::back;
@@ -72,10 +82,28 @@ struct Assembler {
     return any_out & (kClipNear | kClipFar);
   }
 
-  // Whether a triangle culling accepted goes to the setup kernel: assemble()'s common case,
-  // tested without its call.
-  bool kernel_sets_up(unsigned codes) const {
-    return setup_kernel != nullptr && clip_planes(codes) == 0;
+  // Whether a triangle culling accepted goes to the setup kernel in a run: assemble()'s common
+  // case, tested without its call.
+  bool kernel_sets_up(unsigned codes) const { return by_runs && clip_planes(codes) == 0; }
+
+  // Sets up the fan (v[0], v[i], v[i + 1]) of a convex polygon of `count` vertices in clip
+  // space, inside the guard band, with the setup kernel; returns how many triangles it dropped.
+  int set_up_fan(const ClipVertex* v, int count, bool front_facing) {
+    const int n = draw.pipeline.varyings;
+    for (int i = 0; i < count; ++i) {
+      fan_vertices[i].screen = to_screen(v[i].clip, width, height);
+      for (int k = 0; k < n; ++k)
+        fan_over_w[i * n + k] = v[i].varyings[k] * fan_vertices[i].screen.inv_w;
+    }
+    const int triangles = count - 2;
+    for (int t = 0; t < triangles; ++t) {
+      fan_index[0][t] = 0;
+      fan_index[1][t] = static_cast<std::uint32_t>(t + 1);
+      fan_index[2][t] = static_cast<std::uint32_t>(t + 2);
+      fan_front_facing[t] = front_facing ? 1u : 0u;
+    }
+    const SetupBatch batch{triangles, {fan_index[0], fan_index[1], fan_index[2]}, fan_front_facing};
+    return setup_kernel(batch, {out, width, height, draw_index, fan_vertices, fan_over_w, n});
   }
 
   // Edges, clipping and setup of a triangle culling accepted that the setup kernel does not
@@ -93,13 +121,12 @@ struct Assembler {
 
     const unsigned planes = clip_planes(a.codes);
     if (planes == 0 && !hooks) {  // set up from the projected vertices (wireframe draws)
-      const ScreenVertex s[3] = {vertices.projected[i0].screen, vertices.projected[i1].screen,
-                                 vertices.projected[i2].screen};
-      const int n = pipe.varyings;
-      const float* over_w[3] = {vertices.over_w.data() + i0 * n, vertices.over_w.data() + i1 * n,
-                                vertices.over_w.data() + i2 * n};
-      if (!setup_projected_triangle(out, width, height, draw_index, s, over_w, n, front_facing))
-        ++counts.culled;
+      const std::uint32_t index[3][1 + kSetupBatchSlack] = {{i0}, {i1}, {i2}};
+      const std::uint32_t front[1 + kSetupBatchSlack] = {front_facing ? 1u : 0u};
+      const SetupBatch batch{1, {index[0], index[1], index[2]}, front};
+      counts.culled +=
+          setup_kernel(batch, {out, width, height, draw_index, vertices.projected.data(),
+                               vertices.over_w.data(), pipe.varyings});
       return;
     }
 
@@ -126,18 +153,14 @@ struct Assembler {
       }
     }
     if (planes == 0) {
-      const ClipVertex* tri[3] = {&v[0], &v[1], &v[2]};
-      if (!setup_triangle(out, width, height, draw_index, tri, pipe.varyings, front_facing))
-        ++counts.culled;
+      counts.culled += set_up_fan(v, 3, front_facing);
       return;
     }
     ++counts.clipped;
     clip_polygon(polygon, planes, guard, pipe.varyings);
-    // Fan re-triangulation of the convex clipped polygon.
-    for (int i = 1; i + 1 < polygon.count; ++i) {
-      const ClipVertex* tri[3] = {&v[0], &v[i], &v[i + 1]};
-      setup_triangle(out, width, height, draw_index, tri, pipe.varyings, front_facing);
-    }
+    // Fan re-triangulation of the convex clipped polygon (its triangles dropped at setup are
+    // not counted as culled: the triangle was drawn, in part or not).
+    if (polygon.count >= 3) set_up_fan(v, polygon.count, front_facing);
   }
 
   // Sets up survivors [first, end), which need no clipping, with the kernel.
@@ -235,9 +258,9 @@ void assemble_primitives(const Frame& frame, std::uint32_t draw_index, const Dra
   }
   // Edges come before their triangle's fill, so wireframe draws set up one at a time (and draws
   // of edges only set up no triangle).
-  if (!assembler.hooks && !draw.pipeline.draws_edges && draw.pipeline.fills_triangles) {
-    assembler.setup_kernel = setup_batch_kernel();
-  }
+  assembler.setup_kernel = setup_batch_kernel();
+  assembler.by_runs =
+      !assembler.hooks && !draw.pipeline.draws_edges && draw.pipeline.fills_triangles;
   assemble_triangles(assembler, mesh, begin, end);
 }
 

@@ -12,18 +12,6 @@ Plane make_plane(const float x[3], const float y[3], const float value[3]) {
   return PlaneSolver(x, y).plane(value);
 }
 
-bool setup_triangle(PrimitiveSink& out, int width, int height, std::uint32_t draw,
-                    const ClipVertex* const v[3], int varyings, bool front_facing) {
-  ScreenVertex s[3];
-  float over_w[3][kMaxVaryings];
-  for (int i = 0; i < 3; ++i) {
-    s[i] = to_screen(v[i]->clip, width, height);
-    for (int k = 0; k < varyings; ++k) over_w[i][k] = v[i]->varyings[k] * s[i].inv_w;
-  }
-  const float* values[3] = {over_w[0], over_w[1], over_w[2]};
-  return setup_projected_triangle(out, width, height, draw, s, values, varyings, front_facing);
-}
-
 bool setup_line(PrimitiveSink& out, int width, int height, const glm::vec4& a, const glm::vec4& b,
                 const glm::vec4& color) {
   ScreenVertex s0 = to_screen(a, width, height);

@@ -1,6 +1,8 @@
-// Stage: setup. Reads clipped triangles/segments (clip space) from primitive.cpp, projects
-// them, snaps to fixed point (fixed_point.hpp), culls by facing, and writes SetupTriangle /
-// SetupLine records plus their plane equations into the Frame for binning (bin.cpp).
+// Stage: setup, its definitions. Triangles are set up by the setup kernel (setup_batch.hpp),
+// segments by setup_line here: both project (to_screen), snap to fixed point (fixed_point.hpp)
+// and write SetupTriangle / SetupLine records plus their plane equations into the Frame for
+// binning (bin/). What the kernel and the reference rasterizer share is here: the viewport
+// transform, the signed area, the fill rule, the plane solver, the pixel-centre bounds.
 #pragma once
 
 #include <algorithm>
@@ -66,10 +68,6 @@ class PlaneSolver {
     return p;
   }
 
-  // out[k] = plane(values[0][k], values[1][k], values[2][k]) for k < count, bit for bit, several
-  // k at a time on SIMD targets (setup_planes.cpp).
-  void planes(const float* const values[3], int count, Plane* out) const;
-
  private:
   Coefficients c_;
 };
@@ -122,7 +120,7 @@ inline int last_centre_at_or_before(std::int64_t hi) {
 }
 
 // Triangles whose pixel box is at most this many pixels a side are dropped at setup when they
-// cover none of its pixel centres (covers_a_centre): they would draw nothing, yet be written,
+// cover none of its pixel centres: they would draw nothing, yet be written,
 // binned and visited by every tile they touch. In `million`, 16 % of the small triangles'
 // tile visits found no pixel, their boxes 3.5 pixels on average.
 inline constexpr int kProbedBoxSide = 4;
@@ -130,90 +128,6 @@ inline constexpr int kProbedBoxSide = 4;
 // a box of at most kProbedBoxSide centres a side does unless the frame's edge clamped it: the
 // batch kernel's probe then computes in 32 bits (setup_batch.cpp).
 inline constexpr std::int32_t kProbedSpan = 1 << 14;
-
-// Whether triangle t, its edges and pixel box set, covers the centre of a pixel of its box.
-inline bool covers_a_centre(const SetupTriangle& t) {
-  for (int y = t.min_y; y <= t.max_y; ++y) {
-    for (int x = t.min_x; x <= t.max_x; ++x) {
-      if (edge_at_centre(t, 0, x, y) >= 0 && edge_at_centre(t, 1, x, y) >= 0 &&
-          edge_at_centre(t, 2, x, y) >= 0) {
-        return true;
-      }
-    }
-  }
-  return false;
-}
-
-// Sets up one triangle (already clipped to the guard band and in front of the eye) of draw
-// `draw`. `front_facing` is its facing as decided before clipping; the snapped triangle is
-// dropped if it is degenerate, its snapped winding disagrees or, small, it covers no pixel
-// centre (kProbedBoxSide). Returns true if appended.
-bool setup_triangle(PrimitiveSink& out, int width, int height, std::uint32_t draw,
-                    const ClipVertex* const v[3], int varyings, bool front_facing);
-
-// The same from vertices already projected (to_screen) with their varyings already multiplied
-// by inv_w (over_w[i] points at vertex i's `varyings` floats): the fast path for triangles that
-// need no clipping, whose vertices the vertex stage projected once for all their triangles.
-// Always inline (it is too big for GCC to inline by itself) so that primitive assembly's
-// arrays reach it in registers: passed through memory they were written as 8-byte stores and
-// read back as 16-byte loads, which stall store forwarding (a fifth of setup's time).
-[[gnu::always_inline]] inline bool setup_projected_triangle(PrimitiveSink& out, int width,
-                                                            int height, std::uint32_t draw,
-                                                            const ScreenVertex screen[3],
-                                                            const float* const over_w[3],
-                                                            int varyings, bool front_facing) {
-  ScreenVertex s[3] = {screen[0], screen[1], screen[2]};
-  const float* values[3] = {over_w[0], over_w[1], over_w[2]};
-  std::int64_t area = signed_area(s[0], s[1], s[2]);
-  // Degenerate after snapping, or snapping flipped a sliver: no pixel centres to cover.
-  if (area == 0 || (area < 0) != front_facing) return false;
-  if (area < 0) {  // make the winding clockwise on screen (positive area) for the edge tests
-    std::swap(s[1], s[2]);
-    std::swap(values[1], values[2]);
-  }
-
-  SetupTriangle t;
-  std::int64_t min_x = std::min({s[0].x, s[1].x, s[2].x}),
-               max_x = std::max({s[0].x, s[1].x, s[2].x});
-  std::int64_t min_y = std::min({s[0].y, s[1].y, s[2].y}),
-               max_y = std::max({s[0].y, s[1].y, s[2].y});
-  t.min_x = std::max(0, first_centre_at_or_after(min_x));
-  t.min_y = std::max(0, first_centre_at_or_after(min_y));
-  t.max_x = std::min(width - 1, last_centre_at_or_before(max_x));
-  t.max_y = std::min(height - 1, last_centre_at_or_before(max_y));
-  if (t.min_x > t.max_x || t.min_y > t.max_y) return false;
-
-  for (int i = 0; i < 3; ++i) {
-    const ScreenVertex& p = s[i];
-    const ScreenVertex& q = s[(i + 1) % 3];
-    // E(X, Y) = (qx - px)(Y - py) - (qy - py)(X - px): positive inside a clockwise triangle.
-    t.a[i] = p.y - q.y;
-    t.b[i] = q.x - p.x;
-    const std::int64_t bias = is_top_left(q.x - p.x, q.y - p.y) ? 0 : -1;
-    t.c[i] = -(std::int64_t{t.a[i]} * p.x + std::int64_t{t.b[i]} * p.y) + bias;
-  }
-  if (t.max_x - t.min_x < kProbedBoxSide && t.max_y - t.min_y < kProbedBoxSide &&
-      max_x - min_x < kProbedSpan && max_y - min_y < kProbedSpan && !covers_a_centre(t)) {
-    return false;
-  }
-
-  float px[3], py[3];
-  for (int i = 0; i < 3; ++i) {
-    px[i] = static_cast<float>(s[i].x) / kSubpixelScale;
-    py[i] = static_cast<float>(s[i].y) / kSubpixelScale;
-  }
-  t.ref_x = px[0];
-  t.ref_y = py[0];
-  const PlaneSolver solver(px, py);
-  t.z = solver.plane(s[0].z, s[1].z, s[2].z);
-  t.inv_w = solver.plane(s[0].inv_w, s[1].inv_w, s[2].inv_w);
-  const TriangleSlot slot = out.add_triangle(t);
-  solver.planes(values, varyings, slot.planes);
-  t.varying_planes = slot.plane_index;
-  t.draw = draw;
-  *slot.triangle = t;
-  return true;
-}
 
 // Sets up one clipped segment; returns true if it touches the framebuffer.
 bool setup_line(PrimitiveSink& out, int width, int height, const glm::vec4& a, const glm::vec4& b,

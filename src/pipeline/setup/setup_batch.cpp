@@ -1,12 +1,14 @@
-// Stage: setup, batched (see setup_batch.hpp). Highway compiles this file once per SIMD target
-// (foreach_target.h re-includes it); setup_batch_kernel() hands out the chosen target's kernel.
+// Stage: setup of triangles (see setup_batch.hpp). Highway compiles this file once per SIMD
+// target (foreach_target.h re-includes it); setup_batch_kernel() hands out the chosen target's
+// kernel.
 //
-// Bit for bit setup_projected_triangle's results: each lane does its double operations in the
-// same order (no fused multiply-add: -ffp-contract=off, and Highway's Mul/Sub/Div are single
+// The same bits on every target: each lane does PlaneSolver's (setup.hpp) double operations in
+// its order (no fused multiply-add: -ffp-contract=off, and Highway's Mul/Sub/Div are single
 // instructions), and its conversions are exact or correctly rounded. The integer products
 // (signed area, edge constants) are done in double, where they are exact: snapped coordinates
-// of triangles that need no clipping lie in the guard band, within +-2^22 fixed-point units
-// (fixed_point.hpp), so every product stays below 2^46 and every sum below 2^47 < 2^53.
+// lie in the guard band (triangles that needed clipping were clipped to it), within +-2^22
+// fixed-point units (fixed_point.hpp), so every product stays below 2^46 and every sum below
+// 2^47 < 2^53.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "pipeline/setup/setup_batch.cpp"
 #include "pipeline/setup/setup_batch.hpp"
@@ -74,11 +76,11 @@ struct Coefficients {
   }
 };
 
-// covers_a_centre (setup.hpp) for the lanes in `probed`, whose boxes are at most
+// For the lanes in `probed`, whose boxes are at most
 // kProbedBoxSide pixels a side and whose triangles span less than kProbedSpan: whether each
 // covers one of its box's pixel centres, that is whether at one of them no edge function is
 // negative. Edge i from vertex (x_i, y_i) at centre (X, Y) is a_i (X - x_i) + b_i (Y - y_i) +
-// bias_i, the value a_i X + b_i Y + c_i setup_projected_triangle's c gives, exactly in 32
+// bias_i, the value a_i X + b_i Y + c_i of the triangle's edge function, exactly in 32
 // bits: |a|, |b| and |X - x_i| stay below 2^15, the products below 2^30. The centres visited
 // are the largest probed box's; the sign bit marks those past a lane's own box. (Comparisons
 // per centre and edge in double made the probe a fifth of the kernel.)

@@ -1,10 +1,9 @@
-// Stage: setup, batched. Primitive assembly (primitive.cpp) hands the triangles culling kept that
-// need no clipping, a run at a time, to a SIMD kernel (setup_batch.cpp, compiled for every target
-// Highway supports) sets them up: winding, pixel box, edge functions, depth and 1 / w planes
-// with one triangle per lane, then each kept triangle's varying planes with one plane per lane.
-// It writes them, in order, as setup_projected_triangle (setup.hpp) would one at a time, bit for
-// bit. One at a time, a triangle's setup waits on its own double-precision division and
-// products; across lanes they overlap.
+// Stage: setup of triangles. Primitive assembly (primitive.cpp) hands the triangles culling kept
+// that need no clipping, a run at a time, and each clipped polygon's fan to a SIMD kernel
+// (setup_batch.cpp, compiled for every target Highway supports), which sets them up: winding,
+// pixel box, edge functions, depth and 1 / w planes with one triangle per lane, then each kept
+// triangle's varying planes with one plane per lane. One at a time, a triangle's setup waits
+// on its own double-precision division and products; across lanes they overlap.
 #pragma once
 
 #include <cstdint>

@@ -10,6 +10,7 @@
 #include <random>
 #include <vector>
 
+#include "core/simd_target.hpp"
 #include "pipeline/geometry/clip.hpp"
 #include "pipeline/geometry/primitive.hpp"
 #include "support/forced_target.hpp"
@@ -72,7 +73,7 @@ TEST(CullBatch, KeepsWhatTheDefinitionKeepsOnEveryTarget) {
   }
   for (std::int64_t target : simd_targets()) {
     ForcedTarget forced(target);
-    const pipeline::CullKernel cull = pipeline::cull_kernel();
+    const pipeline::CullKernel cull = pipeline::cull_kernel(chosen_simd_target());
     for (int mode = 0; mode < 3; ++mode) {
       const bool culls_front = mode == 1, culls_back = mode == 0;
       for (int count : {1, 7, 8, 9, 100, pipeline::kCullBatch}) {

@@ -10,6 +10,7 @@
 #include <random>
 #include <vector>
 
+#include "core/simd_target.hpp"
 #include "pipeline/geometry/clip.hpp"
 #include "pipeline/geometry/vertex_pass.hpp"
 #include "pipeline/setup/setup.hpp"
@@ -75,7 +76,7 @@ TEST(GeometrySimd, VertexPassMatchesTheScalarCodeOnEveryTarget) {
     for (std::size_t first = 0; first < n; first += pipeline::kVertexPass) {
       const std::size_t count = std::min(pipeline::kVertexPass, n - first);
       pipeline::VertexPass pass;
-      pipeline::run_vertex_pass(in, first, count, pass);
+      pipeline::vertex_pass_kernel(chosen_simd_target())(in, first, count, pass);
       for (std::size_t j = 0; j < count; ++j) {
         const std::size_t i = first + j;
         const glm::vec4 clip = mvp * glm::vec4(positions[i], 1.0f);

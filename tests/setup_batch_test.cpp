@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/simd_target.hpp"
 #include "pipeline/geometry/primitive_sink.hpp"
 #include "pipeline/setup/setup.hpp"
 #include "support/forced_target.hpp"
@@ -82,8 +83,8 @@ Inputs inputs_of(const std::vector<Triangle>& triangles, const std::vector<float
 // or that is small and covers none of its box's pixel centres; otherwise writes its edge
 // functions (top-left rule folded into c), pixel box, and depth, 1 / w and varying planes.
 bool set_up_by_definition(pipeline::PrimitiveSink& out, std::uint32_t draw,
-                          const ScreenVertex screen[3], const float* const over_w[3],
-                          int varyings, bool front_facing) {
+                          const ScreenVertex screen[3], const float* const over_w[3], int varyings,
+                          bool front_facing) {
   using namespace pipeline;
   ScreenVertex s[3] = {screen[0], screen[1], screen[2]};
   const float* values[3] = {over_w[0], over_w[1], over_w[2]};
@@ -157,7 +158,7 @@ void one_at_a_time(const Inputs& in, int varyings, Written& w) {
 void batched(const Inputs& in, int varyings, int run, std::size_t kept, Written& w) {
   make_frame(kept, varyings, w);
   pipeline::PrimitiveSink sink(w.frame, w.chunk, varyings);
-  const pipeline::SetupBatchKernel kernel = pipeline::setup_batch_kernel();
+  const pipeline::SetupBatchKernel kernel = pipeline::setup_batch_kernel(chosen_simd_target());
   const std::size_t n = in.front_facing.size();
   std::vector<std::uint32_t> vertex[3], front_facing;
   for (std::size_t first = 0; first < n; first += run) {

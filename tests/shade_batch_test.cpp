@@ -13,8 +13,10 @@
 #include <limits>
 #include <random>
 
+#include "core/simd_target.hpp"
 #include "scenes/glmark2_shading.hpp"
 #include "shading/fog.hpp"
+#include "shading/kernels.hpp"
 #include "shading/lit_models.hpp"
 #include "shading/models.hpp"
 #include "support/forced_target.hpp"
@@ -45,6 +47,8 @@ struct Draw {
   Material material;
   Lighting lighting;
   shading::LightData lights[3];
+  shading::ShadingKernels kernels;
+  shading::FrameUniforms frame;
   shading::DrawUniforms uniforms;
 };
 
@@ -53,17 +57,20 @@ void randomize(std::mt19937& rng, Draw& d) {
   d.material.cull = rng() % 2 ? CullMode::none : CullMode::back;
   d.material.emissive = rng() % 2 ? glm::vec3(0.0f) : glm::vec3(unit(rng), unit(rng), 0.0f);
   d.uniforms.material = &d.material;
-  d.uniforms.lighting = &d.lighting;
-  d.uniforms.eye = {any(rng) * 5.0f, any(rng) * 5.0f, any(rng) * 5.0f};
-  d.uniforms.ambient = {unit(rng) * 0.2f, unit(rng) * 0.2f, unit(rng) * 0.2f};
-  d.uniforms.light_count = static_cast<int>(rng() % 4);
-  for (int i = 0; i < d.uniforms.light_count; ++i) {
+  d.uniforms.frame = &d.frame;
+  d.kernels = shading::shading_kernels(chosen_simd_target());  // the forced target's
+  d.frame.kernels = &d.kernels;
+  d.frame.lighting = &d.lighting;
+  d.frame.eye = {any(rng) * 5.0f, any(rng) * 5.0f, any(rng) * 5.0f};
+  d.frame.ambient = {unit(rng) * 0.2f, unit(rng) * 0.2f, unit(rng) * 0.2f};
+  d.frame.light_count = static_cast<int>(rng() % 4);
+  for (int i = 0; i < d.frame.light_count; ++i) {
     d.lights[i].type = LightType::directional;
     d.lights[i].to_light = glm::normalize(glm::vec3(any(rng), any(rng), any(rng)) + 0.01f);
     d.lights[i].radiance = {unit(rng) * 3.0f, unit(rng) * 3.0f, unit(rng) * 3.0f};
   }
-  d.uniforms.lights = d.lights;
-  d.uniforms.base_color = {unit(rng), unit(rng), unit(rng), 1.0f};
+  d.frame.lights = d.lights;
+  d.material.base_color = {unit(rng), unit(rng), unit(rng), 1.0f};
   d.material.specular_color = {unit(rng), unit(rng), unit(rng)};
   d.material.shininess = rng() % 5 == 0 ? 0.0f : 1.0f + unit(rng) * 127.0f;
   d.uniforms.normal_matrix = glm::mat3(any(rng), any(rng), any(rng), any(rng), any(rng), any(rng),
@@ -83,7 +90,7 @@ void randomize(std::mt19937& rng, Draw& d) {
   }
   d.lighting.fog.color = {unit(rng), unit(rng), unit(rng)};
   // Display values decoded to linear, or kept as code / 255 (models.hpp's display_value).
-  d.uniforms.display_referred = rng() % 2 == 0;
+  d.frame.display_referred = rng() % 2 == 0;
 }
 
 template <class Shading>
@@ -97,7 +104,7 @@ glm::vec4 scalar_fragment(const Inputs& in, const float (*texel)[4], int n,
     f.base_texel_ready = true;
   }
   glm::vec4 color = Shading::fragment(f, u);
-  shading::apply_fog(color, f.w, u.lighting->fog);
+  shading::apply_fog(color, f.w, u.frame->lighting->fog);
   return color;
 }
 
@@ -195,7 +202,7 @@ TEST(ShadeBatch, DeclinesPointLightsAndEmissiveMaps) {
   Draw draw;
   std::mt19937 rng(1);
   randomize(rng, draw);
-  draw.uniforms.light_count = 1;
+  draw.frame.light_count = 1;
   draw.lights[0].type = LightType::point;
   EXPECT_FALSE(shading::batch_shades(shading::BatchModel::lambert, draw.uniforms));
   draw.lights[0].type = LightType::directional;

@@ -8,6 +8,7 @@
 #include <cstring>
 #include <random>
 
+#include "core/simd_target.hpp"
 #include "facet/camera.hpp"
 #include "support/forced_target.hpp"
 
@@ -42,7 +43,8 @@ TEST(SkyRow, GivesTheScalarBackgroundsBitsOnEveryTarget) {
       }
       const glm::vec4 untouched{-1.0f, -2.0f, -3.0f, -4.0f};
       std::vector<glm::vec4> row(count, untouched);
-      pipeline::fill_sky_row(view, sky, x0, y, count, depth.data(), kClear, row.data());
+      pipeline::sky_row_kernel(chosen_simd_target())(view, sky, x0, y, count, depth.data(), kClear,
+                                                     row.data());
       for (int i = 0; i < count; ++i) {
         const glm::vec4 expected =
             depth[i] == kClear

@@ -12,6 +12,7 @@
 #include <tuple>
 #include <vector>
 
+#include "core/simd_target.hpp"
 #include "pipeline/geometry/primitive_sink.hpp"
 #include "pipeline/raster/block_raster.hpp"
 #include "pipeline/setup/setup.hpp"
@@ -42,7 +43,8 @@ bool set_up(const pipeline::ScreenVertex s[3], SetupTriangle& out) {
   const std::uint32_t front[1 + pipeline::kSetupBatchSlack] = {
       pipeline::signed_area(s[0], s[1], s[2]) < 0 ? 1u : 0u};
   const pipeline::SetupBatch batch{1, {index[0], index[1], index[2]}, front};
-  if (pipeline::setup_batch_kernel()(batch, {sink, kWidth, kHeight, 0, projected, no_varyings, 0}))
+  if (pipeline::setup_batch_kernel(chosen_simd_target())(
+          batch, {sink, kWidth, kHeight, 0, projected, no_varyings, 0}))
     return false;
   out = frame.triangles[0];
   return true;
@@ -76,7 +78,7 @@ std::vector<Found> found(const SetupTriangle& t, int x0, int y0, int width, int 
   constexpr int kRoom = pipeline::kBlockPixels + pipeline::kBoxSearchSlack;
   std::int16_t xs[kRoom] = {}, ys[kRoom] = {};
   alignas(64) float zs[pipeline::kBlockPixels], ws[pipeline::kBlockPixels];
-  const pipeline::RasterKernels kernels = pipeline::raster_kernels();
+  const pipeline::RasterKernels kernels = pipeline::raster_kernels(chosen_simd_target());
   const int n =
       kernels.find_box_pixels(t, x0, y0, width, height, depth.data(), stride, true, xs, ys);
   kernels.interpolate_pixels(t, nullptr, 0, 0, n, xs, ys, zs, ws, nullptr);
@@ -144,7 +146,8 @@ TEST(SmallBoxes, KernelPointersFollowTheChosenTarget) {
   std::vector<const void*> seen;
   for (std::int64_t target : simd_targets()) {
     ForcedTarget forced(target);
-    const auto kernel = reinterpret_cast<const void*>(pipeline::raster_kernels().find_box_pixels);
+    const auto kernel = reinterpret_cast<const void*>(
+        pipeline::raster_kernels(chosen_simd_target()).find_box_pixels);
     EXPECT_EQ(std::find(seen.begin(), seen.end(), kernel), seen.end()) << hwy::TargetName(target);
     seen.push_back(kernel);
   }

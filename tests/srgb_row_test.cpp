@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/color.hpp"
+#include "core/simd_target.hpp"
 #include "support/forced_target.hpp"
 
 namespace facet::test {
@@ -79,7 +80,8 @@ TEST(SrgbRow, GivesTheScalarCodesOnEveryTarget) {
               for (int c = 0; c < 4; ++c) row[i][c] = values[(start + 4 * i + c + shift) % n];
             }
             std::vector<std::uint8_t> simd(4 * count), scalar(4 * count);
-            pipeline::encode_srgb_row(row.data(), count, scale, simd.data());
+            pipeline::encode_srgb_row_kernel(chosen_simd_target())(row.data(), count, scale,
+                                                                   simd.data());
             for (int i = 0; i < count; ++i) encode_scalar(row[i], scale, &scalar[4 * i]);
             for (int i = 0; i < 4 * count; ++i) {
               ASSERT_EQ(simd[i], scalar[i])
@@ -158,7 +160,7 @@ TEST(Unorm8Row, RoundsEveryChannelAsAlphaOnEveryTarget) {
         codes[i] = glm::vec4(shown, shown, shown, shown);
       }
       std::vector<std::uint8_t> out(4 * 64);
-      pipeline::round_unorm8_row(codes.data(), 64, out.data());
+      pipeline::round_unorm8_row_kernel(chosen_simd_target())(codes.data(), 64, out.data());
       for (int i = 0; i < 4 * 64; ++i) {
         ASSERT_EQ(out[i], first + i / 4) << hwy::TargetName(target) << ", code " << first + i / 4;
       }
@@ -166,8 +168,8 @@ TEST(Unorm8Row, RoundsEveryChannelAsAlphaOnEveryTarget) {
     for (int count : {1, 3, 16, 65}) {
       for (std::size_t start = 0; start + 4 * count <= values.size(); start += 4 * count) {
         std::vector<std::uint8_t> out(4 * count);
-        pipeline::round_unorm8_row(reinterpret_cast<const glm::vec4*>(&values[start]), count,
-                                   out.data());
+        pipeline::round_unorm8_row_kernel(chosen_simd_target())(
+            reinterpret_cast<const glm::vec4*>(&values[start]), count, out.data());
         for (int i = 0; i < 4 * count; ++i) {
           const float v = values[start + i];
           const float c = v > 0.0f ? std::min(v, 1.0f) : 0.0f;

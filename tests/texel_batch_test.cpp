@@ -12,6 +12,7 @@
 #include <random>
 #include <string>
 
+#include "core/simd_target.hpp"
 #include "shading/surface.hpp"
 #include "support/forced_target.hpp"
 
@@ -109,7 +110,8 @@ TEST(TexelBatch, GivesSampleMapsBitsOnEveryTarget) {
               if (rng() % 2 == 0) c.batch.slopes = c.slopes;  // pixels of several triangles
               c.batch.planes = c.planes;
               c.batch.inv_w = &c.inv_w;
-              shading::sample_batch(map, c.batch);
+              shading::sample_batch(shading::sample_batch_kernel(chosen_simd_target()), map,
+                                    c.batch);
               for (int j = 0; j < c.batch.count; ++j) {
                 const glm::vec4 expected = scalar_sample(map, c, j);
                 const float* texel = c.batch.rgba[j];

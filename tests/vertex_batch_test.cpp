@@ -11,6 +11,8 @@
 #include <random>
 #include <vector>
 
+#include "core/simd_target.hpp"
+#include "shading/kernels.hpp"
 #include "shading/lit_models.hpp"
 #include "shading/models.hpp"
 #include "support/forced_target.hpp"
@@ -24,25 +26,30 @@ using shading::kVertexBatch;
 struct Draw {
   Material material;
   shading::LightData lights[3];
+  shading::ShadingKernels kernels;
+  shading::FrameUniforms frame;
   shading::DrawUniforms uniforms;
 };
 
 void randomize(std::mt19937& rng, Draw& d) {
   std::uniform_real_distribution<float> any(-1.0f, 1.0f), unit(0.0f, 1.0f);
   d.uniforms.material = &d.material;
+  d.uniforms.frame = &d.frame;
+  d.kernels = shading::shading_kernels(chosen_simd_target());  // the forced target's
+  d.frame.kernels = &d.kernels;
   for (int c = 0; c < 4; ++c) {
     for (int r = 0; r < 3; ++r) d.uniforms.model[c][r] = any(rng) * (c == 3 ? 10.0f : 2.0f);
   }
-  d.uniforms.eye = {any(rng) * 5.0f, any(rng) * 5.0f, any(rng) * 5.0f};
-  d.uniforms.ambient = {unit(rng) * 0.2f, unit(rng) * 0.2f, unit(rng) * 0.2f};
-  d.uniforms.base_color = {unit(rng), unit(rng), unit(rng), unit(rng)};
-  d.uniforms.use_vertex_colors = rng() % 2 == 0;
-  d.uniforms.light_count = static_cast<int>(rng() % 4);
-  for (int i = 0; i < d.uniforms.light_count; ++i) {
+  d.frame.eye = {any(rng) * 5.0f, any(rng) * 5.0f, any(rng) * 5.0f};
+  d.frame.ambient = {unit(rng) * 0.2f, unit(rng) * 0.2f, unit(rng) * 0.2f};
+  d.material.base_color = {unit(rng), unit(rng), unit(rng), unit(rng)};
+  d.material.use_vertex_colors = rng() % 2 == 0;
+  d.frame.light_count = static_cast<int>(rng() % 4);
+  for (int i = 0; i < d.frame.light_count; ++i) {
     d.lights[i].to_light = glm::normalize(glm::vec3(any(rng), any(rng), any(rng)) + 0.01f);
     d.lights[i].radiance = {unit(rng) * 3.0f, unit(rng) * 3.0f, unit(rng) * 3.0f};
   }
-  d.uniforms.lights = d.lights;
+  d.frame.lights = d.lights;
   d.material.specular_color = {unit(rng), unit(rng), unit(rng)};
   d.material.shininess = rng() % 5 == 0 ? 0.0f : 1.0f + unit(rng) * 127.0f;
 }
@@ -120,7 +127,7 @@ TEST(VertexBatch, GouraudDeclinesPointAndSpotLights) {
   Draw draw;
   std::mt19937 rng(3);
   randomize(rng, draw);
-  draw.uniforms.light_count = 2;
+  draw.frame.light_count = 2;
   draw.lights[0].type = draw.lights[1].type = LightType::directional;
   EXPECT_TRUE(GouraudShading::batch_vertices(draw.uniforms));
   draw.lights[1].type = LightType::point;

@@ -9,6 +9,7 @@
 #include <random>
 #include <vector>
 
+#include "core/simd_target.hpp"
 #include "support/forced_target.hpp"
 
 namespace facet::test {
@@ -35,7 +36,7 @@ TEST(VertexRows, ProjectedVerticesAreThePassesValuesOnEveryTarget) {
       std::vector<pipeline::ProjectedVertex> got(count + 1);
       std::memset(got.data(), 0x5a, got.size() * sizeof(got[0]));
       const std::vector<pipeline::ProjectedVertex> untouched(got);
-      pipeline::store_projected(pass, count, got.data());
+      pipeline::store_projected_kernel(chosen_simd_target())(pass, count, got.data());
       for (std::size_t j = 0; j < count; ++j) {
         pipeline::ProjectedVertex expected;
         expected.clip_x = pass.x[j], expected.clip_y = pass.y[j], expected.clip_w = pass.w[j];
@@ -66,7 +67,8 @@ TEST(VertexRows, VaryingsOverWAreTheScalarProductsOnEveryTarget) {
         const std::size_t floats = count * static_cast<std::size_t>(varyings);
         // Room past the rows: what the next run of vertices owns, which must stay as it is.
         std::vector<float> got(floats + 16, kCanary);
-        pipeline::store_over_w(values, inv_w, count, varyings, got.data());
+        pipeline::store_over_w_kernel(chosen_simd_target())(values, inv_w, count, varyings,
+                                                            got.data());
         for (std::size_t j = 0; j < count; ++j) {
           for (int k = 0; k < varyings; ++k) {
             const float expected = values[k][j] * inv_w[j];

@@ -1,8 +1,8 @@
-// glmark2's shaders a batch at a time (see glmark2_batch.hpp). Highway compiles this file once
-// per SIMD target; HWY_DYNAMIC_DISPATCH picks the best the CPU has. Each step repeats
-// glmark2_shading.hpp lane by lane: glm's dot is (x*x' + y*y') + z*z', normalize is
-// v * (1 / sqrt(dot)), length is sqrt(dot), reflect is I - (N * dot(N, I)) * 2, mat3 x v is (m0 x +
-// m1 y) + m2 z; std::max(a, b) keeps a unless a < b.
+// glmark2's shaders a batch at a time (see glmark2_batch.hpp). Highway compiles this file once per
+// SIMD target; the frame fetches the chosen target's kernel (pipeline/kernels.hpp). Each step
+// repeats glmark2_shading.hpp lane by lane: glm's dot is (x*x' + y*y') + z*z', normalize is v * (1
+// / sqrt(dot)), length is sqrt(dot), reflect is I - (N * dot(N, I)) * 2, mat3 x v is (m0 x + m1 y)
+// + m2 z; std::max(a, b) keeps a unless a < b.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "scenes/glmark2_batch.cpp"
 #include "scenes/glmark2_batch.hpp"
@@ -90,9 +90,9 @@ void ShadeGlmark2Batch(BatchShader shader, const DrawUniforms& u, const ShadeInp
         const BatchV diffuse = StdMax(hn::Zero(d), Dot(n, light));
         const BatchV lit = hn::Mul(hn::Set(d, 0.8f), diffuse);
         const BatchV base = hn::Add(specular, hn::Set(d, 0.02f));
-        StoreDisplayCodes({hn::Add(base, hn::Mul(lit, hn::Set(d, u.base_color.r))),
-                           hn::Add(base, hn::Mul(lit, hn::Set(d, u.base_color.g))),
-                           hn::Add(base, hn::Mul(lit, hn::Set(d, u.base_color.b)))},
+        StoreDisplayCodes({hn::Add(base, hn::Mul(lit, hn::Set(d, u.material->base_color.r))),
+                           hn::Add(base, hn::Mul(lit, hn::Set(d, u.material->base_color.g))),
+                           hn::Add(base, hn::Mul(lit, hn::Set(d, u.material->base_color.b)))},
                           j, codes);
         break;
       }
@@ -151,7 +151,7 @@ void ShadeGlmark2Batch(BatchShader shader, const DrawUniforms& u, const ShadeInp
       }
     }
   }
-  DecodeDisplayCodes(codes, in.count, u.display_referred, in.rgba_row_stride, rgba);
+  DecodeDisplayCodes(codes, in.count, u.frame->display_referred, in.rgba_row_stride, rgba);
 }
 
 }  // namespace facet::bench::glmark2::HWY_NAMESPACE
@@ -162,9 +162,8 @@ namespace facet::bench::glmark2 {
 
 HWY_EXPORT(ShadeGlmark2Batch);
 
-void shade_glmark2_batch(BatchShader shader, const shading::DrawUniforms& u,
-                         const shading::ShadeInput& in, float (*rgba)[4]) {
-  HWY_DYNAMIC_DISPATCH(ShadeGlmark2Batch)(shader, u, in, rgba);
+Glmark2BatchKernel glmark2_batch_kernel(SimdTarget target) {
+  return HWY_DISPATCH_TABLE(ShadeGlmark2Batch)[target];
 }
 
 }  // namespace facet::bench::glmark2

@@ -56,7 +56,7 @@ struct BasicLightShading : BatchForm<BatchShader::basic_light>, shading::Display
   static constexpr int kNormalSlot = -1;  // the scenes' meshes carry normals
   static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
     const float diffuse = std::max(glm::dot(in.normal, kLightDirection), 0.0f);
-    shading::store(out, diffuse * glm::vec3(u.base_color));
+    shading::store(out, diffuse * glm::vec3(u.material->base_color));
   }
   static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
     return unorm8_output(shading::load3(f.v), u);
@@ -129,7 +129,8 @@ struct PhongShading : EyeNormalPosition, BatchForm<BatchShader::phong>, shading:
     const glm::vec3 reflection = glm::reflect(-light_direction, n);
     const float specular = 0.8f * pow100(std::max(0.0f, glm::dot(reflection, eye_direction)));
     const float diffuse = std::max(0.0f, glm::dot(n, light_direction));
-    return unorm8_output(glm::vec3(specular + 0.02f) + 0.8f * diffuse * glm::vec3(u.base_color), u);
+    return unorm8_output(
+        glm::vec3(specular + 0.02f) + 0.8f * diffuse * glm::vec3(u.material->base_color), u);
   }
 };
 

@@ -71,6 +71,7 @@ struct DrawVertices {
 
 struct TileContext;
 struct SetupTriangle;
+struct Kernels;  // kernels.hpp
 using RasterTriangleFn = void (*)(TileContext&, const SetupTriangle&);
 
 // How a draw is shaded, fixed once per draw (record/pipeline_table.cpp).
@@ -225,6 +226,8 @@ struct Frame : PrimitiveBuffer {
   std::vector<DrawRecord> draws;
   std::vector<std::uint32_t> draw_order;  // opaque in submission order, then blended far-first
   std::vector<shading::LightData> lights;
+  shading::FrameUniforms uniforms;            // every draw's uniforms point here
+  const Kernels* kernels = nullptr;           // the SIMD kernels, fetched when the frame runs
   std::vector<DrawVertices> vertices;         // per draw slot (big draws), reused
   std::vector<DrawVertices> worker_vertices;  // per worker (small draws, one at a time)
   // Reused across frames: the first chunk_count are this frame's.

@@ -7,6 +7,7 @@
 #include "pipeline/bin/bin.hpp"
 #include "pipeline/geometry/geometry.hpp"
 #include "pipeline/geometry/vertex.hpp"
+#include "pipeline/kernels.hpp"
 #include "pipeline/output/debug_view.hpp"
 #include "pipeline/output/output.hpp"
 #include "pipeline/parallel.hpp"
@@ -83,12 +84,23 @@ void Renderer::Impl::run(Framebuffer& target) {
   // Per-draw pointers into frame-wide data, set now that the draw list no longer grows.
   frame.lights.clear();
   for (const Light& light : lighting.lights) frame.lights.push_back(shading::prepare_light(light));
+  // One SIMD target for the whole frame: every kernel is fetched for it here.
+  kernels = pipeline::kernels_for(chosen_simd_target());
+  frame.kernels = &kernels;
+  shading::FrameUniforms& uniforms = frame.uniforms;
+  uniforms.eye = camera.eye;
+  uniforms.ambient = lighting.ambient;
+  uniforms.lights = frame.lights.data();
+  uniforms.light_count = static_cast<int>(frame.lights.size());
+  uniforms.lighting = &lighting;
+  uniforms.near_plane = camera.near_plane;
+  uniforms.far_plane = camera.far_plane;
+  uniforms.display_referred = false;  // decided after geometry (display_referred_frame)
+  uniforms.kernels = &kernels.shading;
   const pipeline::ClipBounds guard = pipeline::guard_band_bounds(frame.width, frame.height);
   for (pipeline::DrawRecord& draw : frame.draws) {
-    draw.uniforms.lights = frame.lights.data();
-    draw.uniforms.light_count = static_cast<int>(frame.lights.size());
     draw.uniforms.material = &draw.material;
-    draw.uniforms.lighting = &lighting;
+    draw.uniforms.frame = &uniforms;
     // Whether the batch form takes the draw depends on its lights and material: decided here
     // once, not for every triangle.
     draw.batch_shaded = draw.pipeline.batch_shades && draw.pipeline.batch_shades(draw.uniforms);
@@ -113,7 +125,7 @@ void Renderer::Impl::run(Framebuffer& target) {
   frame.stats.ms_geometry = ms_since(start);
   const bool referred = display_referred_frame(target);
   background.display_referred = frame.stats.display_referred = referred;
-  for (pipeline::DrawRecord& draw : frame.draws) draw.uniforms.display_referred = referred;
+  uniforms.display_referred = referred;
   if (referred) background.clear_color = pipeline::display_value_of(settings.clear_color);
 
   auto bin_start = Clock::now();

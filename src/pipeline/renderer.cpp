@@ -117,13 +117,6 @@ void Renderer::Impl::record(const Mesh& mesh, const std::optional<pipeline::Mesh
   u.model = transform;
   u.model_view_projection = model_view_projection;
   u.normal_matrix = glm::inverseTranspose(glm::mat3(transform));
-  u.base_color = material.base_color;
-  u.wire_color = material.wire_color;
-  u.use_vertex_colors = material.use_vertex_colors;
-  u.ambient = lighting.ambient;
-  u.eye = camera.eye;
-  u.near_plane = camera.near_plane;
-  u.far_plane = camera.far_plane;
   frame.draws.push_back(record);
 }
 

@@ -17,6 +17,7 @@
 
 #include "facet/renderer.hpp"
 #include "pipeline/frame.hpp"
+#include "pipeline/kernels.hpp"
 #include "pipeline/output/output.hpp"
 
 namespace facet {
@@ -50,6 +51,7 @@ struct Renderer::Impl {
   tbb::task_arena arena;
   std::vector<pipeline::TileBuffers> tile_buffers;  // one per worker
   pipeline::Frame frame;
+  pipeline::Kernels kernels;  // this frame's (frame.kernels points here)
   std::vector<std::uint64_t> tile_pixels_shaded;
   std::vector<double> tile_ms, tile_resolve_ms;  // per tile: its task, and its resolve
   pipeline::Background background;

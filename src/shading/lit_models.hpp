@@ -4,8 +4,8 @@
 
 #include "shading/brdf.hpp"
 #include "shading/environment.hpp"
+#include "shading/kernels.hpp"
 #include "shading/models.hpp"
-#include "shading/vertex_batch.hpp"
 
 namespace facet::shading {
 
@@ -20,9 +20,9 @@ inline glm::vec3 specular_color(const Fragment& f, const DrawUniforms& u) {
 inline glm::vec3 reflect_environment(glm::vec3 color, const SurfacePoint& s,
                                      const DrawUniforms& u) {
   float r = u.material->reflectivity;
-  if (r <= 0.0f || !u.lighting->environment.reflections) return color;
+  if (r <= 0.0f || !u.frame->lighting->environment.reflections) return color;
   glm::vec3 mirror = glm::reflect(-s.view, s.normal);
-  return glm::mix(color, environment_radiance(u.lighting->environment, mirror), r);
+  return glm::mix(color, environment_radiance(u.frame->lighting->environment, mirror), r);
 }
 
 // Phong (kBlinn = false) or Blinn-Phong (true), per pixel: ambient + diffuse + specular.
@@ -38,9 +38,9 @@ struct PhongShadingT : BatchForm<kBlinn ? BatchModel::blinn_phong : BatchModel::
     SurfacePoint s = surface_point<true>(f, u);
     glm::vec3 albedo(s.albedo), spec = specular_color(f, u);
     float shininess = u.material->shininess;
-    glm::vec3 color = albedo * u.ambient;
-    for (int i = 0; i < u.light_count; ++i) {
-      IncidentLight in = incident(u.lights[i], s.position);
+    glm::vec3 color = albedo * u.frame->ambient;
+    for (int i = 0; i < u.frame->light_count; ++i) {
+      IncidentLight in = incident(u.frame->lights[i], s.position);
       float n_dot_l = glm::dot(s.normal, in.direction);
       if (n_dot_l <= 0.0f) continue;
       float highlight = kBlinn ? blinn_phong_specular(s.normal, s.view, in.direction, shininess)
@@ -66,10 +66,10 @@ struct GouraudLight {
   static constexpr GouraudLayout kLayout{kDiffuse, kWithSurface};
   static void light_vertex(glm::vec3 position, glm::vec3 normal, const DrawUniforms& u,
                            float* out) {
-    glm::vec3 view = safe_normalize(u.eye - position);
-    glm::vec3 diffuse = u.ambient, specular(0.0f);
-    for (int i = 0; i < u.light_count; ++i) {
-      IncidentLight in = incident(u.lights[i], position);
+    glm::vec3 view = safe_normalize(u.frame->eye - position);
+    glm::vec3 diffuse = u.frame->ambient, specular(0.0f);
+    for (int i = 0; i < u.frame->light_count; ++i) {
+      IncidentLight in = incident(u.frame->lights[i], position);
       float n_dot_l = glm::dot(normal, in.direction);
       if (n_dot_l <= 0.0f) continue;
       diffuse += in.radiance * n_dot_l;
@@ -84,7 +84,7 @@ struct GouraudLight {
   static bool batch_vertices(const DrawUniforms& u) { return gouraud_batches_vertices(u); }
   static void vertex_batch(const DrawUniforms& u, const VertexBatchInput& in,
                            float (*out)[kVertexBatch]) {
-    gouraud_vertex_batch(u, in, kLayout, out);
+    u.frame->kernels->gouraud_vertex_batch(u, in, kLayout, out);
   }
   // A mesh without normals is lit per triangle with its face normal at its centre.
   static void face_without_normals(glm::vec3 normal, glm::vec3 centre, const DrawUniforms& u,
@@ -128,7 +128,7 @@ struct ConstantColorGouraudShading : GouraudLight<kConstantGouraudDiffuseSlot, f
     light_vertex(glm::vec3(u.model * glm::vec4(in.position, 1.0f)), in.normal, u, out);
   }
   static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
-    return lit(u.base_color, f, u);
+    return lit(u.material->base_color, f, u);
   }
 };
 
@@ -157,8 +157,8 @@ struct PbrShading {
       occlusion = 1.0f + m.occlusion_strength * (sample_map(m.occlusion_map, f).r - 1.0f);
     }
     glm::vec3 color(0.0f);
-    for (int i = 0; i < u.light_count; ++i) {
-      IncidentLight in = incident(u.lights[i], s.position);
+    for (int i = 0; i < u.frame->light_count; ++i) {
+      IncidentLight in = incident(u.frame->lights[i], s.position);
       float n_dot_l = glm::dot(s.normal, in.direction);
       if (n_dot_l <= 0.0f) continue;
       color +=
@@ -166,13 +166,13 @@ struct PbrShading {
     }
     glm::vec3 f0 = glm::mix(glm::vec3(0.04f), surface.albedo, surface.metallic);
     glm::vec3 diffuse_albedo = surface.albedo * (1.0f - surface.metallic);
-    glm::vec3 ambient = u.ambient * (diffuse_albedo + f0 * 0.5f);
-    if (u.lighting->environment.reflections) {
+    glm::vec3 ambient = u.frame->ambient * (diffuse_albedo + f0 * 0.5f);
+    if (u.frame->lighting->environment.reflections) {
       // Split-sum-free approximation: the mirror direction, blurred by roughness (mip level).
       glm::vec3 mirror = glm::reflect(-s.view, s.normal);
       glm::vec3 fresnel = fresnel_schlick(f0, glm::dot(s.normal, s.view));
       float blur = surface.roughness * 8.0f;
-      ambient += environment_radiance(u.lighting->environment, mirror, blur) * fresnel *
+      ambient += environment_radiance(u.frame->lighting->environment, mirror, blur) * fresnel *
                  (1.0f - surface.roughness * 0.7f);
     }
     color += ambient * occlusion;

@@ -29,8 +29,8 @@
 
 #include "core/color.hpp"
 #include "shading/fragment.hpp"
+#include "shading/kernels.hpp"
 #include "shading/lighting.hpp"
-#include "shading/shade_batch.hpp"
 #include "shading/surface.hpp"
 #include "shading/uniforms.hpp"
 
@@ -39,9 +39,9 @@ namespace facet::shading {
 // Diffuse + ambient from every light (the classic teaching setup).
 inline glm::vec3 diffuse_light(glm::vec3 albedo, glm::vec3 normal, glm::vec3 position,
                                const DrawUniforms& u) {
-  glm::vec3 light = u.ambient;
-  for (int i = 0; i < u.light_count; ++i) {
-    IncidentLight in = incident(u.lights[i], position);
+  glm::vec3 light = u.frame->ambient;
+  for (int i = 0; i < u.frame->light_count; ++i) {
+    IncidentLight in = incident(u.frame->lights[i], position);
     light += in.radiance * std::max(0.0f, glm::dot(normal, in.direction));
   }
   return albedo * light;
@@ -58,7 +58,7 @@ inline float display_channel(float v, bool referred) {
   return referred ? static_cast<float>(code) * kInverse255 : decode_srgb8(code);
 }
 inline glm::vec4 display_value(glm::vec3 shown, const DrawUniforms& u) {
-  const bool referred = u.display_referred;
+  const bool referred = u.frame->display_referred;
   return {display_channel(shown.x, referred), display_channel(shown.y, referred),
           display_channel(shown.z, referred), 1.0f};
 }
@@ -105,7 +105,7 @@ struct ConstantColorUnlitShading : BatchForm<BatchModel::constant_unlit> {
     store(out + kTexcoordSlot, in.texcoord);
   }
   static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
-    glm::vec4 color = u.base_color;
+    glm::vec4 color = u.material->base_color;
     if (u.material->base_color_map) color *= base_color_texel(f, u);
     return color + glm::vec4(emission(f, u), 0.0f);
   }
@@ -171,7 +171,7 @@ struct DepthShading : DisplayReferred {
   static constexpr int kNormalSlot = -1;
   static void vertex(const VertexInput&, const DrawUniforms&, float*) {}
   static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
-    float t = (f.w - u.near_plane) / (u.far_plane - u.near_plane);
+    float t = (f.w - u.frame->near_plane) / (u.frame->far_plane - u.frame->near_plane);
     return display_value(glm::vec3(std::clamp(1.0f - t, 0.0f, 1.0f)), u);
   }
 };

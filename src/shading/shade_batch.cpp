@@ -1,9 +1,8 @@
 // Batch shading of the unlit, Lambert, Phong and Blinn-Phong models and the normals view (see
-// shade_batch.hpp).
-// Highway compiles this file once per SIMD target (foreach_target.h re-includes it);
-// HWY_DYNAMIC_DISPATCH picks the best the CPU has. Every step repeats models.hpp,
-// lit_models.hpp, brdf.hpp and surface.cpp with the same IEEE operations in the same order
-// (glm's dot is (x*x' + y*y') + z*z'; std::max(0, d) keeps 0 for NaN; no fused multiply-add),
+// shade_batch.hpp). Highway compiles this file once per SIMD target (foreach_target.h re-includes
+// it); the frame fetches the chosen target's kernel (pipeline/kernels.hpp). Every step repeats
+// models.hpp, lit_models.hpp, brdf.hpp and surface.cpp with the same IEEE operations in the same
+// order (glm's dot is (x*x' + y*y') + z*z'; std::max(0, d) keeps 0 for NaN; no fused multiply-add),
 // so each target gives fragment()'s bits; shade_batch_test checks it.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "shading/shade_batch.cpp"
@@ -50,9 +49,10 @@ HWY_INLINE Albedo LoadAlbedo(const ShadeInput& in, int j, const Albedo* constant
 // diffuse_light() of models.hpp for directional lights: ambient + sum of radiance x max(0, N.L).
 HWY_INLINE Vec3V DiffuseLight(const DrawUniforms& u, const Vec3V& normal) {
   const FloatTag d;
-  Vec3V light{hn::Set(d, u.ambient.x), hn::Set(d, u.ambient.y), hn::Set(d, u.ambient.z)};
-  for (int i = 0; i < u.light_count; ++i) {
-    const LightData& l = u.lights[i];
+  Vec3V light{hn::Set(d, u.frame->ambient.x), hn::Set(d, u.frame->ambient.y),
+              hn::Set(d, u.frame->ambient.z)};
+  for (int i = 0; i < u.frame->light_count; ++i) {
+    const LightData& l = u.frame->lights[i];
     const Vec3V to_light{hn::Set(d, l.to_light.x), hn::Set(d, l.to_light.y),
                          hn::Set(d, l.to_light.z)};
     const FloatV n_dot_l = Dot(normal, to_light);
@@ -89,11 +89,11 @@ HWY_INLINE Vec3V SpecularLight(const DrawUniforms& u, bool blinn, const Vec3V& n
                                const Albedo& albedo) {
   const FloatTag d;
   const Material& m = *u.material;
-  Vec3V color{hn::Mul(albedo.c[0], hn::Set(d, u.ambient.x)),
-              hn::Mul(albedo.c[1], hn::Set(d, u.ambient.y)),
-              hn::Mul(albedo.c[2], hn::Set(d, u.ambient.z))};
-  for (int i = 0; i < u.light_count; ++i) {
-    const LightData& l = u.lights[i];
+  Vec3V color{hn::Mul(albedo.c[0], hn::Set(d, u.frame->ambient.x)),
+              hn::Mul(albedo.c[1], hn::Set(d, u.frame->ambient.y)),
+              hn::Mul(albedo.c[2], hn::Set(d, u.frame->ambient.z))};
+  for (int i = 0; i < u.frame->light_count; ++i) {
+    const LightData& l = u.frame->lights[i];
     const Vec3V to_light = Set3(l.to_light);
     const FloatV n_dot_l = Dot(n, to_light);
     FloatV along;  // blinn_phong_specular / phong_specular, before the power
@@ -132,7 +132,7 @@ void ShadeNormals(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4])
                        hn::Add(hn::Mul(n.z, half), half)},
                       j, codes);
   }
-  DecodeDisplayCodes(codes, in.count, u.display_referred, in.rgba_row_stride, rgba);
+  DecodeDisplayCodes(codes, in.count, u.frame->display_referred, in.rgba_row_stride, rgba);
   if (in.fog == nullptr || in.fog->mode == FogMode::none) return;
   for (int j = 0; j < in.count; j += lanes) {
     alignas(64) float padded[8][4] = {};  // rgba past the batch's count may be unset
@@ -155,7 +155,7 @@ bool ShadeConstantUnlitAsRgba(const DrawUniforms& u, const ShadeInput& in, float
   const int lanes = static_cast<int>(hn::Lanes(d));
   if (lanes % 4 != 0 || lanes > 32) return false;
   const int pixels = lanes / 4;  // per vector: 1, 2, 4 or 8, within one row of 8 (ColorAt)
-  const glm::vec4& c = u.base_color;
+  const glm::vec4& c = u.material->base_color;
   const glm::vec3& e = u.material->emissive;
   alignas(16) const float factor[4] = {c.r, c.g, c.b, c.a};
   alignas(16) const float added[4] = {e.x, e.y, e.z, 0.0f};
@@ -184,9 +184,10 @@ void ShadeBatch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, f
   const bool two_sided = m.cull == CullMode::none;
   // Lambert lit from one side needs no view, nor its square root and division.
   const bool needs_view = two_sided || model != BatchModel::lambert;
-  const Vec3V eye{hn::Set(d, u.eye.x), hn::Set(d, u.eye.y), hn::Set(d, u.eye.z)};
-  const Albedo base{{hn::Set(d, u.base_color.r), hn::Set(d, u.base_color.g),
-                     hn::Set(d, u.base_color.b), hn::Set(d, u.base_color.a)}};
+  const Vec3V eye{hn::Set(d, u.frame->eye.x), hn::Set(d, u.frame->eye.y),
+                  hn::Set(d, u.frame->eye.z)};
+  const Albedo base{{hn::Set(d, u.material->base_color.r), hn::Set(d, u.material->base_color.g),
+                     hn::Set(d, u.material->base_color.b), hn::Set(d, u.material->base_color.a)}};
   const bool constant_color =
       model == BatchModel::constant_unlit || model == BatchModel::constant_gouraud;
   for (int j = 0; j < in.count; j += lanes) {
@@ -251,7 +252,7 @@ bool batch_shades(BatchModel model, const DrawUniforms& u) {
   if (m.emissive != glm::vec3(0.0f) && m.emissive_map) return false;
   if (model == BatchModel::phong || model == BatchModel::blinn_phong) {
     if (m.normal_map || m.specular_map) return false;
-    if (m.reflectivity > 0.0f && u.lighting->environment.reflections) return false;
+    if (m.reflectivity > 0.0f && u.frame->lighting->environment.reflections) return false;
   }
   // Unlit models use no light, and the Gouraud models' lights were applied at the vertices.
   const bool lit_per_pixel = model == BatchModel::lambert || model == BatchModel::phong ||
@@ -259,8 +260,8 @@ bool batch_shades(BatchModel model, const DrawUniforms& u) {
   return !lit_per_pixel || only_directional_lights(u);
 }
 
-void shade_batch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
-  HWY_DYNAMIC_DISPATCH(ShadeBatch)(model, u, in, rgba);
+ShadeBatchKernel shade_batch_kernel(SimdTarget target) {
+  return HWY_DISPATCH_TABLE(ShadeBatch)[target];
 }
 
 }  // namespace facet::shading

@@ -7,6 +7,7 @@
 // models lit per pixel, emissive, normal or specular maps, reflections) keep fragment().
 #pragma once
 
+#include "core/simd_target.hpp"
 #include "shading/uniforms.hpp"
 #include "shading/varyings.hpp"
 
@@ -56,17 +57,8 @@ bool batch_shades(BatchModel model, const DrawUniforms& u);
 // Linear RGBA of every pixel, as the model's fragment() gives it (then fogged, if in.fog).
 // rgba holds kShadeBatch colors (with in.rgba_row_stride 8): those from in.count up to the
 // next multiple of 8 are written too, as scratch.
-void shade_batch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]);
-
-// What a shading model provides to be shaded a batch at a time (models.hpp; the raster loop,
-// pipeline/raster/raster.hpp, looks for these two): whether it can take this draw, and the batch
-// form of fragment(), which also applies in.fog. The built-in models get them from here.
-template <BatchModel kModel>
-struct BatchForm {
-  static bool batch_shades(const DrawUniforms& u) { return shading::batch_shades(kModel, u); }
-  static void fragment_batch(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
-    shade_batch(kModel, u, in, rgba);
-  }
-};
+using ShadeBatchKernel = void (*)(BatchModel model, const DrawUniforms& u, const ShadeInput& in,
+                                  float (*rgba)[4]);
+ShadeBatchKernel shade_batch_kernel(SimdTarget target);
 
 }  // namespace facet::shading

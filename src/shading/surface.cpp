@@ -32,7 +32,7 @@ SurfacePoint surface_point(const Fragment& f, const DrawUniforms& u) {
   glm::vec3 n = safe_normalize(load3(f.v + kNormalSlot));
   if constexpr (kPositioned) {
     s.position = load3(f.v + kPositionSlot);
-    s.view = safe_normalize(u.eye - s.position);
+    s.view = safe_normalize(u.frame->eye - s.position);
     // Two-sided materials light their back faces as fronts.
     if (m.cull == CullMode::none && glm::dot(n, s.view) < 0.0f) n = -n;
   } else {

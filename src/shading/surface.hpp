@@ -39,7 +39,7 @@ inline glm::vec4 load4(const float* in) { return {in[0], in[1], in[2], in[3]}; }
 inline glm::vec3 load3(const float* in) { return {in[0], in[1], in[2]}; }
 
 inline glm::vec4 material_color(const VertexInput& in, const DrawUniforms& u) {
-  return u.use_vertex_colors ? u.base_color * in.color : u.base_color;
+  return u.material->use_vertex_colors ? u.material->base_color * in.color : u.material->base_color;
 }
 
 inline glm::vec3 safe_normalize(glm::vec3 v) {
@@ -78,13 +78,15 @@ void surface_vertex_batch(const DrawUniforms& u, const VertexBatchInput& in,
     }
   }
   // material_color(): white vertex colors where the mesh has none, multiplied all the same.
-  const bool vary = u.use_vertex_colors && in.colors != nullptr;
-  const glm::vec4 same = u.use_vertex_colors ? u.base_color * glm::vec4(1.0f) : u.base_color;
+  const bool vary = u.material->use_vertex_colors && in.colors != nullptr;
+  const glm::vec4 same = u.material->use_vertex_colors ? u.material->base_color * glm::vec4(1.0f)
+                                                       : u.material->base_color;
   if (vary) {
     // The four channels in one loop, the factors in locals: a loop per channel indexed glm's
     // vec4 by a variable, which GCC compiled into a branch per vertex (nine tenths of this
     // function's time on the islands).
-    const float r = u.base_color.r, g = u.base_color.g, b = u.base_color.b, a = u.base_color.a;
+    const float r = u.material->base_color.r, g = u.material->base_color.g,
+                b = u.material->base_color.b, a = u.material->base_color.a;
     float* red = out[kColorSlot];
     float* green = out[kColorSlot + 1];
     float* blue = out[kColorSlot + 2];

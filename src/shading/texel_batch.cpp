@@ -1,9 +1,9 @@
 // Batch texture sampling (see texel_batch.hpp). Highway compiles this file once per SIMD target
-// (foreach_target.h re-includes it) and HWY_DYNAMIC_DISPATCH picks the best target the CPU
-// has. Each step repeats its scalar counterpart in texture.cpp / surface.cpp / portable_math.hpp
-// with the same IEEE operations in the same order (no fused multiply-add; std::min/max as
-// compare-and-select, which treat NaN as they do), so every target gives the scalar bits;
-// texel_batch_test checks it.
+// (foreach_target.h re-includes it); the frame fetches the chosen target's kernel
+// (pipeline/kernels.hpp). Each step repeats its scalar counterpart in texture.cpp / surface.cpp /
+// portable_math.hpp with the same IEEE operations in the same order (no fused multiply-add;
+// std::min/max as compare-and-select, which treat NaN as they do), so every target gives the scalar
+// bits; texel_batch_test checks it.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "shading/texel_batch.cpp"
 #include "shading/texel_batch.hpp"
@@ -439,9 +439,13 @@ bool simd_samples(const TextureMap& map) {
 
 }  // namespace
 
-void sample_batch(const TextureMap& map, TexelBatch& batch) {
+SampleBatchKernel sample_batch_kernel(SimdTarget target) {
+  return HWY_DISPATCH_TABLE(SampleBatch)[target];
+}
+
+void sample_batch(SampleBatchKernel kernel, const TextureMap& map, TexelBatch& batch) {
   if (simd_samples(map)) {
-    HWY_DYNAMIC_DISPATCH(SampleBatch)(map, batch);
+    kernel(map, batch);
     return;
   }
   for (int j = 0; j < batch.count; ++j) {  // Fragment::ddx/ddy, then sample_map_at()

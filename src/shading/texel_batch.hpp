@@ -8,6 +8,7 @@
 
 #include <cstdint>
 
+#include "core/simd_target.hpp"
 #include "facet/material.hpp"
 #include "shading/varyings.hpp"
 
@@ -55,6 +56,10 @@ struct TexelBatch {
 };
 
 // Samples map at every pixel of the batch.
-void sample_batch(const TextureMap& map, TexelBatch& batch);
+// The SIMD kernel, for textures whose levels are one linear float array and whose repeating
+// wraps are on power-of-two sides; sample_batch takes the others a pixel at a time.
+using SampleBatchKernel = void (*)(const TextureMap& map, TexelBatch& batch);
+SampleBatchKernel sample_batch_kernel(SimdTarget target);
+void sample_batch(SampleBatchKernel kernel, const TextureMap& map, TexelBatch& batch);
 
 }  // namespace facet::shading

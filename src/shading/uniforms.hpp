@@ -1,5 +1,6 @@
-// Per-draw constants the shading models read: written once per draw by the renderer
-// (pipeline/renderer.cpp), read by vertex and fragment functions (shading/models.hpp).
+// The constants the shading models read, per frame and per draw: written by the renderer
+// (pipeline/renderer.cpp when a draw is recorded, pipeline/frame_run.cpp when the frame runs),
+// read by vertex and fragment functions (shading/models.hpp) and the batch kernels.
 #pragma once
 
 #include <algorithm>
@@ -24,24 +25,30 @@ struct LightData {
   float cos_outer = 0.0f;
 };
 
-struct DrawUniforms {
-  glm::mat4 model{1.0f};
-  glm::mat4 model_view_projection{1.0f};
-  glm::mat3 normal_matrix{1.0f};  // inverse transpose of model's upper 3x3
-  glm::vec4 base_color{1.0f};
-  glm::vec4 wire_color{0.0f, 0.0f, 0.0f, 1.0f};
-  bool use_vertex_colors = true;
+struct ShadingKernels;  // kernels.hpp
+
+// What every draw of a frame shares, set once when the frame runs.
+struct FrameUniforms {
   glm::vec3 eye{0.0f};  // camera position, world space
   glm::vec3 ambient{0.1f};
-  const LightData* lights = nullptr;  // the frame's lights (set when the frame runs)
+  const LightData* lights = nullptr;
   int light_count = 0;
-  const Material* material = nullptr;  // the draw's own copy
   const Lighting* lighting = nullptr;  // fog and environment
   float near_plane = 0.1f;
   float far_plane = 100.0f;
   // Every color of the frame is a display value, stored as code / 255 (models.hpp's
-  // display_value; set when the frame runs, pipeline/frame_run.cpp).
+  // display_value).
   bool display_referred = false;
+  const ShadingKernels* kernels = nullptr;  // the batch kernels of the frame's SIMD target
+};
+
+// What is the draw's own: its transforms and its material. The frame's are a pointer away.
+struct DrawUniforms {
+  glm::mat4 model{1.0f};
+  glm::mat4 model_view_projection{1.0f};
+  glm::mat3 normal_matrix{1.0f};       // inverse transpose of model's upper 3x3
+  const Material* material = nullptr;  // the draw's own copy
+  const FrameUniforms* frame = nullptr;
 };
 
 // Whether every light (Light or LightData) is directional: what the batch forms of the models
@@ -53,7 +60,8 @@ bool all_directional(const Lights& lights) {
                      [](const auto& light) { return light.type == LightType::directional; });
 }
 inline bool only_directional_lights(const DrawUniforms& u) {
-  return all_directional(std::span(u.lights, static_cast<std::size_t>(u.light_count)));
+  return all_directional(
+      std::span(u.frame->lights, static_cast<std::size_t>(u.frame->light_count)));
 }
 
 // One vertex as the vertex functions see it: object-space attributes already fetched.

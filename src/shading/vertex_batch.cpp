@@ -1,8 +1,8 @@
 // Batch vertex lighting of the Gouraud model (see vertex_batch.hpp). Highway compiles this file
-// once per SIMD target (foreach_target.h re-includes it); HWY_DYNAMIC_DISPATCH picks the best
-// the CPU has. Each step repeats the Gouraud models' vertex() with the same IEEE operations in the
-// same order (glm's mat4 x vec4 is (m0 x + m1 y) + (m2 z + m3 w); no fused multiply-add), so
-// every target gives its bits; vertex_batch_test checks it.
+// once per SIMD target (foreach_target.h re-includes it); the frame fetches the chosen target's
+// kernel (pipeline/kernels.hpp). Each step repeats the Gouraud models' vertex() with the same IEEE
+// operations in the same order (glm's mat4 x vec4 is (m0 x + m1 y) + (m2 z + m3 w); no fused
+// multiply-add), so every target gives its bits; vertex_batch_test checks it.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "shading/vertex_batch.cpp"
 #include "shading/vertex_batch.hpp"
@@ -25,7 +25,7 @@ void GouraudVertexBatch(const DrawUniforms& u, const VertexBatchInput& in, Goura
   const int lanes = static_cast<int>(hn::Lanes(d));
   const glm::mat4& m = u.model;
   const Material& material = *u.material;
-  const Vec3V eye = Set3(u.eye);
+  const Vec3V eye = Set3(u.frame->eye);
   for (int j = 0; j < in.count; j += lanes) {
     // glm::vec3(u.model * glm::vec4(position, 1)), the positions a vector of each axis (the
     // last few zero-padded: computed, then ignored).
@@ -47,10 +47,11 @@ void GouraudVertexBatch(const DrawUniforms& u, const VertexBatchInput& in, Goura
                        hn::Load(d, in.normal[2] + j)};
     const Vec3V view = SafeNormalize(
         {hn::Sub(eye.x, world[0]), hn::Sub(eye.y, world[1]), hn::Sub(eye.z, world[2])});
-    BatchV diffuse[3] = {hn::Set(d, u.ambient.x), hn::Set(d, u.ambient.y), hn::Set(d, u.ambient.z)};
+    BatchV diffuse[3] = {hn::Set(d, u.frame->ambient.x), hn::Set(d, u.frame->ambient.y),
+                         hn::Set(d, u.frame->ambient.z)};
     BatchV specular[3] = {hn::Zero(d), hn::Zero(d), hn::Zero(d)};
-    for (int i = 0; i < u.light_count; ++i) {
-      const LightData& l = u.lights[i];  // directional: incident() is to_light and radiance
+    for (int i = 0; i < u.frame->light_count; ++i) {
+      const LightData& l = u.frame->lights[i];  // directional: incident() is to_light and radiance
       const Vec3V to_light = Set3(l.to_light);
       const BatchV n_dot_l = Dot(normal, to_light);
       const auto lit = hn::Not(hn::Le(n_dot_l, hn::Zero(d)));  // the scalar loop's continue
@@ -98,9 +99,8 @@ HWY_EXPORT(GouraudVertexBatch);
 
 bool gouraud_batches_vertices(const DrawUniforms& u) { return only_directional_lights(u); }
 
-void gouraud_vertex_batch(const DrawUniforms& u, const VertexBatchInput& in, GouraudLayout layout,
-                          float (*out)[kVertexBatch]) {
-  HWY_DYNAMIC_DISPATCH(GouraudVertexBatch)(u, in, layout, out);
+GouraudVertexBatchKernel gouraud_vertex_batch_kernel(SimdTarget target) {
+  return HWY_DISPATCH_TABLE(GouraudVertexBatch)[target];
 }
 
 }  // namespace facet::shading

@@ -9,6 +9,7 @@
 
 #include <glm/glm.hpp>
 
+#include "core/simd_target.hpp"
 #include "shading/uniforms.hpp"
 
 namespace facet::shading {
@@ -36,7 +37,8 @@ struct GouraudLayout {
 };
 
 // out[k][n]: varying k of vertex n, as the Gouraud model of that layout's vertex() writes it.
-void gouraud_vertex_batch(const DrawUniforms& u, const VertexBatchInput& in, GouraudLayout layout,
-                          float (*out)[kVertexBatch]);
+using GouraudVertexBatchKernel = void (*)(const DrawUniforms& u, const VertexBatchInput& in,
+                                          GouraudLayout layout, float (*out)[kVertexBatch]);
+GouraudVertexBatchKernel gouraud_vertex_batch_kernel(SimdTarget target);
 
 }  // namespace facet::shading

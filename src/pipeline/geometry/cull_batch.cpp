@@ -9,7 +9,7 @@
 
 #include <algorithm>
 
-#include "pipeline/chosen_target.hpp"
+#include "core/simd_target.hpp"
 #include "pipeline/geometry/clip.hpp"
 #include "pipeline/geometry/projected_load-inl.h"
 
@@ -90,7 +90,7 @@ namespace facet::pipeline {
 
 HWY_EXPORT(CullTriangles);
 
-CullKernel cull_kernel() { return HWY_DISPATCH_TABLE(CullTriangles)[chosen_target_index()]; }
+CullKernel cull_kernel(SimdTarget target) { return HWY_DISPATCH_TABLE(CullTriangles)[target]; }
 
 }  // namespace facet::pipeline
 #endif  // HWY_ONCE

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 
+#include "core/simd_target.hpp"
 #include "pipeline/frame.hpp"
 
 namespace facet::pipeline {
@@ -34,7 +35,7 @@ struct CullSurvivors {
 
 using CullKernel = void (*)(const CullInput& in, CullSurvivors& out);
 
-// The kernel of the SIMD target Highway has chosen (choosing one if none is yet).
-CullKernel cull_kernel();
+// The kernel for `target` (core/simd_target.hpp).
+CullKernel cull_kernel(SimdTarget target);
 
 }  // namespace facet::pipeline

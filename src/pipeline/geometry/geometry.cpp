@@ -146,7 +146,8 @@ void run_geometry(Frame& frame, int workers) {
           small_over_w,
           vertex_count * static_cast<std::size_t>(frame.draws[d].pipeline.varyings) + kOverWSlack);
     } else {
-      transform_vertices(frame.draws[d], frame.width, frame.height, workers, frame.vertices[d]);
+      transform_vertices(frame.draws[d], *frame.kernels, frame.width, frame.height, workers,
+                         frame.vertices[d]);
       for (; k < end; ++k) frame.geometry_tasks.push_back({k, k + 1, false});
     }
     k = end;
@@ -164,7 +165,8 @@ void run_geometry(Frame& frame, int workers) {
     const std::uint32_t d = frame.chunks[task.first_chunk].draw;
     DrawVertices& vertices = task.transform ? frame.worker_vertices[worker] : frame.vertices[d];
     if (task.transform) {
-      transform_vertices(frame.draws[d], frame.width, frame.height, workers, vertices);
+      transform_vertices(frame.draws[d], *frame.kernels, frame.width, frame.height, workers,
+                         vertices);
     }
     for (std::uint32_t k = task.first_chunk; k < task.end_chunk; ++k) {
       GeometryChunk& chunk = frame.chunks[k];

@@ -7,6 +7,7 @@
 
 #include "pipeline/geometry/clip.hpp"
 #include "pipeline/geometry/cull_batch.hpp"
+#include "pipeline/kernels.hpp"
 #include "pipeline/setup/setup.hpp"
 #include "pipeline/setup/setup_batch.hpp"
 
@@ -24,6 +25,7 @@ struct Assembler {
   const DrawRecord& draw;
   const DrawVertices& vertices;
   ClipBounds guard;
+  const Kernels& kernels;
   bool hooks = has_triangle_hooks(draw);
   // Every triangle is set up by the setup kernel (setup_batch.hpp): those that need no clipping
   // a run of culling's survivors at a time, from the draw's projected vertices (unless
@@ -115,7 +117,7 @@ struct Assembler {
     if (pipe.draws_edges) {
       const ClipVertex* in[3] = {&vertices.clip[i0], &vertices.clip[i1], &vertices.clip[i2]};
       for (int i = 0; i < 3; ++i)
-        edge(in[i]->clip, in[(i + 1) % 3]->clip, draw.uniforms.wire_color);
+        edge(in[i]->clip, in[(i + 1) % 3]->clip, draw.material.wire_color);
     }
     if (!pipe.fills_triangles) return;
 
@@ -179,7 +181,7 @@ struct Assembler {
       ++counts.culled;
       return;
     }
-    edge(vertices.clip[i0].clip, vertices.clip[i1].clip, draw.uniforms.base_color);
+    edge(vertices.clip[i0].clip, vertices.clip[i1].clip, draw.material.base_color);
   }
 };
 
@@ -215,7 +217,7 @@ const std::uint32_t* list_triangles(const Mesh& mesh, std::size_t first, int cou
 // then assembled in order.
 void assemble_triangles(Assembler& assembler, const Mesh& mesh, std::size_t begin,
                         std::size_t end) {
-  const CullKernel cull = cull_kernel();
+  const CullKernel cull = assembler.kernels.cull;
   CullSurvivors survivors;
   // The setup kernel reads a run's indices a vector at a time, past the run's end.
   static_assert(CullSurvivors::kRoom >= kCullBatch + kSetupBatchSlack);
@@ -248,8 +250,9 @@ void assemble_primitives(const Frame& frame, std::uint32_t draw_index, const Dra
   const DrawRecord& draw = frame.draws[draw_index];
   const Mesh& mesh = *draw.mesh;
   Assembler assembler{
-      out,        counts, frame.width, frame.height,
-      draw_index, draw,   vertices,    guard_band_bounds(frame.width, frame.height)};
+      out,           counts, frame.width, frame.height,
+      draw_index,    draw,   vertices,    guard_band_bounds(frame.width, frame.height),
+      *frame.kernels};
   if (mesh.topology == Topology::lines) {
     for (std::size_t p = begin; p < end; ++p) {
       assembler.line(vertex_index(mesh, 2 * p), vertex_index(mesh, 2 * p + 1));
@@ -258,7 +261,7 @@ void assemble_primitives(const Frame& frame, std::uint32_t draw_index, const Dra
   }
   // Edges come before their triangle's fill, so wireframe draws set up one at a time (and draws
   // of edges only set up no triangle).
-  assembler.setup_kernel = setup_batch_kernel();
+  assembler.setup_kernel = frame.kernels->setup;
   assembler.by_runs =
       !assembler.hooks && !draw.pipeline.draws_edges && draw.pipeline.fills_triangles;
   assemble_triangles(assembler, mesh, begin, end);

@@ -4,8 +4,7 @@
 #include <algorithm>
 
 #include "pipeline/geometry/clip.hpp"
-#include "pipeline/geometry/vertex_pass.hpp"
-#include "pipeline/geometry/vertex_rows.hpp"
+#include "pipeline/kernels.hpp"
 #include "pipeline/parallel.hpp"
 #include "pipeline/record/draw_culling.hpp"
 #include "pipeline/setup/setup.hpp"
@@ -13,8 +12,9 @@
 namespace facet::pipeline {
 namespace {
 
-void transform_range(const DrawRecord& draw, const VertexPassInput& pass_input, std::size_t begin,
-                     std::size_t end, DrawVertices& out) {
+void transform_range(const DrawRecord& draw, const Kernels& kernels,
+                     const VertexPassInput& pass_input, std::size_t begin, std::size_t end,
+                     DrawVertices& out) {
   const Mesh& mesh = *draw.mesh;
   const shading::DrawUniforms& u = draw.uniforms;
   bool has_colors = !mesh.colors.empty();
@@ -30,7 +30,7 @@ void transform_range(const DrawRecord& draw, const VertexPassInput& pass_input, 
   for (std::size_t first = begin; first < end; first += kVertexPass) {
     const std::size_t count = std::min(kVertexPass, end - first);
     // First, several vertices at a time, all that needs no shading model.
-    run_vertex_pass(pass_input, first, count, pass);
+    kernels.vertex_pass(pass_input, first, count, pass);
     // Then the shading model: all of them at once if it has a batch form for this draw.
     if (draw.batch_vertices) {
       draw.pipeline.vertex_batch(u,
@@ -41,18 +41,13 @@ void transform_range(const DrawRecord& draw, const VertexPassInput& pass_input, 
                                   has_colors ? &mesh.colors[first] : nullptr},
                                  batch_varyings);
     }
-    store_projected(pass, count, &out.projected[first]);
-    for (std::size_t j = 0; j < count; ++j) {  // the few beyond the pass's screen rounding
-      if (pass.codes[j] & kScalarScreen) {
-        const glm::vec4 clip(pass.x[j], pass.y[j], pass.z[j], pass.w[j]);
-        out.projected[first + j].screen = to_screen(clip, pass_input.width, pass_input.height);
-      }
+    kernels.store_projected(pass, count, &out.projected[first]);
+    // What setup's planes pass through (perspective-correct interpolation of v / w; to_screen's
+    // 1 / w is the pass's: the same division).
+    if (draw.batch_vertices && over_w) {
+      kernels.store_over_w(batch_varyings, pass.inv_w, count, varyings, over_w + first * varyings);
     }
-    if (!write_clip) {  // a batch-form draw whose triangles only setup's fast path reads
-      // (to_screen's 1 / w is the pass's: the same division)
-      store_over_w(batch_varyings, pass.inv_w, count, varyings, over_w + first * varyings);
-      continue;
-    }
+    if (!write_clip) continue;  // a batch-form draw whose triangles only the setup kernel reads
     for (std::size_t j = 0; j < count; ++j) {
       const std::size_t i = first + j;
       ClipVertex& v = out.clip[i];
@@ -72,10 +67,10 @@ void transform_range(const DrawRecord& draw, const VertexPassInput& pass_input, 
                        : glm::vec4(0.0f);
       draw.pipeline.vertex(in, u, v.varyings);
     }
-    // What setup's planes pass through (perspective-correct interpolation of v / w). A loop of
-    // its own: read right after the shading model's narrow stores, the varyings' vector loads
-    // would stall on store forwarding.
-    for (std::size_t i = first; over_w && i < first + count; ++i) {
+    // The same for the varyings vertex() wrote, a vertex at a time. A loop of its own: read
+    // right after the shading model's narrow stores, the varyings' vector loads would stall on
+    // store forwarding.
+    for (std::size_t i = first; over_w && !draw.batch_vertices && i < first + count; ++i) {
       const float inv_w = out.projected[i].screen.inv_w;
       const float* v = out.clip[i].varyings;
       float* o = over_w + i * varyings;
@@ -93,8 +88,8 @@ bool keeps_clip_vertices(const DrawRecord& draw, const ClipBounds& guard) {
          !box_inside_clip_bounds(*draw.bounds, draw.uniforms.model_view_projection, guard);
 }
 
-void transform_vertices(const DrawRecord& draw, int width, int height, int workers,
-                        DrawVertices& out) {
+void transform_vertices(const DrawRecord& draw, const Kernels& kernels, int width, int height,
+                        int workers, DrawVertices& out) {
   std::size_t count = draw.mesh->positions.size();
   const Mesh& mesh = *draw.mesh;
   out.clip_written = draw.clip_vertices;
@@ -111,13 +106,13 @@ void transform_vertices(const DrawRecord& draw, int width, int height, int worke
                            {1.0f, 1.0f},
                            guard_band_bounds(width, height)};
   if (count <= kVerticesPerTask) {
-    transform_range(draw, to, 0, count, out);
+    transform_range(draw, kernels, to, 0, count, out);
     return;
   }
   int batches = static_cast<int>((count + kVerticesPerTask - 1) / kVerticesPerTask);
   parallel_tasks(batches, workers, [&](int batch, int) {
     std::size_t begin = batch * kVerticesPerTask;
-    transform_range(draw, to, begin, std::min(count, begin + kVerticesPerTask), out);
+    transform_range(draw, kernels, to, begin, std::min(count, begin + kVerticesPerTask), out);
   });
 }
 

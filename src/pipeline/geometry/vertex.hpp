@@ -24,7 +24,7 @@ bool keeps_clip_vertices(const DrawRecord& draw, const ClipBounds& guard);
 // Transforms every vertex of the draw into out (resized to the vertex count) and projects it
 // onto a width x height framebuffer. Large meshes are transformed in parallel batches; the
 // result does not depend on how they are split.
-void transform_vertices(const DrawRecord& draw, int width, int height, int workers,
-                        DrawVertices& out);
+void transform_vertices(const DrawRecord& draw, const Kernels& kernels, int width, int height,
+                        int workers, DrawVertices& out);
 
 }  // namespace facet::pipeline

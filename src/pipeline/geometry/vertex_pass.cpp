@@ -1,8 +1,8 @@
-// Stage: vertex transform, the SIMD part (see vertex_pass.hpp). Highway compiles this file once
-// per SIMD target (foreach_target.h re-includes it) and HWY_DYNAMIC_DISPATCH picks the best
-// target the CPU has. Only single IEEE operations are used (Mul, Add, Sub, Div, Sqrt; no fused
-// multiply-add, -ffp-contract=off), in the scalar code's order, so every lane equals the
-// scalar result on every target.
+// Stage: vertex transform, the SIMD part (see vertex_pass.hpp). Highway compiles this file once per
+// SIMD target (foreach_target.h re-includes it); the frame fetches the chosen target's kernel
+// (pipeline/kernels.hpp). Only single IEEE operations are used (Mul, Add, Sub, Div, Sqrt; no fused
+// multiply-add, -ffp-contract=off), in the scalar code's order, so every lane equals the scalar
+// result on every target.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "pipeline/geometry/vertex_pass.cpp"
 #include "pipeline/geometry/vertex_pass.hpp"
@@ -139,9 +139,8 @@ namespace facet::pipeline {
 
 HWY_EXPORT(RunVertexPass);
 
-void run_vertex_pass(const VertexPassInput& in, std::size_t first, std::size_t count,
-                     VertexPass& out) {
-  HWY_DYNAMIC_DISPATCH(RunVertexPass)(in, first, count, out);
+VertexPassKernel vertex_pass_kernel(SimdTarget target) {
+  return HWY_DISPATCH_TABLE(RunVertexPass)[target];
 }
 
 }  // namespace facet::pipeline

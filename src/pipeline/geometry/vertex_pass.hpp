@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 
+#include "core/simd_target.hpp"
 #include "pipeline/geometry/clip.hpp"
 #include "pipeline/setup/fixed_point.hpp"
 
@@ -26,9 +27,9 @@ struct VertexPassInput {
 };
 
 // ProjectedVertex::codes bit set by the pass when the lane's screen position is outside what
-// its rounding trick handles (only vertices beyond the guard band, whose screen position setup
-// never reads): vertex.cpp recomputes those with to_screen, so the stored values are the
-// scalar ones whatever the target.
+// its rounding trick handles: only vertices beyond the guard band, whose screen position
+// nothing reads (their triangles are clipped, and the clipped vertices projected anew), so it
+// is left as the target computed it. Stored positions without the bit are to_screen's.
 inline constexpr std::uint32_t kScalarScreen = 1u << 17;
 
 // Results for vertices [first, first + count), structure of arrays indexed by vertex - first.
@@ -43,7 +44,9 @@ struct VertexPass {
   alignas(64) std::uint32_t codes[kVertexPass];  // as ProjectedVertex::codes (+ kScalarScreen)
 };
 
-void run_vertex_pass(const VertexPassInput& in, std::size_t first, std::size_t count,
-                     VertexPass& out);
+// Runs the pass over vertices [first, first + count) of in; the kernel for `target`.
+using VertexPassKernel = void (*)(const VertexPassInput& in, std::size_t first, std::size_t count,
+                                  VertexPass& out);
+VertexPassKernel vertex_pass_kernel(SimdTarget target);
 
 }  // namespace facet::pipeline

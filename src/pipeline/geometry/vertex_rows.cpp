@@ -127,13 +127,12 @@ namespace facet::pipeline {
 HWY_EXPORT(StoreProjected);
 HWY_EXPORT(StoreOverW);
 
-void store_projected(const VertexPass& pass, std::size_t count, ProjectedVertex* out) {
-  HWY_DYNAMIC_DISPATCH(StoreProjected)(pass, count, out);
+StoreProjectedKernel store_projected_kernel(SimdTarget target) {
+  return HWY_DISPATCH_TABLE(StoreProjected)[target];
 }
 
-void store_over_w(const float (*values)[kVertexPass], const float* inv_w, std::size_t count,
-                  int varyings, float* out) {
-  HWY_DYNAMIC_DISPATCH(StoreOverW)(values, inv_w, count, varyings, out);
+StoreOverWKernel store_over_w_kernel(SimdTarget target) {
+  return HWY_DISPATCH_TABLE(StoreOverW)[target];
 }
 
 }  // namespace facet::pipeline

@@ -16,12 +16,15 @@ namespace facet::pipeline {
 // out[j] for j < count: clip x, y and w, the codes without kScalarScreen, and the screen
 // position from the pass. Vertices whose codes have kScalarScreen get the pass's values too:
 // the caller recomputes their screen position (to_screen).
-void store_projected(const VertexPass& pass, std::size_t count, ProjectedVertex* out);
+using StoreProjectedKernel = void (*)(const VertexPass& pass, std::size_t count,
+                                      ProjectedVertex* out);
+StoreProjectedKernel store_projected_kernel(SimdTarget target);
 
 // out[j * varyings + k] = values[k][j] * inv_w[j] for j < count, k < varyings (at most
 // kMaxVaryings): each vertex's varyings over w, as setup's planes take them. Writes nothing
 // else.
-void store_over_w(const float (*values)[kVertexPass], const float* inv_w, std::size_t count,
-                  int varyings, float* out);
+using StoreOverWKernel = void (*)(const float (*values)[kVertexPass], const float* inv_w,
+                                  std::size_t count, int varyings, float* out);
+StoreOverWKernel store_over_w_kernel(SimdTarget target);
 
 }  // namespace facet::pipeline

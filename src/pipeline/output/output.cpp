@@ -5,32 +5,22 @@
 #include <cstring>
 
 #include "core/color.hpp"
-#include "pipeline/output/sky_row.hpp"
-#include "pipeline/output/srgb_row.hpp"
+#include "pipeline/kernels.hpp"
 #include "shading/environment.hpp"
 
 namespace facet::pipeline {
 namespace {
 
-// One linear color (scaled by the exposure) as 8-bit sRGB RGBA.
-inline void encode_pixel(const shading::SrgbTables& tables, const glm::vec4& c, float scale,
-                         std::uint8_t* out) {
-  out[0] = shading::encode_srgb8(tables, c.r * scale);
-  out[1] = shading::encode_srgb8(tables, c.g * scale);
-  out[2] = shading::encode_srgb8(tables, c.b * scale);
-  out[3] = shading::encode_unorm8(c.a);  // alpha is linear coverage, never sRGB
-}
-
 // Writes one row of linear colors (scaled by the exposure) in the target's format; or of
 // display values, to an 8-bit target, rounded as they are.
-void store_row(Framebuffer& target, std::size_t first_pixel, const glm::vec4* colors, int count,
-               float scale, bool display_referred = false) {
+void store_row(const Kernels& kernels, Framebuffer& target, std::size_t first_pixel,
+               const glm::vec4* colors, int count, float scale, bool display_referred = false) {
   if (target.format() == ColorFormat::rgba8_srgb) {
     std::uint8_t* out = target.rgba8().data() + first_pixel * 4;
     if (display_referred) {
-      round_unorm8_row(colors, count, out);
+      kernels.round_unorm8_row(colors, count, out);
     } else {
-      encode_srgb_row(colors, count, scale, out);
+      kernels.encode_srgb_row(colors, count, scale, out);
     }
   } else {
     float* out = target.rgba32f().data() + first_pixel * 4;
@@ -73,8 +63,8 @@ void fill_background(TileContext& tile, const Background& background) {
     glm::vec4* row = tile.color + static_cast<std::ptrdiff_t>(y) * tile.stride;
     const float* depth = tile.depth + static_cast<std::ptrdiff_t>(y) * tile.stride;
     if (!environment.image) {  // the sky gradient, a row at a time with SIMD
-      fill_sky_row(view, environment, tile.x0, tile.y0 + y, tile.x1 - tile.x0, depth, kClearDepth,
-                   row);
+      tile.frame->kernels->sky_row(view, environment, tile.x0, tile.y0 + y, tile.x1 - tile.x0,
+                                   depth, kClearDepth, row);
       continue;
     }
     for (int x = 0; x < tile.x1 - tile.x0; ++x) {
@@ -90,7 +80,8 @@ void resolve_tile(const TileContext& tile, float scale, bool display_referred,
     const glm::vec4* color = tile.color + static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride;
     const float* depth = tile.depth + static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride;
     std::size_t row = static_cast<std::size_t>(y) * target.width();
-    store_row(target, row + tile.x0, color, tile.x1 - tile.x0, scale, display_referred);
+    store_row(*tile.frame->kernels, target, row + tile.x0, color, tile.x1 - tile.x0, scale,
+              display_referred);
     if (target.has_depth()) {
       std::copy_n(depth, tile.x1 - tile.x0, target.depth().data() + row + tile.x0);
     }
@@ -102,7 +93,7 @@ void resolve_cleared_tile(const TileContext& tile, const glm::vec4& clear, float
   // Convert the clear color once into one tile row, then copy that row down the tile.
   if (target.format() == ColorFormat::rgba8_srgb) {
     std::uint8_t pixel[4];
-    encode_pixel(shading::srgb_tables(), clear, scale, pixel);
+    tile.frame->kernels->encode_srgb_row(&clear, 1, scale, pixel);
     const int width = tile.x1 - tile.x0;
     std::uint8_t row_bytes[kMaxTileSize * 4];
     for (int x = 0; x < width; ++x) std::memcpy(row_bytes + x * 4, pixel, 4);
@@ -116,7 +107,8 @@ void resolve_cleared_tile(const TileContext& tile, const glm::vec4& clear, float
   }
   for (int y = tile.y0; y < tile.y1; ++y) {
     std::size_t row = static_cast<std::size_t>(y) * target.width();
-    for (int x = tile.x0; x < tile.x1; ++x) store_row(target, row + x, &clear, 1, scale);
+    for (int x = tile.x0; x < tile.x1; ++x)
+      store_row(*tile.frame->kernels, target, row + x, &clear, 1, scale);
     if (target.has_depth()) {
       std::fill_n(target.depth().data() + row + tile.x0, tile.x1 - tile.x0, kClearDepth);
     }

@@ -1,8 +1,7 @@
 // Stage: output, the sky gradient a row at a time (see sky_row.hpp). Highway compiles this file
-// once per SIMD target; HWY_DYNAMIC_DISPATCH picks the best the CPU has. Each step repeats
-// background_radiance's scalar operations in order: glm's mat4 x vec4 is
-// (m0 x + m1 y) + (m2 z + m3 w), normalize is v * (1 / sqrt(dot)), mix is a (1 - t) + b t;
-// no fused multiply-add.
+// once per SIMD target; the frame fetches the chosen target's kernel (pipeline/kernels.hpp). Each
+// step repeats background_radiance's scalar operations in order: glm's mat4 x vec4 is (m0 x + m1 y)
+// + (m2 z + m3 w), normalize is v * (1 / sqrt(dot)), mix is a (1 - t) + b t; no fused multiply-add.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "pipeline/output/sky_row.cpp"
 #include "pipeline/output/sky_row.hpp"
@@ -114,10 +113,7 @@ glm::vec3 background_radiance(const SkyView& view, const Environment& environmen
   return shading::environment_radiance(environment, direction);
 }
 
-void fill_sky_row(const SkyView& view, const Environment& environment, int x0, int y, int count,
-                  const float* depth, float clear_depth, glm::vec4* colors) {
-  HWY_DYNAMIC_DISPATCH(FillSkyRow)(view, environment, x0, y, count, depth, clear_depth, colors);
-}
+SkyRowKernel sky_row_kernel(SimdTarget target) { return HWY_DISPATCH_TABLE(FillSkyRow)[target]; }
 
 }  // namespace facet::pipeline
 #endif  // HWY_ONCE

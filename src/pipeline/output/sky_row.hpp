@@ -6,6 +6,7 @@
 
 #include <glm/glm.hpp>
 
+#include "core/simd_target.hpp"
 #include "facet/light.hpp"
 
 namespace facet::pipeline {
@@ -23,7 +24,8 @@ glm::vec3 background_radiance(const SkyView& view, const Environment& environmen
 
 // For pixels (x0 + i, y), i in [0, count), whose depth[i] equals clear_depth: colors[i] =
 // (background_radiance(...), 1) of a sky-gradient environment (no image).
-void fill_sky_row(const SkyView& view, const Environment& environment, int x0, int y, int count,
-                  const float* depth, float clear_depth, glm::vec4* colors);
+using SkyRowKernel = void (*)(const SkyView& view, const Environment& environment, int x0, int y,
+                              int count, const float* depth, float clear_depth, glm::vec4* colors);
+SkyRowKernel sky_row_kernel(SimdTarget target);
 
 }  // namespace facet::pipeline

@@ -1,5 +1,5 @@
-// Stage: output, sRGB encoding a row at a time (see srgb_row.hpp). Highway compiles this file
-// once per SIMD target; HWY_DYNAMIC_DISPATCH picks the best the CPU has.
+// Stage: output, sRGB encoding a row at a time (see srgb_row.hpp). Highway compiles this file once
+// per SIMD target; the frame fetches the chosen target's kernel (pipeline/kernels.hpp).
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "pipeline/output/srgb_row.cpp"
 #include "pipeline/output/srgb_row.hpp"
@@ -20,6 +20,8 @@ using IntTag = hn::RebindToSigned<FloatTag>;
 
 // Colors per step: the SIMD passes fill and read arrays for this many, the lookups between.
 constexpr int kChunk = 64;
+// Floats in the widest vector of any target.
+constexpr int kMaxFloatLanes = HWY_MAX_BYTES / sizeof(float);
 
 void EncodeSrgbRow(const glm::vec4* colors, int count, float scale, std::uint8_t* rgba) {
   const FloatTag df;
@@ -37,22 +39,31 @@ void EncodeSrgbRow(const glm::vec4* colors, int count, float scale, std::uint8_t
   // Per channel: the bits of its value clamped to [0, 1] (NaN to 0) above those of the first
   // run (color.hpp; 0 below it), and its run. Per color channel, the run's entry; per alpha
   // channel, its 8-bit rounding (shading::encode_unorm8).
-  alignas(64) std::int32_t above[4 * kChunk];
-  alignas(64) std::int32_t run[4 * kChunk];
-  alignas(64) std::int32_t entry[4 * kChunk];
+  alignas(64) std::int32_t above[4 * kChunk + kMaxFloatLanes];
+  alignas(64) std::int32_t run[4 * kChunk + kMaxFloatLanes];
+  alignas(64) std::int32_t entry[4 * kChunk + kMaxFloatLanes];
   const auto zero = hn::Zero(df), one = hn::Set(df, 1.0f);
   const auto run_base = hn::Set(di, static_cast<std::int32_t>(Tables::kRunBase));
   const auto codes = hn::Set(df, 255.0f), half = hn::Set(df, 0.5f);
   const auto three = hn::Set(di, 3);
   const auto run_mask = hn::Set(di, static_cast<std::int32_t>(Tables::kRunMask));
   const auto offset_mask = hn::Set(di, static_cast<std::int32_t>(Tables::kRunOffsetMask));
+  // A chunk whose floats end inside a vector is encoded from a copy padded with zeros, into a
+  // buffer of which only its own bytes are kept: every float goes through the same lanes.
+  alignas(64) float padded_in[4 * kChunk + kMaxFloatLanes];
+  alignas(64) std::uint8_t padded_out[4 * kChunk + kMaxFloatLanes];
   for (int first = 0; first < count; first += kChunk) {
     const int floats = 4 * std::min(kChunk, count - first);
-    // The floats of whole vectors, a whole number of colors (lanes are 1, 2 or a multiple of
-    // 4); the colors past them are encoded one channel at a time at the end.
-    const int whole = floats - floats % lanes;
+    // Whole vectors, a whole number of colors (lanes are 1, 2 or a multiple of 4).
+    const int whole = (floats + lanes - 1) / lanes * lanes;
     const float* in = &colors[first].x;
-    std::uint8_t* out = rgba + 4 * static_cast<std::ptrdiff_t>(first);
+    std::uint8_t* const destination = rgba + 4 * static_cast<std::ptrdiff_t>(first);
+    std::uint8_t* out = destination;
+    if (whole != floats) {
+      std::copy_n(in, floats, padded_in);
+      std::fill(padded_in + floats, padded_in + whole, 0.0f);
+      in = padded_in, out = padded_out;
+    }
     // 1. Clamp; the run; alpha's code.
     for (int j = 0; j < whole; j += lanes) {
       const auto x = hn::Mul(hn::LoadU(df, in + j), hn::LoadU(df, factor + (j & 3)));
@@ -83,10 +94,7 @@ void EncodeSrgbRow(const glm::vec4* colors, int count, float scale, std::uint8_t
       const auto byte = hn::IfThenElse(alpha, e, code);
       hn::StoreU(hn::TruncateTo(du8, hn::BitCast(du, byte)), du8, out + j);
     }
-    for (int j = whole; j < floats; ++j) {  // the same codes, by the scalar encoders
-      out[j] =
-          j % 4 == 3 ? shading::encode_unorm8(in[j]) : shading::encode_srgb8(tables, in[j] * scale);
-    }
+    if (out != destination) std::copy_n(out, floats, destination);
   }
 }
 
@@ -98,17 +106,24 @@ void RoundUnorm8Row(const glm::vec4* colors, int count, std::uint8_t* rgba) {
   const int lanes = static_cast<int>(hn::Lanes(df));
   const auto zero = hn::Zero(df), one = hn::Set(df, 1.0f);
   const auto codes = hn::Set(df, 255.0f), half = hn::Set(df, 0.5f);
+  const auto round = [&](const float* from, std::uint8_t* to) {
+    const auto x = hn::LoadU(df, from);
+    const auto c = hn::Min(hn::IfThenElseZero(hn::Gt(x, zero), x), one);
+    // A multiplication then an addition, not fused: shading::encode_unorm8 exactly.
+    const auto code = hn::ConvertTo(di, hn::Add(hn::Mul(c, codes), half));
+    hn::StoreU(hn::DemoteTo(du8, code), du8, to);
+  };
   const float* in = &colors[0].x;
   const int floats = 4 * count;
   int j = 0;
-  for (; j + lanes <= floats; j += lanes) {
-    const auto x = hn::LoadU(df, in + j);
-    const auto c = hn::Min(hn::IfThenElseZero(hn::Gt(x, zero), x), one);
-    // A multiplication then an addition, not fused: the scalar rounding exactly.
-    const auto code = hn::ConvertTo(di, hn::Add(hn::Mul(c, codes), half));
-    hn::StoreU(hn::DemoteTo(du8, code), du8, rgba + j);
-  }
-  for (; j < floats; ++j) rgba[j] = shading::encode_unorm8(in[j]);
+  for (; j + lanes <= floats; j += lanes) round(in + j, rgba + j);
+  if (j == floats) return;
+  // The floats left, padded with zeros to a vector; only their own bytes are kept.
+  alignas(64) float padded_in[kMaxFloatLanes] = {};
+  alignas(64) std::uint8_t padded_out[kMaxFloatLanes];
+  std::copy_n(in + j, floats - j, padded_in);
+  round(padded_in, padded_out);
+  std::copy_n(padded_out, floats - j, rgba + j);
 }
 
 }  // namespace facet::pipeline::HWY_NAMESPACE
@@ -120,12 +135,12 @@ namespace facet::pipeline {
 HWY_EXPORT(EncodeSrgbRow);
 HWY_EXPORT(RoundUnorm8Row);
 
-void encode_srgb_row(const glm::vec4* colors, int count, float scale, std::uint8_t* rgba) {
-  HWY_DYNAMIC_DISPATCH(EncodeSrgbRow)(colors, count, scale, rgba);
+EncodeSrgbRowKernel encode_srgb_row_kernel(SimdTarget target) {
+  return HWY_DISPATCH_TABLE(EncodeSrgbRow)[target];
 }
 
-void round_unorm8_row(const glm::vec4* colors, int count, std::uint8_t* rgba) {
-  HWY_DYNAMIC_DISPATCH(RoundUnorm8Row)(colors, count, rgba);
+RoundUnorm8RowKernel round_unorm8_row_kernel(SimdTarget target) {
+  return HWY_DISPATCH_TABLE(RoundUnorm8Row)[target];
 }
 
 }  // namespace facet::pipeline

@@ -10,15 +10,20 @@
 #include <cstdint>
 #include <glm/vec4.hpp>
 
+#include "core/simd_target.hpp"
+
 namespace facet::pipeline {
 
 // rgba[4 i + c] for the count colors: red, green and blue times scale (the exposure) as
 // shading::encode_srgb8 encodes them; alpha (not scaled) clamped to [0, 1] and rounded to 8
 // bits. NaN encodes as 0.
-void encode_srgb_row(const glm::vec4* colors, int count, float scale, std::uint8_t* rgba);
+using EncodeSrgbRowKernel = void (*)(const glm::vec4* colors, int count, float scale,
+                                     std::uint8_t* rgba);
+EncodeSrgbRowKernel encode_srgb_row_kernel(SimdTarget target);
 
 // rgba[4 i + c] for the count colors, every channel clamped to [0, 1] (NaN to 0) and rounded
-// to 8 bits as encode_srgb_row rounds alpha: the resolve of display values (output.hpp).
-void round_unorm8_row(const glm::vec4* colors, int count, std::uint8_t* rgba);
+// to 8 bits as the encode kernel rounds alpha: the resolve of display values (output.hpp).
+using RoundUnorm8RowKernel = void (*)(const glm::vec4* colors, int count, std::uint8_t* rgba);
+RoundUnorm8RowKernel round_unorm8_row_kernel(SimdTarget target);
 
 }  // namespace facet::pipeline

@@ -1,6 +1,6 @@
 // Stage: raster, the SIMD part (see block_raster.hpp). Highway compiles this file once per SIMD
-// target (foreach_target.h re-includes it) and HWY_DYNAMIC_DISPATCH picks the best target the
-// CPU has at the first call; tests force each target in turn and expect identical images.
+// target (foreach_target.h re-includes it); the frame fetches the chosen target's kernel
+// (pipeline/kernels.hpp); tests force each target in turn and expect identical images.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "pipeline/raster/block_raster.cpp"
 #include "pipeline/raster/block_raster.hpp"
@@ -10,7 +10,7 @@
 
 #include <algorithm>
 
-#include "pipeline/chosen_target.hpp"
+#include "core/simd_target.hpp"
 #include "pipeline/setup/fixed_point.hpp"
 #include "pipeline/setup/setup.hpp"
 
@@ -206,10 +206,9 @@ HWY_EXPORT(TargetName);
 HWY_EXPORT(InterpolatePixels);
 HWY_EXPORT(FindBoxPixels);
 
-const char* simd_target_name() { return HWY_DYNAMIC_DISPATCH(TargetName)(); }
+const char* simd_target_name() { return HWY_DISPATCH_TABLE(TargetName)[chosen_simd_target()](); }
 
-RasterKernels raster_kernels() {
-  const std::size_t index = chosen_target_index();
+RasterKernels raster_kernels(SimdTarget index) {
   return {HWY_DISPATCH_TABLE(CoverBlock)[index], HWY_DISPATCH_TABLE(InterpolatePixels)[index],
           HWY_DISPATCH_TABLE(FindBoxPixels)[index]};
 }

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 
+#include "core/simd_target.hpp"
 #include "pipeline/frame.hpp"
 
 namespace facet::pipeline {
@@ -94,7 +95,7 @@ struct RasterKernels {
                          const float* depth, int depth_stride, bool depth_test, std::int16_t* x,
                          std::int16_t* y);
 };
-RasterKernels raster_kernels();
+RasterKernels raster_kernels(SimdTarget target);
 
 // Name of the SIMD target the kernels run on now (e.g. "AVX2"), for bench output and tests.
 const char* simd_target_name();

@@ -18,6 +18,7 @@
 #include "pipeline/setup/fixed_point.hpp"
 #include "shading/fog.hpp"
 #include "shading/fragment.hpp"
+#include "shading/kernels.hpp"
 #include "shading/shade_batch.hpp"
 #include "shading/texel_batch.hpp"
 
@@ -49,7 +50,7 @@ struct TileContext {
   // Pixels of small triangles waiting to be shaded together (WaitingPixels): the tile task's
   // own (render_tile.cpp sets it before the first triangle).
   WaitingPixels* waiting = nullptr;
-  RasterKernels kernels = raster_kernels();  // the SIMD kernels, for the target chosen now
+  RasterKernels kernels{};  // the frame's (pipeline/kernels.hpp), set with the tile
 };
 
 // Shading models may opt out of the depth test (debug counters) and blend additively.
@@ -301,7 +302,7 @@ class PixelWriter {
     }
     if constexpr (edge_overlay<Shading>()) {
       if (distance_to_edges(*t_, edge_scales_, x, y) < kOverlayHalfWidth) {
-        color = uniforms_.wire_color;
+        color = uniforms_.material->wire_color;
       }
     }
     if constexpr (!kFogged) shading::apply_fog(color, w, fog_);
@@ -329,7 +330,7 @@ class PixelWriter {
       : tile_(tile),
         t_(t),
         uniforms_(tile.frame->draws[draw].uniforms),
-        fog_(uniforms_.lighting->fog),
+        fog_(uniforms_.frame->lighting->fog),
         alpha_cutoff_(uniforms_.material->alpha_cutoff),
         edge_scales_(edge_scales) {
     if constexpr (kTexcoordSlot >= 0) {
@@ -356,7 +357,7 @@ class PixelWriter {
           texels_.planes = fragment.planes + kTexcoordSlot;
           texels_.inv_w = &t_->inv_w;
         }
-        shading::sample_batch(*base_map_, texels_);
+        shading::sample_batch(uniforms_.frame->kernels->sample_batch, *base_map_, texels_);
         return texels_.rgba;
       }
     }

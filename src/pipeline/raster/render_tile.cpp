@@ -51,6 +51,7 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
   const int ts = frame.tile_size;
   pipeline::TileContext tile;
   tile.frame = &frame;
+  tile.kernels = frame.kernels->raster;
   tile.x0 = (index % frame.tiles_x) * ts;
   tile.y0 = (index / frame.tiles_x) * ts;
   tile.x1 = std::min(tile.x0 + ts, frame.width);

@@ -20,7 +20,7 @@
 #include <bit>
 #include <limits>
 
-#include "pipeline/chosen_target.hpp"
+#include "core/simd_target.hpp"
 #include "pipeline/geometry/projected_load-inl.h"
 #include "pipeline/setup/fixed_point.hpp"
 #include "pipeline/setup/setup.hpp"
@@ -304,8 +304,8 @@ namespace facet::pipeline {
 
 HWY_EXPORT(SetupBatchLanes);
 
-SetupBatchKernel setup_batch_kernel() {
-  return HWY_DISPATCH_TABLE(SetupBatchLanes)[chosen_target_index()];
+SetupBatchKernel setup_batch_kernel(SimdTarget target) {
+  return HWY_DISPATCH_TABLE(SetupBatchLanes)[target];
 }
 
 }  // namespace facet::pipeline

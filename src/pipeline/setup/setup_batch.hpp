@@ -8,6 +8,7 @@
 
 #include <cstdint>
 
+#include "core/simd_target.hpp"
 #include "pipeline/frame.hpp"
 #include "pipeline/geometry/primitive_sink.hpp"
 
@@ -38,8 +39,7 @@ struct SetupBatchTarget {
 // (degenerate or flipped by snapping, or covering no pixel centre).
 using SetupBatchKernel = int (*)(const SetupBatch& batch, const SetupBatchTarget& target);
 
-// The kernel of the SIMD target Highway has chosen (choosing one if none is yet), to fetch once
-// for many batches.
-SetupBatchKernel setup_batch_kernel();
+// The kernel for `target` (core/simd_target.hpp), fetched once per frame (pipeline/kernels.hpp).
+SetupBatchKernel setup_batch_kernel(SimdTarget target);
 
 }  // namespace facet::pipeline

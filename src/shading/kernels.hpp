@@ -1,0 +1,36 @@
+// The shading stage's SIMD kernels for one target, fetched once per frame (core/simd_target.hpp)
+// and reached by every draw through FrameUniforms::kernels (uniforms.hpp); and BatchForm, how
+// the built-in models call theirs.
+#pragma once
+
+#include "core/simd_target.hpp"
+#include "shading/shade_batch.hpp"
+#include "shading/texel_batch.hpp"
+#include "shading/vertex_batch.hpp"
+
+namespace facet::shading {
+
+struct ShadingKernels {
+  SimdTarget target = 0;  // for kernels outside the library (bench/scenes) to fetch theirs
+  ShadeBatchKernel shade_batch = nullptr;
+  SampleBatchKernel sample_batch = nullptr;
+  GouraudVertexBatchKernel gouraud_vertex_batch = nullptr;
+};
+
+inline ShadingKernels shading_kernels(SimdTarget target) {
+  return {target, shade_batch_kernel(target), sample_batch_kernel(target),
+          gouraud_vertex_batch_kernel(target)};
+}
+
+// What a shading model provides to be shaded a batch at a time (models.hpp; the raster loop,
+// pipeline/raster/raster.hpp, looks for these two): whether it can take this draw, and the batch
+// form of fragment(), which also applies in.fog. The built-in models get them from here.
+template <BatchModel kModel>
+struct BatchForm {
+  static bool batch_shades(const DrawUniforms& u) { return shading::batch_shades(kModel, u); }
+  static void fragment_batch(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
+    u.frame->kernels->shade_batch(kModel, u, in, rgba);
+  }
+};
+
+}  // namespace facet::shading

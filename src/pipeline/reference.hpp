@@ -1,27 +1,49 @@
 // The reference rasterizer: short, scalar and obviously correct, used only by tests to check
 // the tiled fast path. Same rules (pixel centres, 8-bit sub-pixel snapping, top-left fill
-// rule, clipping), none of the machinery: no tiles, no bins, no incremental stepping.
+// rule, clipping, depth test "less"), none of the machinery: no tiles, no bins, no incremental
+// stepping, no SIMD. It shades one model, Lambert with a base color map, written out plainly.
 #pragma once
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 #include <vector>
 
+#include "facet/camera.hpp"
+#include "facet/light.hpp"
 #include "facet/material.hpp"
+#include "facet/mesh.hpp"
 
 namespace facet::pipeline {
 
 struct ReferenceImage {
   int width = 0;
   int height = 0;
-  std::vector<int> coverage;  // how many triangles covered each pixel centre
-  std::vector<float> depth;   // nearest window depth (1 = far, the clear value)
+  std::vector<int> coverage;     // how many triangles covered each pixel centre
+  std::vector<float> depth;      // nearest window depth (1 = far, the clear value)
+  std::vector<glm::vec4> color;  // linear RGBA of the nearest fragment; empty if not shaded
 };
 
 // Rasterizes a triangle soup (every 3 positions, object space) transformed by
-// model_view_projection.
+// model_view_projection: coverage and depth only.
 ReferenceImage reference_rasterize(const std::vector<glm::vec3>& positions,
                                    const glm::mat4& model_view_projection, CullMode cull, int width,
                                    int height);
+
+// One Lambert-shaded draw seen by a camera: what reference_render reads.
+struct ReferenceScene {
+  Mesh mesh;  // triangles, with a normal per vertex; texture coordinates optional ((0, 0))
+  glm::mat4 model{1.0f};
+  Camera camera;
+  // Reads base_color, base_color_map (nearest or bilinear: no mip selection) and cull;
+  // shading must be lambert, opaque, without emission.
+  Material material;
+  Lighting lighting;  // directional lights and the ambient term; no fog
+  glm::vec4 clear_color{0.0f, 0.0f, 0.0f, 1.0f};
+};
+
+// Renders the scene: coverage, nearest depth and the nearest fragment's color (the clear color
+// where none). Throws std::invalid_argument for what it does not draw (see ReferenceScene).
+ReferenceImage reference_render(const ReferenceScene& scene, int width, int height);
 
 }  // namespace facet::pipeline

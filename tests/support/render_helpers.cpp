@@ -44,7 +44,8 @@ Framebuffer render_shapes(ShadingModel model, int width, int height, RenderSetti
 }
 
 std::vector<int> coverage_counts(const std::vector<const Mesh*>& meshes, const Camera& camera,
-                                 int width, int height, CullMode cull, RenderSettings settings) {
+                                 int width, int height, CullMode cull, RenderSettings settings,
+                                 const glm::mat4& transform) {
   settings.clear_color = glm::vec4(0.0f);
   Renderer renderer(settings);
   Framebuffer fb(width, height, ColorFormat::rgba32f);
@@ -53,7 +54,7 @@ std::vector<int> coverage_counts(const std::vector<const Mesh*>& meshes, const C
   auto pipe = pipeline::make_pipeline<shading::OverdrawCountShading>();
   renderer.begin_frame(camera);
   for (const Mesh* mesh : meshes)
-    pipeline::draw_with_pipeline(renderer, *mesh, material, glm::mat4(1.0f), pipe);
+    pipeline::draw_with_pipeline(renderer, *mesh, material, transform, pipe);
   renderer.finish(fb);
   std::vector<int> counts(static_cast<std::size_t>(width) * height);
   for (std::size_t i = 0; i < counts.size(); ++i) counts[i] = static_cast<int>(fb.rgba32f()[i * 4]);

@@ -28,11 +28,12 @@ Mesh soup_quad(float x0, float y0, float x1, float y1, float z);
 // The built-in shapes scene with every material set to `model`, width x height.
 Framebuffer render_shapes(ShadingModel model, int width, int height, RenderSettings settings = {});
 
-// Renders meshes with the overdraw counter (no depth test): how many triangles covered each
-// pixel centre, row-major.
+// Renders meshes (each placed by transform) with the overdraw counter (no depth test): how
+// many triangles covered each pixel centre, row-major.
 std::vector<int> coverage_counts(const std::vector<const Mesh*>& meshes, const Camera& camera,
                                  int width, int height, CullMode cull = CullMode::none,
-                                 RenderSettings settings = {});
+                                 RenderSettings settings = {},
+                                 const glm::mat4& transform = glm::mat4(1.0f));
 
 // Renders meshes with an unlit material and returns the framebuffer (color and depth).
 Framebuffer render_unlit(const std::vector<const Mesh*>& meshes, const Camera& camera, int width,

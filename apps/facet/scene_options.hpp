@@ -1,6 +1,6 @@
 // Command-line options that choose and adjust what is drawn — a model file or a built-in
 // scene, the camera, lights, shading overrides, environment, fog — shared by the subcommands
-// that render (render, and later view and bench).
+// that render a scene (render and view).
 #pragma once
 
 #include <CLI/CLI.hpp>

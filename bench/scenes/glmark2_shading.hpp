@@ -49,8 +49,7 @@ inline float pow10(float x) {
 // light-basic.vert/.frag (build, gouraud): Lambert per vertex, no ambient, no specular.
 // Color = max(N.L, 0) x MaterialDiffuse (the material's base colour); the pixel shows it.
 // With its batch form, whole blocks go straight into the tile and small triangles' pixels wait
-// to be shaded together: build and gouraud take about three quarters of the time they took
-// one pixel at a time with fragment().
+// to be shaded together, instead of one pixel at a time with fragment().
 struct BasicLightShading : BatchForm<BatchShader::basic_light>, shading::DisplayReferred {
   static constexpr int kVaryings = 3;
   static constexpr int kNormalSlot = -1;  // the scenes' meshes carry normals

@@ -16,7 +16,7 @@ enum class ColorFormat {
 
 // Whether the renderer copies its depth out into the framebuffer. Depth is tested either way
 // (in the renderer's own tile buffers); a color-only job (a PNG, a window) saves the copy, a
-// fifth of a simple frame's time at 1920x1080.
+// sizeable share of a simple frame's time.
 enum class DepthImage { keep, none };
 
 class Framebuffer {

@@ -71,9 +71,8 @@ void write_png(std::FILE* file, const Framebuffer& fb, const std::vector<std::ui
   png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
   // Thumbnails and frame sequences care about time. Each row filtered by its left neighbour
   // (SUB) instead of libpng trying all five filters per row, and zlib's run-length strategy
-  // (Z_RLE, which needs no match search): 1.6x to 2.8x faster to write than all filters at
-  // level 2, and no bigger (islands 1080p 113 -> 68 ms, bunny 66 -> 28 ms, 0 to 25 % smaller;
-  // BENCHMARKS.md).
+  // (Z_RLE, which needs no match search): much faster to write than trying every filter, and
+  // rendered frames come out no bigger.
   png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
   png_set_compression_strategy(png, Z_RLE);
   png_write_info(png, info);

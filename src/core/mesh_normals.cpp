@@ -46,7 +46,7 @@ std::vector<Triangle> triangles_of(const Mesh& mesh) {
 
 // Bit-exact keys: welding must only merge vertices that are truly identical. Fixed size (a
 // vertex's attributes are at most 3 + 3 + 2 + 4 + 4 floats), so that keys never allocate:
-// a mesh's load made hundreds of thousands of them.
+// loading a big mesh makes hundreds of thousands of them.
 struct Bits {
   static constexpr int kMaxWords = 16;
   std::array<std::uint32_t, kMaxWords> words;

@@ -2,7 +2,7 @@
 // *, / and no fused multiply-add), so that the scalar shading code and every SIMD target of the
 // batch code (texel_batch.cpp, shade_batch.cpp repeat these steps lane by lane) compute the
 // same bits on every CPU. glibc's log2f, expf and powf pick their implementation per CPU (FMA
-// or not), and a libm call per pixel was a fifth of a trilinear-textured frame.
+// or not), and a libm call per pixel is dear in the shading loops.
 //   lod_log2       texture level of detail      portable_exp  exponential fog
 //   portable_pow   specular highlights (x^s for x >= 0, through portable_log2)
 #pragma once
@@ -73,7 +73,7 @@ inline float portable_log2(float x) {
 
 // log2(x) to within 0.001 for positive normal x, for the texture level of detail: a thousandth
 // of a mip level is far below what shows, and without portable_log2's division and range
-// reduction the batch sampler's level of detail costs half as much. Subnormal x give about
+// reduction the batch sampler's level of detail is much cheaper. Subnormal x give about
 // -127 (far below level 0 all the same); -inf for 0, +inf for +inf, NaN for NaN and negative x.
 inline float lod_log2(float x) {
   using namespace portable_math;

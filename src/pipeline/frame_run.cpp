@@ -25,10 +25,9 @@ using pipeline::TileBuffers;
 // Whether every color this frame writes into its tiles is a display value (an 8-bit code, as
 // the debug views and the glmark2 scenes' models write): then the tiles hold code / 255, which
 // resolve rounds back to the code, instead of the code's decoded linear value, which resolve's
-// sRGB encode turns back into the same code at 30 instructions a pixel (a fifth of
-// texture:linear's frame). The bytes are the same either way. Only for 8-bit sRGB targets at
-// exposure 0, without fog, environment, debug view or lines, when every draw's model writes
-// display values unblended.
+// sRGB encode turns back into the same code with far more work a pixel than the rounding. The
+// bytes are the same either way. Only for 8-bit sRGB targets at exposure 0, without fog,
+// environment, debug view or lines, when every draw's model writes display values unblended.
 bool Renderer::Impl::display_referred_frame(const Framebuffer& target) const {
   if (target.format() != ColorFormat::rgba8_srgb || settings.exposure != 0.0f) return false;
   if (background.environment != nullptr || settings.debug_view != DebugView::none) return false;

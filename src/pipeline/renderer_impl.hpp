@@ -59,10 +59,10 @@ struct Renderer::Impl {
   Lighting lighting;
   bool recording = false;
   std::uint64_t primitives_outside = 0;  // of draws outside the frustum, never recorded
-  // Meshes drawn through shared pointers, checked once (Renderer::draw): at the islands' 750
-  // draws a frame, checking every mesh again took 4 % of a 720p frame on 2 threads, all of it
-  // on the recording thread. An entry holds its mesh, so no other mesh can take its address
-  // while it is remembered; it is forgotten a frame after the last that drew it.
+  // Meshes drawn through shared pointers, checked once (Renderer::draw): checking every mesh again
+  // in every frame costs real time in big worlds of many draws, all of it on the recording thread.
+  // An entry holds its mesh, so no other mesh can take its address while it is remembered; it is
+  // forgotten a frame after the last that drew it.
   struct CheckedMesh {
     std::shared_ptr<const Mesh> mesh;
     std::optional<pipeline::MeshBox> box;

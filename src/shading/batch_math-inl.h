@@ -169,8 +169,8 @@ HWY_INLINE float (*ColorAt(float (*rgba)[4], int row_stride, int n))[4] {
 
 // Writes a vector's colors as RGBA from rgba[0] on. A batch's colors array holds kShadeBatch
 // entries, a whole number of vectors (shade_batch.hpp), so the lanes past the batch's count
-// write scratch entries. (A copy of just the batch's last few colors, of variable size, was a
-// "rep movs": tens of cycles to start, two thirds of ShadeBatch when every vector took it.)
+// write scratch entries. (A copy of just the batch's last few colors, of variable size, would
+// compile to a "rep movs", slow to start.)
 HWY_INLINE void StoreColors(const BatchV color[4], float (*rgba)[4]) {
   hn::StoreInterleaved4(color[0], color[1], color[2], color[3], BatchTag(), &rgba[0][0]);
 }
@@ -193,7 +193,7 @@ HWY_INLINE void StoreDisplayCodes(const Vec3V& rgb, int j, DisplayCodes codes) {
 
 // Pixel n's color (ColorAt) = its codes as display values (models.hpp's display_channel),
 // alpha 1, for n < count. Decoded, the sRGB table is read one channel at a time after the SIMD loop
-// (gathers were slower, as in resolve); in display-referred frames, code / 255 with SIMD.
+// (scalar loads, not gathers, as in resolve); in display-referred frames, code / 255 with SIMD.
 HWY_INLINE void DecodeDisplayCodes(DisplayCodes codes, int count, bool referred, int row_stride,
                                    float (*rgba)[4]) {
   if (referred) {

@@ -11,8 +11,7 @@ namespace facet::shading {
 // How much of the surface's color survives at this view depth, in [0, 1]. Out of line (its
 // exponential is a polynomial, portable_math.hpp, shared with the SIMD batch shader). It returns a
 // float rather than the fogged color: a glm::vec4 returned by value comes back in two 8-byte
-// halves, and the raster loop's 16-byte reload of them stalled store forwarding: a third of the
-// raster loop's time in the fogged islands.
+// halves, and the raster loop's 16-byte reload of them would stall on store forwarding.
 float fog_keep(float view_depth, const Fog& fog);
 
 // A per-draw constant decides the mode, so this branch is perfectly predicted; a template

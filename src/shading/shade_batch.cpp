@@ -148,8 +148,8 @@ void ShadeNormals(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4])
 // The constant-color unlit model with a base color map and no fog: each pixel's color is the
 // material's times its texel, plus the emission, channel by channel. Done on the colors as they
 // lie, RGBA, four pixels to a 16-lane vector, rather than turned into a vector per channel and
-// back, which was most of what this model's shading cost (overdraw's textured quads). Returns
-// false where vectors do not hold whole pixels.
+// back, which would cost more than the arithmetic itself. Returns false where vectors do not
+// hold whole pixels.
 bool ShadeConstantUnlitAsRgba(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
   const hn::ScalableTag<float> d;
   const int lanes = static_cast<int>(hn::Lanes(d));

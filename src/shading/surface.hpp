@@ -82,9 +82,8 @@ void surface_vertex_batch(const DrawUniforms& u, const VertexBatchInput& in,
   const glm::vec4 same = u.material->use_vertex_colors ? u.material->base_color * glm::vec4(1.0f)
                                                        : u.material->base_color;
   if (vary) {
-    // The four channels in one loop, the factors in locals: a loop per channel indexed glm's
-    // vec4 by a variable, which GCC compiled into a branch per vertex (nine tenths of this
-    // function's time on the islands).
+    // The four channels in one loop, the factors in locals: a loop per channel would index
+    // glm's vec4 by a variable, which GCC compiles into a branch per vertex.
     const float r = u.material->base_color.r, g = u.material->base_color.g,
                 b = u.material->base_color.b, a = u.material->base_color.a;
     float* red = out[kColorSlot];

@@ -27,7 +27,7 @@ namespace facet::shading::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
 // Eight lanes at most: batches are often a few pixels of a small triangle, where AVX-512's
-// sixteen lanes mostly compute padding (islands was 5 % faster with eight, overdraw the same).
+// sixteen lanes mostly compute padding.
 constexpr int kMaxLanes = 8;
 using FloatTag = hn::CappedTag<float, kMaxLanes>;
 using IntTag = hn::RebindToSigned<FloatTag>;
@@ -283,8 +283,7 @@ HWY_INLINE FloatV LinearPart(const glm::mat3& m, int row, FloatV du, FloatV dv) 
 // sample_map_at()'s level of detail: exact derivatives, the map's linear part, then
 // Texture::lod() (footprint in base texels, the longer squared edge, half its log2), for the W
 // vectors of pixels from pixel j on. Each step is done for all W before the next, so that the
-// CPU overlaps the vectors' chains of some 40 dependent operations (overdraw 3 % faster than
-// one vector at a time).
+// CPU overlaps the vectors' chains of some 40 dependent operations.
 template <int W>
 HWY_INLINE void LevelsOfDetail(const Texture& texture, const glm::mat3& m, const TexelBatch& batch,
                                const Slopes& triangle, int j, FloatV* lod) {
@@ -314,7 +313,7 @@ HWY_INLINE void LevelsOfDetail(const Texture& texture, const glm::mat3& m, const
                                hn::Add(hn::Mul(yu[k], yu[k]), hn::Mul(yv[k], yv[k])));
     // Magnified everywhere (a footprint of at most one texel): the logarithm would be at most
     // 0 (lod_log2 never exceeds 0 up to 1: PortableMath.LodLog2IsNotPositiveUpToOne), which
-    // the caller takes as level 0 all the same; skipping it made overdraw 5 % faster.
+    // the caller takes as level 0 all the same, so it is skipped.
     if (hn::AllTrue(df, hn::Le(rho2, hn::Set(df, 1.0f)))) {
       lod[k] = hn::Zero(df);
       continue;
@@ -359,8 +358,7 @@ void SampleBatch(const TextureMap& map, TexelBatch& batch) {
   }
   // Three passes over the batch, each a short loop of independent vectors, so that the CPU
   // overlaps one vector's long dependency chains (the level of detail's logarithm above all)
-  // with the next one's. In one loop, each vector's per-pixel blends stood between them: 16 %
-  // slower on overdraw, 13 % on texture:mipmap.
+  // with the next one's. In one loop, each vector's per-pixel blends would stand between them.
   //
   // 1. Each pixel's mip level and the fraction toward the next (sample_levels(): clamp to the
   // chain, blend the two nearest levels); level 0 and no fraction for bilinear.

@@ -174,7 +174,7 @@ SoundBuffer propeller_buzz(double seconds) {
   // A band-limited sawtooth, sum of sin(h x) / h over harmonics up to 4 kHz (none to alias),
   // started half a period on (x + pi: the sign of odd harmonics flips) so the loop begins
   // mid-ramp rather than on the saw's drop. sin(h x) comes from the angle-addition recurrence,
-  // not one std::sin per harmonic: 40 harmonics of std::sin made this the slowest synthesizer.
+  // not one std::sin per harmonic, which would be dear with dozens of harmonics a sample.
   const std::uint64_t harmonics = std::max<std::uint64_t>(
       1, static_cast<std::uint64_t>(4000.0 * static_cast<double>(n) / kSampleRate) / base);
   std::vector<double> x(n);

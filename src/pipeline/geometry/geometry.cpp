@@ -154,7 +154,7 @@ void run_geometry(Frame& frame, int workers) {
   }
   // Every worker's buffer can hold the largest small draw before the tasks start: which worker
   // takes which draw changes from frame to frame, and a buffer growing inside a task would
-  // allocate in a steady-state frame (the allocation test saw it, now and then).
+  // allocate in a steady-state frame.
   for (DrawVertices& buffer : frame.worker_vertices) {
     buffer.clip.reserve(small_vertices);
     buffer.projected.reserve(small_vertices);

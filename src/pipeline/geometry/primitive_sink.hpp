@@ -38,7 +38,7 @@ class PrimitiveSink {
   // A place for the next triangle (and its varying planes), in submission order. `edges` is
   // the triangle being set up, with its edge functions and bounding box already final
   // (binning's tile tests read them). Always inline: setup calls it for every triangle, and
-  // GCC kept it out of line.
+  // GCC would keep it out of line.
   [[gnu::always_inline]] TriangleSlot add_triangle(const SetupTriangle& edges) {
     const TriangleSlot slot = reserve_triangle();
     append(slot.entry_index, &edges, edges.min_x, edges.min_y, edges.max_x, edges.max_y);

@@ -17,8 +17,8 @@ inline constexpr std::size_t kVerticesPerTask = 4096;
 // Whether the draw's vertex stage must write ClipVertex: the clipper, the per-triangle hooks,
 // the edges and lines read them. A batch-form draw with none of those, whose bounds lie inside
 // the guard band and between near and far, writes only its projected vertices and over_w: 80
-// bytes a vertex less, million's geometry stage 2.5 % faster. Decided once per frame
-// (DrawRecord::clip_vertices), when the frame's size gives the guard band.
+// bytes a vertex less to write and read. Decided once per frame (DrawRecord::clip_vertices),
+// when the frame's size gives the guard band.
 bool keeps_clip_vertices(const DrawRecord& draw, const ClipBounds& guard);
 
 // Transforms every vertex of the draw into out (resized to the vertex count) and projects it

@@ -3,7 +3,7 @@
 // setup read them per vertex (ProjectedVertex, and each vertex's varyings over w in a row).
 // vertex_rows.cpp (compiled for every SIMD target Highway supports) turns eight vertices'
 // values into their rows with a transpose in registers, where element by element each vertex
-// cost a store per value and a loop per vertex.
+// would cost a store per value and a loop per vertex.
 #pragma once
 
 #include <cstddef>

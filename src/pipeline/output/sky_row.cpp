@@ -66,7 +66,8 @@ void FillSkyRow(const SkyView& view, const Environment& env, int x0, int y, int 
     const FloatV length_squared =
         hn::Add(hn::Add(hn::Mul(dir[0], dir[0]), hn::Mul(dir[1], dir[1])), hn::Mul(dir[2], dir[2]));
     const FloatV up = hn::Mul(dir[1], hn::Div(one, hn::Sqrt(length_squared)));
-    // The gradient: toward the zenith above the horizon, toward the ground (4x faster) below.
+    // The gradient: toward the zenith above the horizon, toward the ground below (four times
+    // as steeply: t = -4 up).
     // Each lane takes the square root of its own side's argument only: one square root, not
     // one per side.
     const auto above = hn::Ge(up, hn::Zero(d));

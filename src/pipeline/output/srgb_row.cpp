@@ -74,8 +74,8 @@ void EncodeSrgbRow(const glm::vec4* colors, int count, float scale, std::uint8_t
       // A multiplication then an addition, not fused: unorm8_of_unit exactly.
       hn::Store(hn::ConvertTo(di, hn::Add(hn::Mul(c, codes), half)), di, entry + j);
     }
-    // 2. The color channels' runs looked up, one at a time (gathers were slower than scalar
-    // loads on every CPU tried).
+    // 2. The color channels' runs looked up, one at a time (scalar loads: faster than gathers
+    // on the CPUs this runs on).
     for (int k = 0; k < whole; k += 4) {
       entry[k] = static_cast<std::int32_t>(tables.run_code[run[k]]);
       entry[k + 1] = static_cast<std::int32_t>(tables.run_code[run[k + 1]]);

@@ -1,10 +1,10 @@
 // Stage: output, the SIMD part of resolve (srgb_row.cpp, compiled for every target Highway
 // supports). resolve_tile (output.cpp) turns each tile row of linear colors into 8-bit sRGB
 // here: SIMD lanes scale, clamp and find each channel's run of the encoding table
-// (shading/color.hpp), each run's entry is loaded one at a time (gathers were slower than
-// scalar loads on every CPU tried), then SIMD lanes finish the codes. Two and a half times as
-// fast as encoding a channel at a time, and bit for bit the same. Rows of display values only
-// need rounding (round_unorm8_row).
+// (shading/color.hpp), each run's entry is loaded one at a time (scalar loads: faster than
+// gathers on the CPUs this runs on), then SIMD lanes finish the codes. Faster than encoding a
+// channel at a time, and bit for bit the same. Rows of display values only need rounding
+// (round_unorm8_row).
 #pragma once
 
 #include <cstdint>

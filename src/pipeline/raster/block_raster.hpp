@@ -62,11 +62,11 @@ inline constexpr int kBoxSearchSlack = 16;
 
 // The raster's SIMD kernels (block_raster.cpp, compiled for every target Highway supports) for
 // the target chosen now, as plain function pointers: the raster loops call them a triangle or
-// a block at a time, and dispatching each call (asking libhwy for the chosen target, then
-// copying the arguments again in a wrapper) was 3 % of million's frame. Each tile fetches them
-// once (TileContext), so a target forced between frames (tests) is still honoured. Every
-// kernel repeats the scalar path's arithmetic lane by lane (same operations in the same order,
-// no fused multiply-add), so every target gives identical values.
+// a block at a time, so dispatching each call (asking libhwy for the chosen target, then
+// copying the arguments again in a wrapper) would add its overhead to every triangle and block.
+// Each tile fetches them once (TileContext), so a target forced between frames (tests) is still
+// honoured. Every kernel repeats the scalar path's arithmetic lane by lane (same operations in
+// the same order, no fused multiply-add), so every target gives identical values.
 struct RasterKernels {
   // Fills out for one block.
   void (*cover_block)(const BlockInput& in, BlockFragments& out);
@@ -86,11 +86,11 @@ struct RasterKernels {
   // Their positions go to x[n], y[n] from n = 0; returns how many. Each row is stored as whole
   // vectors, so up to kBoxSearchSlack entries past the last found are written too, with values
   // of no use (the box's other pixels, or zeros): full stores, unlike masked ones, forward to
-  // the interpolation's loads (InterpolatePixels 14 % faster on million). The box holds at
-  // most kBlockPixels pixels. Same coverage as the 64-bit edge functions, same depths as
-  // evaluate_row and evaluate_in_row. The depths it tests are not stored: interpolate_pixels
-  // computes them again, as it does w, with the same operations. (Compressing them too was a
-  // second compress per row, the search's largest cost.)
+  // the interpolation's loads. The box holds at most kBlockPixels pixels. Same coverage as the
+  // 64-bit edge functions, same depths as evaluate_row and evaluate_in_row. The depths it tests
+  // are not stored: interpolate_pixels computes them again, as it does w, with the same
+  // operations. (Compressing them too would take a second compress per row, the search's
+  // largest cost.)
   int (*find_box_pixels)(const SetupTriangle& t, int x0, int y0, int width, int height,
                          const float* depth, int depth_stride, bool depth_test, std::int16_t* x,
                          std::int16_t* y);

@@ -159,8 +159,7 @@ void blend_into(glm::vec4& out, const glm::vec4& color) {
     out += glm::vec4(glm::vec3(color) * color.a, 0.0f);
   } else {
     // Channel by channel: GCC assembles `color` in memory from 4- and 8-byte pieces, and a
-    // 16-byte copy reloading them stalled store forwarding (a third of the normals view's
-    // raster loop).
+    // 16-byte copy reloading them would stall on store forwarding.
     out.r = color.r;
     out.g = color.g;
     out.b = color.b;
@@ -169,8 +168,8 @@ void blend_into(glm::vec4& out, const glm::vec4& color) {
 }
 
 // Fewer packed pixels than this are shaded one at a time with fragment() even when the model
-// has a batch form: the batch call's fixed cost outweighs its SIMD for them (bunny-far, the
-// normals view of tiny triangles, 8 % faster with 4 than with 1; 8 made islands 3.5 % slower).
+// has a batch form: the batch call's fixed cost outweighs its SIMD for them, while batches of
+// a few pixels more already gain from it.
 inline constexpr int kMinBatch = 4;
 
 // Shades one covered pixel that passed the depth test and writes it with the draw's blending:

@@ -145,11 +145,11 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
       const std::ptrdiff_t block_offset =
           static_cast<std::ptrdiff_t>(block_y - tile.y0) * tile.stride + (block_x - tile.x0);
       in.depth = tile.depth + block_offset;
-      // Batches take a block's pixels packed, and interpolate_pixels gives the packed ones their
-      // w and varyings (the same values); copying those one by one from cover_block's rows was
-      // a third of raster_triangle's time on the islands. cover_block interpolates only where
-      // the block is likely whole, for shade_full_block: every edge inside, and the triangle
-      // in front of the block's depth bound (exactly whole then in a first layer).
+      // Batches take a block's pixels packed, and interpolate_pixels gives the packed ones their w
+      // and varyings (the same values), cheaper than copying those one by one from cover_block's
+      // rows. cover_block interpolates only where the block is likely whole, for shade_full_block:
+      // every edge inside, and the triangle in front of the block's depth bound (exactly whole then
+      // in a first layer).
       const bool all_inside = edges == EdgeCover::inside && in.x_begin == 0 &&
                               in.x_end == kBlockSize && in.y_begin == 0 && in.y_end == kBlockSize;
       const bool likely_whole = all_inside && (!kDepthTest || box_depth.farthest < max_depth);

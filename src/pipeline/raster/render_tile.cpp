@@ -22,11 +22,10 @@ using pipeline::TileBuffers;
 namespace {
 
 // A bin's triangles lie far apart in the frame's arrays, each read for the first time since
-// setup wrote it, and the wait for each was 6 % of bunny-close's frame: render_tile asks for
-// the triangle kPrefetchAhead entries ahead, and for the varying planes of the one half as far
-// ahead (whose triangle, asked for earlier, says where they are). Always inline: out of line,
-// GCC took the function for one without effects (a prefetch changes no value) and dropped
-// its calls.
+// setup wrote it, so each would be a cache miss waited for: render_tile asks for the triangle
+// kPrefetchAhead entries ahead, and for the varying planes of the one half as far ahead (whose
+// triangle, asked for earlier, says where they are). Always inline: out of line, GCC takes the
+// function for one without effects (a prefetch changes no value) and drops its calls.
 constexpr std::ptrdiff_t kPrefetchAhead = 8;
 [[gnu::always_inline]] inline void prefetch_ahead(const pipeline::Frame& frame,
                                                   const std::uint32_t* bin,

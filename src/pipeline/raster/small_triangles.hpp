@@ -14,8 +14,7 @@
 namespace facet::pipeline {
 
 // Triangles whose bounding box in the tile is at most this many pixels skip the block
-// machinery: for them, one pixel at a time is cheaper than classifying and dispatching blocks
-// (measured on bunny-close and million: 16 to 256 all gain on 0, 64 at least as much as any).
+// machinery: for them, one pixel at a time is cheaper than classifying and dispatching blocks.
 inline constexpr int kSmallTrianglePixels = 64;
 
 // The covered pixels of the small triangle t's bounding box [x0, x1] x [y0, y1] (inclusive)
@@ -48,13 +47,13 @@ void raster_small_triangle(TileContext& tile, const SetupTriangle& t, int x0, in
 }
 
 // Pixels of consecutive small triangles of one draw, waiting to be shaded together. Shaded a
-// triangle at a time, a few pixels each (islands' small triangles average three), every
-// triangle paid the SIMD sampling and shading calls' fixed costs and mostly empty lanes. Only
-// opaque, depth-tested and -writing, batch-shaded draws wait (PixelWriter::kWaits); whatever
-// else the tile draws first shades and writes what waits (flush_waiting). A waiting pixel
-// passed the depth test against the tile as it was before the others waited; when written it
-// is tested again, against what the pixels before it wrote: so a pixel writes exactly when
-// drawing the triangles one by one would have written it, with the same color.
+// triangle at a time, a few pixels each, every triangle would pay the SIMD sampling and shading
+// calls' fixed costs and mostly empty lanes. Only opaque, depth-tested and -writing, batch-shaded
+// draws wait (PixelWriter::kWaits); whatever else the tile draws first shades and writes what waits
+// (flush_waiting). A waiting pixel passed the depth test against the tile as it was before the
+// others waited; when written it is tested again, against what the pixels before it wrote: so a
+// pixel writes exactly when drawing the triangles one by one would have written it, with the same
+// color.
 struct WaitingPixels {
   // Positions start at zero: interpolate_pixels reads whole vectors of them, the entries after
   // the last one found too, which then hold zeros, earlier pixels' positions or what the
@@ -71,7 +70,7 @@ struct WaitingPixels {
   // Each waiting triangle and its number of pixels, in order: each run of pixels starts where
   // the one before ends. Their varyings are interpolated when they are shaded (write_waiting),
   // not as each triangle's pixels are found: read right after the search stored them, the
-  // positions' loads spanned several of its row stores and waited for them to retire.
+  // positions' loads would span several of its row stores and wait for them to retire.
   struct Run {
     const SetupTriangle* triangle;
     int count;
@@ -91,10 +90,8 @@ static_assert(kMaxWaitingBox + kBlockPixels + kBoxSearchSlack <=
 // Triangles whose box in the tile is at most this many pixels, and at most kMaxWaitingBox
 // wide, wait too, a band of rows of at most kMaxWaitingBox pixels at a time. Up to this size,
 // finding their pixels a box row at a time and shading them with other triangles' beats
-// raster.hpp's 8x8 blocks: against boxes of one band only, 256 made bunny-close 22 % faster
-// and the islands 5 % (128: 10 % and 4 %); once batches filled with pixels found rather than
-// boxes (add_waiting_band), 512 gained 1 to 2 % more (bunny-close, phong, the islands; twice),
-// 1024 nothing more.
+// raster.hpp's 8x8 blocks, as batches fill with pixels found rather than with boxes
+// (add_waiting_band); larger boxes gain nothing more.
 inline constexpr int kMaxWaitingTriangleBox = 512;
 
 // Whether a triangle whose box in the tile is width x height pixels may wait (add_waiting).

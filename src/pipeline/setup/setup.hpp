@@ -120,9 +120,8 @@ inline int last_centre_at_or_before(std::int64_t hi) {
 }
 
 // Triangles whose pixel box is at most this many pixels a side are dropped at setup when they
-// cover none of its pixel centres: they would draw nothing, yet be written,
-// binned and visited by every tile they touch. In `million`, 16 % of the small triangles'
-// tile visits found no pixel, their boxes 3.5 pixels on average.
+// cover none of its pixel centres: they would draw nothing, yet be written, binned and visited
+// by every tile they touch, and scenes of tiny triangles have many such.
 inline constexpr int kProbedBoxSide = 4;
 // ... and whose vertices span less than this many fixed-point units (64 pixels) a side, which
 // a box of at most kProbedBoxSide centres a side does unless the frame's edge clamped it: the

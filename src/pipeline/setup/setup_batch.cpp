@@ -76,14 +76,14 @@ struct Coefficients {
   }
 };
 
-// For the lanes in `probed`, whose boxes are at most
-// kProbedBoxSide pixels a side and whose triangles span less than kProbedSpan: whether each
-// covers one of its box's pixel centres, that is whether at one of them no edge function is
-// negative. Edge i from vertex (x_i, y_i) at centre (X, Y) is a_i (X - x_i) + b_i (Y - y_i) +
-// bias_i, the value a_i X + b_i Y + c_i of the triangle's edge function, exactly in 32
-// bits: |a|, |b| and |X - x_i| stay below 2^15, the products below 2^30. The centres visited
-// are the largest probed box's; the sign bit marks those past a lane's own box. (Comparisons
-// per centre and edge in double made the probe a fifth of the kernel.)
+// For the lanes in `probed`, whose boxes are at most kProbedBoxSide pixels a side and whose
+// triangles span less than kProbedSpan: whether each covers one of its box's pixel centres, that
+// is whether at one of them no edge function is negative. Edge i from vertex (x_i, y_i) at centre
+// (X, Y) is a_i (X - x_i) + b_i (Y - y_i) + bias_i, the value a_i X + b_i Y + c_i of the
+// triangle's edge function, exactly in 32 bits: |a|, |b| and |X - x_i| stay below 2^15, the
+// products below 2^30. The centres visited are the largest probed box's; the sign bit marks those
+// past a lane's own box. (In 32-bit integers, not double: comparisons per centre and edge in
+// double would make the probe a large part of the kernel.)
 HWY_INLINE hn::Mask<IntTag> CoversACentre(const IntVec x[3], const IntVec y[3], const IntVec a[3],
                                           const IntVec b[3], const IntVec bias[3], IntVec box_x0,
                                           IntVec box_y0, IntVec box_width, IntVec box_height,
@@ -225,7 +225,7 @@ int SetupBatchLanes(const SetupBatch& b, const SetupBatchTarget& target) {
       keep = hn::AndNot(hn::AndNot(covers, probed), keep);
     }
     // The kept lanes as bits, visited lowest first below, so that the loop over them has no
-    // branch on a dropped lane (a test per lane measured the same on million: BENCHMARKS.md).
+    // branch on a dropped lane.
     static_assert(kLanes <= 8);  // one byte of mask bits
     std::uint8_t kept = 0;
     hn::StoreMaskBits(di, hn::And(keep, hn::RebindMask(di, valid)), &kept);

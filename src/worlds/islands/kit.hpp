@@ -89,8 +89,7 @@ class Model {
 // the chunks out of view whole (its draw culling) while each still draws in few calls.
 // Scenery is drawn in three layers: what stands on the ground, then the ground, then what lies
 // under both (the sea). The depth test then skips the ground and the sea behind the things in
-// front of them, instead of shading them first and covering them later: 823,081 pixels shaded
-// at 720p in the start view when everything was drawn chunk by chunk, 688,070 this way.
+// front of them, instead of shading them first and covering them later.
 class WorldBuilder {
  public:
   // Metres; a multiple of every terrain cell size. Chunks of 20 m rather than 60 m leave more of
@@ -98,7 +97,8 @@ class WorldBuilder {
   static constexpr float kChunk = 20.0f;
   // Where scenery placed with a `far` stand-in switches to it (SceneNode::coarser: metres from
   // the chunk at a 60 degree field of view). That far, a tree is a few dozen pixels at 720p.
-  // From 150 m the start view drew fewer than 100,000 triangles at 1080p (world.cpp).
+  // Nearer, the start view would draw fewer than the 100,000 triangles at 1080p that the issue
+  // asks for (world.cpp).
   static constexpr float kFarSceneryFrom = 180.0f;
 
   explicit WorldBuilder(const IslandTextures& textures);

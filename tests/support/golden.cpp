@@ -64,8 +64,13 @@ bool updating_goldens() {
 
 void expect_matches_golden(const std::string& rendered_path, const std::string& golden_name,
                            Tolerance tolerance) {
+  expect_matches_golden_in(FACET_GOLDEN_DIR, rendered_path, golden_name, tolerance);
+}
+
+void expect_matches_golden_in(const std::string& golden_dir, const std::string& rendered_path,
+                              const std::string& golden_name, Tolerance tolerance) {
   const fs::path output = rendered_path;
-  const fs::path golden_path = fs::path(FACET_GOLDEN_DIR) / (golden_name + ".png");
+  const fs::path golden_path = fs::path(golden_dir) / (golden_name + ".png");
   const std::string model = golden_name;
 
   if (updating_goldens()) {

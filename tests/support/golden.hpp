@@ -1,5 +1,6 @@
-// Golden-image comparison for image tests: a render against tests/golden/<name>.png with a
-// stated tolerance, a diff image on failure, and FACET_UPDATE_GOLDENS=1 to rewrite goldens.
+// Golden-image comparison for image tests: a render against tests/golden/<name>.png (or another
+// folder of goldens, such as docs/pipeline/) with a stated tolerance, a diff image on failure,
+// and FACET_UPDATE_GOLDENS=1 to rewrite goldens.
 #pragma once
 
 #include <string>
@@ -21,5 +22,11 @@ inline constexpr Tolerance kGoldenTolerance{2, 0.001};
 // the render over the golden instead and skips the test.
 void expect_matches_golden(const std::string& rendered_path, const std::string& golden_name,
                            Tolerance tolerance = kGoldenTolerance);
+
+// The same with the golden at <golden_dir>/<golden_name>.png: the pictures of docs/pipeline.md
+// are goldens in docs/pipeline/ (tests/docs_pictures_test.cpp).
+void expect_matches_golden_in(const std::string& golden_dir, const std::string& rendered_path,
+                              const std::string& golden_name,
+                              Tolerance tolerance = kGoldenTolerance);
 
 }  // namespace facet::test

@@ -9,7 +9,9 @@
 
 namespace facet::shading {
 
-// Specular color of a Phong-family material at this fragment (factor x specular map).
+// Specular color of a Phong-family material at this fragment (factor x specular map). The map
+// and reflectivity tests below are runtime branches on constants of the draw
+// (BENCHMARKS.md, "Per-draw constants").
 inline glm::vec3 specular_color(const Fragment& f, const DrawUniforms& u) {
   glm::vec3 s = u.material->specular_color;
   if (u.material->specular_map) s *= glm::vec3(sample_map(u.material->specular_map, f));

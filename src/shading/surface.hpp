@@ -144,8 +144,9 @@ struct SurfacePoint {
 template <bool kWithTangent, bool kPositioned = true>
 SurfacePoint surface_point(const Fragment& f, const DrawUniforms& u);
 
-// Emissive light of the material (factor x map). Most materials emit nothing: that test is
-// inline, the rest out of line.
+// Emissive light of the material (factor x map). Most materials emit nothing: that test (a
+// runtime branch on a constant of the draw: BENCHMARKS.md, "Per-draw constants") is inline, the
+// rest out of line.
 glm::vec3 mapped_emission(const Fragment& f, const DrawUniforms& u);
 inline glm::vec3 emission(const Fragment& f, const DrawUniforms& u) {
   if (u.material->emissive == glm::vec3(0.0f)) return glm::vec3(0.0f);

@@ -23,6 +23,7 @@ void transform_range(const DrawRecord& draw, const Kernels& kernels,
   glm::mat3 model3(u.model);
   const int varyings = draw.pipeline.varyings;
   float* over_w = out.over_w.empty() ? nullptr : out.over_w.data();
+  const bool batch = draw.batch_vertices;  // in a local: the stores below may alias the draw
   VertexPass pass;
   static_assert(shading::kVertexBatch == kVertexPass);
   alignas(64) float batch_varyings[kMaxVaryings][shading::kVertexBatch];
@@ -32,7 +33,7 @@ void transform_range(const DrawRecord& draw, const Kernels& kernels,
     // First, several vertices at a time, all that needs no shading model.
     kernels.vertex_pass(pass_input, first, count, pass);
     // Then the shading model: all of them at once if it has a batch form for this draw.
-    if (draw.batch_vertices) {
+    if (batch) {
       draw.pipeline.vertex_batch(u,
                                  {static_cast<int>(count),
                                   &mesh.positions[first],
@@ -44,7 +45,7 @@ void transform_range(const DrawRecord& draw, const Kernels& kernels,
     kernels.store_projected(pass, count, &out.projected[first]);
     // What setup's planes pass through (perspective-correct interpolation of v / w; to_screen's
     // 1 / w is the pass's: the same division).
-    if (draw.batch_vertices && over_w) {
+    if (batch && over_w) {
       kernels.store_over_w(batch_varyings, pass.inv_w, count, varyings, over_w + first * varyings);
     }
     if (!write_clip) continue;  // a batch-form draw whose triangles only the setup kernel reads
@@ -52,7 +53,7 @@ void transform_range(const DrawRecord& draw, const Kernels& kernels,
       const std::size_t i = first + j;
       ClipVertex& v = out.clip[i];
       v.clip = glm::vec4(pass.x[j], pass.y[j], pass.z[j], pass.w[j]);
-      if (draw.batch_vertices) {
+      if (batch) {
         for (int k = 0; k < varyings; ++k) v.varyings[k] = batch_varyings[k][j];
         continue;
       }
@@ -70,7 +71,7 @@ void transform_range(const DrawRecord& draw, const Kernels& kernels,
     // The same for the varyings vertex() wrote, a vertex at a time. A loop of its own: read
     // right after the shading model's narrow stores, the varyings' vector loads would stall on
     // store forwarding.
-    for (std::size_t i = first; over_w && !draw.batch_vertices && i < first + count; ++i) {
+    for (std::size_t i = first; over_w && !batch && i < first + count; ++i) {
       const float inv_w = out.projected[i].screen.inv_w;
       const float* v = out.clip[i].varyings;
       float* o = over_w + i * varyings;

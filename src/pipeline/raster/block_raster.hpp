@@ -36,7 +36,9 @@ struct BlockInput {
   const SetupTriangle* triangle;
   const Plane* varying_planes;  // triangle->varying_planes resolved
   int varyings;
-  bool depth_test;     // false: every covered pixel passes
+  // false: every covered pixel passes. Runtime: constant per draw, taken the same way in every
+  // block (compile-time in the raster loop that calls this; BENCHMARKS.md, "Per-draw constants").
+  bool depth_test;
   const float* depth;  // the tile's depth at block pixel (0, 0)
   int depth_stride;    // floats per depth row
   // false: the mask and depths only (BlockFragments::w and v left as they were), for blocks

@@ -74,6 +74,15 @@ function(run_hello binary image)
   endif()
 endfunction()
 
+# The build's generator and compiler, for every project this test configures.
+set(toolchain_args "")
+if(GENERATOR)
+  list(APPEND toolchain_args -G ${GENERATOR})
+endif()
+if(CXX_COMPILER)
+  list(APPEND toolchain_args -DCMAKE_CXX_COMPILER=${CXX_COMPILER})
+endif()
+
 file(REMOVE_RECURSE ${WORK_DIR})
 file(MAKE_DIRECTORY ${WORK_DIR})
 
@@ -84,13 +93,7 @@ if(SHARED)
   set(configure_facet -S ${SOURCE_DIR} -B ${shared_build} -DCMAKE_BUILD_TYPE=${CONFIG}
       -DBUILD_SHARED_LIBS=ON -DFACET_BUILD_PROGRAM=OFF -DFACET_BUILD_TESTS=OFF
       -DCMAKE_INSTALL_LIBDIR=lib)
-  if(GENERATOR)
-    list(APPEND configure_facet -G ${GENERATOR})
-  endif()
-  if(CXX_COMPILER)
-    list(APPEND configure_facet -DCMAKE_CXX_COMPILER=${CXX_COMPILER})
-  endif()
-  run_step("configure shared libraries" ${CMAKE_COMMAND} ${configure_facet})
+  run_step("configure shared libraries" ${CMAKE_COMMAND} ${configure_facet} ${toolchain_args})
   run_step("build shared libraries" ${CMAKE_COMMAND} --build ${shared_build} --config ${CONFIG}
            --parallel 2)
   run_step("install" ${CMAKE_COMMAND} --install ${shared_build} --prefix ${prefix}
@@ -142,13 +145,8 @@ set(configure_args
   -DCMAKE_BUILD_TYPE=${CONFIG}
   -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF
   -DCMAKE_DISABLE_FIND_PACKAGE_assimp=ON
-  -DCMAKE_DISABLE_FIND_PACKAGE_OpenAL=ON)
-if(GENERATOR)
-  list(APPEND configure_args -G ${GENERATOR})
-endif()
-if(CXX_COMPILER)
-  list(APPEND configure_args -DCMAKE_CXX_COMPILER=${CXX_COMPILER})
-endif()
+  -DCMAKE_DISABLE_FIND_PACKAGE_OpenAL=ON
+  ${toolchain_args})
 run_step("configure examples/ with find_package(facet COMPONENTS core)" ${CMAKE_COMMAND}
          ${configure_args})
 

@@ -122,6 +122,7 @@ const BadCase kBadCases[] = {
     {"output_dir_missing", "-o /nonexistent-dir/x.png"},
     {"output_unknown_type", "-o out.bmp"},
     {"threads_negative", "--threads -1 -o out.png"},
+    {"threads_huge", "--threads 100000 -o out.png"},
     {"tile_size_48", "--tile-size 48 -o out.png"},
     {"near_zero", "--near 0 -o out.png"},
     {"far_behind_near", "--far 0.05 -o out.png"},
@@ -154,6 +155,27 @@ INSTANTIATE_TEST_SUITE_P(Cli, BadValue, ::testing::ValuesIn(kBadCases),
                          [](const ::testing::TestParamInfo<BadCase>& param_info) {
                            return std::string(param_info.param.name);
                          });
+
+// Each --light takes its own value only: a model path after it is the model, and the order of
+// options does not matter.
+TEST(CliRender, LightOptionsLeaveTheModelPathToTheModel) {
+  fs::path dir = fresh_test_dir("facet_cli_", "light_order");
+  {
+    std::ofstream obj(dir / "tri.obj");
+    obj << "v -1 -1 0\nv 1 -1 0\nv 0 1 0\nvn 0 0 1\nvn 0 0 1\nvn 0 0 1\nf 1//1 2//2 3//3\n";
+  }
+  const std::string size = " --size 32x24";
+  CommandResult before =
+      run_facet(dir, "render --light dir,0,0,-1 --light point,0,2,3,1,0,0 tri.obj -o a.png" + size);
+  ASSERT_EQ(before.exit_code, 0) << before.stderr_text;
+  CommandResult after =
+      run_facet(dir, "render tri.obj --light dir,0,0,-1 -o b.png --light point,0,2,3,1,0,0" + size);
+  ASSERT_EQ(after.exit_code, 0) << after.stderr_text;
+  CommandResult one = run_facet(dir, "render --light dir,0,0,-1 tri.obj -o c.png" + size);
+  ASSERT_EQ(one.exit_code, 0) << one.stderr_text;
+  EXPECT_EQ(read_file(dir / "a.png"), read_file(dir / "b.png"));
+  EXPECT_NE(read_file(dir / "a.png"), read_file(dir / "c.png")) << "the second light is lost";
+}
 
 TEST(CliOutput, FailedRenderKeepsAnExistingFile) {
   fs::path dir = fresh_test_dir("facet_cli_", "keep");

@@ -8,6 +8,7 @@
 #include "facet/color.hpp"
 #include "facet/error.hpp"
 #include "facet/framebuffer.hpp"
+#include "facet/renderer.hpp"
 
 namespace facet::cli {
 namespace {
@@ -71,6 +72,13 @@ glm::vec3 parse_color(const std::string& flag, const std::string& text) {
     }
   }
   return srgb_to_linear(c);
+}
+
+void check_threads(int threads) {
+  if (threads < 0 || threads > RenderSettings::kMaxThreads) {
+    throw Error("--threads: must be 0 (all cores) or 1 to " +
+                std::to_string(RenderSettings::kMaxThreads) + ", got " + std::to_string(threads));
+  }
 }
 
 }  // namespace facet::cli

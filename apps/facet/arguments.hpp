@@ -24,5 +24,7 @@ ImageSize parse_size(const std::string& flag, const std::string& text);
 glm::vec3 parse_vec3(const std::string& flag, const std::string& text);
 // An sRGB color with components in [0, 1], returned as linear RGB.
 glm::vec3 parse_color(const std::string& flag, const std::string& text);
+// Throws unless --threads is 0 (all cores) or 1 to RenderSettings::kMaxThreads.
+void check_threads(int threads);
 
 }  // namespace facet::cli

@@ -122,7 +122,7 @@ int run_bench(const BenchOptions& o) {
   ImageSize size = parse_size("--size", o.size);
   if (o.frames < 1) throw Error("--frames: must be at least 1");
   if (o.warmup < 0) throw Error("--warmup: must be 0 or more");
-  if (o.threads < 0) throw Error("--threads: must be 0 (all cores) or more");
+  check_threads(o.threads);
   if (o.tile_size != 16 && o.tile_size != 32 && o.tile_size != 64 && o.tile_size != 128) {
     throw Error("--tile-size: must be 16, 32, 64 or 128, got " + std::to_string(o.tile_size));
   }

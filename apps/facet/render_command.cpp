@@ -39,9 +39,7 @@ int run_render(const RenderOptions& o) {
   // Every value is checked before any work, and the output path before rendering, so a bad
   // command fails fast and leaves nothing behind.
   ImageSize size = parse_size("--size", o.size);
-  if (o.threads < 0) {
-    throw Error("--threads: must be 0 (all cores) or more, got " + std::to_string(o.threads));
-  }
+  check_threads(o.threads);
   if (!std::isfinite(o.exposure) || std::abs(o.exposure) > 20.0f) {
     throw Error("--exposure: must be within -20 .. 20 stops");
   }

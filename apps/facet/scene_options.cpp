@@ -181,7 +181,8 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o) {
                  "Face culling: back, front or none (default: each material's, back)");
   cmd.add_option("--light", o.lights,
                  "Add a light (repeatable; replaces the default lights): dir,DX,DY,DZ[,R,G,B[,I]], "
-                 "point,X,Y,Z[,R,G,B[,I]] or spot,X,Y,Z,DX,DY,DZ[,INNER,OUTER[,R,G,B[,I]]]");
+                 "point,X,Y,Z[,R,G,B[,I]] or spot,X,Y,Z,DX,DY,DZ[,INNER,OUTER[,R,G,B[,I]]]")
+      ->allow_extra_args(false);  // one light per --light: a model path after it stays the model
   cmd.add_option("--env", o.environment,
                  "Environment image (equirectangular or sphere map) for reflections and the "
                  "background, or 'sky' for a procedural sky gradient");

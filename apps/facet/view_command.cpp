@@ -80,9 +80,7 @@ CLI::App* add_view_command(CLI::App& app, ViewOptions& o) {
 
 int run_view(const ViewOptions& o) {
   ImageSize size = parse_size("--size", o.size);
-  if (o.threads < 0) {
-    throw Error("--threads: must be 0 (all cores) or more, got " + std::to_string(o.threads));
-  }
+  check_threads(o.threads);
   if (o.frames < 0) throw Error("--frames: must be 0 (until closed) or more");
   if (o.time && !std::isfinite(*o.time)) throw Error("--time: must be a finite number of seconds");
   if (!o.screenshot.empty()) check_writable(o.screenshot);

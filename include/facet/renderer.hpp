@@ -27,6 +27,9 @@ enum class DebugView {
 };
 
 struct RenderSettings {
+  // Each worker thread has its own tile buffers and an OS thread: more than this is a mistake
+  // (a typo), not a machine.
+  static constexpr int kMaxThreads = 256;
   int threads = 0;                                // worker threads; 0 = all cores
   int tile_size = 64;                             // tile edge in pixels: 16, 32, 64 or 128
   glm::vec4 clear_color{0.0f, 0.0f, 0.0f, 1.0f};  // linear RGBA
@@ -77,6 +80,10 @@ class Renderer {
   // Records a draw. The mesh is referenced, not copied: it must live until finish(). Throws
   // facet::Error for a mesh that Mesh::validate() rejects.
   void draw(const Mesh& mesh, const Material& material, const glm::mat4& transform = glm::mat4(1));
+  // A temporary mesh would be gone before finish() reads it: draw a named mesh, or hand the
+  // renderer a shared pointer (below), which it keeps alive.
+  void draw(Mesh&& mesh, const Material& material,
+            const glm::mat4& transform = glm::mat4(1)) = delete;
   // The same for a mesh that does not change, as a Scene's: it is checked and its bounds found
   // the first time it is drawn, not in every frame. The renderer holds on to the mesh until a
   // frame after the last that drew it. To change the mesh, draw a new one in its place.

@@ -19,8 +19,9 @@ namespace facet {
 using pipeline::is_blended;
 
 Renderer::Renderer(const RenderSettings& settings) {
-  if (settings.threads < 0) {
-    throw Error("renderer: threads must be 0 (all cores) or positive, got " +
+  if (settings.threads < 0 || settings.threads > RenderSettings::kMaxThreads) {
+    throw Error("renderer: threads must be 0 (all cores) or 1 to " +
+                std::to_string(RenderSettings::kMaxThreads) + ", got " +
                 std::to_string(settings.threads));
   }
   int ts = settings.tile_size;
@@ -69,9 +70,19 @@ void Renderer::draw(const std::shared_ptr<const Mesh>& mesh, const Material& mat
                 pipeline::pipeline_for(material, *mesh, impl_->lighting));
 }
 
+void Renderer::Impl::require_recording(const char* call) const {
+  if (recording) return;
+  // frame_number counts begin_frame() calls: a frame was begun, and finish() ended it.
+  if (frame_number > 0) {
+    throw Error(std::string("renderer: ") + call +
+                " called after finish(); begin_frame() starts the next frame");
+  }
+  throw Error(std::string("renderer: ") + call + " called before begin_frame()");
+}
+
 const std::optional<pipeline::MeshBox>& Renderer::Impl::checked_bounds(
     const std::shared_ptr<const Mesh>& mesh) {
-  if (!recording) throw Error("renderer: draw() called before begin_frame()");
+  require_recording("draw()");
   if (!mesh) throw Error("renderer: draw() of a null mesh pointer");
   auto [entry, added] = checked_meshes.try_emplace(mesh.get());
   if (added) {
@@ -91,7 +102,7 @@ const std::optional<pipeline::MeshBox>& Renderer::Impl::checked_bounds(
 void Renderer::Impl::check_and_record(const Mesh& mesh, const Material& material,
                                       const glm::mat4& transform,
                                       const pipeline::DrawPipeline& pipe) {
-  if (!recording) throw Error("renderer: draw() called before begin_frame()");
+  require_recording("draw()");
   mesh.validate();
   record(mesh, pipeline::finite_bounds(mesh), material, transform, pipe);
 }
@@ -121,7 +132,7 @@ void Renderer::Impl::record(const Mesh& mesh, const std::optional<pipeline::Mesh
 }
 
 void Renderer::finish(Framebuffer& target) {
-  if (!impl_->recording) throw Error("renderer: finish() called before begin_frame()");
+  impl_->require_recording("finish()");
   impl_->arena.execute([&] { impl_->run(target); });
   impl_->recording = false;
 }

@@ -90,6 +90,8 @@ struct Renderer::Impl {
   // Records a draw of any mesh: checks it first.
   void check_and_record(const Mesh& mesh, const Material& material, const glm::mat4& transform,
                         const pipeline::DrawPipeline& pipe);
+  // Throws facet::Error unless a frame is being recorded, saying why for `call`.
+  void require_recording(const char* call) const;
   void prepare_tiles(const Framebuffer& target);
   void render_tile(int index, int worker, Framebuffer& target);
   void run(Framebuffer& target);

@@ -177,6 +177,19 @@ TEST(CliRender, LightOptionsLeaveTheModelPathToTheModel) {
   EXPECT_NE(read_file(dir / "a.png"), read_file(dir / "c.png")) << "the second light is lost";
 }
 
+// A wireframe draws its edges as lines: the summary counts them rather than saying "0 drawn"
+// alone.
+TEST(CliRender, WireframeSummaryCountsLines) {
+  fs::path dir = fresh_test_dir("facet_cli_", "wire_lines");
+  CommandResult r =
+      run_facet(dir, "render --scene shapes --shading wireframe -o w.png --size 64x36");
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  EXPECT_NE(r.stdout_text.find(" lines drawn"), std::string::npos) << r.stdout_text;
+  CommandResult shaded = run_facet(dir, "render --scene shapes -o s.png --size 64x36");
+  ASSERT_EQ(shaded.exit_code, 0) << shaded.stderr_text;
+  EXPECT_EQ(shaded.stdout_text.find(" lines drawn"), std::string::npos) << shaded.stdout_text;
+}
+
 TEST(CliOutput, FailedRenderKeepsAnExistingFile) {
   fs::path dir = fresh_test_dir("facet_cli_", "keep");
   const std::string contents = "an earlier image that must survive";

@@ -77,5 +77,31 @@ TEST(Lines, SteepPolylineCoversEachRowOnce) {
   EXPECT_EQ(counts, line_counts(mesh, 64));  // tiles do not change coverage
 }
 
+// Segments are counted apart from triangles: a wireframe draws no triangle, and its frame is not
+// "0 drawn" (FrameStats::lines_drawn).
+TEST(Lines, SegmentsAreCountedAsLinesDrawn) {
+  Mesh polyline;
+  polyline.topology = Topology::lines;
+  polyline.positions = {{-1, -1, -3}, {1, -1, -3}, {1, -1, -3}, {0, 1, -3}};
+  Mesh tri;
+  tri.positions = {{-1, -1, -3}, {1, -1, -3}, {0, 1, -3}};
+  Renderer renderer;
+  Framebuffer fb(kWidth, kHeight);
+  Material lines;
+  lines.shading = ShadingModel::unlit;
+  renderer.begin_frame(test_camera(kWidth, kHeight));
+  renderer.draw(polyline, lines);
+  renderer.finish(fb);
+  EXPECT_EQ(renderer.stats().lines_drawn, 2u);
+  EXPECT_EQ(renderer.stats().drawn, 0u);
+  Material wireframe;
+  wireframe.shading = ShadingModel::wireframe;
+  renderer.begin_frame(test_camera(kWidth, kHeight));
+  renderer.draw(tri, wireframe);
+  renderer.finish(fb);
+  EXPECT_EQ(renderer.stats().lines_drawn, 3u);  // the triangle's three edges
+  EXPECT_EQ(renderer.stats().drawn, 0u);
+}
+
 }  // namespace
 }  // namespace facet::test

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "arguments.hpp"
 #include "facet/error.hpp"
@@ -67,14 +68,18 @@ int run_render(const RenderOptions& o) {
   double write_ms = std::chrono::duration<double, std::milli>(Clock::now() - rendered).count();
 
   const FrameStats& s = renderer.stats();
+  // Wireframes and line meshes draw segments: say how many, so their frames do not read as empty.
+  const std::string lines =
+      s.lines_drawn > 0 ? ", " + std::to_string(s.lines_drawn) + " lines drawn" : "";
   std::printf(
-      "%s: %dx%d, %llu triangles in (%llu culled, %llu clipped, %llu drawn), %llu pixels shaded; "
-      "load %.1f ms, geometry %.1f ms, binning %.1f ms, raster %.1f ms, total %.1f ms; "
+      "%s: %dx%d, %llu triangles in (%llu culled, %llu clipped, %llu drawn)%s, %llu pixels "
+      "shaded; load %.1f ms, geometry %.1f ms, binning %.1f ms, raster %.1f ms, total %.1f ms; "
       "write %.1f ms\n",
       o.output.c_str(), size.width, size.height, static_cast<unsigned long long>(s.triangles_in),
       static_cast<unsigned long long>(s.culled), static_cast<unsigned long long>(s.clipped),
-      static_cast<unsigned long long>(s.drawn), static_cast<unsigned long long>(s.pixels_shaded),
-      load_ms, s.ms_geometry, s.ms_binning, s.ms_raster, s.ms_total, write_ms);
+      static_cast<unsigned long long>(s.drawn), lines.c_str(),
+      static_cast<unsigned long long>(s.pixels_shaded), load_ms, s.ms_geometry, s.ms_binning,
+      s.ms_raster, s.ms_total, write_ms);
   return 0;
 }
 

@@ -155,6 +155,7 @@ void ViewLoop::render(double now, double dt) {
   info.size = settings_.size;
   info.fov_degrees = settings_.fov_degrees;
   info.triangles = renderer_->stats().drawn;
+  info.lines = renderer_->stats().lines_drawn;
   info.threads = settings_.threads;
   info.mode = to_string(settings_.mode);
   info.shading = settings_.shading_name();

@@ -29,7 +29,12 @@ void stats_panel(const OverlayInfo& info) {
   if (ImGui::Begin("stats", nullptr, kPanelFlags)) {
     ImGui::Text("%.2f ms  %.1f fps", info.frame_ms, info.fps);
     ImGui::Text("%dx%d  fov %.0f", info.size.width, info.size.height, info.fov_degrees);
-    ImGui::Text("%llu triangles", static_cast<unsigned long long>(info.triangles));
+    if (info.lines > 0) {  // wireframe: its edges are lines
+      ImGui::Text("%llu triangles, %llu lines", static_cast<unsigned long long>(info.triangles),
+                  static_cast<unsigned long long>(info.lines));
+    } else {
+      ImGui::Text("%llu triangles", static_cast<unsigned long long>(info.triangles));
+    }
     if (info.threads == 0) {
       ImGui::Text("threads: all cores");
     } else {

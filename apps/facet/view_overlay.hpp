@@ -29,6 +29,7 @@ struct OverlayInfo {
   ImageSize size;
   float fov_degrees = 0;
   std::uint64_t triangles = 0;  // FrameStats::drawn
+  std::uint64_t lines = 0;      // FrameStats::lines_drawn
   int threads = 0;              // 0 = all cores
   std::string mode, shading, camera;
   std::string sound;  // "on", "muted", "off (no device)"; empty: the scene has none

@@ -42,6 +42,7 @@ struct FrameStats {
   std::uint64_t culled = 0;        // rejected: outside the frustum, back/front-facing, degenerate
   std::uint64_t clipped = 0;       // needed clipping against a plane
   std::uint64_t drawn = 0;         // triangles set up and binned (after clipping)
+  std::uint64_t lines_drawn = 0;   // line segments set up and binned: line meshes, wireframes
   // Pixels the shading model ran for, a measure of work rather than of the image: the pixels
   // of small triangles of one draw are shaded together, each having passed the depth test as
   // the tile was before the others, so a pixel that a later triangle of the batch covers

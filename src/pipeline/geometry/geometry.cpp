@@ -89,6 +89,7 @@ void finish_chunks(Frame& frame, Totals end) {
     frame.stats.culled += chunk.counts.culled;
     frame.stats.clipped += chunk.counts.clipped;
     frame.stats.drawn += chunk.triangles.used + chunk.overflow.triangles.size();
+    frame.stats.lines_drawn += chunk.lines.used + chunk.overflow.lines.size();
     const PrimitiveBuffer& o = chunk.overflow;
     if (o.triangles.empty() && o.lines.empty()) continue;
     ensure_size(frame.triangles, end.triangles + o.triangles.size());

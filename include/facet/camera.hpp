@@ -26,6 +26,11 @@ struct Camera {
   glm::vec3 forward() const;  // unit vector from eye toward target
   glm::vec3 right() const;    // unit vector, forward x up
 
+  // Distance along the view direction, in scene units, of what lies at this window depth
+  // (Framebuffer::depth, in [0, 1]): near * far / (far - depth * (far - near)). The depth 1
+  // of pixels where nothing was drawn gives far_plane.
+  float view_distance(float window_depth) const;
+
   // Throws facet::Error if the camera cannot project (fov outside (0, 180), near <= 0,
   // far <= near, eye == target, up parallel to the view direction, non-finite values).
   void validate() const;

@@ -36,7 +36,9 @@ class Framebuffer {
   const std::vector<std::uint8_t>& rgba8() const { return rgba8_; }
   std::vector<float>& rgba32f() { return rgba32f_; }
   const std::vector<float>& rgba32f() const { return rgba32f_; }
-  // Row-major, top row first; empty for DepthImage::none.
+  // Window depth per pixel, row-major, top row first; empty for DepthImage::none. 0 is the
+  // camera's near plane and 1 its far plane (OpenGL's glDepthRange(0, 1)), not linear in
+  // distance: Camera::view_distance turns it into scene units. 1 where nothing was drawn.
   std::vector<float>& depth() { return depth_; }
   const std::vector<float>& depth() const { return depth_; }
   bool has_depth() const { return !depth_.empty(); }

@@ -22,6 +22,13 @@ Camera Camera::look_at(glm::vec3 eye, glm::vec3 target, glm::vec3 up, float fov_
 
 glm::mat4 Camera::view() const { return glm::lookAtRH(eye, target, up); }
 
+float Camera::view_distance(float window_depth) const {
+  // Window depth d = (ndc_z + 1) / 2, and glm's OpenGL projection gives
+  // ndc_z = (f + n) / (f - n) - 2 f n / ((f - n) D) at distance D: solved for D.
+  const double n = near_plane, f = far_plane;
+  return static_cast<float>(n * f / (f - double{window_depth} * (f - n)));
+}
+
 glm::mat4 Camera::projection() const {
   // Maps view-space depth [-near, -far] to clip z in [-w, w] (OpenGL).
   return glm::perspectiveRH_NO(glm::radians(fov_y_degrees), aspect, near_plane, far_plane);

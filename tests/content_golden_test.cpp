@@ -17,6 +17,7 @@
 #include "facet/texture.hpp"
 #include "facet/worlds.hpp"
 #include "support/golden.hpp"
+#include "support/required_package.hpp"
 
 namespace facet::test {
 namespace {
@@ -189,11 +190,8 @@ TEST(ContentGolden, AlphaBlendedMaskedAndAdditive) {
 
 TEST(ContentGolden, TexturedBoxFromGlb) {
   const std::string path = "/usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb";
-  if (!fs::exists(path)) GTEST_SKIP() << path << " missing (Debian package assimp-testmodels)";
-  Scene scene = import_scene(path);
-  if (!scene.has_file_lights) {
-    scene.lighting.lights = three_point_lights(scene.camera.forward(), scene.camera.right());
-  }
+  FACET_REQUIRE_PACKAGE(fs::exists(path), path << " missing (Debian package assimp-testmodels)");
+  Scene scene = import_scene(path);  // lit by import's three-point lights: the file has none
   expect_golden(scene, "box_textured");
 }
 
@@ -204,8 +202,7 @@ TEST(ContentGolden, CourseFormatModel) {
                          "1 0 0\n-1 0 0\n0 1 0\n0 -1 0\n0 0 1\n0 0 -1\n\n"
                          "3 1 3 5\n3 5 3 2\n3 2 3 6\n3 6 3 1\n"
                          "3 5 4 1\n3 2 4 5\n3 6 4 2\n3 1 4 6\n";
-  Scene scene = import_scene(path);
-  scene.lighting.lights = three_point_lights(scene.camera.forward(), scene.camera.right());
+  Scene scene = import_scene(path);  // lit by import's three-point lights
   expect_golden(scene, "course_d");
 }
 

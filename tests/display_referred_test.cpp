@@ -19,6 +19,7 @@
 #include "facet/renderer.hpp"
 #include "facet/teapot.hpp"
 #include "scenes/bench_scenes.hpp"
+#include "support/required_package.hpp"
 
 namespace facet::test {
 namespace {
@@ -107,9 +108,8 @@ TEST(DisplayReferred, DebugViewsGiveTheEncodedBytes) {
 }
 
 TEST(DisplayReferred, Glmark2ScenesGiveTheEncodedBytes) {
-  if (!std::filesystem::is_directory("/usr/share/glmark2/models")) {
-    GTEST_SKIP() << "/usr/share/glmark2 missing (Debian package glmark2-data)";
-  }
+  FACET_REQUIRE_PACKAGE(std::filesystem::is_directory("/usr/share/glmark2/models"),
+                        "/usr/share/glmark2 missing (Debian package glmark2-data)");
   for (const std::string& name : bench::glmark2_scene_names()) {
     const auto scene = bench::make_glmark2_scene(name);
     ASSERT_NE(scene, nullptr) << name;

@@ -18,6 +18,7 @@
 #include "scenes/bench_scenes.hpp"
 #include "scenes/glmark2_model.hpp"
 #include "support/render_helpers.hpp"
+#include "support/required_package.hpp"
 
 namespace facet::test {
 namespace {
@@ -79,12 +80,10 @@ Comparison compare(const Framebuffer& rendered, const Rgba8Image& reference) {
 class Glmark2Equivalence : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(Glmark2Equivalence, FrameZeroMatchesGlmark2) {
-  if (!fs::is_directory(reference_dir())) {
-    GTEST_SKIP() << reference_dir() << " missing: no glmark2 reference frames";
-  }
-  if (!fs::is_directory("/usr/share/glmark2/models")) {
-    GTEST_SKIP() << "/usr/share/glmark2 missing (Debian package glmark2-data)";
-  }
+  FACET_REQUIRE_PACKAGE(fs::is_directory(reference_dir()),
+                        reference_dir() << " missing: no glmark2 reference frames");
+  FACET_REQUIRE_PACKAGE(fs::is_directory("/usr/share/glmark2/models"),
+                        "/usr/share/glmark2 missing (Debian package glmark2-data)");
   const std::string& benchmark = GetParam();
   const fs::path reference_path = reference_dir() / reference_file(benchmark);
   ASSERT_TRUE(fs::exists(reference_path)) << reference_path;
@@ -138,7 +137,7 @@ TEST(Glmark2Scenes, NamesAreTheGlmark2BenchmarkStrings) {
 // two faces and get 45° normals (GLMARK2_SCENES.md §1.4).
 TEST(Glmark2Model, CubeNormalsAreGlmark2s) {
   const std::string path = "/usr/share/glmark2/models/cube.3ds";
-  if (!fs::exists(path)) GTEST_SKIP() << path << " missing (Debian package glmark2-data)";
+  FACET_REQUIRE_PACKAGE(fs::exists(path), path << " missing (Debian package glmark2-data)");
   const bench::Glmark2Model cube = bench::load_3ds(path);
   EXPECT_EQ(cube.positions.size(), 20u);
   EXPECT_EQ(cube.indices.size(), 36u);

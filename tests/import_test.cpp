@@ -20,6 +20,7 @@
 #include "facet/framebuffer.hpp"
 #include "facet/renderer.hpp"
 #include "support/render_helpers.hpp"
+#include "support/required_package.hpp"
 
 namespace facet::test {
 namespace {
@@ -107,7 +108,7 @@ ImportOptions quiet() {
 
 // Imports and renders every model in a directory of the testmodels; expected failures must fail.
 void import_directory(const std::string& directory) {
-  if (!fs::exists(kModels / directory)) GTEST_SKIP() << "assimp-testmodels is not installed";
+  FACET_REQUIRE_PACKAGE(fs::exists(kModels / directory), "assimp-testmodels is not installed");
   int rendered = 0;
   for (const fs::path& file : model_files(directory)) {
     const std::string relative = fs::relative(file, kModels).string();
@@ -141,7 +142,7 @@ TEST(ImportModels, Off) { import_directory("OFF"); }
 // a clean render, never a crash. All run in this process: none of them crashes assimp 5.2 (the
 // one that made it allocate 15 GB, invalid/OutOfMemory.off, is refused before assimp reads it).
 TEST(ImportModels, BrokenFilesFailCleanly) {
-  if (!fs::exists(kModels)) GTEST_SKIP() << "assimp-testmodels is not installed";
+  FACET_REQUIRE_PACKAGE(fs::exists(kModels), "assimp-testmodels is not installed");
   int checked = 0;
   for (const auto& entry : fs::recursive_directory_iterator(kModels)) {
     const fs::path relative = fs::relative(entry.path(), kModels);
@@ -227,7 +228,7 @@ TEST(ImportContent, ObjWithMissingTextureWarnsOnceAndRenders) {
   ASSERT_TRUE(shiny->base_color_map);
   EXPECT_EQ(shiny->base_color_map.texture, missing_texture());
   EXPECT_FALSE(scene.has_file_lights);
-  EXPECT_TRUE(scene.lighting.lights.empty());  // the caller adds three-point lights
+  EXPECT_EQ(scene.lighting.lights.size(), 3u);  // three-point lights: the file has none
   // A cube keeps its hard edges: 6 faces x 4 corners, each face flat.
   EXPECT_GT(render_small(scene).pixels_shaded, 0u);
   std::size_t vertices = 0;
@@ -235,9 +236,26 @@ TEST(ImportContent, ObjWithMissingTextureWarnsOnceAndRenders) {
   EXPECT_EQ(vertices, 24u);
 }
 
+// A file without lights comes lit, as the command line draws it: three lights around the framing
+// view and an ambient term, so a library user's first frame is not a grey silhouette.
+TEST(ImportContent, FilesWithoutLightsGetThreePointLights) {
+  fs::path file = kModels / "glTF2/BoxTextured-glTF-Binary/BoxTextured.glb";
+  FACET_REQUIRE_PACKAGE(fs::exists(file), "assimp-testmodels is not installed");
+  Scene scene = import_scene(file.string());
+  ASSERT_FALSE(scene.has_file_lights);
+  const std::vector<Light> expected =
+      three_point_lights(scene.camera.forward(), scene.camera.right());
+  ASSERT_EQ(scene.lighting.lights.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_EQ(scene.lighting.lights[i].direction, expected[i].direction);
+    EXPECT_EQ(scene.lighting.lights[i].intensity, expected[i].intensity);
+  }
+  EXPECT_EQ(scene.lighting.ambient, glm::vec3(0.12f));
+}
+
 TEST(ImportContent, GltfTexturedBoxIsPbrWithEmbeddedTexture) {
   fs::path file = kModels / "glTF2/BoxTextured-glTF-Binary/BoxTextured.glb";
-  if (!fs::exists(file)) GTEST_SKIP() << "assimp-testmodels is not installed";
+  FACET_REQUIRE_PACKAGE(fs::exists(file), "assimp-testmodels is not installed");
   Scene scene = import_scene(file.string());
   ASSERT_FALSE(scene.materials.empty());
   const Material& m = scene.materials[scene.nodes.back().instances.at(0).material];
@@ -252,7 +270,7 @@ TEST(ImportContent, GltfTexturedBoxIsPbrWithEmbeddedTexture) {
 
 TEST(ImportContent, SpecularGlossinessIsConvertedToMetallicRoughness) {
   fs::path file = kModels / "glTF2/BoxTextured-glTF-pbrSpecularGlossiness/BoxTextured.gltf";
-  if (!fs::exists(file)) GTEST_SKIP() << "assimp-testmodels is not installed";
+  FACET_REQUIRE_PACKAGE(fs::exists(file), "assimp-testmodels is not installed");
   Scene scene = import_scene(file.string());
   const Material& m = scene.materials[scene.nodes.back().instances.at(0).material];
   EXPECT_EQ(m.shading, ShadingModel::pbr);
@@ -265,7 +283,7 @@ TEST(ImportContent, SpecularGlossinessIsConvertedToMetallicRoughness) {
 
 TEST(ImportContent, TextureTransformAndNestedNodes) {
   fs::path file = kModels / "glTF2/textureTransform/TextureTransformTest.gltf";
-  if (!fs::exists(file)) GTEST_SKIP() << "assimp-testmodels is not installed";
+  FACET_REQUIRE_PACKAGE(fs::exists(file), "assimp-testmodels is not installed");
   Scene scene = import_scene(file.string());
   auto node = [&](const std::string& name) {
     for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
@@ -311,7 +329,7 @@ TEST(ImportContent, TextureTransformAndNestedNodes) {
 TEST(ImportContent, RowMajorMatricesBecomeColumnMajor) {
   // BoxTextured.gltf: the root's matrix turns +Y into -Z; the box hangs below it.
   fs::path file = kModels / "glTF2/BoxTextured-glTF/BoxTextured.gltf";
-  if (!fs::exists(file)) GTEST_SKIP() << "assimp-testmodels is not installed";
+  FACET_REQUIRE_PACKAGE(fs::exists(file), "assimp-testmodels is not installed");
   Scene scene = import_scene(file.string());
   int mesh_node = -1;
   for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
@@ -326,7 +344,7 @@ TEST(ImportContent, RowMajorMatricesBecomeColumnMajor) {
 
 TEST(ImportContent, CameraFromTheFile) {
   fs::path file = kModels / "glTF2/cameras/Cameras.gltf";
-  if (!fs::exists(file)) GTEST_SKIP() << "assimp-testmodels is not installed";
+  FACET_REQUIRE_PACKAGE(fs::exists(file), "assimp-testmodels is not installed");
   std::vector<std::string> warnings;
   ImportOptions options;
   options.warn = [&](const std::string& w) { warnings.push_back(w); };
@@ -349,7 +367,7 @@ TEST(ImportContent, CameraFromTheFile) {
 }
 
 TEST(ImportContent, GlmarkBunnyLoadsWithSmoothNormalsQuickly) {
-  if (!fs::exists(kBunny)) GTEST_SKIP() << "glmark2-data is not installed";
+  FACET_REQUIRE_PACKAGE(fs::exists(kBunny), "glmark2-data is not installed");
   auto start = std::chrono::steady_clock::now();
   Scene scene = import_scene(kBunny.string());
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -483,7 +501,7 @@ TEST(JoinIdenticalVertices, JoinsOnlyIdenticalCornersAndKeepsEveryTriangle) {
 
 TEST(ImportContent, ModelsWithNormalsAreIndexedWithTheirCornersKept) {
   const fs::path path = kModels / "OBJ" / "WusonOBJ.obj";  // v, vt and vn, 3732 faces
-  if (!fs::exists(path)) GTEST_SKIP() << "assimp-testmodels is not installed";
+  FACET_REQUIRE_PACKAGE(fs::exists(path), "assimp-testmodels is not installed");
   Scene scene = import_scene(path.string());
   std::size_t vertices = 0, corners = 0;
   for (const auto& mesh : scene.meshes) {

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "support/render_helpers.hpp"
+#include "support/required_package.hpp"
 
 namespace facet::test {
 namespace {
@@ -41,7 +42,7 @@ std::string value_of(const std::string& output, const std::string& label) {
 
 TEST(CliInfo, DescribesAGltfModel) {
   const fs::path model = "/usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb";
-  if (!fs::exists(model)) GTEST_SKIP() << "assimp-testmodels is not installed";
+  FACET_REQUIRE_PACKAGE(fs::exists(model), "assimp-testmodels is not installed");
   CommandResult r = run_info(quoted(model.string()));
   ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
   EXPECT_EQ(r.stderr_text, "");

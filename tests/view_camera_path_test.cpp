@@ -14,6 +14,7 @@
 
 #include "support/golden.hpp"
 #include "support/render_helpers.hpp"
+#include "support/required_package.hpp"
 
 namespace facet::test {
 namespace {
@@ -120,14 +121,14 @@ const std::string kPath =
     "8     7 4 5      45 -25\n";
 
 TEST(ViewCameraPath, FrameAtAKeyTimeMatchesRenderFromThatKey) {
-  if (!have_xvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+  FACET_REQUIRE_PACKAGE(have_xvfb(), "xvfb-run is not installed");
   expect_view_matches_render("key", kPath, 4.0, render_flags(2, 2, 9, 10, -10));
   // Outside the keys the camera holds the first and the last key.
   expect_view_matches_render("after", kPath, 100.0, render_flags(7, 4, 5, 45, -25));
 }
 
 TEST(ViewCameraPath, BetweenTwoKeysTheMidpointIsHalfway) {
-  if (!have_xvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+  FACET_REQUIRE_PACKAGE(have_xvfb(), "xvfb-run is not installed");
   // With two keys the spline's end tangents make t = 5 exactly the average of the two poses.
   expect_view_matches_render("mid", "0 -4 2 8 -20 -10\n10 4 4 8 20 -20\n", 5.0,
                              render_flags(0, 3, 8, 0, -15));

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "support/render_helpers.hpp"
+#include "support/required_package.hpp"
 
 namespace facet::test {
 namespace {
@@ -197,7 +198,7 @@ bool is_black_row(const Rgba8Image& image, int y) {
 const std::string kIslands = "start_view --scene islands --size 320x180 --time 3 --overlay off\n";
 
 #define SKIP_WITHOUT_TOOLS() \
-  if (!have_tools()) GTEST_SKIP() << "xvfb-run or xdotool is not installed"
+  FACET_REQUIRE_PACKAGE(have_tools(), "xvfb-run or xdotool is not installed")
 
 TEST(ViewInput, WMovesTheCameraForward) {
   SKIP_WITHOUT_TOOLS();
@@ -240,7 +241,7 @@ TEST(ViewInput, MouseMotionTurnsTheCamera) {
 TEST(ViewInput, ModelsStartInOrbitWhereTheWheelZoomsAndTabSwitches) {
   SKIP_WITHOUT_TOOLS();
   const std::string model = "/usr/share/glmark2/models/bunny.obj";
-  if (!fs::exists(model)) GTEST_SKIP() << model << " is missing (glmark2-data)";
+  FACET_REQUIRE_PACKAGE(fs::exists(model), model << " is missing (glmark2-data)");
   Session s = run_session("orbit", "start_view '" + model +
                                        "' --size 320x180 --overlay off\n"
                                        "xdotool mousemove --window \"$WID\" 160 90\n"
@@ -262,7 +263,7 @@ TEST(ViewInput, ModelsStartInOrbitWhereTheWheelZoomsAndTabSwitches) {
 TEST(ViewInput, OrbitLeftDragTurnsAroundTheTargetAndMiddleDragPans) {
   SKIP_WITHOUT_TOOLS();
   const std::string model = "/usr/share/glmark2/models/bunny.obj";
-  if (!fs::exists(model)) GTEST_SKIP() << model << " is missing (glmark2-data)";
+  FACET_REQUIRE_PACKAGE(fs::exists(model), model << " is missing (glmark2-data)");
   Session s = run_session(
       "orbit_drag",
       "start_view '" + model +

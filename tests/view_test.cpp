@@ -10,6 +10,7 @@
 
 #include "support/golden.hpp"
 #include "support/render_helpers.hpp"
+#include "support/required_package.hpp"
 
 namespace facet::test {
 namespace {
@@ -44,7 +45,7 @@ void expect_images_match(const Rgba8Image& a, const Rgba8Image& b) {
 }
 
 TEST(View, ScriptedFramesMatchRenderOfTheSameCamera) {
-  if (!have_xvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+  FACET_REQUIRE_PACKAGE(have_xvfb(), "xvfb-run is not installed");
   fs::path dir = fresh_test_dir("facet_view_", "shapes");
   std::string shot = (dir / "v.png").string();
   CommandResult r =
@@ -62,7 +63,7 @@ TEST(View, ScriptedFramesMatchRenderOfTheSameCamera) {
 }
 
 TEST(View, IslandsAtAFixedTimeAreDeterministic) {
-  if (!have_xvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+  FACET_REQUIRE_PACKAGE(have_xvfb(), "xvfb-run is not installed");
   fs::path dir = fresh_test_dir("facet_view_", "islands");
   std::string shots[2] = {(dir / "a.png").string(), (dir / "b.png").string()};
   for (const std::string& shot : shots) {
@@ -82,7 +83,7 @@ TEST(View, IslandsAtAFixedTimeAreDeterministic) {
 // The islands world as `facet view` shows it at t = 3 s, held against a golden image; the same t
 // renders the same image again.
 TEST(View, IslandsAtThreeSecondsMatchTheGolden) {
-  if (!have_xvfb()) GTEST_SKIP() << "xvfb-run is not installed";
+  FACET_REQUIRE_PACKAGE(have_xvfb(), "xvfb-run is not installed");
   fs::path dir = fresh_test_dir("facet_view_", "islands_golden");
   std::string shots[2] = {(dir / "a.png").string(), (dir / "b.png").string()};
   for (const std::string& shot : shots) {

@@ -212,10 +212,6 @@ Scene build_scene(const SceneOptions& o) {
     scene = make_builtin_scene(o.scene.value_or("shapes"));
   } else {
     scene = import_scene(o.model);
-    if (!scene.has_file_lights) {
-      scene.lighting.lights = three_point_lights(scene.camera.forward(), scene.camera.right());
-      scene.lighting.ambient = glm::vec3(0.12f);
-    }
   }
   if (o.shading) {
     ShadingModel model;

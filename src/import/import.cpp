@@ -84,8 +84,14 @@ Scene import_scene(const std::string& path, const ImportOptions& options) {
   validate_meshes(scene, path);
   // Line-only models (a wireframe OBJ) still draw; a file of points or nothing at all does not.
   if (!has_primitives(scene)) throw Error(path + ": no triangles to draw");
-  if (!scene.has_file_lights) scene.lighting.lights.clear();  // the caller adds its own
   scene.camera = frame_scene(scene, 16.0f / 9.0f);
+  if (!scene.has_file_lights) {
+    // A file without lights would draw as a grey silhouette: light it as a photographer lights
+    // a product, from the framing view (the lights a program that moves the camera may set
+    // again for its own view).
+    scene.lighting.lights = three_point_lights(scene.camera.forward(), scene.camera.right());
+    scene.lighting.ambient = glm::vec3(0.12f);
+  }
   return scene;
 }
 

@@ -111,7 +111,8 @@ CLI::App* add_bench_command(CLI::App& app, BenchOptions& o) {
   cmd->add_option("--frames", o.frames, "Frames measured per scene (after the warm-up)")
       ->capture_default_str();
   cmd->add_option("--warmup", o.warmup, "Frames rendered before measuring")->capture_default_str();
-  cmd->add_option("--threads", o.threads, "Worker threads, 0 = all cores")->capture_default_str();
+  cmd->add_option("--threads", o.threads, "Worker threads, 0 = all cores, at most 256")
+      ->capture_default_str();
   cmd->add_option("--tile-size", o.tile_size, "Tile edge in pixels: 16, 32, 64 or 128")
       ->capture_default_str();
   cmd->add_option("--json", o.json, "Also write the results to this JSON file");

@@ -29,7 +29,8 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
                   "Background color r,g,b in [0, 1], sRGB (default: " + kDefaultBackground + ")");
   cmd->add_option("--exposure", o.exposure, "Exposure in stops: colors scaled by 2^EXPOSURE")
       ->capture_default_str();
-  cmd->add_option("--threads", o.threads, "Worker threads, 0 = all cores")->capture_default_str();
+  cmd->add_option("--threads", o.threads, "Worker threads, 0 = all cores, at most 256")
+      ->capture_default_str();
   cmd->add_option("--tile-size", o.tile_size, "Tile edge in pixels: 16, 32, 64 or 128")
       ->capture_default_str();
   return cmd;

@@ -62,7 +62,8 @@ CLI::App* add_view_command(CLI::App& app, ViewOptions& o) {
   cmd->add_option("--size", o.size,
                   "Render resolution WIDTHxHEIGHT; the window scales it with letterboxing")
       ->capture_default_str();
-  cmd->add_option("--threads", o.threads, "Worker threads, 0 = all cores")->capture_default_str();
+  cmd->add_option("--threads", o.threads, "Worker threads, 0 = all cores, at most 256")
+      ->capture_default_str();
   cmd->add_option("--frames", o.frames, "Render this many frames, then quit (0: until closed)")
       ->capture_default_str();
   cmd->add_option("--screenshot", o.screenshot, "Save the last frame to this PNG or PPM file");

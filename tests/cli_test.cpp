@@ -121,6 +121,8 @@ const BadCase kBadCases[] = {
     {"unknown_scene", "--scene nosuch -o out.png"},
     {"output_dir_missing", "-o /nonexistent-dir/x.png"},
     {"output_unknown_type", "-o out.bmp"},
+    {"output_is_directory", "-o /tmp"},
+    {"model_is_a_device", "/dev/null -o out.png"},
     {"threads_negative", "--threads -1 -o out.png"},
     {"threads_huge", "--threads 100000 -o out.png"},
     {"tile_size_48", "--tile-size 48 -o out.png"},
@@ -175,6 +177,17 @@ TEST(CliRender, LightOptionsLeaveTheModelPathToTheModel) {
   ASSERT_EQ(one.exit_code, 0) << one.stderr_text;
   EXPECT_EQ(read_file(dir / "a.png"), read_file(dir / "b.png"));
   EXPECT_NE(read_file(dir / "a.png"), read_file(dir / "c.png")) << "the second light is lost";
+}
+
+// The error says what is wrong with the path: an output that is a directory, a model that is a
+// device.
+TEST(CliRender, PathErrorsSayWhatThePathIs) {
+  fs::path dir = fresh_test_dir("facet_cli_", "path_errors");
+  CommandResult out_dir = run_facet(dir, "render -o /tmp --size 8x8");
+  EXPECT_EQ(out_dir.stderr_text, "facet: error: /tmp: is a directory\n");
+  CommandResult device = run_facet(dir, "render /dev/null -o out.png --size 8x8");
+  EXPECT_EQ(device.stderr_text,
+            "facet: error: /dev/null: not a regular file, so not a model file\n");
 }
 
 // A wireframe draws its edges as lines: the summary counts them rather than saying "0 drawn"

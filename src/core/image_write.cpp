@@ -100,6 +100,9 @@ ImageFileType image_file_type(const std::string& path) {
 }
 
 void check_writable(const std::string& path) {
+  std::error_code is_directory_error;
+  // Said first: a directory's name has no image extension either.
+  if (fs::is_directory(path, is_directory_error)) throw Error(path + ": is a directory");
   image_file_type(path);
   fs::path dir = fs::path(path).parent_path();
   if (dir.empty()) dir = ".";

@@ -37,6 +37,8 @@ void check_model_file(const std::string& path) {
   if (std::filesystem::is_regular_file(path, error)) return;
   if (std::filesystem::is_directory(path, error))
     throw Error(path + ": is a directory, not a model file");
+  if (std::filesystem::exists(path, error))  // a device, a pipe, a socket
+    throw Error(path + ": not a regular file, so not a model file");
   throw Error(path + ": no such file");
 }
 

@@ -113,7 +113,7 @@ TEST(CliContentErrors, DPolygonOutOfRangeNamesFileAndLine) {
 }
 
 TEST(CliContentErrors, FileCameraOutOfRange) {
-  SKIP_WITHOUT(kCamerasGltf);
+  REQUIRE_INSTALLED(kCamerasGltf);
   for (const char* n : {"1", "5", "-1"}) {
     SCOPED_TRACE(std::string("--camera ") + n);
     fs::path dir = fresh_test_dir("facet_cli_content_", std::string("camera_bad_") + n);

@@ -125,12 +125,12 @@ void expect_a_picture(const Rgba8Image& image, std::size_t min_colors = 50) {
 // --- models render ------------------------------------------------------------------------
 
 TEST(CliContentModels, BunnyObj) {
-  SKIP_WITHOUT(kBunny);
+  REQUIRE_INSTALLED(kBunny);
   expect_a_picture(render("bunny", kBunny));
 }
 
 TEST(CliContentModels, TexturedGlb) {
-  SKIP_WITHOUT(kBoxGlb);
+  REQUIRE_INSTALLED(kBoxGlb);
   Rgba8Image image = render("box_glb", kBoxGlb);
   expect_a_picture(image);
 }
@@ -300,7 +300,7 @@ TEST(CliContentFlags, ExposureBrightens) {
 }
 
 TEST(CliContentFlags, FileCamera) {
-  SKIP_WITHOUT(kCamerasGltf);
+  REQUIRE_INSTALLED(kCamerasGltf);
   // The file has a perspective camera (kept) and an orthographic one (left out with a warning).
   CommandResult info = run_command(std::string(FACET_CLI) + " info " + kCamerasGltf);
   ASSERT_EQ(info.exit_code, 0) << info.stderr_text;

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "facet/error.hpp"
+#include "support/required_package.hpp"
 
 namespace facet {
 namespace {
@@ -64,10 +65,10 @@ SoundSceneDesc missing_device_desc() {
   return desc;
 }
 
-#define SKIP_WITHOUT_LOOPBACK(scene)                                                    \
-  if (!(scene).available())                                                             \
-  GTEST_SKIP() << "OpenAL Soft's loopback device (ALC_SOFT_loopback) is not available " \
-                  "here, so nothing can be heard"
+#define REQUIRE_LOOPBACK(scene)                                                      \
+  FACET_REQUIRE_PACKAGE((scene).available(),                                         \
+                        "OpenAL Soft's loopback device (ALC_SOFT_loopback, Debian: " \
+                        "libopenal1) is not available, so nothing can be heard")
 
 // The level a listener at the origin looking down -Z hears from a waterfall at `position`.
 Levels levels_from(glm::vec3 position, glm::vec3 forward = {0, 0, -1}) {
@@ -81,7 +82,7 @@ Levels levels_from(glm::vec3 position, glm::vec3 forward = {0, 0, -1}) {
 
 TEST(Sound, SourceOnTheRightIsLouderOnTheRight) {
   SoundScene probe = loopback_scene();
-  SKIP_WITHOUT_LOOPBACK(probe);
+  REQUIRE_LOOPBACK(probe);
   const Levels levels = levels_from({5, 0, 0});
   std::printf("source right (+5,0,0): left rms %.5f, right rms %.5f\n", levels.left, levels.right);
   EXPECT_GT(levels.right, 0.01);
@@ -90,7 +91,7 @@ TEST(Sound, SourceOnTheRightIsLouderOnTheRight) {
 
 TEST(Sound, SourceBehindOnTheLeftIsLouderOnTheLeft) {
   SoundScene probe = loopback_scene();
-  SKIP_WITHOUT_LOOPBACK(probe);
+  REQUIRE_LOOPBACK(probe);
   const Levels levels = levels_from({-3, 0, 4});
   std::printf("source behind-left (-3,0,4): left rms %.5f, right rms %.5f\n", levels.left,
               levels.right);
@@ -100,7 +101,7 @@ TEST(Sound, SourceBehindOnTheLeftIsLouderOnTheLeft) {
 
 TEST(Sound, TurningTheListenerAroundSwapsTheSides) {
   SoundScene probe = loopback_scene();
-  SKIP_WITHOUT_LOOPBACK(probe);
+  REQUIRE_LOOPBACK(probe);
   const Levels levels = levels_from({5, 0, 0}, {0, 0, 1});  // looking down +Z: +X is on the left
   std::printf("listener turned, source at (+5,0,0): left rms %.5f, right rms %.5f\n", levels.left,
               levels.right);
@@ -109,7 +110,7 @@ TEST(Sound, TurningTheListenerAroundSwapsTheSides) {
 
 TEST(Sound, MovingTheSourceAwayLowersTheLevel) {
   SoundScene scene = loopback_scene();
-  SKIP_WITHOUT_LOOPBACK(scene);
+  REQUIRE_LOOPBACK(scene);
   const int id =
       scene.add_source(waterfall_noise(kLoopSeconds), {0, 0, -2});  // reference distance 4
   scene.play(id);
@@ -126,7 +127,7 @@ TEST(Sound, MovingTheSourceAwayLowersTheLevel) {
 
 TEST(Sound, MutingSilencesAndUnmutingRestores) {
   SoundScene scene = loopback_scene();
-  SKIP_WITHOUT_LOOPBACK(scene);
+  REQUIRE_LOOPBACK(scene);
   const int id = scene.add_source(engine_hum(kLoopSeconds), {0, 0, -3});
   scene.play(id);
   const Levels playing = settled_levels(scene);
@@ -144,7 +145,7 @@ TEST(Sound, MutingSilencesAndUnmutingRestores) {
 
 TEST(Sound, StoppedSourcesAreSilent) {
   SoundScene scene = loopback_scene();
-  SKIP_WITHOUT_LOOPBACK(scene);
+  REQUIRE_LOOPBACK(scene);
   const int id = scene.add_source(propeller_buzz(kLoopSeconds), {0, 0, -3});
   EXPECT_LT(settled_levels(scene).total(), 1e-6);  // added stopped
   scene.play(id);
@@ -176,7 +177,7 @@ double left_frequency(SoundScene& scene) {
 
 TEST(Sound, DopplerRaisesThePitchOfAnApproachingSource) {
   SoundScene scene = loopback_scene();
-  SKIP_WITHOUT_LOOPBACK(scene);
+  REQUIRE_LOOPBACK(scene);
   const int id = scene.add_source(sine_441(), {0, 0, -10});
   scene.play(id);
   const double still = left_frequency(scene);

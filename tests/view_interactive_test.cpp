@@ -197,11 +197,11 @@ bool is_black_row(const Rgba8Image& image, int y) {
 // The islands at a fixed time, small, with no overlay: only the input changes the image.
 const std::string kIslands = "start_view --scene islands --size 320x180 --time 3 --overlay off\n";
 
-#define SKIP_WITHOUT_TOOLS() \
+#define REQUIRE_TOOLS() \
   FACET_REQUIRE_PACKAGE(have_tools(), "xvfb-run or xdotool is not installed")
 
 TEST(ViewInput, WMovesTheCameraForward) {
-  SKIP_WITHOUT_TOOLS();
+  REQUIRE_TOOLS();
   Session s = run_session("w", kIslands +
                                    "xdotool keydown w; sleep 1; xdotool keyup w\n"
                                    "shot\nstop_view\n");
@@ -218,7 +218,7 @@ TEST(ViewInput, WMovesTheCameraForward) {
 }
 
 TEST(ViewInput, MouseMotionTurnsTheCamera) {
-  SKIP_WITHOUT_TOOLS();
+  REQUIRE_TOOLS();
   // A click captures the mouse (relative mode); then motion to the right turns right.
   Session s =
       run_session("mouse", kIslands +
@@ -239,7 +239,7 @@ TEST(ViewInput, MouseMotionTurnsTheCamera) {
 }
 
 TEST(ViewInput, ModelsStartInOrbitWhereTheWheelZoomsAndTabSwitches) {
-  SKIP_WITHOUT_TOOLS();
+  REQUIRE_TOOLS();
   const std::string model = "/usr/share/glmark2/models/bunny.obj";
   FACET_REQUIRE_PACKAGE(fs::exists(model), model << " is missing (glmark2-data)");
   Session s = run_session("orbit", "start_view '" + model +
@@ -261,7 +261,7 @@ TEST(ViewInput, ModelsStartInOrbitWhereTheWheelZoomsAndTabSwitches) {
 }
 
 TEST(ViewInput, OrbitLeftDragTurnsAroundTheTargetAndMiddleDragPans) {
-  SKIP_WITHOUT_TOOLS();
+  REQUIRE_TOOLS();
   const std::string model = "/usr/share/glmark2/models/bunny.obj";
   FACET_REQUIRE_PACKAGE(fs::exists(model), model << " is missing (glmark2-data)");
   Session s = run_session(
@@ -291,7 +291,7 @@ TEST(ViewInput, OrbitLeftDragTurnsAroundTheTargetAndMiddleDragPans) {
 }
 
 TEST(ViewInput, IslandsHaveSoundThatMTogglesAndNoDeviceCostsOneWarning) {
-  SKIP_WITHOUT_TOOLS();
+  REQUIRE_TOOLS();
   Session s =
       run_session("sound", kIslands + "xdotool key m\nshot\nxdotool key m\nshot\nstop_view\n");
   ASSERT_EQ(s.result.exit_code, 0) << s.result.stderr_text;
@@ -305,7 +305,7 @@ TEST(ViewInput, IslandsHaveSoundThatMTogglesAndNoDeviceCostsOneWarning) {
 }
 
 TEST(ViewInput, F2CyclesTheRenderMode) {
-  SKIP_WITHOUT_TOOLS();
+  REQUIRE_TOOLS();
   Session s =
       run_session("f2", kIslands + "xdotool key F2\nshot\nxdotool key F2\nshot\nstop_view\n");
   ASSERT_EQ(s.result.exit_code, 0) << s.result.stderr_text;
@@ -316,7 +316,7 @@ TEST(ViewInput, F2CyclesTheRenderMode) {
 }
 
 TEST(ViewInput, F3F4ChangeTheFieldOfViewF7TheShadingF8TheThreads) {
-  SKIP_WITHOUT_TOOLS();
+  REQUIRE_TOOLS();
   Session s = run_session("f3f4f7f8", kIslands +
                                           "xdotool key F4\nshot\nxdotool key F3 F3\nshot\n"
                                           "xdotool key F7\nshot\nxdotool key F8\nshot\n"
@@ -342,7 +342,7 @@ TEST(ViewInput, F3F4ChangeTheFieldOfViewF7TheShadingF8TheThreads) {
 // resolution in a 1280x720 window it is whole (the frame could not hold its rows) and centred,
 // with rows of the picture above and below it; the frame itself (F12) is left as it was.
 TEST(ViewInput, F1ShowsTheWholeHelpPanelInTheMiddleOfTheWindow) {
-  SKIP_WITHOUT_TOOLS();
+  REQUIRE_TOOLS();
   Session s = run_session("f1", kIslands +
                                     "xdotool windowsize --sync \"$WID\" 1280 720\n"
                                     "wait_size 1280 720\nwindow_shot\n"
@@ -365,7 +365,7 @@ TEST(ViewInput, F1ShowsTheWholeHelpPanelInTheMiddleOfTheWindow) {
 // A small render resolution opens a window big enough for the help: 320x180 opens at twice
 // that, where F1 shows the whole panel with the picture all around it.
 TEST(ViewInput, SmallRendersOpenAWindowTheHelpFits) {
-  SKIP_WITHOUT_TOOLS();
+  REQUIRE_TOOLS();
   Session s = run_session("f1_small", kIslands +
                                           "window_shot\nxdotool key F1\nsleep 3\n"
                                           "window_shot\nstop_view\n");
@@ -382,7 +382,7 @@ TEST(ViewInput, SmallRendersOpenAWindowTheHelpFits) {
 // The whole multiple stops at the display: 500x100 would need 2000x400 on a 1920-pixel screen,
 // so it opens at three times, 1500 wide, and as tall as the smallest window.
 TEST(ViewInput, AWindowOpensNoWiderThanTheDisplay) {
-  SKIP_WITHOUT_TOOLS();
+  REQUIRE_TOOLS();
   Session s = run_session("wide",
                           "start_view --scene shapes --size 500x100 --overlay off\n"
                           "stop_view\n");
@@ -392,7 +392,7 @@ TEST(ViewInput, AWindowOpensNoWiderThanTheDisplay) {
 }
 
 TEST(ViewInput, F6RaisesAndF5LowersTheRenderResolution) {
-  SKIP_WITHOUT_TOOLS();
+  REQUIRE_TOOLS();
   Session s =
       run_session("f6", kIslands + "xdotool key F6\nshot\nxdotool key F5\nshot\nstop_view\n");
   ASSERT_EQ(s.result.exit_code, 0) << s.result.stderr_text;
@@ -410,7 +410,7 @@ TEST(ViewInput, F6RaisesAndF5LowersTheRenderResolution) {
 // its size; what F11 changes and this test sees is SDL's window: its size becomes the display's
 // and the window's picture (Shift+F12) is drawn at that size, and F11 again restores both.
 TEST(ViewInput, F11TogglesFullscreen) {
-  SKIP_WITHOUT_TOOLS();
+  REQUIRE_TOOLS();
   Session s = run_session("f11", kIslands +
                                      "xdotool key F11\nshot\nwindow_shot\n"
                                      "xdotool key F11\nshot\nstop_view\n");
@@ -426,7 +426,7 @@ TEST(ViewInput, F11TogglesFullscreen) {
 }
 
 TEST(ViewInput, LetterboxBarsWhenTheWindowAspectDiffers) {
-  SKIP_WITHOUT_TOOLS();
+  REQUIRE_TOOLS();
   // A square window showing a 16:9 frame: 640 wide means a 360-pixel picture, 140-pixel bars.
   Session s = run_session("letterbox", kIslands +
                                            "xdotool windowsize --sync \"$WID\" 640 640\n"
@@ -440,7 +440,7 @@ TEST(ViewInput, LetterboxBarsWhenTheWindowAspectDiffers) {
 }
 
 TEST(ViewInput, F9ShowsTheOverlayAtTheLeft) {
-  SKIP_WITHOUT_TOOLS();
+  REQUIRE_TOOLS();
   Session s = run_session("f9", kIslands + "xdotool key F9\nsleep 3\nshot\nstop_view\n");
   ASSERT_EQ(s.result.exit_code, 0) << s.result.stderr_text;
   Rgba8Image plain = s.image(shot_name(1)), overlay = s.image(shot_name(2));

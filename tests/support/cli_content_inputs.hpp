@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "support/render_helpers.hpp"
+#include "support/required_package.hpp"
 
 namespace facet::test {
 
@@ -33,10 +34,11 @@ CommandResult run_facet(const std::filesystem::path& dir, const std::string& arg
 
 std::vector<std::string> lines_of(const std::string& text);
 
-// Skips a test whose Debian test file is not installed.
-#define SKIP_WITHOUT(path)                                \
-  if (!std::filesystem::exists(path))                     \
-  GTEST_SKIP() << (path) << " is not installed (Debian: " \
-               << ((path) == kBunny ? "glmark2-data" : "assimp-testmodels") << ")"
+// Fails a test whose Debian test file is not installed (support/required_package.hpp).
+#define REQUIRE_INSTALLED(path)                                                             \
+  FACET_REQUIRE_PACKAGE(std::filesystem::exists(path),                                      \
+                        (path) << " is not installed (Debian: "                             \
+                               << ((path) == kBunny ? "glmark2-data" : "assimp-testmodels") \
+                               << ")")
 
 }  // namespace facet::test

@@ -56,6 +56,9 @@ struct FrameStats {
   // resolve time as a share of their whole time, applied to ms_raster).
   double ms_resolve = 0;
   double ms_total = 0;
+  // The passes of the extra outputs asked for (ExtraOutputs), included in ms_total; the
+  // counts above are the color pass's.
+  double ms_extra_outputs = 0;
   // Every color was a display value, an 8-bit code (as the normals, depth and texcoords
   // models write): resolve rounded them to bytes instead of sRGB-encoding them, with the same
   // result.
@@ -90,7 +93,14 @@ class Renderer {
   // frame after the last that drew it. To change the mesh, draw a new one in its place.
   void draw(const std::shared_ptr<const Mesh>& mesh, const Material& material,
             const glm::mat4& transform = glm::mat4(1));
-  // Runs the pipeline for everything recorded since begin_frame() into target.
+  // The instance id of the draws recorded from now on in this frame, which the instance ids
+  // output shows (ExtraOutputs). Before any call in a frame, a draw's id is its number among
+  // the frame's draw() calls: 1, 2, ... (0 is the background). draw_scene sets each node's.
+  void set_instance_id(std::uint32_t id);
+  // Runs the pipeline for everything recorded since begin_frame() into target, then one pass
+  // for each group of the extra outputs target asks for (Framebuffer's ExtraOutputs). Throws
+  // facet::Error when triangle ids are asked of a mesh of 2^24 triangles or more, whose ids a
+  // float pass cannot hold exactly.
   void finish(Framebuffer& target);
 
   const FrameStats& stats() const;

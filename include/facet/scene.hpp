@@ -84,7 +84,8 @@ struct Scene {
 };
 
 // Records every mesh instance of the scene (the scene must live until renderer.finish()), at
-// the level of detail each node has for the camera of renderer.begin_frame().
+// the level of detail each node has for the camera of renderer.begin_frame(). Node n's draws
+// have the instance id n + 1 (Renderer::set_instance_id).
 void draw_scene(Renderer& renderer, const Scene& scene);
 
 // A camera that frames the whole scene from a pleasant three-quarter view: from the front

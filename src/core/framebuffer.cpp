@@ -8,8 +8,9 @@
 
 namespace facet {
 
-Framebuffer::Framebuffer(int width, int height, ColorFormat format, DepthImage depth)
-    : width_(width), height_(height), format_(format) {
+Framebuffer::Framebuffer(int width, int height, ColorFormat format, DepthImage depth,
+                         const ExtraOutputs& extra)
+    : width_(width), height_(height), format_(format), extra_(extra) {
   if (width < 1 || height < 1 || width > kMaxSize || height > kMaxSize) {
     throw Error("framebuffer: size " + std::to_string(width) + "x" + std::to_string(height) +
                 " is outside 1x1 .. " + std::to_string(kMaxSize) + "x" + std::to_string(kMaxSize));
@@ -21,6 +22,13 @@ Framebuffer::Framebuffer(int width, int height, ColorFormat format, DepthImage d
     rgba32f_.assign(pixels * 4, 0.0f);
   }
   if (depth == DepthImage::keep) depth_.assign(pixels, 1.0f);
+  if (extra.view_depth) view_depth_.assign(pixels, 0.0f);
+  if (extra.ray_distance) ray_distance_.assign(pixels, 0.0f);
+  if (extra.normals != NormalSpace::none) normals_.assign(pixels * 3, 0.0f);
+  if (extra.instance_ids) instance_ids_.assign(pixels, 0);
+  if (extra.triangle_ids) triangle_ids_.assign(pixels, 0);
+  if (extra.barycentrics) barycentrics_.assign(pixels * 3, 0.0f);
+  if (extra.albedo) albedo_.assign(pixels * 4, 0.0f);
 }
 
 std::size_t Framebuffer::checked_index(int x, int y, const char* what) const {

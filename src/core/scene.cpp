@@ -109,6 +109,7 @@ void draw_scene(Renderer& renderer, const Scene& scene) {
     const SceneNode& node = scene.nodes[n];
     if (node.instances.empty() && node.coarser.empty()) continue;
     glm::mat4 m = scene.world_transform(static_cast<int>(n));
+    renderer.set_instance_id(static_cast<std::uint32_t>(n + 1));
     for (const MeshInstance& instance :
          node.instances_seen_from(m, camera.eye, camera.fov_y_degrees)) {
       renderer.draw(scene.meshes[instance.mesh], scene.materials[instance.material], m);

@@ -83,6 +83,9 @@ struct DrawPipeline {
                           float* [3]);
   FaceFn face = nullptr;                  // every triangle (flat shading)
   FaceFn face_without_normals = nullptr;  // triangles of meshes without normals (Gouraud)
+  // Every triangle, with its index in the mesh (the triangle ids output), after the face hooks.
+  using TriangleFn = void (*)(std::uint32_t index, float* [3]);
+  TriangleFn triangle = nullptr;
   RasterTriangleFn raster = nullptr;
   // The model's batch form takes this draw (shading/shade_batch.hpp); null: no batch form.
   bool (*batch_shades)(const shading::DrawUniforms&) = nullptr;
@@ -120,8 +123,9 @@ struct DrawRecord {
 };
 
 // The per-triangle hooks primitive assembly runs before setup: a face normal for shading
-// models that need one when the mesh has none, and the per-face function (flat shading, or
-// Gouraud lighting of a mesh without normals). Both rewrite the triangle's varyings.
+// models that need one when the mesh has none, the per-face function (flat shading, or
+// Gouraud lighting of a mesh without normals) and the per-triangle function given the
+// triangle's index. All rewrite the triangle's varyings.
 inline bool fills_face_normal(const DrawRecord& draw) {
   return draw.pipeline.normal_slot >= 0 && draw.mesh->normals.empty();
 }
@@ -130,7 +134,7 @@ inline DrawPipeline::FaceFn face_hook(const DrawRecord& draw) {
   return pipe.face ? pipe.face : (draw.mesh->normals.empty() ? pipe.face_without_normals : nullptr);
 }
 inline bool has_triangle_hooks(const DrawRecord& draw) {
-  return fills_face_normal(draw) || face_hook(draw) != nullptr;
+  return fills_face_normal(draw) || face_hook(draw) != nullptr || draw.pipeline.triangle != nullptr;
 }
 
 using shading::Plane;

@@ -94,6 +94,7 @@ void Renderer::Impl::run(Framebuffer& target) {
   uniforms.lighting = &lighting;
   uniforms.near_plane = camera.near_plane;
   uniforms.far_plane = camera.far_plane;
+  uniforms.view = camera.view();
   uniforms.display_referred = false;  // decided after geometry (display_referred_frame)
   uniforms.kernels = &kernels.shading;
   const pipeline::ClipBounds guard = pipeline::guard_band_bounds(frame.width, frame.height);

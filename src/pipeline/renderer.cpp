@@ -50,6 +50,8 @@ void Renderer::begin_frame(const Camera& camera, const Lighting& lighting) {
   impl_->lighting = lighting;
   impl_->frame.draws.clear();
   impl_->primitives_outside = 0;
+  impl_->instance_id.reset();
+  impl_->draw_calls = 0;
   const std::uint64_t frame_number = ++impl_->frame_number;
   std::erase_if(impl_->checked_meshes, [frame_number](const auto& entry) {
     return entry.second.last_frame + 1 < frame_number;  // not drawn in the last frame
@@ -68,6 +70,11 @@ void Renderer::draw(const std::shared_ptr<const Mesh>& mesh, const Material& mat
   const std::optional<pipeline::MeshBox>& box = impl_->checked_bounds(mesh);
   impl_->record(*mesh, box, material, transform,
                 pipeline::pipeline_for(material, *mesh, impl_->lighting));
+}
+
+void Renderer::set_instance_id(std::uint32_t id) {
+  impl_->require_recording("set_instance_id()");
+  impl_->instance_id = id;
 }
 
 void Renderer::Impl::require_recording(const char* call) const {
@@ -110,6 +117,7 @@ void Renderer::Impl::check_and_record(const Mesh& mesh, const Material& material
 void Renderer::Impl::record(const Mesh& mesh, const std::optional<pipeline::MeshBox>& box,
                             const Material& material, const glm::mat4& transform,
                             const pipeline::DrawPipeline& pipe) {
+  ++draw_calls;
   const glm::mat4 model_view_projection = frame.view_projection * transform;
   if (box && pipeline::box_outside_frustum(*box, model_view_projection)) {
     primitives_outside += mesh.primitive_count();
@@ -128,12 +136,17 @@ void Renderer::Impl::record(const Mesh& mesh, const std::optional<pipeline::Mesh
   u.model = transform;
   u.model_view_projection = model_view_projection;
   u.normal_matrix = glm::inverseTranspose(glm::mat3(transform));
+  u.instance_id = instance_id.value_or(draw_calls);
   frame.draws.push_back(record);
 }
 
 void Renderer::finish(Framebuffer& target) {
   impl_->require_recording("finish()");
-  impl_->arena.execute([&] { impl_->run(target); });
+  if (target.extra_outputs().any()) impl_->check_extra_outputs(target);
+  impl_->arena.execute([&] {
+    impl_->run(target);
+    if (target.extra_outputs().any()) impl_->run_extra_outputs(target);
+  });
   impl_->recording = false;
 }
 

@@ -58,6 +58,12 @@ struct Renderer::Impl {
   Camera camera;
   Lighting lighting;
   bool recording = false;
+  // The instance id of the next draws (Renderer::set_instance_id), and how many draw() calls the
+  // frame has had: each draw's id until the first set_instance_id().
+  std::optional<std::uint32_t> instance_id;
+  std::uint32_t draw_calls = 0;
+  // The float target the extra outputs' passes render into, reused while the size stays.
+  std::optional<Framebuffer> pass_target;
   std::uint64_t primitives_outside = 0;  // of draws outside the frustum, never recorded
   // Meshes drawn through shared pointers, checked once (Renderer::draw): checking every mesh again
   // in every frame costs real time in big worlds of many draws, all of it on the recording thread.
@@ -95,6 +101,11 @@ struct Renderer::Impl {
   void prepare_tiles(const Framebuffer& target);
   void render_tile(int index, int worker, Framebuffer& target);
   void run(Framebuffer& target);
+  // Throws facet::Error for extra outputs the frame's draws cannot give exactly (ids too big
+  // for a float pass), before anything is drawn (output_passes.cpp).
+  void check_extra_outputs(const Framebuffer& target) const;
+  // The passes of target's extra outputs, after run() drew its color (output_passes.cpp).
+  void run_extra_outputs(Framebuffer& target);
   void order_draws();
   bool display_referred_frame(const Framebuffer& target) const;
 };

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cstdint>
 #include <glm/glm.hpp>
 #include <iterator>
 #include <span>
@@ -36,6 +37,8 @@ struct FrameUniforms {
   const Lighting* lighting = nullptr;  // fog and environment
   float near_plane = 0.1f;
   float far_plane = 100.0f;
+  glm::mat4 view{1.0f};       // the camera's view matrix (what the extra outputs measure in)
+  bool orthographic = false;  // the camera's projection is parallel
   // Every color of the frame is a display value, stored as code / 255 (models.hpp's
   // display_value).
   bool display_referred = false;
@@ -49,6 +52,7 @@ struct DrawUniforms {
   glm::mat3 normal_matrix{1.0f};       // inverse transpose of model's upper 3x3
   const Material* material = nullptr;  // the draw's own copy
   const FrameUniforms* frame = nullptr;
+  std::uint32_t instance_id = 0;  // what the instance ids output shows (Renderer::set_instance_id)
 };
 
 // Whether every light (Light or LightData) is directional: what the batch forms of the models

@@ -77,6 +77,10 @@ void CullTriangles(const CullInput& in, CullSurvivors& out) {
     hn::StoreU(hn::Compress(any, keep), du, out.codes + kept);
     hn::StoreU(hn::Compress(hn::IfThenElseZero(front, hn::Set(du, 1u)), keep), du,
                out.front_facing + kept);
+    if (in.positions) {
+      hn::StoreU(hn::Compress(hn::Iota(du, static_cast<std::uint32_t>(first)), keep), du,
+                 out.position + kept);
+    }
     kept += static_cast<int>(hn::CountTrue(du, keep));
   }
   out.count = kept;

@@ -22,6 +22,7 @@ struct CullInput {
   int count;                     // triangles, at most kCullBatch
   const ProjectedVertex* projected;
   bool culls_front, culls_back;
+  bool positions = false;  // also list where each survivor was in the run (CullSurvivors)
 };
 
 // The triangles that survive, in order, structure of arrays. Room for a vector past the last.
@@ -31,6 +32,7 @@ struct CullSurvivors {
   alignas(64) std::uint32_t i0[kRoom], i1[kRoom], i2[kRoom];
   alignas(64) std::uint32_t codes[kRoom];         // the three vertices' codes, or-ed
   alignas(64) std::uint32_t front_facing[kRoom];  // 1 or 0
+  alignas(64) std::uint32_t position[kRoom];      // in the run, when CullInput::positions
 };
 
 using CullKernel = void (*)(const CullInput& in, CullSurvivors& out);

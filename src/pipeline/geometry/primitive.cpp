@@ -71,6 +71,7 @@ struct Assembler {
     std::uint32_t i0, i1, i2;
     unsigned codes;  // the three vertices' codes, or-ed
     bool front_facing;
+    std::uint32_t index;  // in the mesh, when the draw has a triangle hook
   };
 
   // The planes a triangle whose vertices' codes or-ed are `codes` must be clipped against. Near
@@ -154,6 +155,10 @@ struct Assembler {
         face(n, centre(i0, i1, i2), draw.uniforms, varyings);
       }
     }
+    if (pipe.triangle) {
+      float* varyings[3] = {v[0].varyings, v[1].varyings, v[2].varyings};
+      pipe.triangle(a.index, varyings);
+    }
     if (planes == 0) {
       counts.culled += set_up_fan(v, 3, front_facing);
       return;
@@ -225,7 +230,7 @@ void assemble_triangles(Assembler& assembler, const Mesh& mesh, std::size_t begi
   for (std::size_t first = begin; first < end; first += kCullBatch) {
     const int count = static_cast<int>(std::min<std::size_t>(end - first, kCullBatch));
     cull({list_triangles(mesh, first, count, listed), count, assembler.vertices.projected.data(),
-          assembler.culls_front, assembler.culls_back},
+          assembler.culls_front, assembler.culls_back, assembler.draw.pipeline.triangle != nullptr},
          survivors);
     assembler.counts.culled += static_cast<std::uint64_t>(count - survivors.count);
     // Runs of survivors that need no clipping go to the setup kernel whole; the others, in
@@ -235,8 +240,10 @@ void assemble_triangles(Assembler& assembler, const Mesh& mesh, std::size_t begi
       if (assembler.kernel_sets_up(survivors.codes[k])) continue;
       assembler.set_up_run(survivors, run, k);
       run = k + 1;
+      const bool indexed = assembler.draw.pipeline.triangle != nullptr;
+      const auto index = static_cast<std::uint32_t>(indexed ? first + survivors.position[k] : 0);
       assembler.assemble({survivors.i0[k], survivors.i1[k], survivors.i2[k], survivors.codes[k],
-                          survivors.front_facing[k] != 0});
+                          survivors.front_facing[k] != 0, index});
     }
     assembler.set_up_run(survivors, run, survivors.count);
   }

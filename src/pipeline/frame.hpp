@@ -94,6 +94,11 @@ struct DrawPipeline {
   void (*vertex_batch)(const shading::DrawUniforms&, const shading::VertexBatchInput&,
                        float (*)[shading::kVertexBatch]) = nullptr;
   bool (*batches_vertices)(const shading::DrawUniforms&) = nullptr;
+  // The model lights the back of a two-sided material (CullMode::none) as a front: setup
+  // reverses the normal's planes (normal_slot) of the draw's back-facing triangles, so the
+  // normal is the side seen, as the triangle's facing says, not as the interpolated normal
+  // does at a smooth silhouette.
+  bool lights_back_faces = false;
   bool fills_triangles = true;  // false for wireframe: edges only
   bool draws_edges = false;     // wireframe: edges become lines (line.cpp)
   bool depth_tested = true;     // false for debug counters that see through everything

@@ -13,6 +13,7 @@
 
 #include "pipeline/geometry/clip.hpp"
 #include "pipeline/geometry/primitive.hpp"
+#include "pipeline/setup/back_faces.hpp"
 #include "pipeline/setup/fixed_point.hpp"
 #include "pipeline/setup/setup.hpp"
 
@@ -63,9 +64,10 @@ Varyings interpolate(const ClipVertex* const v[3], const std::int64_t e[3]) {
 //   alpha = albedo's,
 // with radiance = color x intensity, L the unit vector against the light's direction, and N
 // the interpolated world normal renormalised and, for a two-sided material (cull none),
-// turned toward the eye. The texel is sampled at level of detail 0: exact for the nearest and
-// bilinear filters, which read the base level only (check() refuses trilinear).
-glm::vec4 shade(const ReferenceScene& scene, const Varyings& v) {
+// reversed on a triangle seen from the side its vertex normals turn away from (as
+// setup_batch.cpp's ReversesNormal decides). The texel is sampled at level of detail 0: exact for
+// the nearest and bilinear filters, which read the base level only (check() refuses trilinear).
+glm::vec4 shade(const ReferenceScene& scene, const Varyings& v, bool reverse_normal) {
   const Material& m = scene.material;
   glm::vec4 albedo = m.base_color;
   if (m.base_color_map) {
@@ -73,8 +75,7 @@ glm::vec4 shade(const ReferenceScene& scene, const Varyings& v) {
     albedo *= m.base_color_map.texture->sample(m.base_color_map.sampler, uv, 0.0f);
   }
   glm::vec3 n = unit({v[kNormal], v[kNormal + 1], v[kNormal + 2]});
-  const glm::vec3 position(v[kPosition], v[kPosition + 1], v[kPosition + 2]);
-  if (m.cull == CullMode::none && glm::dot(n, scene.camera.eye - position) < 0.0f) n = -n;
+  if (reverse_normal) n = -n;
   glm::vec3 light = scene.lighting.ambient;
   for (const Light& l : scene.lighting.lights) {
     light += l.color * l.intensity * std::max(glm::dot(n, -unit(l.direction)), 0.0f);
@@ -84,7 +85,7 @@ glm::vec4 shade(const ReferenceScene& scene, const Varyings& v) {
 
 // Rasterizes one screen triangle with its clip vertices' varyings; shades with scene unless it
 // is null (coverage and depth only).
-void rasterize(ScreenVertex s[3], const ClipVertex* v[3], bool front_facing,
+void rasterize(ScreenVertex s[3], const ClipVertex* v[3], bool front_facing, bool reverse_normal,
                const ReferenceScene* scene, ReferenceImage& image) {
   std::int64_t area = signed_area(s[0], s[1], s[2]);
   if (area == 0 || (area < 0) != front_facing) return;  // degenerate once snapped
@@ -118,7 +119,7 @@ void rasterize(ScreenVertex s[3], const ClipVertex* v[3], bool front_facing,
       float d = evaluate(depth, px[0], py[0], x + 0.5f, y + 0.5f);
       if (!(d < image.depth[i])) continue;  // depth test "less": the first of equals stays
       image.depth[i] = d;
-      if (scene) image.color[i] = shade(*scene, interpolate(v, e));
+      if (scene) image.color[i] = shade(*scene, interpolate(v, e), reverse_normal);
     }
   }
 }
@@ -152,7 +153,18 @@ void draw_triangle(ClipPolygon& polygon, CullMode cull, const ReferenceScene* sc
     const ClipVertex* corner[3] = {&v[0], &v[i], &v[i + 1]};
     ScreenVertex s[3];
     for (int k = 0; k < 3; ++k) s[k] = to_screen(corner[k]->clip, image.width, image.height);
-    rasterize(s, corner, front, scene, image);
+    bool reverse_normal = false;
+    if (scene && scene->material.cull == CullMode::none) {
+      // Decided on the values setup reads: each varying times 1 / w.
+      float over_w[3][kVaryings], inv_w[3];
+      for (int k = 0; k < 3; ++k) {
+        inv_w[k] = s[k].inv_w;
+        for (int j = 0; j < kVaryings; ++j) over_w[k][j] = corner[k]->varyings[j] * inv_w[k];
+      }
+      const float* const corners[3] = {over_w[0], over_w[1], over_w[2]};
+      reverse_normal = reverses_normal(corners, inv_w, kPosition, kNormal, front);
+    }
+    rasterize(s, corner, front, reverse_normal, scene, image);
   }
 }
 

@@ -29,7 +29,8 @@ inline glm::vec3 reflect_environment(glm::vec3 color, const SurfacePoint& s,
 
 // Phong (kBlinn = false) or Blinn-Phong (true), per pixel: ambient + diffuse + specular.
 template <bool kBlinn>
-struct PhongShadingT : BatchForm<kBlinn ? BatchModel::blinn_phong : BatchModel::phong> {
+struct PhongShadingT : BatchForm<kBlinn ? BatchModel::blinn_phong : BatchModel::phong>,
+                       LightsBackFaces {
   static constexpr int kVaryings = kSurfaceVaryingsWithTangent;
   static constexpr int kNormalSlot = shading::kNormalSlot;
   static constexpr int kBaseColorTexcoord = kTexcoordSlot;
@@ -138,7 +139,7 @@ struct ConstantColorGouraudShading : GouraudLight<kConstantGouraudDiffuseSlot, f
 // emission, and image-based specular from the environment when reflections are on.
 // Lights are scaled by pi so a white Lambertian surface under a unit light looks as bright as
 // in the Lambert model (the "punctual light" convention of glTF viewers).
-struct PbrShading {
+struct PbrShading : LightsBackFaces {
   static constexpr int kVaryings = kSurfaceVaryingsWithTangent;
   static constexpr int kNormalSlot = shading::kNormalSlot;
   static constexpr int kBaseColorTexcoord = kTexcoordSlot;

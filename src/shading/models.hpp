@@ -144,6 +144,7 @@ struct FlatShading {
 template <bool kPositioned>
 struct LambertShadingT
     : BatchForm<BatchModel::lambert>,
+      LightsBackFaces,
       SurfaceVertexBatch<kPositioned ? kSurfaceVaryings : kUnpositionedSurfaceVaryings> {
   static constexpr int kVaryings = kPositioned ? kSurfaceVaryings : kUnpositionedSurfaceVaryings;
   static constexpr int kNormalSlot = shading::kNormalSlot;

@@ -181,9 +181,8 @@ void ShadeBatch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, f
   // emission(): the emissive factor (batch_shades() leaves out emissive maps).
   const FloatV emissive[3] = {hn::Set(d, m.emissive.x), hn::Set(d, m.emissive.y),
                               hn::Set(d, m.emissive.z)};
-  const bool two_sided = m.cull == CullMode::none;
-  // Lambert lit from one side needs no view, nor its square root and division.
-  const bool needs_view = two_sided || model != BatchModel::lambert;
+  // Lambert needs no view, nor its square root and division.
+  const bool needs_view = model != BatchModel::lambert;
   const Vec3V eye{hn::Set(d, u.frame->eye.x), hn::Set(d, u.frame->eye.y),
                   hn::Set(d, u.frame->eye.z)};
   const Albedo base{{hn::Set(d, u.material->base_color.r), hn::Set(d, u.material->base_color.g),
@@ -207,19 +206,14 @@ void ShadeBatch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, f
       }
       color[3] = albedo.c[3];
     } else {
-      // surface_point(): view and normal, the normal facing the viewer if two-sided.
+      // surface_point(): view and normal (setup reversed the normal of a two-sided back face).
       Vec3V view{hn::Zero(d), hn::Zero(d), hn::Zero(d)};
       if (needs_view) {
         const Vec3V position = Load3(in.v, kPositionSlot, j);
         view = SafeNormalize(
             {hn::Sub(eye.x, position.x), hn::Sub(eye.y, position.y), hn::Sub(eye.z, position.z)});
       }
-      Vec3V n = SafeNormalize(Load3(in.v, kNormalSlot, j));
-      if (two_sided) {
-        const auto back = hn::Lt(Dot(n, view), hn::Zero(d));
-        n = {hn::IfThenElse(back, hn::Neg(n.x), n.x), hn::IfThenElse(back, hn::Neg(n.y), n.y),
-             hn::IfThenElse(back, hn::Neg(n.z), n.z)};
-      }
+      const Vec3V n = SafeNormalize(Load3(in.v, kNormalSlot, j));
       const Vec3V light = model == BatchModel::lambert
                               ? DiffuseLight(u, n)
                               : SpecularLight(u, model == BatchModel::blinn_phong, n, view, albedo);

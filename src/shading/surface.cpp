@@ -33,13 +33,11 @@ SurfacePoint surface_point(const Fragment& f, const DrawUniforms& u) {
   if constexpr (kPositioned) {
     s.position = load3(f.v + kPositionSlot);
     s.view = safe_normalize(u.frame->eye - s.position);
-    // Two-sided materials light their back faces as fronts. The material tests here and below
-    // (two-sided, normal map, base color map) are runtime branches on constants of the draw,
-    // taken the same way for each of its pixels (BENCHMARKS.md, "Per-draw constants").
-    if (m.cull == CullMode::none && glm::dot(n, s.view) < 0.0f) n = -n;
   } else {
     s.position = s.view = glm::vec3(0.0f);
   }
+  // The material tests here (normal map, base color map) are runtime branches on constants of
+  // the draw, taken the same way for each of its pixels (BENCHMARKS.md, "Per-draw constants").
   if constexpr (kWithTangent) {
     glm::vec4 tangent = load4(f.v + kTangentSlot);
     if (m.normal_map && glm::dot(glm::vec3(tangent), glm::vec3(tangent)) > 0.0f) {

@@ -130,9 +130,15 @@ inline glm::vec4 base_color_texel(const Fragment& f, const DrawUniforms& u,
   return f.base_texel_ready ? f.base_texel : sample_map(u.material->base_color_map, f, slot);
 }
 
+// The mark of models whose normal is the side of the surface seen: the back faces of two-sided
+// materials get their normal reversed (pipeline/frame.hpp's DrawPipeline::lights_back_faces).
+struct LightsBackFaces {
+  static constexpr bool kLightsBackFaces = true;
+};
+
 struct SurfacePoint {
   glm::vec3 position;
-  glm::vec3 normal;  // unit, normal map applied, facing the viewer for two-sided materials
+  glm::vec3 normal;  // unit, normal map applied; reversed on a two-sided back face (setup)
   glm::vec3 view;    // unit, toward the eye
   glm::vec4 albedo;  // color x base color map
 };

@@ -10,6 +10,7 @@
 #include "pipeline/kernels.hpp"
 #include "pipeline/setup/setup.hpp"
 #include "pipeline/setup/setup_batch.hpp"
+#include "shading/surface.hpp"
 
 namespace facet::pipeline {
 namespace {
@@ -41,6 +42,10 @@ struct Assembler {
   std::uint32_t fan_index[3][kMaxFan + kSetupBatchSlack] = {};
   std::uint32_t fan_front_facing[kMaxFan + kSetupBatchSlack] = {};
 
+  // Two-sided draws of models that light back faces reverse those faces' normals at setup.
+  int back_face_normal = draw.material.cull == CullMode::none && draw.pipeline.lights_back_faces
+                             ? draw.pipeline.normal_slot
+                             : -1;
   bool culls_front = draw.material.cull == CullMode::front;
   bool culls_back = draw.material.cull == CullMode::back;
 
@@ -106,7 +111,8 @@ struct Assembler {
       fan_front_facing[t] = front_facing ? 1u : 0u;
     }
     const SetupBatch batch{triangles, {fan_index[0], fan_index[1], fan_index[2]}, fan_front_facing};
-    return setup_kernel(batch, {out, width, height, draw_index, fan_vertices, fan_over_w, n});
+    return setup_kernel(batch, {out, width, height, draw_index, fan_vertices, fan_over_w, n,
+                                back_face_normal, shading::kPositionSlot});
   }
 
   // Edges, clipping and setup of a triangle culling accepted that the setup kernel does not
@@ -127,9 +133,9 @@ struct Assembler {
       const std::uint32_t index[3][1 + kSetupBatchSlack] = {{i0}, {i1}, {i2}};
       const std::uint32_t front[1 + kSetupBatchSlack] = {front_facing ? 1u : 0u};
       const SetupBatch batch{1, {index[0], index[1], index[2]}, front};
-      counts.culled +=
-          setup_kernel(batch, {out, width, height, draw_index, vertices.projected.data(),
-                               vertices.over_w.data(), pipe.varyings});
+      counts.culled += setup_kernel(
+          batch, {out, width, height, draw_index, vertices.projected.data(), vertices.over_w.data(),
+                  pipe.varyings, back_face_normal, shading::kPositionSlot});
       return;
     }
 
@@ -176,8 +182,9 @@ struct Assembler {
     const SetupBatch batch{end - first,
                            {survivors.i0 + first, survivors.i1 + first, survivors.i2 + first},
                            survivors.front_facing + first};
-    counts.culled += setup_kernel(batch, {out, width, height, draw_index, vertices.projected.data(),
-                                          vertices.over_w.data(), draw.pipeline.varyings});
+    counts.culled += setup_kernel(
+        batch, {out, width, height, draw_index, vertices.projected.data(), vertices.over_w.data(),
+                draw.pipeline.varyings, back_face_normal, shading::kPositionSlot});
   }
 
   void line(std::uint32_t i0, std::uint32_t i1) {

@@ -75,6 +75,13 @@ constexpr bool display_referred() {
 // Models with kEdgeOverlay draw the triangle's edges over their shading: pixels closer to an
 // edge than kOverlayHalfWidth pixels take the draw's wire color. Measured from the edge
 // functions, so the edges sit exactly on the surface: no depth fighting with the fill.
+// Models marked shading::LightsBackFaces (DrawPipeline::lights_back_faces).
+template <class Shading>
+constexpr bool lights_back_faces() {
+  if constexpr (requires { Shading::kLightsBackFaces; }) return Shading::kLightsBackFaces;
+  return false;
+}
+
 template <class Shading>
 constexpr bool edge_overlay() {
   if constexpr (requires { Shading::kEdgeOverlay; }) return Shading::kEdgeOverlay;

@@ -34,6 +34,7 @@ DrawPipeline make_pipeline() {
     p.face_without_normals = &Shading::face_without_normals;
   }
   if constexpr (requires { &Shading::triangle; }) p.triangle = &Shading::triangle;
+  p.lights_back_faces = lights_back_faces<Shading>();
   p.raster = &raster_triangle<Shading, kAlpha>;
   if constexpr (batch_shaded<Shading>()) p.batch_shades = &Shading::batch_shades;
   if constexpr (requires { &Shading::vertex_batch; }) {

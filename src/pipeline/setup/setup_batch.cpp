@@ -22,6 +22,7 @@
 
 #include "core/simd_target.hpp"
 #include "pipeline/geometry/projected_load-inl.h"
+#include "pipeline/setup/back_faces.hpp"
 #include "pipeline/setup/fixed_point.hpp"
 #include "pipeline/setup/setup.hpp"
 
@@ -280,16 +281,30 @@ int SetupBatchLanes(const SetupBatch& b, const SetupBatchTarget& target) {
       const int whole = target.varyings - target.varyings % lanes;
       int k = 0;
       for (; k < whole; k += lanes) one.solve_planes(v, k, planes + 3 * k);
-      if (k == target.varyings) continue;
       // The last few planes: a whole vector's worth where the room past them is scratch;
       // otherwise (the next planes may be another chunk's, which another thread writes)
       // through a buffer.
-      if (target.out.plane_room(slot) >= static_cast<std::uint32_t>(whole + lanes)) {
-        one.solve_planes(v, k, planes + 3 * k);
-      } else {
-        alignas(64) float rest[3 * kLanes];
-        one.solve_planes(v, k, rest);
-        for (int f = 0; f < 3 * (target.varyings - k); ++f) planes[3 * k + f] = rest[f];
+      if (k < target.varyings) {
+        if (target.out.plane_room(slot) >= static_cast<std::uint32_t>(whole + lanes)) {
+          one.solve_planes(v, k, planes + 3 * k);
+        } else {
+          alignas(64) float rest[3 * kLanes];
+          one.solve_planes(v, k, rest);
+          for (int f = 0; f < 3 * (target.varyings - k); ++f) planes[3 * k + f] = rest[f];
+        }
+      }
+      if (target.back_face_normal >= 0) {
+        const float* const over_w[3] = {target.over_w + std::size_t{vertex[0][l]} * n,
+                                        target.over_w + std::size_t{vertex[1][l]} * n,
+                                        target.over_w + std::size_t{vertex[2][l]} * n};
+        const float one_over_w[3] = {target.projected[vertex[0][l]].screen.inv_w,
+                                     target.projected[vertex[1][l]].screen.inv_w,
+                                     target.projected[vertex[2][l]].screen.inv_w};
+        if (reverses_normal(over_w, one_over_w, target.back_face_position, target.back_face_normal,
+                            b.front_facing[first + l] != 0)) {
+          float* normal = planes + 3 * target.back_face_normal;
+          for (int f = 0; f < 9; ++f) normal[f] = -normal[f];
+        }
       }
     }
   }

@@ -33,6 +33,11 @@ struct SetupBatchTarget {
   const ProjectedVertex* projected;  // the draw's, screen parts meaningful (no clipping)
   const float* over_w;               // `varyings` floats a vertex, kOverWSlack past the last
   int varyings;
+  // The first of three varyings (a normal) whose planes a triangle seen from the side its
+  // normals turn away from gets reversed, or -1 (DrawPipeline::lights_back_faces); and the
+  // first of three holding the vertex's world position, which tells that side.
+  int back_face_normal = -1;
+  int back_face_position = -1;
 };
 
 // Sets up the batch's triangles into target.out, in lane order; returns how many it dropped

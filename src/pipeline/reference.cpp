@@ -74,7 +74,7 @@ glm::vec4 shade(const ReferenceScene& scene, const Varyings& v) {
   }
   glm::vec3 n = unit({v[kNormal], v[kNormal + 1], v[kNormal + 2]});
   const glm::vec3 position(v[kPosition], v[kPosition + 1], v[kPosition + 2]);
-  if (m.cull == CullMode::none && glm::dot(n, scene.camera.eye - position) < 0.0f) n = -n;
+  if (m.cull == CullMode::none && glm::dot(n, scene.camera.shading_eye() - position) < 0.0f) n = -n;
   glm::vec3 light = scene.lighting.ambient;
   for (const Light& l : scene.lighting.lights) {
     light += l.color * l.intensity * std::max(glm::dot(n, -unit(l.direction)), 0.0f);

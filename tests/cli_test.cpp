@@ -44,9 +44,10 @@ long count_lines(const std::string& text) { return std::count(text.begin(), text
 
 // --- help ---------------------------------------------------------------------------------
 
-const char* const kRenderFlags[] = {
-    "--scene", "--output", "--size",    "--eye",  "--target",     "--up",      "--fov",
-    "--near",  "--far",    "--shading", "--cull", "--background", "--threads", "--tile-size"};
+const char* const kRenderFlags[] = {"--scene",   "--output",    "--size",        "--eye",
+                                    "--target",  "--up",        "--fov",         "--near",
+                                    "--far",     "--shading",   "--cull",        "--background",
+                                    "--threads", "--tile-size", "--orthographic"};
 
 void expect_documents_every_flag(const std::string& args) {
   CommandResult r = run_facet(::testing::TempDir(), args);
@@ -128,6 +129,8 @@ const BadCase kBadCases[] = {
     {"tile_size_48", "--tile-size 48 -o out.png"},
     {"near_zero", "--near 0 -o out.png"},
     {"far_behind_near", "--far 0.05 -o out.png"},
+    {"orthographic_fov", "--orthographic --fov 30 -o out.png"},
+    {"orthographic_near", "--orthographic --near 1 -o out.png"},
     {"eye_two_numbers", "--eye 1,2 -o out.png"},
     {"eye_nan", "--eye nan,0,0 -o out.png"},
     {"background_out_of_range", "--background 2,0,0 -o out.png"},
@@ -188,6 +191,47 @@ TEST(CliRender, PathErrorsSayWhatThePathIs) {
   CommandResult device = run_facet(dir, "render /dev/null -o out.png --size 8x8");
   EXPECT_EQ(device.stderr_text,
             "facet: error: /dev/null: not a regular file, so not a model file\n");
+}
+
+// --orthographic: two equal squares, one 3 units behind the other, come out the same size (in
+// perspective the far one is smaller), and the view is fitted to them.
+TEST(CliRender, OrthographicDrawsEqualThingsEquallyLarge) {
+  fs::path dir = fresh_test_dir("facet_cli_", "orthographic");
+  {
+    std::ofstream obj(dir / "squares.obj");
+    obj << "v -2 -0.5 0\nv -1 -0.5 0\nv -1 0.5 0\nv -2 0.5 0\n"
+           "v 1 -0.5 -3\nv 2 -0.5 -3\nv 2 0.5 -3\nv 1 0.5 -3\n"
+           "f 1 2 3 4\nf 5 6 7 8\n";
+  }
+  const std::string view =
+      " --eye 0,0,6 --target 0,0,-1.5 --size 120x60 --shading unlit --background 0,0,0";
+  // Pixels drawn (not background) in the left and right halves.
+  auto halves = [&](const std::string& name) {
+    Rgba8Image image = read_png((dir / name).string());
+    int left = 0, right = 0, top = image.height, bottom = -1;
+    for (int y = 0; y < image.height; ++y) {
+      for (int x = 0; x < image.width; ++x) {
+        if (image.pixels[4 * (y * image.width + x)] == 0) continue;
+        (x < image.width / 2 ? left : right) += 1;
+        top = std::min(top, y), bottom = std::max(bottom, y);
+      }
+    }
+    return std::vector<int>{left, right, top, bottom};
+  };
+  CommandResult ortho = run_facet(dir, "render squares.obj --orthographic -o o.png" + view);
+  ASSERT_EQ(ortho.exit_code, 0) << ortho.stderr_text;
+  const std::vector<int> o = halves("o.png");
+  // 2 units a side in a view 1.08 x 4 units wide, 120 pixels: 27.8 x 27.8 pixels each.
+  EXPECT_NEAR(o[0], 772, 60);
+  EXPECT_NEAR(o[0], o[1], o[0] / 20) << "left " << o[0] << ", right " << o[1];
+  // Fitted: the squares reach the sides but for a small margin, which the image's top and
+  // bottom (a 4 x 1 row of squares in a 2:1 image) do not.
+  EXPECT_GT(o[2], 5);
+  EXPECT_LT(o[3], 60 - 5);
+  CommandResult perspective = run_facet(dir, "render squares.obj -o p.png" + view);
+  ASSERT_EQ(perspective.exit_code, 0) << perspective.stderr_text;
+  const std::vector<int> p = halves("p.png");
+  EXPECT_LT(p[1], p[0] * 3 / 4) << "left " << p[0] << ", right " << p[1];
 }
 
 // A wireframe draws its edges as lines: the summary counts them rather than saying "0 drawn"

@@ -24,7 +24,10 @@ SceneNode node_with_levels() {
 }
 
 int drawn_mesh(const SceneNode& node, const glm::mat4& world, glm::vec3 eye, float fov = 60.0f) {
-  return node.instances_seen_from(world, eye, fov).at(0).mesh;
+  Camera camera;
+  camera.eye = eye;
+  camera.fov_y_degrees = fov;
+  return node.instances_seen_from(world, camera).at(0).mesh;
 }
 
 TEST(DetailLevels, FollowTheDistanceToTheNearestPointOfTheBounds) {

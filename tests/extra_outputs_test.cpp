@@ -80,6 +80,25 @@ TEST(ExtraOutputs, DepthsAreTheDistancesOfTheSurfaceDrawn) {
   }
 }
 
+TEST(ExtraOutputs, UnderAnOrthographicCameraRaysStartOnTheImagePlane) {
+  const Camera camera = Camera::orthographic({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 4.0f,
+                                             float(kWidth) / kHeight, 0.5f, 50.0f);
+  const Mesh wall = quad({-100, 0, -6}, {100, 0, -6}, {100, 100, -6}, {-100, 100, -6});
+  Renderer renderer;
+  Framebuffer image(kWidth, kHeight, ColorFormat::rgba8_srgb, DepthImage::keep, everything());
+  renderer.begin_frame(camera);
+  renderer.draw(wall, unlit());
+  renderer.finish(image);
+  int drawn = 0;
+  for (std::size_t i = 0; i < image.depth().size(); ++i) {
+    if (image.depth()[i] == 1.0f) continue;
+    ++drawn;
+    ASSERT_NEAR(image.view_depth()[i], 6.0f, 6e-5f);
+    ASSERT_EQ(image.ray_distance()[i], image.view_depth()[i]);
+  }
+  EXPECT_EQ(drawn, kWidth * kHeight / 2);
+}
+
 TEST(ExtraOutputs, NormalsAreTheSurfacesInWorldOrCameraSpace) {
   const Camera camera =
       Camera::look_at({0.5f, 1.0f, 2.5f}, {0, 0, 0}, {0, 1, 0}, 60.0f, float(kWidth) / kHeight);

@@ -2,7 +2,8 @@
 // (shade_batch.cpp) and of
 // glmark2's shaders (scene/glmark2_batch.cpp) give their fragment()'s bits (then apply_fog's)
 // on every SIMD target: one- and two-sided, with and without a base color texel, emission and
-// fog, under zero to three directional lights; and they decline what they do not cover.
+// fog (at a perspective or an orthographic camera's view depth), under zero to three directional
+// lights; and they decline what they do not cover.
 #include "shading/shade_batch.hpp"
 
 #include <gtest/gtest.h>
@@ -28,6 +29,7 @@ using shading::kShadeBatch;
 
 struct Inputs {
   alignas(64) float w[kShadeBatch] = {};
+  alignas(64) float z[kShadeBatch] = {};
   alignas(64) float v[shading::kMaxVaryings][kShadeBatch] = {};
   alignas(64) float texel[kShadeBatch][4] = {};
 };
@@ -36,6 +38,7 @@ void fill(std::mt19937& rng, Inputs& in) {
   std::uniform_real_distribution<float> any(-2.0f, 2.0f), unit(0.0f, 1.0f), depth(0.2f, 50.0f);
   for (int n = 0; n < kShadeBatch; ++n) {
     in.w[n] = depth(rng);
+    in.z[n] = unit(rng);
     for (int k = 0; k < shading::kMaxVaryings; ++k) in.v[k][n] = any(rng);
     for (int c = 0; c < 4; ++c) in.texel[n][c] = unit(rng);
   }
@@ -91,6 +94,8 @@ void randomize(std::mt19937& rng, Draw& d) {
   d.lighting.fog.color = {unit(rng), unit(rng), unit(rng)};
   // Display values decoded to linear, or kept as code / 255 (models.hpp's display_value).
   d.frame.display_referred = rng() % 2 == 0;
+  // An orthographic camera's fog depth, from z (uniforms.hpp's ViewDepth), every third draw.
+  if (rng() % 3 == 0) d.frame.view_depth = {0.0f, unit(rng) * 60.0f, unit(rng)};
 }
 
 template <class Shading>
@@ -98,13 +103,14 @@ glm::vec4 scalar_fragment(const Inputs& in, const float (*texel)[4], int n,
                           const shading::DrawUniforms& u) {
   shading::Fragment f;
   f.w = in.w[n];
+  f.z = in.z[n];
   for (int k = 0; k < shading::kMaxVaryings; ++k) f.v[k] = in.v[k][n];
   if (texel != nullptr) {
     f.base_texel = {texel[n][0], texel[n][1], texel[n][2], texel[n][3]};
     f.base_texel_ready = true;
   }
   glm::vec4 color = Shading::fragment(f, u);
-  shading::apply_fog(color, f.w, u.frame->lighting->fog);
+  shading::apply_fog(color, u.frame->view_depth(f.w, f.z), u.frame->lighting->fog);
   return color;
 }
 
@@ -135,7 +141,7 @@ void expect_same_bits(bool (*takes)(const Draw&) = nullptr) {
       const int count = rows ? kShadeBatch : 1 + static_cast<int>(rng() % kShadeBatch);
       const int stride = rows ? 13 : 8;
       alignas(64) float rgba[8 * 13][4];
-      shading::ShadeInput input{count, in.w, in.v, texel, &draw.lighting.fog};
+      shading::ShadeInput input{count, in.w, in.z, in.v, texel, &draw.lighting.fog};
       input.rgba_row_stride = stride;
       Shading::fragment_batch(draw.uniforms, input, rgba);
       for (int n = 0; n < count; ++n) {

@@ -33,6 +33,9 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
       ->capture_default_str();
   cmd->add_option("--tile-size", o.tile_size, "Tile edge in pixels: 16, 32, 64 or 128")
       ->capture_default_str();
+  cmd->add_flag("--orthographic", o.orthographic,
+                "Parallel projection, fitted to the whole scene, seen along the camera's line of "
+                "sight (the automatic three-quarter view, --eye/--target or --camera)");
   return cmd;
 }
 
@@ -46,11 +49,19 @@ int run_render(const RenderOptions& o) {
     throw Error("--exposure: must be within -20 .. 20 stops");
   }
   glm::vec3 background = parse_color("--background", o.background.value_or(kDefaultBackground));
+  if (o.orthographic && (o.scene.fov || o.scene.near_plane || o.scene.far_plane)) {
+    throw Error(std::string(o.scene.fov          ? "--fov"
+                            : o.scene.near_plane ? "--near"
+                                                 : "--far") +
+                ": not with --orthographic, whose view and clip planes are fitted to the scene");
+  }
   check_writable(o.output);
   auto start = Clock::now();
   Scene scene = build_scene(o.scene);
   if (!o.scene.fog_color) scene.lighting.fog.color = background;
-  Camera camera = build_camera(o.scene, scene, static_cast<float>(size.width) / size.height);
+  const float aspect = static_cast<float>(size.width) / size.height;
+  Camera camera = build_camera(o.scene, scene, aspect);
+  if (o.orthographic) camera = fit_orthographic(scene, camera, aspect);
   double load_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 
   RenderSettings settings;

@@ -16,6 +16,7 @@ struct RenderOptions {
   float exposure = 0.0f;
   int threads = 0;
   int tile_size = 64;
+  bool orthographic = false;
 };
 
 // Adds the `render` subcommand and its flags to app; options are filled on parse.

@@ -264,6 +264,8 @@ Camera build_camera(const SceneOptions& o, const Scene& scene, float aspect) {
   if ((o.eye || o.target) && !o.camera_index) fit_clip_planes(scene, camera);
   if (o.near_plane) camera.near_plane = *o.near_plane;
   if (o.far_plane) camera.far_plane = *o.far_plane;
+  // The image's aspect, whatever the camera had: cameras here come from files and the framing,
+  // never from intrinsics, whose aspect belongs to their calibration (camera.hpp).
   camera.aspect = aspect;
   try {
     camera.validate();

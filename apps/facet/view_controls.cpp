@@ -154,6 +154,8 @@ void ViewControls::update(double dt) {
 
 Camera ViewControls::camera(float fov_y_degrees, float aspect) const {
   if (!moved_) {
+    // The window's aspect replaces the start camera's: it comes from a file or the framing,
+    // never from intrinsics (whose aspect belongs to their calibration: camera.hpp).
     Camera c = start_;
     c.fov_y_degrees = fov_y_degrees;
     c.aspect = aspect;

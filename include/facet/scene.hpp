@@ -47,14 +47,14 @@ struct SceneNode {
   // is the camera's eye to the nearest point of `detail_bounds` (node space, around every
   // level: Scene::bound_detail_levels() sets it; empty, `instances` are drawn from everywhere),
   // measured as if the field of view were 60 degrees: a narrower one, which magnifies, counts
-  // the node as nearer.
+  // the node as nearer. An orthographic view, the same size at every distance, counts as the
+  // distance at which a 60 degree view is as tall.
   std::vector<DetailLevel> coarser;
   Bounds detail_bounds;
 
-  // The instances to draw for a camera at `eye` with a vertical field of view of
-  // `fov_y_degrees`, the node's world transform being `world`.
-  const std::vector<MeshInstance>& instances_seen_from(const glm::mat4& world, glm::vec3 eye,
-                                                       float fov_y_degrees) const;
+  // The instances to draw for `camera`, the node's world transform being `world`.
+  const std::vector<MeshInstance>& instances_seen_from(const glm::mat4& world,
+                                                       const Camera& camera) const;
 };
 
 struct Scene {
@@ -91,5 +91,14 @@ void draw_scene(Renderer& renderer, const Scene& scene);
 // A camera that frames the whole scene from a pleasant three-quarter view: from the front
 // right, above, at a distance where the bounding sphere fills the view.
 Camera frame_scene(const Scene& scene, float aspect, float fov_y_degrees = 45.0f);
+
+// An orthographic camera that sees the whole scene along the line of sight of `view` (from its
+// eye through its target; its up kept): view_height takes in every vertex with frame_scene's
+// margin, and the eye and target move along that line so that the scene lies between the near
+// and far planes (in a parallel projection that changes nothing else).
+Camera fit_orthographic(const Scene& scene, const Camera& view, float aspect);
+
+// frame_scene's three-quarter view with a parallel projection (fit_orthographic).
+Camera frame_scene_orthographic(const Scene& scene, float aspect);
 
 }  // namespace facet

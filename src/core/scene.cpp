@@ -82,20 +82,26 @@ std::size_t Scene::triangle_count() const {
 }
 
 const std::vector<MeshInstance>& SceneNode::instances_seen_from(const glm::mat4& world,
-                                                                glm::vec3 eye,
-                                                                float fov_y_degrees) const {
+                                                                const Camera& camera) const {
   if (coarser.empty() || detail_bounds.empty()) return instances;
-  // The world-space box around the node-space one; the eye's nearest point in it.
-  Bounds box;
-  for (int corner = 0; corner < 8; ++corner) {
-    const glm::vec3 p((corner & 1) ? detail_bounds.max.x : detail_bounds.min.x,
-                      (corner & 2) ? detail_bounds.max.y : detail_bounds.min.y,
-                      (corner & 4) ? detail_bounds.max.z : detail_bounds.min.z);
-    box.add(glm::vec3(world * glm::vec4(p, 1.0f)));
-  }
   constexpr float kTanHalf60 = 0.57735026919f;  // tan(30 degrees) = 1 / sqrt(3)
-  const float distance = glm::length(eye - glm::clamp(eye, box.min, box.max)) *
-                         std::tan(glm::radians(fov_y_degrees) * 0.5f) / kTanHalf60;
+  float distance;
+  if (camera.projection_kind == Projection::orthographic) {
+    // Where a 60 degree view is view_height tall: things look as large there as in this view.
+    distance = camera.view_height * 0.5f / kTanHalf60;
+  } else {
+    // The world-space box around the node-space one; the eye's nearest point in it.
+    Bounds box;
+    for (int corner = 0; corner < 8; ++corner) {
+      const glm::vec3 p((corner & 1) ? detail_bounds.max.x : detail_bounds.min.x,
+                        (corner & 2) ? detail_bounds.max.y : detail_bounds.min.y,
+                        (corner & 4) ? detail_bounds.max.z : detail_bounds.min.z);
+      box.add(glm::vec3(world * glm::vec4(p, 1.0f)));
+    }
+    const glm::vec3 eye = camera.eye;
+    distance = glm::length(eye - glm::clamp(eye, box.min, box.max)) *
+               std::tan(glm::radians(camera.fov_y_degrees) * 0.5f) / kTanHalf60;
+  }
   const std::vector<MeshInstance>* chosen = &instances;
   for (const DetailLevel& level : coarser) {
     if (distance >= level.distance) chosen = &level.instances;
@@ -110,8 +116,7 @@ void draw_scene(Renderer& renderer, const Scene& scene) {
     if (node.instances.empty() && node.coarser.empty()) continue;
     glm::mat4 m = scene.world_transform(static_cast<int>(n));
     renderer.set_instance_id(static_cast<std::uint32_t>(n + 1));
-    for (const MeshInstance& instance :
-         node.instances_seen_from(m, camera.eye, camera.fov_y_degrees)) {
+    for (const MeshInstance& instance : node.instances_seen_from(m, camera)) {
       renderer.draw(scene.meshes[instance.mesh], scene.materials[instance.material], m);
     }
   }
@@ -148,6 +153,46 @@ Camera frame_scene(const Scene& scene, float aspect, float fov_y_degrees) {
   camera.near_plane = std::max(distance - radius * 1.5f, distance * 0.001f);
   camera.far_plane = distance + radius * 2.0f;
   return camera;
+}
+
+Camera fit_orthographic(const Scene& scene, const Camera& view, float aspect) {
+  const glm::vec3 forward = view.forward();
+  const glm::vec3 right = glm::normalize(glm::cross(forward, view.up));
+  const glm::vec3 up = glm::cross(right, forward);
+  // Every vertex's offsets from the view axis (through the target) set the view's half height,
+  // and its depths along the axis where the eye and the clip planes go.
+  float half_height = 0.0f, nearest = 1e30f, farthest = -1e30f;
+  auto fit = [&](glm::vec3 p) {
+    const glm::vec3 d = p - view.target;
+    half_height =
+        std::max({half_height, std::abs(glm::dot(d, up)), std::abs(glm::dot(d, right)) / aspect});
+    nearest = std::min(nearest, glm::dot(d, forward));
+    farthest = std::max(farthest, glm::dot(d, forward));
+  };
+  for_each_world_vertex(scene, fit);
+  if (nearest > farthest) {  // no vertices: the box frame_scene frames
+    for (int corner = 0; corner < 8; ++corner) {
+      fit(glm::vec3(corner & 1 ? 1.0f : -1.0f, corner & 2 ? 1.0f : -1.0f,
+                    corner & 4 ? 1.0f : -1.0f));
+    }
+  }
+  const float depth = farthest - nearest;
+  const float gap = std::max(0.1f * std::max(depth, half_height), 1e-6f);
+  Camera camera = view;
+  camera.projection_kind = Projection::orthographic;
+  // frame_scene's margin around the model; a point or a line along the axis still gets a view.
+  camera.view_height = 2.0f * std::max(half_height * 1.08f, gap * 1e-3f);
+  camera.aspect = aspect;
+  camera.lens_shift = {};
+  camera.eye = view.target + forward * (nearest - gap);
+  camera.target = view.target + forward * (nearest + farthest) * 0.5f;
+  camera.near_plane = gap * 0.5f;
+  camera.far_plane = depth + gap * 1.5f;
+  return camera;
+}
+
+Camera frame_scene_orthographic(const Scene& scene, float aspect) {
+  return fit_orthographic(scene, frame_scene(scene, aspect), aspect);
 }
 
 }  // namespace facet

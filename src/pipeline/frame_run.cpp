@@ -87,7 +87,7 @@ void Renderer::Impl::run(Framebuffer& target) {
   kernels = pipeline::kernels_for(chosen_simd_target());
   frame.kernels = &kernels;
   shading::FrameUniforms& uniforms = frame.uniforms;
-  uniforms.eye = camera.eye;
+  uniforms.eye = camera.shading_eye();
   uniforms.ambient = lighting.ambient;
   uniforms.lights = frame.lights.data();
   uniforms.light_count = static_cast<int>(frame.lights.size());
@@ -95,6 +95,11 @@ void Renderer::Impl::run(Framebuffer& target) {
   uniforms.near_plane = camera.near_plane;
   uniforms.far_plane = camera.far_plane;
   uniforms.view = camera.view();
+  uniforms.orthographic = camera.projection_kind == Projection::orthographic;
+  uniforms.view_depth = {};  // perspective: clip w
+  if (camera.projection_kind == Projection::orthographic) {
+    uniforms.view_depth = {0.0f, camera.far_plane - camera.near_plane, camera.near_plane};
+  }
   uniforms.display_referred = false;  // decided after geometry (display_referred_frame)
   uniforms.kernels = &kernels.shading;
   const pipeline::ClipBounds guard = pipeline::guard_band_bounds(frame.width, frame.height);
@@ -113,7 +118,7 @@ void Renderer::Impl::run(Framebuffer& target) {
   background.environment =
       lighting.environment.show_as_background ? &lighting.environment : nullptr;
   background.inverse_view_projection = glm::inverse(frame.view_projection);
-  background.eye = camera.eye;
+  background.eye = camera.shading_eye();
   background.width = frame.width;
   background.height = frame.height;
   pipeline::prepare_debug_frame(settings.debug_view, lighting, background);

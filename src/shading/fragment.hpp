@@ -11,7 +11,8 @@ namespace facet::shading {
 
 struct Fragment {
   float v[kMaxVaryings];          // perspective-correct varyings
-  float w = 1.0f;                 // clip w = view depth
+  float w = 1.0f;                 // clip w (the view depth, in perspective)
+  float z = 0.0f;                 // window depth, in [0, 1]
   const Plane* planes = nullptr;  // v / w planes
   const Plane* inv_w = nullptr;   // 1 / w plane
   // The base color map's texel here, when the raster loop sampled it ahead (base_color_texel).

@@ -172,7 +172,8 @@ struct DepthShading : DisplayReferred {
   static constexpr int kNormalSlot = -1;
   static void vertex(const VertexInput&, const DrawUniforms&, float*) {}
   static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
-    float t = (f.w - u.frame->near_plane) / (u.frame->far_plane - u.frame->near_plane);
+    const float depth = u.frame->view_depth(f.w, f.z);
+    float t = (depth - u.frame->near_plane) / (u.frame->far_plane - u.frame->near_plane);
     return display_value(glm::vec3(std::clamp(1.0f - t, 0.0f, 1.0f)), u);
   }
 };

@@ -64,9 +64,14 @@ HWY_INLINE Vec3V DiffuseLight(const DrawUniforms& u, const Vec3V& normal) {
   return light;
 }
 
-// apply_fog() of fog.hpp: the fraction kept (fog_keep), clamped, then mixed with the fog color.
-HWY_INLINE void Fogged(const Fog& fog, FloatV w, FloatV color[3]) {
+// apply_fog() of fog.hpp at the ViewDepth (uniforms.hpp) of pixels j.. of `in`: the fraction
+// kept (fog_keep), clamped, then mixed with the fog color.
+HWY_INLINE void Fogged(const Fog& fog, const ViewDepth& depth, const ShadeInput& in, int j,
+                       FloatV color[3]) {
   const FloatTag d;
+  const FloatV w = hn::Add(hn::Add(hn::Mul(hn::Set(d, depth.from_w), hn::Load(d, in.w + j)),
+                                   hn::Mul(hn::Set(d, depth.from_z), hn::Load(d, in.z + j))),
+                           hn::Set(d, depth.offset));
   FloatV keep;
   if (fog.mode == FogMode::linear) {
     keep =
@@ -140,7 +145,7 @@ void ShadeNormals(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4])
     std::memcpy(padded, ColorAt(rgba, in.rgba_row_stride, j), sizeof(float) * 4 * active);
     FloatV color[4];
     hn::LoadInterleaved4(d, &padded[0][0], color[0], color[1], color[2], color[3]);
-    Fogged(*in.fog, hn::Load(d, in.w + j), color);
+    Fogged(*in.fog, u.frame->view_depth, in, j, color);
     StoreColors(color, ColorAt(rgba, in.rgba_row_stride, j));
   }
 }
@@ -227,7 +232,7 @@ void ShadeBatch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, f
       for (int c = 0; c < 3; ++c) color[c] = hn::Add(color[c], emissive[c]);
       color[3] = albedo.c[3];
     }
-    if (fogged) Fogged(*in.fog, hn::Load(d, in.w + j), color);
+    if (fogged) Fogged(*in.fog, u.frame->view_depth, in, j, color);
     StoreColors(color, ColorAt(rgba, in.rgba_row_stride, j));
   }
 }

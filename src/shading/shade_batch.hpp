@@ -35,12 +35,14 @@ inline constexpr int kGouraudDiffuseSlot = 6;
 inline constexpr int kConstantGouraudDiffuseSlot = 0;
 
 // Packed pixels of one draw (of one triangle, or of several small ones: pipeline/
-// small_triangles.hpp): n-th pixel's clip w is w[n], its varying k is v[k][n]. Arrays
+// small_triangles.hpp): n-th pixel's clip w is w[n], its window depth z[n], its varying k is
+// v[k][n]. Arrays
 // hold kShadeBatch entries; those from count up to the next multiple of 8 must be readable
 // (they are computed, then ignored).
 struct ShadeInput {
   int count = 0;
   const float* w = nullptr;
+  const float* z = nullptr;
   const float (*v)[kShadeBatch] = nullptr;
   const float (*base_texel)[4] = nullptr;  // the base color map's texel per pixel, or null
   const Fog* fog = nullptr;  // fog to apply to the colors (fog.hpp's apply_fog), or null

@@ -28,9 +28,19 @@ struct LightData {
 
 struct ShadingKernels;  // kernels.hpp
 
+// A fragment's distance along the view axis, for fog and the depth view, from its clip w and
+// window depth z: w itself under a perspective projection (from_w 1, the rest 0: exactly w's
+// bits), near + z (far - near) under an orthographic one, whose w is always 1.
+struct ViewDepth {
+  float from_w = 1.0f;
+  float from_z = 0.0f;
+  float offset = 0.0f;
+  float operator()(float w, float z) const { return from_w * w + from_z * z + offset; }
+};
+
 // What every draw of a frame shares, set once when the frame runs.
 struct FrameUniforms {
-  glm::vec3 eye{0.0f};  // camera position, world space
+  glm::vec3 eye{0.0f};  // where view directions point to, world space (Camera::shading_eye)
   glm::vec3 ambient{0.1f};
   const LightData* lights = nullptr;
   int light_count = 0;
@@ -39,6 +49,7 @@ struct FrameUniforms {
   float far_plane = 100.0f;
   glm::mat4 view{1.0f};       // the camera's view matrix (what the extra outputs measure in)
   bool orthographic = false;  // the camera's projection is parallel
+  ViewDepth view_depth;
   // Every color of the frame is a display value, stored as code / 255 (models.hpp's
   // display_value).
   bool display_referred = false;

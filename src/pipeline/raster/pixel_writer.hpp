@@ -216,8 +216,8 @@ class PixelWriter {
     if constexpr (batch_shaded<Shading>()) {
       if (batch_ && pixels.count >= kMinBatch) {
         alignas(64) float colors[PackedPixels::kCapacity][4];
-        Shading::fragment_batch(uniforms_, {pixels.count, pixels.w, pixels.v, texels, batch_fog()},
-                                colors);
+        Shading::fragment_batch(
+            uniforms_, {pixels.count, pixels.w, pixels.z, pixels.v, texels, batch_fog()}, colors);
         for (int n = 0; n < pixels.count; ++n) {
           const float* c = colors[n];
           written += store<kBatchFogs>(pixels.x[n], pixels.y[n], pixels.z[n], pixels.w[n],
@@ -258,7 +258,8 @@ class PixelWriter {
       pixels.pad(Shading::kVaryings);
       const Texels texels = sample_base_map(pixels.count, pixels.v, pixels.w, slopes);
       alignas(64) float colors[PackedPixels::kCapacity][4];
-      Shading::fragment_batch(uniforms_, {pixels.count, pixels.w, pixels.v, texels, &fog_}, colors);
+      Shading::fragment_batch(uniforms_,
+                              {pixels.count, pixels.w, pixels.z, pixels.v, texels, &fog_}, colors);
       for (int n = 0; n < pixels.count; ++n) {
         const int x = pixels.x[n], y = pixels.y[n];
         if (!(pixels.z[n] < tile_.depth[index(x, y)])) continue;  // a pixel before it is nearer
@@ -277,7 +278,7 @@ class PixelWriter {
       static_assert(kBlockSize == 8, "ShadeInput::rgba_row_stride counts rows of 8 pixels");
       const Texels texels = sample_base_map(kBlockPixels, block.v, block.w);
       const std::ptrdiff_t first = index(block_x, block_y);
-      shading::ShadeInput in{kBlockPixels, block.w, block.v, texels, &fog_};
+      shading::ShadeInput in{kBlockPixels, block.w, block.z, block.v, texels, &fog_};
       in.rgba_row_stride = tile_.stride;
       Shading::fragment_batch(uniforms_, in, reinterpret_cast<float(*)[4]>(&tile_.color[first]));
       for (int row = 0; row < kBlockSize; ++row) {
@@ -295,6 +296,7 @@ class PixelWriter {
   // Shades `fragment` (w and varyings filled in by the caller) for pixel (x, y) of the frame
   // at depth z and writes it. False if the alpha test discarded it.
   bool write(int x, int y, float z) {
+    fragment.z = z;
     return store(x, y, z, fragment.w, Shading::fragment(fragment, uniforms_));
   }
 
@@ -311,7 +313,7 @@ class PixelWriter {
         color = uniforms_.material->wire_color;
       }
     }
-    if constexpr (!kFogged) shading::apply_fog(color, w, fog_);
+    if constexpr (!kFogged) shading::apply_fog(color, uniforms_.frame->view_depth(w, z), fog_);
     const std::ptrdiff_t pixel = index(x, y);
     blend_into<Shading, kAlpha>(tile_.color[pixel], color);
     if constexpr (kDepthWrite) tile_.depth[pixel] = z;

@@ -97,16 +97,24 @@ glm::vec4 wall_color(const Camera& camera, float distance, const Material& mater
 }
 
 TEST(Orthographic, DepthViewShowsTheDistance) {
-  // Near (0.5) white to far (50.5) black, linear in distance: 1 - (10 - 0.5) / 50 at 10, as an
-  // 8-bit code (the depth view writes display values).
+  // The depth view spans the frame's own depths, white to black, linear in distance: with
+  // small cards at 5 and 45 beside the wall, 1 - (distance - 5) / 40 at the wall, as an 8-bit
+  // code (the depth view writes display values).
   Material depth;
   depth.shading = ShadingModel::depth;
+  const Mesh near_card = soup_quad(-0.1f, -0.1f, 0.0f, 0.0f, -5.0f);
+  const Mesh far_card = soup_quad(-0.1f, -0.1f, 0.0f, 0.0f, -45.0f);
   for (Camera camera :
        {ortho_camera(0.5f, 50.5f), test_camera(kWidth, kHeight, 60.0f, 0.5f, 50.5f)}) {
     for (float distance : {10.0f, 30.0f}) {
-      const float expected = 255.0f * (1.0f - (distance - 0.5f) / 50.0f);
-      const Framebuffer image = wall_image(camera, distance, depth, {}, ColorFormat::rgba8_srgb);
-      const int code = image.rgba8()[4 * (kHeight / 2 * kWidth + kWidth / 2)];
+      const Mesh wall = soup_quad(-10, -10, 10, 10, -distance);
+      Renderer renderer;
+      Framebuffer image(kWidth, kHeight);
+      renderer.begin_frame(camera);
+      for (const Mesh* mesh : {&wall, &near_card, &far_card}) renderer.draw(*mesh, depth);
+      renderer.finish(image);
+      const float expected = 255.0f * (1.0f - (distance - 5.0f) / 40.0f);
+      const int code = image.rgba8()[4 * (kHeight / 2 * kWidth + kWidth * 5 / 8)];
       EXPECT_NEAR(code, expected, 1.0f)
           << (camera.projection_kind == Projection::orthographic ? "orthographic " : "perspective ")
           << distance;

@@ -53,6 +53,34 @@ void Renderer::Impl::order_draws() {
                    });
 }
 
+// The depth view spans the view depths of what the frame draws, not near to far: most frames
+// fill a small part of that, and would be one flat grey. The draws' bounds give the range
+// without a pass over the pixels.
+void Renderer::Impl::set_depth_view_range() {
+  shading::FrameUniforms& uniforms = frame.uniforms;
+  uniforms.depth_view_near = camera.near_plane;
+  uniforms.depth_view_far = camera.far_plane;
+  const bool depth_view = std::any_of(frame.draws.begin(), frame.draws.end(), [](const auto& d) {
+    return d.material.shading == ShadingModel::depth;
+  });
+  if (!depth_view) return;
+  float nearest = camera.far_plane, farthest = camera.near_plane;
+  const glm::mat4 view = camera.view();
+  for (const pipeline::DrawRecord& draw : frame.draws) {
+    if (!draw.bounds) continue;
+    const glm::mat4 model_view = view * draw.uniforms.model;
+    for (int corner = 0; corner < 8; ++corner) {
+      const glm::vec3 p((corner & 1) ? draw.bounds->high.x : draw.bounds->low.x,
+                        (corner & 2) ? draw.bounds->high.y : draw.bounds->low.y,
+                        (corner & 4) ? draw.bounds->high.z : draw.bounds->low.z);
+      const float depth = -(model_view * glm::vec4(p, 1.0f)).z;
+      nearest = std::min(nearest, depth), farthest = std::max(farthest, depth);
+    }
+  }
+  uniforms.depth_view_near = std::clamp(nearest, camera.near_plane, camera.far_plane);
+  uniforms.depth_view_far = std::clamp(farthest, camera.near_plane, camera.far_plane);
+}
+
 void Renderer::Impl::prepare_tiles(const Framebuffer& target) {
   frame.width = target.width();
   frame.height = target.height();
@@ -101,6 +129,7 @@ void Renderer::Impl::run(Framebuffer& target) {
     uniforms.view_depth = {0.0f, camera.far_plane - camera.near_plane, camera.near_plane};
   }
   uniforms.display_referred = false;  // decided after geometry (display_referred_frame)
+  set_depth_view_range();
   uniforms.kernels = &kernels.shading;
   const pipeline::ClipBounds guard = pipeline::guard_band_bounds(frame.width, frame.height);
   for (pipeline::DrawRecord& draw : frame.draws) {

@@ -107,6 +107,7 @@ struct Renderer::Impl {
   // The passes of target's extra outputs, after run() drew its color (output_passes.cpp).
   void run_extra_outputs(Framebuffer& target);
   void order_draws();
+  void set_depth_view_range();
   bool display_referred_frame(const Framebuffer& target) const;
 };
 

@@ -166,14 +166,16 @@ struct WireOverlayShading : LambertShading {
   static constexpr bool kEdgeOverlay = true;
 };
 
-// Debug view: linear view depth, near -> white, far -> black.
+// Debug view: linear view depth over the frame's own range (FrameUniforms::depth_view_near and
+// depth_view_far), near -> white, far -> black.
 struct DepthShading : DisplayReferred {
   static constexpr int kVaryings = 0;
   static constexpr int kNormalSlot = -1;
   static void vertex(const VertexInput&, const DrawUniforms&, float*) {}
   static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
     const float depth = u.frame->view_depth(f.w, f.z);
-    float t = (depth - u.frame->near_plane) / (u.frame->far_plane - u.frame->near_plane);
+    const float near = u.frame->depth_view_near, far = u.frame->depth_view_far;
+    float t = (depth - near) / std::max(far - near, 1e-30f);
     return display_value(glm::vec3(std::clamp(1.0f - t, 0.0f, 1.0f)), u);
   }
 };

@@ -53,6 +53,10 @@ struct FrameUniforms {
   // Every color of the frame is a display value, stored as code / 255 (models.hpp's
   // display_value).
   bool display_referred = false;
+  // The view depths the depth view spans, white to black: the frame's draws' (their bounds'
+  // nearest and farthest, within the near and far planes).
+  float depth_view_near = 0.1f;
+  float depth_view_far = 100.0f;
   const ShadingKernels* kernels = nullptr;  // the batch kernels of the frame's SIMD target
 };
 

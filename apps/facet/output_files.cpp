@@ -74,47 +74,48 @@ const char* extension_for(Container container, Output output) {
   return "";
 }
 
-// An output's values in the framebuffer: `channels` 4-byte (or, for color in 8 bits, 1-byte)
-// values per pixel.
+enum class ValueType { u8, f32, u32 };
+
+// An output's values in the framebuffer: `channels` values of `type` per pixel.
 struct Values {
   const void* data;
   int channels;
-  char type;  // 'u': uint8, 'f': float32, 'i': uint32
+  ValueType type;
 };
 
 Values values_of(const Framebuffer& fb, Output output) {
   switch (output) {
     case Output::color:
-      if (fb.format() == ColorFormat::rgba32f) return {fb.rgba32f().data(), 4, 'f'};
-      return {fb.rgba8().data(), 4, 'u'};
+      if (fb.format() == ColorFormat::rgba32f) return {fb.rgba32f().data(), 4, ValueType::f32};
+      return {fb.rgba8().data(), 4, ValueType::u8};
     case Output::depth:
-      return {fb.view_depth().data(), 1, 'f'};
+      return {fb.view_depth().data(), 1, ValueType::f32};
     case Output::distance:
-      return {fb.ray_distance().data(), 1, 'f'};
+      return {fb.ray_distance().data(), 1, ValueType::f32};
     case Output::normal:
-      return {fb.normals().data(), 3, 'f'};
+      return {fb.normals().data(), 3, ValueType::f32};
     case Output::instance:
-      return {fb.instance_ids().data(), 1, 'i'};
+      return {fb.instance_ids().data(), 1, ValueType::u32};
     case Output::triangle:
-      return {fb.triangle_ids().data(), 1, 'i'};
+      return {fb.triangle_ids().data(), 1, ValueType::u32};
     case Output::barycentric:
-      return {fb.barycentrics().data(), 3, 'f'};
+      return {fb.barycentrics().data(), 3, ValueType::f32};
     case Output::albedo:
-      return {fb.albedo().data(), 4, 'f'};
+      return {fb.albedo().data(), 4, ValueType::f32};
   }
-  return {nullptr, 0, 'f'};
+  return {nullptr, 0, ValueType::f32};
 }
 
 NumpyArray numpy_array(const Framebuffer& fb, Output output) {
   Values v = values_of(fb, output);
   NumpyArray array;
   array.name = name_of(output);
-  array.dtype = v.type == 'u' ? "|u1" : v.type == 'f' ? "<f4" : "<u4";
+  array.dtype = v.type == ValueType::u8 ? "|u1" : v.type == ValueType::f32 ? "<f4" : "<u4";
   array.shape = {static_cast<std::size_t>(fb.height()), static_cast<std::size_t>(fb.width())};
   if (v.channels > 1) array.shape.push_back(static_cast<std::size_t>(v.channels));
   array.data = v.data;
-  array.bytes =
-      static_cast<std::size_t>(fb.width()) * fb.height() * v.channels * (v.type == 'u' ? 1 : 4);
+  array.bytes = static_cast<std::size_t>(fb.width()) * fb.height() * v.channels *
+                (v.type == ValueType::u8 ? 1 : 4);
   return array;
 }
 
@@ -123,7 +124,7 @@ NumpyArray numpy_array(const Framebuffer& fb, Output output) {
 std::vector<ExrChannel> exr_channels(const Framebuffer& fb, Output output) {
   Values v = values_of(fb, output);
   const float* floats = static_cast<const float*>(v.data);
-  if (v.type == 'i') return {{"id", v.data, true, 1}};
+  if (v.type == ValueType::u32) return {{"id", v.data, true, 1}};
   if (v.channels == 1) return {{"Z", v.data, false, 1}};
   std::vector<ExrChannel> channels;
   const char* names[] = {"R", "G", "B", "A"};

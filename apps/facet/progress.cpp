@@ -20,8 +20,7 @@ int terminal_columns(std::FILE* out) {
   return 80;
 }
 
-}  // namespace
-
+// "0:07", "12:30", "1:02:03".
 std::string clock_time(double seconds) {
   long total = std::lround(std::max(seconds, 0.0));
   char text[32];
@@ -32,6 +31,8 @@ std::string clock_time(double seconds) {
   }
   return text;
 }
+
+}  // namespace
 
 Progress::Style Progress::style_for(std::FILE* out, bool quiet) {
   if (quiet) return Style::quiet;

@@ -48,7 +48,4 @@ class Progress {
   bool line_open_ = false;  // the bar's line has no newline yet
 };
 
-// "0:07", "12:30", "1:02:03".
-std::string clock_time(double seconds);
-
 }  // namespace facet::cli

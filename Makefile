@@ -14,7 +14,7 @@
 # Debian 12 packages the build and the tests need. A new dependency is added here.
 PACKAGES := build-essential cmake pkg-config libglm-dev libpng-dev libtbb-dev libcli11-dev \
   libgtest-dev libstb-dev libassimp-dev assimp-testmodels glmark2-data clang libclang-rt-dev \
-  libopenal-dev libsdl2-dev libimgui-dev libhwy-dev xdotool xvfb python3
+  libopenal-dev libsdl2-dev libimgui-dev libhwy-dev libopenexr-dev xdotool xvfb python3
 
 BUILD_DIR ?= build
 ASAN_DIR ?= build-asan

@@ -6,12 +6,13 @@
 #include <cstdio>
 #include <string>
 
+#include "animated_scene.hpp"
 #include "arguments.hpp"
 #include "facet/error.hpp"
 #include "facet/framebuffer.hpp"
-#include "facet/image_io.hpp"
 #include "facet/renderer.hpp"
 #include "facet/scene.hpp"
+#include "render_frames.hpp"
 
 namespace facet::cli {
 namespace {
@@ -19,10 +20,14 @@ const std::string kDefaultBackground = "0.53,0.66,0.82";  // sRGB sky blue
 }  // namespace
 
 CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
-  CLI::App* cmd =
-      app.add_subcommand("render", "Render a model or a built-in scene to an image (PNG or PPM)");
+  CLI::App* cmd = app.add_subcommand("render",
+                                     "Render a model or a built-in scene to image files, one frame "
+                                     "or a sequence");
   add_scene_options(*cmd, o.scene);
-  cmd->add_option("-o,--output", o.output, "Output file; .png or .ppm (binary P6)")->required();
+  cmd->add_option("-o,--output", o.output,
+                  "Output file: .png, .ppm (binary P6), .exr, .npy or .npz; with --frames, %04d "
+                  "in the name is the frame number")
+      ->required();
   cmd->add_option("--size", o.size, "Image size WIDTHxHEIGHT, 1x1 .. 8192x8192")
       ->capture_default_str();
   cmd->add_option("--background", o.background,
@@ -36,6 +41,7 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
   cmd->add_flag("--orthographic", o.orthographic,
                 "Parallel projection, fitted to the whole scene, seen along the camera's line of "
                 "sight (the automatic three-quarter view, --eye/--target or --camera)");
+  add_frame_options(*cmd, o.frames);
   return cmd;
 }
 
@@ -55,9 +61,10 @@ int run_render(const RenderOptions& o) {
                                                  : "--far") +
                 ": not with --orthographic, whose view and clip planes are fitted to the scene");
   }
-  check_writable(o.output);
+  FrameJob job = plan_frames(o.frames, o.output);
   auto start = Clock::now();
-  Scene scene = build_scene(o.scene);
+  AnimatedScene animated(o.scene);
+  Scene& scene = animated.scene();
   if (!o.scene.fog_color) scene.lighting.fog.color = background;
   const float aspect = static_cast<float>(size.width) / size.height;
   Camera camera = build_camera(o.scene, scene, aspect);
@@ -70,28 +77,31 @@ int run_render(const RenderOptions& o) {
   settings.clear_color = glm::vec4(background, 1.0f);
   settings.exposure = o.exposure;
   Renderer renderer(settings);
-  Framebuffer framebuffer(size.width, size.height, ColorFormat::rgba8_srgb, DepthImage::none);
+  FrameRenderer frames(renderer, animated, camera, job, size);
+  if (job.sequence) return render_sequence(job, frames, size);
 
-  renderer.begin_frame(camera, scene.lighting);
-  draw_scene(renderer, scene);
-  renderer.finish(framebuffer);
+  const Framebuffer& framebuffer = frames.render(job.frames[0].seconds);
   auto rendered = Clock::now();
-  write_image(framebuffer, o.output);
+  write_outputs(framebuffer, job.outputs, o.output);
   double write_ms = std::chrono::duration<double, std::milli>(Clock::now() - rendered).count();
+  if (job.quiet) return 0;
 
   const FrameStats& s = renderer.stats();
   // Wireframes and line meshes draw segments: say how many, so their frames do not read as empty.
   const std::string lines =
       s.lines_drawn > 0 ? ", " + std::to_string(s.lines_drawn) + " lines drawn" : "";
+  // Outputs beside the color image (or instead of it): say which files they went to.
+  std::vector<std::string> files = job.outputs.files(o.output);
+  const std::string written = files == std::vector<std::string>{o.output} ? "" : joined(files);
   std::printf(
       "%s: %dx%d, %llu triangles in (%llu culled, %llu clipped, %llu drawn)%s, %llu pixels "
       "shaded; load %.1f ms, geometry %.1f ms, binning %.1f ms, raster %.1f ms, total %.1f ms; "
-      "write %.1f ms\n",
+      "write %.1f ms%s%s\n",
       o.output.c_str(), size.width, size.height, static_cast<unsigned long long>(s.triangles_in),
       static_cast<unsigned long long>(s.culled), static_cast<unsigned long long>(s.clipped),
       static_cast<unsigned long long>(s.drawn), lines.c_str(),
       static_cast<unsigned long long>(s.pixels_shaded), load_ms, s.ms_geometry, s.ms_binning,
-      s.ms_raster, s.ms_total, write_ms);
+      s.ms_raster, s.ms_total, write_ms, written.empty() ? "" : "; wrote ", written.c_str());
   return 0;
 }
 

@@ -1,15 +1,18 @@
-// `facet render`: renders a model file or a built-in scene to a PNG or PPM file.
+// `facet render`: renders a model file or a built-in scene to an image (PNG, PPM), its float and
+// id outputs (OpenEXR, NumPy), one frame or a sequence (frame_options.hpp).
 #pragma once
 
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "frame_options.hpp"
 #include "scene_options.hpp"
 
 namespace facet::cli {
 
 struct RenderOptions {
   SceneOptions scene;
+  FrameOptions frames;
   std::string output;
   std::string size = "1920x1080";
   std::optional<std::string> background;

@@ -6,10 +6,10 @@
 #include <cstdio>
 #include <memory>
 
+#include "animated_scene.hpp"
 #include "arguments.hpp"
 #include "facet/error.hpp"
 #include "facet/image_io.hpp"
-#include "facet/islands.hpp"
 #include "facet/scene.hpp"
 #include "view_bindings.hpp"
 #include "view_loop.hpp"
@@ -20,31 +20,6 @@ namespace {
 
 const std::string kBackground = "0.53,0.66,0.82";  // sRGB sky blue, as `facet render`
 constexpr float kWalkSecondsAcross = 20.0f;        // walking speed: the scene's size in this time
-
-// Options that change the scene after it is built (build_scene applies them).
-bool changes_scene(const SceneOptions& o) {
-  return o.shading || o.cull || !o.lights.empty() || o.texture || o.environment || o.reflectivity ||
-         o.fog;
-}
-
-// The islands world keeps its animation handles; everything else is a static scene.
-struct ViewScene {
-  std::unique_ptr<IslandsWorld> world;
-  Scene scene;
-  Scene& get() { return world ? world->scene : scene; }
-};
-
-ViewScene load_scene(const SceneOptions& o) {
-  ViewScene v;
-  if (o.model.empty() && o.scene.value_or("") == "islands") {
-    v.world = std::make_unique<IslandsWorld>(make_islands_world());
-    // build_scene keeps node and material indices, so the world's handles stay valid.
-    if (changes_scene(o)) v.world->scene = build_scene(o);
-  } else {
-    v.scene = build_scene(o);
-  }
-  return v;
-}
 
 std::string view_description() {
   std::string text =
@@ -91,11 +66,11 @@ int run_view(const ViewOptions& o) {
   // The window first: with no display the command fails before loading anything.
   ViewWindow window("facet view", size.width, size.height);
 
-  ViewScene loaded = load_scene(o.scene);
-  Scene& scene = loaded.get();
+  AnimatedScene loaded(o.scene);
+  Scene& scene = loaded.scene();
   if (!o.scene.fog_color) scene.lighting.fog.color = background;
   setup.scene = &scene;
-  setup.world = loaded.world.get();
+  setup.world = loaded.world();
   setup.start = build_camera(o.scene, scene, static_cast<float>(size.width) / size.height);
   setup.camera_mode = o.scene.model.empty() ? CameraMode::first_person : CameraMode::orbit;
   Bounds bounds = scene.bounds();

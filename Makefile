@@ -16,7 +16,8 @@
 PACKAGES := build-essential cmake pkg-config libglm-dev libpng-dev libtbb-dev libcli11-dev \
   libgtest-dev libstb-dev libassimp-dev assimp-testmodels glmark2-data clang libclang-rt-dev \
   libopenal-dev libsdl2-dev libimgui-dev libhwy-dev xdotool xvfb python3 \
-  pybind11-dev python3-dev python3-numpy python3-pytest
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-pip python3-setuptools \
+  python3-wheel python3-venv
 
 BUILD_DIR ?= build
 ASAN_DIR ?= build-asan
@@ -142,4 +143,4 @@ install: build
 	cmake --install $(BUILD_DIR) --prefix $(PREFIX)
 
 clean:
-	rm -rf $(BUILD_DIR) $(ASAN_DIR) $(TSAN_DIR) $(FUZZ_DIR) $(SCENE_IMAGE)
+	rm -rf $(BUILD_DIR) $(ASAN_DIR) $(TSAN_DIR) $(FUZZ_DIR) build-python $(SCENE_IMAGE)

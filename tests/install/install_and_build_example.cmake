@@ -187,7 +187,8 @@ run_hello(${hello_pc} ${WORK_DIR}/hello_triangle_pkg_config.png)
 
 # 6. The Python module, installed with the rest, imports from the prefix alone.
 if(PYTHON_MODULE AND NOT SHARED)
-  file(GLOB_RECURSE python_package LIST_DIRECTORIES false ${prefix}/*/facet/__init__.py)
+  file(GLOB_RECURSE python_package LIST_DIRECTORIES false ${prefix}/__init__.py)
+  list(FILTER python_package INCLUDE REGEX "/facet/__init__\\.py$")
   list(LENGTH python_package found)
   if(NOT found EQUAL 1)
     message(FATAL_ERROR "install test: expected one facet/__init__.py in ${prefix}, got "

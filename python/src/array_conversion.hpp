@@ -31,9 +31,9 @@ struct Argument {
   std::string text() const { return std::string(function) + ": " + name; }
 };
 
-// One float per vertex attribute row: N rows of C values (vertices, normals, uvs), from an
-// (N, C) array of real numbers (float or integer dtype), all finite. rows < 0 takes any N;
-// otherwise N must equal rows (one per vertex).
+// Per-vertex attributes (vertices, normals, uvs): the N rows of an (N, C) array of real numbers
+// (float or integer dtype), each a finite float32. rows < 0 takes any N; otherwise N must be
+// rows (a row per vertex).
 std::vector<glm::vec2> vec2_rows(py::handle value, const Argument& argument, std::ptrdiff_t rows);
 std::vector<glm::vec3> vec3_rows(py::handle value, const Argument& argument, std::ptrdiff_t rows);
 

@@ -1,6 +1,8 @@
 """Renderers in several Python threads at once (the GIL is released while a frame renders):
 the same images as one after another, whatever the threads share."""
+import sys
 import threading
+import time
 from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
@@ -100,3 +102,39 @@ def test_a_scene_may_change_while_other_threads_render_it():
             thread.join()
     assert scene.instance_count == 207
     assert len(frames) >= 3
+
+
+def test_other_python_threads_run_while_a_frame_renders():
+    # A thread that counts, giving the GIL up after each step (sleep(0)), and a switch interval
+    # long enough that the main thread never gives it up unasked: the count can only move while
+    # the main thread is inside render() if render() releases the GIL.
+    vertices, faces = icosphere(5)
+    scene = facet.Scene()
+    scene.add_mesh(vertices, faces, material=facet.Material(shading="pbr"))
+    renderer = facet.Renderer(640, 480, threads=1)
+    camera = cameras(1)[0]
+    count = [0]
+    started, stop = threading.Event(), threading.Event()
+
+    def counter():
+        started.set()
+        while not stop.is_set():
+            count[0] += 1
+            time.sleep(0)
+
+    interval = sys.getswitchinterval()
+    sys.setswitchinterval(5.0)
+    thread = threading.Thread(target=counter)
+    try:
+        thread.start()
+        started.wait()
+        moved = 0
+        for _ in range(5):
+            before = count[0]
+            renderer.render(scene, camera, ["color"])
+            moved += count[0] - before
+    finally:
+        stop.set()
+        thread.join()
+        sys.setswitchinterval(interval)
+    assert moved > 0

@@ -13,7 +13,8 @@ REQUIRED = (("numpy", "python3-numpy"), ("pytest", "python3-pytest"))
 def main() -> int:
     missing = [package for module, package in REQUIRED if importlib.util.find_spec(module) is None]
     if missing:
-        print(f"run_pytest: install {', '.join(missing)} (`make deps` installs it)")
+        them = "them" if len(missing) > 1 else "it"
+        print(f"run_pytest: install {' and '.join(missing)} (`make deps` installs {them})")
         return 1
     import pytest
 

@@ -8,13 +8,16 @@
 #                       under TSan (build-tsan/); also separately: make test-asan, make test-tsan
 #   make test-fuzz      the libFuzzer targets (tests/fuzz/*_fuzz.cpp, clang, build-fuzz/), each for
 #                       FUZZ_SECONDS (default 60) from a scratch copy of tests/fuzz/corpus/NAME/
-#   make install        cmake --install build --prefix $(PREFIX)   (PREFIX=/usr/local by default)
+#   make install        cmake --install build --prefix $(PREFIX)   (PREFIX=/usr/local by default):
+#                       the libraries, the program and the Python module (docs/python.md)
 #   make clean          remove the build trees and islands.png
 
 # Debian 12 packages the build and the tests need. A new dependency is added here.
 PACKAGES := build-essential cmake pkg-config libglm-dev libpng-dev libtbb-dev libcli11-dev \
   libgtest-dev libstb-dev libassimp-dev assimp-testmodels glmark2-data clang libclang-rt-dev \
-  libopenal-dev libsdl2-dev libimgui-dev libhwy-dev libopenexr-dev xdotool xvfb python3
+  libopenal-dev libsdl2-dev libimgui-dev libhwy-dev libopenexr-dev xdotool xvfb python3 \
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-pip python3-setuptools \
+  python3-wheel python3-venv
 
 BUILD_DIR ?= build
 ASAN_DIR ?= build-asan
@@ -22,6 +25,9 @@ TSAN_DIR ?= build-tsan
 FUZZ_DIR ?= build-fuzz
 FUZZ_SECONDS ?= 60
 JOBS ?= $(shell nproc)
+# The Python the module is built for and tested with: Debian's, which has the packages above
+# (NumPy, pytest), even where another python3 comes first on the PATH.
+PYTHON ?= /usr/bin/python3
 PREFIX ?= /usr/local
 SCENE_IMAGE ?= islands.png
 # ctest -R regex for the tests that run under ThreadSanitizer: the threaded raster tests (the
@@ -71,7 +77,7 @@ deps:
 
 build: deps
 	@if [ ! -f $(BUILD_DIR)/CMakeCache.txt ]; then \
-	  cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release; \
+	  cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=$(PYTHON); \
 	fi
 	cmake --build $(BUILD_DIR) -j$(JOBS)
 
@@ -88,13 +94,14 @@ test: build
 test-sanitize: test-asan test-tsan
 
 # The whole suite under AddressSanitizer + UndefinedBehaviorSanitizer. The install test is off
-# (it links an unsanitized example against the library).
+# (it links an unsanitized example against the library), and so is the Python module (a
+# sanitized extension needs the sanitizer's runtime preloaded into the Python interpreter).
 test-asan: export ASAN_OPTIONS := $(ASAN_RUNTIME_OPTIONS)
 test-asan: export UBSAN_OPTIONS := $(UBSAN_RUNTIME_OPTIONS)
 test-asan: deps
 	@if [ ! -f $(ASAN_DIR)/CMakeCache.txt ]; then \
 	  cmake -S . -B $(ASAN_DIR) $(CHECKED_BUILD_FLAGS) -DFACET_SANITIZE=address \
-	    -DFACET_INSTALL_TEST=OFF; \
+	    -DFACET_INSTALL_TEST=OFF -DFACET_BUILD_PYTHON=OFF; \
 	fi
 	cmake --build $(ASAN_DIR) -j$(JOBS)
 	ctest --test-dir $(ASAN_DIR) --output-on-failure -j2 --no-tests=error
@@ -104,7 +111,7 @@ test-tsan: export TSAN_OPTIONS := $(TSAN_RUNTIME_OPTIONS)
 test-tsan: deps
 	@if [ ! -f $(TSAN_DIR)/CMakeCache.txt ]; then \
 	  cmake -S . -B $(TSAN_DIR) $(CHECKED_BUILD_FLAGS) -DFACET_SANITIZE=thread \
-	    -DFACET_INSTALL_TEST=OFF; \
+	    -DFACET_INSTALL_TEST=OFF -DFACET_BUILD_PYTHON=OFF; \
 	fi
 	cmake --build $(TSAN_DIR) -j$(JOBS) --target facet_tests
 	ctest --test-dir $(TSAN_DIR) -R '$(TSAN_TEST_REGEX)' --output-on-failure -j2 --no-tests=error
@@ -115,7 +122,7 @@ test-tsan: deps
 test-fuzz: deps
 	@if [ ! -f $(FUZZ_DIR)/CMakeCache.txt ]; then \
 	  CXX=clang++ cmake -S . -B $(FUZZ_DIR) $(CHECKED_BUILD_FLAGS) -DFACET_FUZZ=ON \
-	    -DFACET_BUILD_TESTS=OFF -DFACET_INSTALL_TEST=OFF; \
+	    -DFACET_BUILD_TESTS=OFF -DFACET_INSTALL_TEST=OFF -DFACET_BUILD_PYTHON=OFF; \
 	fi
 	cmake --build $(FUZZ_DIR) -j$(JOBS) --target facet_fuzz
 	@for fuzzer in $(FUZZ_DIR)/*_fuzz; do \
@@ -136,4 +143,4 @@ install: build
 	cmake --install $(BUILD_DIR) --prefix $(PREFIX)
 
 clean:
-	rm -rf $(BUILD_DIR) $(ASAN_DIR) $(TSAN_DIR) $(FUZZ_DIR) $(SCENE_IMAGE)
+	rm -rf $(BUILD_DIR) $(ASAN_DIR) $(TSAN_DIR) $(FUZZ_DIR) build-python $(SCENE_IMAGE)

@@ -40,6 +40,8 @@ RULES = {
     "bench/scenes": (["core", "shading", "pipeline", "scenes"], ["core", "import", "worlds"]),
     # The program: public headers and the benchmark scenes, nothing internal.
     "apps/facet": (["scenes"], ["core", "import", "worlds", "sound"]),
+    # The Python module: the public API of the layers it binds, nothing internal.
+    "python/src": ([], ["core", "import"]),
 }
 
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
@@ -61,8 +63,8 @@ def rule_for(path: pathlib.Path, root: pathlib.Path):
 
 def check(root: pathlib.Path) -> list[str]:
     problems = []
-    files = [p for top in ("src", "include", "bench", "apps") for p in (root / top).rglob("*")
-             if p.suffix in (".cpp", ".hpp", ".h")]
+    tops = ("src", "include", "bench", "apps", "python")
+    files = [p for top in tops for p in (root / top).rglob("*") if p.suffix in (".cpp", ".hpp", ".h")]
     for path in sorted(files):
         rule = rule_for(path, root)
         where = path.relative_to(root).as_posix()

@@ -8,11 +8,16 @@
 #      assimp and OpenAL made unfindable, build it and check hello_triangle needs neither
 #   4. build hello_triangle again with plain g++ $(pkg-config --cflags --libs facet)
 #   5. run both; each must write a PNG
+#   6. static, with the Python module built (PYTHON_MODULE): the installed package imports
+#      from the prefix's site-packages folder alone and renders a PNG
+# The shared variant builds the libraries only (no program, no Python module): its prefix is
+# where the Python module's pip test (python/tests) builds against, needing this test first.
 # Any failing step stops the script with FATAL_ERROR, which fails the test.
 #
 # Inputs (-D): SOURCE_DIR (project root), BUILD_DIR (a built tree; static only), WORK_DIR
 #              (scratch, wiped), VERSION (the project's), optional SHARED, CONFIG (build type),
-#              GENERATOR, CXX_COMPILER.
+#              GENERATOR, CXX_COMPILER, PYTHON_MODULE (ON: check the installed module),
+#              PYTHON_EXECUTABLE.
 cmake_minimum_required(VERSION 3.25)
 
 foreach(var SOURCE_DIR BUILD_DIR WORK_DIR VERSION)
@@ -92,7 +97,7 @@ if(SHARED)
   set(shared_build ${WORK_DIR}/build)
   set(configure_facet -S ${SOURCE_DIR} -B ${shared_build} -DCMAKE_BUILD_TYPE=${CONFIG}
       -DBUILD_SHARED_LIBS=ON -DFACET_BUILD_PROGRAM=OFF -DFACET_BUILD_TESTS=OFF
-      -DCMAKE_INSTALL_LIBDIR=lib)
+      -DFACET_BUILD_PYTHON=OFF -DCMAKE_INSTALL_LIBDIR=lib)
   run_step("configure shared libraries" ${CMAKE_COMMAND} ${configure_facet} ${toolchain_args})
   run_step("build shared libraries" ${CMAKE_COMMAND} --build ${shared_build} --config ${CONFIG}
            --parallel 2)
@@ -179,4 +184,29 @@ require_core_only(${hello_pc})
 # 5. Run them.
 run_hello(${hello} ${WORK_DIR}/hello_triangle.png)
 run_hello(${hello_pc} ${WORK_DIR}/hello_triangle_pkg_config.png)
+
+# 6. The Python module, installed with the rest, imports from the prefix alone.
+if(PYTHON_MODULE AND NOT SHARED)
+  file(GLOB_RECURSE python_package LIST_DIRECTORIES false ${prefix}/__init__.py)
+  list(FILTER python_package INCLUDE REGEX "/facet/__init__\\.py$")
+  list(LENGTH python_package found)
+  if(NOT found EQUAL 1)
+    message(FATAL_ERROR "install test: expected one facet/__init__.py in ${prefix}, got "
+                        "'${python_package}'")
+  endif()
+  get_filename_component(python_package ${python_package} DIRECTORY)
+  get_filename_component(site_packages ${python_package} DIRECTORY)
+  set(python_image ${WORK_DIR}/python_triangle.png)
+  run_step("render with the installed Python module" ${CMAKE_COMMAND} -E env
+    PYTHONPATH=${site_packages} PYTHONDONTWRITEBYTECODE=1
+    ${PYTHON_EXECUTABLE} -c "import facet, sys
+assert facet.__file__.startswith(sys.argv[1]), facet.__file__
+scene = facet.Scene()
+scene.add_mesh([[-1, -1, 0], [1, -1, 0], [0, 1, 0]], [[0, 1, 2]])
+frame = facet.Renderer(64, 48).render(scene, facet.Camera.look_at((0, 0, 3), (0, 0, 0)))
+facet.write_png(sys.argv[2], frame['color'])" ${site_packages} ${python_image})
+  if(NOT EXISTS ${python_image})
+    message(FATAL_ERROR "install test: the installed Python module did not write ${python_image}")
+  endif()
+endif()
 message(STATUS "install test: ok")

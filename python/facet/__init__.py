@@ -1,0 +1,39 @@
+"""facet: a CPU software rasterizer, for images and datasets of 3D scenes without a GPU.
+
+    import facet
+    scene = facet.load("model.glb")                  # or facet.Scene() and scene.add_mesh(...)
+    camera = facet.Camera.look_at(eye=(2, 1, 3), target=(0, 0, 0))
+    frame = facet.Renderer(640, 480).render(scene, camera)
+    frame["color"]   # (480, 640, 4) uint8, sRGB
+    frame["depth"]   # (480, 640) float32, distance along the camera axis; 0 where empty
+
+Errors are facet.Error. docs/python.md in facet's source tree has the whole story.
+"""
+
+from ._facet import (
+    OUTPUTS,
+    SHADING_MODELS,
+    Camera,
+    Error,
+    Light,
+    Material,
+    Renderer,
+    Scene,
+    __version__,
+    load,
+    write_png,
+)
+
+__all__ = [
+    "OUTPUTS",
+    "SHADING_MODELS",
+    "Camera",
+    "Error",
+    "Light",
+    "Material",
+    "Renderer",
+    "Scene",
+    "__version__",
+    "load",
+    "write_png",
+]

@@ -1,0 +1,47 @@
+// The facet Python module's parts (python/src): each file binds one part of the API and
+// module.cpp calls them in order; SceneHandle is the scene they hand each other.
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+#include <shared_mutex>
+#include <string>
+
+#include "facet/error.hpp"
+#include "facet/scene.hpp"
+
+namespace facet::python {
+
+namespace py = pybind11;
+
+// facet.Scene: a facet::Scene with what the module adds. Instance ids number the scene's mesh
+// instances 1, 2, ... in node order and, within a node, in instance order: the order
+// draw_scene draws them in (0 is left for "nothing").
+struct SceneHandle {
+  Scene scene;
+  // The lights are the scene's defaults (the library's sun, or the three-point lights of a
+  // file without lights): the first add_light replaces them, as `facet render --light` does.
+  bool default_lights = true;
+  int instance_count = 0;
+  // render() reads the scene with the GIL released, under a shared lock; every change takes it
+  // exclusively, so a Python thread changing a scene another one renders waits for the frame.
+  mutable std::shared_mutex mutex;
+};
+
+// The facet object `value` holds (a copy); facet.Error naming the argument if it holds
+// something else: "add_light: light must be a facet.Light, got str".
+template <class T>
+T object_of(py::handle value, const char* function, const char* argument, const char* type) {
+  if (!py::isinstance<T>(value)) {
+    throw Error(std::string(function) + ": " + argument + " must be a facet." + type + ", got " +
+                std::string(py::str(py::type::of(value).attr("__name__"))));
+  }
+  return value.cast<T>();
+}
+
+void bind_materials_and_lights(py::module_& m);  // material_bindings.cpp: Material, Light
+void bind_camera(py::module_& m);                // camera_bindings.cpp: Camera
+void bind_scene(py::module_& m);                 // scene_bindings.cpp: Scene, load
+void bind_render(py::module_& m);                // render_bindings.cpp: Renderer, write_png
+
+}  // namespace facet::python

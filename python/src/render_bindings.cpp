@@ -1,0 +1,265 @@
+// facet.Renderer and facet.write_png: frames of a scene as NumPy arrays. render() checks its
+// arguments, renders with the GIL released (so renderers in several Python threads work at
+// once), and hands each requested output over as an array that owns the framebuffer's buffer.
+// Each output is one entry of kOutputs and one small function that takes it out of the frame.
+#include <pybind11/stl.h>
+
+#include <array>
+#include <mutex>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "array_conversion.hpp"
+#include "bindings.hpp"
+#include "camera_bindings.hpp"
+#include "facet/error.hpp"
+#include "facet/framebuffer.hpp"
+#include "facet/image_io.hpp"
+#include "facet/renderer.hpp"
+
+namespace facet::python {
+namespace {
+
+// A rendered frame and the camera it was seen through.
+struct RenderedFrame {
+  Framebuffer image;
+  Camera camera;
+};
+
+// One output's values and their shape, made without the GIL; an array of them with it.
+struct OutputValues {
+  std::variant<std::vector<std::uint8_t>, std::vector<float>> values;
+  std::vector<py::ssize_t> shape;
+};
+
+// "color": H x W x 4, the framebuffer's own color: uint8 sRGB with linear alpha, or float32
+// linear RGBA (color_format="float").
+OutputValues take_color(RenderedFrame& frame) {
+  std::vector<py::ssize_t> shape{frame.image.height(), frame.image.width(), 4};
+  if (frame.image.format() == ColorFormat::rgba32f) {
+    return {std::move(frame.image.rgba32f()), std::move(shape)};
+  }
+  return {std::move(frame.image.rgba8()), std::move(shape)};
+}
+
+// "depth": H x W float32, the distance along the camera's axis in scene units, 0 where nothing
+// was drawn. Computed from the window depth the framebuffer holds (1 where nothing was drawn:
+// framebuffer.hpp), so a surface at the far plane itself reads 0 too.
+OutputValues take_depth(RenderedFrame& frame) {
+  std::vector<float> depth = std::move(frame.image.depth());
+  // Camera::view_distance, written out so the loop has no call in it.
+  const double n = frame.camera.near_plane, f = frame.camera.far_plane;
+  for (float& d : depth) d = d < 1.0f ? static_cast<float>(n * f / (f - d * (f - n))) : 0.0f;
+  return {std::move(depth), {frame.image.height(), frame.image.width()}};
+}
+
+struct OutputKind {
+  const char* name;
+  bool needs_depth;  // the framebuffer keeps its depth image (DepthImage::keep)
+  OutputValues (*take)(RenderedFrame& frame);
+};
+
+// TODO(#28, exact outputs): "normal", "instance" (the ids of SceneHandle), "triangle",
+// "barycentric" and "albedo" become one entry each here, with the take function that moves
+// them out of facet::Framebuffer, once the core writes them; "depth" then reads the exact
+// per-pixel depth instead of turning the window depth back into a distance.
+constexpr std::array<OutputKind, 2> kOutputs{{
+    {"color", false, take_color},
+    {"depth", true, take_depth},
+}};
+
+std::string output_names() {
+  std::string names;
+  for (const OutputKind& kind : kOutputs)
+    names += (names.empty() ? "" : ", ") + std::string(kind.name);
+  return names;
+}
+
+// The outputs asked for, each once, in the order asked; a single string is one name.
+std::vector<const OutputKind*> requested_outputs(py::handle outputs) {
+  std::vector<std::string> names;
+  if (py::isinstance<py::str>(outputs)) {
+    names.push_back(outputs.cast<std::string>());
+  } else {
+    try {
+      for (py::handle name : py::iter(outputs)) names.push_back(py::str(name));
+    } catch (const py::error_already_set&) {
+      throw Error("render: outputs must be a sequence of names (" + output_names() + ")");
+    }
+  }
+  std::vector<const OutputKind*> kinds;
+  for (const std::string& name : names) {
+    const OutputKind* kind = nullptr;
+    for (const OutputKind& k : kOutputs) {
+      if (name == k.name) kind = &k;
+    }
+    if (kind == nullptr) {
+      throw Error("render: unknown output '" + name + "' (valid: " + output_names() + ")");
+    }
+    bool seen = false;
+    for (const OutputKind* k : kinds) seen = seen || k == kind;
+    if (!seen) kinds.push_back(kind);
+  }
+  return kinds;
+}
+
+ColorFormat color_format(const std::string& name) {
+  if (name == "uint8") return ColorFormat::rgba8_srgb;
+  if (name == "float") return ColorFormat::rgba32f;
+  throw Error("render: color_format must be 'uint8' or 'float', got '" + name + "'");
+}
+
+// facet.Renderer: a facet::Renderer and the size of the images it makes. One frame at a time
+// each (the mutex); several renderers render at once.
+class PyRenderer {
+ public:
+  PyRenderer(int width, int height, int threads, int msaa, py::handle background,
+             py::handle exposure, int tile_size)
+      : width_(width), height_(height) {
+    if (width < 1 || height < 1 || width > Framebuffer::kMaxSize ||
+        height > Framebuffer::kMaxSize) {
+      throw Error("Renderer: size " + std::to_string(width) + "x" + std::to_string(height) +
+                  " is outside 1x1 .. " + std::to_string(Framebuffer::kMaxSize) + "x" +
+                  std::to_string(Framebuffer::kMaxSize));
+    }
+    // TODO(#28, anti-aliasing): msaa > 1 once the core resolves samples (another issue).
+    if (msaa != 1) throw Error("Renderer: msaa is not available yet (use msaa=1)");
+    RenderSettings settings;
+    settings.threads = threads;
+    settings.tile_size = tile_size;
+    settings.clear_color = rgba(background, {"Renderer", "background"});
+    settings.exposure = number(exposure, {"Renderer", "exposure"});
+    renderer_ = std::make_unique<Renderer>(settings);  // its errors say "renderer: ..."
+  }
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  const RenderSettings& settings() const { return renderer_->settings(); }
+  const FrameStats& stats() const { return stats_; }
+
+  py::dict render(py::handle scene_value, py::handle camera_value, py::handle outputs,
+                  const std::string& format_name) {
+    if (!py::isinstance<SceneHandle>(scene_value)) {
+      throw Error("render: scene must be a facet.Scene, got " +
+                  std::string(py::str(py::type::of(scene_value).attr("__name__"))));
+    }
+    const SceneHandle& scene = scene_value.cast<const SceneHandle&>();
+    const std::vector<const OutputKind*> kinds = requested_outputs(outputs);
+    const ColorFormat format = color_format(format_name);
+    bool depth = false;
+    for (const OutputKind* kind : kinds) depth = depth || kind->needs_depth;
+    Camera camera;
+    if (camera_value.is_none()) {
+      std::shared_lock lock(scene.mutex);
+      camera = scene.scene.camera;
+    } else {
+      camera = object_of<Camera>(camera_value, "render", "camera", "Camera");
+    }
+    RenderedFrame frame{
+        Framebuffer(width_, height_, format, depth ? DepthImage::keep : DepthImage::none),
+        camera_for_image(camera, width_, height_)};
+    std::vector<OutputValues> values;
+    {
+      py::gil_scoped_release release;
+      std::lock_guard lock(mutex_);
+      {
+        std::shared_lock scene_lock(scene.mutex);
+        renderer_->begin_frame(frame.camera, scene.scene.lighting);
+        draw_scene(*renderer_, scene.scene);
+        renderer_->finish(frame.image);
+      }
+      stats_ = renderer_->stats();
+      for (const OutputKind* kind : kinds) values.push_back(kind->take(frame));
+    }
+    py::dict result;
+    for (std::size_t i = 0; i < kinds.size(); ++i) {
+      result[kinds[i]->name] = std::visit(
+          [&](auto& v) -> py::object { return adopt(std::move(v), std::move(values[i].shape)); },
+          values[i].values);
+    }
+    return result;
+  }
+
+ private:
+  int width_;
+  int height_;
+  std::unique_ptr<Renderer> renderer_;
+  FrameStats stats_;
+  std::mutex mutex_;
+};
+
+py::dict stats_dict(const FrameStats& s) {
+  py::dict d;
+  d["triangles_in"] = s.triangles_in;
+  d["culled"] = s.culled;
+  d["clipped"] = s.clipped;
+  d["drawn"] = s.drawn;
+  d["lines_drawn"] = s.lines_drawn;
+  d["pixels_shaded"] = s.pixels_shaded;
+  d["ms_geometry"] = s.ms_geometry;
+  d["ms_binning"] = s.ms_binning;
+  d["ms_raster"] = s.ms_raster;
+  d["ms_total"] = s.ms_total;
+  return d;
+}
+
+void write_png(py::handle path, py::handle image) {
+  Rgba8Image rgba8 = rgba8_image(image, {"write_png", "image"});
+  if (rgba8.width > Framebuffer::kMaxSize || rgba8.height > Framebuffer::kMaxSize) {
+    throw Error("write_png: image is larger than " + std::to_string(Framebuffer::kMaxSize) +
+                " pixels on a side");
+  }
+  std::string file;
+  try {
+    file = py::str(py::module_::import("os").attr("fspath")(path));
+  } catch (const py::error_already_set&) {
+    throw Error("write_png: path must be a str or an os.PathLike");
+  }
+  py::gil_scoped_release release;
+  Framebuffer framebuffer(rgba8.width, rgba8.height, ColorFormat::rgba8_srgb, DepthImage::none);
+  framebuffer.rgba8() = std::move(rgba8.rgba);
+  write_image(framebuffer, file);
+}
+
+}  // namespace
+
+void bind_render(py::module_& m) {
+  py::class_<PyRenderer>(m, "Renderer", R"doc(
+Renders scenes into width x height images. threads: worker threads (0: all cores). msaa: only 1
+for now. background: linear RGB(A) where nothing is drawn. exposure: in stops, colors are
+scaled by 2^exposure. tile_size: 16, 32, 64 or 128. The GIL is released while a frame renders,
+so renderers in several Python threads render at once; one renderer renders one frame at a
+time.)doc")
+      .def(py::init<int, int, int, int, py::handle, py::handle, int>(), py::arg("width"),
+           py::arg("height"), py::arg("threads") = 0, py::arg("msaa") = 1, py::kw_only(),
+           py::arg("background") = py::make_tuple(0.0, 0.0, 0.0, 1.0), py::arg("exposure") = 0.0,
+           py::arg("tile_size") = 64)
+      .def("render", &PyRenderer::render, py::arg("scene"), py::arg("camera") = py::none(),
+           py::arg("outputs") = py::make_tuple("color", "depth"), py::kw_only(),
+           py::arg("color_format") = "uint8", R"doc(
+Renders scene seen through camera (default: scene.camera) with the aspect of this renderer's
+image, and returns a dict of NumPy arrays, one per name in outputs (facet.OUTPUTS lists them):
+  color: (H, W, 4) uint8, sRGB color with linear alpha; color_format="float": float32 linear
+  depth: (H, W) float32, distance along the camera's axis in scene units; 0 where nothing
+         was drawn
+Row 0 is the top of the image. The arrays own their memory (no copy is made).)doc")
+      .def_property_readonly("width", &PyRenderer::width)
+      .def_property_readonly("height", &PyRenderer::height)
+      .def_property_readonly("threads", [](const PyRenderer& r) { return r.settings().threads; })
+      .def_property_readonly("msaa", [](const PyRenderer&) { return 1; })
+      .def_property_readonly(
+          "stats", [](const PyRenderer& r) { return stats_dict(r.stats()); },
+          "What the last frame did: triangles in, culled, clipped, drawn, pixels shaded, and "
+          "milliseconds per stage.");
+
+  py::tuple names(kOutputs.size());
+  for (std::size_t i = 0; i < kOutputs.size(); ++i) names[i] = py::str(kOutputs[i].name);
+  m.attr("OUTPUTS") = names;
+
+  m.def("write_png", &write_png, py::arg("path"), py::arg("image"), R"doc(
+Writes an (H, W, 3) or (H, W, 4) uint8 image (sRGB, row 0 at the top) as a PNG, through a
+temporary file renamed into place (a path ending in .ppm writes a binary PPM instead).)doc");
+}
+
+}  // namespace facet::python

@@ -1,0 +1,220 @@
+// facet.Scene and facet.load: scenes built from NumPy arrays (add_mesh) or read from a model file
+// (facet::import_scene, as `facet render` reads it), and their lights. Arrays are checked and
+// converted with the GIL held; the scene changes with it released, under the scene's lock
+// (SceneHandle), so a frame another thread is rendering finishes first.
+#include <pybind11/stl.h>
+
+#include <memory>
+#include <mutex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "array_conversion.hpp"
+#include "bindings.hpp"
+#include "facet/error.hpp"
+#include "facet/import.hpp"
+
+namespace facet::python {
+namespace {
+
+// Runs change(scene) with the scene locked for writing; the GIL is released while it waits.
+template <class Change>
+auto change_scene(SceneHandle& handle, Change&& change) {
+  py::gil_scoped_release release;
+  std::unique_lock lock(handle.mutex);
+  return change(handle);
+}
+
+std::string path_text(py::handle path, const char* function) {
+  try {
+    return py::str(py::module_::import("os").attr("fspath")(path));
+  } catch (const py::error_already_set&) {
+    throw Error(std::string(function) + ": path must be a str or an os.PathLike, got " +
+                std::string(py::str(py::type::of(path).attr("__name__"))));
+  }
+}
+
+std::unique_ptr<SceneHandle> load(py::handle path, py::handle crease_angle) {
+  ImportOptions options;
+  options.crease_angle_degrees = number(crease_angle, {"load", "crease_angle"});
+  std::vector<std::string> warnings;
+  options.warn = [&warnings](const std::string& warning) { warnings.push_back(warning); };
+  const std::string file = path_text(path, "load");
+  auto handle = std::make_unique<SceneHandle>();
+  {
+    py::gil_scoped_release release;
+    handle->scene = import_scene(file, options);
+  }
+  handle->default_lights = !handle->scene.has_file_lights;
+  for (const SceneNode& node : handle->scene.nodes) {
+    handle->instance_count += static_cast<int>(node.instances.size());
+  }
+  // Problems that did not stop the import (a missing texture) as Python warnings.
+  for (const std::string& warning : warnings) {
+    if (PyErr_WarnEx(PyExc_UserWarning, warning.c_str(), 1) != 0) throw py::error_already_set();
+  }
+  return handle;
+}
+
+int add_mesh(SceneHandle& handle, py::handle vertices, py::handle faces, py::handle normals,
+             py::handle uvs, py::handle colors, py::handle texture, py::handle material,
+             py::handle pose, const std::string& name) {
+  constexpr const char* kName = "add_mesh";
+  Mesh mesh;
+  mesh.positions = vec3_rows(vertices, {kName, "vertices"}, -1);
+  const std::size_t n = mesh.positions.size();
+  mesh.indices = triangle_indices(faces, {kName, "faces"}, n);
+  // A mesh without indices draws its vertices as triangles: no faces must not mean that.
+  if (mesh.indices.empty()) throw Error("add_mesh: faces has no triangles");
+  const auto rows = static_cast<std::ptrdiff_t>(n);
+  if (!normals.is_none()) mesh.normals = vec3_rows(normals, {kName, "normals"}, rows);
+  if (!uvs.is_none()) mesh.texcoords = vec2_rows(uvs, {kName, "uvs"}, rows);
+  if (!colors.is_none()) mesh.colors = vertex_colors(colors, {kName, "colors"}, n);
+  Material look;
+  if (!material.is_none()) look = object_of<Material>(material, kName, "material", "Material");
+  std::shared_ptr<const Texture> image;
+  if (!texture.is_none()) {
+    if (mesh.texcoords.empty()) throw Error("add_mesh: a texture needs uvs, an (N, 2) array");
+    image = texture_image(texture, {kName, "texture"});
+    look.base_color_map.texture = image;
+  }
+  const glm::mat4 transform = pose.is_none() ? glm::mat4(1.0f) : matrix4(pose, {kName, "pose"});
+  try {
+    mesh.validate();
+  } catch (const Error& e) {
+    throw Error(std::string("add_mesh: ") + e.what());
+  }
+  return change_scene(handle, [&](SceneHandle& h) {
+    h.scene.add_object(std::move(mesh), std::move(look), transform, name);
+    if (image) h.scene.textures.push_back(image);
+    return ++h.instance_count;
+  });
+}
+
+py::object bounds(const SceneHandle& handle) {
+  std::shared_lock lock(handle.mutex);
+  const Bounds b = handle.scene.bounds();
+  if (b.empty()) return py::none();
+  return py::make_tuple(to_tuple(b.min), to_tuple(b.max));
+}
+
+}  // namespace
+
+void bind_scene(py::module_& m) {
+  py::class_<SceneHandle> scene(m, "Scene", R"doc(
+What a renderer draws: meshes with their materials and poses, lights, and a default camera.
+
+Scene() starts empty, lit by the library's default sun and ambient light; facet.load(path)
+reads a model file. Every mesh instance has an id, 1, 2, ... in the order the scene draws
+them: add_mesh returns the new one's; a loaded file's instances are numbered in the file's
+node order first. 0 means "nothing" in per-pixel outputs.)doc");
+  scene.def(py::init<>())
+      .def("add_mesh", &add_mesh, py::arg("vertices"), py::arg("faces"), py::kw_only(),
+           py::arg("normals") = py::none(), py::arg("uvs") = py::none(),
+           py::arg("colors") = py::none(), py::arg("texture") = py::none(),
+           py::arg("material") = py::none(), py::arg("pose") = py::none(), py::arg("name") = "",
+           R"doc(
+Adds a triangle mesh and returns its instance id (1, 2, ...).
+
+vertices: (N, 3) float; faces: (M, 3) integer indices into vertices, counter-clockwise seen
+from the front. Optional, one row per vertex: normals (N, 3); uvs (N, 2), v up (v = 0 is the
+bottom row of the texture); colors (N, 3) or (N, 4), float in [0, 1] (linear) or uint8 (sRGB).
+texture: an (H, W, 3) or (H, W, 4) uint8 image (sRGB, row 0 at the top), the material's base
+color map; needs uvs. material: a facet.Material (default: white Lambert). pose: a 4x4
+object-to-world matrix (default: identity). Arrays are copied.)doc")
+      .def(
+          "add_light",
+          [](SceneHandle& handle, py::handle value) {
+            const Light light = object_of<Light>(value, "add_light", "light", "Light");
+            change_scene(handle, [&](SceneHandle& h) {
+              if (h.default_lights) h.scene.lighting.lights.clear();
+              h.default_lights = false;
+              h.scene.lighting.lights.push_back(light);
+            });
+          },
+          py::arg("light"),
+          "Adds a facet.Light. The first one replaces the scene's default lights (the default "
+          "sun, or the three-point lights a file without lights gets); a file's own lights "
+          "stay.")
+      .def(
+          "clear_lights",
+          [](SceneHandle& handle) {
+            change_scene(handle, [](SceneHandle& h) {
+              h.scene.lighting.lights.clear();
+              h.default_lights = false;
+            });
+          },
+          "Removes every light (the ambient light stays).")
+      .def_property_readonly(
+          "lights",
+          [](const SceneHandle& handle) {
+            std::shared_lock lock(handle.mutex);
+            return handle.scene.lighting.lights;
+          },
+          "The lights, as a list of copies.")
+      .def_property(
+          "ambient",
+          [](const SceneHandle& handle) {
+            std::shared_lock lock(handle.mutex);
+            return to_tuple(handle.scene.lighting.ambient);
+          },
+          [](SceneHandle& handle, py::handle value) {
+            const glm::vec3 ambient = vec3(value, {"Scene", "ambient"});
+            if (ambient.r < 0.0f || ambient.g < 0.0f || ambient.b < 0.0f) {
+              throw Error("Scene: ambient must not be negative");
+            }
+            change_scene(handle, [&](SceneHandle& h) { h.scene.lighting.ambient = ambient; });
+          },
+          "Linear RGB light added to every lit surface.")
+      .def_property(
+          "camera",
+          [](const SceneHandle& handle) {
+            std::shared_lock lock(handle.mutex);
+            return handle.scene.camera;
+          },
+          [](SceneHandle& handle, py::handle value) {
+            const Camera camera = object_of<Camera>(value, "Scene", "camera", "Camera");
+            change_scene(handle, [&](SceneHandle& h) { h.scene.camera = camera; });
+          },
+          "The default view (render(scene) without a camera): for a loaded file, a camera that "
+          "frames the whole model.")
+      .def_property_readonly(
+          "cameras",
+          [](const SceneHandle& handle) {
+            std::shared_lock lock(handle.mutex);
+            return handle.scene.cameras;
+          },
+          "The cameras stored in a loaded file (world space).")
+      .def_property_readonly("instance_count",
+                             [](const SceneHandle& handle) {
+                               std::shared_lock lock(handle.mutex);
+                               return handle.instance_count;
+                             })
+      .def_property_readonly("triangle_count",
+                             [](const SceneHandle& handle) {
+                               std::shared_lock lock(handle.mutex);
+                               return handle.scene.triangle_count();
+                             })
+      .def_property_readonly("bounds", &bounds,
+                             "((min x, y, z), (max x, y, z)) around every instance in world "
+                             "space, or None for an empty scene.")
+      .def("__repr__", [](const SceneHandle& handle) {
+        std::shared_lock lock(handle.mutex);
+        std::ostringstream out;
+        out << "<facet.Scene: " << handle.instance_count << " instances, "
+            << handle.scene.triangle_count() << " triangles, "
+            << handle.scene.lighting.lights.size() << " lights>";
+        return out.str();
+      });
+
+  m.def("load", &load, py::arg("path"), py::arg("crease_angle") = 80.0,
+        R"doc(
+Reads a model file into a Scene, as `facet render` does: OBJ+MTL, glTF 2.0 (.gltf/.glb), PLY,
+STL, 3DS, FBX, COLLADA, OFF and .d. Meshes without normals get smooth ones, split where faces
+meet at more than crease_angle degrees. The scene's camera frames the model; a file without
+lights gets three lights around that view. Problems that do not stop the import (a missing
+texture) are Python warnings; the rest raise facet.Error.)doc");
+}
+
+}  // namespace facet::python

@@ -1,0 +1,193 @@
+"""Frames as NumPy arrays: color, depth in scene units, outputs asked for, PNG files."""
+import numpy as np
+import pytest
+
+import facet
+from scenes import front_camera, icosphere, quad, unlit
+
+
+def srgb8(linear):
+    """The 8-bit sRGB code of a linear value (IEC 61966-2-1)."""
+    linear = np.asarray(linear, np.float64)
+    encoded = np.where(linear <= 0.0031308, linear * 12.92, 1.055 * linear ** (1 / 2.4) - 0.055)
+    return np.round(encoded * 255).astype(int)
+
+
+def test_color_is_srgb_uint8_with_alpha_and_the_background_elsewhere():
+    vertices, faces, _ = quad(half=0.5)
+    scene = facet.Scene()
+    scene.add_mesh(vertices, faces, material=unlit((1.0, 0.0, 0.0)))
+    renderer = facet.Renderer(64, 48, background=(0, 0, 1, 0.5))
+    color = renderer.render(scene, front_camera())["color"]
+    assert color.shape == (48, 64, 4) and color.dtype == np.uint8
+    assert tuple(color[24, 32]) == (255, 0, 0, 255)
+    assert tuple(color[0, 0]) == (0, 0, 255, 128)
+
+
+def test_float_color_is_linear():
+    vertices, faces, _ = quad(half=0.5)
+    scene = facet.Scene()
+    scene.add_mesh(vertices, faces, material=unlit((0.5, 0.25, 0.125)))
+    renderer = facet.Renderer(64, 48)
+    frames = {
+        format: renderer.render(scene, front_camera(), ["color"], color_format=format)["color"]
+        for format in ("uint8", "float")
+    }
+    assert frames["float"].dtype == np.float32
+    assert frames["float"][24, 32] == pytest.approx((0.5, 0.25, 0.125, 1.0), abs=1e-6)
+    assert np.abs(frames["uint8"][24, 32, :3] - srgb8([0.5, 0.25, 0.125])).max() <= 1
+
+
+@pytest.mark.parametrize("distance", [0.75, 4.0, 37.0])
+def test_depth_is_the_distance_along_the_camera_axis(distance):
+    # A wall across the upper half of the view at `distance`, nothing below.
+    vertices = np.array(
+        [[-100, 0, -distance], [100, 0, -distance], [100, 100, -distance], [-100, 100, -distance]],
+        np.float32,
+    )
+    scene = facet.Scene()
+    scene.add_mesh(vertices, [[0, 1, 2], [0, 2, 3]], material=unlit())
+    camera = facet.Camera.look_at((0, 0, 0), (0, 0, -1), (0, 1, 0), 60, 0.5, 50)
+    depth = facet.Renderer(64, 48).render(scene, camera)["depth"]
+    assert depth.shape == (48, 64) and depth.dtype == np.float32
+    # Along the axis, not along the ray: the same at the centre and at the wall's corners.
+    assert depth[12, 32] == pytest.approx(distance, rel=1e-4)
+    assert depth[0, 0] == pytest.approx(distance, rel=1e-4)
+    assert np.all(depth[30:, :] == 0)  # nothing drawn
+
+
+def test_depth_of_a_sphere_matches_its_geometry():
+    vertices, faces = icosphere(3)
+    scene = facet.Scene()
+    scene.add_mesh(vertices, faces, material=unlit())
+    depth = facet.Renderer(96, 96).render(scene, front_camera(4.0, 40.0), ["depth"])["depth"]
+    assert depth[48, 48] == pytest.approx(3.0, abs=0.01)  # the sphere's front point
+    drawn = depth > 0
+    assert drawn[48, 48] and not drawn[0, 0]
+    assert depth[drawn].max() < 4.0
+
+
+def test_outputs_are_the_ones_asked_for():
+    scene = facet.Scene()
+    scene.add_mesh(*quad()[:2])
+    renderer = facet.Renderer(32, 32)
+    assert set(renderer.render(scene, front_camera())) == {"color", "depth"}
+    assert list(renderer.render(scene, front_camera(), ("depth",))) == ["depth"]
+    assert list(renderer.render(scene, front_camera(), "color")) == ["color"]
+    assert list(renderer.render(scene, front_camera(), ["depth", "color", "depth"])) == [
+        "depth",
+        "color",
+    ]
+    assert facet.OUTPUTS[:2] == ("color", "depth")
+
+
+def test_arrays_own_their_memory_and_are_fresh_each_frame():
+    scene = facet.Scene()
+    scene.add_mesh(*quad()[:2])
+    renderer = facet.Renderer(32, 32)
+    first = renderer.render(scene, front_camera())
+    for array in first.values():
+        assert array.flags["C_CONTIGUOUS"] and array.flags["WRITEABLE"]
+        assert array.base is not None  # the buffer the renderer filled, not a copy
+    first["color"][:] = 7
+    second = renderer.render(scene, front_camera())
+    assert not np.array_equal(first["color"], second["color"])
+
+
+def test_the_aspect_comes_from_the_renderer():
+    # A square seen straight on is square in any image shape.
+    vertices, faces, _ = quad(half=0.5)
+    scene = facet.Scene()
+    scene.add_mesh(vertices, faces, material=unlit())
+    camera = front_camera()
+    for width, height in ((96, 48), (48, 96), (64, 64)):
+        drawn = facet.Renderer(width, height).render(scene, camera, ["color"])["color"][..., 0] > 0
+        rows, columns = np.nonzero(drawn)
+        assert rows.ptp() == pytest.approx(columns.ptp(), abs=1)
+
+
+def test_the_scene_camera_is_the_default():
+    scene = facet.Scene()
+    scene.add_mesh(*quad(half=2)[:2], material=unlit())
+    scene.camera = front_camera(1.0)  # close: the quad fills the view
+    color = facet.Renderer(32, 32).render(scene)["color"]
+    assert np.all(color[..., 0] == 255)
+
+
+def test_vertex_colors_uint8_are_srgb_and_float_linear():
+    vertices, faces, _ = quad(half=2)
+    renderer = facet.Renderer(16, 16)
+    for colors, expected in (
+        (np.full((4, 3), (200, 100, 50), np.uint8), (200, 100, 50)),
+        (np.full((4, 3), 0.5, np.float32), tuple(srgb8([0.5] * 3))),
+    ):
+        scene = facet.Scene()
+        scene.add_mesh(vertices, faces, colors=colors, material=unlit())
+        pixel = renderer.render(scene, front_camera(), ["color"])["color"][8, 8, :3]
+        assert np.abs(pixel - expected).max() <= 1
+
+
+def test_texture_row_zero_is_the_top_and_v_points_up():
+    vertices, faces, uvs = quad(half=1)
+    texture = np.array(
+        [[[255, 0, 0], [0, 255, 0]], [[0, 0, 255], [255, 255, 255]]], np.uint8
+    ).repeat(2, axis=0).repeat(2, axis=1)  # red green / blue white, 2x2 texels each
+    scene = facet.Scene()
+    scene.add_mesh(vertices, faces, uvs=uvs, texture=texture, material=unlit())
+    # The quad just fills the view (tan 30 degrees = 1 / sqrt(3)): each quarter of the image
+    # shows one quarter of the texture, and the filter reads only its color at the middle.
+    camera = front_camera(3**0.5, 60.0)
+    color = facet.Renderer(64, 64).render(scene, camera, ["color"])["color"].astype(int)
+    for (row, column), expected in (
+        ((16, 16), (255, 0, 0)),  # top left
+        ((16, 48), (0, 255, 0)),
+        ((48, 16), (0, 0, 255)),
+        ((48, 48), (255, 255, 255)),
+    ):
+        assert np.abs(color[row, column, :3] - expected).max() <= 1, (row, column)
+
+
+def test_lights_light_lambert_surfaces():
+    vertices, faces, _ = quad(half=2)
+    renderer = facet.Renderer(16, 16)
+
+    def brightness(light):
+        scene = facet.Scene()
+        scene.add_mesh(vertices, faces, material=facet.Material((0.8, 0.8, 0.8)))
+        scene.ambient = (0, 0, 0)
+        if light is None:
+            scene.clear_lights()
+        else:
+            scene.add_light(light)
+        return int(renderer.render(scene, front_camera(), ["color"])["color"][8, 8, 0])
+
+    assert brightness(None) == 0
+    facing = brightness(facet.Light.directional((0, 0, -1)))
+    slanted = brightness(facet.Light.directional((0, -1, -1)))
+    point = brightness(facet.Light.point((0, 0, 1), intensity=1))
+    spot = brightness(facet.Light.spot((0, 0, 1), (0, 0, -1)))
+    assert facing > slanted > 0
+    assert point > 0 and spot > 0
+
+
+def test_stats_of_the_last_frame():
+    scene = facet.Scene()
+    scene.add_mesh(*quad()[:2])
+    renderer = facet.Renderer(32, 32, threads=2)
+    renderer.render(scene, front_camera())
+    assert renderer.stats["triangles_in"] == 2 and renderer.stats["drawn"] == 2
+    assert (renderer.width, renderer.height, renderer.threads, renderer.msaa) == (32, 32, 2, 1)
+
+
+def test_write_png(tmp_path):
+    image = np.zeros((20, 30, 4), np.uint8)
+    image[..., 0] = 255
+    image[..., 3] = 255
+    facet.write_png(tmp_path / "red.png", image)
+    facet.write_png(str(tmp_path / "rgb.png"), image[..., :3])
+    for name in ("red.png", "rgb.png"):
+        data = (tmp_path / name).read_bytes()
+        assert data[:8] == b"\x89PNG\r\n\x1a\n"
+        width, height = int.from_bytes(data[16:20], "big"), int.from_bytes(data[20:24], "big")
+        assert (width, height) == (30, 20)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["red.png", "rgb.png"]  # no leftovers

@@ -1,0 +1,183 @@
+"""Scenes from arrays and from files: instance ids, attributes, materials, lights, cameras."""
+import math
+import pathlib
+import warnings
+
+import numpy as np
+import pytest
+
+import facet
+from scenes import icosphere, quad, triangle, write_obj
+
+
+def test_add_mesh_returns_instance_ids_in_the_order_added():
+    scene = facet.Scene()
+    assert scene.instance_count == 0
+    assert scene.bounds is None
+    assert [scene.add_mesh(*triangle()) for _ in range(3)] == [1, 2, 3]
+    assert scene.instance_count == 3
+    assert scene.triangle_count == 3
+
+
+def test_add_mesh_takes_lists_and_any_real_dtype():
+    scene = facet.Scene()
+    scene.add_mesh([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]])
+    for dtype in (np.int8, np.uint16, np.int32, np.uint64):
+        scene.add_mesh(np.eye(3, dtype=np.float64), np.array([[0, 1, 2]], dtype))
+    assert scene.instance_count == 5
+
+
+def test_add_mesh_takes_every_attribute():
+    vertices, faces, uvs = quad()
+    scene = facet.Scene()
+    texture = np.zeros((4, 8, 3), np.uint8)
+    pose = np.eye(4)
+    pose[:3, 3] = (10, 20, 30)
+    instance = scene.add_mesh(
+        vertices,
+        faces,
+        normals=np.tile([0, 0, 1], (4, 1)),
+        uvs=uvs,
+        colors=np.full((4, 4), 0.5, np.float32),
+        texture=texture,
+        material=facet.Material(shading="phong"),
+        pose=pose,
+        name="floor",
+    )
+    assert instance == 1
+    lower, upper = scene.bounds
+    assert lower == pytest.approx((9, 19, 30))
+    assert upper == pytest.approx((11, 21, 30))
+    scene.add_mesh(vertices, faces, colors=np.full((4, 3), 200, np.uint8))
+
+
+def test_add_mesh_copies_its_arrays():
+    vertices, faces = triangle()
+    scene = facet.Scene()
+    scene.add_mesh(vertices, faces)
+    vertices[:] = 100  # changes nothing in the scene
+    lower, upper = scene.bounds
+    assert upper == pytest.approx((1, 1, 0))
+
+
+def test_material_defaults_and_keywords():
+    material = facet.Material()
+    assert material.shading == "lambert"
+    assert material.base_color == (1.0, 1.0, 1.0, 1.0)
+    assert material.roughness == 0.6
+    assert material.cull == "back"
+    material = facet.Material(
+        (0.2, 0.4, 0.6), "pbr", metallic=1.0, roughness=0.25, cull="none", alpha_mode="blend"
+    )
+    assert material.base_color == (0.2, 0.4, 0.6, 1.0)
+    assert (material.shading, material.metallic, material.roughness) == ("pbr", 1.0, 0.25)
+    assert (material.cull, material.alpha_mode) == ("none", "blend")
+    material.shading = "unlit"
+    material.emissive = (2, 0, 0)
+    assert material.shading == "unlit" and material.emissive == (2.0, 0.0, 0.0)
+    assert "shading='unlit'" in repr(material)
+    assert set(facet.SHADING_MODELS) >= {"unlit", "lambert", "phong", "pbr", "flat"}
+
+
+def test_lights_the_first_add_light_replaces_the_default_sun():
+    scene = facet.Scene()
+    assert [light.type for light in scene.lights] == ["directional"]  # the library's sun
+    scene.add_light(facet.Light.point((0, 2, 0), color=(1, 0.5, 0), intensity=3, range=10))
+    scene.add_light(facet.Light.spot((0, 3, 0), (0, -1, 0), inner_cone=10, outer_cone=20))
+    scene.add_light(facet.Light.directional((0, -1, 0)))
+    assert [light.type for light in scene.lights] == ["point", "spot", "directional"]
+    point = scene.lights[0]
+    assert (point.position, point.color, point.intensity, point.range) == (
+        (0.0, 2.0, 0.0),
+        (1.0, 0.5, 0.0),
+        3.0,
+        10.0,
+    )
+    assert (scene.lights[1].inner_cone, scene.lights[1].outer_cone) == (10.0, 20.0)
+    assert "facet.Light.spot(" in repr(scene.lights[1])
+    scene.clear_lights()
+    assert scene.lights == []
+    scene.ambient = (0.5, 0.25, 0)
+    assert scene.ambient == (0.5, 0.25, 0.0)
+
+
+def test_camera_fields_and_matrices():
+    camera = facet.Camera.look_at(eye=(0, 0, 5), target=(0, 0, 0), fov_y=45, near=0.5, far=50)
+    assert (camera.eye, camera.target, camera.up) == ((0, 0, 5), (0, 0, 0), (0, 1, 0))
+    assert (camera.fov_y, camera.near, camera.far) == (45.0, 0.5, 50.0)
+    view = camera.view_matrix()
+    assert view @ np.array([0, 0, 5, 1]) == pytest.approx([0, 0, 0, 1])  # eye at the origin
+    assert view @ np.array([0, 0, 0, 1]) == pytest.approx([0, 0, -5, 1])  # target down -Z
+    projection = camera.projection_matrix(2.0)
+    assert projection[1, 1] == pytest.approx(1 / math.tan(math.radians(22.5)))
+    assert projection[0, 0] == pytest.approx(projection[1, 1] / 2)
+    camera.eye = (1, 2, 3)
+    camera.fov_y = 30
+    assert camera.eye == (1, 2, 3) and camera.fov_y == 30
+    assert "facet.Camera.look_at(" in repr(camera)
+
+
+def test_scene_camera_can_be_set():
+    scene = facet.Scene()
+    camera = facet.Camera.look_at((1, 2, 3), (0, 0, 0))
+    scene.camera = camera
+    assert scene.camera.eye == (1, 2, 3)
+
+
+def test_load_reads_a_model_frames_it_and_numbers_its_instances(tmp_path):
+    vertices, faces = icosphere(1)
+    path = write_obj(tmp_path / "sphere.obj", vertices + 5, faces)
+    scene = facet.load(path)  # a pathlib.Path
+    assert scene.instance_count == 1
+    assert scene.triangle_count == len(faces)
+    assert scene.bounds[0] == pytest.approx((4, 4, 4), abs=1e-5)
+    # The camera frames the model; a file without lights gets three around that view.
+    assert scene.camera.target == pytest.approx((5, 5, 5), abs=1e-5)
+    assert len(scene.lights) == 3
+    assert scene.add_mesh(*triangle()) == 2
+    scene.add_light(facet.Light.directional((0, -1, 0)))
+    assert len(scene.lights) == 1
+    assert facet.load(str(path)).instance_count == 1
+
+
+def test_load_numbers_instances_of_every_object(tmp_path):
+    vertices, faces = icosphere(0)
+    text = ""
+    for index, offset in enumerate((0, 3, 6)):
+        text += f"o ball{index}\n"
+        text += "".join(f"v {x + offset} {y} {z}\n" for x, y, z in vertices)
+    for index in range(3):
+        text += f"g ball{index}\n"
+        base = index * len(vertices) + 1
+        text += "".join(f"f {a + base} {b + base} {c + base}\n" for a, b, c in faces)
+    (tmp_path / "balls.obj").write_text(text)
+    scene = facet.load(tmp_path / "balls.obj")
+    assert scene.instance_count == 3
+    assert scene.triangle_count == 3 * len(faces)
+
+
+def test_load_turns_import_problems_into_warnings(tmp_path):
+    vertices, faces, uvs = quad()
+    (tmp_path / "quad.mtl").write_text("newmtl paint\nmap_Kd missing.png\n")
+    lines = ["mtllib quad.mtl", "usemtl paint"]
+    lines += [f"v {x} {y} {z}" for x, y, z in vertices]
+    lines += [f"vt {u} {v}" for u, v in uvs]
+    lines += [f"f {a + 1}/{a + 1} {b + 1}/{b + 1} {c + 1}/{c + 1}" for a, b, c in faces]
+    (tmp_path / "quad.obj").write_text("\n".join(lines) + "\n")
+    with pytest.warns(UserWarning, match="missing.png"):
+        scene = facet.load(tmp_path / "quad.obj")
+    assert scene.instance_count == 1
+
+
+def test_load_names_the_missing_file(tmp_path):
+    with pytest.raises(facet.Error, match="nothing.obj: no such file"):
+        facet.load(tmp_path / "nothing.obj")
+    with pytest.raises(facet.Error, match="is a directory"):
+        facet.load(tmp_path)
+
+
+def test_version():
+    assert facet.__version__.count(".") == 2
+    source = pathlib.Path(__file__).resolve().parents[2] / "CMakeLists.txt"
+    if source.exists():
+        assert f"VERSION {facet.__version__}" in source.read_text()

@@ -1,14 +1,13 @@
 #!/usr/bin/env python3
 """Renders a model from viewpoints spread evenly over a sphere around it, with facet: color,
-depth (and instance masks, once facet renders them) and every view's camera, into a folder.
+depth, instance masks and every view's camera, into a folder.
 
     python3 examples/python/dataset.py model.glb out/ --views 100 --size 640x480
 
 Writes into the output folder:
     color_000.png ...     RGBA, sRGB (the background transparent)
     depth_000.npy ...     float32 (H, W): distance along the camera axis, scene units, 0 = empty
-    instance_000.npy ...  uint32 (H, W): the instance ids of facet.Scene, 0 = empty (when
-                          "instance" is in facet.OUTPUTS)
+    instance_000.npy ...  uint32 (H, W): the instance ids of facet.Scene, 0 = empty
     cameras.npz           per view (first axis): world_to_camera (OpenGL axes), projection
                           (OpenGL), intrinsics K and world_to_camera_opencv (OpenCV), eye
     cameras.json          the views in words: eye, target, up, field of view, near, far
@@ -28,15 +27,12 @@ import numpy as np
 import facet
 import views
 
-# TODO(#28, Camera::from_intrinsics): once facet.Camera.from_intrinsics exists, take K from a
-# --intrinsics argument and make each camera with it instead of from --fov.
-
 
 def arguments(argv):
     parser = argparse.ArgumentParser(
         description="Render a model from viewpoints on a sphere around it: color PNGs, depth "
-        "as .npy (distance along the camera axis, 0 where empty), instance ids when facet has "
-        "them, and the cameras (cameras.npz, cameras.json).",
+        "as .npy (distance along the camera axis, 0 where empty), instance ids, and the "
+        "cameras (cameras.npz, cameras.json).",
     )
     parser.add_argument("model", help="model file: glTF/GLB, OBJ, PLY, STL, FBX, ... (facet.load)")
     parser.add_argument("output", help="folder to write into (made if missing)")
@@ -76,7 +72,7 @@ def main(argv=None):
     try:
         scene = facet.load(options.model)
         cameras = cameras_around(scene, options.views, options.fov, width / height)
-        outputs = ["color", "depth"] + (["instance"] if "instance" in facet.OUTPUTS else [])
+        outputs = ["color", "depth", "instance"]
         os.makedirs(options.output, exist_ok=True)
         local = threading.local()
 
@@ -88,8 +84,7 @@ def main(argv=None):
             stem = os.path.join(options.output, f"{{}}_{index:03d}")
             facet.write_png(stem.format("color") + ".png", frame["color"])
             np.save(stem.format("depth") + ".npy", frame["depth"])
-            if "instance" in frame:
-                np.save(stem.format("instance") + ".npy", frame["instance"])
+            np.save(stem.format("instance") + ".npy", frame["instance"])
 
         start = time.perf_counter()
         with ThreadPoolExecutor(options.workers) as pool:

@@ -2,6 +2,7 @@
 // camera's intrinsics (docs/cameras.md). Also a first-person (yaw/pitch) camera form.
 #pragma once
 
+#include <glm/ext/vector_int2.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -53,6 +54,9 @@ struct Camera {
   // Where the optical axis meets the image, in NDC ((0, 0) is the centre, +y up): an off-centre
   // principal point. It moves the image, not the eye, as a shift lens does.
   glm::vec2 lens_shift{0.0f};
+  // The image a camera from intrinsics is calibrated for (Intrinsics::width and height); (0, 0)
+  // for the others, which fit an image of any size through their aspect.
+  glm::ivec2 calibrated_size{0};
 
   static Camera look_at(glm::vec3 eye, glm::vec3 target, glm::vec3 up = {0, 1, 0},
                         float fov_y_degrees = 60.0f, float aspect = 16.0f / 9.0f,

@@ -218,23 +218,38 @@ std::shared_ptr<const Texture> texture_image(py::handle value, const Argument& a
   }
 }
 
-glm::mat4 matrix4(py::handle value, const Argument& argument) {
+namespace {
+
+// An N x N matrix (row-major as written on paper), finite.
+template <int N>
+glm::mat<N, N, float> square_matrix(py::handle value, const Argument& argument) {
   const py::array a = as_array(value, argument);
   const bool kind_ok = is_real(a);
-  if (!kind_ok || a.ndim() != 2 || a.shape(0) != 4 || a.shape(1) != 4) {
-    throw Error(argument.text() + " must be a 4x4 float matrix, " + got(a, kind_ok));
+  if (!kind_ok || a.ndim() != 2 || a.shape(0) != N || a.shape(1) != N) {
+    throw Error(argument.text() + " must be a " + std::to_string(N) + "x" + std::to_string(N) +
+                " float matrix, " + got(a, kind_ok));
   }
   const DoubleArray d = DoubleArray::ensure(a);
   const double* data = d.data();
-  glm::mat4 m;
-  for (int row = 0; row < 4; ++row) {
-    for (int column = 0; column < 4; ++column) {
-      const double v = data[row * 4 + column];
+  glm::mat<N, N, float> m;
+  for (int row = 0; row < N; ++row) {
+    for (int column = 0; column < N; ++column) {
+      const double v = data[row * N + column];
       if (!finite_float(v)) throw Error(argument.text() + " must be finite");
       m[column][row] = static_cast<float>(v);  // glm is column-major
     }
   }
   return m;
+}
+
+}  // namespace
+
+glm::mat3 matrix3(py::handle value, const Argument& argument) {
+  return square_matrix<3>(value, argument);
+}
+
+glm::mat4 matrix4(py::handle value, const Argument& argument) {
+  return square_matrix<4>(value, argument);
 }
 
 namespace {
@@ -285,6 +300,14 @@ float number(py::handle value, const Argument& argument) {
     throw Error(argument.text() + " must be a finite number, got " + std::to_string(v));
   }
   return static_cast<float>(v);
+}
+
+int integer(py::handle value, const Argument& argument) {
+  const float v = number(value, argument);
+  if (v != std::floor(v) || std::abs(v) > 1e9f) {
+    throw Error(argument.text() + " must be a whole number, got " + std::to_string(v));
+  }
+  return static_cast<int>(v);
 }
 
 std::string to_text(glm::vec3 v) { return values_text(v, 3); }

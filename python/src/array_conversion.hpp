@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -57,14 +58,16 @@ struct Rgba8Image {
 };
 Rgba8Image rgba8_image(py::handle value, const Argument& argument);
 
-// A 4x4 matrix (row-major as written on paper: m[row][column]), finite.
+// A 3x3 or 4x4 matrix (row-major as written on paper: m[row][column]), finite.
+glm::mat3 matrix3(py::handle value, const Argument& argument);
 glm::mat4 matrix4(py::handle value, const Argument& argument);
 
 // Small vectors: a sequence of 3 finite numbers; a color of 3 or 4 (alpha 1 when missing).
 glm::vec3 vec3(py::handle value, const Argument& argument);
 glm::vec4 rgba(py::handle value, const Argument& argument);
-// A finite float.
+// A finite float; a whole number.
 float number(py::handle value, const Argument& argument);
+int integer(py::handle value, const Argument& argument);
 
 // "(1, 0.5, 0)", for messages and reprs.
 std::string to_text(glm::vec3 v);

@@ -14,15 +14,13 @@ namespace facet::python {
 
 namespace py = pybind11;
 
-// facet.Scene: a facet::Scene with what the module adds. Instance ids number the scene's mesh
-// instances 1, 2, ... in node order and, within a node, in instance order: the order
-// draw_scene draws them in (0 is left for "nothing").
+// facet.Scene: a facet::Scene with what the module adds. Instance ids are draw_scene's: node n's
+// meshes have the id n + 1 (0 is left for "nothing").
 struct SceneHandle {
   Scene scene;
   // The lights are the scene's defaults (the library's sun, or the three-point lights of a
   // file without lights): the first add_light replaces them, as `facet render --light` does.
   bool default_lights = true;
-  int instance_count = 0;
   // render() reads the scene with the GIL released, under a shared lock; every change takes it
   // exclusively, so a Python thread changing a scene another one renders waits for the frame.
   mutable std::shared_mutex mutex;

@@ -3,7 +3,9 @@
 // one camera serves images of any shape.
 #include "camera_bindings.hpp"
 
+#include <cmath>
 #include <sstream>
+#include <string>
 
 #include "array_conversion.hpp"
 #include "bindings.hpp"
@@ -34,7 +36,17 @@ void change(Camera& camera, const char* field, Set&& set) {
 }  // namespace
 
 Camera camera_for_image(Camera camera, int width, int height) {
-  camera.aspect = static_cast<float>(width) / static_cast<float>(height);
+  if (camera.calibrated_size != glm::ivec2(0)) {
+    // A calibrated camera keeps its own aspect: it is right for its image size alone.
+    if (camera.calibrated_size != glm::ivec2(width, height)) {
+      throw Error("render: camera: calibrated for " + std::to_string(camera.calibrated_size.x) +
+                  "x" + std::to_string(camera.calibrated_size.y) + " images, the renderer makes " +
+                  std::to_string(width) + "x" + std::to_string(height) +
+                  " (scale the intrinsics with the image)");
+    }
+  } else {
+    camera.aspect = static_cast<float>(width) / static_cast<float>(height);
+  }
   check(camera, "render");
   return camera;
 }
@@ -60,10 +72,68 @@ camera unable to project raises facet.Error).)doc");
       py::arg("fov_y") = 60.0, py::arg("near") = 0.1, py::arg("far") = 100.0,
       "A camera at eye looking at target, up pointing up; fov_y is the vertical field of view in "
       "degrees; near and far are the clip distances in scene units.");
-  // TODO(#28, Camera::orthographic): bind facet.Camera.orthographic(...) here once the core
-  // has Camera::orthographic (being added to include/facet/camera.hpp); not before.
-  // TODO(#28, Camera::from_intrinsics): bind facet.Camera.from_intrinsics(...) here once the
-  // core has Camera::from_intrinsics; dataset.py's intrinsics() then comes from it.
+  camera.def_static(
+      "orthographic",
+      [](py::handle eye, py::handle target, py::handle up, py::handle height, py::handle near,
+         py::handle far) {
+        constexpr const char* kName = "Camera.orthographic";
+        const float view_height = number(height, {kName, "height"});
+        if (!(view_height > 0.0f) || !std::isfinite(view_height)) {
+          throw Error(std::string(kName) + ": height must be a positive number of scene units");
+        }
+        Camera out = Camera::orthographic(
+            vec3(eye, {kName, "eye"}), vec3(target, {kName, "target"}), vec3(up, {kName, "up"}),
+            view_height, 1.0f, number(near, {kName, "near"}), number(far, {kName, "far"}));
+        check(out, kName);
+        return out;
+      },
+      py::arg("eye"), py::arg("target"), py::arg("up") = py::make_tuple(0.0, 1.0, 0.0),
+      py::arg("height") = 2.0, py::arg("near") = 0.1, py::arg("far") = 100.0,
+      "A parallel projection from eye toward target, up pointing up, whose view is height scene "
+      "units tall at every distance (and height x the image's aspect wide).");
+  camera.def_static(
+      "from_intrinsics",
+      [](py::handle k, py::handle width, py::handle height, py::handle near, py::handle far,
+         py::handle pose, const std::string& convention) {
+        constexpr const char* kName = "Camera.from_intrinsics";
+        const glm::mat3 K = matrix3(k, {kName, "K"});  // K[column][row]
+        if (K[0][1] != 0.0f || K[1][0] != 0.0f || K[0][2] != 0.0f || K[1][2] != 0.0f ||
+            K[2][2] != 1.0f) {
+          throw Error(std::string(kName) +
+                      ": K must be [[fx, 0, cx], [0, fy, cy], [0, 0, 1]] (no skew)");
+        }
+        Intrinsics intrinsics;
+        intrinsics.fx = K[0][0], intrinsics.fy = K[1][1];
+        intrinsics.cx = K[2][0], intrinsics.cy = K[2][1];
+        intrinsics.width = integer(width, {kName, "width"});
+        intrinsics.height = integer(height, {kName, "height"});
+        CameraConvention axes;
+        if (convention == "opencv") {
+          axes = CameraConvention::opencv;
+        } else if (convention == "opengl") {
+          axes = CameraConvention::opengl;
+        } else {
+          throw Error(std::string(kName) + ": convention must be 'opencv' or 'opengl', got '" +
+                      convention + "'");
+        }
+        const glm::mat4 to_world =
+            pose.is_none() ? glm::mat4(1.0f) : matrix4(pose, {kName, "pose"});
+        try {
+          return Camera::from_intrinsics(intrinsics, to_world, axes, number(near, {kName, "near"}),
+                                         number(far, {kName, "far"}));
+        } catch (const Error& e) {
+          throw Error(std::string(kName) + ": " + e.what());
+        }
+      },
+      py::arg("K"), py::arg("width"), py::arg("height"), py::arg("near") = 0.1,
+      py::arg("far") = 100.0, py::arg("pose") = py::none(), py::arg("convention") = "opencv",
+      R"doc(
+A calibrated pinhole camera for width x height images. K = [[fx, 0, cx], [0, fy, cy], [0, 0, 1]]
+in pixels, OpenCV's pixel-centre convention: a camera-frame point (X, Y, Z) is drawn in pixel
+(round(fx X / Z + cx), round(fy Y / Z + cy)), u right and v down from the top-left. pose: the
+4x4 camera-to-world rigid transform (default: identity, the camera at the origin); convention
+says how its axes read: "opencv" (x right, y down, z forward) or "opengl" (x right, y up,
+looking down -z). Render it with a renderer of width x height (docs/cameras.md).)doc");
   camera
       .def_property(
           "eye", [](const Camera& c) { return to_tuple(c.eye); },

@@ -5,6 +5,7 @@
 #include <pybind11/stl.h>
 
 #include <array>
+#include <cstdint>
 #include <mutex>
 #include <string>
 #include <variant>
@@ -29,7 +30,7 @@ struct RenderedFrame {
 
 // One output's values and their shape, made without the GIL; an array of them with it.
 struct OutputValues {
-  std::variant<std::vector<std::uint8_t>, std::vector<float>> values;
+  std::variant<std::vector<std::uint8_t>, std::vector<float>, std::vector<std::uint32_t>> values;
   std::vector<py::ssize_t> shape;
 };
 
@@ -43,31 +44,46 @@ OutputValues take_color(RenderedFrame& frame) {
   return {std::move(frame.image.rgba8()), std::move(shape)};
 }
 
-// "depth": H x W float32, the distance along the camera's axis in scene units, 0 where nothing
-// was drawn. Computed from the window depth the framebuffer holds (1 where nothing was drawn:
-// framebuffer.hpp), so a surface at the far plane itself reads 0 too.
-OutputValues take_depth(RenderedFrame& frame) {
-  std::vector<float> depth = std::move(frame.image.depth());
-  // Camera::view_distance, written out so the loop has no call in it.
-  const double n = frame.camera.near_plane, f = frame.camera.far_plane;
-  for (float& d : depth) d = d < 1.0f ? static_cast<float>(n * f / (f - d * (f - n))) : 0.0f;
-  return {std::move(depth), {frame.image.height(), frame.image.width()}};
+// An extra output (facet::ExtraOutputs) moved out of the framebuffer: H x W, or H x W x
+// `channels` when there are several.
+template <class T>
+OutputValues image_of(std::vector<T>& values, const Framebuffer& image, int channels) {
+  std::vector<py::ssize_t> shape{image.height(), image.width()};
+  if (channels > 1) shape.push_back(channels);
+  return {std::move(values), std::move(shape)};
 }
 
 struct OutputKind {
   const char* name;
-  bool needs_depth;  // the framebuffer keeps its depth image (DepthImage::keep)
+  void (*request)(ExtraOutputs& outputs, NormalSpace normals);
   OutputValues (*take)(RenderedFrame& frame);
 };
 
-// TODO(#28, exact outputs): "normal", "instance" (the ids of SceneHandle), "triangle",
-// "barycentric" and "albedo" become one entry each here, with the take function that moves
-// them out of facet::Framebuffer, once the core writes them; "depth" then reads the exact
-// per-pixel depth instead of turning the window depth back into a distance.
-constexpr std::array<OutputKind, 2> kOutputs{{
-    {"color", false, take_color},
-    {"depth", true, take_depth},
+// Each output as the framebuffer holds it (facet/framebuffer.hpp's ExtraOutputs says what the
+// values are; 0 where nothing was drawn).
+constexpr std::array<OutputKind, 8> kOutputs{{
+    {"color", [](ExtraOutputs&, NormalSpace) {}, take_color},
+    {"depth", [](ExtraOutputs& o, NormalSpace) { o.view_depth = true; },
+     [](RenderedFrame& f) { return image_of(f.image.view_depth(), f.image, 1); }},
+    {"distance", [](ExtraOutputs& o, NormalSpace) { o.ray_distance = true; },
+     [](RenderedFrame& f) { return image_of(f.image.ray_distance(), f.image, 1); }},
+    {"normal", [](ExtraOutputs& o, NormalSpace space) { o.normals = space; },
+     [](RenderedFrame& f) { return image_of(f.image.normals(), f.image, 3); }},
+    {"instance", [](ExtraOutputs& o, NormalSpace) { o.instance_ids = true; },
+     [](RenderedFrame& f) { return image_of(f.image.instance_ids(), f.image, 1); }},
+    {"triangle", [](ExtraOutputs& o, NormalSpace) { o.triangle_ids = true; },
+     [](RenderedFrame& f) { return image_of(f.image.triangle_ids(), f.image, 1); }},
+    {"barycentric", [](ExtraOutputs& o, NormalSpace) { o.barycentrics = true; },
+     [](RenderedFrame& f) { return image_of(f.image.barycentrics(), f.image, 3); }},
+    {"albedo", [](ExtraOutputs& o, NormalSpace) { o.albedo = true; },
+     [](RenderedFrame& f) { return image_of(f.image.albedo(), f.image, 4); }},
 }};
+
+NormalSpace normal_space(const std::string& name) {
+  if (name == "world") return NormalSpace::world;
+  if (name == "camera") return NormalSpace::camera;
+  throw Error("render: normal_space must be 'world' or 'camera', got '" + name + "'");
+}
 
 std::string output_names() {
   std::string names;
@@ -123,7 +139,7 @@ class PyRenderer {
                   " is outside 1x1 .. " + std::to_string(Framebuffer::kMaxSize) + "x" +
                   std::to_string(Framebuffer::kMaxSize));
     }
-    // TODO(#28, anti-aliasing): msaa > 1 once the core resolves samples (another issue).
+    // Anti-aliasing is issue 27: until the core resolves samples, only msaa=1.
     if (msaa != 1) throw Error("Renderer: msaa is not available yet (use msaa=1)");
     RenderSettings settings;
     settings.threads = threads;
@@ -139,7 +155,7 @@ class PyRenderer {
   const FrameStats& stats() const { return stats_; }
 
   py::dict render(py::handle scene_value, py::handle camera_value, py::handle outputs,
-                  const std::string& format_name) {
+                  const std::string& format_name, const std::string& normals_name) {
     if (!py::isinstance<SceneHandle>(scene_value)) {
       throw Error("render: scene must be a facet.Scene, got " +
                   std::string(py::str(py::type::of(scene_value).attr("__name__"))));
@@ -147,8 +163,9 @@ class PyRenderer {
     const SceneHandle& scene = scene_value.cast<const SceneHandle&>();
     const std::vector<const OutputKind*> kinds = requested_outputs(outputs);
     const ColorFormat format = color_format(format_name);
-    bool depth = false;
-    for (const OutputKind* kind : kinds) depth = depth || kind->needs_depth;
+    const NormalSpace normals = normal_space(normals_name);
+    ExtraOutputs extra;
+    for (const OutputKind* kind : kinds) kind->request(extra, normals);
     Camera camera;
     if (camera_value.is_none()) {
       std::shared_lock lock(scene.mutex);
@@ -156,9 +173,8 @@ class PyRenderer {
     } else {
       camera = object_of<Camera>(camera_value, "render", "camera", "Camera");
     }
-    RenderedFrame frame{
-        Framebuffer(width_, height_, format, depth ? DepthImage::keep : DepthImage::none),
-        camera_for_image(camera, width_, height_)};
+    RenderedFrame frame{Framebuffer(width_, height_, format, DepthImage::none, extra),
+                        camera_for_image(camera, width_, height_)};
     std::vector<OutputValues> values;
     {
       py::gil_scoped_release release;
@@ -237,12 +253,22 @@ time.)doc")
            py::arg("tile_size") = 64)
       .def("render", &PyRenderer::render, py::arg("scene"), py::arg("camera") = py::none(),
            py::arg("outputs") = py::make_tuple("color", "depth"), py::kw_only(),
-           py::arg("color_format") = "uint8", R"doc(
+           py::arg("color_format") = "uint8", py::arg("normal_space") = "world", R"doc(
 Renders scene seen through camera (default: scene.camera) with the aspect of this renderer's
-image, and returns a dict of NumPy arrays, one per name in outputs (facet.OUTPUTS lists them):
-  color: (H, W, 4) uint8, sRGB color with linear alpha; color_format="float": float32 linear
-  depth: (H, W) float32, distance along the camera's axis in scene units; 0 where nothing
-         was drawn
+image (a camera from intrinsics keeps its own), and returns a dict of NumPy arrays, one per name
+in outputs (facet.OUTPUTS lists them). Every output but color holds 0 where nothing was drawn.
+  color:       (H, W, 4) uint8, sRGB color with linear alpha; color_format="float": float32
+               linear RGBA
+  depth:       (H, W) float32, distance along the camera's view axis, scene units
+  distance:    (H, W) float32, distance from the eye along the pixel's ray (orthographic: from
+               the image plane)
+  normal:      (H, W, 3) float32, unit normal in normal_space: "world", or "camera" (x right,
+               y up, z toward the viewer)
+  instance:    (H, W) uint32, the scene node drawn: the id add_mesh returned
+  triangle:    (H, W) uint32, the triangle's index in its mesh + 1 (nvdiffrast's convention)
+  barycentric: (H, W, 3) float32, perspective-correct weights of the triangle's vertices
+  albedo:      (H, W, 4) float32, linear RGBA: base color x vertex color x texture, unlit
+Each output beyond color costs a pass over the scene only when asked for (docs/outputs.md).
 Row 0 is the top of the image. The arrays own their memory (no copy is made).)doc")
       .def_property_readonly("width", &PyRenderer::width)
       .def_property_readonly("height", &PyRenderer::height)

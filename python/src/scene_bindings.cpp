@@ -47,9 +47,6 @@ std::unique_ptr<SceneHandle> load(py::handle path, py::handle crease_angle) {
     handle->scene = import_scene(file, options);
   }
   handle->default_lights = !handle->scene.has_file_lights;
-  for (const SceneNode& node : handle->scene.nodes) {
-    handle->instance_count += static_cast<int>(node.instances.size());
-  }
   // Problems that did not stop the import (a missing texture) as Python warnings.
   for (const std::string& warning : warnings) {
     if (PyErr_WarnEx(PyExc_UserWarning, warning.c_str(), 1) != 0) throw py::error_already_set();
@@ -88,8 +85,18 @@ int add_mesh(SceneHandle& handle, py::handle vertices, py::handle faces, py::han
   return change_scene(handle, [&](SceneHandle& h) {
     h.scene.add_object(std::move(mesh), std::move(look), transform, name);
     if (image) h.scene.textures.push_back(image);
-    return ++h.instance_count;
+    return static_cast<int>(h.scene.nodes.size());  // the new node's id: its index + 1
   });
+}
+
+// {id: name} of the nodes that draw meshes; the caller holds the scene's lock.
+py::dict instances(const SceneHandle& handle) {
+  py::dict ids;
+  for (std::size_t n = 0; n < handle.scene.nodes.size(); ++n) {
+    const SceneNode& node = handle.scene.nodes[n];
+    if (!node.instances.empty() || !node.coarser.empty()) ids[py::int_(n + 1)] = node.name;
+  }
+  return ids;
 }
 
 py::object bounds(const SceneHandle& handle) {
@@ -106,9 +113,9 @@ void bind_scene(py::module_& m) {
 What a renderer draws: meshes with their materials and poses, lights, and a default camera.
 
 Scene() starts empty, lit by the library's default sun and ambient light; facet.load(path)
-reads a model file. Every mesh instance has an id, 1, 2, ... in the order the scene draws
-them: add_mesh returns the new one's; a loaded file's instances are numbered in the file's
-node order first. 0 means "nothing" in per-pixel outputs.)doc");
+reads a model file. Every node that draws meshes has an instance id, its position among the
+scene's nodes plus 1, which the "instance" output shows (0 means "nothing"): add_mesh returns
+the new node's; scene.instances maps a loaded file's ids to its node names.)doc");
   scene.def(py::init<>())
       .def("add_mesh", &add_mesh, py::arg("vertices"), py::arg("faces"), py::kw_only(),
            py::arg("normals") = py::none(), py::arg("uvs") = py::none(),
@@ -186,11 +193,14 @@ object-to-world matrix (default: identity). Arrays are copied.)doc")
             return handle.scene.cameras;
           },
           "The cameras stored in a loaded file (world space).")
-      .def_property_readonly("instance_count",
-                             [](const SceneHandle& handle) {
-                               std::shared_lock lock(handle.mutex);
-                               return handle.instance_count;
-                             })
+      .def_property_readonly(
+          "instances",
+          [](const SceneHandle& handle) {
+            std::shared_lock lock(handle.mutex);
+            return instances(handle);
+          },
+          "{id: name} of every node that draws something: the ids the "
+          "instance output shows.")
       .def_property_readonly("triangle_count",
                              [](const SceneHandle& handle) {
                                std::shared_lock lock(handle.mutex);
@@ -202,7 +212,7 @@ object-to-world matrix (default: identity). Arrays are copied.)doc")
       .def("__repr__", [](const SceneHandle& handle) {
         std::shared_lock lock(handle.mutex);
         std::ostringstream out;
-        out << "<facet.Scene: " << handle.instance_count << " instances, "
+        out << "<facet.Scene: " << instances(handle).size() << " instances, "
             << handle.scene.triangle_count() << " triangles, "
             << handle.scene.lighting.lights.size() << " lights>";
         return out.str();

@@ -121,7 +121,7 @@ def test_a_bad_call_leaves_the_scene_as_it_was():
     scene.add_mesh(*quad()[:2])
     with pytest.raises(facet.Error):
         scene.add_mesh(VERTICES, [[0, 1, 7]])
-    assert scene.instance_count == 1
+    assert len(scene.instances) == 1
     assert scene.add_mesh(VERTICES, FACES) == 2
 
 

@@ -12,10 +12,10 @@ from scenes import icosphere, quad, triangle, write_obj
 
 def test_add_mesh_returns_instance_ids_in_the_order_added():
     scene = facet.Scene()
-    assert scene.instance_count == 0
+    assert len(scene.instances) == 0
     assert scene.bounds is None
     assert [scene.add_mesh(*triangle()) for _ in range(3)] == [1, 2, 3]
-    assert scene.instance_count == 3
+    assert len(scene.instances) == 3
     assert scene.triangle_count == 3
 
 
@@ -24,7 +24,7 @@ def test_add_mesh_takes_lists_and_any_real_dtype():
     scene.add_mesh([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]])
     for dtype in (np.int8, np.uint16, np.int32, np.uint64):
         scene.add_mesh(np.eye(3, dtype=np.float64), np.array([[0, 1, 2]], dtype))
-    assert scene.instance_count == 5
+    assert len(scene.instances) == 5
 
 
 def test_add_mesh_takes_every_attribute():
@@ -124,20 +124,22 @@ def test_scene_camera_can_be_set():
     assert scene.camera.eye == (1, 2, 3)
 
 
-def test_load_reads_a_model_frames_it_and_numbers_its_instances(tmp_path):
+def test_load_reads_a_model_frames_it_and_numbers_its_nodes(tmp_path):
     vertices, faces = icosphere(1)
     path = write_obj(tmp_path / "sphere.obj", vertices + 5, faces)
     scene = facet.load(path)  # a pathlib.Path
-    assert scene.instance_count == 1
+    assert len(scene.instances) == 1
     assert scene.triangle_count == len(faces)
     assert scene.bounds[0] == pytest.approx((4, 4, 4), abs=1e-5)
     # The camera frames the model; a file without lights gets three around that view.
     assert scene.camera.target == pytest.approx((5, 5, 5), abs=1e-5)
     assert len(scene.lights) == 3
-    assert scene.add_mesh(*triangle()) == 2
+    (loaded,) = scene.instances  # the node holding the sphere
+    added = scene.add_mesh(*triangle())
+    assert added > loaded and sorted(scene.instances) == [loaded, added]
     scene.add_light(facet.Light.directional((0, -1, 0)))
     assert len(scene.lights) == 1
-    assert facet.load(str(path)).instance_count == 1
+    assert len(facet.load(str(path)).instances) == 1
 
 
 def test_load_numbers_instances_of_every_object(tmp_path):
@@ -152,7 +154,7 @@ def test_load_numbers_instances_of_every_object(tmp_path):
         text += "".join(f"f {a + base} {b + base} {c + base}\n" for a, b, c in faces)
     (tmp_path / "balls.obj").write_text(text)
     scene = facet.load(tmp_path / "balls.obj")
-    assert scene.instance_count == 3
+    assert len(scene.instances) == 3
     assert scene.triangle_count == 3 * len(faces)
 
 
@@ -166,7 +168,7 @@ def test_load_turns_import_problems_into_warnings(tmp_path):
     (tmp_path / "quad.obj").write_text("\n".join(lines) + "\n")
     with pytest.warns(UserWarning, match="missing.png"):
         scene = facet.load(tmp_path / "quad.obj")
-    assert scene.instance_count == 1
+    assert len(scene.instances) == 1
 
 
 def test_load_names_the_missing_file(tmp_path):

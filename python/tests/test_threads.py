@@ -100,7 +100,7 @@ def test_a_scene_may_change_while_other_threads_render_it():
         stop.set()
         for thread in threads:
             thread.join()
-    assert scene.instance_count == 207
+    assert len(scene.instances) == 207
     assert len(frames) >= 3
 
 

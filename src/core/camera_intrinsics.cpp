@@ -92,6 +92,7 @@ Camera Camera::from_intrinsics(const Intrinsics& k, const glm::mat4& camera_to_w
                 ") are too short for a " + std::to_string(k.width) + " x " +
                 std::to_string(k.height) + " image: the view would reach 180 degrees");
   }
+  camera.calibrated_size = {k.width, k.height};
   camera.lens_shift = {static_cast<float>((2.0 * k.cx + 1.0 - w) / w),
                        static_cast<float>((h - 1.0 - 2.0 * k.cy) / h)};
   camera.near_plane = near_plane;

@@ -41,6 +41,8 @@ def arguments(argv):
                         help="image size WIDTHxHEIGHT (default: 640x480)")
     parser.add_argument("--fov", type=float, default=45.0,
                         help="vertical field of view in degrees (default: 45)")
+    parser.add_argument("--outputs", default="color,depth,instance",
+                        help="comma-separated, of color, depth, instance (default: all three)")
     parser.add_argument("--workers", type=int, default=1,
                         help="Python threads rendering at once, each with its own renderer "
                         "(default: 1; facet releases the GIL while it renders)")
@@ -51,6 +53,9 @@ def arguments(argv):
         parser.error("--views must be at least 1")
     if options.workers < 1:
         parser.error("--workers must be at least 1")
+    options.outputs = options.outputs.split(",")
+    if not options.outputs or not set(options.outputs) <= {"color", "depth", "instance"}:
+        parser.error("--outputs takes color, depth and instance")
     return options
 
 
@@ -72,7 +77,7 @@ def main(argv=None):
     try:
         scene = facet.load(options.model)
         cameras = cameras_around(scene, options.views, options.fov, width / height)
-        outputs = ["color", "depth", "instance"]
+        outputs = options.outputs
         os.makedirs(options.output, exist_ok=True)
         local = threading.local()
 
@@ -82,9 +87,11 @@ def main(argv=None):
                                                 background=(0, 0, 0, 0))
             frame = local.renderer.render(scene, cameras[index], outputs)
             stem = os.path.join(options.output, f"{{}}_{index:03d}")
-            facet.write_png(stem.format("color") + ".png", frame["color"])
-            np.save(stem.format("depth") + ".npy", frame["depth"])
-            np.save(stem.format("instance") + ".npy", frame["instance"])
+            if "color" in frame:
+                facet.write_png(stem.format("color") + ".png", frame["color"])
+            for name in ("depth", "instance"):
+                if name in frame:
+                    np.save(stem.format(name) + ".npy", frame[name])
 
         start = time.perf_counter()
         with ThreadPoolExecutor(options.workers) as pool:

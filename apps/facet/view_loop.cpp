@@ -113,10 +113,7 @@ bool ViewLoop::handle_events() {
         save_window_ = true;
         break;
       case ViewAction::toggle_mute:
-        if (sound_ && !sound_->available()) {
-          // Nothing to mute: say so, as the overlay's line does, rather than "on".
-          overlay_.show_change("sound: off (no device)", now);
-        } else if (sound_) {
+        if (sound_) {
           sound_->set_muted(!sound_->muted());
           overlay_.show_change(sound_->muted() ? "sound: muted" : "sound: on", now);
         }

@@ -7,7 +7,8 @@ cluster (facet.dask): each worker renders shards of the views and writes their f
 
 With --scheduler, the workers are those of a running cluster (`dask scheduler` on one machine,
 `dask worker tcp://host:8786` on each of the others); the model and the output folder must be
-at the same path on every machine. Without it, a cluster of --workers processes on this machine.
+at the same path on every machine. Without it, a cluster of --workers processes on this machine;
+with --local, no cluster: facet.dask.render_local in this process (the same files), to compare.
 
 Writes into the output folder, for view N (000, 001, ...):
     view_N_color.png      RGBA, sRGB (the background transparent)
@@ -52,6 +53,8 @@ def arguments(argv):
                        help="a running Dask scheduler, e.g. tcp://host:8786")
     where.add_argument("--workers", type=int, default=2,
                        help="without --scheduler: worker processes on this machine (default: 2)")
+    where.add_argument("--local", action="store_true",
+                       help="no cluster: render in this process, every core on each view")
     parser.add_argument("--threads-per-worker", type=int, default=1,
                         help="without --scheduler: threads of each worker process (default: 1)")
     parser.add_argument("--shard-size", type=int, default=None,
@@ -106,18 +109,25 @@ def main(argv=None):
                                  (width, height), {"background": (0, 0, 0, 0)})
                  for index, camera in enumerate(cameras)]
         with contextlib.ExitStack() as stack:
-            client = connect(options, stack)
-            workers = len(client.scheduler_info()["workers"])
-            start = time.perf_counter()
-            index = facet.dask.render(client, items, options.output, shard_size=options.shard_size,
-                                      progress=not options.quiet, raise_errors=False)
+            if options.local:
+                where = "in this process"
+                start = time.perf_counter()
+                index = facet.dask.render_local(items, options.output, progress=not options.quiet,
+                                                raise_errors=False)
+            else:
+                client = connect(options, stack)
+                where = f"on {len(client.scheduler_info()['workers'])} workers"
+                start = time.perf_counter()
+                index = facet.dask.render(client, items, options.output,
+                                          shard_size=options.shard_size,
+                                          progress=not options.quiet, raise_errors=False)
             seconds = time.perf_counter() - start
     except facet.Error as error:
         print(f"dask_dataset: {error}", file=sys.stderr)
         return 2
     write_index(options, index, cameras, width, height)
     print(f"dask_dataset: {len(items)} views of {options.model} ({width}x{height}, "
-          f"{', '.join(outputs)}) in {options.output} on {workers} workers: "
+          f"{', '.join(outputs)}) in {options.output} {where}: "
           f"{index.summary()} in {seconds:.2f} s, {len(items) / seconds:.1f} views/s")
     for stem in index.failed:
         print(f"dask_dataset: {stem}: {index[stem]['error']}", file=sys.stderr)

@@ -244,16 +244,23 @@ def test_a_worker_killed_mid_job_costs_only_time(job, reference, tmp_path):
 
 
 def test_the_example_renders_a_dataset_and_then_nothing(ball, tmp_path):
-    out = tmp_path / "out"
-    command = [sys.executable, str(EXAMPLES / "dask_dataset.py"), ball, out, "--views", 3,
-               "--size", "64x48", "--workers", 1, "--quiet"]
-    for rendered, skipped in ((3, 0), (0, 3)):
+    def run(out, *where):
+        command = [sys.executable, EXAMPLES / "dask_dataset.py", ball, out, "--views", 3,
+                   "--size", "64x48", "--quiet", *where]
         result = subprocess.run(list(map(str, command)), capture_output=True, text=True,
                                 timeout=120)
         assert result.returncode == 0, result.stderr
-        assert f"{rendered} rendered, {skipped} skipped, 0 failed" in result.stdout
+        return result.stdout
+
+    out = tmp_path / "out"
+    assert "on 1 workers: 3 rendered, 0 skipped, 0 failed" in run(out, "--workers", 1)
+    assert "on 1 workers: 0 rendered, 3 skipped, 0 failed" in run(out, "--workers", 1)
     index = json.loads((out / "index.json").read_text())
     assert [view["stem"] for view in index["views"]] == ["view_000", "view_001", "view_002"]
     assert index["views"][2]["files"] == {"color": "view_002_color.png",
                                           "depth": "view_002_depth.npy"}
     assert np.load(out / "view_001_depth.npy").shape == (48, 64)
+    assert "in this process: 3 rendered" in run(tmp_path / "local", "--local")
+    local, dask = contents(tmp_path / "local"), contents(out)
+    assert local.pop("index.json") != dask.pop("index.json")  # "rendered" there, "skipped" here
+    assert local == dask

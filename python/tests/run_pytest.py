@@ -11,7 +11,9 @@ import sys
 
 REQUIRED = (("numpy", "python3-numpy"), ("pytest", "python3-pytest"))
 # What a test file needs besides: {file name: ((module, Debian package), ...)}.
-REQUIRED_BY_FILE = {"test_dask.py": (("distributed", "python3-distributed"),)}
+# (docs/python.md's facet.dask block starts a cluster.)
+DASK = (("distributed", "python3-distributed"),)
+REQUIRED_BY_FILE = {"test_dask.py": DASK, "test_docs.py": DASK}
 
 
 def main() -> int:

@@ -181,15 +181,19 @@ class Item:
 
 
 def check_items(items):
-    """items as a list of Item, with distinct stems."""
+    """items as a list of Item, with distinct stems and files."""
     items = list(items)
-    seen = set()
+    stems, files = set(), set()
     for index, item in enumerate(items):
         if not isinstance(item, Item):
             raise facet.Error(f"items[{index}] is a {type(item).__name__}, not a facet.dask.Item")
-        if item.stem in seen:
+        if item.stem in stems:
             raise facet.Error(f"items[{index}]: stem '{item.stem}' is used twice")
-        seen.add(item.stem)
+        stems.add(item.stem)
+        for name in item.files().values():
+            if name in files:
+                raise facet.Error(f"items[{index}] ({item.stem}): another item writes {name} too")
+            files.add(name)
     return items
 
 

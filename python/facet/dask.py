@@ -66,12 +66,11 @@ def render(client, items, out_dir, *, shard_size=None, threads=1, progress=True,
     if shard_size < 1:
         raise _facet.Error(f"render: shard_size must be at least 1, got {shard_size}")
     job = uuid.uuid4().hex[:12]
-    shards = {}
-    for number, first in enumerate(range(0, len(items), shard_size)):
-        shard = items[first:first + shard_size]
-        future = client.submit(_job.run_shard, shard, out_dir, threads,
-                               key=f"facet-render-{job}-{number}")
-        shards[future] = shard
+    batches = [items[first:first + shard_size] for first in range(0, len(items), shard_size)]
+    futures = client.map(_job.run_shard, batches, [out_dir] * len(batches),
+                         [threads] * len(batches),
+                         key=[f"facet-render-{job}-{number}" for number in range(len(batches))])
+    shards = dict(zip(futures, batches))
 
     index = Index(out_dir, items)
     report = _reporter(progress, len(items))

@@ -93,6 +93,9 @@ def test_items_are_checked(ball):
         facet.dask.Item("x", ball, renderer={"threads": 2})
     with pytest.raises(facet.Error, match="used twice"):
         facet.dask.render_local([facet.dask.Item("x", ball), facet.dask.Item("x", ball)], "out")
+    with pytest.raises(facet.Error, match="another item writes a_color_depth.npy"):
+        facet.dask.render_local([facet.dask.Item("a", ball, outputs=("color_depth",)),
+                                 facet.dask.Item("a_color", ball)], "out")
     with pytest.raises(facet.Error, match="no constructor"):
         facet.dask.camera("fisheye", eye=(0, 0, 1))
     with pytest.raises(facet.Error, match="Camera.look_at"):

@@ -226,7 +226,8 @@ def test_a_worker_killed_mid_job_costs_only_time(job, reference, tmp_path):
             killed.append((cut[0], done, total))
 
         index = facet.dask.render(client, job, out, shard_size=shard_size, progress=kill_one)
-        assert len(client.run(os.getpid)) == 2  # the nanny started another
+        client.wait_for_workers(2, timeout=60)  # the nanny started another
+        assert killed[0][0] not in client.run(os.getpid).values()
     finally:
         client.close()
         cluster.close()

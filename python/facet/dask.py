@@ -52,7 +52,7 @@ def render(client, items, out_dir, *, shard_size=None, threads=1, progress=True,
         callable is called as progress(index, done, total) after each shard.
     A failed item (a missing model, an unknown output, a shard whose workers kept dying) does not
     stop the others; at the end raise_errors raises facet.Error naming the failures, with the
-    Index as its .index. Runs at most one job into one folder at a time.
+    Index as its .index. Run one job into a folder at a time.
     """
     from distributed import as_completed
 

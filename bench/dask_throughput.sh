@@ -6,7 +6,8 @@
 #
 # Usage: bench/dask_throughput.sh [MODEL] [VIEWS] [ROUNDS]
 #   (defaults: /usr/share/glmark2/models/bunny.obj, 100, 3; 640x480, color and depth)
-# Environment: PYTHON (default /usr/bin/python3); PYTHONPATH (default build/python/package).
+# Environment: PYTHON (default /usr/bin/python3); PYTHONPATH (default build/python/package);
+# TMPDIR, where the output folders are made (default /tmp; /dev/shm leaves the disk out).
 set -euo pipefail
 model=${1:-/usr/share/glmark2/models/bunny.obj} views=${2:-100} rounds=${3:-3}
 export PYTHONPATH=${PYTHONPATH:-build/python/package}

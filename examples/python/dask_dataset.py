@@ -51,8 +51,9 @@ def arguments(argv):
     where = parser.add_mutually_exclusive_group()
     where.add_argument("--scheduler", metavar="ADDRESS",
                        help="a running Dask scheduler, e.g. tcp://host:8786")
-    where.add_argument("--workers", type=int, default=2,
-                       help="without --scheduler: worker processes on this machine (default: 2)")
+    where.add_argument("--workers", type=int, default=os.cpu_count() or 1,
+                       help="without --scheduler: worker processes on this machine (default: "
+                       "one a core)")
     where.add_argument("--local", action="store_true",
                        help="no cluster: render in this process, every core on each view")
     parser.add_argument("--threads-per-worker", type=int, default=1,

@@ -75,6 +75,7 @@ setup(
     license="MIT",
     python_requires=">=3.9",
     install_requires=["numpy"],
+    extras_require={"dask": ["distributed"]},  # facet.dask.render; pip install ".[dask]"
     packages=["facet"],
     package_dir={"": "python"},
     ext_modules=[CMakeExtension()],

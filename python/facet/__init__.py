@@ -7,7 +7,8 @@
     frame["color"]   # (480, 640, 4) uint8, sRGB
     frame["depth"]   # (480, 640) float32, distance along the camera axis; 0 where empty
 
-Errors are facet.Error. docs/python.md in facet's source tree has the whole story.
+Errors are facet.Error. `import facet.dask` spreads render jobs over a Dask cluster. docs/python.md
+in facet's source tree has the whole story.
 """
 
 from ._facet import (

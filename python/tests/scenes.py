@@ -68,3 +68,16 @@ def write_obj(path, vertices, faces, name="sphere"):
     lines += [f"f {a + 1} {b + 1} {c + 1}" for a, b, c in faces]
     path.write_text("\n".join(lines) + "\n")
     return path
+
+
+def ball_on_a_floor():
+    """A phong ball on a vertex-colored floor, lit by a point light: a scene factory for
+    facet.dask ("scenes:ball_on_a_floor"), made on each worker."""
+    scene = facet.Scene()
+    vertices, faces = icosphere(2)
+    scene.add_mesh(vertices, faces, normals=vertices,
+                   material=facet.Material((0.2, 0.5, 0.9), "phong"))
+    floor = np.array([[-3, -1, -3], [3, -1, -3], [3, -1, 3], [-3, -1, 3]], np.float32)
+    scene.add_mesh(floor, [[0, 2, 1], [0, 3, 2]], colors=np.full((4, 3), 170, np.uint8))
+    scene.add_light(facet.Light.point((2, 3, 2), intensity=5))
+    return scene

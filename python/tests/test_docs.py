@@ -21,3 +21,6 @@ def test_the_python_blocks_of_the_docs_run(tmp_path, monkeypatch):
     assert frame["depth"][180, 320] > 0  # the cube is in the middle
     assert np.load("cube_depth.npy").shape == (360, 640)
     assert {"cube.png", "python.png", "cube_depth.npy"} <= {p.name for p in tmp_path.iterdir()}
+    # facet.dask's job wrote its 8 frames.
+    assert namespace["index"].rendered == [f"frame_{i:04d}" for i in range(8)]
+    assert len(list((tmp_path / "orbit").iterdir())) == 16

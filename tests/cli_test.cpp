@@ -48,7 +48,7 @@ const char* const kRenderFlags[] = {
     "--scene",       "--output",    "--size",         "--eye",       "--target", "--up",
     "--fov",         "--near",      "--far",          "--shading",   "--cull",   "--background",
     "--threads",     "--tile-size", "--time",         "--frames",    "--fps",    "--shard",
-    "--camera-path", "--outputs",   "--normal-space", "--overwrite", "--quiet", "--orthographic"};
+    "--camera-path", "--outputs",   "--normal-space", "--overwrite", "--quiet",  "--orthographic"};
 
 void expect_documents_every_flag(const std::string& args) {
   CommandResult r = run_facet(::testing::TempDir(), args);

@@ -197,8 +197,7 @@ bool is_black_row(const Rgba8Image& image, int y) {
 // The islands at a fixed time, small, with no overlay: only the input changes the image.
 const std::string kIslands = "start_view --scene islands --size 320x180 --time 3 --overlay off\n";
 
-#define REQUIRE_TOOLS() \
-  FACET_REQUIRE_PACKAGE(have_tools(), "xvfb-run or xdotool is not installed")
+#define REQUIRE_TOOLS() FACET_REQUIRE_PACKAGE(have_tools(), "xvfb-run or xdotool is not installed")
 
 TEST(ViewInput, WMovesTheCameraForward) {
   REQUIRE_TOOLS();

@@ -12,9 +12,8 @@
 namespace facet {
 namespace {
 
-// How far R^T R of a pose's rotation part may stray from the identity: poses written with a
-// few decimals, or converted from doubles, are orthonormal only to about 1e-6; a scale of 1 %
-// is 2e-2 off.
+// How far R^T R of a pose's rotation part may stray from the identity: loose enough for poses
+// rounded to a few decimals or to float, tight enough to refuse a scaled pose.
 constexpr float kRigidTolerance = 1e-3f;
 
 // Throws unless camera_to_world is finite, has (0, 0, 0, 1) as its last row and a rotation

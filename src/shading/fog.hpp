@@ -14,9 +14,9 @@ namespace facet::shading {
 // halves, and the raster loop's 16-byte reload of them would stall on store forwarding.
 float fog_keep(float view_depth, const Fog& fog);
 
-// Runtime branch on a per-frame constant (the fog mode): every pixel takes it the same way, and
-// making it a template flag, which would double every raster loop, measured no gain
-// (BENCHMARKS.md, "Per-draw constants").
+// Runtime branch on a per-frame constant (the fog mode): every pixel takes it the same way, so
+// a template flag, which would double every raster loop, gains nothing (BENCHMARKS.md,
+// "Per-draw constants").
 inline void apply_fog(glm::vec4& color, float view_depth, const Fog& fog) {
   if (fog.mode == FogMode::none) return;
   color = {glm::mix(fog.color, glm::vec3(color), fog_keep(view_depth, fog)), color.a};

@@ -25,9 +25,8 @@ inline ShadingKernels shading_kernels(SimdTarget target) {
 // What a shading model provides to be shaded a batch at a time (models.hpp; the raster loop,
 // pipeline/raster/raster.hpp, looks for these two): whether it can take this draw, and the batch
 // form of fragment(), which also applies in.fog. The built-in models get them from here. The
-// raster loop is compiled per model; the one batch kernel takes the model, fog and
-// two-sidedness at run time, constants of the draw that every vector of it tests the same way
-// (fog and two-sidedness forced to constants measured no gain: BENCHMARKS.md, "Per-draw
+// raster loop is compiled per model; the one batch kernel takes the model and fog at run time,
+// constants of the draw that every vector of it tests the same way (BENCHMARKS.md, "Per-draw
 // constants").
 template <BatchModel kModel>
 struct BatchForm {

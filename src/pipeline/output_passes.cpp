@@ -16,34 +16,40 @@ using pipeline::OutputPass;
 
 namespace {
 
+// Copies channel `channel` of a pass's four floats a pixel into `out`, converted to T (ids from
+// their exact floats); nothing when the output was not asked for (`out` empty).
+template <class T>
+void copy_channel(const std::vector<float>& rgba, int channel, std::vector<T>& out) {
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = static_cast<T>(rgba[4 * i + channel]);
+}
+
 // Copies a pass's four floats a pixel into the images of the extra outputs it holds.
 void copy_pass(OutputPass pass, const std::vector<float>& rgba, Framebuffer& target) {
   const std::size_t pixels = rgba.size() / 4;
-  for (std::size_t i = 0; i < pixels; ++i) {
-    const float* p = &rgba[4 * i];
-    switch (pass) {
-      case OutputPass::depth_and_instance:
-        if (!target.view_depth().empty()) target.view_depth()[i] = p[0];
-        if (!target.ray_distance().empty()) target.ray_distance()[i] = p[1];
-        if (!target.instance_ids().empty())
-          target.instance_ids()[i] = static_cast<std::uint32_t>(p[2]);
-        break;
-      case OutputPass::normals:
-        std::copy_n(p, 3, &target.normals()[3 * i]);
-        break;
-      case OutputPass::triangles: {
-        const auto id = static_cast<std::uint32_t>(p[0]);
-        if (!target.triangle_ids().empty()) target.triangle_ids()[i] = id;
-        if (!target.barycentrics().empty()) {
-          float* b = &target.barycentrics()[3 * i];
-          b[0] = id == 0 ? 0.0f : 1.0f - p[1] - p[2], b[1] = p[1], b[2] = p[2];
-        }
-        break;
+  switch (pass) {
+    case OutputPass::depth_and_instance:
+      copy_channel(rgba, 0, target.view_depth());
+      copy_channel(rgba, 1, target.ray_distance());
+      copy_channel(rgba, 2, target.instance_ids());
+      break;
+    case OutputPass::normals:
+      for (std::size_t i = 0; i < pixels; ++i) {
+        std::copy_n(&rgba[4 * i], 3, &target.normals()[3 * i]);
       }
-      case OutputPass::albedo:
-        std::copy_n(p, 4, &target.albedo()[4 * i]);
-        break;
-    }
+      break;
+    case OutputPass::triangles:
+      copy_channel(rgba, 0, target.triangle_ids());
+      if (!target.barycentrics().empty()) {
+        float* b = target.barycentrics().data();
+        for (std::size_t i = 0; i < pixels; ++i, b += 3) {
+          const float* p = &rgba[4 * i];
+          b[0] = p[0] == 0.0f ? 0.0f : 1.0f - p[1] - p[2], b[1] = p[1], b[2] = p[2];
+        }
+      }
+      break;
+    case OutputPass::albedo:
+      target.albedo().assign(rgba.begin(), rgba.end());
+      break;
   }
 }
 

@@ -19,7 +19,6 @@ namespace facet::cli {
 namespace {
 
 const std::string kBackground = "0.53,0.66,0.82";  // sRGB sky blue, as `facet render`
-constexpr float kWalkSecondsAcross = 20.0f;        // walking speed: the scene's size in this time
 
 std::string view_description() {
   std::string text =
@@ -73,9 +72,7 @@ int run_view(const ViewOptions& o) {
   setup.world = loaded.world();
   setup.start = build_camera(o.scene, scene, static_cast<float>(size.width) / size.height);
   setup.camera_mode = o.scene.model.empty() ? CameraMode::first_person : CameraMode::orbit;
-  Bounds bounds = scene.bounds();
-  float extent = bounds.empty() ? 10.0f : glm::length(bounds.max - bounds.min);
-  setup.walk_speed = extent / kWalkSecondsAcross;
+  setup.walk_speed = walking_speed(scene);
   setup.settings.size = size;
   setup.settings.threads = o.threads;
   setup.settings.fov_degrees = setup.start.fov_y_degrees;

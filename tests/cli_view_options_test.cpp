@@ -143,6 +143,17 @@ TEST(CliFraming, ViewOptionsOutOfRangeOrWithAPlacedCameraAreUsageErrors) {
   EXPECT_EQ(list_dir(dir), std::vector<std::string>{});
 }
 
+// The viewer's controls turn about +Y: another up axis is refused before a window opens.
+TEST(CliFraming, TheViewerTakesOnlyPlusYUp) {
+  REQUIRE_INSTALLED(kBunny);
+  const fs::path dir = fresh_test_dir("facet_cli_view_", "view_up");
+  CommandResult r = run_facet(dir, "view " + kBunny + " --up +Z");
+  EXPECT_EQ(r.exit_code, kUsageError);
+  EXPECT_EQ(r.stderr_text,
+            "facet: error: --up +Z: the viewer's controls keep +Y up; other model axes are for "
+            "facet render\n");
+}
+
 TEST(CliBackground, NoneGivesAlphaZeroAroundAnOpaqueModel) {
   REQUIRE_INSTALLED(kBunny);
   Rgba8Image opaque = render("opaque", kBunny + " --size 120x90");

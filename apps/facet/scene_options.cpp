@@ -146,31 +146,6 @@ void apply_environment(const SceneOptions& o, Scene& scene) {
   env.show_as_background = true;
 }
 
-// --up's axis form: +X, -X, +Y, -Y, +Z or -Z (the sign optional, either case); nothing for
-// anything else (the x,y,z form).
-std::optional<glm::vec3> parse_up_axis(const std::string& text) {
-  std::string axis = text;
-  float sign = 1.0f;
-  if (!axis.empty() && (axis[0] == '+' || axis[0] == '-')) {
-    sign = axis[0] == '-' ? -1.0f : 1.0f;
-    axis.erase(0, 1);
-  }
-  if (axis.size() != 1) return std::nullopt;
-  switch (axis[0]) {
-    case 'x':
-    case 'X':
-      return glm::vec3(sign, 0.0f, 0.0f);
-    case 'y':
-    case 'Y':
-      return glm::vec3(0.0f, sign, 0.0f);
-    case 'z':
-    case 'Z':
-      return glm::vec3(0.0f, 0.0f, sign);
-    default:
-      return std::nullopt;
-  }
-}
-
 // The framing --up AXIS, --azimuth and --elevation describe; each value checked.
 Framing requested_framing(const SceneOptions& o) {
   Framing framing;
@@ -303,6 +278,29 @@ Scene build_scene(const SceneOptions& o) {
     if (o.fog_color) scene.lighting.fog.color = fog_color;
   }
   return scene;
+}
+
+std::optional<glm::vec3> parse_up_axis(const std::string& text) {
+  std::string axis = text;
+  float sign = 1.0f;
+  if (!axis.empty() && (axis[0] == '+' || axis[0] == '-')) {
+    sign = axis[0] == '-' ? -1.0f : 1.0f;
+    axis.erase(0, 1);
+  }
+  if (axis.size() != 1) return std::nullopt;
+  switch (axis[0]) {
+    case 'x':
+    case 'X':
+      return glm::vec3(sign, 0.0f, 0.0f);
+    case 'y':
+    case 'Y':
+      return glm::vec3(0.0f, sign, 0.0f);
+    case 'z':
+    case 'Z':
+      return glm::vec3(0.0f, 0.0f, sign);
+    default:
+      return std::nullopt;
+  }
 }
 
 bool changes_framing(const SceneOptions& o) {

@@ -41,6 +41,10 @@ Scene build_scene(const SceneOptions& options);
 // view framed for this aspect), then --eye/--target/... on top.
 Camera build_camera(const SceneOptions& options, const Scene& scene, float aspect);
 
+// --up's axis form: +X, -X, +Y, -Y, +Z or -Z (the sign optional, either case) as a unit vector;
+// nothing for anything else (the x,y,z form).
+std::optional<glm::vec3> parse_up_axis(const std::string& text);
+
 // Whether the options ask to turn the automatic view (--up AXIS, --azimuth, --elevation).
 bool changes_framing(const SceneOptions& options);
 

@@ -60,6 +60,13 @@ int run_view(const ViewOptions& o) {
   if (o.time && !std::isfinite(*o.time)) throw Error("--time: must be a finite number of seconds");
   if (!o.screenshot.empty()) check_writable(o.screenshot);
   glm::vec3 background = parse_color("--background", kBackground);
+  if (auto axis = o.scene.up ? parse_up_axis(*o.scene.up) : std::nullopt;
+      axis && *axis != glm::vec3(0.0f, 1.0f, 0.0f)) {
+    // The first-person and orbit controls turn about +Y; a view turned to another axis would
+    // flip back at the first move.
+    throw Error("--up " + *o.scene.up +
+                ": the viewer's controls keep +Y up; other model axes are for facet render");
+  }
   ViewSetup setup;
   if (!o.camera_path.empty()) setup.camera_path = CameraPath::load(o.camera_path);
   // The window first: with no display the command fails before loading anything.

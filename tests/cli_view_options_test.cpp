@@ -174,6 +174,25 @@ TEST(CliBackground, NoneGivesAlphaZeroAroundAnOpaqueModel) {
   EXPECT_GT(model, 120 * 90 / 10);
 }
 
+// A half-transparent square over nothing: alpha 128 and the material's own color (straight
+// alpha), not the color darkened by the coverage (premultiplied) that it is over black.
+TEST(CliBackground, NoneWritesStraightAlphaForBlendedMaterials) {
+  const fs::path input = fresh_test_dir("facet_cli_view_", "half_input");
+  std::ofstream(input / "half.mtl") << "newmtl half\nKd 1 0.5 0\nd 0.5\n";
+  std::ofstream(input / "half.obj") << "mtllib half.mtl\nusemtl half\n"
+                                       "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n";
+  const std::string args = (input / "half.obj").string() + " --size 64x64 --shading unlit";
+  Rgba8Image clear = render("half_clear", args + " --background none");
+  Rgba8Image black = render("half_black", args + " --background 0,0,0");
+  EXPECT_NEAR(channel(clear, 32, 32, 3), 128, 1);
+  EXPECT_EQ(channel(clear, 32, 32, 0), 255);       // linear 1 -> sRGB 255
+  EXPECT_NEAR(channel(clear, 32, 32, 1), 188, 1);  // linear 0.5 -> sRGB 188
+  EXPECT_EQ(channel(clear, 32, 32, 2), 0);
+  EXPECT_NEAR(channel(black, 32, 32, 0), 188, 1);  // over black: half of it
+  EXPECT_EQ(channel(black, 32, 32, 3), 255);
+  EXPECT_EQ(channel(clear, 0, 0, 3), 0);
+}
+
 TEST(CliDebugView, OverdrawAndTileBinsReplaceTheShadedImage) {
   REQUIRE_INSTALLED(kBunny);
   const std::string args = kBunny + " --size 160x120";

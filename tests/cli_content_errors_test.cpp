@@ -114,13 +114,13 @@ TEST(CliContentErrors, DPolygonOutOfRangeNamesFileAndLine) {
 
 TEST(CliContentErrors, FileCameraOutOfRange) {
   REQUIRE_INSTALLED(kCamerasGltf);
-  for (const char* n : {"1", "5", "-1"}) {
+  for (const char* n : {"2", "5", "-1"}) {
     SCOPED_TRACE(std::string("--camera ") + n);
     fs::path dir = fresh_test_dir("facet_cli_content_", std::string("camera_bad_") + n);
     CommandResult r =
         run_facet(dir, "render " + kCamerasGltf + " --camera " + n + " -o out.png" + kCliSize);
-    // The file's orthographic camera is left out with one warning before the error.
-    expect_one_error(r, "--camera", 1);
+    // The file has two cameras, 0 and 1 (perspective and orthographic).
+    expect_one_error(r, "--camera", 0);
     EXPECT_EQ(list_dir(dir), std::vector<std::string>{});
   }
 }

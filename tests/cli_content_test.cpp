@@ -301,12 +301,14 @@ TEST(CliContentFlags, ExposureBrightens) {
 
 TEST(CliContentFlags, FileCamera) {
   REQUIRE_INSTALLED(kCamerasGltf);
-  // The file has a perspective camera (kept) and an orthographic one (left out with a warning).
+  // The file has a perspective camera and an orthographic one, both kept.
   CommandResult info = run_command(std::string(FACET_CLI) + " info " + kCamerasGltf);
   ASSERT_EQ(info.exit_code, 0) << info.stderr_text;
-  ASSERT_NE(info.stdout_text.find("\ncameras     1\n"), std::string::npos) << info.stdout_text;
-  Rgba8Image framed = render("camera_default", kCamerasGltf, true);
-  Rgba8Image file_camera = render("camera_0", kCamerasGltf + " --camera 0", true);
+  ASSERT_NE(info.stdout_text.find("\ncameras     2\n"), std::string::npos) << info.stdout_text;
+  EXPECT_NE(info.stdout_text.find("orthographic, 2 units tall"), std::string::npos)
+      << info.stdout_text;
+  Rgba8Image framed = render("camera_default", kCamerasGltf);
+  Rgba8Image file_camera = render("camera_0", kCamerasGltf + " --camera 0");
   EXPECT_GT(mean_difference(framed, file_camera), kClearlyDifferent);
   // The file's camera stands at (0.5, 0.5, 3) looking down -z at a unit square tilted back
   // 45 degrees around its bottom edge (x 0..1 at y 0, z 0): the square is centred

@@ -21,13 +21,14 @@
 #include "facet/renderer.hpp"
 #include "support/render_helpers.hpp"
 #include "support/required_package.hpp"
+#include "support/sample_models.hpp"
 
 namespace facet::test {
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kModels = "/usr/share/assimp/models";            // Debian package assimp-testmodels
+const fs::path kModels = kSampleModels;                         // Debian package assimp-testmodels
 const fs::path kBunny = "/usr/share/glmark2/models/bunny.obj";  // Debian package glmark2-data
 
 // Files that must fail with a facet::Error, and why. Everything else must import and render.
@@ -48,42 +49,6 @@ const std::map<std::string, std::string> kExpectedFailures = {
     {"glTF2/glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_00.gltf", "points only"},
     {"glTF2/glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_07.gltf", "points only"},
 };
-
-// Broken on purpose: any facet::Error or a clean render is fine, a crash is not. Matched
-// against the path relative to kModels.
-bool is_robustness_sample(const std::string& relative) {
-  for (const char* part :
-       {"invalid/", "IndexOutOfRange/", "BoxWithInfinites", "MissingBin/", "wrongTypes/"}) {
-    if (relative.find(part) != std::string::npos) return true;
-  }
-  return false;
-}
-
-bool is_model_file(const fs::path& p) {
-  std::string extension = p.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), ::tolower);
-  for (const char* known : {".obj", ".gltf", ".glb", ".ply", ".stl", ".3ds", ".off"}) {
-    if (extension == known) return true;
-  }
-  // Extension-less copies that test assimp's detection by content.
-  return p.filename().string().find("ormatDetection") != std::string::npos;
-}
-
-bool under_invalid_directory(const fs::path& relative) {
-  for (const fs::path& part : relative.parent_path()) {
-    if (part.string().find("invalid") != std::string::npos) return true;
-  }
-  return false;
-}
-
-std::vector<fs::path> model_files(const std::string& directory) {
-  std::vector<fs::path> files;
-  for (const auto& entry : fs::recursive_directory_iterator(kModels / directory)) {
-    if (entry.is_regular_file() && is_model_file(entry.path())) files.push_back(entry.path());
-  }
-  std::sort(files.begin(), files.end());
-  return files;
-}
 
 // Renders the scene as `facet render` would: its own camera and lights, or three-point lights.
 FrameStats render_small(const Scene& scene) {
@@ -110,11 +75,8 @@ ImportOptions quiet() {
 void import_directory(const std::string& directory) {
   FACET_REQUIRE_PACKAGE(fs::exists(kModels / directory), "assimp-testmodels is not installed");
   int rendered = 0;
-  for (const fs::path& file : model_files(directory)) {
+  for (const fs::path& file : wellformed_model_files(directory)) {
     const std::string relative = fs::relative(file, kModels).string();
-    if (under_invalid_directory(fs::relative(file, kModels)) || is_robustness_sample(relative)) {
-      continue;
-    }
     SCOPED_TRACE(relative);
     auto expected = kExpectedFailures.find(relative);
     try {
@@ -350,19 +312,51 @@ TEST(ImportContent, CameraFromTheFile) {
   options.warn = [&](const std::string& w) { warnings.push_back(w); };
   Scene scene = import_scene(file.string(), options);
   // Camera 0: perspective, yfov 0.7 rad, aspect 1, at its node's translation (0.5, 0.5, 3).
-  // Camera 1 is orthographic and left out with a warning.
+  // Camera 1: orthographic, xmag = ymag = 1 (half sizes), at the same place.
+  ASSERT_EQ(scene.cameras.size(), 2u);
+  EXPECT_TRUE(warnings.empty()) << warnings[0];
+  for (const Camera& c : scene.cameras) {
+    EXPECT_NEAR(c.eye.x, 0.5f, 1e-5f);
+    EXPECT_NEAR(c.eye.y, 0.5f, 1e-5f);
+    EXPECT_NEAR(c.eye.z, 3.0f, 1e-5f);
+    EXPECT_NEAR(glm::length(c.forward() - glm::vec3(0, 0, -1)), 0.0f, 1e-5f);
+    EXPECT_FLOAT_EQ(c.aspect, 1.0f);
+    EXPECT_FLOAT_EQ(c.near_plane, 0.01f);
+    EXPECT_FLOAT_EQ(c.far_plane, 100.0f);
+    EXPECT_NO_THROW(c.validate());
+  }
+  EXPECT_EQ(scene.cameras[0].projection_kind, Projection::perspective);
+  EXPECT_NEAR(scene.cameras[0].fov_y_degrees, glm::degrees(0.7f), 1e-3f);
+  EXPECT_EQ(scene.cameras[1].projection_kind, Projection::orthographic);
+  EXPECT_FLOAT_EQ(scene.cameras[1].view_height, 2.0f);
+}
+
+// A glTF orthographic camera wider than tall: xmag 2, ymag 1 are half sizes, so the view is
+// 4 x 2 scene units (aspect 2).
+TEST(ImportContent, OrthographicCameraKeepsItsSize) {
+  const fs::path dir = fresh_test_dir("facet_import_", "orthographic");
+  std::ofstream(dir / "ortho.gltf") << R"({
+  "asset": {"version": "2.0"},
+  "scene": 0, "scenes": [{"nodes": [0, 1]}],
+  "nodes": [{"mesh": 0}, {"camera": 0, "translation": [0, 0, 5]}],
+  "cameras": [{"type": "orthographic",
+               "orthographic": {"xmag": 2.0, "ymag": 1.0, "znear": 0.5, "zfar": 20}}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                 "min": [0, 0, 0], "max": [1, 1, 0]}],
+  "bufferViews": [{"buffer": 0, "byteLength": 36}],
+  "buffers": [{"byteLength": 36,
+    "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}]
+})";
+  Scene scene = import_scene((dir / "ortho.gltf").string(), quiet());
   ASSERT_EQ(scene.cameras.size(), 1u);
-  ASSERT_EQ(warnings.size(), 1u);
-  EXPECT_NE(warnings[0].find("orthographic"), std::string::npos);
   const Camera& c = scene.cameras[0];
-  EXPECT_NEAR(c.eye.x, 0.5f, 1e-5f);
-  EXPECT_NEAR(c.eye.y, 0.5f, 1e-5f);
-  EXPECT_NEAR(c.eye.z, 3.0f, 1e-5f);
-  EXPECT_NEAR(glm::length(c.forward() - glm::vec3(0, 0, -1)), 0.0f, 1e-5f);
-  EXPECT_NEAR(c.fov_y_degrees, glm::degrees(0.7f), 1e-3f);
-  EXPECT_FLOAT_EQ(c.aspect, 1.0f);
-  EXPECT_FLOAT_EQ(c.near_plane, 0.01f);
-  EXPECT_FLOAT_EQ(c.far_plane, 100.0f);
+  EXPECT_EQ(c.projection_kind, Projection::orthographic);
+  EXPECT_FLOAT_EQ(c.aspect, 2.0f);
+  EXPECT_FLOAT_EQ(c.view_height, 2.0f);
+  EXPECT_FLOAT_EQ(c.near_plane, 0.5f);
+  EXPECT_FLOAT_EQ(c.far_plane, 20.0f);
+  EXPECT_NEAR(c.eye.z, 5.0f, 1e-5f);
   EXPECT_NO_THROW(c.validate());
 }
 

@@ -8,7 +8,7 @@ namespace {
 // --env-projection are checked even where nothing uses them, so a typo never passes).
 bool changes_scene(const SceneOptions& o) {
   return o.shading || o.cull || !o.lights.empty() || o.texture || o.environment || o.reflectivity ||
-         o.fog || o.fog_color || o.environment_projection;
+         o.fog || o.fog_color || o.environment_projection || changes_framing(o);
 }
 
 }  // namespace

@@ -133,8 +133,11 @@ void print_lights_and_cameras(const Scene& scene) {
                                        : std::to_string(scene.cameras.size()));
   for (std::size_t i = 0; i < scene.cameras.size(); ++i) {
     const Camera& c = scene.cameras[i];
-    item(pad(std::to_string(i), 3) + "eye " + vec(c.eye) + " looking " + vec(c.forward()) +
-         ", fov " + number(c.fov_y_degrees) + " degrees, aspect " + number(c.aspect));
+    const std::string lens = c.projection_kind == Projection::orthographic
+                                 ? "orthographic, " + number(c.view_height) + " units tall"
+                                 : "fov " + number(c.fov_y_degrees) + " degrees";
+    item(pad(std::to_string(i), 3) + "eye " + vec(c.eye) + " looking " + vec(c.forward()) + ", " +
+         lens + ", aspect " + number(c.aspect));
   }
 }
 

@@ -17,6 +17,14 @@
 namespace facet::cli {
 namespace {
 const std::string kDefaultBackground = "0.53,0.66,0.82";  // sRGB sky blue
+
+DebugView parse_debug_view(const std::string& text) {
+  if (text == "none") return DebugView::none;
+  if (text == "overdraw") return DebugView::overdraw;
+  if (text == "tile_bins") return DebugView::tile_bins;
+  throw Error("--debug-view: expected overdraw, tile_bins or none, got '" + text + "'");
+}
+
 }  // namespace
 
 CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
@@ -31,7 +39,13 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
   cmd->add_option("--size", o.size, "Image size WIDTHxHEIGHT, 1x1 .. 8192x8192")
       ->capture_default_str();
   cmd->add_option("--background", o.background,
-                  "Background color r,g,b in [0, 1], sRGB (default: " + kDefaultBackground + ")");
+                  "Background color r,g,b in [0, 1], sRGB, or none: transparent (a PNG with alpha "
+                  "0 where nothing was drawn) (default: " +
+                      kDefaultBackground + ")");
+  cmd->add_option("--debug-view", o.debug_view,
+                  "Draw what the pipeline did instead of the shaded image: overdraw (how many "
+                  "triangles covered each pixel: black 0, blue 1 .. white 16+) or tile_bins (each "
+                  "tile tinted by how many primitives were binned into it)");
   cmd->add_option("--exposure", o.exposure, "Exposure in stops: colors scaled by 2^EXPOSURE")
       ->capture_default_str();
   cmd->add_option("--threads", o.threads, "Worker threads, 0 = all cores, at most 256")
@@ -54,7 +68,11 @@ int run_render(const RenderOptions& o) {
   if (!std::isfinite(o.exposure) || std::abs(o.exposure) > 20.0f) {
     throw Error("--exposure: must be within -20 .. 20 stops");
   }
-  glm::vec3 background = parse_color("--background", o.background.value_or(kDefaultBackground));
+  const bool transparent = o.background == "none";
+  glm::vec3 background =
+      transparent ? glm::vec3(0.0f)
+                  : parse_color("--background", o.background.value_or(kDefaultBackground));
+  const DebugView debug_view = parse_debug_view(o.debug_view.value_or("none"));
   if (o.orthographic && (o.scene.fov || o.scene.near_plane || o.scene.far_plane)) {
     throw Error(std::string(o.scene.fov          ? "--fov"
                             : o.scene.near_plane ? "--near"
@@ -62,10 +80,13 @@ int run_render(const RenderOptions& o) {
                 ": not with --orthographic, whose view and clip planes are fitted to the scene");
   }
   FrameJob job = plan_frames(o.frames, o.output);
+  if (transparent && job.outputs.container == Container::ppm) {
+    throw Error("--background none: " + o.output + " is a PPM, which has no alpha; use .png");
+  }
   auto start = Clock::now();
   AnimatedScene animated(o.scene);
   Scene& scene = animated.scene();
-  if (!o.scene.fog_color) scene.lighting.fog.color = background;
+  if (!o.scene.fog_color && !transparent) scene.lighting.fog.color = background;
   const float aspect = static_cast<float>(size.width) / size.height;
   Camera camera = build_camera(o.scene, scene, aspect);
   if (o.orthographic) camera = fit_orthographic(scene, camera, aspect);
@@ -74,7 +95,10 @@ int run_render(const RenderOptions& o) {
   RenderSettings settings;
   settings.threads = o.threads;
   settings.tile_size = o.tile_size;
-  settings.clear_color = glm::vec4(background, 1.0f);
+  // Transparent: the framebuffer holds premultiplied color (blending over alpha 0), written
+  // out with straight alpha (FrameRenderer).
+  settings.clear_color = glm::vec4(background, transparent ? 0.0f : 1.0f);
+  settings.debug_view = debug_view;
   settings.exposure = o.exposure;
   Renderer renderer(settings);
   FrameRenderer frames(renderer, animated, camera, job, size);

@@ -15,7 +15,8 @@ struct RenderOptions {
   FrameOptions frames;
   std::string output;
   std::string size = "1920x1080";
-  std::optional<std::string> background;
+  std::optional<std::string> background;  // r,g,b or "none"
+  std::optional<std::string> debug_view;
   float exposure = 0.0f;
   int threads = 0;
   int tile_size = 64;

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "facet/color.hpp"
 #include "facet/scene.hpp"
 #include "progress.hpp"
 #include "stop_signals.hpp"
@@ -25,6 +26,22 @@ bool all_exist(const std::vector<std::string>& files) {
     if (!std::filesystem::exists(file, ec)) return false;
   }
   return true;
+}
+
+// Color drawn over a transparent background is premultiplied (blending over alpha 0 scales it
+// by coverage); 8-bit images (PNG) carry straight alpha, so partly covered pixels are divided
+// by their alpha, in linear light. Float color (OpenEXR) stays premultiplied, EXR's convention.
+void straighten_alpha(Framebuffer& framebuffer) {
+  if (framebuffer.format() != ColorFormat::rgba8_srgb) return;
+  std::vector<std::uint8_t>& rgba = framebuffer.rgba8();
+  for (std::size_t i = 0; i < rgba.size(); i += 4) {
+    const int alpha = rgba[i + 3];
+    if (alpha == 0 || alpha == 255) continue;
+    glm::vec3 srgb(rgba[i], rgba[i + 1], rgba[i + 2]);
+    glm::vec3 linear = srgb_to_linear(srgb / 255.0f) * (255.0f / static_cast<float>(alpha));
+    glm::vec3 straight = linear_to_srgb(glm::min(linear, glm::vec3(1.0f))) * 255.0f + 0.5f;
+    for (int c = 0; c < 3; ++c) rgba[i + c] = static_cast<std::uint8_t>(straight[c]);
+  }
 }
 
 }  // namespace
@@ -53,6 +70,7 @@ const Framebuffer& FrameRenderer::render(double seconds) {
   renderer_.begin_frame(camera, scene.lighting);
   draw_scene(renderer_, scene);
   renderer_.finish(framebuffer_);
+  if (renderer_.settings().clear_color.a < 1.0f) straighten_alpha(framebuffer_);
   return framebuffer_;
 }
 

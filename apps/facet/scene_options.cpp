@@ -2,6 +2,7 @@
 #include "scene_options.hpp"
 
 #include <cmath>
+#include <optional>
 
 #include "arguments.hpp"
 #include "facet/error.hpp"
@@ -145,6 +146,22 @@ void apply_environment(const SceneOptions& o, Scene& scene) {
   env.show_as_background = true;
 }
 
+// The framing --up AXIS, --azimuth and --elevation describe; each value checked.
+Framing requested_framing(const SceneOptions& o) {
+  Framing framing;
+  if (o.up) framing.up = parse_up_axis(*o.up).value_or(framing.up);
+  if (o.azimuth) {
+    if (!std::isfinite(*o.azimuth)) throw Error("--azimuth: must be a finite number of degrees");
+    framing.azimuth_degrees = *o.azimuth;
+  }
+  if (o.elevation) {
+    if (!(std::abs(*o.elevation) <= 90.0f))
+      throw Error("--elevation: must be within -90 .. 90 degrees (90 looks straight down)");
+    framing.elevation_degrees = *o.elevation;
+  }
+  return framing;
+}
+
 // A moved camera gets near and far planes that fit the scene from where it now stands.
 void fit_clip_planes(const Scene& scene, Camera& camera) {
   Bounds b = scene.bounds();
@@ -165,7 +182,15 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o) {
       "Built-in scene instead of a model: " + joined(builtin_scene_names()) + " (default: shapes)");
   cmd.add_option("--eye", o.eye, "Camera position x,y,z (default: framed automatically)");
   cmd.add_option("--target", o.target, "Point the camera looks at x,y,z (default: the centre)");
-  cmd.add_option("--up", o.up, "Camera up direction x,y,z (default: 0,1,0)");
+  cmd.add_option("--up", o.up,
+                 "The model's up axis, +X, -X, +Y, -Y, +Z or -Z: the automatic view keeps it up "
+                 "(default: +Y); or the camera's up direction x,y,z, which rolls the view");
+  cmd.add_option("--azimuth", o.azimuth,
+                 "Turn the automatic view about the up axis by DEG, counter-clockwise seen from "
+                 "above (180: the other side)");
+  cmd.add_option("--elevation", o.elevation,
+                 "The automatic view's angle above the horizon in degrees, -90 .. 90 (90: from "
+                 "straight above; default: about 24)");
   cmd.add_option(
       "--fov", o.fov,
       "Vertical field of view in degrees, (0, 180) (default: the scene's; 50 for shapes)");
@@ -213,6 +238,14 @@ Scene build_scene(const SceneOptions& o) {
   } else {
     scene = import_scene(o.model);
   }
+  if (changes_framing(o)) {
+    scene.framing = requested_framing(o);
+    scene.camera = frame_scene(scene, 16.0f / 9.0f, *scene.framing);
+    // Import lit the model from the view it framed; the lights follow the new view (a
+    // built-in scene keeps its own, a file's lights stay where the file puts them).
+    if (!o.model.empty() && !scene.has_file_lights)
+      scene.lighting.lights = three_point_lights(scene.camera.forward(), scene.camera.right());
+  }
   if (o.shading) {
     ShadingModel model;
     if (!parse_shading_model(*o.shading, model)) {
@@ -247,8 +280,39 @@ Scene build_scene(const SceneOptions& o) {
   return scene;
 }
 
+std::optional<glm::vec3> parse_up_axis(const std::string& text) {
+  std::string axis = text;
+  float sign = 1.0f;
+  if (!axis.empty() && (axis[0] == '+' || axis[0] == '-')) {
+    sign = axis[0] == '-' ? -1.0f : 1.0f;
+    axis.erase(0, 1);
+  }
+  if (axis.size() != 1) return std::nullopt;
+  switch (axis[0]) {
+    case 'x':
+    case 'X':
+      return glm::vec3(sign, 0.0f, 0.0f);
+    case 'y':
+    case 'Y':
+      return glm::vec3(0.0f, sign, 0.0f);
+    case 'z':
+    case 'Z':
+      return glm::vec3(0.0f, 0.0f, sign);
+    default:
+      return std::nullopt;
+  }
+}
+
+bool changes_framing(const SceneOptions& o) {
+  return (o.up && parse_up_axis(*o.up)) || o.azimuth || o.elevation;
+}
+
 Camera build_camera(const SceneOptions& o, const Scene& scene, float aspect) {
-  Camera camera = scene.camera;
+  if ((o.azimuth || o.elevation) && (o.camera_index || o.eye || o.target)) {
+    throw Error(std::string(o.azimuth ? "--azimuth" : "--elevation") +
+                ": turns the automatic view, so not with --camera, --eye or --target");
+  }
+  Camera camera = scene_camera(scene, aspect);
   if (o.camera_index) {
     int n = *o.camera_index;
     if (n < 0 || n >= static_cast<int>(scene.cameras.size())) {
@@ -259,7 +323,14 @@ Camera build_camera(const SceneOptions& o, const Scene& scene, float aspect) {
   }
   if (o.eye) camera.eye = parse_vec3("--eye", *o.eye);
   if (o.target) camera.target = parse_vec3("--target", *o.target);
-  if (o.up) camera.up = parse_vec3("--up", *o.up);
+  if (o.up) {
+    if (auto axis = parse_up_axis(*o.up)) {
+      // The automatic view keeps the axis up already; a placed camera is turned to it.
+      if (o.camera_index || o.eye || o.target) camera.up = *axis;
+    } else {
+      camera.up = parse_vec3("--up", *o.up);
+    }
+  }
   if (o.fov) camera.fov_y_degrees = *o.fov;
   if ((o.eye || o.target) && !o.camera_index) fit_clip_planes(scene, camera);
   if (o.near_plane) camera.near_plane = *o.near_plane;

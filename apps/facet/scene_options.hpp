@@ -18,6 +18,7 @@ struct SceneOptions {
   std::optional<std::string> scene;
   std::optional<std::string> eye, target, up;
   std::optional<float> fov, near_plane, far_plane;
+  std::optional<float> azimuth, elevation;  // turn the automatic view (Framing)
   std::optional<int> camera_index;
   std::optional<std::string> shading, cull;
   std::vector<std::string> lights;
@@ -31,10 +32,20 @@ struct SceneOptions {
 void add_scene_options(CLI::App& command, SceneOptions& options);
 
 // Imports the model or builds the built-in scene (default `shapes`), then applies the
-// options. Throws facet::Error naming the flag or file at fault.
+// options; --up AXIS, --azimuth and --elevation make the scene's default view the automatic
+// framing they describe (Scene::framing), for a built-in scene too. Throws facet::Error naming
+// the flag or file at fault.
 Scene build_scene(const SceneOptions& options);
 
-// The camera the options ask for: --camera N, else the scene's, then --eye/--target/... on top.
+// The camera the options ask for: --camera N, else the scene's (scene_camera: the automatic
+// view framed for this aspect), then --eye/--target/... on top.
 Camera build_camera(const SceneOptions& options, const Scene& scene, float aspect);
+
+// --up's axis form: +X, -X, +Y, -Y, +Z or -Z (the sign optional, either case) as a unit vector;
+// nothing for anything else (the x,y,z form).
+std::optional<glm::vec3> parse_up_axis(const std::string& text);
+
+// Whether the options ask to turn the automatic view (--up AXIS, --azimuth, --elevation).
+bool changes_framing(const SceneOptions& options);
 
 }  // namespace facet::cli

@@ -19,7 +19,6 @@ namespace facet::cli {
 namespace {
 
 const std::string kBackground = "0.53,0.66,0.82";  // sRGB sky blue, as `facet render`
-constexpr float kWalkSecondsAcross = 20.0f;        // walking speed: the scene's size in this time
 
 std::string view_description() {
   std::string text =
@@ -61,6 +60,13 @@ int run_view(const ViewOptions& o) {
   if (o.time && !std::isfinite(*o.time)) throw Error("--time: must be a finite number of seconds");
   if (!o.screenshot.empty()) check_writable(o.screenshot);
   glm::vec3 background = parse_color("--background", kBackground);
+  if (auto axis = o.scene.up ? parse_up_axis(*o.scene.up) : std::nullopt;
+      axis && *axis != glm::vec3(0.0f, 1.0f, 0.0f)) {
+    // The first-person and orbit controls turn about +Y; a view turned to another axis would
+    // flip back at the first move.
+    throw Error("--up " + *o.scene.up +
+                ": the viewer's controls keep +Y up; other model axes are for facet render");
+  }
   ViewSetup setup;
   if (!o.camera_path.empty()) setup.camera_path = CameraPath::load(o.camera_path);
   // The window first: with no display the command fails before loading anything.
@@ -73,9 +79,7 @@ int run_view(const ViewOptions& o) {
   setup.world = loaded.world();
   setup.start = build_camera(o.scene, scene, static_cast<float>(size.width) / size.height);
   setup.camera_mode = o.scene.model.empty() ? CameraMode::first_person : CameraMode::orbit;
-  Bounds bounds = scene.bounds();
-  float extent = bounds.empty() ? 10.0f : glm::length(bounds.max - bounds.min);
-  setup.walk_speed = extent / kWalkSecondsAcross;
+  setup.walk_speed = walking_speed(scene);
   setup.settings.size = size;
   setup.settings.threads = o.threads;
   setup.settings.fov_degrees = setup.start.fov_y_degrees;

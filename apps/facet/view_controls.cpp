@@ -10,14 +10,23 @@
 namespace facet::cli {
 namespace {
 
-constexpr float kRunFactor = 4.0f;           // Shift
-constexpr float kTurnDegreesPerSecond = 90;  // arrow keys
+constexpr float kWalkMetresPerSecond = 1.4f;  // a person's usual walking pace
+constexpr float kWalkSecondsAcross = 20.0f;   // unknown units: the scene's diagonal in this time
+constexpr float kRunFactor = 4.0f;            // Shift
+constexpr float kTurnDegreesPerSecond = 90;   // arrow keys
 constexpr float kMouseDegreesPerPixel = 0.15f;
 constexpr float kZoomPerWheelStep = 0.9f;  // orbit: distance factor per wheel notch
 constexpr float kZoomPerSecond = 1.5f;     // orbit, W/S: e-folds of distance per second
 constexpr float kPanPerPixel = 0.002f;     // orbit: pan, in distances per pixel dragged
 
 }  // namespace
+
+float walking_speed(const Scene& scene) {
+  if (scene.metres_per_unit > 0.0f) return kWalkMetresPerSecond / scene.metres_per_unit;
+  Bounds bounds = scene.bounds();
+  float extent = bounds.empty() ? 10.0f : glm::length(bounds.max - bounds.min);
+  return extent / kWalkSecondsAcross;
+}
 
 ViewControls::ViewControls(const Camera& start, float speed, CameraMode mode)
     : start_(start),
@@ -122,18 +131,25 @@ void ViewControls::update(double dt) {
   auto axis = [&](SDL_Scancode negative, SDL_Scancode positive) {
     return static_cast<float>(key[positive]) - static_cast<float>(key[negative]);
   };
-  float forward = axis(SDL_SCANCODE_S, SDL_SCANCODE_W);
-  float strafe = axis(SDL_SCANCODE_A, SDL_SCANCODE_D);
+  HeldKeys keys;
+  keys.forward = axis(SDL_SCANCODE_S, SDL_SCANCODE_W);
+  keys.strafe = axis(SDL_SCANCODE_A, SDL_SCANCODE_D);
   bool up = key[SDL_SCANCODE_E] || key[SDL_SCANCODE_SPACE];
   bool down = key[SDL_SCANCODE_Q] || key[SDL_SCANCODE_LCTRL] || key[SDL_SCANCODE_RCTRL];
-  float rise = static_cast<float>(up) - static_cast<float>(down);
-  float turn_axis = axis(SDL_SCANCODE_RIGHT, SDL_SCANCODE_LEFT);  // positive yaw turns left
-  float tilt = axis(SDL_SCANCODE_DOWN, SDL_SCANCODE_UP);
+  keys.rise = static_cast<float>(up) - static_cast<float>(down);
+  keys.turn = axis(SDL_SCANCODE_RIGHT, SDL_SCANCODE_LEFT);  // positive yaw turns left
+  keys.tilt = axis(SDL_SCANCODE_DOWN, SDL_SCANCODE_UP);
+  keys.run = key[SDL_SCANCODE_LSHIFT] || key[SDL_SCANCODE_RSHIFT];
+  move(keys, dt);
+}
+
+void ViewControls::move(const HeldKeys& keys, double dt) {
+  const float forward = keys.forward, strafe = keys.strafe, rise = keys.rise;
+  const float turn_axis = keys.turn, tilt = keys.tilt;
   if (forward == 0 && strafe == 0 && rise == 0 && turn_axis == 0 && tilt == 0) return;
 
   float seconds = static_cast<float>(dt);
-  bool run = key[SDL_SCANCODE_LSHIFT] || key[SDL_SCANCODE_RSHIFT];
-  float factor = run ? kRunFactor : 1.0f;
+  float factor = keys.run ? kRunFactor : 1.0f;
   if (mode_ == CameraMode::orbit) {
     // A/D and the arrows orbit, W/S zoom, Q/E move the target down/up.
     zoom(std::exp(-forward * kZoomPerSecond * factor * seconds));

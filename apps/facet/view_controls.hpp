@@ -4,6 +4,7 @@
 #pragma once
 
 #include "facet/camera.hpp"
+#include "facet/scene.hpp"
 
 union SDL_Event;
 
@@ -12,6 +13,22 @@ namespace facet::cli {
 enum class ViewAction { none, quit, screenshot, window_screenshot, toggle_mute, camera_mode };
 
 enum class CameraMode { first_person, orbit };
+
+// First-person walking speed in world units per second: a person's walk (1.4 m/s) where the
+// scene says what a unit is (Scene::metres_per_unit: the built-in worlds), else a pace that
+// crosses the scene's bounding box diagonally in 20 s (a model of unknown units). Shift runs
+// at 4 times this.
+float walking_speed(const Scene& scene);
+
+// The movement keys held during a frame, each axis -1, 0 or 1.
+struct HeldKeys {
+  float forward = 0.0f;  // W / S
+  float strafe = 0.0f;   // D / A
+  float rise = 0.0f;     // E or Space / Q or Ctrl
+  float turn = 0.0f;     // Left / Right (positive turns left)
+  float tilt = 0.0f;     // Up / Down
+  bool run = false;      // Shift
+};
 
 class ViewControls {
  public:
@@ -25,6 +42,8 @@ class ViewControls {
 
   // Moves and turns by the keys held now, scaled by the frame's delta time in seconds.
   void update(double dt);
+  // Moves and turns by these keys for dt seconds (what update does with the keyboard's state).
+  void move(const HeldKeys& keys, double dt);
 
   // The camera to render this frame with. Until the first move it is exactly the start camera
   // with this field of view and aspect (so a scripted frame matches `facet render`).

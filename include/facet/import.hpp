@@ -22,7 +22,8 @@ struct ImportOptions {
 };
 
 // Throws facet::Error (file, and line or index where known) if the file cannot be read. The
-// scene's camera frames the whole model (frame_scene, 16:9); a file without lights gets three
+// scene's camera frames the whole model (frame_scene, 16:9, with Scene::framing set so that
+// scene_camera frames it again for another aspect); a file without lights gets three
 // lights around that view and an ambient term (three_point_lights), so it draws lit as it is.
 Scene import_scene(const std::string& path, const ImportOptions& options = {});
 

@@ -169,7 +169,8 @@ class PyRenderer {
     Camera camera;
     if (camera_value.is_none()) {
       std::shared_lock lock(scene.mutex);
-      camera = scene.scene.camera;
+      // A loaded file's automatic view is framed again for this image's aspect.
+      camera = scene_camera(scene.scene, static_cast<float>(width_) / static_cast<float>(height_));
     } else {
       camera = object_of<Camera>(camera_value, "render", "camera", "Camera");
     }
@@ -254,8 +255,9 @@ time.)doc")
       .def("render", &PyRenderer::render, py::arg("scene"), py::arg("camera") = py::none(),
            py::arg("outputs") = py::make_tuple("color", "depth"), py::kw_only(),
            py::arg("color_format") = "uint8", py::arg("normal_space") = "world", R"doc(
-Renders scene seen through camera (default: scene.camera) with the aspect of this renderer's
-image (a camera from intrinsics keeps its own), and returns a dict of NumPy arrays, one per name
+Renders scene seen through camera (default: scene.camera, or for a loaded file the same
+automatic view framed for this image's aspect) with the aspect of this renderer's image (a
+camera from intrinsics keeps its own), and returns a dict of NumPy arrays, one per name
 in outputs (facet.OUTPUTS lists them). Every output but color holds 0 where nothing was drawn.
   color:       (H, W, 4) uint8, sRGB color with linear alpha; color_format="float": float32
                linear RGBA

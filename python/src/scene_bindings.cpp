@@ -182,10 +182,14 @@ object-to-world matrix (default: identity). Arrays are copied.)doc")
           },
           [](SceneHandle& handle, py::handle value) {
             const Camera camera = object_of<Camera>(value, "Scene", "camera", "Camera");
-            change_scene(handle, [&](SceneHandle& h) { h.scene.camera = camera; });
+            change_scene(handle, [&](SceneHandle& h) {
+              h.scene.camera = camera;
+              h.scene.framing.reset();  // a camera set by hand is kept as it is
+            });
           },
           "The default view (render(scene) without a camera): for a loaded file, a camera that "
-          "frames the whole model.")
+          "frames the whole model (for 16:9; render frames it again for its image's aspect, "
+          "until a camera is set here).")
       .def_property_readonly(
           "cameras",
           [](const SceneHandle& handle) {

@@ -142,6 +142,22 @@ def test_load_reads_a_model_frames_it_and_numbers_its_nodes(tmp_path):
     assert len(facet.load(str(path)).instances) == 1
 
 
+def test_load_frames_the_model_for_each_renderers_aspect(tmp_path):
+    # A long bar: framed for 16:9 and narrowed to a tall image it would cross the border.
+    vertices, faces = icosphere(1)
+    path = write_obj(tmp_path / "bar.obj", vertices * (4, 1, 1), faces)
+    scene = facet.load(path)
+    for width, height in ((30, 60), (64, 64), (80, 60), (160, 90)):
+        depth = facet.Renderer(width, height).render(scene, outputs=("depth",))["depth"]
+        border = np.concatenate((depth[0], depth[-1], depth[:, 0], depth[:, -1]))
+        assert np.all(border == 0), (width, height)  # 0: nothing drawn
+        assert np.count_nonzero(depth) > width * height / 20
+    # A camera set by hand is kept as it is (stretched to the image, as any camera is).
+    scene.camera = facet.Camera.look_at((0, 0, 3), (0, 0, 0))
+    depth = facet.Renderer(30, 60).render(scene, outputs=("depth",))["depth"]
+    assert np.count_nonzero(depth[30]) == 30  # the bar crosses the whole row
+
+
 def test_load_numbers_instances_of_every_object(tmp_path):
     vertices, faces = icosphere(0)
     text = ""

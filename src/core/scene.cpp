@@ -122,19 +122,60 @@ void draw_scene(Renderer& renderer, const Scene& scene) {
   }
 }
 
-Camera frame_scene(const Scene& scene, float aspect, float fov_y_degrees) {
+void Framing::validate() const {
+  const glm::vec3 a = glm::abs(up);
+  const bool axis = (a.x == 1.0f && a.y == 0.0f && a.z == 0.0f) ||
+                    (a.x == 0.0f && a.y == 1.0f && a.z == 0.0f) ||
+                    (a.x == 0.0f && a.y == 0.0f && a.z == 1.0f);
+  if (!axis) throw Error("framing: up must be one of +X, -X, +Y, -Y, +Z, -Z");
+  if (!std::isfinite(azimuth_degrees)) throw Error("framing: azimuth must be finite");
+  if (elevation_degrees && !(std::abs(*elevation_degrees) <= 90.0f))
+    throw Error("framing: elevation must be within -90 .. 90 degrees");
+  if (!(fov_y_degrees > 0.0f && fov_y_degrees < 180.0f))
+    throw Error("framing: the field of view must be within (0, 180) degrees");
+}
+
+Camera frame_scene(const Scene& scene, float aspect, const Framing& framing) {
+  framing.validate();
   Bounds b = scene.bounds();
   if (b.empty()) b.add(glm::vec3(-1.0f)), b.add(glm::vec3(1.0f));
   glm::vec3 centre = b.centre();
   float radius = std::max(glm::length(b.max - b.min) * 0.5f, 1e-6f);
-  // Look from the front right, above; then back off until every vertex is in view: a point
-  // at (x, y, z) in view axes (z toward the eye) needs distance >= z + |x| / tan(half fov x),
-  // and the same for y. Fitting the vertices, not the bounding box, frames round models
-  // tightly.
-  glm::vec3 back = glm::normalize(glm::vec3(0.55f, 0.45f, 0.85f));
-  glm::vec3 right = glm::normalize(glm::cross(glm::vec3(0, 1, 0), back));
-  glm::vec3 up = glm::cross(back, right);
-  float tan_y = std::tan(glm::radians(fov_y_degrees) * 0.5f), tan_x = tan_y * aspect;
+  // The model's own axes: up, right and front (front = right x up, as +Z is for +Y up).
+  const glm::vec3 model_up = framing.up;
+  const glm::vec3 model_right = model_up.z != 0.0f
+                                    ? glm::vec3(1.0f, 0.0f, 0.0f)
+                                    : glm::cross(model_up, glm::vec3(0.0f, 0.0f, 1.0f));
+  const glm::vec3 model_front = glm::cross(model_right, model_up);
+  // The eye's direction from the centre: the three-quarter view from the front right, above,
+  // turned about the up axis by the azimuth (right-handed about up: front toward right).
+  float r = 0.55f, f = 0.85f;
+  if (framing.azimuth_degrees != 0.0f) {
+    const float a = glm::radians(framing.azimuth_degrees);
+    const float r0 = r, f0 = f;
+    r = r0 * std::cos(a) + f0 * std::sin(a);
+    f = f0 * std::cos(a) - r0 * std::sin(a);
+  }
+  glm::vec3 back, right, up, camera_up = model_up;
+  if (!framing.elevation_degrees) {
+    back = glm::normalize(model_right * r + model_up * 0.45f + model_front * f);
+    right = glm::normalize(glm::cross(model_up, back));
+    up = glm::cross(back, right);
+  } else {
+    // Right comes from the level direction, never from the eye's, which straight above is the
+    // up axis itself; the camera's up is the view's own, so the side the eye rose from stays
+    // at the bottom of the picture up to the pole.
+    const glm::vec3 level = glm::normalize(model_right * r + model_front * f);
+    const float e = glm::radians(*framing.elevation_degrees);
+    back = glm::normalize(level * std::cos(e) + model_up * std::sin(e));
+    right = glm::normalize(glm::cross(model_up, level));
+    up = glm::cross(back, right);
+    camera_up = up;
+  }
+  // Back off until every vertex is in view: a point at (x, y, z) in view axes (z toward the
+  // eye) needs distance >= z + |x| / tan(half fov x), and the same for y. Fitting the
+  // vertices, not the bounding box, frames round models tightly.
+  float tan_y = std::tan(glm::radians(framing.fov_y_degrees) * 0.5f), tan_x = tan_y * aspect;
   float distance = 0.0f;
   for_each_world_vertex(scene, [&](glm::vec3 p) {
     glm::vec3 d = p - centre;
@@ -147,12 +188,25 @@ Camera frame_scene(const Scene& scene, float aspect, float fov_y_degrees) {
   Camera camera;
   camera.eye = centre + back * distance;
   camera.target = centre;
-  camera.up = {0.0f, 1.0f, 0.0f};
-  camera.fov_y_degrees = fov_y_degrees;
+  camera.up = camera_up;
+  camera.fov_y_degrees = framing.fov_y_degrees;
   camera.aspect = aspect;
   camera.near_plane = std::max(distance - radius * 1.5f, distance * 0.001f);
   camera.far_plane = distance + radius * 2.0f;
   return camera;
+}
+
+Camera frame_scene(const Scene& scene, float aspect, float fov_y_degrees) {
+  Framing framing;
+  framing.fov_y_degrees = fov_y_degrees;
+  return frame_scene(scene, aspect, framing);
+}
+
+Camera scene_camera(const Scene& scene, float aspect) {
+  if (scene.framing && aspect != scene.camera.aspect) {
+    return frame_scene(scene, aspect, *scene.framing);
+  }
+  return scene.camera;
 }
 
 Camera fit_orthographic(const Scene& scene, const Camera& view, float aspect) {

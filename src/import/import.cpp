@@ -86,7 +86,9 @@ Scene import_scene(const std::string& path, const ImportOptions& options) {
   validate_meshes(scene, path);
   // Line-only models (a wireframe OBJ) still draw; a file of points or nothing at all does not.
   if (!has_primitives(scene)) throw Error(path + ": no triangles to draw");
-  scene.camera = frame_scene(scene, 16.0f / 9.0f);
+  // Framed for 16:9 here; a renderer of another aspect frames it again (scene_camera).
+  scene.framing = Framing{};
+  scene.camera = frame_scene(scene, 16.0f / 9.0f, *scene.framing);
   if (!scene.has_file_lights) {
     // A file without lights would draw as a grey silhouette: light it as a photographer lights
     // a product, from the framing view (the lights a program that moves the camera may set

@@ -82,7 +82,11 @@ float vertical_fov_degrees(const aiCamera& c) {
 // model's centre instead, the usual place a 3DS target sits.
 std::optional<Camera> convert_camera(const aiCamera& c, const Placement& at, bool gltf,
                                      bool aim_at_model, const SceneSize& size) {
-  if (!(c.mHorizontalFOV > 0.0f) || !std::isfinite(c.mHorizontalFOV)) return std::nullopt;
+  // assimp marks an orthographic camera (glTF's "orthographic": xmag, ymag) by a half width
+  // and mAspect = width / height.
+  const bool orthographic = c.mOrthographicWidth > 0.0f && std::isfinite(c.mOrthographicWidth);
+  if (!orthographic && (!(c.mHorizontalFOV > 0.0f) || !std::isfinite(c.mHorizontalFOV)))
+    return std::nullopt;
   Camera camera;
   camera.eye = glm::vec3(at.world * glm::vec4(local_position(c.mPosition, at, gltf), 1.0f));
   glm::vec3 forward = world_direction(c.mLookAt, at, glm::vec3(0, 0, -1));
@@ -97,8 +101,13 @@ std::optional<Camera> convert_camera(const aiCamera& c, const Placement& at, boo
   const float ahead = glm::dot(size.centre - camera.eye, forward);
   camera.target = camera.eye + forward * std::max(ahead, size.radius * 0.1f);
   camera.up = up;
-  camera.fov_y_degrees = vertical_fov_degrees(c);
-  camera.aspect = c.mAspect > 0.0f ? c.mAspect : kDefaultAspect;
+  camera.aspect = c.mAspect > 0.0f && std::isfinite(c.mAspect) ? c.mAspect : kDefaultAspect;
+  if (orthographic) {
+    camera.projection_kind = Projection::orthographic;
+    camera.view_height = 2.0f * c.mOrthographicWidth / camera.aspect;
+  } else {
+    camera.fov_y_degrees = vertical_fov_degrees(c);
+  }
   const float distance = glm::length(size.centre - camera.eye);
   camera.near_plane = c.mClipPlaneNear > 0.0f ? c.mClipPlaneNear : size.radius * 1e-3f;
   camera.far_plane =
@@ -205,7 +214,7 @@ void import_cameras_and_lights(const aiScene& ai, bool gltf, const std::string& 
         scene.cameras.push_back(*camera);
       else
         warn(options, path + ": camera " + std::to_string(i) +
-                          " is orthographic; facet draws perspective only, so it is left out");
+                          " has no field of view and no orthographic size, so it is left out");
     } catch (const Error& e) {
       warn(options, path + ": camera " + std::to_string(i) + " is left out: " + e.what());
     }

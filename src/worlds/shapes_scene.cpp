@@ -33,6 +33,7 @@ void add(Scene& scene, Mesh mesh, glm::vec4 color, glm::vec3 position, float tur
 
 Scene make_shapes_scene() {
   Scene scene;
+  scene.metres_per_unit = 1.0f;  // a cube 1.4 m wide, seen from 2.6 m up
   add(scene, plane(40.0f, 40.0f, 8, 8), rgb(0.32f, 0.42f, 0.30f), {0, 0, 0});
   add(scene, cube(1.4f), rgb(0.80f, 0.18f, 0.14f), {-3.2f, 0.7f, 0.2f}, 25.0f);
   add(scene, uv_sphere(0.85f, 48, 24), rgb(0.15f, 0.35f, 0.80f), {-1.0f, 0.85f, -0.4f});

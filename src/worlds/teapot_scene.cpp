@@ -21,7 +21,8 @@ Scene make_teapot_scene() {
   Scene scene;
   scene.add_object(teapot(12), std::move(material), glm::mat4(1.0f), "teapot");
   // The lights follow the view, so the camera comes first.
-  scene.camera = frame_scene(scene, 16.0f / 9.0f);
+  scene.framing = Framing{};
+  scene.camera = frame_scene(scene, 16.0f / 9.0f, *scene.framing);
   scene.lighting.lights = three_point_lights(scene.camera.forward(), scene.camera.right());
   return scene;
 }

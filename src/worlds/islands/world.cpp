@@ -262,6 +262,7 @@ IslandsWorld build_world() {
   out.waterfall_centre = terrain.falls_centre();
   set_sky(out.scene.lighting);
   out.scene.camera = start_camera(terrain);
+  out.scene.metres_per_unit = 1.0f;
   out.animate(0.0);
   return out;
 }

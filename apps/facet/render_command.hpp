@@ -6,6 +6,7 @@
 #include <string>
 
 #include "frame_options.hpp"
+#include "render_batch.hpp"
 #include "scene_options.hpp"
 
 namespace facet::cli {
@@ -20,6 +21,7 @@ struct RenderOptions {
   int threads = 0;
   int tile_size = 64;
   bool orthographic = false;
+  BatchOptions batch;  // the positional models; several, or a folder, make a batch
 };
 
 // Adds the `render` subcommand and its flags to app; options are filled on parse.

@@ -13,6 +13,7 @@
 #include <optional>
 #include <set>
 
+#include "arguments.hpp"
 #include "facet/error.hpp"
 #include "output_files.hpp"
 #include "progress.hpp"
@@ -78,6 +79,7 @@ std::string naming(const std::string& model, const std::string& message) {
 // once: a bad flag is then one usage error rather than one error per model, and every check
 // run_render makes is made, whatever flags it learns.
 void check_options(const RenderOptions& o, const std::string& folder) {
+  parse_size("--size", o.size);  // the one value the probe does not use
   RenderOptions probe = o;
   probe.batch.models.clear();
   probe.scene.model.clear();
@@ -136,6 +138,7 @@ const std::vector<std::string>& model_extensions() {
 }
 
 bool is_batch(const BatchOptions& o, const std::string& output) {
+  if (o.models.empty()) return false;  // a built-in scene: one image, whatever -o says
   if (o.models.size() > 1) return true;
   if (!output.empty() && output.back() == '/') return true;
   std::error_code ec;

@@ -20,8 +20,8 @@ struct BatchOptions {
 // Adds the batch's own flag (--format) to the render subcommand.
 void add_batch_options(CLI::App& command, BatchOptions& options);
 
-// True when the command line asks for a batch: more than one model, a folder among them, or an
-// output that names a folder (ends with '/').
+// True when the command line asks for a batch: more than one model, a folder among them, or a
+// model and an output that names a folder (ends with '/').
 bool is_batch(const BatchOptions& options, const std::string& output);
 
 // One model of a batch and the image it is written to.

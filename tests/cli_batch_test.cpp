@@ -226,6 +226,8 @@ TEST(CliUsage, ParseErrorsAreOneLineInFacetsWords) {
       {"render --scene shapes", "--output", "facet render --help"},
       {"thumbnail -s 64 a.obj", "OUTPUT", "facet thumbnail --help"},
       {"info a.obj b.obj", "b.obj", "facet info --help"},
+      {"render --ortho=maybe -o a.png", "--ortho", "facet render --help"},
+      {"--no-such-flag render", "--no-such-flag", "facet --help"},
       {"rendr a.obj", "rendr", "facet --help"},
       {"", "command", "facet --help"},
   };

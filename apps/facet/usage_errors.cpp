@@ -31,33 +31,37 @@ const CLI::App* command_of(const CLI::App& app, int argc, const char* const* arg
   return nullptr;
 }
 
-// The first word that looks like an option and is none of the command's (or the program's),
-// skipping the value of an option that takes one. CLI11 reports a missing required option
-// before an unknown one, which would blame the wrong flag.
-std::string unknown_option(const CLI::App& app, const CLI::App* command, int argc,
-                           const char* const* argv) {
-  bool after_command = command == nullptr;  // no command: the program's own options
+// The first word that looks like an option and is none of the program's (before the command)
+// or the command's (after it: commands do not take the program's options), skipping the value
+// of an option that takes one. CLI11 reports a missing required option before an unknown one,
+// which would blame the wrong flag.
+struct Unknown {
+  std::string name;                 // empty: none
+  const CLI::App* owner = nullptr;  // the program or the command it was given to
+};
+
+Unknown unknown_option(const CLI::App& app, const CLI::App* command, int argc,
+                       const char* const* argv) {
+  const CLI::App* owner = &app;  // whose options the next word may be
   bool value_next = false;
   for (int i = 1; i < argc; ++i) {
     std::string arg = argv[i];
     if (arg == "--") break;
-    if (!after_command) {
-      after_command = !looks_like_option(arg) && command->check_name(arg);
-      continue;
-    }
     if (value_next) {
       value_next = false;
       continue;
     }
-    if (!looks_like_option(arg)) continue;
+    if (!looks_like_option(arg)) {
+      if (owner == &app && command && command->check_name(arg)) owner = command;
+      continue;
+    }
     // --name=value, -ovalue: the name alone.
     std::string name = arg[1] == '-' ? arg.substr(0, arg.find('=')) : arg.substr(0, 2);
-    const CLI::Option* option = command ? command->get_option_no_throw(name) : nullptr;
-    if (!option) option = app.get_option_no_throw(name);
-    if (!option) return name;
+    const CLI::Option* option = owner->get_option_no_throw(name);
+    if (!option) return {name, owner};
     value_next = option->get_expected_min() > 0 && name == arg;
   }
-  return "";
+  return {};
 }
 
 // The text after "NAME: " in a CLI11 message that starts with a flag's name, and the name.
@@ -69,7 +73,7 @@ bool split_flag(const std::string& message, std::string& flag, std::string& rest
   return true;
 }
 
-std::string words_for(const CLI::ParseError& error, const CLI::App* command) {
+std::string words_for(const CLI::ParseError& error, const CLI::App& app, const CLI::App* command) {
   const std::string message = error.what();
   std::string flag, rest;
   if (dynamic_cast<const CLI::ExtrasError*>(&error)) {
@@ -102,7 +106,13 @@ std::string words_for(const CLI::ParseError& error, const CLI::App* command) {
       std::string body = message.substr(prefix.size());
       std::size_t equals = body.find(" = ");
       if (equals != std::string::npos) {
-        return body.substr(0, equals) + ": '" + body.substr(equals + 3) + "' is not a number";
+        std::string name = body.substr(0, equals);
+        const CLI::App& owner = command ? *command : app;
+        const CLI::Option* option = owner.get_option_no_throw(name);
+        if (option && option->get_expected_max() == 0) {
+          return name + " is a switch and takes no value";
+        }
+        return name + ": '" + body.substr(equals + 3) + "' is not a number";
       }
     }
   }
@@ -117,17 +127,17 @@ std::string words_for(const CLI::ParseError& error, const CLI::App* command) {
 std::string usage_message(const CLI::ParseError& error, const CLI::App& app, int argc,
                           const char* const* argv) {
   const CLI::App* command = command_of(app, argc, argv);
-  const std::string help =
-      command ? "facet " + command->get_name() + " --help" : std::string("facet --help");
+  const CLI::App* help_of = command;  // whose --help to read: null for the program's
   std::string words;
   if (!command && argc > 1 && !looks_like_option(argv[1])) {
     words = "unknown command '" + std::string(argv[1]) + "'";
-  } else if (std::string unknown = unknown_option(app, command, argc, argv); !unknown.empty()) {
-    words = "unknown option " + unknown;
+  } else if (Unknown unknown = unknown_option(app, command, argc, argv); !unknown.name.empty()) {
+    words = "unknown option " + unknown.name;
+    help_of = unknown.owner == &app ? nullptr : command;
   } else {
-    words = words_for(error, command);
+    words = words_for(error, app, command);
   }
-  return words + " (see " + help + ")";
+  return words + " (see facet " + (help_of ? help_of->get_name() + " " : "") + "--help)";
 }
 
 }  // namespace facet::cli

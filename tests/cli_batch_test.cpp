@@ -107,7 +107,8 @@ TEST(CliBatch, FoldersAndFilesGiveOneImageEachAndTheBadFileIsReported) {
 TEST(CliBatch, QuietWritesEverythingAndPrintsNothing) {
   fs::path dir = batch_inputs("quiet");
   CommandResult r =
-      run_facet(dir, "render in/a.obj more/a.obj --size 16x16 --format ppm -q -o out");
+      // A file and a folder whose a.obj would take the same name, however the folder is spelt.
+      run_facet(dir, "render in/a.obj ./more/ --size 16x16 --format ppm -q -o ./out");
   EXPECT_EQ(r.exit_code, 0) << r.stderr_text;
   EXPECT_EQ(r.stdout_text, "");
   EXPECT_EQ(r.stderr_text, "");

@@ -55,12 +55,12 @@ std::vector<fs::path> models_in(const fs::path& folder) {
 }
 
 // `taken` holds every name given so far; the first free one of NAME.EXT, NAME-2.EXT, ... is
-// returned and added.
+// returned and added. Paths are compared normalized (thumbs/./a.png is thumbs/a.png).
 std::string free_name(const fs::path& folder, const std::string& stem, const std::string& extension,
                       std::set<std::string>& taken) {
   for (int n = 1;; ++n) {
     std::string name = stem + (n == 1 ? "" : "-" + std::to_string(n)) + "." + extension;
-    std::string path = (folder / name).string();
+    std::string path = (folder / name).lexically_normal().string();
     if (taken.insert(path).second) return path;
   }
 }
@@ -166,8 +166,7 @@ std::vector<BatchItem> plan_batch(const std::vector<std::string>& models,
     }
     for (const fs::path& path : found) {
       fs::path folder = fs::path(output_folder) / path.parent_path().lexically_relative(model);
-      items.push_back({path.string(), free_name(folder.lexically_normal(), path.stem().string(),
-                                                extension, taken)});
+      items.push_back({path.string(), free_name(folder, path.stem().string(), extension, taken)});
     }
   }
   return items;

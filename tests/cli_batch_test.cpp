@@ -122,6 +122,21 @@ TEST(CliBatch, OneModelIntoAFolderIsABatchOfOne) {
   EXPECT_EQ(files_under(dir / "out"), std::vector<std::string>{"a.png"});
 }
 
+// On a terminal (here a pseudo-terminal from util-linux's `script`) a batch redraws one bar in
+// place instead of a summary line per model.
+TEST(CliBatch, ProgressBarOnATerminal) {
+  if (run_command("command -v script").exit_code != 0) GTEST_SKIP() << "no script(1)";
+  fs::path dir = batch_inputs("bar");
+  CommandResult r = run_command("cd '" + dir.string() + "' && script -qec \"" + FACET_CLI +
+                                " render in/a.obj more --size 16x16 -o out/\" /dev/null");
+  EXPECT_EQ(r.exit_code, 0) << r.stdout_text << r.stderr_text;
+  EXPECT_TRUE(contains(r.stdout_text, "\r[")) << r.stdout_text;
+  EXPECT_TRUE(contains(r.stdout_text, "2/2 models")) << r.stdout_text;
+  EXPECT_TRUE(contains(r.stdout_text, "2 rendered, 0 failed")) << r.stdout_text;
+  EXPECT_FALSE(contains(r.stdout_text, "triangles in")) << r.stdout_text;
+  EXPECT_EQ(files_under(dir / "out"), (std::vector<std::string>{"a-2.png", "a.png"}));
+}
+
 // A mistake in the options is one usage error before any model is drawn, not one per model,
 // and leaves no folder behind.
 TEST(CliBatch, UsageErrorsStopTheBatchBeforeItStarts) {

@@ -1,5 +1,5 @@
 // The facet program: parses the command line and runs a subcommand. Errors become one line
-// on stderr and exit code 2.
+// on stderr and exit code 2; the parser's own are put in facet's words (usage_errors.hpp).
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>

@@ -1,5 +1,6 @@
 // `facet render`: renders a model file or a built-in scene to an image (PNG, PPM), its float and
-// id outputs (OpenEXR, NumPy), one frame or a sequence (frame_options.hpp).
+// id outputs (OpenEXR, NumPy), one frame or a sequence (frame_options.hpp); several models or
+// folders into a folder (render_batch.hpp).
 #pragma once
 
 #include <CLI/CLI.hpp>

@@ -7,6 +7,8 @@
 #                                                the umbrella facet::facet
 #   P/lib/pkgconfig/facet.pc, facet-all.pc       the core's and the umbrella's link lines
 #   P/share/man/man1/facet.1                     the manual page
+#   P/share/thumbnailers/facet.thumbnailer       model thumbnails for file managers (with the
+#                                                program)
 # tests/install/install_and_build_example.cmake checks all of it by building examples/.
 
 include(CMakePackageConfigHelpers)
@@ -26,6 +28,8 @@ install(TARGETS facet_core facet_import facet_worlds facet_sound facet_all EXPOR
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 if(FACET_BUILD_PROGRAM)
   install(TARGETS facet_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+  install(FILES ${PROJECT_SOURCE_DIR}/data/facet.thumbnailer
+          DESTINATION ${CMAKE_INSTALL_DATADIR}/thumbnailers)
 endif()
 install(FILES ${PROJECT_SOURCE_DIR}/docs/facet.1 DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
 

@@ -60,8 +60,6 @@ void expect_documents_every_flag(const std::string& args) {
   }
 }
 
-TEST(CliHelp, TopLevelHelpDocumentsEveryRenderFlag) { expect_documents_every_flag("--help"); }
-
 TEST(CliHelp, RenderHelpDocumentsEveryFlag) { expect_documents_every_flag("render --help"); }
 
 // --- successful renders -------------------------------------------------------------------

@@ -12,7 +12,7 @@ namespace facet::cli {
 namespace {
 
 constexpr double kRedrawSeconds = 0.1;  // the bar is redrawn at most this often
-constexpr const char* kBarText = " %d/%d frames  %.1f frames/s  %s left";
+constexpr const char* kBarText = " %d/%d %s  %.1f %s/s  %s left";
 
 int terminal_columns(std::FILE* out) {
   winsize size{};
@@ -39,12 +39,12 @@ Progress::Style Progress::style_for(std::FILE* out, bool quiet) {
   return ::isatty(::fileno(out)) ? Style::bar : Style::lines;
 }
 
-Progress::Progress(Style style, int total, std::FILE* out)
-    : style_(style), total_(total), out_(out) {
+Progress::Progress(Style style, int total, std::FILE* out, const char* unit)
+    : style_(style), total_(total), out_(out), unit_(unit) {
   if (style_ != Style::bar) return;
   // The bar keeps one width, made to leave room for the longest text beside it.
   char longest[160];
-  std::snprintf(longest, sizeof longest, kBarText, total, total, 99999.9, "99:59:59");
+  std::snprintf(longest, sizeof longest, kBarText, total, total, unit_, 99999.9, unit_, "99:59:59");
   bar_width_ =
       std::clamp(terminal_columns(out_) - static_cast<int>(std::strlen(longest)) - 3, 10, 40);
 }
@@ -66,6 +66,11 @@ void Progress::skipped(int frame) {
     std::fprintf(out_, "frame %d (%d/%d): skipped, already written\n", frame, done(), total_);
     std::fflush(out_);
   }
+  draw_bar(done() == total_);
+}
+
+void Progress::failed() {
+  ++failed_;
   draw_bar(done() == total_);
 }
 
@@ -93,7 +98,7 @@ void Progress::draw_bar(bool force) {
   double rate = now > 0.0 ? rendered_ / now : 0.0;
   std::string left = rendered_ > 0 && rate > 0.0 ? clock_time((total_ - done()) / rate) : "-:--";
   char text[160];
-  std::snprintf(text, sizeof text, kBarText, done(), total_, rate, left.c_str());
+  std::snprintf(text, sizeof text, kBarText, done(), total_, unit_, rate, unit_, left.c_str());
   int filled =
       total_ > 0 ? static_cast<int>(static_cast<long long>(bar_width_) * done() / total_) : 0;
   std::string bar(bar_width_ + 2, '.');

@@ -31,10 +31,10 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
   CLI::App* cmd = app.add_subcommand("render",
                                      "Render a model or a built-in scene to image files, one frame "
                                      "or a sequence");
-  add_scene_options(*cmd, o.scene);
+  add_scene_options(*cmd, o.scene, &o.batch.models);
   cmd->add_option("-o,--output", o.output,
                   "Output file: .png, .ppm (binary P6), .exr, .npy or .npz; with --frames, %04d "
-                  "in the name is the frame number")
+                  "in the name is the frame number; a folder (FOLDER/) for several models")
       ->required();
   cmd->add_option("--size", o.size, "Image size WIDTHxHEIGHT, 1x1 .. 8192x8192")
       ->capture_default_str();
@@ -52,10 +52,11 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
       ->capture_default_str();
   cmd->add_option("--tile-size", o.tile_size, "Tile edge in pixels: 16, 32, 64 or 128")
       ->capture_default_str();
-  cmd->add_flag("--orthographic", o.orthographic,
+  cmd->add_flag("--orthographic,--ortho", o.orthographic,
                 "Parallel projection, fitted to the whole scene, seen along the camera's line of "
                 "sight (the automatic three-quarter view, --eye/--target or --camera)");
   add_frame_options(*cmd, o.frames);
+  add_batch_options(*cmd, o.batch);
   return cmd;
 }
 

@@ -1,11 +1,13 @@
 // `facet render`: renders a model file or a built-in scene to an image (PNG, PPM), its float and
-// id outputs (OpenEXR, NumPy), one frame or a sequence (frame_options.hpp).
+// id outputs (OpenEXR, NumPy), one frame or a sequence (frame_options.hpp); several models or
+// folders into a folder (render_batch.hpp).
 #pragma once
 
 #include <CLI/CLI.hpp>
 #include <string>
 
 #include "frame_options.hpp"
+#include "render_batch.hpp"
 #include "scene_options.hpp"
 
 namespace facet::cli {
@@ -21,6 +23,7 @@ struct RenderOptions {
   int threads = 0;
   int tile_size = 64;
   bool orthographic = false;
+  BatchOptions batch;  // the positional models; several, or a folder, make a batch
 };
 
 // Adds the `render` subcommand and its flags to app; options are filled on parse.

@@ -174,9 +174,15 @@ void fit_clip_planes(const Scene& scene, Camera& camera) {
 
 }  // namespace
 
-void add_scene_options(CLI::App& cmd, SceneOptions& o) {
-  cmd.add_option("model", o.model,
-                 "Model file to draw (OBJ, glTF/GLB, PLY, STL, 3DS, FBX, DAE, OFF, .d, ...)");
+void add_scene_options(CLI::App& cmd, SceneOptions& o, std::vector<std::string>* models) {
+  if (models) {
+    cmd.add_option("model", *models,
+                   "Model files to draw (OBJ, glTF/GLB, PLY, STL, 3DS, FBX, DAE, OFF, .d, ...); "
+                   "several, or folders, draw one image each into -o FOLDER/");
+  } else {
+    cmd.add_option("model", o.model,
+                   "Model file to draw (OBJ, glTF/GLB, PLY, STL, 3DS, FBX, DAE, OFF, .d, ...)");
+  }
   cmd.add_option(
       "--scene", o.scene,
       "Built-in scene instead of a model: " + joined(builtin_scene_names()) + " (default: shapes)");

@@ -28,8 +28,10 @@ struct SceneOptions {
   std::optional<float> reflectivity;
 };
 
-// Adds the options to a subcommand.
-void add_scene_options(CLI::App& command, SceneOptions& options);
+// Adds the options to a subcommand. With `models`, the positional takes any number of model
+// files and folders into it (render's batch) instead of the one options.model.
+void add_scene_options(CLI::App& command, SceneOptions& options,
+                       std::vector<std::string>* models = nullptr);
 
 // Imports the model or builds the built-in scene (default `shapes`), then applies the
 // options; --up AXIS, --azimuth and --elevation make the scene's default view the automatic

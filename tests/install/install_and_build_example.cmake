@@ -3,7 +3,8 @@
 #   1. static: cmake --install BUILD_DIR; shared: configure SOURCE_DIR with BUILD_SHARED_LIBS=ON
 #      (libraries only) into WORK_DIR/build, build and install that
 #   2. check the headers, libraries (and, shared, their SONAME), pkg-config files, man page,
-#      CMake package; run `facet --version` (static: the program is installed too)
+#      CMake package; run `facet --version` and the thumbnailer's Exec line (static: the
+#      program is installed too)
 #   3. configure examples/ against the prefix with find_package(facet COMPONENTS core), with
 #      assimp and OpenAL made unfindable, build it and check hello_triangle needs neither
 #   4. build hello_triangle again with plain g++ $(pkg-config --cflags --libs facet)
@@ -143,6 +144,27 @@ else()
   if(NOT result STREQUAL "0" OR NOT version_line STREQUAL "facet ${VERSION}\n")
     message(FATAL_ERROR "install test: facet --version printed '${version_line}', not "
                         "'facet ${VERSION}'")
+  endif()
+  # The thumbnailer's Exec line, run as a file manager would (%s %i %o filled in, `facet` found
+  # in the prefix), must write a PNG thumbnail of a model.
+  set(thumbnailer ${prefix}/share/thumbnailers/facet.thumbnailer)
+  require_file(${thumbnailer})
+  file(STRINGS ${thumbnailer} exec_line REGEX "^Exec=facet ")
+  if(NOT exec_line MATCHES "%s" OR NOT exec_line MATCHES "%i" OR NOT exec_line MATCHES "%o")
+    message(FATAL_ERROR "install test: ${thumbnailer} has no Exec=facet line with %s %i %o")
+  endif()
+  set(model ${WORK_DIR}/tetrahedron.obj)
+  file(WRITE ${model} "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n")
+  set(thumbnail ${WORK_DIR}/thumbnail.png)
+  string(REGEX REPLACE "^Exec=facet " "" exec_args "${exec_line}")
+  string(REPLACE "%s" "64" exec_args "${exec_args}")
+  string(REPLACE "%i" "${model}" exec_args "${exec_args}")
+  string(REPLACE "%o" "${thumbnail}" exec_args "${exec_args}")
+  separate_arguments(exec_args UNIX_COMMAND "${exec_args}")
+  run_step("run the thumbnailer's Exec line" ${prefix}/bin/facet ${exec_args})
+  file(READ ${thumbnail} signature LIMIT 8 HEX)
+  if(NOT signature STREQUAL "89504e470d0a1a0a")
+    message(FATAL_ERROR "install test: the thumbnailer wrote no PNG to ${thumbnail}")
   endif()
 endif()
 

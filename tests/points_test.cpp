@@ -111,47 +111,50 @@ TEST(Points, ASquareCoversExactlyTheHalfOpenSquaresPixels) {
 
 // Points spaced exactly their size apart tile the plane: every pixel of the grid's area once.
 TEST(Points, AGridSpacedByThePointSizeHasNoGapsAndNoDoubles) {
-  for (int size : {2, 3}) {
-    SCOPED_TRACE("size " + std::to_string(size));
-    const int columns = 12, rows = 8;
-    const glm::dvec2 origin{20.37, 15.81};
-    Mesh mesh;
-    mesh.topology = Topology::points;
-    std::vector<glm::dvec2> screen;
-    for (int j = 0; j < rows; ++j) {
-      for (int i = 0; i < columns; ++i) {
-        screen.push_back(origin + glm::dvec2(i * size, j * size));
-        // A distinct color per point: red (index + 1) / 1024, exact in float.
-        const float red = static_cast<float>(screen.size()) / 1024.0f;
-        mesh.colors.push_back({red, 0.0f, 0.0f, 1.0f});
+  // Squares' edges between pixel centres, and on them (20.0 for odd sizes, 20.5 for even: only
+  // the half-open rule then keeps neighbours from sharing a pixel).
+  for (const glm::dvec2 origin :
+       {glm::dvec2{20.37, 15.81}, glm::dvec2{20.0, 16.0}, glm::dvec2{20.5, 16.5}})
+    for (int size : {2, 3}) {
+      SCOPED_TRACE("size " + std::to_string(size) + " from " + std::to_string(origin.x));
+      const int columns = 12, rows = 8;
+      Mesh mesh;
+      mesh.topology = Topology::points;
+      std::vector<glm::dvec2> screen;
+      for (int j = 0; j < rows; ++j) {
+        for (int i = 0; i < columns; ++i) {
+          screen.push_back(origin + glm::dvec2(i * size, j * size));
+          // A distinct color per point: red (index + 1) / 1024, exact in float.
+          const float red = static_cast<float>(screen.size()) / 1024.0f;
+          mesh.colors.push_back({red, 0.0f, 0.0f, 1.0f});
+        }
+      }
+      mesh.positions = points_at(screen).positions;
+      const Framebuffer fb = render({{&mesh, point_material(static_cast<float>(size))}});
+      // At one depth, a later point does not overwrite an earlier one (the depth test is "nearer"):
+      // a doubled pixel would leave some point fewer than size x size pixels.
+      std::vector<int> per_point(screen.size(), 0);
+      int total = 0;
+      for (int y = 0; y < kHeight; ++y) {
+        for (int x = 0; x < kWidth; ++x) {
+          const float red = red_at(fb, x, y);
+          if (red == 0.0f) continue;
+          const int index = static_cast<int>(std::lround(red * 1024.0f)) - 1;
+          ASSERT_GE(index, 0);
+          ASSERT_LT(index, static_cast<int>(screen.size()));
+          ++per_point[index], ++total;
+        }
+      }
+      for (int count : per_point) EXPECT_EQ(count, size * size);
+      EXPECT_EQ(total, columns * rows * size * size);
+      // And the covered area is one solid rectangle.
+      const auto xs = span(origin.x, size), ys = span(origin.y, size);
+      for (int y = ys.front(); y < ys.front() + rows * size; ++y) {
+        for (int x = xs.front(); x < xs.front() + columns * size; ++x) {
+          EXPECT_GT(red_at(fb, x, y), 0.0f) << "gap at " << x << "," << y;
+        }
       }
     }
-    mesh.positions = points_at(screen).positions;
-    const Framebuffer fb = render({{&mesh, point_material(static_cast<float>(size))}});
-    // At one depth, a later point does not overwrite an earlier one (the depth test is "nearer"):
-    // a doubled pixel would leave some point fewer than size x size pixels.
-    std::vector<int> per_point(screen.size(), 0);
-    int total = 0;
-    for (int y = 0; y < kHeight; ++y) {
-      for (int x = 0; x < kWidth; ++x) {
-        const float red = red_at(fb, x, y);
-        if (red == 0.0f) continue;
-        const int index = static_cast<int>(std::lround(red * 1024.0f)) - 1;
-        ASSERT_GE(index, 0);
-        ASSERT_LT(index, static_cast<int>(screen.size()));
-        ++per_point[index], ++total;
-      }
-    }
-    for (int count : per_point) EXPECT_EQ(count, size * size);
-    EXPECT_EQ(total, columns * rows * size * size);
-    // And the covered area is one solid rectangle.
-    const auto xs = span(origin.x, size), ys = span(origin.y, size);
-    for (int y = ys.front(); y < ys.front() + rows * size; ++y) {
-      for (int x = xs.front(); x < xs.front() + columns * size; ++x) {
-        EXPECT_GT(red_at(fb, x, y), 0.0f) << "gap at " << x << "," << y;
-      }
-    }
-  }
 }
 
 // A point is kept or dropped by its centre: outside the frame (or before near, past far) it is

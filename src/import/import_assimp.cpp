@@ -3,9 +3,11 @@
 // model at load time; the renderer only ever sees the Scene.
 //
 // assimp post-processing is limited to what keeps the file's meaning: triangulate, split
-// meshes by primitive type, validate, drop invalid data. Point clouds (vertices without faces,
-// as assimp's PLY and OBJ readers give them) get one point face per vertex before validation,
-// which rejects a mesh without faces. Identical vertices are joined by facet
+// meshes by primitive type, validate, drop invalid data. They run after the file is read rather
+// than inside ReadFile (whose only difference is that validation would come before assimp's
+// scene preprocessor): point clouds (vertices without faces, as assimp's PLY and OBJ readers give
+// them) get one point face per finite vertex in between, since validation rejects a mesh
+// without faces (add_point_faces). Identical vertices are joined by facet
 // (finish_mesh), and so are normals generated (compute_smooth_normals, with the crease angle).
 // No pre-transforming (the node hierarchy is kept), no rescaling or re-centring.
 #include "import/import_assimp.hpp"

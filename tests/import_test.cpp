@@ -189,6 +189,40 @@ TEST(ImportContent, PointCloudsImportAsPoints) {
   EXPECT_EQ(ply.meshes[0]->colors[1], glm::vec4(1.0f, 0.0f, 1.0f, 1.0f));
 }
 
+// A binary PLY of vertices only (the scanner's form): every point, in its colors (sRGB bytes
+// made linear), a non-finite one left out with a warning.
+TEST(ImportContent, BinaryPlyPointCloudKeepsItsColors) {
+  const fs::path file = fresh_test_dir("facet_import_", "binary_points") / "cloud.ply";
+  {
+    std::ofstream out(file, std::ios::binary);
+    out << "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+           "property float y\nproperty float z\nproperty uchar red\nproperty uchar green\n"
+           "property uchar blue\nend_header\n";
+    const float nan = std::nanf("");
+    const float xyz[3][3] = {{0, 0, 0}, {nan, 1, 0}, {1, 2, 3}};
+    const unsigned char rgb[3][3] = {{255, 0, 0}, {0, 255, 0}, {0, 0, 255}};
+    for (int i = 0; i < 3; ++i) {  // little-endian floats: this machine's own order
+      out.write(reinterpret_cast<const char*>(xyz[i]), sizeof xyz[i]);
+      out.write(reinterpret_cast<const char*>(rgb[i]), sizeof rgb[i]);
+    }
+  }
+  std::vector<std::string> warnings;
+  ImportOptions options;
+  options.warn = [&](const std::string& w) { warnings.push_back(w); };
+  const Scene scene = import_scene(file.string(), options);
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  const Mesh& mesh = *scene.meshes[0];
+  EXPECT_EQ(mesh.topology, Topology::points);
+  ASSERT_EQ(mesh.positions.size(), 2u);
+  EXPECT_EQ(mesh.positions[1], glm::vec3(1, 2, 3));
+  ASSERT_EQ(mesh.colors.size(), 2u);
+  EXPECT_EQ(mesh.colors[0], glm::vec4(1, 0, 0, 1));
+  EXPECT_EQ(mesh.colors[1], glm::vec4(0, 0, 1, 1));
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("1 points with a non-finite position left out"), std::string::npos);
+  EXPECT_EQ(render_small(scene).points_drawn, 2u);
+}
+
 // A point cloud whose positions are garbage near the float limit (a damaged binary PLY) is one
 // clear error; its NaN points are left out with a warning first.
 TEST(ImportErrors, PointsBeyondWhatAFloatSpansAreOneClearError) {

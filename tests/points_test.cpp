@@ -266,7 +266,7 @@ TEST(Points, PlyPointCloudRendersLikeItsGolden) {
     normals.insert(normals.end(), mesh->normals.begin(), mesh->normals.end());
   }
   ASSERT_EQ(positions.size(), normals.size());
-  const fs::path dir = fresh_test_dir("points_", "wuson");
+  const fs::path dir = fresh_test_dir("facet_points_", "wuson");
   const fs::path cloud = dir / "wuson_points.ply";
   {
     std::ofstream out(cloud);
@@ -303,7 +303,7 @@ TEST(Points, InfoSaysHowManyPoints) {
 }
 
 TEST(Points, RenderRefusesABadPointSize) {
-  const fs::path output = fresh_test_dir("points_", "bad_size") / "out.png";
+  const fs::path output = fresh_test_dir("facet_points_", "bad_size") / "out.png";
   CommandResult result =
       run_command(std::string(FACET_CLI) + " render --scene shapes --point-size 0 -o '" +
                   output.string() + "'");

@@ -60,14 +60,16 @@ std::string maps_of(const Material& m) {
 }
 
 void print_geometry(const Scene& scene) {
-  std::size_t vertices = 0, lines = 0;
+  std::size_t vertices = 0, lines = 0, points = 0;
   for (const auto& mesh : scene.meshes) {
     vertices += mesh->positions.size();
     if (mesh->topology == Topology::lines) lines += mesh->primitive_count();
+    if (mesh->topology == Topology::points) points += mesh->primitive_count();
   }
   row("meshes", std::to_string(scene.meshes.size()));
   row("triangles", std::to_string(scene.triangle_count()) + " (drawn, over every instance)");
   if (lines > 0) row("lines", std::to_string(lines));
+  if (points > 0) row("points", std::to_string(points));
   row("vertices", std::to_string(vertices));
   row("nodes", std::to_string(scene.nodes.size()));
   Bounds b = scene.bounds();

@@ -296,7 +296,8 @@ void check_ids_fit(const OutputPlan& plan, const Scene& scene) {
     }
     if (output != Output::triangle) continue;
     for (const auto& mesh : scene.meshes) {
-      if (mesh->topology != Topology::lines && mesh->primitive_count() > kLargest) {
+      if (mesh->topology != Topology::lines && mesh->topology != Topology::points &&
+          mesh->primitive_count() > kLargest) {
         throw Error("--outputs: triangle ids of this scene go up to " +
                     std::to_string(mesh->primitive_count()) + " (a mesh of that many triangles)" +
                     advice);

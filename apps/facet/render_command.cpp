@@ -113,8 +113,9 @@ int run_render(const RenderOptions& o) {
 
   const FrameStats& s = renderer.stats();
   // Wireframes and line meshes draw segments: say how many, so their frames do not read as empty.
-  const std::string lines =
+  std::string lines =
       s.lines_drawn > 0 ? ", " + std::to_string(s.lines_drawn) + " lines drawn" : "";
+  if (s.points_drawn > 0) lines += ", " + std::to_string(s.points_drawn) + " points drawn";
   // Outputs beside the color image (or instead of it): say which files they went to.
   std::vector<std::string> files = job.outputs.files(o.output);
   const std::string written = files == std::vector<std::string>{o.output} ? "" : joined(files);

@@ -230,6 +230,8 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o, std::vector<std::string>*
                  "Texture projection: spherical (default), cylindrical or planar");
   cmd.add_option("--reflectivity", o.reflectivity,
                  "Mirror reflectivity in [0, 1] for every material (needs --env)");
+  cmd.add_option("--point-size", o.point_size,
+                 "Side of each point of a point cloud in pixels, (0, 256] (default: 3)");
 }
 
 Scene build_scene(const SceneOptions& o) {
@@ -278,6 +280,12 @@ Scene build_scene(const SceneOptions& o) {
       throw Error("--reflectivity: must be in [0, 1]");
     }
     for (auto& material : scene.materials) material.reflectivity = *o.reflectivity;
+  }
+  if (o.point_size) {
+    if (!(*o.point_size > 0.0f && *o.point_size <= Material::kMaxPointSize)) {
+      throw Error("--point-size: must be in (0, 256] pixels");
+    }
+    for (auto& material : scene.materials) material.point_size = *o.point_size;
   }
   if (o.fog) {
     scene.lighting.fog = parse_fog(*o.fog, scene);

@@ -26,6 +26,7 @@ struct SceneOptions {
   std::optional<std::string> fog, fog_color;
   std::optional<std::string> texture, projection;
   std::optional<float> reflectivity;
+  std::optional<float> point_size;
 };
 
 // Adds the options to a subcommand. With `models`, the positional takes any number of model

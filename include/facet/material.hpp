@@ -79,6 +79,9 @@ struct Material {
   float alpha_cutoff = 0.5f;
 
   glm::vec4 wire_color{0.02f, 0.02f, 0.02f, 1.0f};  // for wireframe and wire_overlay
+  // Topology::points meshes: each point's square, this many pixels a side, in (0, kMaxPointSize].
+  static constexpr float kMaxPointSize = 256.0f;
+  float point_size = 3.0f;
   CullMode cull = CullMode::back;  // front faces are counter-clockwise, as in OpenGL
 };
 

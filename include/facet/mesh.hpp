@@ -1,4 +1,4 @@
-// Mesh: vertex attributes plus optional indices, drawn as triangle lists, strips or lines.
+// Mesh: vertex attributes plus optional indices, drawn as triangle lists, strips, lines or points.
 // Attributes other than positions are optional: empty, or one per vertex.
 #pragma once
 
@@ -15,6 +15,9 @@ enum class Topology {
   triangles,       // every 3 vertices (or indices) form a triangle
   triangle_strip,  // each new vertex forms a triangle with the two before it
   lines,           // every 2 vertices (or indices) form a line segment
+  // Every vertex (or index) is a point: a square Material::point_size pixels a side, in the
+  // vertex color times the material's base color, unlit (src/pipeline/raster/point.cpp).
+  points,
 };
 
 struct Mesh {
@@ -28,7 +31,8 @@ struct Mesh {
 
   // Number of vertices the topology walks (indices if present, else positions).
   std::size_t element_count() const { return indices.empty() ? positions.size() : indices.size(); }
-  // Triangles (or line segments for Topology::lines) this mesh draws.
+  // Triangles (or line segments for Topology::lines, points for Topology::points) this mesh
+  // draws.
   std::size_t primitive_count() const;
 
   // Throws facet::Error naming the first inconsistency (attribute sizes, index out of range).

@@ -38,11 +38,14 @@ struct RenderSettings {
 };
 
 struct FrameStats {
-  std::uint64_t triangles_in = 0;  // primitives submitted (triangles, plus line segments)
+  // Primitives submitted: triangles, line segments and points (a line or point mesh's
+  // Mesh::primitive_count()), so this is a count of primitives, not only of triangles.
+  std::uint64_t triangles_in = 0;
   std::uint64_t culled = 0;        // rejected: outside the frustum, back/front-facing, degenerate
   std::uint64_t clipped = 0;       // needed clipping against a plane
   std::uint64_t drawn = 0;         // triangles set up and binned (after clipping)
   std::uint64_t lines_drawn = 0;   // line segments set up and binned: line meshes, wireframes
+  std::uint64_t points_drawn = 0;  // points set up and binned (Topology::points meshes)
   // Pixels the shading model ran for, a measure of work rather than of the image: the pixels
   // of small triangles of one draw are shaded together, each having passed the depth test as
   // the tile was before the others, so a pixel that a later triangle of the batch covers

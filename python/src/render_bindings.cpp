@@ -213,6 +213,7 @@ py::dict stats_dict(const FrameStats& s) {
   d["clipped"] = s.clipped;
   d["drawn"] = s.drawn;
   d["lines_drawn"] = s.lines_drawn;
+  d["points_drawn"] = s.points_drawn;
   d["pixels_shaded"] = s.pixels_shaded;
   d["ms_geometry"] = s.ms_geometry;
   d["ms_binning"] = s.ms_binning;

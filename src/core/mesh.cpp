@@ -18,7 +18,8 @@ void check_attribute_size(std::size_t count, std::size_t positions, const char* 
   }
 }
 
-// Lists must hold whole primitives; strips may have any count (fewer than 3 draws nothing).
+// Lists must hold whole primitives; strips and points may have any count (a strip of fewer
+// than 3 draws nothing).
 void check_whole_primitives(const Mesh& mesh) {
   const std::size_t per_primitive = mesh.topology == Topology::triangles ? 3
                                     : mesh.topology == Topology::lines   ? 2
@@ -41,6 +42,8 @@ std::size_t Mesh::primitive_count() const {
       return count >= 3 ? count - 2 : 0;
     case Topology::lines:
       return count / 2;
+    case Topology::points:
+      return count;
   }
   return 0;
 }

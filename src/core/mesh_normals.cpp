@@ -229,7 +229,8 @@ void copy_attribute(std::vector<T>& out, const std::vector<T>& in, std::uint32_t
 
 void compute_smooth_normals(Mesh& mesh, float crease_angle_degrees) {
   mesh.validate();  // the helpers above trust the indices
-  if (mesh.topology == Topology::lines || mesh.positions.empty()) return;
+  if (mesh.topology == Topology::lines || mesh.topology == Topology::points) return;  // no faces
+  if (mesh.positions.empty()) return;
   const std::vector<Triangle> triangles = triangles_of(mesh);
   const Welding w = weld(mesh);
   std::vector<Face> faces(triangles.size());
@@ -308,7 +309,8 @@ void join_identical_vertices(Mesh& mesh) {
 
 void compute_tangents(Mesh& mesh) {
   mesh.validate();
-  if (mesh.topology == Topology::lines || mesh.positions.empty()) return;
+  if (mesh.topology == Topology::lines || mesh.topology == Topology::points) return;  // no faces
+  if (mesh.positions.empty()) return;
   if (mesh.normals.size() != mesh.positions.size()) compute_smooth_normals(mesh);
   const std::size_t n = mesh.positions.size();
   std::vector<glm::vec3> tangent(n, glm::vec3(0.0f)), bitangent(n, glm::vec3(0.0f));

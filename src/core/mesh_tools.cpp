@@ -36,7 +36,9 @@ void make_indexed(Mesh& mesh) {
 }
 
 void reverse_winding(Mesh& mesh) {
-  if (mesh.topology == Topology::lines || mesh.positions.empty()) return;  // lines have no side
+  // Lines and points have no side.
+  if (mesh.topology == Topology::lines || mesh.topology == Topology::points) return;
+  if (mesh.positions.empty()) return;
   make_indexed(mesh);
   if (mesh.topology == Topology::triangles) {
     for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
@@ -50,7 +52,8 @@ void reverse_winding(Mesh& mesh) {
 }
 
 const char* topology_name(Topology topology) {
-  constexpr const char* kNames[] = {"triangles", "triangle_strip", "lines"};  // in enum order
+  constexpr const char* kNames[] = {"triangles", "triangle_strip", "lines",
+                                    "points"};  // enum order
   return kNames[static_cast<int>(topology)];
 }
 

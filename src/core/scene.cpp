@@ -75,7 +75,9 @@ std::size_t Scene::triangle_count() const {
   for (const SceneNode& node : nodes) {
     for (const MeshInstance& instance : node.instances) {
       const Mesh& mesh = *meshes[instance.mesh];
-      if (mesh.topology != Topology::lines) count += mesh.primitive_count();
+      if (mesh.topology != Topology::lines && mesh.topology != Topology::points) {
+        count += mesh.primitive_count();
+      }
     }
   }
   return count;

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -84,8 +85,19 @@ Scene import_scene(const std::string& path, const ImportOptions& options) {
   Scene scene = extension == ".d" ? io::import_d_scene(path, options)
                                   : io::import_assimp_scene(path, options);
   validate_meshes(scene, path);
-  // Line-only models (a wireframe OBJ) still draw; a file of points or nothing at all does not.
+  // Line-only models (a wireframe OBJ) and point clouds still draw; a file of nothing does not.
   if (!has_primitives(scene)) throw Error(path + ": no triangles to draw");
+  // Positions near the float limit (garbage read from a damaged binary file) give no camera that
+  // can frame them: say so rather than fail later on a camera made of infinities.
+  const Bounds bounds = scene.bounds();
+  const glm::vec3 size = bounds.max - bounds.min;
+  if (!std::isfinite(size.x) || !std::isfinite(size.y) || !std::isfinite(size.z)) {
+    char span[96];
+    std::snprintf(span, sizeof span, "(%g, %g, %g) to (%g, %g, %g)", bounds.min.x, bounds.min.y,
+                  bounds.min.z, bounds.max.x, bounds.max.y, bounds.max.z);
+    throw Error(path + ": positions span more than a float can hold, " + span +
+                ": a damaged file?");
+  }
   // Framed for 16:9 here; a renderer of another aspect frames it again (scene_camera).
   scene.framing = Framing{};
   scene.camera = frame_scene(scene, 16.0f / 9.0f, *scene.framing);

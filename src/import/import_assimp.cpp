@@ -3,7 +3,11 @@
 // model at load time; the renderer only ever sees the Scene.
 //
 // assimp post-processing is limited to what keeps the file's meaning: triangulate, split
-// meshes by primitive type, validate, drop invalid data. Identical vertices are joined by facet
+// meshes by primitive type, validate, drop invalid data. They run after the file is read rather
+// than inside ReadFile (whose only difference is that validation would come before assimp's
+// scene preprocessor): point clouds (vertices without faces, as assimp's PLY and OBJ readers give
+// them) get one point face per finite vertex in between, since validation rejects a mesh
+// without faces (add_point_faces). Identical vertices are joined by facet
 // (finish_mesh), and so are normals generated (compute_smooth_normals, with the crease angle).
 // No pre-transforming (the node hierarchy is kept), no rescaling or re-centring.
 #include "import/import_assimp.hpp"
@@ -20,6 +24,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <unordered_map>
 #include <vector>
 
@@ -83,21 +88,69 @@ float srgb_to_linear(float c) {
 }
 
 bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+glm::vec3 to_vec3(const aiVector3D& v) { return {v.x, v.y, v.z}; }
 
-// The attributes of one aiMesh. With SortByPType each aiMesh holds one primitive type; points
-// are dropped (nothing to draw), lines kept as a line mesh.
+// assimp's PLY reader (a file without a face element) and OBJ reader (`v` lines only) hand back
+// a point cloud as a mesh of vertices without faces, which validation rejects ("contains no
+// faces"): give such a mesh one point face per vertex, as the glTF reader does for POINTS.
+// Vertices whose position is not finite get none (scanners write NaN for a missing sample):
+// post-processing ignores vertices no face uses, where one NaN among them would make it drop
+// the whole mesh, and convert_mesh keeps only the points faces use. Returns how many were left
+// out.
+std::size_t add_point_faces(aiScene& ai) {
+  std::size_t dropped = 0;
+  for (unsigned i = 0; ai.mMeshes && i < ai.mNumMeshes; ++i) {
+    aiMesh* mesh = ai.mMeshes[i];
+    if (!mesh || mesh->mFaces || mesh->mNumFaces != 0 || !mesh->mVertices) continue;
+    const unsigned n = mesh->mNumVertices;
+    unsigned finite_count = 0;
+    for (unsigned v = 0; v < n; ++v) finite_count += finite(to_vec3(mesh->mVertices[v]));
+    dropped += n - finite_count;
+    if (finite_count == 0) continue;
+    mesh->mFaces = new aiFace[finite_count];  // assimp frees them with the scene
+    mesh->mNumFaces = finite_count;
+    for (unsigned v = 0, f = 0; v < n; ++v) {
+      if (!finite(to_vec3(mesh->mVertices[v]))) continue;
+      mesh->mFaces[f].mNumIndices = 1;
+      mesh->mFaces[f++].mIndices = new unsigned[1]{v};
+    }
+    mesh->mPrimitiveTypes = aiPrimitiveType_POINT;
+  }
+  return dropped;
+}
+
+// A point mesh as the points its indices name, in their order, without indices: the vertices
+// no point uses (add_point_faces left out the non-finite ones) are gone.
+void gather_points(Mesh& mesh) {
+  auto gather = [&](auto& attribute) {
+    if (attribute.empty()) return;
+    std::remove_reference_t<decltype(attribute)> kept;
+    kept.reserve(mesh.indices.size());
+    for (std::uint32_t index : mesh.indices) kept.push_back(attribute[index]);
+    attribute = std::move(kept);
+  };
+  gather(mesh.positions), gather(mesh.normals), gather(mesh.texcoords);
+  gather(mesh.colors), gather(mesh.tangents);
+  mesh.indices.clear();
+}
+
+// The attributes of one aiMesh. With SortByPType each aiMesh holds one primitive type: a
+// triangle, line or point mesh.
 std::optional<Mesh> convert_mesh(const aiMesh& in, bool linear_colors) {
-  std::size_t triangles = 0, lines = 0;
+  std::size_t triangles = 0, lines = 0, points = 0;
   if (!in.mFaces) return std::nullopt;  // assimp can hand back partial scenes
   for (unsigned f = 0; f < in.mNumFaces; ++f) {
     if (!in.mFaces[f].mIndices) continue;
     triangles += in.mFaces[f].mNumIndices == 3;
     lines += in.mFaces[f].mNumIndices == 2;
+    points += in.mFaces[f].mNumIndices == 1;
   }
-  if (!in.mVertices || (triangles == 0 && lines == 0)) return std::nullopt;
+  if (!in.mVertices || (triangles == 0 && lines == 0 && points == 0)) return std::nullopt;
   Mesh mesh;
-  mesh.topology = triangles > 0 ? Topology::triangles : Topology::lines;
-  const unsigned corners = triangles > 0 ? 3 : 2;
+  mesh.topology = triangles > 0 ? Topology::triangles
+                  : lines > 0   ? Topology::lines
+                                : Topology::points;
+  const unsigned corners = triangles > 0 ? 3 : lines > 0 ? 2 : 1;
   const unsigned n = in.mNumVertices;
   mesh.positions.resize(n);
   for (unsigned i = 0; i < n; ++i)
@@ -132,12 +185,13 @@ std::optional<Mesh> convert_mesh(const aiMesh& in, bool linear_colors) {
       mesh.tangents[i] = glm::vec4(t, w);
     }
   }
-  mesh.indices.reserve(static_cast<std::size_t>(corners) * std::max(triangles, lines));
+  mesh.indices.reserve(static_cast<std::size_t>(corners) * std::max({triangles, lines, points}));
   for (unsigned f = 0; f < in.mNumFaces; ++f) {
     const aiFace& face = in.mFaces[f];
     if (!face.mIndices || face.mNumIndices != corners) continue;
     mesh.indices.insert(mesh.indices.end(), face.mIndices, face.mIndices + corners);
   }
+  if (mesh.topology == Topology::points) gather_points(mesh);
   return mesh;
 }
 
@@ -181,7 +235,7 @@ void finish_mesh(Mesh& mesh, const Material& material, const ImportOptions& opti
     throw Error(where + ": " + what);
   }
   repair_attributes(mesh, where);
-  if (mesh.topology == Topology::lines) return;
+  if (mesh.topology == Topology::lines || mesh.topology == Topology::points) return;
   // Either joins identical vertices (assimp hands each face corner its own).
   if (mesh.normals.empty()) {
     compute_smooth_normals(mesh, options.crease_angle_degrees);
@@ -300,7 +354,17 @@ Scene import_assimp_scene(const std::string& path, const ImportOptions& options)
   Assimp::Importer importer;
   const aiScene* ai = nullptr;
   try {
-    ai = importer.ReadFile(path, kPostProcess);
+    // Read, then post-process (validation first): point clouds need their faces in between.
+    ai = importer.ReadFile(path, 0);
+    if (ai) {
+      // The importer's own scene, not const.
+      const std::size_t dropped = add_point_faces(*const_cast<aiScene*>(ai));
+      if (dropped > 0) {
+        io::warn(options, path + ": " + std::to_string(dropped) +
+                              " points with a non-finite position left out");
+      }
+      ai = importer.ApplyPostProcessing(kPostProcess);
+    }
   } catch (const std::exception& e) {  // assimp's DeadlyImportError escapes in some readers
     throw Error(path + ": cannot import: " + one_line(e.what()));
   }

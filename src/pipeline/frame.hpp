@@ -2,10 +2,10 @@
 //   renderer.cpp records DrawRecords;
 //   geometry/vertex.cpp fills each draw's ClipVertex buffer (clip position + varyings);
 //   geometry/primitive.cpp assembles primitives, geometry/clip.cpp clips them, setup/ appends
-//   SetupTriangles/SetupLines (and their varying planes) to the Frame;
+//   SetupTriangles/SetupLines/SetupPoints (and the triangles' varying planes) to the Frame;
 //   bin/bin.cpp appends primitive references to the tile bins;
-//   raster/ (render_tile.cpp, raster.hpp, line.cpp) reads them per tile; output/ resolves
-//   tiles to the framebuffer.
+//   raster/ (render_tile.cpp, raster.hpp, line.cpp, point.cpp) reads them per tile; output/
+//   resolves tiles to the framebuffer.
 // Every container is cleared, not freed, between frames, so steady-state frames reuse memory.
 #pragma once
 
@@ -165,7 +165,13 @@ inline std::int64_t edge_at_centre(const SetupTriangle& t, int i, int x, int y) 
   return std::int64_t{t.a[i]} * pixel_centre(x) + std::int64_t{t.b[i]} * pixel_centre(y) + t.c[i];
 }
 
+// Bin entries: a triangle index, a line index with kLineBit set, or a point index with
+// kPointBit set. Indices stay below kMaxPrimitiveIndex (primitive_sink.hpp says why that is
+// no limit), clear of these bits and of the sink's kOverflowBit.
 inline constexpr std::uint32_t kLineBit = 0x80000000u;
+inline constexpr std::uint32_t kPointBit = 0x20000000u;
+inline constexpr std::uint32_t kMaxPrimitiveIndex = kPointBit;
+inline bool is_triangle_entry(std::uint32_t entry) { return !(entry & (kLineBit | kPointBit)); }
 
 // A line segment ready to rasterize (line.cpp says how lines cover pixels).
 struct SetupLine {
@@ -175,22 +181,31 @@ struct SetupLine {
   glm::vec4 color;  // linear RGBA
 };
 
+// A point ready to rasterize: setup already applied the fill rule (setup.hpp's setup_point), so
+// it covers exactly the pixels of its box, at one depth.
+struct SetupPoint {
+  int min_x, min_y, max_x, max_y;  // the pixels it covers, inclusive, inside the framebuffer
+  float z;                         // window depth of its centre
+  glm::vec4 color;                 // linear RGBA
+};
+
 // Set-up primitives: what setup produces and raster reads. SetupTriangle::varying_planes
 // indexes planes.
 struct PrimitiveBuffer {
   std::vector<SetupTriangle> triangles;
   std::vector<SetupLine> lines;
+  std::vector<SetupPoint> points;  // never in a chunk's overflow: one point per input point
   std::vector<Plane> planes;
 
-  void clear() { triangles.clear(), lines.clear(), planes.clear(); }
+  void clear() { triangles.clear(), lines.clear(), points.clear(), planes.clear(); }
 };
 
 // A set-up primitive as binning reads it (bin.hpp's binning_entry makes it while setup still
-// has the primitive in cache): its index (a triangle index, or a line index with kLineBit
-// set), the rectangle of tiles its pixel bounding box touches (inclusive; at most 8192 / 16
-// tiles a side, Framebuffer::kMaxSize), and which of those tiles it may cover: bit
-// (ty - tile_y0) * (tile_x1 - tile_x0 + 1) + (tx - tile_x0), for rectangles of at most
-// kMaskedTiles tiles. Binning edge-tests bigger rectangles' tiles itself.
+// has the primitive in cache): its index (a bin entry: kLineBit, kPointBit), the rectangle of tiles
+// its pixel bounding box touches (inclusive; at most 8192 / 16 tiles a side,
+// Framebuffer::kMaxSize), and which of those tiles it may cover: bit (ty - tile_y0) * (tile_x1 -
+// tile_x0 + 1) + (tx - tile_x0), for rectangles of at most kMaskedTiles tiles. Binning edge-tests
+// bigger rectangles' tiles itself.
 inline constexpr int kMaskedTiles = 32;
 struct SequenceEntry {
   std::uint32_t index;
@@ -213,7 +228,7 @@ struct GeometryChunk {
   struct Region {
     std::uint32_t begin = 0, capacity = 0, used = 0;
   };
-  Region triangles, lines;
+  Region triangles, lines, points;
   std::uint32_t planes_begin = 0;  // triangle region slot i has planes_begin + i * varyings
   PrimitiveBuffer overflow;        // what did not fit in the regions (clipped fans)
   // Every primitive in submission order. Binning walks the chunks' sequences in order, so
@@ -250,8 +265,8 @@ struct Frame : PrimitiveBuffer {
   };
   std::vector<GeometryTask> geometry_tasks;
   std::size_t primitives = 0;  // set-up primitives: the chunks' sequences, concatenated
-  // One bin per tile, in submission order. An entry is a triangle index, or a line index
-  // with kLineBit set.
+  // One bin per tile, in submission order. An entry is a triangle index, a line index with
+  // kLineBit set or a point index with kPointBit set.
   // The bins, one flat arena: tile i's entries are bin_entries[bin_start[i] .. bin_start[i+1]).
   std::vector<std::uint32_t> bin_start;  // tiles + 1
   std::vector<std::uint32_t> bin_entries;

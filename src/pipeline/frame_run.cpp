@@ -27,11 +27,13 @@ using pipeline::TileBuffers;
 // resolve rounds back to the code, instead of the code's decoded linear value, which resolve's
 // sRGB encode turns back into the same code with far more work a pixel than the rounding. The
 // bytes are the same either way. Only for 8-bit sRGB targets at exposure 0, without fog,
-// environment, debug view or lines, when every draw's model writes display values unblended.
+// environment, debug view, lines or points (their colors are linear), when every draw's model
+// writes display values unblended. Decided after geometry, which counted the lines and points.
 bool Renderer::Impl::display_referred_frame(const Framebuffer& target) const {
   if (target.format() != ColorFormat::rgba8_srgb || settings.exposure != 0.0f) return false;
   if (background.environment != nullptr || settings.debug_view != DebugView::none) return false;
-  if (lighting.fog.mode != FogMode::none || !frame.lines.empty()) return false;
+  if (lighting.fog.mode != FogMode::none) return false;
+  if (frame.stats.lines_drawn > 0 || frame.stats.points_drawn > 0) return false;
   return std::all_of(frame.draws.begin(), frame.draws.end(),
                      [](const pipeline::DrawRecord& d) { return d.pipeline.display_referred; });
 }

@@ -84,10 +84,12 @@ void Renderer::Impl::run_extra_outputs(Framebuffer& target) {
   settings.clear_color = glm::vec4(0.0f);
   lighting.fog.mode = FogMode::none;
   lighting.environment.show_as_background = false;
-  // Lines are color only; blended draws are drawn opaque (the draws are not needed again: the
-  // next frame records its own).
+  // Lines and points are color only: the passes leave their pixels empty (no depth, id or
+  // normal), as they do the background. Blended draws are drawn opaque (the draws are not needed
+  // again: the next frame records its own).
   std::erase_if(frame.draws, [](const pipeline::DrawRecord& d) {
-    return d.mesh->topology == Topology::lines || !d.pipeline.fills_triangles;
+    return d.mesh->topology == Topology::lines || d.mesh->topology == Topology::points ||
+           !d.pipeline.fills_triangles;
   });
   for (pipeline::DrawRecord& draw : frame.draws) {
     if (draw.material.alpha_mode != AlphaMode::mask) draw.material.alpha_mode = AlphaMode::opaque;

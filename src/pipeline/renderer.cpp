@@ -117,6 +117,12 @@ void Renderer::Impl::check_and_record(const Mesh& mesh, const Material& material
 void Renderer::Impl::record(const Mesh& mesh, const std::optional<pipeline::MeshBox>& box,
                             const Material& material, const glm::mat4& transform,
                             const pipeline::DrawPipeline& pipe) {
+  if (mesh.topology == Topology::points &&
+      !(material.point_size > 0.0f && material.point_size <= Material::kMaxPointSize)) {
+    throw Error("renderer: point_size must be in (0, " +
+                std::to_string(static_cast<int>(Material::kMaxPointSize)) + "] pixels, got " +
+                std::to_string(material.point_size));
+  }
   ++draw_calls;
   const glm::mat4 model_view_projection = frame.view_projection * transform;
   if (box && pipeline::box_outside_frustum(*box, model_view_projection)) {

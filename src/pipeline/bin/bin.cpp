@@ -84,7 +84,7 @@ void for_each_binning(const Frame& frame, std::size_t begin, std::size_t end, Vi
       return;
     }
     // Large triangles skip the tiles their bounding box touches but their edges exclude.
-    const SetupTriangle* tri = (entry & kLineBit) ? nullptr : &frame.triangles[entry];
+    const SetupTriangle* tri = is_triangle_entry(entry) ? &frame.triangles[entry] : nullptr;
     const bool occludes = tri && frame.draws[tri->draw].pipeline.occludes;
     const int ts = frame.tile_size;
     for (int ty = ty0; ty <= ty1; ++ty) {

@@ -1,6 +1,6 @@
 // Stage: binning. Reads the set-up primitives in submission order (the geometry chunks'
 // sequences) and appends each to the bin of every tile it may cover; raster/ (render_tile.cpp,
-// line.cpp) read the bins.
+// line.cpp, point.cpp) read the bins.
 #pragma once
 
 #include <algorithm>
@@ -22,7 +22,7 @@ void bin_primitives(Frame& frame, int workers);
 // SequenceEntry::tiles for a box of several tiles (binning_entry: 0 for triangles whose box
 // holds a whole tile, and boxes of more than kMaskedTiles, whose tiles binning tests itself): for a
 // triangle (not null: its edge functions must be final), which tiles it may touch; a line may touch
-// every tile of its box.
+// every tile of its box, and a point does.
 std::uint32_t binning_tile_mask(const Frame& frame, const SetupTriangle* triangle,
                                 const SequenceEntry& e);
 

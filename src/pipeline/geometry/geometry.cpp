@@ -28,26 +28,33 @@ void ensure_size(std::vector<T>& v, std::size_t n) {
 
 // Frame-wide totals of the chunks' regions (and then of what overflowed them).
 struct Totals {
-  std::size_t triangles = 0, planes = 0, lines = 0;
+  std::size_t triangles = 0, planes = 0, lines = 0, points = 0;
 };
 
 // Gives a chunk of n primitives of `draw` its regions: room for everything it sets up unless
 // clipping splits triangles (one triangle per triangle, three edges per wireframe triangle,
-// one segment per line), so only a fan's extra pieces can overflow.
+// one segment per line, one point per point), so only a fan's extra pieces can overflow.
 void plan_regions(GeometryChunk& chunk, const DrawRecord& draw, Totals& totals) {
   const auto n = static_cast<std::uint32_t>(chunk.end - chunk.begin);
-  const bool line_mesh = draw.mesh->topology == Topology::lines;
-  const std::uint32_t triangles = !line_mesh && draw.pipeline.fills_triangles ? n : 0;
-  const std::uint32_t lines = line_mesh ? n : draw.pipeline.draws_edges ? 3 * n : 0;
+  const Topology topology = draw.mesh->topology;
+  const bool line_mesh = topology == Topology::lines, point_mesh = topology == Topology::points;
+  const bool triangle_mesh = !line_mesh && !point_mesh;
+  const std::uint32_t triangles = triangle_mesh && draw.pipeline.fills_triangles ? n : 0;
+  const std::uint32_t lines = line_mesh                                    ? n
+                              : triangle_mesh && draw.pipeline.draws_edges ? 3 * n
+                                                                           : 0;
+  const std::uint32_t points = point_mesh ? n : 0;
   chunk.triangles = {static_cast<std::uint32_t>(totals.triangles), triangles, 0};
   chunk.planes_begin = static_cast<std::uint32_t>(totals.planes);
   chunk.lines = {static_cast<std::uint32_t>(totals.lines), lines, 0};
+  chunk.points = {static_cast<std::uint32_t>(totals.points), points, 0};
   totals.triangles += triangles;
   totals.planes += std::size_t{triangles} * draw.pipeline.varyings;
   totals.lines += lines;
+  totals.points += points;
   chunk.overflow.clear();
   chunk.sequence.clear();
-  chunk.sequence.reserve(triangles + lines);  // capacity kept across frames
+  chunk.sequence.reserve(triangles + lines + points);  // capacity kept across frames
   chunk.counts = {};
 }
 
@@ -67,14 +74,15 @@ Totals plan_chunks(Frame& frame) {
     }
   }
   // Indices must stay clear of the sequence's flag bits (primitive_sink.hpp).
-  if (totals.triangles >= kOverflowBit || totals.lines >= kOverflowBit ||
-      totals.planes > UINT32_MAX) {
+  if (totals.triangles >= kMaxPrimitiveIndex || totals.lines >= kMaxPrimitiveIndex ||
+      totals.points >= kMaxPrimitiveIndex || totals.planes > UINT32_MAX) {
     throw Error("renderer: too many primitives in one frame");
   }
   frame.chunk_count = count;
   ensure_size(frame.triangles, totals.triangles);
   ensure_size(frame.planes, totals.planes);
   ensure_size(frame.lines, totals.lines);
+  ensure_size(frame.points, totals.points);
   return totals;
 }
 
@@ -90,6 +98,7 @@ void finish_chunks(Frame& frame, Totals end) {
     frame.stats.clipped += chunk.counts.clipped;
     frame.stats.drawn += chunk.triangles.used + chunk.overflow.triangles.size();
     frame.stats.lines_drawn += chunk.lines.used + chunk.overflow.lines.size();
+    frame.stats.points_drawn += chunk.points.used;
     const PrimitiveBuffer& o = chunk.overflow;
     if (o.triangles.empty() && o.lines.empty()) continue;
     ensure_size(frame.triangles, end.triangles + o.triangles.size());

@@ -195,6 +195,21 @@ struct Assembler {
     }
     edge(vertices.clip[i0].clip, vertices.clip[i1].clip, draw.material.base_color);
   }
+
+  // A point is kept whole or dropped by its centre: one outside the frustum (or not finite) is
+  // dropped, one inside is drawn, its square cut at the frame's edges by setup. Unlit: the
+  // vertex color (white without one) times the material's base color, opaque.
+  void point(std::uint32_t i, std::int32_t half, bool vertex_colors) {
+    const ProjectedVertex& v = vertices.projected[i];
+    if (v.codes & (kNotFinite | kFrustumCodes)) {
+      ++counts.culled;
+      return;
+    }
+    glm::vec4 color = draw.material.base_color;
+    if (vertex_colors) color *= draw.mesh->colors[i];
+    color.a = 1.0f;
+    if (!setup_point(out, width, height, v.screen, half, color)) ++counts.culled;
+  }
 };
 
 // The mesh's i-th index (its i-th vertex when it has none).
@@ -271,6 +286,13 @@ void assemble_primitives(const Frame& frame, std::uint32_t draw_index, const Dra
     for (std::size_t p = begin; p < end; ++p) {
       assembler.line(vertex_index(mesh, 2 * p), vertex_index(mesh, 2 * p + 1));
     }
+    return;
+  }
+  if (mesh.topology == Topology::points) {
+    const std::int32_t half = point_half_side(draw.material.point_size);
+    const bool vertex_colors = draw.material.use_vertex_colors && !mesh.colors.empty();
+    for (std::size_t p = begin; p < end; ++p)
+      assembler.point(vertex_index(mesh, p), half, vertex_colors);
     return;
   }
   // Edges come before their triangle's fill, so wireframe draws set up one at a time (and draws

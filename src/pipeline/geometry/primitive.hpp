@@ -1,6 +1,7 @@
 // Stage: primitive assembly. Reads a draw's transformed vertices (vertex.cpp), walks its
 // topology, rejects and culls whole triangles, clips what needs it (clip.cpp) and passes the
-// pieces to setup (setup.cpp). Edges for wireframe views are emitted here too.
+// pieces to setup (setup.cpp). Edges for wireframe views are emitted here too, and the segments
+// and points of line and point meshes.
 #pragma once
 
 #include <cstdint>
@@ -28,9 +29,9 @@ inline double homogeneous_orientation(const ProjectedVertex& a, const ProjectedV
 }
 
 // Assembles, culls, clips and sets up primitives [begin, end) (triangles, or segments for
-// line meshes) of frame.draws[draw], whose transformed vertices are `vertices`, into out,
-// counting what it culls and clips into counts. Reads only the frame and the vertices, so
-// chunks of one draw can run in parallel, each into its own regions.
+// line meshes, points for point meshes) of frame.draws[draw], whose transformed vertices are
+// `vertices`, into out, counting what it culls and clips into counts. Reads only the frame and the
+// vertices, so chunks of one draw can run in parallel, each into its own regions.
 void assemble_primitives(const Frame& frame, std::uint32_t draw, const DrawVertices& vertices,
                          std::size_t begin, std::size_t end, PrimitiveSink& out,
                          PrimitiveCounts& counts);

@@ -1,11 +1,13 @@
 // Where setup (setup.cpp) puts a geometry chunk's primitives: straight into the frame's
-// triangle, plane and line arrays, which raster reads, so no merge copy follows the parallel
-// set-up. geometry.cpp gives each chunk a region of each array sized for its primitives
-// (one triangle per input triangle, three edges per triangle, one segment per line); only
+// triangle, plane, line and point arrays, which raster reads, so no merge copy follows the
+// parallel set-up. geometry.cpp gives each chunk a region of each array sized for its primitives
+// (one triangle per input triangle, three edges per triangle, one segment per line, one point
+// per point); only
 // clipping can set up more triangles than that, and those go to the chunk's overflow buffer,
 // which geometry.cpp appends to the frame's arrays once every chunk is done.
 #pragma once
 
+#include <cassert>
 #include <cstdint>
 
 #include "pipeline/bin/bin.hpp"
@@ -14,9 +16,10 @@
 namespace facet::pipeline {
 
 // Marks a chunk's sequence entry as an index into its overflow buffer until geometry.cpp
-// rewrites it. Triangle and line indices stay below 2^30: a frame of 2^30 set-up triangles
-// would need over 100 GB for them.
+// rewrites it. Primitive indices stay below kMaxPrimitiveIndex (2^29): a frame of 2^29 set-up
+// triangles would need over 50 GB for them.
 inline constexpr std::uint32_t kOverflowBit = 0x40000000u;
+static_assert(kMaxPrimitiveIndex <= kOverflowBit && !(kOverflowBit & (kLineBit | kPointBit)));
 
 struct TriangleSlot {
   SetupTriangle* triangle;
@@ -32,6 +35,7 @@ class PrimitiveSink {
         triangles_(frame.triangles.data()),
         planes_(frame.planes.data()),
         lines_(frame.lines.data()),
+        points_(frame.points.data()),
         chunk_(chunk),
         varyings_(static_cast<std::uint32_t>(varyings)) {}
 
@@ -89,6 +93,16 @@ class PrimitiveSink {
     return o.lines.emplace_back();
   }
 
+  // A place for the next point, whose pixel box is given. Its region has room for every point
+  // of the chunk (a point is never split), so there is no overflow.
+  SetupPoint& add_point(int min_x, int min_y, int max_x, int max_y) {
+    GeometryChunk::Region& r = chunk_.points;
+    assert(r.used < r.capacity);
+    const std::uint32_t index = r.begin + r.used++;
+    append(index | kPointBit, nullptr, min_x, min_y, max_x, max_y);
+    return points_[index];
+  }
+
  private:
   void append(std::uint32_t index, const SetupTriangle* triangle, int min_x, int min_y, int max_x,
               int max_y) {
@@ -100,6 +114,7 @@ class PrimitiveSink {
   SetupTriangle* triangles_;
   Plane* planes_;
   SetupLine* lines_;
+  SetupPoint* points_;
   GeometryChunk& chunk_;
   std::uint32_t varyings_;
 };

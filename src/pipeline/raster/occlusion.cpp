@@ -13,14 +13,14 @@ namespace facet::pipeline {
 namespace {
 
 // An entry an occlusion scan may look past: a triangle of a depth-tested draw. Scans stop at
-// anything else, a line (lines are not hidden, nor do they hide) or a draw without the depth
-// test (it would show through whatever is drawn later): then `triangle` is null.
+// anything else, a line or point (they are not hidden, nor do they hide) or a draw without the
+// depth test (it would show through whatever is drawn later): then `triangle` is null.
 struct ScanEntry {
   const SetupTriangle* triangle = nullptr;
   bool occludes = false;  // its draw writes depth and is opaque (DrawPipeline::occludes)
 };
 ScanEntry scan_entry(const Frame& frame, std::uint32_t entry) {
-  if (entry & kLineBit) return {};
+  if (!is_triangle_entry(entry)) return {};
   const SetupTriangle& t = frame.triangles[entry];
   const DrawPipeline& pipeline = frame.draws[t.draw].pipeline;
   if (!pipeline.depth_tested) return {};

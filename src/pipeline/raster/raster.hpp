@@ -203,4 +203,7 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
 // Rasterizes one segment into the tile (line.cpp).
 void raster_line(TileContext& tile, const SetupLine& line);
 
+// Rasterizes one point into the tile (point.cpp).
+void raster_point(TileContext& tile, const SetupPoint& point);
+
 }  // namespace facet::pipeline

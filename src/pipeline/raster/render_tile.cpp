@@ -1,8 +1,8 @@
 // Stage: raster + shade + resolve of one tile (Renderer::Impl::render_tile, one task per tile:
 // frame_run.cpp). Walks the tile's bin in submission order — skipping what occlusion shows
 // hidden (occlusion.hpp) — hands each triangle to its draw's specialised raster routine
-// (raster.hpp) and each line to line.cpp, fills the background where nothing covered, then
-// resolves the tile into the framebuffer (output/).
+// (raster.hpp), each line to line.cpp and each point to point.cpp, fills the background where
+// nothing covered, then resolves the tile into the framebuffer (output/).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -30,7 +30,7 @@ constexpr std::ptrdiff_t kPrefetchAhead = 8;
 [[gnu::always_inline]] inline void prefetch_ahead(const pipeline::Frame& frame,
                                                   const std::uint32_t* bin,
                                                   const std::uint32_t* bin_end) {
-  if (bin_end - bin > kPrefetchAhead && !(bin[kPrefetchAhead] & pipeline::kLineBit)) {
+  if (bin_end - bin > kPrefetchAhead && pipeline::is_triangle_entry(bin[kPrefetchAhead])) {
     // Every cache line of the record: 104 bytes at multiples of 8 often span three.
     const auto* far = reinterpret_cast<const char*>(&frame.triangles[bin[kPrefetchAhead]]);
     static_assert(sizeof(pipeline::SetupTriangle) <= 128);
@@ -38,7 +38,7 @@ constexpr std::ptrdiff_t kPrefetchAhead = 8;
     __builtin_prefetch(far + 64);
     __builtin_prefetch(far + sizeof(pipeline::SetupTriangle) - 1);
   }
-  if (bin_end - bin > kPrefetchAhead / 2 && !(bin[kPrefetchAhead / 2] & pipeline::kLineBit)) {
+  if (bin_end - bin > kPrefetchAhead / 2 && pipeline::is_triangle_entry(bin[kPrefetchAhead / 2])) {
     const pipeline::SetupTriangle& near = frame.triangles[bin[kPrefetchAhead / 2]];
     __builtin_prefetch(frame.planes.data() + near.varying_planes);
   }
@@ -101,13 +101,17 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
     const std::uint32_t entry = *bin;
     tile.entry = static_cast<std::uint32_t>(bin - first_drawn);
     prefetch_ahead(frame, bin, bin_end);
-    if (entry & pipeline::kLineBit) {
-      // The overdraw heat map counts triangles; a line would overwrite the count.
+    if (!pipeline::is_triangle_entry(entry)) {
+      // The overdraw heat map counts triangles; a line or point would overwrite the count.
       if (debug == DebugView::overdraw) continue;
       pipeline::flush_waiting(tile);
       if (background_pending)
         pipeline::fill_background(tile, background), background_pending = false;
-      pipeline::raster_line(tile, frame.lines[entry & ~pipeline::kLineBit]);
+      if (entry & pipeline::kLineBit) {
+        pipeline::raster_line(tile, frame.lines[entry & ~pipeline::kLineBit]);
+      } else {
+        pipeline::raster_point(tile, frame.points[entry & ~pipeline::kPointBit]);
+      }
     } else {
       const pipeline::SetupTriangle& t = frame.triangles[entry];
       const pipeline::DrawPipeline& draw_pipeline = frame.draws[t.draw].pipeline;

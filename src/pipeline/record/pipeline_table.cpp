@@ -63,6 +63,9 @@ DrawPipeline pipeline_for(ShadingModel model, AlphaMode alpha) {
 }
 
 DrawPipeline pipeline_for(const Material& material, const Mesh& mesh, const Lighting& lighting) {
+  // Points are unlit and take their color at setup (primitive.cpp): the vertex stage only needs
+  // their positions, so they get the model with the fewest varyings to compute.
+  if (mesh.topology == Topology::points) return make_pipeline<shading::ConstantColorUnlitShading>();
   const bool vertex_colored = material.use_vertex_colors && !mesh.colors.empty();
   if (material.shading == ShadingModel::gouraud && !vertex_colored && !material.base_color_map &&
       !material.emissive_map) {

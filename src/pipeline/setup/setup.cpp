@@ -30,4 +30,17 @@ bool setup_line(PrimitiveSink& out, int width, int height, const glm::vec4& a, c
   return true;
 }
 
+bool setup_point(PrimitiveSink& out, int width, int height, const ScreenVertex& s,
+                 std::int32_t half, const glm::vec4& color) {
+  const PixelSpan x = point_span(s.x, half), y = point_span(s.y, half);
+  SetupPoint p;
+  p.min_x = std::max(0, x.first), p.max_x = std::min(width - 1, x.last);
+  p.min_y = std::max(0, y.first), p.max_y = std::min(height - 1, y.last);
+  if (p.min_x > p.max_x || p.min_y > p.max_y) return false;
+  p.z = s.z;
+  p.color = color;
+  out.add_point(p.min_x, p.min_y, p.max_x, p.max_y) = p;
+  return true;
+}
+
 }  // namespace facet::pipeline

@@ -1,8 +1,9 @@
 // Stage: setup, its definitions. Triangles are set up by the setup kernel (setup_batch.hpp),
-// segments by setup_line here: both project (to_screen), snap to fixed point (fixed_point.hpp)
-// and write SetupTriangle / SetupLine records plus their plane equations into the Frame for
-// binning (bin/). What the kernel and the reference rasterizer share is here: the viewport
-// transform, the signed area, the fill rule, the plane solver, the pixel-centre bounds.
+// segments by setup_line and points by setup_point here: all project (to_screen), snap to fixed
+// point (fixed_point.hpp) and write SetupTriangle / SetupLine / SetupPoint records (and the
+// triangles' plane equations) into the Frame for binning (bin/). What the kernel and the reference
+// rasterizer share is here: the viewport transform, the signed area, the fill rule, the plane
+// solver, the pixel-centre bounds.
 #pragma once
 
 #include <algorithm>
@@ -131,5 +132,26 @@ inline constexpr std::int32_t kProbedSpan = 1 << 14;
 // Sets up one clipped segment; returns true if it touches the framebuffer.
 bool setup_line(PrimitiveSink& out, int width, int height, const glm::vec4& a, const glm::vec4& b,
                 const glm::vec4& color);
+
+// The pixels a point covers along one axis: those whose centre lies in the half-open span
+// [centre - half, centre + half) (fixed point), as [first, last]; first > last when none.
+// A side of n whole pixels (half = n * kHalfPixel) covers exactly n pixels wherever the centre
+// is, and points spaced n pixels apart tile without gaps or doubled pixels.
+struct PixelSpan {
+  int first, last;
+};
+inline PixelSpan point_span(std::int32_t centre, std::int32_t half) {
+  const std::int64_t lo = std::int64_t{centre} - half, hi = std::int64_t{centre} + half;
+  return {first_centre_at_or_after(lo), last_centre_at_or_before(hi - 1)};
+}
+
+// Half a point's side in fixed point, from its size in pixels (Material::point_size).
+inline std::int32_t point_half_side(float size_pixels) { return snap(size_pixels * 0.5f); }
+
+// Sets up one point centred at s (inside the frustum: its screen position is finite and within
+// the frame, its depth in [0, 1]) with the given half side (fixed point); returns true if it
+// covers a pixel of the framebuffer. Fill rule: point.cpp.
+bool setup_point(PrimitiveSink& out, int width, int height, const ScreenVertex& s,
+                 std::int32_t half, const glm::vec4& color);
 
 }  // namespace facet::pipeline

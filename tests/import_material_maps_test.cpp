@@ -83,19 +83,19 @@ float centre_brightness(const Scene& scene, glm::vec3 direction) {
   return static_cast<float>(sum / count);
 }
 
-// The heights rise along u (a ramp, -bm 10 to make it steep), so the derived normals lean
+// The heights rise along u (a ramp, -bm 3 to make it steep), so the derived normals lean
 // towards -u: a light from the -x side lights the quad more than one from +x, and the normal map
-// holds normalize(-slope, 0, 1) with slope = 4 texels deep (kBumpDepthTexels) x 10 x the height
-// step between a texel's neighbours.
+// holds normalize(-slope, 0, 1) with slope = 13 texels deep (kBumpDepthTexels) x 3 x half the
+// height step between a texel's neighbours.
 TEST(ImportMaterialMaps, HeightMapBecomesANormalMapThatLightsItsSlopes) {
   fs::path dir = fresh_test_dir("facet_material_maps_", "height");
   constexpr int kSize = 64;
   write_pgm(dir / "heights.pgm", kSize, kSize,
             [](int x, int) { return static_cast<std::uint8_t>(x * 4); });  // 0 ... 252
-  const Scene bumped = import_quad(dir, "map_Bump -bm 10 heights.pgm\n");
+  const Scene bumped = import_quad(dir, "map_Bump -bm 3 heights.pgm\n");
   const TextureMap& normal_map = surface(bumped).normal_map;
   ASSERT_TRUE(normal_map) << "the height map was dropped";
-  const float slope = 4.0f * 10.0f * 0.5f * (8.0f / 255.0f);
+  const float slope = 13.0f * 3.0f * 0.5f * (8.0f / 255.0f);
   const glm::vec3 expected = glm::normalize(glm::vec3(-slope, 0.0f, 1.0f));
   const glm::vec4 texel = normal_map.texture->texel(0, kSize / 2, kSize / 2);
   const glm::vec3 decoded = glm::vec3(texel) * 2.0f - 1.0f;

@@ -4,6 +4,7 @@
 // material at load time; the renderer sees only the derived maps.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <glm/geometric.hpp>
 #include <vector>
 
@@ -24,8 +25,14 @@ int wrapped(int i, int size, Wrap wrap) {
 }
 
 // The grey value of a texel of level 0 (the mean of its color channels: grey maps are often
-// stored as RGB).
+// stored as RGB). Data maps are loaded linear, so their bytes are read directly: texel()'s
+// checks and decoding, four times a texel, would make a large height map slow to load.
 float grey(const Texture& texture, int x, int y) {
+  if (texture.format() == Texture::Format::rgba8 && !texture.srgb()) {
+    const std::uint8_t* p =
+        &texture.level(0).rgba8[(static_cast<std::size_t>(y) * texture.width() + x) * 4];
+    return static_cast<float>(p[0] + p[1] + p[2]) * (1.0f / (3.0f * 255.0f));
+  }
   const glm::vec4 t = texture.texel(0, x, y);
   return (t.r + t.g + t.b) / 3.0f;
 }

@@ -189,7 +189,7 @@ TEST(CliRender, PathErrorsSayWhatThePathIs) {
   EXPECT_EQ(out_dir.stderr_text, "facet: error: /tmp: is a directory\n");
   CommandResult device = run_facet(dir, "render /dev/null -o out.png --size 8x8");
   EXPECT_EQ(device.stderr_text,
-            "facet: error: /dev/null: not a regular file, so not a model file\n");
+            "facet: error: /dev/null: is a character device, not a model file\n");
 }
 
 // --orthographic: two equal squares, one 3 units behind the other, come out the same size (in

@@ -2,8 +2,10 @@
 // glmark2 scenes' models) keep those values as code / 255 in their tiles and round them at
 // resolve, instead of storing decoded linear values that resolve sRGB-encodes back to the same
 // codes (pipeline/frame_run.cpp's display_referred_frame). The bytes must not change: each frame
-// here is also rendered to a float target, which never takes that path, and encoded as resolve
-// encodes; the 8-bit frame must be that, byte for byte, and must have taken the path.
+// here is also rendered to a float target, which never takes that path and holds a display
+// value as the value itself (the normals view's n * 0.5 + 0.5, unrounded) and everything else as
+// linear light; encoded as an 8-bit target stores each (display values rounded to their code,
+// light sRGB-encoded), the 8-bit frame must be that, byte for byte, and must have taken the path.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -29,6 +31,9 @@ constexpr int kWidth = 320, kHeight = 180;
 // Records one frame into a renderer (begin_frame and draws).
 using Record = std::function<void(Renderer&)>;
 
+// Frames whose draws show display values, but for the draws given this instance id, which are lit.
+constexpr std::uint32_t kLitInstance = 99;
+
 // The frame rendered to an 8-bit target; `referred` says whether it took the display path.
 std::vector<std::uint8_t> render_8bit(const Record& record, const RenderSettings& settings,
                                       bool& referred) {
@@ -40,19 +45,24 @@ std::vector<std::uint8_t> render_8bit(const Record& record, const RenderSettings
   return frame.rgba8();
 }
 
-// The frame rendered to a float target, then encoded as encode_srgb_row promises (sRGB color,
-// alpha rounded): what the 8-bit target held before display-referred frames.
+// The frame rendered to a float target, then encoded as an 8-bit target stores it: drawn pixels
+// of display-valued draws as their codes (StoreDisplayCodes' rounding), the background and lit
+// draws (kLitInstance) sRGB-encoded as encode_srgb_row promises; alpha rounded.
 std::vector<std::uint8_t> render_float_encoded(const Record& record,
                                                const RenderSettings& settings) {
   Renderer renderer(settings);
-  Framebuffer frame(kWidth, kHeight, ColorFormat::rgba32f);
+  ExtraOutputs ids;
+  ids.instance_ids = true;
+  Framebuffer frame(kWidth, kHeight, ColorFormat::rgba32f, DepthImage::keep, ids);
   record(renderer);
   renderer.finish(frame);
   EXPECT_FALSE(renderer.stats().display_referred);
   std::vector<std::uint8_t> bytes(frame.rgba32f().size());
   for (std::size_t i = 0; i < bytes.size(); ++i) {
     const float v = frame.rgba32f()[i];
-    if (i % 4 == 3) {
+    const std::size_t pixel = i / 4;
+    const bool display = frame.depth()[pixel] < 1.0f && frame.instance_ids()[pixel] != kLitInstance;
+    if (i % 4 == 3 || display) {
       bytes[i] = static_cast<std::uint8_t>((v > 0.0f ? std::min(v, 1.0f) : 0.0f) * 255.0f + 0.5f);
     } else {
       bytes[i] = shading::encode_srgb8(v);
@@ -121,28 +131,59 @@ TEST(DisplayReferred, Glmark2ScenesGiveTheEncodedBytes) {
   }
 }
 
-// What needs linear colors keeps them: fog, a lit draw among display ones, exposure.
+// What needs linear colors keeps them: a lit draw among display ones, fog, exposure. (Fog mixes
+// light into the display values, which a float target keeps unmixed: no float reference.)
 TEST(DisplayReferred, FramesThatNeedLinearColorsKeepThem) {
-  Lighting fogged;
-  fogged.fog.mode = FogMode::linear;
-  fogged.fog.start = 2.0f, fogged.fog.end = 8.0f;
-  EXPECT_FALSE(expect_same_bytes(debug_view_scene(ShadingModel::normals, fogged),
-                                 with_clear({0.2f, 0.2f, 0.2f, 1.0f}), "fog"));
-
   const Record mixed = [](Renderer& renderer) {
     debug_view_scene(ShadingModel::normals)(renderer);
     static const Mesh ball = uv_sphere(0.4f);
     Material lit;
     lit.shading = ShadingModel::lambert;
+    renderer.set_instance_id(kLitInstance);
     renderer.draw(ball, lit, glm::translate(glm::mat4(1.0f), {1.0f, 0.2f, 0.8f}));
   };
   EXPECT_FALSE(expect_same_bytes(mixed, with_clear({0.2f, 0.2f, 0.2f, 1.0f}), "mixed"));
 
+  Lighting fogged;
+  fogged.fog.mode = FogMode::linear;
+  fogged.fog.start = 2.0f, fogged.fog.end = 8.0f;
+  bool referred = true;
+  render_8bit(debug_view_scene(ShadingModel::normals, fogged), with_clear({0.2f, 0.2f, 0.2f, 1.0f}),
+              referred);
+  EXPECT_FALSE(referred);
+
   RenderSettings brighter = with_clear({0.2f, 0.2f, 0.2f, 1.0f});
   brighter.exposure = 0.5f;
-  bool referred = true;
+  referred = true;
   render_8bit(debug_view_scene(ShadingModel::normals), brighter, referred);
   EXPECT_FALSE(referred);
+}
+
+// A float target holds the normals view's values themselves: a face turned to the camera (normal
+// +Z) is (0.5, 0.5, 1) exactly, not the sRGB decode of the 8-bit code 128 (0.2158), and the 8-bit
+// target holds that value's code.
+TEST(DisplayReferred, FloatTargetsHoldTheNormalsViewsValues) {
+  for (ColorFormat format : {ColorFormat::rgba32f, ColorFormat::rgba8_srgb}) {
+    Renderer renderer;
+    Framebuffer frame(32, 32, format);
+    renderer.begin_frame(Camera::look_at({0, 0, 3}, {0, 0, 0}, {0, 1, 0}, 45.0f, 1.0f, 0.1f, 10.0f),
+                         {});
+    Material material;
+    material.shading = ShadingModel::normals;
+    static const Mesh crate = box({1.0f, 1.0f, 1.0f});
+    renderer.draw(crate, material);
+    renderer.finish(frame);
+    const std::size_t centre = (16 * 32 + 16) * 4;
+    if (format == ColorFormat::rgba32f) {
+      EXPECT_EQ(frame.rgba32f()[centre + 0], 0.5f);
+      EXPECT_EQ(frame.rgba32f()[centre + 1], 0.5f);
+      EXPECT_EQ(frame.rgba32f()[centre + 2], 1.0f);
+    } else {
+      EXPECT_EQ(int{frame.rgba8()[centre + 0]}, 128);
+      EXPECT_EQ(int{frame.rgba8()[centre + 1]}, 128);
+      EXPECT_EQ(int{frame.rgba8()[centre + 2]}, 255);
+    }
+  }
 }
 
 }  // namespace

@@ -161,19 +161,31 @@ void write_file(const std::string& temporary, const std::string& name, Write wri
     std::fclose(file);
     throw;
   }
+  errno = 0;
   bool ok = std::fflush(file) == 0 && !std::ferror(file);
-  if (std::fclose(file) != 0) ok = false;
-  if (!ok) throw Error(name + ": write failed (disk full?)");
+  int error_number = errno;
+  if (std::fclose(file) != 0) {
+    ok = false;
+    if (error_number == 0) error_number = errno;
+  }
+  if (!ok) {
+    throw Error(name + ": write failed (" +
+                (error_number != 0 ? std::strerror(error_number) : "an I/O error") + ")");
+  }
 }
 
-// The temporary name a file is written under: hidden, in the same folder (so the rename is
-// atomic), with the process id (so two runs never share one) and the file's own extension.
-std::string temporary_name(const std::string& path) {
-  std::size_t slash = path.rfind('/');
+// The temporary name a file is written under: hidden, in the folder of the file it will replace
+// (`target`, which is `name` or where the link `name` points), so the rename is atomic; with the
+// process id (so two runs never share one) and the extension of `name` (which chose the format).
+std::string temporary_name(const std::string& target, const std::string& name) {
+  std::size_t slash = target.rfind('/');
   std::size_t name_at = slash == std::string::npos ? 0 : slash + 1;
-  std::size_t dot = extension_at(path);
-  return path.substr(0, name_at) + "." + path.substr(name_at, dot - name_at) + ".tmp-" +
-         std::to_string(::getpid()) + path.substr(dot);
+  std::size_t dot = extension_at(target);
+  std::size_t stem_end = dot == std::string::npos ? target.size() : dot;
+  std::size_t name_dot = extension_at(name);
+  return target.substr(0, name_at) + "." + target.substr(name_at, stem_end - name_at) + ".tmp-" +
+         std::to_string(::getpid()) +
+         (name_dot == std::string::npos ? std::string() : name.substr(name_dot));
 }
 
 void write_one(const Framebuffer& fb, const OutputPlan& plan, Output output,
@@ -182,7 +194,9 @@ void write_one(const Framebuffer& fb, const OutputPlan& plan, Output output,
     NumpyArray array = numpy_array(fb, output);
     write_file(temporary, name, [&](std::FILE* f) { write_npy(f, array); });
   } else if (output == Output::color && plan.container != Container::exr) {
-    write_image(fb, temporary);  // PNG or PPM, by the extension the temporary name keeps
+    const ImageFileType type =
+        plan.container == Container::png ? ImageFileType::png : ImageFileType::ppm;
+    write_file(temporary, name, [&](std::FILE* f) { write_image(fb, type, f, name); });
   } else if (is_id(output) && plan.container != Container::exr) {
     std::vector<std::uint16_t> ids = ids16(fb, output, name);
     write_file(temporary, name,
@@ -270,7 +284,7 @@ OutputPlan plan_outputs(const std::string& outputs, const std::string& normal_sp
 void check_output_path(const std::string& path, bool replacing) {
   std::error_code ec;
   if (fs::is_directory(path, ec)) throw Error(path + ": is a directory");
-  fs::path folder = fs::path(path).parent_path();
+  fs::path folder = fs::path(write_target(path)).parent_path();  // where the file is replaced
   if (folder.empty()) folder = ".";
   if (!fs::is_directory(folder, ec)) {
     throw Error(path + ": directory " + folder.string() + " does not exist");
@@ -308,22 +322,25 @@ void check_ids_fit(const OutputPlan& plan, const Scene& scene) {
 
 void write_outputs(const Framebuffer& fb, const OutputPlan& plan, const std::string& path) {
   std::vector<std::string> files = plan.files(path);
+  // A file name that is a symbolic link is written through: its target is replaced.
+  std::vector<std::string> targets;
+  for (const std::string& file : files) targets.push_back(write_target(file));
   std::vector<std::string> temporaries;
   try {
     if (plan.container == Container::npz) {
       std::vector<NumpyArray> arrays;
       for (Output output : plan.outputs) arrays.push_back(numpy_array(fb, output));
-      temporaries.push_back(temporary_name(path));
+      temporaries.push_back(temporary_name(targets[0], path));
       write_file(temporaries.back(), path, [&](std::FILE* f) { write_npz(f, arrays, path); });
     } else {
       for (std::size_t i = 0; i < files.size(); ++i) {
-        temporaries.push_back(temporary_name(files[i]));
+        temporaries.push_back(temporary_name(targets[i], files[i]));
         write_one(fb, plan, plan.outputs[i], temporaries.back(), files[i]);
       }
     }
     for (std::size_t i = 0; i < files.size(); ++i) {
       std::error_code ec;
-      fs::rename(temporaries[i], files[i], ec);
+      fs::rename(temporaries[i], targets[i], ec);
       if (ec) throw Error(files[i] + ": cannot rename into place (" + ec.message() + ")");
     }
   } catch (...) {

@@ -24,7 +24,8 @@ enum class ShadingModel {
   blinn_phong,   // per-pixel Blinn-Phong (half vector)
   pbr,           // Cook-Torrance: GGX, Smith, Schlick; metallic-roughness
   depth,         // debug: linear view depth, near -> white ... far -> black
-  normals,       // debug: world normal as n * 0.5 + 0.5, not sRGB-encoded
+  normals,       // debug: world normal as n * 0.5 + 0.5, not sRGB-encoded: in an 8-bit target
+                 // the code round(255 (n * 0.5 + 0.5)), in a float target the value itself
   texcoords,     // debug: texture coordinates as red/green (fractional part)
   wireframe,     // edges only
   wire_overlay,  // lambert with edges drawn on top

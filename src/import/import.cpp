@@ -38,8 +38,28 @@ void check_model_file(const std::string& path) {
   if (std::filesystem::is_regular_file(path, error)) return;
   if (std::filesystem::is_directory(path, error))
     throw Error(path + ": is a directory, not a model file");
-  if (std::filesystem::exists(path, error))  // a device, a pipe, a socket
-    throw Error(path + ": not a regular file, so not a model file");
+  const auto status = std::filesystem::status(path, error);
+  const char* what = nullptr;
+  switch (status.type()) {
+    case std::filesystem::file_type::character:
+      what = "a character device";
+      break;
+    case std::filesystem::file_type::block:
+      what = "a block device";
+      break;
+    case std::filesystem::file_type::fifo:
+      what = "a named pipe";
+      break;
+    case std::filesystem::file_type::socket:
+      what = "a socket";
+      break;
+    case std::filesystem::file_type::not_found:
+      break;
+    default:
+      what = "a special file";
+      break;
+  }
+  if (what) throw Error(path + ": is " + std::string(what) + ", not a model file");
   throw Error(path + ": no such file");
 }
 

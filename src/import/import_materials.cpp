@@ -5,10 +5,14 @@
 //                                unlit for KHR_materials_unlit
 //   a specular color and shininess (OBJ Ks/Ns, 3DS, FBX, COLLADA)   blinn_phong
 //   assimp says flat / unlit     flat / unlit
-//   anything else                lambert
+//   separate roughness, metalness or gloss maps (MTL map_Pr, map_Pm, map_Ns)   pbr, the maps
+//                                packed as glTF packs them (derived_maps.cpp)
+//   anything else                lambert, or blinn_phong without a highlight when it has a
+//                                normal map (Lambert reads none)
 // Colors are taken as stored (glTF factors are linear by definition; MTL and 3DS colors are
 // used as linear too, as Blender's importers do).
 #include <assimp/GltfMaterial.h>
+#include <assimp/ObjMaterial.h>
 #include <assimp/material.h>
 #include <assimp/scene.h>
 
@@ -114,22 +118,32 @@ Sampler sampler_for(const aiMaterial& m, aiTextureType type) {
   return sampler;
 }
 
-// Normal maps are mostly blue-violet (+Z up in tangent space, x and y around 0.5); height maps
-// are grey. OBJ files put either kind in map_bump, so the image decides.
+// OBJ and 3DS files put either a tangent-space normal map or a height (bump) map where
+// assimp reads aiTextureType_HEIGHT, so the image decides. A normal map's texels decode
+// (2c - 1) to unit vectors facing out (z > 0); a height map is grey. Grey texels are left out
+// of the count (they are heights, or the flat white or black padding of a texture atlas, as in
+// glmark2's asteroid-normal-map-tangent.png, half of which is white): a normal map is an image
+// whose other texels are, nearly all, unit vectors facing out.
 bool looks_like_normal_map(const Texture& texture) {
   if (texture.format() != Texture::Format::rgba8) return false;
   const Texture::Level& level = texture.level(0);
   const std::size_t count = static_cast<std::size_t>(level.width) * level.height;
   if (count == 0 || level.rgba8.size() < count * 4) return false;
+  constexpr int kGreyTolerance = 8;  // codes: JPEG noise on a grey texel stays grey
   const std::size_t step = std::max<std::size_t>(1, count / 4096);
-  double r = 0, g = 0, b = 0, blueness = 0, samples = 0;
-  for (std::size_t i = 0; i < count; i += step, ++samples) {
+  std::size_t coloured = 0, normals = 0;
+  for (std::size_t i = 0; i < count; i += step) {
     const std::uint8_t* p = &level.rgba8[i * 4];
-    r += p[0] / 255.0, g += p[1] / 255.0, b += p[2] / 255.0;
-    blueness += (p[2] - std::max(p[0], p[1])) / 255.0;
+    if (std::abs(p[0] - p[1]) <= kGreyTolerance && std::abs(p[1] - p[2]) <= kGreyTolerance &&
+        std::abs(p[0] - p[2]) <= kGreyTolerance) {
+      continue;
+    }
+    ++coloured;
+    const glm::vec3 n = glm::vec3(p[0], p[1], p[2]) / 127.5f - 1.0f;
+    const float length = glm::length(n);
+    normals += n.z > 0.0f && length > 0.8f && length < 1.2f;
   }
-  r /= samples, g /= samples, b /= samples, blueness /= samples;
-  return b > 0.6 && std::abs(r - 0.5) < 0.2 && std::abs(g - 0.5) < 0.2 && blueness > 0.1;
+  return coloured > 0 && normals >= coloured * 9 / 10;
 }
 
 // Perceived brightness, as used by the Khronos spec-gloss to metal-rough conversion.
@@ -237,10 +251,7 @@ class MaterialConverter {
     out_.normal_map = load(aiTextureType_NORMALS, false);
     out_.normal_scale = get_float(m_, AI_MATKEY_GLTF_TEXTURE_SCALE(aiTextureType_NORMALS, 0))
                             .value_or(out_.normal_scale);
-    if (!out_.normal_map && !gltf_) {
-      TextureMap bump = load(aiTextureType_HEIGHT, false, /*checker_when_missing=*/false);
-      if (bump && looks_like_normal_map(*bump.texture)) out_.normal_map = bump;
-    }
+    if (!out_.normal_map && !gltf_) bump_map();
     out_.emissive_map = load(aiTextureType_EMISSIVE, true);
     // glTF multiplies by emissiveFactor as the spec says; an MTL map_Ke without Ke still glows.
     if (out_.emissive_map && !gltf_ && glm::length(out_.emissive) == 0.0f) {
@@ -250,12 +261,59 @@ class MaterialConverter {
       out_.metallic_roughness_map = load(aiTextureType_UNKNOWN, false);  // glTF's packed map
     } else {
       out_.specular_map = load(aiTextureType_SPECULAR, true);
+      metal_rough_maps();
+    }
+    // Lambert reads no normal map: a bumped Lambert material is Blinn-Phong without a
+    // highlight, the same light with the map's normals.
+    if (out_.normal_map && out_.shading == ShadingModel::lambert) {
+      out_.shading = ShadingModel::blinn_phong;
+      out_.specular_color = glm::vec3(0.0f);
     }
     out_.occlusion_map = load(aiTextureType_LIGHTMAP, false);  // glTF occlusion lands here
     if (!out_.occlusion_map) out_.occlusion_map = load(aiTextureType_AMBIENT_OCCLUSION, false);
     out_.occlusion_strength =
         get_float(m_, AI_MATKEY_GLTF_TEXTURE_STRENGTH(aiTextureType_LIGHTMAP, 0))
             .value_or(out_.occlusion_strength);
+  }
+
+  // aiTextureType_HEIGHT: a normal map as it is, or a height map turned into one (the file's
+  // bump multiplier, OBJ's -bm, scales the heights).
+  void bump_map() {
+    TextureMap bump = load(aiTextureType_HEIGHT, false, /*checker_when_missing=*/false);
+    if (!bump) return;
+    if (!looks_like_normal_map(*bump.texture)) {
+      const float strength = get_float(m_, AI_MATKEY_OBJ_BUMPMULT_HEIGHT(0)).value_or(1.0f);
+      bump.texture = normal_map_from_heights(*bump.texture, strength, bump.sampler);
+    }
+    out_.normal_map = bump;
+  }
+
+  // Roughness, metalness and gloss as separate grey maps (MTL map_Pr, map_Pm, map_Ns; the same
+  // kinds from FBX and others): combined into the packed map the PBR shader reads, and the
+  // material made PBR, the model these maps belong to. The maps give the values (the factors
+  // become 1), but for one that is absent, whose factor stays the file's (MTL Pr, Pm), or for
+  // metalness 0 without Pm. A gloss map is used for roughness only when there is no roughness
+  // map: its grey scales the shininess exponent (MTL: Ns x map_Ns), converted to roughness as
+  // roughness_from_shininess says.
+  void metal_rough_maps() {
+    TextureMap rough = load(aiTextureType_DIFFUSE_ROUGHNESS, false, false);
+    TextureMap metal = load(aiTextureType_METALNESS, false, false);
+    TextureMap gloss = load(aiTextureType_SHININESS, false, false);
+    if (!rough && !metal && !gloss) return;
+    if (out_.shading == ShadingModel::flat || out_.shading == ShadingModel::unlit) return;
+    const float exponent = get_float(m_, AI_MATKEY_SHININESS).value_or(out_.shininess);
+    out_.shading = ShadingModel::pbr;
+    out_.metallic =
+        metal ? 1.0f : std::clamp(get_float(m_, AI_MATKEY_METALLIC_FACTOR).value_or(0.f), 0.f, 1.f);
+    out_.roughness =
+        rough || gloss
+            ? 1.0f
+            : std::clamp(get_float(m_, AI_MATKEY_ROUGHNESS_FACTOR).value_or(out_.roughness), 0.f,
+                         1.f);
+    const TextureMap& first = rough ? rough : gloss ? gloss : metal;  // its sampler and transform
+    out_.metallic_roughness_map = first;
+    out_.metallic_roughness_map.texture = packed_metallic_roughness(
+        rough.texture.get(), metal.texture.get(), gloss.texture.get(), exponent);
   }
 
   TextureMap load(aiTextureType type, bool srgb, bool checker_when_missing = true) {

@@ -131,6 +131,7 @@ void Renderer::Impl::run(Framebuffer& target) {
     uniforms.view_depth = {0.0f, camera.far_plane - camera.near_plane, camera.near_plane};
   }
   uniforms.display_referred = false;  // decided after geometry (display_referred_frame)
+  uniforms.display_exact = false;
   set_depth_view_range();
   uniforms.kernels = &kernels.shading;
   const pipeline::ClipBounds guard = pipeline::guard_band_bounds(frame.width, frame.height);
@@ -161,7 +162,10 @@ void Renderer::Impl::run(Framebuffer& target) {
   frame.stats.ms_geometry = ms_since(start);
   const bool referred = display_referred_frame(target);
   background.display_referred = frame.stats.display_referred = referred;
-  uniforms.display_referred = referred;
+  // A float target keeps display values as code / 255 whatever else the frame draws (no sRGB
+  // encode follows to undo a decode), and the debug views' values unrounded.
+  uniforms.display_exact = target.format() == ColorFormat::rgba32f;
+  uniforms.display_referred = referred || uniforms.display_exact;
   if (referred) background.clear_color = pipeline::display_value_of(settings.clear_color);
 
   auto bin_start = Clock::now();

@@ -51,13 +51,20 @@ inline glm::vec3 diffuse_light(glm::vec3 albedo, glm::vec3 normal, glm::vec3 pos
 // data, not light) as the tile stores it. Usually the code decoded to linear, which resolve's
 // sRGB encode gives back exactly (the table is exact and much cheaper than pow()). In a frame
 // whose every color is a display value (DrawUniforms::display_referred, pipeline/frame_run.cpp)
-// the code / 255 itself, which resolve turns back into the code without the sRGB tables.
+// the code / 255 itself, which resolve turns back into the code without the sRGB tables. In a
+// float target (display_exact) the value itself, clamped to [0, 1]: floats are not rounded to
+// codes, and are not decoded either, so a normal's 0 is stored as 0.5.
 // NaN shows as 0 (as batch_math-inl.h's StoreDisplayCodes has it).
 inline float display_channel(float v, bool referred) {
   const std::uint8_t code = encode_unorm8(v);
   return referred ? static_cast<float>(code) * kInverse255 : decode_srgb8(code);
 }
+inline float exact_display_channel(float v) { return v > 0.0f ? std::min(v, 1.0f) : 0.0f; }
 inline glm::vec4 display_value(glm::vec3 shown, const DrawUniforms& u) {
+  if (u.frame->display_exact) {
+    return {exact_display_channel(shown.x), exact_display_channel(shown.y),
+            exact_display_channel(shown.z), 1.0f};
+  }
   const bool referred = u.frame->display_referred;
   return {display_channel(shown.x, referred), display_channel(shown.y, referred),
           display_channel(shown.z, referred), 1.0f};

@@ -130,14 +130,27 @@ void ShadeNormals(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4])
   const FloatTag d;
   const int lanes = static_cast<int>(hn::Lanes(d));
   const FloatV half = hn::Set(d, 0.5f);
-  alignas(64) std::int32_t codes[3][kShadeBatch];
-  for (int j = 0; j < in.count; j += lanes) {
-    const Vec3V n = SafeNormalize(Load3(in.v, 0, j));
-    StoreDisplayCodes({hn::Add(hn::Mul(n.x, half), half), hn::Add(hn::Mul(n.y, half), half),
-                       hn::Add(hn::Mul(n.z, half), half)},
-                      j, codes);
+  if (u.frame->display_exact) {  // a float target: the values themselves, clamped to [0, 1]
+    for (int j = 0; j < in.count; j += lanes) {
+      const Vec3V n = SafeNormalize(Load3(in.v, 0, j));
+      FloatV color[4] = {hn::Add(hn::Mul(n.x, half), half), hn::Add(hn::Mul(n.y, half), half),
+                         hn::Add(hn::Mul(n.z, half), half), hn::Set(d, 1.0f)};
+      for (int c = 0; c < 3; ++c) {
+        color[c] =
+            StdMin(hn::IfThenElseZero(hn::Gt(color[c], hn::Zero(d)), color[c]), hn::Set(d, 1.0f));
+      }
+      StoreColors(color, ColorAt(rgba, in.rgba_row_stride, j));
+    }
+  } else {
+    alignas(64) std::int32_t codes[3][kShadeBatch];
+    for (int j = 0; j < in.count; j += lanes) {
+      const Vec3V n = SafeNormalize(Load3(in.v, 0, j));
+      StoreDisplayCodes({hn::Add(hn::Mul(n.x, half), half), hn::Add(hn::Mul(n.y, half), half),
+                         hn::Add(hn::Mul(n.z, half), half)},
+                        j, codes);
+    }
+    DecodeDisplayCodes(codes, in.count, u.frame->display_referred, in.rgba_row_stride, rgba);
   }
-  DecodeDisplayCodes(codes, in.count, u.frame->display_referred, in.rgba_row_stride, rgba);
   if (in.fog == nullptr || in.fog->mode == FogMode::none) return;
   for (int j = 0; j < in.count; j += lanes) {
     alignas(64) float padded[8][4] = {};  // rgba past the batch's count may be unset

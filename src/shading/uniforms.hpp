@@ -50,9 +50,12 @@ struct FrameUniforms {
   glm::mat4 view{1.0f};       // the camera's view matrix (what the extra outputs measure in)
   bool orthographic = false;  // the camera's projection is parallel
   ViewDepth view_depth;
-  // Every color of the frame is a display value, stored as code / 255 (models.hpp's
-  // display_value).
+  // Display values (models.hpp's display_value) are stored as code / 255, not decoded to
+  // linear: in frames whose every color is one (8-bit targets), and in every float target.
   bool display_referred = false;
+  // The target holds floats: the debug views' display values are stored as they are (the
+  // normals view's n * 0.5 + 0.5 itself), not rounded to 8-bit codes.
+  bool display_exact = false;
   // The view depths the depth view spans, white to black: the frame's draws' (their bounds'
   // nearest and farthest, within the near and far planes).
   float depth_view_near = 0.1f;

@@ -8,6 +8,7 @@
 #include "facet/error.hpp"
 #include "facet/version.hpp"
 #include "info_command.hpp"
+#include "process_memory.hpp"
 #include "render_command.hpp"
 #include "view_command.hpp"
 
@@ -23,6 +24,7 @@ int fail(const std::string& message) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  facet::cli::use_memory_for_short_run();
   CLI::App app{"facet: a CPU software rasterizer. Renders 3D scenes without a GPU."};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("facet ") + facet::version(),

@@ -25,21 +25,23 @@ sleep 1
 millis() { echo $(( $(date +%s%N) / 1000000 )); }
 median() { sort -n | awk '{ a[NR] = $1 } END { print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2 }'; }
 
-run_times() {  # command... ; prints one wall time per run
-  for _ in $(seq "$RUNS"); do
-    local start end
-    start=$(millis)
-    "$@" >/dev/null 2>&1
-    end=$(millis)
-    echo $((end - start))
-  done
+wall_ms() {  # command... ; prints its wall time
+  local start end
+  start=$(millis)
+  "$@" >/dev/null 2>&1
+  end=$(millis)
+  echo $((end - start))
 }
 
-echo "model: $MODEL, $RUNS runs each, 1920x1080 PNG"
-facet_times=$(run_times "$FACET" render "$MODEL" --size 1920x1080 -o "$OUT/facet.png")
-f3d_times=$(DISPLAY=:$DISPLAY_NUMBER run_times f3d --resolution=1920,1080 --output="$OUT/f3d.png" "$MODEL")
-echo "facet ms: $(echo $facet_times)"
-echo "f3d   ms: $(echo $f3d_times)"
-fm=$(echo "$facet_times" | median)
-dm=$(echo "$f3d_times" | median)
+# Alternated (facet, f3d, facet, ...), so a noisy spell of the shared machine hits both.
+echo "model: $MODEL, $RUNS runs each, alternated, 1920x1080 PNG"
+facet_times="" f3d_times=""
+for _ in $(seq "$RUNS"); do
+  facet_times+="$(wall_ms "$FACET" render "$MODEL" --size 1920x1080 -o "$OUT/facet.png") "
+  f3d_times+="$(DISPLAY=:$DISPLAY_NUMBER wall_ms f3d --resolution=1920,1080 --output="$OUT/f3d.png" "$MODEL") "
+done
+echo "facet ms: $facet_times"
+echo "f3d   ms: $f3d_times"
+fm=$(echo "$facet_times" | tr ' ' '\n' | grep . | median)
+dm=$(echo "$f3d_times" | tr ' ' '\n' | grep . | median)
 echo "median facet ${fm} ms, f3d ${dm} ms, f3d/facet $(awk -v a="$dm" -v b="$fm" 'BEGIN { printf "%.1f", a / b }')x"

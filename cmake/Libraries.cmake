@@ -1,7 +1,7 @@
 # The library, in layers (see the README's layout): each is its own target and folder and links
 # only what it uses. Includes flow downward only (tools/check_layers.py, run by ctest).
 #
-#   facet::core    src/core, src/shading, src/pipeline   glm, libpng, oneTBB, Highway (stb inside)
+#   facet::core    src/core, src/shading, src/pipeline   glm, zlib, oneTBB, Highway (stb inside)
 #   facet::import  src/import                            core, assimp
 #   facet::worlds  src/worlds                            core, oneTBB
 #   facet::sound   src/sound                             OpenAL Soft
@@ -39,7 +39,7 @@ file(GLOB_RECURSE FACET_CORE_SOURCES CONFIGURE_DEPENDS
      ${PROJECT_SOURCE_DIR}/src/pipeline/*.cpp)
 list(REMOVE_ITEM FACET_CORE_SOURCES ${PROJECT_SOURCE_DIR}/src/pipeline/reference.cpp)
 facet_layer(facet_core core facet ${FACET_CORE_SOURCES})
-target_link_libraries(facet_core PUBLIC glm::glm PRIVATE PNG::PNG TBB::tbb hwy::hwy)
+target_link_libraries(facet_core PUBLIC glm::glm PRIVATE ZLIB::ZLIB TBB::tbb hwy::hwy)
 
 file(GLOB FACET_IMPORT_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/import/*.cpp)
 facet_layer(facet_import import facet-import ${FACET_IMPORT_SOURCES})

@@ -9,6 +9,7 @@
 #include "facet/version.hpp"
 #include "help_format.hpp"
 #include "info_command.hpp"
+#include "process_memory.hpp"
 #include "render_batch.hpp"
 #include "render_command.hpp"
 #include "thumbnail_command.hpp"
@@ -27,6 +28,7 @@ int fail(const std::string& message) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  facet::cli::use_memory_for_short_run();
   // Named, so that usage lines say `facet` rather than the path the program was run by.
   CLI::App app{"facet: a CPU software rasterizer. Renders 3D scenes without a GPU.", "facet"};
   app.require_subcommand(1);

@@ -1,8 +1,6 @@
-// Writing rendered images: PNG through libpng, PPM (P6) by hand. Both go to a temporary file
+// Writing rendered images: PNG (png_encode.cpp) and PPM (P6). Both go to a temporary file
 // beside the target that is renamed into place only after a complete, checked write.
-#include <png.h>
 #include <unistd.h>
-#include <zlib.h>
 
 #include <algorithm>
 #include <cctype>
@@ -14,6 +12,7 @@
 #include <vector>
 
 #include "core/color.hpp"
+#include "core/png_encode.hpp"
 #include "facet/error.hpp"
 #include "facet/image_io.hpp"
 
@@ -48,59 +47,14 @@ struct FileCloser {
 };
 using File = std::unique_ptr<std::FILE, FileCloser>;
 
-// libpng reports errors through these instead of printing its own line to stderr and then
-// aborting: the message (or, for a failed fwrite, the errno behind it) becomes facet's one error
-// line. A write facet makes has nothing to warn about, so warnings are dropped.
-struct PngFailure {
-  int error_number = 0;
-  char message[160] = {};
-};
-
-[[noreturn]] void on_png_error(png_structp png, png_const_charp message) {
-  auto* failure = static_cast<PngFailure*>(png_get_error_ptr(png));
-  failure->error_number = errno;  // libpng's write callback calls this right after fwrite
-  std::snprintf(failure->message, sizeof failure->message, "%s", message ? message : "");
-  png_longjmp(png, 1);
-}
-
-void on_png_warning(png_structp, png_const_charp) {}
-
 void write_png(std::FILE* file, const Framebuffer& fb, const std::vector<std::uint8_t>& rgba,
                const std::string& path) {
-  PngFailure failure;
-  png_structp png =
-      png_create_write_struct(PNG_LIBPNG_VER_STRING, &failure, on_png_error, on_png_warning);
-  png_infop info = png ? png_create_info_struct(png) : nullptr;
-  if (!info) {
-    png_destroy_write_struct(&png, nullptr);
-    throw Error(path + ": cannot start PNG encoder (out of memory)");
-  }
-  std::vector<png_bytep> rows(fb.height());
-  for (int y = 0; y < fb.height(); ++y) {
-    rows[y] = const_cast<png_bytep>(rgba.data() + static_cast<std::size_t>(y) * fb.width() * 4);
-  }
+  const std::vector<std::uint8_t> png = io::encode_png(rgba.data(), fb.width(), fb.height());
   errno = 0;
-  // libpng reports errors by longjmp; nothing with a destructor is created past this point.
-  if (setjmp(png_jmpbuf(png))) {
-    png_destroy_write_struct(&png, &info);
-    throw Error(
-        path + ": write failed (" +
-        (failure.error_number != 0 ? std::strerror(failure.error_number) : failure.message) + ")");
+  if (std::fwrite(png.data(), 1, png.size(), file) != png.size()) {
+    throw Error(path + ": write failed (" + (errno != 0 ? std::strerror(errno) : "an I/O error") +
+                ")");
   }
-  png_init_io(png, file);
-  png_set_IHDR(png, info, fb.width(), fb.height(), 8, PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE,
-               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-  png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
-  // Thumbnails and frame sequences care about time. Each row filtered by its left neighbour
-  // (SUB) instead of libpng trying all five filters per row, and zlib's run-length strategy
-  // (Z_RLE, which needs no match search): much faster to write than trying every filter, and
-  // rendered frames come out no bigger.
-  png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
-  png_set_compression_strategy(png, Z_RLE);
-  png_write_info(png, info);
-  png_write_image(png, rows.data());
-  png_write_end(png, nullptr);
-  png_destroy_write_struct(&png, &info);
 }
 
 void write_ppm(std::FILE* file, const Framebuffer& fb, const std::vector<std::uint8_t>& rgba,

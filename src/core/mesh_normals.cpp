@@ -5,6 +5,9 @@
 // faces around its position that lie within the crease angle of its own face, so a cube stays
 // faceted and a sphere stays smooth. Corners are first welded by position (so UV seams do not
 // break smoothing), then a vertex is duplicated only where its corners need different normals.
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -12,6 +15,7 @@
 #include <cstring>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
+#include <span>
 #include <unordered_map>
 #include <vector>
 
@@ -21,6 +25,9 @@ namespace facet {
 namespace {
 
 using Triangle = std::array<std::uint32_t, 3>;
+
+// Faces per task where faces are processed on all cores: enough to outweigh a task's start.
+constexpr std::size_t kFacesPerTask = 4096;
 
 // The triangles a mesh draws, as vertex indices (strips unrolled with their winding kept).
 std::vector<Triangle> triangles_of(const Mesh& mesh) {
@@ -159,24 +166,47 @@ Face face_normal(const Mesh& mesh, const Triangle& t) {
   return {n, n / length, false};
 }
 
-// Faces around each welded position, in face order (so equal sets sum to equal bits).
-std::vector<std::vector<std::uint32_t>> faces_around(const std::vector<Triangle>& triangles,
-                                                     const std::vector<Face>& faces,
-                                                     const Welding& w) {
-  std::vector<std::vector<std::uint32_t>> around(w.position_count);
+// The faces around each welded position, in face order (so equal sets sum to equal bits): the
+// faces around position p are list[offset[p]] .. list[offset[p + 1] - 1].
+struct FacesAround {
+  std::vector<std::uint32_t> offset;
+  std::vector<std::uint32_t> list;
+  std::span<const std::uint32_t> of(std::uint32_t position) const {
+    return {list.data() + offset[position], list.data() + offset[position + 1]};
+  }
+};
+
+FacesAround faces_around(const std::vector<Triangle>& triangles, const std::vector<Face>& faces,
+                         const Welding& w) {
+  // Each face once per distinct position among its corners.
+  auto for_each_position = [&](std::size_t f, auto&& visit) {
+    const Triangle& t = triangles[f];
+    const std::uint32_t p0 = w.position_id[t[0]], p1 = w.position_id[t[1]],
+                        p2 = w.position_id[t[2]];
+    visit(p0);
+    if (p1 != p0) visit(p1);
+    if (p2 != p0 && p2 != p1) visit(p2);
+  };
+  FacesAround around;
+  around.offset.assign(w.position_count + 1, 0);
+  for (std::size_t f = 0; f < triangles.size(); ++f) {
+    if (!faces[f].degenerate)
+      for_each_position(f, [&](std::uint32_t p) { ++around.offset[p + 1]; });
+  }
+  for (std::uint32_t p = 0; p < w.position_count; ++p) around.offset[p + 1] += around.offset[p];
+  around.list.resize(around.offset.back());
+  std::vector<std::uint32_t> filled(around.offset.begin(), around.offset.end() - 1);
   for (std::size_t f = 0; f < triangles.size(); ++f) {
     if (faces[f].degenerate) continue;
-    for (std::uint32_t v : triangles[f]) {
-      auto& list = around[w.position_id[v]];
-      if (list.empty() || list.back() != f) list.push_back(static_cast<std::uint32_t>(f));
-    }
+    for_each_position(
+        f, [&](std::uint32_t p) { around.list[filled[p]++] = static_cast<std::uint32_t>(f); });
   }
   return around;
 }
 
 // The normal of one corner: adjacent faces within the crease of its own face. A degenerate
 // face has no normal to compare against, so its corners take every face around them.
-glm::vec3 corner_normal(const std::vector<std::uint32_t>& around, const std::vector<Face>& faces,
+glm::vec3 corner_normal(std::span<const std::uint32_t> around, const std::vector<Face>& faces,
                         std::uint32_t face, float cos_crease) {
   glm::vec3 sum(0.0f);
   const Face& own = faces[face];
@@ -189,18 +219,19 @@ glm::vec3 corner_normal(const std::vector<std::uint32_t>& around, const std::vec
 }
 
 // Corners around a busy position (the centre of a finely divided disc) mostly share their
-// face's normal, so their result is cached: such a vertex costs O(faces), not O(faces^2).
+// face's normal, so their result is cached: such a vertex costs O(faces), not O(faces^2). One
+// per thread: the cache only saves work, each normal is the same whichever computes it.
 constexpr std::size_t kBusyPosition = 64;
 
 class CornerNormals {
  public:
-  CornerNormals(const Welding& w, const std::vector<Face>& faces,
-                const std::vector<std::vector<std::uint32_t>>& around, float cos_crease)
+  CornerNormals(const Welding& w, const std::vector<Face>& faces, const FacesAround& around,
+                float cos_crease)
       : w_(w), faces_(faces), around_(around), cos_crease_(cos_crease) {}
 
   glm::vec3 operator()(std::uint32_t vertex, std::uint32_t face) {
     const std::uint32_t position = w_.position_id[vertex];
-    const auto& here = around_[position];
+    const std::span<const std::uint32_t> here = around_.of(position);
     if (here.size() <= kBusyPosition) return corner_normal(here, faces_, face, cos_crease_);
     key_.clear();
     key_.push_back(position);
@@ -214,7 +245,7 @@ class CornerNormals {
  private:
   const Welding& w_;
   const std::vector<Face>& faces_;
-  const std::vector<std::vector<std::uint32_t>>& around_;
+  const FacesAround& around_;
   float cos_crease_;
   Bits key_;
   std::unordered_map<Bits, glm::vec3, BitsHash> busy_;
@@ -234,13 +265,29 @@ void compute_smooth_normals(Mesh& mesh, float crease_angle_degrees) {
   const std::vector<Triangle> triangles = triangles_of(mesh);
   const Welding w = weld(mesh);
   std::vector<Face> faces(triangles.size());
-  for (std::size_t f = 0; f < triangles.size(); ++f) faces[f] = face_normal(mesh, triangles[f]);
-  const auto around = faces_around(triangles, faces, w);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, triangles.size(), kFacesPerTask),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t f = range.begin(); f < range.end(); ++f)
+                        faces[f] = face_normal(mesh, triangles[f]);
+                    });
+  const FacesAround around = faces_around(triangles, faces, w);
   // A little slack so faces that are coplanar up to rounding always smooth together.
   const float crease = std::clamp(crease_angle_degrees, 0.0f, 180.0f);
   const float cos_crease = std::cos(glm::radians(crease)) - 1e-5f;
 
-  CornerNormals corner_normals(w, faces, around, cos_crease);
+  // The normal of each corner (3 per face), on all cores: each depends on its face and the
+  // faces around its position only.
+  std::vector<glm::vec3> corner(triangles.size() * 3);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, triangles.size(), kFacesPerTask),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      CornerNormals corner_normals(w, faces, around, cos_crease);
+                      for (std::size_t f = range.begin(); f < range.end(); ++f) {
+                        for (int k = 0; k < 3; ++k) {
+                          corner[f * 3 + k] =
+                              corner_normals(triangles[f][k], static_cast<std::uint32_t>(f));
+                        }
+                      }
+                    });
 
   Mesh out;
   out.topology = Topology::triangles;
@@ -251,9 +298,9 @@ void compute_smooth_normals(Mesh& mesh, float crease_angle_degrees) {
   std::vector<std::uint32_t> first_output(mesh.positions.size(), kNone), next_output;
   Bits normal_bits, other_bits;
   for (std::size_t f = 0; f < triangles.size(); ++f) {
-    for (std::uint32_t v : triangles[f]) {
-      const std::uint32_t source = w.vertex_id[v];
-      const glm::vec3 n = corner_normals(v, static_cast<std::uint32_t>(f));
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t source = w.vertex_id[triangles[f][k]];
+      const glm::vec3 n = corner[f * 3 + k];
       normal_bits.clear();
       append_bits(normal_bits, n);
       std::uint32_t o = first_output[source];

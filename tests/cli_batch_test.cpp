@@ -173,8 +173,12 @@ TEST(CliThumbnail, WritesASquarePngAndNothingElse) {
   Rgba8Image image = read_png((dir / "a.png").string());
   EXPECT_EQ(image.width, 48);
   EXPECT_EQ(image.height, 48);
+  // On a transparent background, so it sits on any file manager's theme.
+  EXPECT_EQ(image.pixels[3], 0) << "the corner is background";
   // The same image as `facet render` at that size: the thumbnail is an ordinary render.
-  ASSERT_EQ(run_facet(dir, "render in/sub/a.stl --size 48x48 -q -o r.png").exit_code, 0);
+  ASSERT_EQ(
+      run_facet(dir, "render in/sub/a.stl --size 48x48 --background none -q -o r.png").exit_code,
+      0);
   EXPECT_EQ(read_file(dir / "a.png"), read_file(dir / "r.png"));
 }
 

@@ -34,8 +34,9 @@ bool ends_with_png(const std::string& path) {
 }  // namespace
 
 CLI::App* add_thumbnail_command(CLI::App& app, ThumbnailOptions& o) {
-  CLI::App* cmd = app.add_subcommand(
-      "thumbnail", "Write a square PNG thumbnail of a model (for desktop thumbnailers)");
+  CLI::App* cmd = app.add_subcommand("thumbnail",
+                                     "Write a square PNG thumbnail of a model on a transparent "
+                                     "background (for desktop thumbnailers)");
   cmd->add_option("-s,--size", o.size, "Edge of the square image in pixels, 1 .. 4096")
       ->capture_default_str();
   cmd->add_option("INPUT", o.input, "Model file, or a file:// URI")->required();
@@ -83,6 +84,7 @@ int run_thumbnail(const ThumbnailOptions& t) {
   RenderOptions o;
   o.scene.model = local_path(t.input);
   o.size = std::to_string(t.size) + "x" + std::to_string(t.size);
+  o.background = "none";  // a file manager shows the thumbnail on its own background
   o.frames.quiet = true;
   if (ends_with_png(t.output)) {
     o.output = t.output;

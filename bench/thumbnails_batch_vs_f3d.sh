@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# thumbnails_batch_vs_f3d.sh — a folder's worth of thumbnails: 100 model files from Debian's
-# assimp-testmodels (OBJ, PLY, STL, glTF, 3DS; the first 100 in name order that facet renders),
-# each to a 256x256 PNG. facet does them in one command (`facet render FILES... -o DIR/`); f3d
+# thumbnails_batch_vs_f3d.sh — a folder's worth of thumbnails: 100 thumbnails (256x256 PNGs) of
+# the model files of Debian's assimp-testmodels and glmark2-data that both programs read (OBJ,
+# PLY, STL, glTF, 3DS; those facet renders, about 85, in name order, the first ones again to
+# make 100). facet does them in one command (`facet render FILES... -o DIR/`); f3d
 # (Debian package f3d, VTK on Mesa llvmpipe) is started once per file, as a file manager's
 # thumbnailer would start it. Rounds alternate the two; prints each round's wall time and the
 # medians.
@@ -21,15 +22,16 @@ command -v Xvfb >/dev/null || { echo "Xvfb is not installed (apt-get install xvf
 [ -x "$FACET" ] || { echo "build facet first (make build)" >&2; exit 2; }
 
 # The files: valid samples only (no invalid/ folders), those facet renders on its own.
-mapfile -t candidates < <(find "$MODELS"/{OBJ,PLY,STL,glTF2,3DS} -type f \
+mapfile -t candidates < <(find "$MODELS"/{OBJ,PLY,STL,glTF2,3DS} /usr/share/glmark2/models -type f \
   \( -iname '*.obj' -o -iname '*.ply' -o -iname '*.stl' -o -iname '*.glb' -o -iname '*.gltf' \
      -o -iname '*.3ds' \) -not -path '*nvalid*' | LC_ALL=C sort)
-files=()
+models=()
 for f in "${candidates[@]}"; do
-  [ ${#files[@]} -ge 100 ] && break
-  "$FACET" render "$f" --size 256x256 -o "$OUT/probe.png" -q >/dev/null 2>&1 && files+=("$f")
+  "$FACET" render "$f" --size 256x256 -o "$OUT/probe.png" -q >/dev/null 2>&1 && models+=("$f")
 done
-echo "${#files[@]} models, 256x256 PNGs, $ROUNDS rounds alternated"
+files=()
+while [ ${#files[@]} -lt 100 ]; do files+=("${models[@]:0:$((100 - ${#files[@]}))}"); done
+echo "${#files[@]} thumbnails of ${#models[@]} models, 256x256 PNGs, $ROUNDS rounds alternated"
 
 DISPLAY_NUMBER=96
 Xvfb :$DISPLAY_NUMBER -screen 0 1920x1080x24 >/dev/null 2>&1 &

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "facet/import.hpp"
+#include "model_import.hpp"
 
 namespace facet::cli {
 namespace {
@@ -156,7 +157,7 @@ CLI::App* add_info_command(CLI::App& app, InfoOptions& options) {
 }
 
 int run_info(const InfoOptions& options) {
-  Scene scene = import_scene(options.model);  // throws facet::Error: main prints one line
+  Scene scene = import_model(options.model);  // throws facet::Error: main prints one line
   row("file", options.model);
   print_geometry(scene);
   print_materials(scene);

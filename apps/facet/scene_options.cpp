@@ -10,6 +10,7 @@
 #include "facet/procedural.hpp"
 #include "facet/texture.hpp"
 #include "facet/worlds.hpp"
+#include "model_import.hpp"
 
 namespace facet::cli {
 namespace {
@@ -244,7 +245,7 @@ Scene build_scene(const SceneOptions& o) {
   if (o.model.empty()) {
     scene = make_builtin_scene(o.scene.value_or("shapes"));
   } else {
-    scene = import_scene(o.model);
+    scene = import_model(o.model);
   }
   if (changes_framing(o)) {
     scene.framing = requested_framing(o);

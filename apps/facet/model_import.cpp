@@ -1,0 +1,33 @@
+#include "model_import.hpp"
+
+#include <iostream>
+
+#include "facet/import.hpp"
+
+namespace facet::cli {
+namespace {
+
+// Puts a stream's buffer back however the import ends.
+class SilencedStream {
+ public:
+  explicit SilencedStream(std::ostream& stream) : stream_(stream), buffer_(stream.rdbuf(nullptr)) {}
+  ~SilencedStream() {
+    stream_.rdbuf(buffer_);
+    stream_.clear();  // writes to a stream without a buffer set badbit
+  }
+  SilencedStream(const SilencedStream&) = delete;
+  SilencedStream& operator=(const SilencedStream&) = delete;
+
+ private:
+  std::ostream& stream_;
+  std::streambuf* buffer_;
+};
+
+}  // namespace
+
+Scene import_model(const std::string& path) {
+  SilencedStream out(std::cout), err(std::cerr);
+  return import_scene(path);
+}
+
+}  // namespace facet::cli

@@ -5,12 +5,21 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <string>
 
 #include "facet/error.hpp"
 #include "facet/image_io.hpp"
 
 namespace facet::cli {
 namespace {
+
+// The sound's state as the overlay's line and the M key's message both say it: M mutes and
+// unmutes even without an audio device, and then neither says the sound is on. Short: the
+// overlay's panel is as wide as its longest line.
+std::string sound_state(const IslandsSound& sound) {
+  if (!sound.available()) return sound.muted() ? "muted (no device)" : "off (no device)";
+  return sound.muted() ? "muted" : "on (M)";
+}
 
 constexpr double kSmoothing = 0.1;  // weight of the newest frame in the smoothed frame time
 
@@ -115,7 +124,7 @@ bool ViewLoop::handle_events() {
       case ViewAction::toggle_mute:
         if (sound_) {
           sound_->set_muted(!sound_->muted());
-          overlay_.show_change(sound_->muted() ? "sound: muted" : "sound: on", now);
+          overlay_.show_change("sound: " + sound_state(*sound_), now);
         }
         break;
       case ViewAction::camera_mode:
@@ -162,8 +171,7 @@ void ViewLoop::render(double now, double dt) {
   info.camera = setup_.camera_path                      ? "camera path"
                 : controls_.mode() == CameraMode::orbit ? "orbit (Tab)"
                                                         : "first person (Tab)";
-  if (sound_)
-    info.sound = !sound_->available() ? "off (no device)" : sound_->muted() ? "muted" : "on (M)";
+  if (sound_) info.sound = sound_state(*sound_);
   int window_width = 0, window_height = 0;
   window_.window_size(window_width, window_height);
   layer_ = overlay_.draw(frame_, info, settings_.overlay, settings_.help, window_width,

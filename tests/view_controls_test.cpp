@@ -36,10 +36,16 @@ TEST(ViewControls, BuiltInWorldsWalkAtAHumanPace) {
   EXPECT_NEAR(walking_speed(centimetres), 140.0f, 1e-3f);
 }
 
+// A scene of one box of this size, in units nobody stated.
+Scene box_scene(glm::vec3 size) {
+  Scene scene;
+  scene.add_object(box(size), Material{});
+  return scene;
+}
+
 TEST(ViewControls, ModelsOfUnknownUnitsWalkAcrossInTwentySeconds) {
-  Scene small, large;
-  small.add_object(box({2.0f, 2.0f, 1.0f}), Material{});        // a 3 unit diagonal
-  large.add_object(box({200.0f, 200.0f, 100.0f}), Material{});  // 300
+  const Scene small = box_scene({2.0f, 2.0f, 1.0f});        // a 3 unit diagonal
+  const Scene large = box_scene({200.0f, 200.0f, 100.0f});  // 300
   EXPECT_EQ(small.metres_per_unit, 0.0f);
   EXPECT_NEAR(walking_speed(small), 0.15f, 1e-5f);
   EXPECT_NEAR(walking_speed(large), 15.0f, 1e-3f);

@@ -43,6 +43,7 @@ CHECKED_BUILD_FLAGS := -DCMAKE_BUILD_TYPE=RelWithDebInfo '-DCMAKE_CXX_FLAGS_RELW
 # Any sanitizer report fails the run, with a stack trace.
 ASAN_RUNTIME_OPTIONS := halt_on_error=1:detect_leaks=1:check_initialization_order=1:strict_init_order=1
 UBSAN_RUNTIME_OPTIONS := halt_on_error=1:print_stacktrace=1
+LSAN_RUNTIME_OPTIONS := suppressions=$(CURDIR)/cmake/lsan.supp:print_suppressions=0
 TSAN_RUNTIME_OPTIONS := halt_on_error=1:second_deadlock_stack=1:suppressions=$(CURDIR)/cmake/tsan.supp
 
 SHELL := /bin/bash
@@ -98,6 +99,7 @@ test-sanitize: test-asan test-tsan
 # sanitized extension needs the sanitizer's runtime preloaded into the Python interpreter).
 test-asan: export ASAN_OPTIONS := $(ASAN_RUNTIME_OPTIONS)
 test-asan: export UBSAN_OPTIONS := $(UBSAN_RUNTIME_OPTIONS)
+test-asan: export LSAN_OPTIONS := $(LSAN_RUNTIME_OPTIONS)
 test-asan: deps
 	@if [ ! -f $(ASAN_DIR)/CMakeCache.txt ]; then \
 	  cmake -S . -B $(ASAN_DIR) $(CHECKED_BUILD_FLAGS) -DFACET_SANITIZE=address \

@@ -5,9 +5,6 @@
 // faces around its position that lie within the crease angle of its own face, so a cube stays
 // faceted and a sphere stays smooth. Corners are first welded by position (so UV seams do not
 // break smoothing), then a vertex is duplicated only where its corners need different normals.
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -19,6 +16,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "core/parallel.hpp"
 #include "facet/mesh_tools.hpp"
 
 namespace facet {
@@ -26,8 +24,17 @@ namespace {
 
 using Triangle = std::array<std::uint32_t, 3>;
 
-// Faces per task where faces are processed on all cores: enough to outweigh a task's start.
+// Runs body(begin, end) over [0, faces) in ranges of kFacesPerTask, on all cores: enough faces
+// per task to outweigh a task's start.
 constexpr std::size_t kFacesPerTask = 4096;
+template <class Body>
+void for_each_face_range(std::size_t faces, const Body& body) {
+  const int tasks = static_cast<int>((faces + kFacesPerTask - 1) / kFacesPerTask);
+  parallel_tasks(tasks, default_workers(), [&](int task, int) {
+    const std::size_t begin = static_cast<std::size_t>(task) * kFacesPerTask;
+    body(begin, std::min(faces, begin + kFacesPerTask));
+  });
+}
 
 // The triangles a mesh draws, as vertex indices (strips unrolled with their winding kept).
 std::vector<Triangle> triangles_of(const Mesh& mesh) {
@@ -265,11 +272,9 @@ void compute_smooth_normals(Mesh& mesh, float crease_angle_degrees) {
   const std::vector<Triangle> triangles = triangles_of(mesh);
   const Welding w = weld(mesh);
   std::vector<Face> faces(triangles.size());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, triangles.size(), kFacesPerTask),
-                    [&](const tbb::blocked_range<std::size_t>& range) {
-                      for (std::size_t f = range.begin(); f < range.end(); ++f)
-                        faces[f] = face_normal(mesh, triangles[f]);
-                    });
+  for_each_face_range(triangles.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f < end; ++f) faces[f] = face_normal(mesh, triangles[f]);
+  });
   const FacesAround around = faces_around(triangles, faces, w);
   // A little slack so faces that are coplanar up to rounding always smooth together.
   const float crease = std::clamp(crease_angle_degrees, 0.0f, 180.0f);
@@ -278,16 +283,13 @@ void compute_smooth_normals(Mesh& mesh, float crease_angle_degrees) {
   // The normal of each corner (3 per face), on all cores: each depends on its face and the
   // faces around its position only.
   std::vector<glm::vec3> corner(triangles.size() * 3);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, triangles.size(), kFacesPerTask),
-                    [&](const tbb::blocked_range<std::size_t>& range) {
-                      CornerNormals corner_normals(w, faces, around, cos_crease);
-                      for (std::size_t f = range.begin(); f < range.end(); ++f) {
-                        for (int k = 0; k < 3; ++k) {
-                          corner[f * 3 + k] =
-                              corner_normals(triangles[f][k], static_cast<std::uint32_t>(f));
-                        }
-                      }
-                    });
+  for_each_face_range(triangles.size(), [&](std::size_t begin, std::size_t end) {
+    CornerNormals corner_normals(w, faces, around, cos_crease);
+    for (std::size_t f = begin; f < end; ++f) {
+      for (int k = 0; k < 3; ++k)
+        corner[f * 3 + k] = corner_normals(triangles[f][k], static_cast<std::uint32_t>(f));
+    }
+  });
 
   Mesh out;
   out.topology = Topology::triangles;

@@ -13,12 +13,12 @@
 // data are written here (each is a length, a type, the data and a CRC-32).
 #include "core/png_encode.hpp"
 
-#include <tbb/parallel_for.h>
 #include <zlib.h>
 
 #include <algorithm>
 #include <cstddef>
 
+#include "core/parallel.hpp"
 #include "facet/error.hpp"
 
 namespace facet::io {
@@ -100,7 +100,7 @@ std::vector<std::uint8_t> encode_png(const std::uint8_t* rgba, int width, int he
   const int channels = opaque(rgba, pixels) ? 3 : 4;
   const int band_count = (height + kBandRows - 1) / kBandRows;
   std::vector<Band> bands(band_count);
-  tbb::parallel_for(0, band_count, [&](int b) {
+  parallel_tasks(band_count, default_workers(), [&](int b, int) {
     const int y0 = b * kBandRows, y1 = std::min(height, y0 + kBandRows);
     bands[b] = compress_band(rgba, width, y0, y1, channels, b == band_count - 1);
   });

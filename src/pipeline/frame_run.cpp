@@ -4,13 +4,13 @@
 #include <algorithm>
 #include <glm/matrix.hpp>
 
+#include "core/parallel.hpp"
 #include "pipeline/bin/bin.hpp"
 #include "pipeline/geometry/geometry.hpp"
 #include "pipeline/geometry/vertex.hpp"
 #include "pipeline/kernels.hpp"
 #include "pipeline/output/debug_view.hpp"
 #include "pipeline/output/output.hpp"
-#include "pipeline/parallel.hpp"
 #include "pipeline/raster/raster.hpp"
 #include "pipeline/renderer_impl.hpp"
 #include "shading/lighting.hpp"
@@ -175,7 +175,7 @@ void Renderer::Impl::run(Framebuffer& target) {
   // Raster + shade + resolve: one tile per task, so any thread count gives the same image.
   auto raster_start = Clock::now();
   int tiles = frame.tiles_x * frame.tiles_y;
-  pipeline::parallel_tasks(tiles, workers, [&](int tile, int worker) {
+  parallel_tasks(tiles, workers, [&](int tile, int worker) {
     auto tile_start = Clock::now();
     render_tile(tile, worker, target);
     tile_ms[tile] = ms_since(tile_start);

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <bit>
 
-#include "pipeline/parallel.hpp"
+#include "core/parallel.hpp"
 #include "pipeline/setup/fixed_point.hpp"
 
 namespace facet::pipeline {

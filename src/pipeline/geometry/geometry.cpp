@@ -7,7 +7,7 @@
 #include "pipeline/geometry/primitive.hpp"
 #include "pipeline/geometry/primitive_sink.hpp"
 #include "pipeline/geometry/vertex.hpp"
-#include "pipeline/parallel.hpp"
+#include "core/parallel.hpp"
 
 namespace facet::pipeline {
 namespace {

@@ -5,7 +5,7 @@
 
 #include "pipeline/geometry/clip.hpp"
 #include "pipeline/kernels.hpp"
-#include "pipeline/parallel.hpp"
+#include "core/parallel.hpp"
 #include "pipeline/record/draw_culling.hpp"
 #include "pipeline/setup/setup.hpp"
 

@@ -1,7 +1,8 @@
-// Parallel loops for the pipeline: task i of count runs exactly once, on some worker with a
-// worker index in [0, workers). oneTBB does the scheduling; ThreadSanitizer builds use plain
-// std::threads instead, because Debian's libtbb is not instrumented and TSan would report its
-// internal hand-offs as races (our code is what that build is meant to check).
+// Parallel loops for the pipeline and the core's load-time work (smooth normals, PNG bands):
+// task i of count runs exactly once, on some worker with a worker index in [0, workers). oneTBB
+// does the scheduling; ThreadSanitizer builds use plain std::threads instead, because Debian's
+// libtbb is not instrumented and TSan would report its internal hand-offs as races (our code is
+// what that build is meant to check).
 #pragma once
 
 #include <algorithm>
@@ -16,10 +17,16 @@
 #include <tbb/task_arena.h>
 #endif
 
-namespace facet::pipeline {
+namespace facet {
 
-// Runs body(task, worker) for every task in [0, count). Call inside the renderer's
-// tbb::task_arena of `workers` threads.
+// Runs body(task, worker) for every task in [0, count). The renderer calls it inside its
+// tbb::task_arena of `workers` threads; load-time work, in the default arena with
+// default_workers().
+// The threads of the default arena (the cores), for load-time work.
+inline int default_workers() {
+  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+}
+
 template <class Body>
 void parallel_tasks(int count, int workers, Body&& body) {
 #ifndef FACET_SANITIZE_THREAD
@@ -45,4 +52,4 @@ void parallel_tasks(int count, int workers, Body&& body) {
 #endif
 }
 
-}  // namespace facet::pipeline
+}  // namespace facet

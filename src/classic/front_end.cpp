@@ -217,7 +217,7 @@ Scene make_triangle_scene() {
   material.cull = CullMode::none;
   Scene scene;
   scene.add_object(std::move(mesh), material);
-  scene.camera = Camera::look_at({0.0f, 0.4f, 3.0f}, {0.0f, 0.0f, -0.5f});
+  scene.camera = Camera::look_at({0.0f, 0.2f, 4.0f}, {0.0f, 0.0f, -0.6f});
   return scene;
 }
 

@@ -8,6 +8,7 @@
 // normal/w, affine on screen, are stepped down the edges too and interpolated along each span.
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "classic/classic.hpp"
 
@@ -27,6 +28,14 @@ void values_at(const ScreenVertex& v, double out[kValues]) {
   const double values[kValues] = {v.z, v.inv_w, v.normal.x * v.inv_w, v.normal.y * v.inv_w,
                                   v.normal.z * v.inv_w};
   std::copy_n(values, kValues, out);
+}
+
+// Insertion sort, enough for tables of at most three edges.
+template <class T, class Less>
+void sort_small(T* items, int count, Less less) {
+  for (int i = 1; i < count; ++i) {
+    for (int j = i; j > 0 && less(items[j], items[j - 1]); --j) std::swap(items[j], items[j - 1]);
+  }
 }
 
 // The first pixel row (or column) whose centre is at or after `at`, within [0, size].
@@ -90,8 +99,7 @@ void fill_scanline(const ScreenVertex v[3], bool fill_rule, Image& image) {
     }
     ++edges;
   }
-  std::sort(table, table + edges,
-            [](const Edge& a, const Edge& b) { return a.first_row < b.first_row; });
+  sort_small(table, edges, [](const Edge& a, const Edge& b) { return a.first_row < b.first_row; });
   if (edges == 0) return;
   int last_row = 0;
   for (int i = 0; i < edges; ++i) last_row = std::max(last_row, table[i].last_row);
@@ -105,7 +113,7 @@ void fill_scanline(const ScreenVertex v[3], bool fill_rule, Image& image) {
     count = static_cast<int>(
         std::remove_if(active, active + count, [y](const Edge* e) { return e->last_row < y; }) -
         active);
-    std::sort(active, active + count, [](const Edge* a, const Edge* b) { return a->x < b->x; });
+    sort_small(active, count, [](const Edge* a, const Edge* b) { return a->x < b->x; });
     for (int i = 0; i + 1 < count; i += 2)
       fill_span(*active[i], *active[i + 1], y, fill_rule, image);
     for (int i = 0; i < count; ++i) {

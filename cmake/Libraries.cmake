@@ -71,3 +71,14 @@ if(FACET_BUILD_PROGRAM OR FACET_BUILD_TESTS)
   target_compile_options(facet_bench_scenes PRIVATE ${FACET_WARNINGS})
   set_target_properties(facet_bench_scenes PROPERTIES POSITION_INDEPENDENT_CODE ON)
 endif()
+
+# The classic rasterizers (src/classic, docs/classic/): three short fills for learners, not part
+# of the library (nothing installs them). The tests and apps/classic's demo link them; they see
+# the core's public headers only (tools/check_layers.py).
+if(FACET_BUILD_PROGRAM OR FACET_BUILD_TESTS)
+  file(GLOB FACET_CLASSIC_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/classic/*.cpp)
+  add_library(facet_classic STATIC ${FACET_CLASSIC_SOURCES})
+  target_include_directories(facet_classic PUBLIC ${PROJECT_SOURCE_DIR}/src)
+  target_link_libraries(facet_classic PUBLIC facet_core)
+  target_compile_options(facet_classic PRIVATE ${FACET_WARNINGS})
+endif()

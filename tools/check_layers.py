@@ -36,6 +36,10 @@ RULES = {
     "include/facet:import": ([], ["core", "import"]),
     "include/facet:worlds": ([], ["core", "worlds"]),
     "include/facet:sound": ([], ["sound"]),
+    # The classic rasterizers, for learners: the core's types and nothing more.
+    "src/classic": (["classic"], CORE_PUBLIC),
+    # Their demo program draws built-in and imported scenes with them.
+    "apps/classic": (["classic"], ["core", "import", "worlds"]),
     # The benchmark scenes plug shading models into the pipeline (record/custom_draw.hpp).
     "bench/scenes": (["core", "shading", "pipeline", "scenes"], ["core", "import", "worlds"]),
     # The program: public headers and the benchmark scenes, nothing internal.

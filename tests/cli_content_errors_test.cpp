@@ -64,6 +64,14 @@ const BadCase kBadCases[] = {
     {"reflectivity_negative", "$IN/ball.d --reflectivity -0.5", "--reflectivity"},
     {"exposure_100", "$IN/ball.d --exposure 100", "--exposure"},
     {"camera_in_a_file_without_cameras", "$IN/ball.d --camera 0", "--camera"},
+    // Camera numbers that overflow a float or leave nothing for the depth buffer to draw: named
+    // by flag (before: 0 pixels shaded with exit 0, "near plane must be positive, got inf", and
+    // "up is parallel to the view direction").
+    {"near_far_ratio_beyond_depth", "$IN/ball.d --near 1e-30 --far 1e30",
+     "--near 1e-30 and --far 1e+30"},
+    {"near_alone_beyond_depth", "$IN/ball.d --near 1e-9", "--near 1e-09 and the far plane"},
+    {"eye_too_far", "$IN/ball.d --eye 1e38,0,0", "--eye: 1e38,0,0 is"},
+    {"target_too_far", "$IN/ball.d --target 0,0,-1e30", "--target: the eye and the target"},
     // assimp's OpenGEX parser prints a line of its own to std::cerr before it fails.
     {"assimp_prints_its_own_line", "/usr/share/assimp/models/OpenGEX/empty_camera.ogex",
      "empty_camera.ogex"},

@@ -1,6 +1,7 @@
 // `facet info MODEL`: prints what a model holds, aligned; errors are one line and exit code 2.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -92,6 +93,33 @@ TEST(CliInfo, ErrorsAreOneLineWithExitCode2) {
 
   CommandResult no_model = run_command(std::string(FACET_CLI) + " info");
   EXPECT_EQ(no_model.exit_code, kUsageError);
+}
+
+// A texture outside the model's folder: one warning naming the path and the rule, the model
+// still described; --allow-outside-paths reads it without a word.
+TEST(CliInfo, TextureOutsideTheModelsFolderWarnsUnlessAllowed) {
+  const fs::path root = fresh_test_dir("facet_info_", "outside");
+  fs::create_directories(root / "model");
+  fs::create_directories(root / "elsewhere");
+  std::ofstream(root / "elsewhere" / "secret.ppm", std::ios::binary) << "P6\n1 1\n255\n"
+                                                                     << std::string(3, '\x80');
+  std::ofstream(root / "model" / "tri.mtl") << "newmtl m\nmap_Kd ../elsewhere/secret.ppm\n";
+  const fs::path model = root / "model" / "tri.obj";
+  std::ofstream(model) << "mtllib tri.mtl\nusemtl m\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\n"
+                          "f 1/1 2/1 3/1\n";
+  CommandResult refused = run_info(quoted(model.string()));
+  ASSERT_EQ(refused.exit_code, 0) << refused.stderr_text;
+  EXPECT_EQ(refused.stderr_text.rfind("facet: warning: " + model.string() +
+                                          ": texture ../elsewhere/secret.ppm is outside the "
+                                          "model's folder",
+                                      0),
+            0u)
+      << refused.stderr_text;
+  EXPECT_EQ(std::count(refused.stderr_text.begin(), refused.stderr_text.end(), '\n'), 1);
+
+  CommandResult allowed = run_info("--allow-outside-paths " + quoted(model.string()));
+  ASSERT_EQ(allowed.exit_code, 0) << allowed.stderr_text;
+  EXPECT_EQ(allowed.stderr_text, "");
 }
 
 }  // namespace

@@ -153,11 +153,13 @@ CLI::App* add_info_command(CLI::App& app, InfoOptions& options) {
       "lights, cameras");
   command->add_option("MODEL", options.model, "Model file (OBJ, glTF, PLY, STL, 3DS, FBX, .d, ...)")
       ->required();
+  add_allow_outside_paths_flag(*command, options.allow_outside_paths);
   return command;
 }
 
 int run_info(const InfoOptions& options) {
-  Scene scene = import_model(options.model);  // throws facet::Error: main prints one line
+  // Throws facet::Error: main prints one line.
+  Scene scene = import_model(options.model, options.allow_outside_paths);
   row("file", options.model);
   print_geometry(scene);
   print_materials(scene);

@@ -9,6 +9,7 @@ namespace facet::cli {
 
 struct InfoOptions {
   std::string model;
+  bool allow_outside_paths = false;
 };
 
 // Adds the `info` subcommand and its arguments to app; options are filled on parse.

@@ -25,9 +25,17 @@ class SilencedStream {
 
 }  // namespace
 
-Scene import_model(const std::string& path) {
+Scene import_model(const std::string& path, bool allow_outside_paths) {
+  ImportOptions options;
+  options.allow_outside_paths = allow_outside_paths;
   SilencedStream out(std::cout), err(std::cerr);
-  return import_scene(path);
+  return import_scene(path, options);
+}
+
+void add_allow_outside_paths_flag(CLI::App& command, bool& allow_outside_paths) {
+  command.add_flag("--allow-outside-paths", allow_outside_paths,
+                   "Let the model read textures and other files outside its own folder (default: "
+                   "refused with a warning, as missing)");
 }
 
 }  // namespace facet::cli

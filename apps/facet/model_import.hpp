@@ -2,6 +2,7 @@
 // kept off the program's output.
 #pragma once
 
+#include <CLI/CLI.hpp>
 #include <string>
 
 #include "facet/scene.hpp"
@@ -13,6 +14,10 @@ namespace facet::cli {
 // make a bad file two lines of error instead of facet's one. The program writes its own output
 // with stdio, never through these streams, and imports on one thread, so nothing of its own is
 // lost. Throws facet::Error as import_scene does.
-Scene import_model(const std::string& path);
+// allow_outside_paths: ImportOptions::allow_outside_paths.
+Scene import_model(const std::string& path, bool allow_outside_paths = false);
+
+// --allow-outside-paths, for every command that imports a model.
+void add_allow_outside_paths_flag(CLI::App& command, bool& allow_outside_paths);
 
 }  // namespace facet::cli

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "arguments.hpp"
+#include "camera_numbers.hpp"
 #include "facet/error.hpp"
 #include "facet/import.hpp"
 #include "facet/procedural.hpp"
@@ -233,6 +234,7 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o, std::vector<std::string>*
                  "Mirror reflectivity in [0, 1] for every material (needs --env)");
   cmd.add_option("--point-size", o.point_size,
                  "Side of each point of a point cloud in pixels, (0, 256] (default: 3)");
+  add_allow_outside_paths_flag(cmd, o.allow_outside_paths);
 }
 
 Scene build_scene(const SceneOptions& o) {
@@ -245,7 +247,7 @@ Scene build_scene(const SceneOptions& o) {
   if (o.model.empty()) {
     scene = make_builtin_scene(o.scene.value_or("shapes"));
   } else {
-    scene = import_model(o.model);
+    scene = import_model(o.model, o.allow_outside_paths);
   }
   if (changes_framing(o)) {
     scene.framing = requested_framing(o);
@@ -353,6 +355,7 @@ Camera build_camera(const SceneOptions& o, const Scene& scene, float aspect) {
   // The image's aspect, whatever the camera had: cameras here come from files and the framing,
   // never from intrinsics, whose aspect belongs to their calibration (camera.hpp).
   camera.aspect = aspect;
+  check_camera_numbers(o, scene, camera);  // values that overflow or draw nothing, by flag
   try {
     camera.validate();
   } catch (const Error& e) {

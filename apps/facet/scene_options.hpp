@@ -27,6 +27,7 @@ struct SceneOptions {
   std::optional<std::string> texture, projection;
   std::optional<float> reflectivity;
   std::optional<float> point_size;
+  bool allow_outside_paths = false;  // ImportOptions::allow_outside_paths
 };
 
 // Adds the options to a subcommand. With `models`, the positional takes any number of model

@@ -19,9 +19,20 @@ struct ImportOptions {
   // Called once per problem that does not stop the import (a missing texture, replaced by a
   // visible checker). Default: print one line to stderr.
   std::function<void(const std::string&)> warn;
+  // Files the model references (textures, glTF buffers, OBJ material libraries, ...) must lie
+  // inside the model's folder once symbolic links are resolved: a model from a stranger cannot
+  // make the import read /etc/passwd or ~/secret.png. A reference outside is refused with one
+  // warning and treated as missing (a texture draws as the checker; a buffer the geometry needs
+  // fails the import). true lifts the rule, for models that share a texture folder beside them.
+  // Whatever this says, only regular files are read: a directory, named pipe, socket or device
+  // (/dev/zero) as a model or a referenced file is refused, saying which it is.
+  bool allow_outside_paths = false;
 };
 
-// Throws facet::Error (file, and line or index where known) if the file cannot be read. The
+// Throws facet::Error (file, and line or index where known) if the file cannot be read. Sizes
+// a binary header claims (a GLB chunk's length, an OFF file's counts) are checked against the
+// file's real size before anything is allocated: a file that lies fails at once, naming the
+// field. The
 // scene's camera frames the whole model (frame_scene, 16:9, with Scene::framing set so that
 // scene_camera frames it again for another aspect); a file without lights gets three
 // lights around that view and an ambient term (three_point_lights), so it draws lit as it is.

@@ -8,11 +8,10 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <string>
 
 #include "facet/error.hpp"
+#include "import/guarded_files.hpp"
 #include "import/import_internal.hpp"
 
 namespace facet {
@@ -32,43 +31,9 @@ void warn(const ImportOptions& options, const std::string& message) {
   }
 }
 
-// A model path must name a readable regular file; say which way it does not.
-void check_model_file(const std::string& path) {
-  std::error_code error;
-  if (std::filesystem::is_regular_file(path, error)) return;
-  if (std::filesystem::is_directory(path, error))
-    throw Error(path + ": is a directory, not a model file");
-  const auto status = std::filesystem::status(path, error);
-  const char* what = nullptr;
-  switch (status.type()) {
-    case std::filesystem::file_type::character:
-      what = "a character device";
-      break;
-    case std::filesystem::file_type::block:
-      what = "a block device";
-      break;
-    case std::filesystem::file_type::fifo:
-      what = "a named pipe";
-      break;
-    case std::filesystem::file_type::socket:
-      what = "a socket";
-      break;
-    case std::filesystem::file_type::not_found:
-      break;
-    default:
-      what = "a special file";
-      break;
-  }
-  if (what) throw Error(path + ": is " + std::string(what) + ", not a model file");
-  throw Error(path + ": no such file");
-}
-
 std::string read_whole_file(const std::string& path) {
   check_model_file(path);
-  std::ifstream in(path, std::ios::binary);
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad() || !in.is_open()) throw Error(path + ": cannot be read");
-  return bytes;
+  return read_regular_file(path);
 }
 
 }  // namespace io

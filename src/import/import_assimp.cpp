@@ -19,16 +19,15 @@
 #include <assimp/Importer.hpp>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <glm/geometric.hpp>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <type_traits>
 #include <unordered_map>
 #include <vector>
 
 #include "facet/error.hpp"
+#include "import/guarded_io.hpp"
 
 namespace facet::io {
 
@@ -44,31 +43,6 @@ std::string one_line(std::string text) {
   std::replace(text.begin(), text.end(), '\r', ' ');
   while (!text.empty() && text.back() == ' ') text.pop_back();
   return text.empty() ? "unknown error" : text;
-}
-
-// assimp 5.2's OFF reader allocates whatever the header declares before reading a vertex:
-// invalid/OutOfMemory.off (309 bytes) declares 353535235358 vertices, and assimp claims
-// gigabytes of memory before it fails. A vertex needs at least 6 bytes ("0 0 0\n") and a face
-// 2, so a header the file cannot hold is refused here instead.
-void check_off_header(const std::string& path) {
-  std::string head(4096, '\0');  // the header is at the start; never read a big binary file
-  std::ifstream file(path, std::ios::binary);
-  file.read(head.data(), static_cast<std::streamsize>(head.size()));
-  head.resize(static_cast<std::size_t>(file.gcount()));
-  std::istringstream in(head);
-  std::string keyword, line;
-  while (in >> keyword && keyword[0] == '#') std::getline(in, line);
-  if (keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0) return;
-  unsigned long long vertices = 0, faces = 0;
-  if (!(in >> vertices >> faces)) return;  // binary OFF or garbage: assimp will say
-  std::error_code error;
-  const auto size = std::filesystem::file_size(path, error);
-  if (error) return;
-  if (vertices > size / 6 || faces > size / 2 || vertices * 6 + faces * 2 > size) {
-    throw Error(path + ": cannot import: the OFF header declares " + std::to_string(vertices) +
-                " vertices and " + std::to_string(faces) + " faces, more than a file of " +
-                std::to_string(size) + " bytes can hold");
-  }
 }
 
 bool is_gltf(const std::string& path, const aiScene& ai) {
@@ -350,9 +324,18 @@ Scene convert(const aiScene& ai, const std::string& path, const ImportOptions& o
 }  // namespace
 
 Scene import_assimp_scene(const std::string& path, const ImportOptions& options) {
-  check_off_header(path);
+  precheck_model(path);
+  const ReferenceRules rules(path, options);
   Assimp::Importer importer;
+  // Every file assimp opens goes through facet's rules (guarded_io.hpp); the importer owns it.
+  auto* files = new GuardedIOSystem(rules);
+  importer.SetIOHandler(files);
   const aiScene* ai = nullptr;
+  // A file assimp needed and was refused makes the failure: say that rather than assimp's
+  // guess at why the file it could not open is missing.
+  auto refused_or = [&](const std::string& message) {
+    return files->refusals().empty() ? message : files->refusals().front();
+  };
   try {
     // Read, then post-process (validation first): point clouds need their faces in between.
     ai = importer.ReadFile(path, 0);
@@ -366,9 +349,12 @@ Scene import_assimp_scene(const std::string& path, const ImportOptions& options)
       ai = importer.ApplyPostProcessing(kPostProcess);
     }
   } catch (const std::exception& e) {  // assimp's DeadlyImportError escapes in some readers
-    throw Error(path + ": cannot import: " + one_line(e.what()));
+    throw Error(refused_or(path + ": cannot import: " + one_line(e.what())));
   }
-  if (!ai) throw Error(path + ": cannot import: " + one_line(importer.GetErrorString()));
+  if (!ai)
+    throw Error(refused_or(path + ": cannot import: " + one_line(importer.GetErrorString())));
+  // The import went on without them (an OBJ's material library): one warning each.
+  for (const std::string& refusal : files->refusals()) io::warn(options, refusal);
   try {
     return convert(*ai, path, options);
   } catch (const Error&) {

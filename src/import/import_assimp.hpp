@@ -13,6 +13,7 @@
 
 #include "facet/material.hpp"
 #include "facet/texture.hpp"
+#include "import/guarded_files.hpp"
 #include "import/import_internal.hpp"
 
 struct aiScene;
@@ -21,15 +22,17 @@ struct aiMaterial;
 namespace facet::io {
 
 // Loads the textures a model references, each (file, sRGB) pair once. A texture that is
-// missing or cannot be decoded is warned about once per file name and comes back null.
+// missing, refused (outside the model's folder, not a regular file: guarded_files.hpp) or cannot
+// be decoded is warned about once per file name and comes back null.
 class TextureLoader {
  public:
   TextureLoader(const aiScene& scene, const std::string& model_path, const ImportOptions& options);
   std::shared_ptr<const Texture> load(const std::string& reference, bool srgb);
 
  private:
-  std::string resolve(const std::string& reference) const;  // empty: not found
-  int embedded_index(const std::string& reference) const;   // -1: not embedded
+  // The file to read, or empty: not found, or only refused files found (refusal says why).
+  std::string resolve(const std::string& reference, std::string& refusal) const;
+  int embedded_index(const std::string& reference) const;  // -1: not embedded
   std::shared_ptr<const Texture> decode_embedded(int index, bool srgb) const;
   void warn_once(const std::string& reference, const std::string& problem);
 
@@ -37,6 +40,7 @@ class TextureLoader {
   std::string model_path_;
   std::string model_dir_;
   const ImportOptions& options_;
+  ReferenceRules rules_;
   std::map<std::string, std::string> resolved_;  // reference -> file path, "*N" or "" (missing)
   std::map<std::pair<std::string, bool>, std::shared_ptr<const Texture>> cache_;
   std::set<std::string> warned_;

@@ -22,6 +22,10 @@ Scene import_d_scene(const std::string& path, const ImportOptions& options);
 // default camera yet (import_scene frames it).
 Scene import_assimp_scene(const std::string& path, const ImportOptions& options);
 
+// Sizes the file's header claims, checked against its real size before any reader allocates
+// them (precheck.cpp: GLB chunks, OFF counts); throws facet::Error naming the field.
+void precheck_model(const std::string& path);
+
 // options.warn, or one "facet: warning:" line on stderr when it is not set.
 void warn(const ImportOptions& options, const std::string& message);
 

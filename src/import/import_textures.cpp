@@ -1,6 +1,7 @@
 // Texture files referenced by an imported model: found next to the model (case-insensitively,
-// Windows paths too) or embedded in it, each file decoded once. Runs at load time; the textures
-// end up in Scene::textures and the materials' maps.
+// Windows paths too) or embedded in it, each file decoded once; a file outside the model's
+// folder or one that is not a regular file is refused (guarded_files.hpp) and draws the checker.
+// Runs at load time; the textures end up in Scene::textures and the materials' maps.
 #include <assimp/scene.h>
 
 #include <algorithm>
@@ -16,9 +17,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool exists_file(const fs::path& p) {
+bool path_exists(const fs::path& p) {
   std::error_code error;
-  return fs::is_regular_file(p, error);
+  return fs::exists(p, error);
 }
 
 // The entry of dir whose name matches name ignoring case, or an empty path.
@@ -34,6 +35,7 @@ fs::path find_ignoring_case(const fs::path& dir, const std::string& name) {
 // base/relative, walking each component case-insensitively (models made on Windows or macOS
 // often spell "Textures/Wood.PNG" what is stored as "textures/wood.png").
 fs::path resolve_ignoring_case(const fs::path& base, const fs::path& relative) {
+  if (relative.empty()) return {};
   fs::path current = base.empty() ? fs::path(".") : base;
   for (const fs::path& part : relative) {
     if (part == "." || part.empty()) continue;
@@ -51,7 +53,9 @@ fs::path resolve_ignoring_case(const fs::path& base, const fs::path& relative) {
     if (match.empty()) return {};
     current = match;
   }
-  return exists_file(current) ? current : fs::path();
+  // Whatever it is: a special file is reported as what it is (ReferenceRules), not as missing.
+  std::error_code error;
+  return fs::exists(current, error) ? current : fs::path();
 }
 
 int hex_value(char c) {
@@ -88,21 +92,31 @@ TextureLoader::TextureLoader(const aiScene& scene, const std::string& model_path
     : scene_(scene),
       model_path_(model_path),
       model_dir_(fs::path(model_path).parent_path().string()),
-      options_(options) {}
+      options_(options),
+      rules_(model_path, options) {}
 
-std::string TextureLoader::resolve(const std::string& reference) const {
+std::string TextureLoader::resolve(const std::string& reference, std::string& refusal) const {
   std::string slashed = reference;
   std::replace(slashed.begin(), slashed.end(), '\\', '/');
   const fs::path base(model_dir_);
+  // A file found is used only if the rules allow it; the first refusal is kept to say why a
+  // reference that found nothing else is missing.
+  auto allowed = [&](const fs::path& found) {
+    if (found.empty()) return false;
+    const std::string why = rules_.refusal(found);
+    if (why.empty()) return true;
+    if (refusal.empty()) refusal = why;
+    return false;
+  };
   for (const std::string& candidate : {slashed, percent_decoded(slashed)}) {
     fs::path p(candidate);
-    if (p.is_absolute() && exists_file(p)) return p.string();
+    if (p.is_absolute() && path_exists(p) && allowed(p)) return p.string();
     if (p.is_absolute()) p = p.relative_path();
     fs::path found = resolve_ignoring_case(base, p);
-    if (!found.empty()) return found.string();
+    if (allowed(found)) return found.string();
     // An absolute path from another machine ("C:/work/tex/wood.png"): try the file name alone.
     found = resolve_ignoring_case(base, p.filename());
-    if (!found.empty()) return found.string();
+    if (allowed(found)) return found.string();
   }
   return {};
 }
@@ -154,8 +168,12 @@ std::shared_ptr<const Texture> TextureLoader::decode_embedded(int index, bool sr
 std::shared_ptr<const Texture> TextureLoader::load(const std::string& reference, bool srgb) {
   const int embedded = embedded_index(reference);
   auto [where, first_time] = resolved_.try_emplace(reference);
-  if (first_time)
-    where->second = embedded >= 0 ? std::to_string(embedded).insert(0, 1, '*') : resolve(reference);
+  if (first_time) {
+    std::string refusal;
+    where->second =
+        embedded >= 0 ? std::to_string(embedded).insert(0, 1, '*') : resolve(reference, refusal);
+    if (where->second.empty() && !refusal.empty()) warn_once(reference, refusal);
+  }
   const std::string& key = where->second;
   if (key.empty()) {
     warn_once(reference, "is missing");
@@ -164,7 +182,14 @@ std::shared_ptr<const Texture> TextureLoader::load(const std::string& reference,
   auto [it, added] = cache_.try_emplace({key, srgb});
   if (!added) return it->second;
   try {
-    it->second = embedded >= 0 ? decode_embedded(embedded, srgb) : load_texture(key, srgb);
+    if (embedded >= 0) {
+      it->second = decode_embedded(embedded, srgb);
+    } else {
+      // Read as the rules allow (a regular file, opened without blocking), then decoded.
+      const std::string bytes = read_regular_file(key);
+      it->second = load_texture_from_memory(reinterpret_cast<const std::uint8_t*>(bytes.data()),
+                                            bytes.size(), srgb, key);
+    }
   } catch (const Error& e) {
     warn_once(reference, std::string("cannot be read (") + e.what() + ")");
   }

@@ -73,7 +73,7 @@ FrameStats render_small(const Scene& scene) {
 
 // A square pyramid whose base is one quad: 5 vertices, a quad and four triangles. Its header
 // mixes what the reader must skip (an unknown element with a list, an unknown scalar and a
-// list among the vertex properties, face flags and per-face texture coordinates) with the
+// list among the vertex properties, face flags and a list of face weights) with the
 // properties it reads, in an unusual order and of several types.
 const glm::vec3 kApex(0.5f, 0.5f, 1.0f);
 const std::vector<glm::vec3> kPositions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, kApex};
@@ -89,7 +89,7 @@ std::string pyramid_header(const std::string& format) {
          "property uint8 green\nproperty uchar blue\nproperty float texture_u\n"
          "property float texture_v\n"
          "element face 5\nproperty uchar flags\nproperty list uchar uint vertex_indices\n"
-         "property list uchar float texcoord\n"
+         "property list uchar float weights\n"
          "end_header\n";
 }
 
@@ -257,6 +257,40 @@ TEST(PlyFormat, TristripsUnrollWithAlternateWindingAndRestarts) {
                         .mesh;
   const std::vector<std::uint32_t> indices = {0, 1, 2, 2, 1, 3, 1, 4, 3};
   EXPECT_EQ(mesh.indices, indices);
+}
+
+// MeshLab writes texture coordinates per face corner (a `texcoord` list): each corner keeps its
+// own, so the two sides of a seam sharing a vertex keep theirs; the importer joins the corners
+// that are identical again.
+TEST(PlyFormat, TextureCoordinatesPerFaceCorner) {
+  const std::string text =
+      "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 2\nproperty list uchar int vertex_indices\n"
+      "property list uchar float texcoord\nend_header\n"
+      "0 0 0\n1 0 0\n1 1 0\n0 1 0\n-1 0.5 0\n"
+      "3 0 1 2 6 0 0 0.5 0 0.5 0.5\n"
+      "4 0 2 3 4 8 0.5 0 1 1 0 1 0.25 0.75\n";
+  const Mesh mesh = io::parse_ply_geometry(text, "uv.ply").mesh;
+  ASSERT_EQ(mesh.indices.size(), 9u);
+  ASSERT_EQ(mesh.positions.size(), 9u);  // a vertex per corner
+  ASSERT_EQ(mesh.texcoords.size(), 9u);
+  // The triangle, then the quad fanned: (0 2 3) and (0 3 4), each corner with its face's pair.
+  const std::vector<int> vertices = {0, 1, 2, 0, 2, 3, 0, 3, 4};
+  const std::vector<glm::vec2> uvs = {{0, 0}, {0.5f, 0}, {0.5f, 0.5f}, {0.5f, 0},     {1, 1},
+                                      {0, 1}, {0.5f, 0}, {0, 1},       {0.25f, 0.75f}};
+  const std::vector<glm::vec3> positions = {
+      {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {-1, 0.5f, 0}};
+  for (std::size_t k = 0; k < 9; ++k) {
+    EXPECT_EQ(mesh.texcoords[mesh.indices[k]], uvs[k]) << k;
+    EXPECT_EQ(mesh.positions[mesh.indices[k]], positions[vertices[k]]) << k;
+  }
+  // Through the importer, identical corners are joined again: vertex 0 keeps two pairs, (0, 0)
+  // and (0.5, 0), and vertex 2 two, so 5 positions make 7 vertices.
+  const fs::path file = fresh_test_dir("facet_ply_", "corner_uvs") / "uv.ply";
+  write_file(file, text);
+  const Scene scene = import_scene(file.string());
+  EXPECT_EQ(scene.meshes[0]->positions.size(), 7u);
+  EXPECT_EQ(scene.triangle_count(), 3u);
 }
 
 TEST(PlyFormat, TrailingListsALineLeavesOutAreEmpty) {

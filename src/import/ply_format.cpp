@@ -18,6 +18,8 @@
 #include <limits>
 #include <string>
 #include <string_view>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "facet/color.hpp"
@@ -117,8 +119,9 @@ class BodyReader {
       : source_(source), place_(place), header_(header), body_size_(body_size), name_(name) {}
 
   // Positions (attributes alongside) and triangle indices; faces: whether any face or strip
-  // element has items (else the file is a point cloud).
-  void read(Mesh& mesh, bool& faces) {
+  // element has items (else the file is a point cloud). Texture coordinates given per face
+  // corner (MeshLab's `texcoord` list) come back one per index in corner_uvs (else empty).
+  void read(Mesh& mesh, bool& faces, std::vector<glm::vec2>& corner_uvs) {
     faces = false;
     vertex_count_ = 0;
     for (const Element& element : header_.elements) {
@@ -140,6 +143,8 @@ class BodyReader {
         source_.skip_items(element.count, element);
       }
     }
+    if (!corner_uvs_.empty()) corner_uvs_.resize(mesh.indices.size());  // strips after faces
+    corner_uvs = std::move(corner_uvs_);
   }
 
  private:
@@ -193,40 +198,51 @@ class BodyReader {
 
   // One face's polygon, fanned (n - 2 triangles from its first corner), or one strip, unrolled
   // with every other triangle turned round and -1 restarting it (the tristrips convention).
+  // A face's `texcoord` list (u v for each corner) gives its corners their own texture
+  // coordinates; a face without a whole list gets (0, 0).
   void read_faces(const Element& element, Mesh& mesh) {
     const bool strips = element.name == "tristrips";
-    std::size_t list = element.properties.size();
+    const std::size_t none = element.properties.size();
+    std::size_t list = none, uv_list = none;
     for (std::size_t p = 0; p < element.properties.size(); ++p) {
       const Property& property = element.properties[p];
       if (property.is_list &&
           (property.name == "vertex_indices" || property.name == "vertex_index")) {
         list = p;
       }
+      if (property.is_list && property.name == "texcoord" && !strips) uv_list = p;
     }
-    if (list == element.properties.size()) {
+    if (list == none) {
       fail(element, "the " + element.name + " element has no vertex_indices list");
     }
+    if (uv_list != none) corner_uvs_.resize(mesh.indices.size());  // earlier faces: (0, 0)
     // At least a byte per index in the file: no honest file needs more room than that.
     mesh.indices.reserve(std::min<std::uint64_t>(element.count * 3, body_size_));
     for (std::uint64_t i = 0; i < element.count; ++i) {
       place_.index = i;
       source_.begin_item();
+      uvs_.clear();
       for (std::size_t p = 0; p < element.properties.size(); ++p) {
         const Property& property = element.properties[p];
         if (!property.is_list) {
           source_.value(property.type);
-        } else if (p != list) {
-          source_.skip_values(list_length(source_, property), property.type);
-        } else {
+        } else if (p == list) {
           read_corners(list_length(source_, property), property.type, strips);
-          if (strips) {
-            append_strip(mesh);
-          } else {
-            append_fan(mesh);
+        } else if (p == uv_list) {
+          const std::uint64_t count = list_length(source_, property);
+          for (std::uint64_t k = 0; k < count; ++k) {
+            uvs_.push_back(static_cast<float>(source_.value(property.type)));
           }
+        } else {
+          source_.skip_values(list_length(source_, property), property.type);
         }
       }
       source_.end_item();
+      if (strips) {
+        append_strip(mesh);
+      } else {
+        append_fan(mesh, uv_list != none);
+      }
     }
   }
 
@@ -249,9 +265,14 @@ class BodyReader {
     }
   }
 
-  void append_fan(Mesh& mesh) {
+  void append_fan(Mesh& mesh, bool with_uvs) {
+    const bool whole = uvs_.size() == 2 * corners_.size();
+    auto uv = [&](std::size_t k) {
+      return whole ? glm::vec2(uvs_[2 * k], uvs_[2 * k + 1]) : glm::vec2(0.0f);
+    };
     for (std::size_t k = 1; k + 1 < corners_.size(); ++k) {
       mesh.indices.insert(mesh.indices.end(), {corners_[0], corners_[k], corners_[k + 1]});
+      if (with_uvs) corner_uvs_.insert(corner_uvs_.end(), {uv(0), uv(k), uv(k + 1)});
     }
   }
 
@@ -286,6 +307,8 @@ class BodyReader {
   const std::string& name_;
   std::uint64_t vertex_count_ = 0;
   std::vector<std::uint32_t> corners_;
+  std::vector<float> uvs_;             // the current face's texcoord list
+  std::vector<glm::vec2> corner_uvs_;  // one per index once a face has a texcoord list
 };
 
 bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
@@ -365,6 +388,24 @@ void settle_attributes(Mesh& mesh) {
   }
 }
 
+// Texture coordinates per face corner: each corner becomes a vertex of its own, with the
+// attributes of the vertex it names and its own texture coordinates (the importer joins those
+// that are identical again), so a seam keeps both sides' coordinates.
+void give_corners_their_uvs(Mesh& mesh, const std::vector<glm::vec2>& corner_uvs) {
+  auto per_corner = [&](auto& attribute) {
+    if (attribute.empty()) return;
+    std::remove_reference_t<decltype(attribute)> out;
+    out.reserve(mesh.indices.size());
+    for (std::uint32_t index : mesh.indices) out.push_back(attribute[index]);
+    attribute = std::move(out);
+  };
+  per_corner(mesh.positions), per_corner(mesh.normals), per_corner(mesh.colors);
+  mesh.texcoords = corner_uvs;
+  for (std::size_t k = 0; k < mesh.indices.size(); ++k) {
+    mesh.indices[k] = static_cast<std::uint32_t>(k);
+  }
+}
+
 template <class Source>
 Mesh read_body(std::string_view bytes, const ply::Header& header, const std::string& name) {
   Place place;
@@ -372,8 +413,10 @@ Mesh read_body(std::string_view bytes, const ply::Header& header, const std::str
   BodyReader<Source> reader(source, place, header, bytes.size() - header.body_offset, name);
   Mesh mesh;
   bool faces = false;
-  reader.read(mesh, faces);
+  std::vector<glm::vec2> corner_uvs;
+  reader.read(mesh, faces, corner_uvs);
   mesh.topology = faces ? Topology::triangles : Topology::points;
+  if (!corner_uvs.empty()) give_corners_their_uvs(mesh, corner_uvs);
   return mesh;
 }
 

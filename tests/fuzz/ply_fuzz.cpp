@@ -1,8 +1,9 @@
-// libFuzzer target for facet's PLY reader (src/import/ply_header.cpp, ply_format.cpp): any input
-// must either give a mesh that passes Mesh::validate() with the reader's promises kept (points
-// finite and unindexed; triangles whole, every vertex used; unit normals; finite texture
-// coordinates and colors) or throw facet::Error. A crash, a hang, a sanitizer report or an
-// inconsistent mesh is a bug. Run with `make test-fuzz` (corpus: corpus/ply/).
+// libFuzzer target for facet's PLY reader (src/import/ply_header.cpp, ply_values.hpp,
+// ply_format.cpp): any input must either give a mesh that passes Mesh::validate() with the
+// reader's promises kept (points finite and unindexed; triangles whole, every vertex used; unit
+// normals; finite texture coordinates and colors) or throw facet::Error. A crash, a hang, a
+// sanitizer report or an inconsistent mesh is a bug. Run with `make test-fuzz` (corpus:
+// corpus/ply/).
 #include <cmath>
 #include <cstddef>
 #include <cstdint>

@@ -1,5 +1,5 @@
-// Internal to the PLY reader: the header as ply_header.cpp parses it, which ply_format.cpp reads
-// the body by. Both work on the whole file in memory and never read outside it.
+// Internal to the PLY reader: the header as ply_header.cpp parses it, which ply_format.cpp (with
+// ply_values.hpp) reads the body by. All work on the whole file in memory, never outside it.
 //
 // The format (Greg Turk, "The PLY Polygon File Format", 1994; the header keywords as Blender,
 // MeshLab/VCG, rply and assimp write them):

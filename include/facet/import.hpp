@@ -1,6 +1,6 @@
 // Model import (facet::import): reads a 3D file into a facet Scene. Formats through assimp
-// (OBJ+MTL, glTF 2.0 .gltf/.glb, PLY, STL, 3DS, FBX, COLLADA, OFF, …) and facet's own reader for
-// the classic course format `.d`. Models keep their own coordinates: nothing is rescaled or
+// (OBJ+MTL, glTF 2.0 .gltf/.glb, STL, 3DS, FBX, COLLADA, OFF, …) and facet's own readers for PLY
+// and the classic course format `.d`. Models keep their own coordinates: nothing is rescaled or
 // re-centred.
 #pragma once
 

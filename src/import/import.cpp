@@ -67,8 +67,10 @@ bool has_primitives(const Scene& scene) {
 Scene import_scene(const std::string& path, const ImportOptions& options) {
   io::check_model_file(path);
   const std::string extension = io::lower_case(std::filesystem::path(path).extension().string());
-  Scene scene = extension == ".d" ? io::import_d_scene(path, options)
-                                  : io::import_assimp_scene(path, options);
+  // facet's own readers where it has one (PLY: assimp 5.2's hangs and crashes on damaged files).
+  Scene scene = extension == ".d"     ? io::import_d_scene(path, options)
+                : extension == ".ply" ? io::import_ply_scene(path, options)
+                                      : io::import_assimp_scene(path, options);
   validate_meshes(scene, path);
   // Line-only models (a wireframe OBJ) and point clouds still draw; a file of nothing does not.
   if (!has_primitives(scene)) throw Error(path + ": no triangles to draw");

@@ -18,6 +18,20 @@ Mesh parse_d_geometry(std::string_view text, const std::string& name);
 // One node with one blinn-phong material drawing the `.d` model.
 Scene import_d_scene(const std::string& path, const ImportOptions& options);
 
+// PLY, ASCII or binary, to one mesh (ply_format.cpp): triangles fanned from the faces, or
+// Topology::points when the file has none; no normals computed; colors linear. Errors are
+// "<name>: <what> (line N)", or "(byte N)" in a binary body.
+struct PlyGeometry {
+  Mesh mesh;
+  // Points: those left out for a position that is not finite. Triangles: used vertices whose
+  // position is not finite, made NaN (the pipeline skips their triangles).
+  std::size_t non_finite = 0;
+  std::string texture_file;  // `comment TextureFile NAME`; empty: none
+};
+PlyGeometry parse_ply_geometry(std::string_view bytes, const std::string& name);
+// One node drawing the PLY model, in the material assimp's reader gave it (ply_import.cpp).
+Scene import_ply_scene(const std::string& path, const ImportOptions& options);
+
 // Every format assimp reads. The scene has meshes, materials, nodes, lights and cameras, but no
 // default camera yet (import_scene frames it).
 Scene import_assimp_scene(const std::string& path, const ImportOptions& options);

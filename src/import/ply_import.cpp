@@ -13,6 +13,7 @@
 #include "facet/material.hpp"
 #include "facet/scene.hpp"
 #include "facet/texture.hpp"
+#include "import/guarded_files.hpp"
 #include "import/import_internal.hpp"
 
 namespace facet::io {
@@ -31,30 +32,30 @@ Material ply_material(bool points) {
   return material;
 }
 
-// `comment TextureFile NAME` (MeshLab's): the image next to the model. A name that leads out of
-// the model's folder, or a file that is missing or cannot be decoded, is one warning and the
-// missing-texture checker.
+// `comment TextureFile NAME` (MeshLab's): the image next to the model, held to the rules every
+// referenced file is (guarded_files.hpp). A refused, missing or undecodable file is one warning
+// and the missing-texture checker.
 TextureMap texture_map(const std::string& model, const std::string& name,
                        const ImportOptions& options) {
   TextureMap map;
   map.texture = missing_texture();
-  std::error_code error;
   fs::path folder = fs::path(model).parent_path();
   if (folder.empty()) folder = ".";
-  folder = fs::weakly_canonical(folder, error);
-  const fs::path file = fs::weakly_canonical(folder / name, error);
-  const bool inside =
-      std::mismatch(folder.begin(), folder.end(), file.begin(), file.end()).first == folder.end();
-  if (error || !inside) {
-    warn(options, model + ": texture '" + name + "' is outside the model's folder: not used");
+  const fs::path file = folder / name;
+  const std::string refusal = ReferenceRules(model, options).refusal(file);
+  if (!refusal.empty()) {
+    warn(options, model + ": texture '" + name + "' " + refusal + ": not used");
     return map;
   }
-  if (!fs::is_regular_file(file, error)) {
+  std::error_code error;
+  if (!fs::exists(file, error)) {
     warn(options, model + ": texture '" + name + "' not found");
     return map;
   }
   try {
-    map.texture = load_texture(file.string(), /*srgb=*/true);
+    const std::string bytes = read_regular_file(file.string());
+    map.texture = load_texture_from_memory(reinterpret_cast<const std::uint8_t*>(bytes.data()),
+                                           bytes.size(), /*srgb=*/true, file.string());
   } catch (const Error& e) {
     warn(options, e.what());
   }

@@ -365,8 +365,9 @@ std::size_t settle_positions(Mesh& mesh) {
 
 // Attributes the pipeline could not shade sensibly: one broken normal spoils a smooth surface,
 // so all are dropped (and computed again by the importer); a texture coordinate that is not
-// finite becomes (0, 0), a color white. Colors become linear: PLY's are display (sRGB) values,
-// as Blender and MeshLab read them.
+// finite becomes (0, 0), a color white. Colors are display (sRGB) values, as Blender and
+// MeshLab read them: clamped to [0, 1] (an ASCII value beyond its type's range would otherwise
+// decode to infinity), then made linear.
 void settle_attributes(Mesh& mesh) {
   for (glm::vec3& normal : mesh.normals) {
     const float length = glm::length(normal);
@@ -384,7 +385,8 @@ void settle_attributes(Mesh& mesh) {
       color = glm::vec4(1.0f);
       continue;
     }
-    color = glm::vec4(srgb_to_linear(glm::max(glm::vec3(color), glm::vec3(0.0f))), color.w);
+    color = glm::clamp(color, glm::vec4(0.0f), glm::vec4(1.0f));
+    color = glm::vec4(srgb_to_linear(glm::vec3(color)), color.w);
   }
 }
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "support/render_helpers.hpp"
+#include "support/required_package.hpp"
 
 namespace facet::test {
 namespace {
@@ -125,7 +126,8 @@ TEST(CliBatch, OneModelIntoAFolderIsABatchOfOne) {
 // On a terminal (here a pseudo-terminal from util-linux's `script`) a batch redraws one bar in
 // place instead of a summary line per model.
 TEST(CliBatch, ProgressBarOnATerminal) {
-  if (run_command("command -v script").exit_code != 0) GTEST_SKIP() << "no script(1)";
+  FACET_REQUIRE_PACKAGE(run_command("command -v script").exit_code == 0,
+                        "script(1) is missing (Debian package bsdutils)");
   fs::path dir = batch_inputs("bar");
   CommandResult r = run_command("cd '" + dir.string() + "' && script -qec \"" + FACET_CLI +
                                 " render in/a.obj more --size 16x16 -o out/\" /dev/null");

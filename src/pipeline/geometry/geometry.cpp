@@ -3,11 +3,11 @@
 
 #include <algorithm>
 
+#include "core/parallel.hpp"
 #include "facet/error.hpp"
 #include "pipeline/geometry/primitive.hpp"
 #include "pipeline/geometry/primitive_sink.hpp"
 #include "pipeline/geometry/vertex.hpp"
-#include "core/parallel.hpp"
 
 namespace facet::pipeline {
 namespace {

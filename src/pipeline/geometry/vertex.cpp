@@ -3,9 +3,9 @@
 
 #include <algorithm>
 
+#include "core/parallel.hpp"
 #include "pipeline/geometry/clip.hpp"
 #include "pipeline/kernels.hpp"
-#include "core/parallel.hpp"
 #include "pipeline/record/draw_culling.hpp"
 #include "pipeline/setup/setup.hpp"
 

@@ -15,6 +15,7 @@
 #include "facet/import.hpp"
 #include "facet/renderer.hpp"
 #include "support/required_package.hpp"
+#include "support/sample_models.hpp"
 
 namespace facet::test {
 namespace {
@@ -51,14 +52,6 @@ const char* const kFolders[] = {
 };
 
 class ImportEveryFormat : public ::testing::TestWithParam<const char*> {};
-
-void render_small(const Scene& scene) {
-  Renderer renderer;
-  Framebuffer target(48, 32);
-  renderer.begin_frame(frame_scene(scene, 1.5f), scene.lighting);
-  draw_scene(renderer, scene);
-  renderer.finish(target);
-}
 
 TEST_P(ImportEveryFormat, ImportsOrFailsInOneLine) {
   const fs::path folder = kModels / GetParam();

@@ -46,21 +46,6 @@ const std::map<std::string, std::string> kExpectedFailures = {
     {"glTF2/issue_3269/texcoord_crash.gltf", "TEXCOORD_1 without TEXCOORD_0: invalid glTF"},
 };
 
-// Renders the scene as `facet render` would: its own camera and lights, or three-point lights.
-FrameStats render_small(const Scene& scene) {
-  constexpr int kWidth = 96, kHeight = 64;
-  Camera camera = frame_scene(scene, static_cast<float>(kWidth) / kHeight);
-  Lighting lighting = scene.lighting;
-  if (!scene.has_file_lights)
-    lighting.lights = three_point_lights(camera.forward(), camera.right());
-  Renderer renderer;
-  Framebuffer target(kWidth, kHeight);
-  renderer.begin_frame(camera, lighting);
-  draw_scene(renderer, scene);
-  renderer.finish(target);
-  return renderer.stats();
-}
-
 ImportOptions quiet() {
   ImportOptions options;
   options.warn = [](const std::string&) {};

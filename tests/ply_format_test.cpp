@@ -27,6 +27,7 @@
 #include "import/import_internal.hpp"
 #include "support/render_helpers.hpp"
 #include "support/required_package.hpp"
+#include "support/sample_models.hpp"
 
 namespace facet::test {
 namespace {
@@ -53,20 +54,6 @@ std::string error_of(const std::string& bytes) {
 
 void write_file(const fs::path& path, const std::string& bytes) {
   std::ofstream(path, std::ios::binary) << bytes;
-}
-
-FrameStats render_small(const Scene& scene) {
-  constexpr int kWidth = 96, kHeight = 64;
-  const Camera camera = frame_scene(scene, static_cast<float>(kWidth) / kHeight);
-  Lighting lighting = scene.lighting;
-  if (!scene.has_file_lights)
-    lighting.lights = three_point_lights(camera.forward(), camera.right());
-  Renderer renderer;
-  Framebuffer target(kWidth, kHeight);
-  renderer.begin_frame(camera, lighting);
-  draw_scene(renderer, scene);
-  renderer.finish(target);
-  return renderer.stats();
 }
 
 // --- one mesh written in the three formats ------------------------------------------------

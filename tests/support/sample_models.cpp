@@ -52,4 +52,14 @@ std::vector<fs::path> wellformed_model_files(const std::string& directory) {
   return files;
 }
 
+FrameStats render_small(const Scene& scene) {
+  constexpr int kWidth = 96, kHeight = 64;
+  Renderer renderer;
+  Framebuffer target(kWidth, kHeight);
+  renderer.begin_frame(scene_camera(scene, static_cast<float>(kWidth) / kHeight), scene.lighting);
+  draw_scene(renderer, scene);
+  renderer.finish(target);
+  return renderer.stats();
+}
+
 }  // namespace facet::test

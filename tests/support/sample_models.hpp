@@ -6,6 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "facet/renderer.hpp"
+#include "facet/scene.hpp"
+
 namespace facet::test {
 
 inline const std::filesystem::path kSampleModels = "/usr/share/assimp/models";
@@ -26,5 +29,9 @@ std::vector<std::filesystem::path> model_files(const std::string& directory);
 // model_files without the broken-on-purpose ones (under_invalid_directory,
 // is_robustness_sample): the files that must import or fail with an expected error.
 std::vector<std::filesystem::path> wellformed_model_files(const std::string& directory);
+
+// Renders an imported scene small (96x64) with its automatic camera and its lights (the file's,
+// or the three-point lights import gives a file without any): what the import sweeps draw.
+FrameStats render_small(const Scene& scene);
 
 }  // namespace facet::test

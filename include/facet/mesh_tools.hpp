@@ -15,6 +15,9 @@ void compute_smooth_normals(Mesh& mesh, float crease_angle_degrees = 80.0f);
 // Makes vertices whose attributes are all identical (bit for bit, -0 and +0 alike) one vertex,
 // the first of them, with indices; the triangles and what they draw stay the same.
 void join_identical_vertices(Mesh& mesh);
+// The opposite: each index becomes a vertex of its own (every attribute read through the
+// indices), and the indices are dropped; the same primitives, drawn without indices.
+void expand_indices(Mesh& mesh);
 // Tangents (xyz, w = handedness) from positions, normals and texture coordinates.
 void compute_tangents(Mesh& mesh);
 

@@ -13,6 +13,7 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 #include <span>
+#include <type_traits>
 #include <unordered_map>
 #include <vector>
 
@@ -354,6 +355,20 @@ void join_identical_vertices(Mesh& mesh) {
   } else {
     for (std::uint32_t& index : mesh.indices) index = new_index[index];
   }
+}
+
+void expand_indices(Mesh& mesh) {
+  if (mesh.indices.empty()) return;
+  auto expand = [&](auto& attribute) {
+    if (attribute.empty()) return;
+    std::remove_reference_t<decltype(attribute)> expanded;
+    expanded.reserve(mesh.indices.size());
+    for (std::uint32_t index : mesh.indices) expanded.push_back(attribute[index]);
+    attribute = std::move(expanded);
+  };
+  expand(mesh.positions), expand(mesh.normals), expand(mesh.texcoords);
+  expand(mesh.colors), expand(mesh.tangents);
+  mesh.indices.clear();
 }
 
 void compute_tangents(Mesh& mesh) {

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "facet/error.hpp"
+#include "facet/mesh_tools.hpp"
 #include "import/guarded_io.hpp"
 
 namespace facet::io {
@@ -93,21 +94,6 @@ std::size_t add_point_faces(aiScene& ai) {
   return dropped;
 }
 
-// A point mesh as the points its indices name, in their order, without indices: the vertices
-// no point uses (add_point_faces left out the non-finite ones) are gone.
-void gather_points(Mesh& mesh) {
-  auto gather = [&](auto& attribute) {
-    if (attribute.empty()) return;
-    std::remove_reference_t<decltype(attribute)> kept;
-    kept.reserve(mesh.indices.size());
-    for (std::uint32_t index : mesh.indices) kept.push_back(attribute[index]);
-    attribute = std::move(kept);
-  };
-  gather(mesh.positions), gather(mesh.normals), gather(mesh.texcoords);
-  gather(mesh.colors), gather(mesh.tangents);
-  mesh.indices.clear();
-}
-
 // The attributes of one aiMesh. With SortByPType each aiMesh holds one primitive type: a
 // triangle, line or point mesh.
 std::optional<Mesh> convert_mesh(const aiMesh& in, bool linear_colors) {
@@ -165,7 +151,9 @@ std::optional<Mesh> convert_mesh(const aiMesh& in, bool linear_colors) {
     if (!face.mIndices || face.mNumIndices != corners) continue;
     mesh.indices.insert(mesh.indices.end(), face.mIndices, face.mIndices + corners);
   }
-  if (mesh.topology == Topology::points) gather_points(mesh);
+  // A point mesh as the points its indices name, in their order, without indices: the vertices
+  // no point uses (add_point_faces left out the non-finite ones) are gone.
+  if (mesh.topology == Topology::points) expand_indices(mesh);
   return mesh;
 }
 

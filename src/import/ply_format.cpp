@@ -24,6 +24,7 @@
 
 #include "facet/color.hpp"
 #include "facet/error.hpp"
+#include "facet/mesh_tools.hpp"
 #include "import/import_internal.hpp"
 #include "import/ply_values.hpp"
 
@@ -394,18 +395,12 @@ void settle_attributes(Mesh& mesh) {
 // attributes of the vertex it names and its own texture coordinates (the importer joins those
 // that are identical again), so a seam keeps both sides' coordinates.
 void give_corners_their_uvs(Mesh& mesh, const std::vector<glm::vec2>& corner_uvs) {
-  auto per_corner = [&](auto& attribute) {
-    if (attribute.empty()) return;
-    std::remove_reference_t<decltype(attribute)> out;
-    out.reserve(mesh.indices.size());
-    for (std::uint32_t index : mesh.indices) out.push_back(attribute[index]);
-    attribute = std::move(out);
-  };
-  per_corner(mesh.positions), per_corner(mesh.normals), per_corner(mesh.colors);
+  const std::size_t corners = mesh.indices.size();
+  mesh.texcoords.clear();
+  expand_indices(mesh);
   mesh.texcoords = corner_uvs;
-  for (std::size_t k = 0; k < mesh.indices.size(); ++k) {
-    mesh.indices[k] = static_cast<std::uint32_t>(k);
-  }
+  mesh.indices.resize(corners);
+  for (std::size_t k = 0; k < corners; ++k) mesh.indices[k] = static_cast<std::uint32_t>(k);
 }
 
 template <class Source>

@@ -1,6 +1,7 @@
 // `facet bench` (see bench_command.hpp).
 #include "bench_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cstdio>

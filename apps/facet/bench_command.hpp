@@ -2,8 +2,9 @@
 // (median, min, max), throughput and the time per pipeline stage; optionally as JSON.
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <string>
+
+#include "cli_fwd.hpp"
 
 namespace facet::cli {
 

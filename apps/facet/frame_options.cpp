@@ -1,6 +1,7 @@
 // Frame and output options of `facet render` (see frame_options.hpp).
 #include "frame_options.hpp"
 
+#include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
 

@@ -3,12 +3,12 @@
 // describe once checked: which frames this run draws, at what times, into which files.
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "camera_path.hpp"
+#include "cli_fwd.hpp"
 #include "frame_sequence.hpp"
 #include "output_files.hpp"
 

@@ -2,6 +2,7 @@
 // aligned in a column so files can be compared at a glance.
 #include "info_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
@@ -10,6 +11,7 @@
 
 #include "facet/import.hpp"
 #include "model_import.hpp"
+#include "scene_options.hpp"
 
 namespace facet::cli {
 namespace {

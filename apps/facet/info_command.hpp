@@ -2,8 +2,9 @@
 // textures, bounds, lights, cameras, nodes), without rendering anything.
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <string>
+
+#include "cli_fwd.hpp"
 
 namespace facet::cli {
 

@@ -32,10 +32,4 @@ Scene import_model(const std::string& path, bool allow_outside_paths) {
   return import_scene(path, options);
 }
 
-void add_allow_outside_paths_flag(CLI::App& command, bool& allow_outside_paths) {
-  command.add_flag("--allow-outside-paths", allow_outside_paths,
-                   "Let the model read textures and other files outside its own folder (default: "
-                   "refused with a warning, as missing)");
-}
-
 }  // namespace facet::cli

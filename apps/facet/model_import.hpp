@@ -2,7 +2,6 @@
 // kept off the program's output.
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <string>
 
 #include "facet/scene.hpp"
@@ -16,8 +15,5 @@ namespace facet::cli {
 // lost. Throws facet::Error as import_scene does.
 // allow_outside_paths: ImportOptions::allow_outside_paths.
 Scene import_model(const std::string& path, bool allow_outside_paths = false);
-
-// --allow-outside-paths, for every command that imports a model.
-void add_allow_outside_paths_flag(CLI::App& command, bool& allow_outside_paths);
 
 }  // namespace facet::cli

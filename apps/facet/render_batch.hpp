@@ -4,9 +4,10 @@
 // so a batch draws exactly what the single-model command would.
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <string>
 #include <vector>
+
+#include "cli_fwd.hpp"
 
 namespace facet::cli {
 

@@ -1,6 +1,7 @@
 // `facet render` (see render_command.hpp).
 #include "render_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <chrono>
 #include <cmath>
 #include <cstdio>

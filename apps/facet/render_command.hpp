@@ -3,9 +3,9 @@
 // folders into a folder (render_batch.hpp).
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <string>
 
+#include "cli_fwd.hpp"
 #include "frame_options.hpp"
 #include "render_batch.hpp"
 #include "scene_options.hpp"

@@ -1,6 +1,7 @@
 // Scene options (see scene_options.hpp).
 #include "scene_options.hpp"
 
+#include <CLI/CLI.hpp>
 #include <cmath>
 #include <optional>
 
@@ -175,6 +176,12 @@ void fit_clip_planes(const Scene& scene, Camera& camera) {
 }
 
 }  // namespace
+
+void add_allow_outside_paths_flag(CLI::App& command, bool& allow_outside_paths) {
+  command.add_flag("--allow-outside-paths", allow_outside_paths,
+                   "Let the model read textures and other files outside its own folder (default: "
+                   "refused with a warning, as missing)");
+}
 
 void add_scene_options(CLI::App& cmd, SceneOptions& o, std::vector<std::string>* models) {
   if (models) {

@@ -3,11 +3,11 @@
 // that render a scene (render and view).
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "cli_fwd.hpp"
 #include "facet/camera.hpp"
 #include "facet/scene.hpp"
 
@@ -34,6 +34,9 @@ struct SceneOptions {
 // files and folders into it (render's batch) instead of the one options.model.
 void add_scene_options(CLI::App& command, SceneOptions& options,
                        std::vector<std::string>* models = nullptr);
+
+// --allow-outside-paths, for every command that imports a model.
+void add_allow_outside_paths_flag(CLI::App& command, bool& allow_outside_paths);
 
 // Imports the model or builds the built-in scene (default `shapes`), then applies the
 // options; --up AXIS, --azimuth and --elevation make the scene's default view the automatic

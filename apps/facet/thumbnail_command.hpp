@@ -4,8 +4,9 @@
 // nothing is written if the model cannot be drawn.
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <string>
+
+#include "cli_fwd.hpp"
 
 namespace facet::cli {
 

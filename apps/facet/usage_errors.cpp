@@ -1,6 +1,7 @@
 // Parse errors in facet's words (see usage_errors.hpp).
 #include "usage_errors.hpp"
 
+#include <CLI/CLI.hpp>
 #include <cctype>
 #include <vector>
 

@@ -3,8 +3,9 @@
 // word at fault and the --help of the command it was given to.
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <string>
+
+#include "cli_fwd.hpp"
 
 namespace facet::cli {
 

@@ -2,6 +2,7 @@
 // is view_loop.cpp.
 #include "view_command.hpp"
 
+#include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
 #include <memory>

@@ -3,10 +3,10 @@
 // overlay; also scripted (--frames, --screenshot, --camera-path).
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
 
+#include "cli_fwd.hpp"
 #include "scene_options.hpp"
 
 namespace facet::cli {

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <string>
@@ -13,24 +14,31 @@
 namespace facet::gl {
 namespace {
 
+// A uniform's name built from parts, e.g. "u_light_type[3]" or "u_normal_map.present".
+struct Name {
+  char text[64];
+  Name(const char* array, int index) { std::snprintf(text, sizeof text, "%s[%d]", array, index); }
+  Name(const char* block, const char* member) {
+    std::snprintf(text, sizeof text, "%s.%s", block, member);
+  }
+};
+
 // One light as facet prepares it for shading (shading/lighting.cpp's prepare_light).
 void set_light(Program& p, int i, const Light& light) {
-  const std::string at = "[" + std::to_string(i) + "]";
-  auto name = [&](const char* array) { return std::string(array) + at; };
   const float length = glm::length(light.direction);
   const glm::vec3 travel = length > 0.0f ? light.direction / length : glm::vec3(0.0f, -1.0f, 0.0f);
   const float outer = std::clamp(light.outer_cone_degrees, 0.0f, 90.0f);
   const float inner = std::clamp(light.inner_cone_degrees, 0.0f, outer);
-  glUniform1i(p.uniform(name("u_light_type").c_str()), static_cast<int>(light.type));
-  glUniform3fv(p.uniform(name("u_light_position").c_str()), 1, glm::value_ptr(light.position));
-  glUniform3fv(p.uniform(name("u_light_to_light").c_str()), 1, glm::value_ptr(-travel));
-  glUniform3fv(p.uniform(name("u_light_spot_direction").c_str()), 1, glm::value_ptr(travel));
   const glm::vec3 radiance = light.color * light.intensity;
-  glUniform3fv(p.uniform(name("u_light_radiance").c_str()), 1, glm::value_ptr(radiance));
-  glUniform1f(p.uniform(name("u_light_inv_range_squared").c_str()),
+  glUniform1i(p.uniform(Name("u_light_type", i).text), static_cast<int>(light.type));
+  glUniform3fv(p.uniform(Name("u_light_position", i).text), 1, glm::value_ptr(light.position));
+  glUniform3fv(p.uniform(Name("u_light_to_light", i).text), 1, glm::value_ptr(-travel));
+  glUniform3fv(p.uniform(Name("u_light_spot_direction", i).text), 1, glm::value_ptr(travel));
+  glUniform3fv(p.uniform(Name("u_light_radiance", i).text), 1, glm::value_ptr(radiance));
+  glUniform1f(p.uniform(Name("u_light_inv_range_squared", i).text),
               light.range > 0.0f ? 1.0f / (light.range * light.range) : 0.0f);
-  glUniform1f(p.uniform(name("u_light_cos_inner").c_str()), std::cos(glm::radians(inner)));
-  glUniform1f(p.uniform(name("u_light_cos_outer").c_str()), std::cos(glm::radians(outer)));
+  glUniform1f(p.uniform(Name("u_light_cos_inner", i).text), std::cos(glm::radians(inner)));
+  glUniform1f(p.uniform(Name("u_light_cos_outer", i).text), std::cos(glm::radians(outer)));
 }
 
 void set_vec3(Program& p, const char* name, glm::vec3 v) {
@@ -39,11 +47,10 @@ void set_vec3(Program& p, const char* name, glm::vec3 v) {
 
 void set_map(Program& p, const char* name, int unit, const TextureMap& map,
              GpuResources& resources) {
-  const std::string prefix(name);
-  glUniform1i(p.uniform((prefix + ".present").c_str()), map ? 1 : 0);
-  glUniform1i(p.uniform((prefix + ".texture").c_str()), unit);
+  glUniform1i(p.uniform(Name(name, "present").text), map ? 1 : 0);
+  glUniform1i(p.uniform(Name(name, "texture").text), unit);
   if (!map) return;
-  glUniformMatrix3fv(p.uniform((prefix + ".transform").c_str()), 1, GL_FALSE,
+  glUniformMatrix3fv(p.uniform(Name(name, "transform").text), 1, GL_FALSE,
                      glm::value_ptr(map.transform));
   glActiveTexture(GL_TEXTURE0 + unit);
   glBindTexture(GL_TEXTURE_2D, resources.texture(map.texture));
@@ -86,6 +93,7 @@ void set_frame_uniforms(Program& p, const FrameState& frame) {
   set_vec3(p, "u_sky_ground", env.ground);
   glUniform1i(p.uniform("u_env_map"), kEnvironmentUnit);
   glm::mat4 inverse = glm::inverse(frame.view_projection);
+  glUniform2f(p.uniform("u_viewport"), float(frame.viewport.x), float(frame.viewport.y));
   glUniformMatrix4fv(p.uniform("u_inverse_view_projection"), 1, GL_FALSE, glm::value_ptr(inverse));
 }
 

@@ -23,6 +23,7 @@ struct FrameState {
   float depth_view_near = 0.1f, depth_view_far = 100.0f;
   bool display_exact = false;  // a float target
   glm::mat4 view_projection{1.0f};
+  glm::ivec2 viewport{1, 1};  // the target's size in pixels
 };
 
 void set_frame_uniforms(Program& program, const FrameState& frame);

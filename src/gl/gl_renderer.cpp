@@ -127,6 +127,7 @@ struct GlRenderer::Impl {
                  const gl::FrameState& frame) {
     const gl::GpuMesh& mesh = resources.mesh(*draw.mesh);
     std::string defines = std::string("#define ") + model + "\n";
+    if (material.shading == ShadingModel::wire_overlay) defines += "#define WIRE_OVERLAY\n";
     if (material.alpha_mode == AlphaMode::mask) defines += "#define ALPHA_MASK\n";
     if (mesh.mode == GL_LINES) defines += "#define PRIMITIVE_LINES\n";
     if (mesh.mode == GL_POINTS) defines += "#define PRIMITIVE_POINTS\n";
@@ -152,33 +153,31 @@ struct GlRenderer::Impl {
     if (material.shading == ShadingModel::vertex_color) {
       material.base_color = glm::vec4(1.0f), material.use_vertex_colors = true;
     }
-    if (material.shading != ShadingModel::wireframe) {
-      // The wire overlay's edges must win the depth test against their own fill.
-      const bool overlay = material.shading == ShadingModel::wire_overlay;
-      if (overlay) glEnable(GL_POLYGON_OFFSET_FILL), glPolygonOffset(1.0f, 1.0f);
-      draw_pass(draw, material, model_define(material.shading), frame);
-      glDisable(GL_POLYGON_OFFSET_FILL);
-      if (!overlay) return;
+    if (material.shading == ShadingModel::wireframe) {  // the edges alone, as GL lines
+      glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+      draw_pass(draw, material, "MODEL_WIRE", frame);
+      glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+      return;
     }
-    glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
-    draw_pass(draw, material, "MODEL_WIRE", frame);
-    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    draw_pass(draw, material, model_define(material.shading), frame);
   }
 
-  void draw_sky(const gl::FrameState& frame, int width, int height) {
-    const Environment& env = frame.lighting->environment;
+  // The environment image, which reflections and the sky read, on its own texture unit for the
+  // whole frame.
+  void bind_environment(const Environment& env) {
+    if (!env.image) return;
+    Sampler sampler;  // environment.cpp: trilinear, v clamped; a sphere map clamps u too
+    sampler.wrap_v = Wrap::clamp_to_edge;
+    if (env.projection == EnvironmentProjection::sphere_map) sampler.wrap_u = Wrap::clamp_to_edge;
+    glActiveTexture(GL_TEXTURE0 + gl::kEnvironmentUnit);
+    glBindTexture(GL_TEXTURE_2D, resources.texture(env.image));
+    glBindSampler(gl::kEnvironmentUnit, resources.sampler(sampler));
+  }
+
+  void draw_sky(const gl::FrameState& frame) {
     Program& p = program("", true);
     glUseProgram(p.id());
     gl::set_frame_uniforms(p, frame);
-    glUniform2f(p.uniform("u_viewport"), static_cast<float>(width), static_cast<float>(height));
-    if (env.image) {
-      Sampler sampler;  // environment.cpp: trilinear, v clamped; a sphere map clamps u too
-      sampler.wrap_v = Wrap::clamp_to_edge;
-      if (env.projection == EnvironmentProjection::sphere_map) sampler.wrap_u = Wrap::clamp_to_edge;
-      glActiveTexture(GL_TEXTURE0 + gl::kEnvironmentUnit);
-      glBindTexture(GL_TEXTURE_2D, resources.texture(env.image));
-      glBindSampler(gl::kEnvironmentUnit, resources.sampler(sampler));
-    }
     set_blending(AlphaMode::opaque);
     glDepthMask(GL_FALSE);
     glDepthFunc(GL_LEQUAL);  // only where the depth is still the clear depth, 1
@@ -205,10 +204,15 @@ struct GlRenderer::Impl {
       frame.view_depth = {0.0f, camera.far_plane - camera.near_plane, camera.near_plane};
     }
     frame.display_exact = out.format() == ColorFormat::rgba32f;
+    frame.viewport = {out.width(), out.height()};
     const std::vector<GlDraw> draws = gl::ordered_draws(scene, camera);
     gl::depth_view_range(draws, camera, frame.depth_view_near, frame.depth_view_far);
 
+    bind_environment(scene.lighting.environment);
     target.bind(out.width(), out.height());
+    // The last frame may have left depth writes off (blended draws, the sky), and glClear
+    // obeys the depth mask.
+    set_blending(AlphaMode::opaque);
     const glm::vec4 clear = settings.clear_color;
     glClearColor(clear.r, clear.g, clear.b, clear.a);
     glClearDepth(1.0);
@@ -220,11 +224,11 @@ struct GlRenderer::Impl {
     bool sky_pending = scene.lighting.environment.show_as_background;
     for (const GlDraw& draw : draws) {
       if (sky_pending && is_blended(draw.material->alpha_mode)) {
-        draw_sky(frame, out.width(), out.height()), sky_pending = false;
+        draw_sky(frame), sky_pending = false;
       }
       this->draw(draw, frame);
     }
-    if (sky_pending) draw_sky(frame, out.width(), out.height());
+    if (sky_pending) draw_sky(frame);
     target.read(out, settings.exposure);
     last_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

@@ -17,6 +17,7 @@ in Varyings {
 } in_v;
 flat in int normals_front;
 flat in vec4 face_color;
+flat in vec3 edge_lines[3];
 
 out vec4 out_color;
 
@@ -215,8 +216,19 @@ vec4 shade() {
 
 void main() {
   vec4 color = shade();
+#ifdef WIRE_OVERLAY
+  // Pixels within half a pixel of an edge take the wire color (pixel_writer.hpp's overlay).
+  for (int i = 0; i < 3; ++i) {
+    vec3 line = edge_lines[i];
+    if (abs(dot(line, vec3(gl_FragCoord.xy, 1.0))) < 0.5 * length(line.xy)) color = u_wire_color;
+  }
+#endif
 #ifdef ALPHA_MASK
   if (!(color.a >= u_alpha_cutoff)) discard;  // cut-out: no color, no depth
+#endif
+#ifdef MODEL_WIRE
+  out_color = color;  // facet's lines are not fogged (pipeline/raster/line.cpp)
+  return;
 #endif
   if (u_fog_mode != 0) {
     float depth = view_depth();

@@ -91,6 +91,11 @@ out Varyings {
 // fragment stage compares it with gl_FrontFacing (back_faces.hpp's reverses_normal).
 flat out int normals_front;
 flat out vec4 face_color;  // flat shading's lit color
+// The wire overlay: the three edges as lines of the window, a x + b y + c = 0. Made from the
+// homogeneous window positions (x w, y w, w), so they are right even for a triangle with a
+// corner behind the eye, whose window positions alone would not be (Olano and Greer 1997).
+flat out vec3 edge_lines[3];
+uniform vec2 u_viewport;
 
 uniform bool u_has_normals;
 uniform float u_model_handedness;  // sign of the model matrix's determinant
@@ -122,8 +127,18 @@ void main() {
   face = vec4(diffuse_light(average.rgb, face_normal, centre), average.a);
 #endif
 #endif
+  vec3 lines[3] = vec3[3](vec3(0.0), vec3(0.0), vec3(0.0));
+#if defined(WIRE_OVERLAY) && !defined(PRIMITIVE_POINTS) && !defined(PRIMITIVE_LINES)
+  vec3 h[3];
+  for (int i = 0; i < 3; ++i) {
+    vec4 c = gl_in[i].gl_Position;
+    h[i] = vec3((c.xy * 0.5 + 0.5 * c.w) * u_viewport, c.w);
+  }
+  for (int i = 0; i < 3; ++i) lines[i] = cross(h[(i + 1) % 3], h[(i + 2) % 3]);
+#endif
   for (int i = 0; i < CORNERS; ++i) {
     gl_Position = gl_in[i].gl_Position;
+    edge_lines = lines;
     gl_PointSize = gl_in[i].gl_PointSize;
     out_v.texcoord = in_v[i].texcoord;
     out_v.color = in_v[i].color;

@@ -3,6 +3,7 @@
 // anything covered, from the depth images). The measured numbers are in docs/gl_twin.md.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -14,6 +15,7 @@
 #include "facet/import.hpp"
 #include "facet/renderer.hpp"
 #include "facet/worlds.hpp"
+#include "support/render_helpers.hpp"
 #include "support/required_package.hpp"
 
 namespace facet {
@@ -325,6 +327,64 @@ TEST(GlTwin, EnvironmentAndExponentialFogMatchFacet) {
   v.scene.lighting.fog.mode = FogMode::exponential;
   v.scene.lighting.fog.density = 0.05f;
   expect_twins({"environment", v, 73});  // measured 79.6 dB
+}
+
+// --- `facet render --backend gl` -----------------------------------------------------------
+
+double psnr(const test::Rgba8Image& a, const test::Rgba8Image& b) {
+  double squared = 0.0;
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < a.pixels.size(); ++i) {
+    if (i % 4 == 3) continue;
+    const double d = double(a.pixels[i]) - double(b.pixels[i]);
+    squared += d * d, ++count;
+  }
+  return squared == 0.0 ? INFINITY : 10.0 * std::log10(255.0 * 255.0 / (squared / double(count)));
+}
+
+TEST(GlTwinCli, RenderBackendGlDrawsWhatFacetDraws) {
+  REQUIRE_GL(gl);
+  const auto dir = test::fresh_test_dir("facet_gl_twin_", "cli");
+  const std::string common = std::string(FACET_CLI) + " render --scene teapot --size 160x90 -o ";
+  const test::CommandResult twin =
+      test::run_command(common + (dir / "gl.png").string() + " --backend gl");
+  ASSERT_EQ(twin.exit_code, 0) << twin.stderr_text;
+  // The summary says which renderer drew the frame.
+  EXPECT_NE(twin.stdout_text.find("drawn by OpenGL (" + gl->renderer_name()), std::string::npos)
+      << twin.stdout_text;
+  ASSERT_EQ(test::run_command(common + (dir / "facet.png").string()).exit_code, 0);
+  const test::Rgba8Image a = test::read_png((dir / "gl.png").string());
+  const test::Rgba8Image b = test::read_png((dir / "facet.png").string());
+  ASSERT_EQ(a.width, 160);
+  EXPECT_GE(psnr(a, b), 51.0);  // measured 57.2 dB
+}
+
+// No usable OpenGL (glvnd pointed at no EGL vendor): one line saying what is missing, exit code
+// 2, no file; facet's own backend is unaffected.
+TEST(GlTwinCli, NoOpenGLIsOneLineAndExitCodeTwo) {
+  const auto dir = test::fresh_test_dir("facet_gl_twin_", "no_gl");
+  const std::string out = (dir / "out.png").string();
+  const std::string command = std::string("__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json ") +
+                              FACET_CLI + " render --scene shapes --size 64x36 -o " + out;
+  const test::CommandResult result = test::run_command(command + " --backend gl");
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_EQ(result.stderr_text.find("facet: error: OpenGL backend: no EGL display"), 0u)
+      << result.stderr_text;
+  EXPECT_EQ(std::count(result.stderr_text.begin(), result.stderr_text.end(), '\n'), 1)
+      << result.stderr_text;
+  EXPECT_FALSE(std::filesystem::exists(out));
+  EXPECT_EQ(test::run_command(command).exit_code, 0);
+}
+
+TEST(GlTwinCli, UnknownBackendIsAUsageError) {
+  const auto dir = test::fresh_test_dir("facet_gl_twin_", "bad_backend");
+  const test::CommandResult result =
+      test::run_command(std::string(FACET_CLI) + " render --scene shapes --backend vulkan -o " +
+                        (dir / "out.png").string());
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.stderr_text.find("--backend: expected facet or gl, got 'vulkan'"),
+            std::string::npos)
+      << result.stderr_text;
 }
 
 }  // namespace

@@ -23,6 +23,7 @@ struct RenderOptions {
   int threads = 0;
   int tile_size = 64;
   bool orthographic = false;
+  std::string backend = "facet";  // or "gl": the OpenGL twin (render_backend.hpp)
   BatchOptions batch;  // the positional models; several, or a folder, make a batch
 };
 

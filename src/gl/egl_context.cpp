@@ -24,9 +24,12 @@ std::string egl_error() {
   return code;
 }
 
-[[noreturn]] void fail(const std::string& what) {
-  throw Error("OpenGL backend: " + what + " (EGL error " + egl_error() + ")");
+// One line: what failed, EGL's error code, and what to install where that helps.
+[[noreturn]] void fail(const std::string& what, const std::string& hint = "") {
+  throw Error("OpenGL backend: " + what + " (EGL error " + egl_error() + ")" + hint);
 }
+
+const char* const kMesaHint = "; Mesa's are in libegl-mesa0 and libgl1-mesa-dri";
 
 EGLDisplay open_display() {
   const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
@@ -46,7 +49,7 @@ EGLDisplay open_display() {
 
 EglContext::EglContext() {
   EGLDisplay display = open_display();
-  if (display == EGL_NO_DISPLAY) fail("no EGL display (is libegl-mesa0 installed?)");
+  if (display == EGL_NO_DISPLAY) fail("no EGL display", kMesaHint);
   EGLint major = 0, minor = 0;
   if (!eglInitialize(display, &major, &minor)) fail("eglInitialize failed");
   display_ = display;
@@ -67,7 +70,7 @@ EglContext::EglContext() {
                                        EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
                                        EGL_NONE};
   EGLContext context = eglCreateContext(display, config, EGL_NO_CONTEXT, context_attributes);
-  if (context == EGL_NO_CONTEXT) fail("cannot make an OpenGL 3.3 core context");
+  if (context == EGL_NO_CONTEXT) fail("cannot make an OpenGL 3.3 core context", kMesaHint);
   context_ = context;
   make_current();
 }

@@ -17,6 +17,7 @@
 #include "facet/worlds.hpp"
 #include "support/render_helpers.hpp"
 #include "support/required_package.hpp"
+#include "view_difference.hpp"
 
 namespace facet {
 namespace {
@@ -385,6 +386,16 @@ TEST(GlTwinCli, UnknownBackendIsAUsageError) {
   EXPECT_NE(result.stderr_text.find("--backend: expected facet or gl, got 'vulkan'"),
             std::string::npos)
       << result.stderr_text;
+}
+
+// The viewer's difference view amplifies each channel's difference and is opaque.
+TEST(GlTwinView, DifferenceIsAmplifiedPerChannel) {
+  Framebuffer a(2, 1), b(2, 1);
+  a.rgba8() = {10, 20, 30, 0, 200, 200, 200, 255};
+  b.rgba8() = {13, 20, 28, 255, 0, 200, 201, 255};
+  cli::show_difference(a, b);
+  const std::vector<std::uint8_t> expected = {24, 0, 16, 255, 255, 0, 8, 255};
+  EXPECT_EQ(a.rgba8(), expected);
 }
 
 }  // namespace

@@ -29,6 +29,8 @@ std::string GlBackend::description() const {
   return impl_->renderer.renderer_name() + ", OpenGL " + impl_->renderer.version();
 }
 
+const std::string& GlBackend::renderer_name() const { return impl_->renderer.renderer_name(); }
+
 void GlBackend::render(const Scene& scene, const Camera& camera, Framebuffer& target) {
   impl_->renderer.render(scene, camera, target);
 }
@@ -43,6 +45,10 @@ GlBackend::GlBackend(const RenderSettings&) {
   throw Error("--backend gl: this facet was built without the OpenGL backend (FACET_BUILD_GL=OFF)");
 }
 std::string GlBackend::description() const { return {}; }
+const std::string& GlBackend::renderer_name() const {
+  static const std::string none;
+  return none;
+}
 void GlBackend::render(const Scene&, const Camera&, Framebuffer&) {}
 double GlBackend::last_frame_ms() const { return 0.0; }
 

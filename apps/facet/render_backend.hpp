@@ -30,6 +30,7 @@ class GlBackend {
 
   // "llvmpipe (LLVM 15.0.6, 256 bits), OpenGL 4.5 (Core Profile) Mesa 22.3.6".
   std::string description() const;
+  const std::string& renderer_name() const;  // "llvmpipe (LLVM 15.0.6, 256 bits)"
   void render(const Scene& scene, const Camera& camera, Framebuffer& target);
   double last_frame_ms() const;
 

@@ -1,7 +1,7 @@
-// The GL twin's frame, top to bottom (GlRenderer::render): the draws in facet's order, the
-// opaque ones, the sky where nothing opaque was drawn, the blended ones back to front, then the
-// readback. Each draw picks a program for its shading model (glsl_fragment.cpp), as facet's
-// renderer picks a specialised raster loop (pipeline/record/pipeline_table.cpp).
+// The GL twin's frame, top to bottom (GlRenderer::render, on the renderer's GL thread): the draws
+// in facet's order, the opaque ones, the sky where nothing opaque was drawn, the blended ones back
+// to front, then the readback. Each draw picks a program for its shading model (glsl_fragment.cpp),
+// as facet's renderer picks a specialised raster loop (pipeline/record/pipeline_table.cpp).
 #include <chrono>
 #include <map>
 #include <memory>
@@ -14,6 +14,7 @@
 #include "gl/egl_context.hpp"
 #include "gl/frame_target.hpp"
 #include "gl/gl_program.hpp"
+#include "gl/gl_thread.hpp"
 #include "gl/glsl_sources.hpp"
 #include "gl/gpu_resources.hpp"
 
@@ -88,7 +89,8 @@ void set_culling(CullMode cull) {
 
 }  // namespace
 
-struct GlRenderer::Impl {
+// Everything that needs the context current: it lives and is used on the GL thread only.
+struct GlState {
   RenderSettings settings;
   gl::EglContext context;  // first: everything below needs it current
   std::string renderer_name, version;
@@ -98,7 +100,7 @@ struct GlRenderer::Impl {
   GLuint empty_vertex_array = 0;  // the sky's triangle has no attributes, but core GL wants one
   double last_ms = 0.0;
 
-  explicit Impl(const RenderSettings& s) : settings(s) {
+  explicit GlState(const RenderSettings& s) : settings(s) {
     auto gl_string = [](GLenum name) {
       const GLubyte* text = glGetString(name);
       return text ? std::string(reinterpret_cast<const char*>(text)) : std::string("unknown");
@@ -107,7 +109,7 @@ struct GlRenderer::Impl {
     version = gl_string(GL_VERSION);
     glGenVertexArrays(1, &empty_vertex_array);
   }
-  ~Impl() { glDeleteVertexArrays(1, &empty_vertex_array); }
+  ~GlState() { glDeleteVertexArrays(1, &empty_vertex_array); }
 
   Program& program(const std::string& defines, bool sky = false) {
     auto& slot = programs[(sky ? "sky " : "") + defines];
@@ -235,13 +237,22 @@ struct GlRenderer::Impl {
   }
 };
 
-GlRenderer::GlRenderer(const RenderSettings& settings) : impl_(std::make_unique<Impl>(settings)) {}
-GlRenderer::~GlRenderer() = default;
-const std::string& GlRenderer::renderer_name() const { return impl_->renderer_name; }
-const std::string& GlRenderer::version() const { return impl_->version; }
-double GlRenderer::last_frame_ms() const { return impl_->last_ms; }
+struct GlRenderer::Impl {
+  gl::GlThread thread;
+  std::unique_ptr<GlState> state;  // made, used and destroyed on the thread
+};
+
+GlRenderer::GlRenderer(const RenderSettings& settings) : impl_(std::make_unique<Impl>()) {
+  impl_->state = impl_->thread.run([&] { return std::make_unique<GlState>(settings); });
+}
+GlRenderer::~GlRenderer() {
+  impl_->thread.run([this] { impl_->state.reset(); });
+}
+const std::string& GlRenderer::renderer_name() const { return impl_->state->renderer_name; }
+const std::string& GlRenderer::version() const { return impl_->state->version; }
+double GlRenderer::last_frame_ms() const { return impl_->state->last_ms; }
 void GlRenderer::render(const Scene& scene, const Camera& camera, Framebuffer& target) {
-  impl_->render(scene, camera, target);
+  impl_->thread.run([&] { impl_->state->render(scene, camera, target); });
 }
 
 }  // namespace facet

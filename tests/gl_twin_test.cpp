@@ -15,6 +15,7 @@
 #include "facet/import.hpp"
 #include "facet/renderer.hpp"
 #include "facet/worlds.hpp"
+#include "support/golden.hpp"
 #include "support/render_helpers.hpp"
 #include "support/required_package.hpp"
 #include "view_difference.hpp"
@@ -386,6 +387,90 @@ TEST(GlTwinCli, UnknownBackendIsAUsageError) {
   EXPECT_NE(result.stderr_text.find("--backend: expected facet or gl, got 'vulkan'"),
             std::string::npos)
       << result.stderr_text;
+}
+
+// --- The fill rule, where an edge runs exactly through pixel centres ------------------------
+
+// Two unlit quads, red above (or left of) blue, sharing an edge through the centres of row 3 (or
+// column 4) of an 8x8 image: which one each renderer gives those pixels. Returns the image's
+// middle column (horizontal edge) or middle row (vertical edge) as 'r' and 'b'.
+std::string shared_edge_owner(GlRenderer* gl, bool horizontal) {
+  Scene scene;
+  auto quad = [&](glm::vec2 low, glm::vec2 high, glm::vec4 color) {
+    Mesh m;
+    m.positions = {{low.x, low.y, 0}, {high.x, low.y, 0}, {high.x, high.y, 0}, {low.x, high.y, 0}};
+    m.indices = {0, 1, 2, 0, 2, 3};
+    Material material;
+    material.shading = ShadingModel::unlit;
+    material.base_color = color;
+    scene.add_object(std::move(m), material);
+  };
+  // One unit per pixel: pixel centres at -3.5 ... 3.5; row 3's and column 4's at 0.5.
+  if (horizontal) {
+    quad({-4, 0.5f}, {4, 4}, {1, 0, 0, 1});
+    quad({-4, -4}, {4, 0.5f}, {0, 0, 1, 1});
+  } else {
+    quad({-4, -4}, {0.5f, 4}, {1, 0, 0, 1});
+    quad({0.5f, -4}, {4, 4}, {0, 0, 1, 1});
+  }
+  const Camera camera = Camera::orthographic({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 8.0f, 1.0f, 1, 10);
+  Framebuffer image(8, 8);
+  if (gl) {
+    gl->render(scene, camera, image);
+  } else {
+    Renderer renderer;
+    renderer.begin_frame(camera, scene.lighting);
+    draw_scene(renderer, scene);
+    renderer.finish(image);
+  }
+  std::string line;
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec4 c = horizontal ? image.pixel(4, i) : image.pixel(i, 4);
+    line += c.r > 0.5f ? 'r' : c.b > 0.5f ? 'b' : '.';
+  }
+  return line;
+}
+
+// Both renderers cover each pixel of a shared edge once. facet's top-left rule gives a
+// horizontal edge's pixels to the triangle below it (the edge is that one's top edge) and a
+// vertical edge's to the one on its right (its left edge). llvmpipe agrees on vertical edges
+// and gives horizontal ones to the triangle above, in the image as read back (rows top first).
+// docs/gl_twin.md, "Fill rule".
+TEST(GlTwin, FillRuleOnEdgesThroughPixelCentres) {
+  REQUIRE_GL(gl);
+  EXPECT_EQ(shared_edge_owner(nullptr, true), "rrrbbbbb");   // row 3 is blue's (below)
+  EXPECT_EQ(shared_edge_owner(nullptr, false), "rrrrbbbb");  // column 4 is blue's (right)
+  EXPECT_EQ(shared_edge_owner(gl, true), "rrrrbbbb");        // row 3 is red's (above)
+  EXPECT_EQ(shared_edge_owner(gl, false), "rrrrbbbb");
+}
+
+// docs/gl_twin.md's picture: the islands by facet, by the twin, and their difference x8 (the
+// viewer's F10 view), side by side. A golden: it fails when either renderer's image moves.
+TEST(GlTwinDocs, IslandsSideBySide) {
+  REQUIRE_GL(gl);
+  constexpr int kPanelWidth = 240, kPanelHeight = 135;
+  Views v = scene_named("islands");
+  v.camera.aspect = static_cast<float>(kPanelWidth) / kPanelHeight;
+  Renderer renderer;
+  Framebuffer reference(kPanelWidth, kPanelHeight), twin(kPanelWidth, kPanelHeight);
+  renderer.begin_frame(v.camera, v.scene.lighting);
+  draw_scene(renderer, v.scene);
+  renderer.finish(reference);
+  gl->render(v.scene, v.camera, twin);
+  Framebuffer difference = reference;
+  cli::show_difference(difference, twin);
+  Framebuffer picture(3 * kPanelWidth, kPanelHeight);
+  const Framebuffer* panels[] = {&reference, &twin, &difference};
+  for (int p = 0; p < 3; ++p) {
+    for (int y = 0; y < kPanelHeight; ++y) {
+      std::copy_n(panels[p]->rgba8().data() + y * kPanelWidth * 4, kPanelWidth * 4,
+                  picture.rgba8().data() + (y * 3 * kPanelWidth + p * kPanelWidth) * 4);
+    }
+  }
+  const auto path = test::fresh_test_dir("facet_gl_twin_", "docs") / "islands.png";
+  write_image(picture, path.string());
+  test::expect_matches_golden_in(FACET_GL_TWIN_PICTURE_DIR, path.string(),
+                                 "islands_facet_gl_difference");
 }
 
 // The viewer's difference view amplifies each channel's difference and is opaque.

@@ -56,8 +56,11 @@ const char* model_define(ShadingModel model) {
   }
 }
 
-bool debug_model(ShadingModel m) {
-  return m == ShadingModel::depth || m == ShadingModel::normals || m == ShadingModel::texcoords;
+// Debug views show data and the wireframe shows edges: always opaque, as facet's pipeline
+// table has them (pipeline/record/pipeline_table.cpp).
+bool always_opaque(ShadingModel m) {
+  return m == ShadingModel::depth || m == ShadingModel::normals || m == ShadingModel::texcoords ||
+         m == ShadingModel::wireframe;
 }
 
 // Blending as facet's raster loop writes a pixel (pixel_writer.hpp's blend_into): "over" with
@@ -124,7 +127,7 @@ struct GlState {
     return *slot;
   }
 
-  // One pass of one draw with the given model define.
+  // Draws the mesh with the program of `model` (a MODEL_* define of glsl_fragment.cpp).
   void draw_pass(const GlDraw& draw, const Material& material, const char* model,
                  const gl::FrameState& frame) {
     const gl::GpuMesh& mesh = resources.mesh(*draw.mesh);
@@ -144,8 +147,9 @@ struct GlState {
   void draw(const GlDraw& draw, const gl::FrameState& frame) {
     Material material = *draw.material;
     const Mesh& mesh = **draw.mesh;
+    if (always_opaque(material.shading)) material.alpha_mode = AlphaMode::opaque;
     set_culling(material.cull);
-    set_blending(debug_model(material.shading) ? AlphaMode::opaque : material.alpha_mode);
+    set_blending(material.alpha_mode);
     // Points and lines are unlit (facet colors them at setup: vertex color x base color).
     if (mesh.topology == Topology::points || mesh.topology == Topology::lines) {
       material.base_color_map = {};

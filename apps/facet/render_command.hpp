@@ -24,7 +24,7 @@ struct RenderOptions {
   int tile_size = 64;
   bool orthographic = false;
   std::string backend = "facet";  // or "gl": the OpenGL twin (render_backend.hpp)
-  BatchOptions batch;  // the positional models; several, or a folder, make a batch
+  BatchOptions batch;             // the positional models; several, or a folder, make a batch
 };
 
 // Adds the `render` subcommand and its flags to app; options are filled on parse.

@@ -42,6 +42,13 @@ std::vector<GlDraw> ordered_draws(const Scene& scene, const Camera& camera) {
 
 void depth_view_range(const std::vector<GlDraw>& draws, const Camera& camera, float& nearest,
                       float& farthest) {
+  const bool depth_view = std::any_of(draws.begin(), draws.end(), [](const GlDraw& d) {
+    return d.material->shading == ShadingModel::depth;
+  });
+  if (!depth_view) {  // nothing reads the range: no pass over the meshes
+    nearest = camera.near_plane, farthest = camera.far_plane;
+    return;
+  }
   nearest = camera.far_plane, farthest = camera.near_plane;
   const glm::mat4 view = camera.view();
   for (const GlDraw& draw : draws) {

@@ -22,7 +22,8 @@ struct GlDraw {
 std::vector<GlDraw> ordered_draws(const Scene& scene, const Camera& camera);
 
 // The view depths the depth debug view spans, from the draws' bounds (frame_run.cpp's
-// set_depth_view_range), clamped to the camera's near and far planes.
+// set_depth_view_range), clamped to the camera's near and far planes; near to far when no draw
+// uses the depth view.
 void depth_view_range(const std::vector<GlDraw>& draws, const Camera& camera, float& nearest,
                       float& farthest);
 

@@ -60,6 +60,8 @@ void set_map(Program& p, const char* name, int unit, const TextureMap& map,
 }  // namespace
 
 void set_frame_uniforms(Program& p, const FrameState& frame) {
+  if (p.frame == frame.number) return;
+  p.frame = frame.number;
   const Lighting& lighting = *frame.lighting;
   const int count = static_cast<int>(lighting.lights.size());
   if (count > kMaxLights) {

@@ -17,6 +17,7 @@ namespace facet::gl {
 inline constexpr int kEnvironmentUnit = 6;
 
 struct FrameState {
+  std::uint64_t number = 0;  // counts frames from 1, so a program knows whose constants it holds
   const Lighting* lighting = nullptr;
   glm::vec3 eye{0.0f};            // Camera::shading_eye
   glm::vec3 view_depth{1, 0, 0};  // from_w, from_z, offset (shading/uniforms.hpp's ViewDepth)
@@ -26,6 +27,7 @@ struct FrameState {
   glm::ivec2 viewport{1, 1};  // the target's size in pixels
 };
 
+// Sets the frame's constants unless the program holds them already.
 void set_frame_uniforms(Program& program, const FrameState& frame);
 // material is the one the program shades with (a vertex-color draw gets a white base color).
 void set_draw_uniforms(Program& program, const GlDraw& draw, const Material& material,

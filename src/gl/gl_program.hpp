@@ -3,6 +3,7 @@
 // per draw state. Each distinct list is compiled once and kept.
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <string>
 
@@ -23,6 +24,10 @@ class Program {
   GLuint id() const { return id_; }
   // The location of a uniform, or -1 if the program does not use it (setting -1 is a no-op).
   GLint uniform(const char* name);
+
+  // The frame whose constants the program holds (draw_uniforms.hpp's set_frame_uniforms sets
+  // them once per frame, not per draw: a program keeps its uniforms between uses).
+  std::uint64_t frame = 0;
 
  private:
   GLuint id_ = 0;

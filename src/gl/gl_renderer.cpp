@@ -102,6 +102,7 @@ struct GlState {
   std::map<std::string, std::unique_ptr<Program>> programs;
   GLuint empty_vertex_array = 0;  // the sky's triangle has no attributes, but core GL wants one
   double last_ms = 0.0;
+  std::uint64_t frames = 0;
 
   explicit GlState(const RenderSettings& s) : settings(s) {
     auto gl_string = [](GLenum name) {
@@ -203,6 +204,7 @@ struct GlState {
     context.make_current();
     camera.validate();
     gl::FrameState frame;
+    frame.number = ++frames;
     frame.lighting = &scene.lighting;
     frame.eye = camera.shading_eye();
     frame.view_projection = camera.view_projection();

@@ -389,6 +389,22 @@ TEST(GlTwinCli, UnknownBackendIsAUsageError) {
       << result.stderr_text;
 }
 
+// The twin frees the GPU copies of meshes and textures no frame has used for a while (60
+// frames): a scene drawn again after that is uploaded again and drawn the same.
+TEST(GlTwin, SceneDrawnAgainAfterItsCopiesWereFreed) {
+  REQUIRE_GL(gl);
+  const Views shapes = scene_named("shapes");
+  const Framebuffer first = gl_image(*gl, shapes.scene, shapes.camera);
+  Scene other;
+  Mesh triangle;
+  triangle.positions = {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
+  other.add_object(std::move(triangle), Material{});
+  Framebuffer small(8, 8);
+  for (int frame = 0; frame < 62; ++frame) gl->render(other, Camera{}, small);
+  const Framebuffer again = gl_image(*gl, shapes.scene, shapes.camera);
+  EXPECT_EQ(first.rgba8(), again.rgba8());
+}
+
 // --- The fill rule, where an edge runs exactly through pixel centres ------------------------
 
 // Two unlit quads, red above (or left of) blue, sharing an edge through the centres of row 3 (or

@@ -205,6 +205,7 @@ struct GlState {
     camera.validate();
     gl::FrameState frame;
     frame.number = ++frames;
+    resources.begin_frame(frame.number);
     frame.lighting = &scene.lighting;
     frame.eye = camera.shading_eye();
     frame.view_projection = camera.view_projection();
@@ -238,6 +239,7 @@ struct GlState {
     }
     if (sky_pending) draw_sky(frame);
     target.read(out, settings.exposure);
+    resources.free_unused();
     last_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   }

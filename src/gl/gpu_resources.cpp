@@ -70,6 +70,26 @@ void GpuMesh::draw() const {
 
 GpuResources::~GpuResources() { clear(); }
 
+void GpuResources::free_unused() {
+  for (auto it = meshes_.begin(); it != meshes_.end();) {
+    if (it->second.used + kKeepFrames >= frame_) {
+      ++it;
+      continue;
+    }
+    glDeleteVertexArrays(1, &it->second.gpu.vertex_array);
+    glDeleteBuffers(6, it->second.gpu.buffers);
+    it = meshes_.erase(it);
+  }
+  for (auto it = textures_.begin(); it != textures_.end();) {
+    if (it->second.used + kKeepFrames >= frame_) {
+      ++it;
+      continue;
+    }
+    glDeleteTextures(1, &it->second.id);
+    it = textures_.erase(it);
+  }
+}
+
 void GpuResources::clear() {
   for (auto& [key, entry] : meshes_) {
     glDeleteVertexArrays(1, &entry.gpu.vertex_array);
@@ -84,7 +104,10 @@ void GpuResources::clear() {
 
 const GpuMesh& GpuResources::mesh(const std::shared_ptr<const Mesh>& mesh) {
   auto found = meshes_.find(mesh.get());
-  if (found != meshes_.end()) return found->second.gpu;
+  if (found != meshes_.end()) {
+    found->second.used = frame_;
+    return found->second.gpu;
+  }
   GpuMesh gpu;
   glGenVertexArrays(1, &gpu.vertex_array);
   glBindVertexArray(gpu.vertex_array);
@@ -105,7 +128,7 @@ const GpuMesh& GpuResources::mesh(const std::shared_ptr<const Mesh>& mesh) {
   gpu.mode = mode_of(mesh->topology);
   gpu.count = static_cast<GLsizei>(mesh->element_count());
   gpu.has_normals = !mesh->normals.empty();
-  return meshes_.emplace(mesh.get(), MeshEntry{mesh, gpu}).first->second.gpu;
+  return meshes_.emplace(mesh.get(), MeshEntry{mesh, gpu, frame_}).first->second.gpu;
 }
 
 // facet's own mipmap chain is uploaded level by level rather than made by glGenerateMipmap, so
@@ -113,7 +136,10 @@ const GpuMesh& GpuResources::mesh(const std::shared_ptr<const Mesh>& mesh) {
 // v = 0 at the bottom (texture.hpp); GL's first row is at t = 0, so rows go up reversed.
 GLuint GpuResources::texture(const std::shared_ptr<const Texture>& texture) {
   auto found = textures_.find(texture.get());
-  if (found != textures_.end()) return found->second.id;
+  if (found != textures_.end()) {
+    found->second.used = frame_;
+    return found->second.id;
+  }
   GLuint id = 0;
   glGenTextures(1, &id);
   glBindTexture(GL_TEXTURE_2D, id);
@@ -143,7 +169,7 @@ GLuint GpuResources::texture(const std::shared_ptr<const Texture>& texture) {
     }
   }
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, texture->level_count() - 1);
-  textures_.emplace(texture.get(), TextureEntry{texture, id});
+  textures_.emplace(texture.get(), TextureEntry{texture, id, frame_});
   return id;
 }
 

@@ -34,6 +34,9 @@ class GlRenderer {
   // Renderer::finish would: same transforms, levels of detail, materials, lights, fog, sky and
   // transparency order. The target's color format and depth image are filled like the software
   // renderer's; extra outputs are not drawn (throws facet::Error if the target asks for any).
+  // Meshes and textures are uploaded the first time they are drawn and found again by address
+  // (so, as for Renderer, a mesh must not change in place), and freed 60 frames after the last
+  // frame that drew them.
   void render(const Scene& scene, const Camera& camera, Framebuffer& target);
 
   // Wall time of the last render(), readback included, in milliseconds.

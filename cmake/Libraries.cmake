@@ -55,9 +55,11 @@ facet_layer(facet_sound sound facet-sound ${FACET_SOUND_SOURCES})
 target_link_libraries(facet_sound PUBLIC facet_core PRIVATE OpenAL::OpenAL)
 
 # The OpenGL twin: not in the umbrella, so nothing but the program and the tests links OpenGL.
+# Not installed (its header neither: cmake/Install.cmake), so static even in a shared build: the
+# installed program carries it.
 if(FACET_BUILD_GL)
   file(GLOB FACET_GL_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/gl/*.cpp)
-  facet_layer(facet_gl gl facet-gl ${FACET_GL_SOURCES})
+  facet_layer(facet_gl gl facet-gl STATIC ${FACET_GL_SOURCES})
   target_link_libraries(facet_gl PUBLIC facet_core PRIVATE OpenGL::OpenGL OpenGL::EGL)
 endif()
 

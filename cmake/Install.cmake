@@ -18,7 +18,8 @@ set(FACET_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/facet
 
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/facet
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
-        FILES_MATCHING PATTERN "*.hpp")
+        FILES_MATCHING PATTERN "*.hpp"
+        PATTERN "gl.hpp" EXCLUDE)  # the OpenGL twin's library is not installed
 install(FILES ${PROJECT_BINARY_DIR}/include/facet/version.hpp
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/facet)
 

@@ -5,6 +5,7 @@
 #   facet::import  src/import                            core, assimp
 #   facet::worlds  src/worlds                            core, oneTBB
 #   facet::sound   src/sound                             OpenAL Soft
+#   facet::gl      src/gl (optional: FACET_BUILD_GL)     core, OpenGL, EGL
 #   facet::facet   all four (an interface target: the umbrella for users who want everything)
 #
 # Libraries are static unless BUILD_SHARED_LIBS is on; shared ones carry a SONAME of the major
@@ -52,6 +53,15 @@ target_link_libraries(facet_worlds PUBLIC facet_core PRIVATE TBB::tbb)
 file(GLOB FACET_SOUND_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/sound/*.cpp)
 facet_layer(facet_sound sound facet-sound ${FACET_SOUND_SOURCES})
 target_link_libraries(facet_sound PUBLIC facet_core PRIVATE OpenAL::OpenAL)
+
+# The OpenGL twin: not in the umbrella, so nothing but the program and the tests links OpenGL.
+# Not installed (its header neither: cmake/Install.cmake), so static even in a shared build: the
+# installed program carries it.
+if(FACET_BUILD_GL)
+  file(GLOB FACET_GL_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/gl/*.cpp)
+  facet_layer(facet_gl gl facet-gl STATIC ${FACET_GL_SOURCES})
+  target_link_libraries(facet_gl PUBLIC facet_core PRIVATE OpenGL::OpenGL OpenGL::EGL)
+endif()
 
 add_library(facet_all INTERFACE)
 add_library(facet::facet ALIAS facet_all)

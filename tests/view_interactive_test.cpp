@@ -438,6 +438,43 @@ TEST(ViewInput, LetterboxBarsWhenTheWindowAspectDiffers) {
   for (int y : {145, 320, 495}) EXPECT_FALSE(is_black_row(window, y)) << "row " << y;
 }
 
+#if FACET_HAS_GL
+// F10 switches facet's renderer -> its OpenGL twin -> their difference -> facet: the twin's
+// frame is facet's to within edge pixels, the difference view is dark where they agree, and
+// each screenshot's log line names the backend that drew it.
+TEST(ViewInput, F10TogglesTheOpenGLTwinAndTheDifference) {
+  REQUIRE_TOOLS();
+  const std::string f10 = "xdotool key F10\nshot\n";
+  Session s = run_session("f10", "start_view --scene shapes --size 320x180 --overlay off\n" + f10 +
+                                     f10 + f10 + "stop_view\n");
+  ASSERT_EQ(s.result.exit_code, 0) << s.result.stderr_text;
+  const char* const backends[] = {"facet", "gl", "difference", "facet"};
+  for (int n = 1; n <= 4; ++n) {
+    const std::string line = shot_name(n) + " drawn by backend " + backends[n - 1];
+    EXPECT_NE(s.log.find(line), std::string::npos) << line << " not in:\n" << s.log;
+  }
+  EXPECT_NE(s.log.find("drawn by backend gl, OpenGL llvmpipe"), std::string::npos) << s.log;
+  // The top 130 rows: the change panel ("backend: gl") covers the bottom of the frame.
+  auto top = [](Rgba8Image image) {
+    image.height = 130;
+    image.pixels.resize(static_cast<std::size_t>(image.width) * image.height * 4);
+    return image;
+  };
+  const Rgba8Image facet = top(s.image(shot_name(1))), gl = top(s.image(shot_name(2)));
+  const Rgba8Image difference = top(s.image(shot_name(3))), again = top(s.image(shot_name(4)));
+  EXPECT_LT(changed_fraction(facet, gl), 0.005);
+  EXPECT_EQ(changed_fraction(facet, again), 0.0);
+  // Dark where the two agree: an 8x amplified difference above 64 is 8 levels apart.
+  std::size_t bright = 0;
+  for (std::size_t i = 0; i < difference.pixels.size(); i += 4) {
+    bright +=
+        std::max({difference.pixels[i], difference.pixels[i + 1], difference.pixels[i + 2]}) > 64;
+  }
+  EXPECT_LT(bright, difference.pixels.size() / 4 / 200);
+  EXPECT_GT(changed_fraction(facet, difference), 0.5);  // it is not the picture
+}
+#endif
+
 TEST(ViewInput, F9ShowsTheOverlayAtTheLeft) {
   REQUIRE_TOOLS();
   Session s = run_session("f9", kIslands + "xdotool key F9\nsleep 3\nshot\nstop_view\n");

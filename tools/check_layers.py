@@ -17,6 +17,7 @@ PUBLIC = {
     "import": {"import"},
     "worlds": {"worlds", "procedural", "teapot", "islands"},
     "sound": {"sound"},
+    "gl": {"gl"},
 }
 
 # Layers from the bottom up: a folder may include the folders listed for it (internal headers)
@@ -31,11 +32,14 @@ RULES = {
     "src/import": (["import"], ["core", "import"]),
     "src/worlds": (["worlds"], ["core", "worlds"]),
     "src/sound": (["sound"], ["core", "sound"]),
+    # The OpenGL twin draws a Scene as the core's renderer does, through the public API.
+    "src/gl": (["gl"], ["core", "gl"]),
     # Public headers: each layer's own and those below it.
     "include/facet:core": ([], ["core"]),
     "include/facet:import": ([], ["core", "import"]),
     "include/facet:worlds": ([], ["core", "worlds"]),
     "include/facet:sound": ([], ["sound"]),
+    "include/facet:gl": ([], ["core", "gl"]),
     # The classic rasterizers, for learners: the core's types and nothing more.
     "src/classic": (["classic"], CORE_PUBLIC),
     # Their demo program draws built-in and imported scenes with them.
@@ -43,7 +47,7 @@ RULES = {
     # The benchmark scenes plug shading models into the pipeline (record/custom_draw.hpp).
     "bench/scenes": (["core", "shading", "pipeline", "scenes"], ["core", "import", "worlds"]),
     # The program: public headers and the benchmark scenes, nothing internal.
-    "apps/facet": (["scenes"], ["core", "import", "worlds", "sound"]),
+    "apps/facet": (["scenes"], ["core", "import", "worlds", "sound", "gl"]),
     # The Python module: the public API of the layers it binds, nothing internal.
     "python/src": ([], ["core", "import"]),
 }

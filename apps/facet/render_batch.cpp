@@ -174,6 +174,9 @@ std::vector<BatchItem> plan_batch(const std::vector<std::string>& models,
 }
 
 int run_batch(const RenderOptions& o) {
+  if (o.backend != "facet") {
+    throw Error("--backend " + o.backend + ": only facet's own renderer draws a batch of models");
+  }
   using Clock = std::chrono::steady_clock;
   if (o.frames.frames) {
     throw Error(

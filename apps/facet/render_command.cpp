@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <string>
 
 #include "animated_scene.hpp"
@@ -13,6 +14,7 @@
 #include "facet/framebuffer.hpp"
 #include "facet/renderer.hpp"
 #include "facet/scene.hpp"
+#include "render_backend.hpp"
 #include "render_frames.hpp"
 
 namespace facet::cli {
@@ -53,6 +55,10 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
       ->capture_default_str();
   cmd->add_option("--tile-size", o.tile_size, "Tile edge in pixels: 16, 32, 64 or 128")
       ->capture_default_str();
+  cmd->add_option("--backend", o.backend,
+                  "Renderer: facet (the software rasterizer) or gl (its OpenGL twin, headless "
+                  "through EGL: docs/gl_twin.md)")
+      ->capture_default_str();
   cmd->add_flag("--orthographic,--ortho", o.orthographic,
                 "Parallel projection, fitted to the whole scene, seen along the camera's line of "
                 "sight (the automatic three-quarter view, --eye/--target or --camera)");
@@ -75,6 +81,10 @@ int run_render(const RenderOptions& o) {
       transparent ? glm::vec3(0.0f)
                   : parse_color("--background", o.background.value_or(kDefaultBackground));
   const DebugView debug_view = parse_debug_view(o.debug_view.value_or("none"));
+  const Backend backend = parse_backend("--backend", o.backend);
+  if (backend == Backend::gl && debug_view != DebugView::none) {
+    throw Error("--debug-view: shows facet's own pipeline, not with --backend gl");
+  }
   if (o.orthographic && (o.scene.fov || o.scene.near_plane || o.scene.far_plane)) {
     throw Error(std::string(o.scene.fov          ? "--fov"
                             : o.scene.near_plane ? "--near"
@@ -103,7 +113,9 @@ int run_render(const RenderOptions& o) {
   settings.debug_view = debug_view;
   settings.exposure = o.exposure;
   Renderer renderer(settings);
-  FrameRenderer frames(renderer, animated, camera, job, size);
+  std::unique_ptr<GlBackend> gl;
+  if (backend == Backend::gl) gl = std::make_unique<GlBackend>(settings);
+  FrameRenderer frames(renderer, animated, camera, job, size, gl.get());
   if (job.sequence) return render_sequence(job, frames, size);
 
   const Framebuffer& framebuffer = frames.render(job.frames[0].seconds);
@@ -111,6 +123,12 @@ int run_render(const RenderOptions& o) {
   write_outputs(framebuffer, job.outputs, o.output);
   double write_ms = std::chrono::duration<double, std::milli>(Clock::now() - rendered).count();
   if (job.quiet) return 0;
+  if (gl) {
+    std::printf("%s: %dx%d, drawn by OpenGL (%s); load %.1f ms, total %.1f ms; write %.1f ms\n",
+                o.output.c_str(), size.width, size.height, gl->description().c_str(), load_ms,
+                gl->last_frame_ms(), write_ms);
+    return 0;
+  }
 
   const FrameStats& s = renderer.stats();
   // Wireframes and line meshes draw segments: say how many, so their frames do not read as empty.

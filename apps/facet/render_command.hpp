@@ -23,7 +23,8 @@ struct RenderOptions {
   int threads = 0;
   int tile_size = 64;
   bool orthographic = false;
-  BatchOptions batch;  // the positional models; several, or a folder, make a batch
+  std::string backend = "facet";  // or "gl": the OpenGL twin (render_backend.hpp)
+  BatchOptions batch;             // the positional models; several, or a folder, make a batch
 };
 
 // Adds the `render` subcommand and its flags to app; options are filled on parse.

@@ -47,13 +47,14 @@ void straighten_alpha(Framebuffer& framebuffer) {
 }  // namespace
 
 FrameRenderer::FrameRenderer(Renderer& renderer, AnimatedScene& scene, const Camera& camera,
-                             const FrameJob& job, ImageSize size)
+                             const FrameJob& job, ImageSize size, GlBackend* gl)
     : renderer_(renderer),
       scene_(scene),
       camera_(camera),
       job_(job),
       framebuffer_(size.width, size.height, job.outputs.color_format(), DepthImage::none,
-                   job.outputs.extra_outputs()) {
+                   job.outputs.extra_outputs()),
+      gl_(gl) {
   check_ids_fit(job.outputs, scene.scene());
 }
 
@@ -67,9 +68,13 @@ const Framebuffer& FrameRenderer::render(double seconds) {
     camera.target = pose.position + pose.forward();
     camera.up = {0.0f, 1.0f, 0.0f};
   }
-  renderer_.begin_frame(camera, scene.lighting);
-  draw_scene(renderer_, scene);
-  renderer_.finish(framebuffer_);
+  if (gl_ != nullptr) {
+    gl_->render(scene, camera, framebuffer_);
+  } else {
+    renderer_.begin_frame(camera, scene.lighting);
+    draw_scene(renderer_, scene);
+    renderer_.finish(framebuffer_);
+  }
   if (renderer_.settings().clear_color.a < 1.0f) straighten_alpha(framebuffer_);
   return framebuffer_;
 }

@@ -12,14 +12,16 @@
 #include "facet/framebuffer.hpp"
 #include "facet/renderer.hpp"
 #include "frame_options.hpp"
+#include "render_backend.hpp"
 
 namespace facet::cli {
 
 class FrameRenderer {
  public:
   // `camera` is the view when there is no camera path, and gives a path its lens otherwise.
+  // With `gl`, the OpenGL twin draws the frames instead of `renderer`.
   FrameRenderer(Renderer& renderer, AnimatedScene& scene, const Camera& camera, const FrameJob& job,
-                ImageSize size);
+                ImageSize size, GlBackend* gl = nullptr);
 
   // Renders the frame at `seconds` on the animation clock.
   const Framebuffer& render(double seconds);
@@ -30,6 +32,7 @@ class FrameRenderer {
   Camera camera_;
   const FrameJob& job_;
   Framebuffer framebuffer_;
+  GlBackend* gl_;
 };
 
 // Renders and writes every frame of a sequence. Returns the exit code: 0, or 128 + the signal

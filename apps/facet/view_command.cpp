@@ -51,6 +51,10 @@ CLI::App* add_view_command(CLI::App& app, ViewOptions& o) {
       ->check(CLI::IsMember({"auto", "on", "off"}))
       ->capture_default_str();
   cmd->add_flag("--fullscreen", o.fullscreen, "Start fullscreen (F11 toggles)");
+  cmd->add_option("--backend", o.backend,
+                  "Renderer at the start: facet or gl (its OpenGL twin); F10 switches between "
+                  "them and their difference")
+      ->capture_default_str();
   return cmd;
 }
 
@@ -60,6 +64,7 @@ int run_view(const ViewOptions& o) {
   if (o.frames < 0) throw Error("--frames: must be 0 (until closed) or more");
   if (o.time && !std::isfinite(*o.time)) throw Error("--time: must be a finite number of seconds");
   if (!o.screenshot.empty()) check_writable(o.screenshot);
+  const Backend backend = parse_backend("--backend", o.backend);
   glm::vec3 background = parse_color("--background", kBackground);
   if (auto axis = o.scene.up ? parse_up_axis(*o.scene.up) : std::nullopt;
       axis && *axis != glm::vec3(0.0f, 1.0f, 0.0f)) {
@@ -86,6 +91,7 @@ int run_view(const ViewOptions& o) {
   setup.settings.fov_degrees = setup.start.fov_y_degrees;
   setup.settings.overlay = o.overlay == "on" || (o.overlay == "auto" && o.frames == 0);
   setup.settings.fullscreen = o.fullscreen;
+  setup.settings.backend = backend == Backend::gl ? ViewBackend::gl : ViewBackend::facet;
   setup.clear_color = glm::vec4(background, 1.0f);
   setup.fixed_time = o.time;
   setup.frames = o.frames;

@@ -9,6 +9,7 @@
 
 #include "facet/error.hpp"
 #include "facet/image_io.hpp"
+#include "view_difference.hpp"
 
 namespace facet::cli {
 namespace {
@@ -34,9 +35,7 @@ std::string next_file_name(const char* prefix) {
   }
 }
 
-bool is_function_key(SDL_Keycode key) {
-  return (key >= SDLK_F1 && key <= SDLK_F9) || key == SDLK_F11;
-}
+bool is_function_key(SDL_Keycode key) { return (key >= SDLK_F1 && key <= SDLK_F11); }
 
 }  // namespace
 
@@ -46,15 +45,39 @@ ViewLoop::ViewLoop(ViewWindow& window, ViewSetup setup)
       settings_(setup_.settings),
       controls_(setup_.start, setup_.walk_speed, setup_.camera_mode),
       frame_(settings_.size.width, settings_.size.height, ColorFormat::rgba8_srgb,
-             DepthImage::none) {
+             DepthImage::none),
+      gl_frame_(frame_) {
   for (const Material& m : setup_.scene->materials) own_shading_.push_back(m.shading);
   apply_shading();
   make_renderer();
+  // Asked for on the command line: no OpenGL is an error there (one line, exit code 2).
+  if (settings_.backend != ViewBackend::facet) gl_ = std::make_unique<GlBackend>(gl_settings());
   if (setup_.world) sound_ = std::make_unique<IslandsSound>(*setup_.world);
   if (settings_.fullscreen) window_.set_fullscreen(true);
 }
 
 ViewLoop::~ViewLoop() = default;
+
+RenderSettings ViewLoop::gl_settings() const {
+  RenderSettings rs;
+  rs.clear_color = setup_.clear_color;
+  return rs;
+}
+
+// Asked for with F10: without OpenGL the viewer says why and goes back to facet's renderer.
+bool ViewLoop::make_gl() {
+  if (gl_ || settings_.backend == ViewBackend::facet) return true;
+  try {
+    gl_ = std::make_unique<GlBackend>(gl_settings());
+    return true;
+  } catch (const Error& error) {
+    settings_.backend = ViewBackend::facet;
+    double now = std::chrono::duration<double>(Clock::now() - begin_).count();
+    overlay_.show_change(std::string("backend: facet (") + error.what() + ")", now);
+    std::fprintf(stderr, "view: %s\n", error.what());
+    return false;
+  }
+}
 
 void ViewLoop::make_renderer() {
   RenderSettings rs;
@@ -87,6 +110,10 @@ void ViewLoop::apply(const SettingUpdate& update) {
       window_.set_render_size(settings_.size.width, settings_.size.height);
       frame_ = Framebuffer(settings_.size.width, settings_.size.height, ColorFormat::rgba8_srgb,
                            DepthImage::none);  // shown and saved as color only
+      gl_frame_ = frame_;
+      break;
+    case SettingChange::backend:
+      if (!make_gl()) return;  // it said why
       break;
     case SettingChange::threads:
       make_renderer();
@@ -153,17 +180,17 @@ void ViewLoop::render(double now, double dt) {
   last_camera_ = view;
   if (sound_) sound_->update(*setup_.world, view, dt);
   auto start = Clock::now();
-  renderer_->begin_frame(view, setup_.scene->lighting);
-  draw_scene(*renderer_, *setup_.scene);
-  renderer_->finish(frame_);
-  render_ms_ += std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  render_scene(view);
+  backend_ms_ = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  render_ms_ += backend_ms_;
 
   OverlayInfo info;
   info.frame_ms = smoothed_ms_;
   info.fps = smoothed_ms_ > 0.0 ? 1000.0 / smoothed_ms_ : 0.0;
   info.size = settings_.size;
   info.fov_degrees = settings_.fov_degrees;
-  info.triangles = renderer_->stats().drawn;
+  info.triangles = settings_.backend == ViewBackend::gl ? setup_.scene->triangle_count()
+                                                        : renderer_->stats().drawn;
   info.lines = renderer_->stats().lines_drawn;
   info.threads = settings_.threads;
   info.mode = to_string(settings_.mode);
@@ -172,10 +199,31 @@ void ViewLoop::render(double now, double dt) {
                 : controls_.mode() == CameraMode::orbit ? "orbit (Tab)"
                                                         : "first person (Tab)";
   if (sound_) info.sound = sound_state(*sound_);
+  info.backend = to_string(settings_.backend);
+  info.backend_ms = backend_ms_;
+  if (gl_ && settings_.backend != ViewBackend::facet) info.gl_name = gl_->renderer_name();
   int window_width = 0, window_height = 0;
   window_.window_size(window_width, window_height);
   layer_ = overlay_.draw(frame_, info, settings_.overlay, settings_.help, window_width,
                          window_height, now, dt);
+}
+
+// The frame by the chosen backend: facet's renderer, the OpenGL twin, or both and where they
+// differ. The twin draws offscreen through the same EGL path as `facet render --backend gl`,
+// and its pixels are shown exactly as facet's are.
+void ViewLoop::render_scene(const Camera& view) {
+  const Scene& scene = *setup_.scene;
+  if (settings_.backend == ViewBackend::gl) {
+    gl_->render(scene, view, frame_);
+    return;
+  }
+  renderer_->begin_frame(view, scene.lighting);
+  draw_scene(*renderer_, scene);
+  renderer_->finish(frame_);
+  if (settings_.backend == ViewBackend::difference) {
+    gl_->render(scene, view, gl_frame_);
+    show_difference(frame_, gl_frame_);
+  }
 }
 
 // Saves the frame and says on stdout what it shows: the settings and the camera, so scripts
@@ -195,6 +243,11 @@ void ViewLoop::save_frame() {
       name.c_str(), frame_.width(), frame_.height(), ww, wh, c.eye.x, c.eye.y, c.eye.z, f.x, f.y,
       f.z, c.fov_y_degrees, std::string(to_string(settings_.mode)).c_str(),
       settings_.shading_name().c_str(), settings_.threads, camera_mode, sound);
+  // A line of its own, so that scripts reading the line above need not change.
+  const bool gl_drew = gl_ && settings_.backend != ViewBackend::facet;
+  std::printf("view: %s drawn by backend %s%s%s\n", name.c_str(),
+              std::string(to_string(settings_.backend)).c_str(), gl_drew ? ", OpenGL " : "",
+              gl_drew ? gl_->description().c_str() : "");
   std::fflush(stdout);
 }
 

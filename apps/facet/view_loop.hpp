@@ -15,6 +15,7 @@
 #include "facet/islands.hpp"
 #include "facet/renderer.hpp"
 #include "facet/scene.hpp"
+#include "render_backend.hpp"
 #include "view_controls.hpp"
 #include "view_overlay.hpp"
 #include "view_settings.hpp"
@@ -53,6 +54,11 @@ class ViewLoop {
   void apply(const SettingUpdate& update);
   void apply_shading();
   void make_renderer();
+  // The OpenGL twin, the first time a backend needs it; false (and back to facet's renderer,
+  // with a message) when there is no OpenGL.
+  bool make_gl();
+  RenderSettings gl_settings() const;
+  void render_scene(const Camera& view);
   void render(double now, double dt);
   Camera camera(double t) const;
   void save_frame();
@@ -65,13 +71,16 @@ class ViewLoop {
   ViewControls controls_;
   std::vector<ShadingModel> own_shading_;  // each material's own model
   std::unique_ptr<Renderer> renderer_;
+  std::unique_ptr<GlBackend> gl_;
   Framebuffer frame_;
+  Framebuffer gl_frame_;  // the twin's image, for the difference view
   ViewOverlay overlay_;
   WindowLayer layer_;  // what the overlay draws at the window's resolution this frame
   std::unique_ptr<IslandsSound> sound_;
   Clock::time_point begin_;
   Camera last_camera_;  // what the last frame was rendered with
   double smoothed_ms_ = 0.0;
+  double backend_ms_ = 0.0;  // the last frame's render time in the backend that drew it
   double render_ms_ = 0.0;
   bool save_frame_ = false, save_window_ = false;
 };

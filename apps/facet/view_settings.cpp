@@ -78,6 +78,17 @@ std::string_view to_string(RenderMode mode) {
   return "?";
 }
 
+std::string_view to_string(ViewBackend backend) {
+  switch (backend) {
+    case ViewBackend::gl:
+      return "gl";
+    case ViewBackend::difference:
+      return "difference";
+    default:
+      return "facet";
+  }
+}
+
 std::optional<ShadingModel> ViewSettings::forced_shading() const {
   switch (mode) {
     case RenderMode::wireframe:
@@ -141,6 +152,11 @@ SettingUpdate apply_function_key(int keycode, ViewSettings& s) {
     case SDLK_F9:
       s.overlay = !s.overlay;
       return {SettingChange::overlay, s.overlay ? "overlay: on" : "overlay: off"};
+    case SDLK_F10:
+      s.backend = static_cast<ViewBackend>((static_cast<int>(s.backend) + 1) % 3);
+      u = {SettingChange::backend, "backend: "};
+      u.message += to_string(s.backend);
+      return u;
     case SDLK_F11:
       s.fullscreen = !s.fullscreen;
       return {SettingChange::fullscreen, s.fullscreen ? "fullscreen" : "windowed"};

@@ -17,6 +17,11 @@ namespace facet::cli {
 enum class RenderMode { shaded, wireframe, wire_overlay, depth, normals, overdraw, tile_bins };
 std::string_view to_string(RenderMode mode);
 
+// F10 cycles these: which renderer draws the frame (facet's own or its OpenGL twin), or the
+// difference of the two, amplified (view_difference.hpp).
+enum class ViewBackend { facet, gl, difference };
+std::string_view to_string(ViewBackend backend);
+
 struct ViewSettings {
   RenderMode mode = RenderMode::shaded;
   std::optional<ShadingModel> shading;  // F7: forced on every material; empty: each its own
@@ -26,6 +31,7 @@ struct ViewSettings {
   bool overlay = true;
   bool help = false;
   bool fullscreen = false;
+  ViewBackend backend = ViewBackend::facet;
 
   // The material shading model the mode and F7 ask for; empty: the material's own.
   std::optional<ShadingModel> forced_shading() const;
@@ -33,14 +39,25 @@ struct ViewSettings {
   std::string shading_name() const;  // "material" when not forced
 };
 
-enum class SettingChange { none, mode, shading, fov, size, threads, overlay, help, fullscreen };
+enum class SettingChange {
+  none,
+  mode,
+  shading,
+  fov,
+  size,
+  threads,
+  overlay,
+  help,
+  fullscreen,
+  backend
+};
 
 struct SettingUpdate {
   SettingChange change = SettingChange::none;
   std::string message;  // e.g. "render mode: wireframe"
 };
 
-// Applies a function key (an SDL_Keycode); keys that are not F1-F9 or F11 change nothing.
+// Applies a function key (an SDL_Keycode); keys that are not F1-F11 change nothing.
 SettingUpdate apply_function_key(int keycode, ViewSettings& settings);
 
 // Render resolutions that F5/F6 step through.

@@ -317,6 +317,65 @@ TEST(GltfImport, ExternalBufferAndTextureBesideTheModel) {
   EXPECT_NE(material_of(allowed.scene).base_color_map.texture, missing_texture());
 }
 
+// --- KHR_mesh_quantization ----------------------------------------------------------------
+
+// The unit quad with quantized attributes: positions as unnormalized shorts 0..100 (the node
+// scales them by 0.01), padded to 8 bytes a vertex as glTF aligns them; normals as normalized
+// signed bytes; texture coordinates as normalized unsigned shorts.
+TEST(GltfImport, QuantizedPositionsNormalsAndTextureCoordinates) {
+  GltfBuilder b;
+  b.json["extensionsUsed"] = {"KHR_mesh_quantization"};
+  b.json["extensionsRequired"] = {"KHR_mesh_quantization"};
+  const std::vector<std::int16_t> positions = {0,   0,   0, 0, 100, 0,   0, 0,
+                                               100, 100, 0, 0, 0,   100, 0, 0};
+  const std::vector<std::int8_t> normals = {0, 0, 127, 0, 0, 0, 127, 0, 0, 0, 127, 0, 0, 0, 127, 0};
+  const std::vector<std::uint16_t> uvs = {0, 65535, 65535, 65535, 65535, 0, 0, 0};
+  const int p = b.accessor(b.view(positions.data(), positions.size() * 2, 8), kGlShort, 4, "VEC3");
+  b.json["accessors"][p]["min"] = {0, 0, 0};
+  b.json["accessors"][p]["max"] = {100, 100, 0};
+  const int n = b.accessor(b.view(normals.data(), normals.size(), 4), kGlByte, 4, "VEC3", true);
+  const int uv = b.accessor(b.view(uvs.data(), uvs.size() * 2), kGlUnsignedShort, 4, "VEC2", true);
+  const int i = b.indices({0, 1, 2, 0, 2, 3});
+  b.add_mesh_node(
+      {{"attributes", {{"POSITION", p}, {"NORMAL", n}, {"TEXCOORD_0", uv}}}, {"indices", i}},
+      {{"scale", {0.01, 0.01, 0.01}}});
+  const Imported got = import_file(b.write_glb(dir_for("quantized") / "q.glb"));
+  EXPECT_TRUE(got.warnings.empty()) << got.warnings[0];
+  const Mesh& mesh = mesh_of(got.scene);
+  ASSERT_EQ(mesh.positions.size(), 4u);
+  for (std::size_t v = 0; v < 4; ++v) {
+    const glm::vec3 q = mesh.positions[v];
+    EXPECT_TRUE(q.x == 0 || q.x == 100) << q.x;
+    EXPECT_NEAR(glm::length(mesh.normals[v] - glm::vec3(0, 0, 1)), 0.0f, 1e-6f);
+    EXPECT_NEAR(mesh.texcoords[v].x, q.x / 100, 1e-6f);  // glTF v down, facet's up
+    EXPECT_NEAR(mesh.texcoords[v].y, q.y / 100, 1e-6f);
+  }
+  const Bounds bounds = got.scene.bounds();
+  EXPECT_NEAR(bounds.max.x, 1.0f, 1e-6f);
+  EXPECT_NEAR(bounds.max.y, 1.0f, 1e-6f);
+  EXPECT_GT(render_small(got.scene).triangles_in, 0u);
+}
+
+// Normalized unsigned byte positions (0..255 -> 0..1) and a normalized short, -32768, clamped
+// to -1 as glTF 2.0 §3.11 says.
+TEST(GltfImport, NormalizedIntegerPositionsAreScaledToUnitRange) {
+  GltfBuilder b;
+  const std::vector<std::uint8_t> positions = {0, 0, 0, 0, 255, 0, 0, 0, 0, 255, 0, 0};
+  const int p =
+      b.accessor(b.view(positions.data(), positions.size(), 4), kGlUnsignedByte, 3, "VEC3", true);
+  const std::vector<std::int16_t> shorts = {-32768, 0, 0, 0, 32767, 0, 0, 0, 0, 32767, 0, 0};
+  const int s = b.accessor(b.view(shorts.data(), shorts.size() * 2, 8), kGlShort, 3, "VEC3", true);
+  b.add_mesh_node({{"attributes", {{"POSITION", p}}}});
+  b.add_mesh_node({{"attributes", {{"POSITION", s}}}});
+  const Imported got = import_file(b.write_gltf(dir_for("normalized") / "n.gltf"));
+  const Mesh& bytes = *got.scene.meshes.at(0);
+  const Mesh& halves = *got.scene.meshes.at(1);
+  EXPECT_EQ(bytes.positions[1], glm::vec3(1, 0, 0));
+  EXPECT_EQ(bytes.positions[2], glm::vec3(0, 1, 0));
+  EXPECT_EQ(halves.positions[0], glm::vec3(-1, 0, 0));
+  EXPECT_EQ(halves.positions[1], glm::vec3(1, 0, 0));
+}
+
 // --- damaged files ---------------------------------------------------------------------
 
 TEST(GltfImport, AccessorReachingPastItsBufferFailsNamingIt) {

@@ -419,6 +419,77 @@ TEST(GltfImport, MirroredAndPlainUsesOfOneMeshGetTheirOwnWinding) {
   EXPECT_EQ(plain.indices[2], flipped.indices[1]);
 }
 
+// --- texture coordinate sets and KHR_texture_transform -----------------------------------
+
+// The quad with a second texture coordinate set, TEXCOORD_1 = (1 - u, v) of TEXCOORD_0.
+json two_set_quad(GltfBuilder& b) {
+  json quad = unit_quad(b);
+  quad["attributes"]["TEXCOORD_1"] = b.vec2s({{1, 1}, {0, 1}, {0, 0}, {1, 0}});
+  return quad;
+}
+
+TEST(GltfImport, TexCoordPicksTheSetAndTextureTransformEachMapsOwn) {
+  GltfBuilder b;
+  const int texture = add_embedded_image(b);
+  b.json["extensionsUsed"] = {"KHR_texture_transform"};
+  const json transform = {{"offset", {0.5, 0.25}}, {"rotation", 0.3}, {"scale", {2, 3}}};
+  b.json["materials"] = {{{"name", "second set"},
+                          {"pbrMetallicRoughness",
+                           {{"baseColorTexture",
+                             {{"index", texture},
+                              {"texCoord", 0},
+                              {"extensions", {{"KHR_texture_transform", {{"texCoord", 1}}}}}}}}},
+                          {"emissiveTexture",
+                           {{"index", texture},
+                            {"texCoord", 1},
+                            {"extensions", {{"KHR_texture_transform", transform}}}}}}};
+  json quad = two_set_quad(b);
+  quad["material"] = 0;
+  b.add_mesh_node(quad);
+  const Imported got = import_file(b.write_gltf(dir_for("texcoord") / "t.gltf"));
+  EXPECT_TRUE(got.warnings.empty()) << got.warnings[0];
+  const Mesh& mesh = mesh_of(got.scene);
+  for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+    EXPECT_NEAR(mesh.texcoords[v].x, 1.0f - mesh.positions[v].x, 1e-6f);  // set 1
+    EXPECT_NEAR(mesh.texcoords[v].y, mesh.positions[v].y, 1e-6f);
+  }
+  const Material& m = material_of(got.scene);
+  EXPECT_EQ(m.base_color_map.transform, glm::mat3(1.0f));
+  // glTF's uv' = T R S uv with v down; facet's v is up: the map's transform is glTF's
+  // conjugated by v -> 1 - v.
+  const float c = std::cos(0.3f), s = std::sin(0.3f);
+  for (glm::vec2 p : {glm::vec2(0.1f, 0.2f), glm::vec2(0.9f, 0.6f)}) {
+    glm::vec2 g(p.x, 1.0f - p.y);
+    g *= glm::vec2(2, 3);
+    g = glm::vec2(c * g.x + s * g.y, -s * g.x + c * g.y) + glm::vec2(0.5f, 0.25f);
+    const glm::vec3 got_uv = m.emissive_map.transform * glm::vec3(p, 1.0f);
+    EXPECT_NEAR(got_uv.x, g.x, 1e-5f);
+    EXPECT_NEAR(got_uv.y, 1.0f - g.y, 1e-5f);
+  }
+}
+
+// facet meshes carry one set: maps of one material that ask for different sets keep the base
+// color map's, with one warning naming the material.
+TEST(GltfImport, MapsOnDifferentSetsWarnOnceAndKeepTheBaseColorSet) {
+  GltfBuilder b;
+  const int texture = add_embedded_image(b);
+  b.json["materials"] = {{{"name", "two sets"},
+                          {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", texture}}}}},
+                          {"normalTexture", {{"index", texture}, {"texCoord", 1}}},
+                          {"occlusionTexture", {{"index", texture}, {"texCoord", 1}}}}};
+  json quad = two_set_quad(b);
+  quad["material"] = 0;
+  b.add_mesh_node(quad);
+  const Imported got = import_file(b.write_glb(dir_for("two_sets") / "t.glb"));
+  ASSERT_EQ(got.warnings.size(), 1u);
+  EXPECT_TRUE(
+      contains(got.warnings[0], "material 'two sets' reads texture coordinate sets 0 and 1"))
+      << got.warnings[0];
+  const Mesh& mesh = mesh_of(got.scene);
+  for (std::size_t v = 0; v < mesh.positions.size(); ++v)
+    EXPECT_NEAR(mesh.texcoords[v].x, mesh.positions[v].x, 1e-6f);  // set 0
+}
+
 // --- damaged files ---------------------------------------------------------------------
 
 TEST(GltfImport, AccessorReachingPastItsBufferFailsNamingIt) {

@@ -490,6 +490,78 @@ TEST(GltfImport, MapsOnDifferentSetsWarnOnceAndKeepTheBaseColorSet) {
     EXPECT_NEAR(mesh.texcoords[v].x, mesh.positions[v].x, 1e-6f);  // set 0
 }
 
+// --- EXT_mesh_gpu_instancing and primitive modes ------------------------------------------
+
+TEST(GltfImport, GpuInstancesBecomeChildNodes) {
+  GltfBuilder b;
+  b.json["extensionsUsed"] = {"EXT_mesh_gpu_instancing"};
+  const int node = b.add_mesh_node(unit_quad(b), {{"translation", {0, 10, 0}}});
+  const int translations = b.vec3s({{0, 0, 0}, {2, 0, 0}, {4, 0, 0}});
+  const int scales = b.vec3s({{1, 1, 1}, {1, 1, 1}, {-1, 1, 1}});
+  const int rotations = b.vec4s({{0, 0, 0, 1}, {0, 0, 0.70710678f, 0.70710678f}, {0, 0, 0, 1}});
+  b.json["nodes"][node]["extensions"]["EXT_mesh_gpu_instancing"]["attributes"] = {
+      {"TRANSLATION", translations}, {"ROTATION", rotations}, {"SCALE", scales}};
+  const Imported got = import_file(b.write_glb(dir_for("instancing") / "i.glb"));
+  EXPECT_TRUE(got.warnings.empty()) << got.warnings[0];
+  ASSERT_EQ(got.scene.nodes.size(), 4u);
+  EXPECT_TRUE(got.scene.nodes[0].instances.empty());
+  EXPECT_EQ(got.scene.triangle_count(), 6u);
+  for (int i = 1; i <= 3; ++i) {
+    EXPECT_EQ(got.scene.nodes[i].parent, 0);
+    const glm::vec3 origin = glm::vec3(got.scene.world_transform(i)[3]);
+    EXPECT_NEAR(glm::length(origin - glm::vec3(2.0f * (i - 1), 10, 0)), 0.0f, 1e-5f);
+  }
+  // Instance 1 turned 90 degrees about z: its x axis is world y.
+  const glm::vec3 x_axis = glm::vec3(got.scene.world_transform(2)[0]);
+  EXPECT_NEAR(glm::length(x_axis - glm::vec3(0, 1, 0)), 0.0f, 1e-5f);
+  // Instance 2 is mirrored: its own, reversed copy of the mesh, drawn from the front.
+  EXPECT_NE(got.scene.nodes[3].instances[0].mesh, got.scene.nodes[1].instances[0].mesh);
+  EXPECT_EQ(render_small(got.scene).culled, 0u);
+}
+
+// Four vertices (0, 0), (1, 0), (0, 1), (1, 1) in each glTF mode (a fan: round the quad).
+TEST(GltfImport, EveryPrimitiveModeIsDrawn) {
+  struct Case {
+    int mode;
+    Topology topology;
+    std::size_t primitives;
+  };
+  const Case cases[] = {{0, Topology::points, 4},    {1, Topology::lines, 2},
+                        {2, Topology::lines, 4},     {3, Topology::lines, 3},
+                        {4, Topology::triangles, 1}, {5, Topology::triangles, 2},
+                        {6, Topology::triangles, 2}};
+  for (const Case& c : cases) {
+    SCOPED_TRACE("mode " + std::to_string(c.mode));
+    GltfBuilder b;
+    // A fan walks round its first vertex: the quad's corners in order.
+    const int p = c.mode == 6 ? b.positions({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}})
+                              : b.positions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}});
+    b.add_mesh_node({{"attributes", {{"POSITION", p}}}, {"mode", c.mode}});
+    const Imported got =
+        import_file(b.write_gltf(dir_for("mode" + std::to_string(c.mode)) / "m.gltf"));
+    const Mesh& mesh = mesh_of(got.scene);
+    EXPECT_EQ(mesh.topology, c.topology);
+    EXPECT_EQ(mesh.primitive_count(), c.primitives);
+    if (c.topology == Topology::triangles) {
+      // Strips and fans turn every triangle the same way: all face +Z.
+      for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        const glm::vec3 a = mesh.positions[mesh.indices[t]],
+                        e1 = mesh.positions[mesh.indices[t + 1]] - a,
+                        e2 = mesh.positions[mesh.indices[t + 2]] - a;
+        EXPECT_GT(glm::cross(e1, e2).z, 0.0f) << "triangle " << t / 3;
+      }
+    }
+    const FrameStats stats = render_small(got.scene);
+    EXPECT_EQ(stats.points_drawn, c.topology == Topology::points ? c.primitives : 0u);
+    if (c.topology == Topology::lines) {
+      EXPECT_EQ(stats.lines_drawn, c.primitives);
+    }
+    if (c.topology == Topology::triangles) {
+      EXPECT_EQ(stats.culled, 0u);
+    }
+  }
+}
+
 // --- damaged files ---------------------------------------------------------------------
 
 TEST(GltfImport, AccessorReachingPastItsBufferFailsNamingIt) {

@@ -562,6 +562,56 @@ TEST(GltfImport, EveryPrimitiveModeIsDrawn) {
   }
 }
 
+// --- nothing to draw, unsupported required extensions -----------------------------------
+
+TEST(GltfImport, ValidFileWithNothingToDrawIsAnErrorAndTheCliExitsNonZero) {
+  GltfBuilder b;
+  b.add_mesh_node(unit_quad(b));
+  b.json["scenes"][0]["nodes"] = json::array();
+  b.json["nodes"].push_back({{"name", "camera holder"}});
+  b.json["scenes"][0]["nodes"].push_back(1);  // the mesh is in the file, but not in the scene
+  const fs::path dir = dir_for("nothing");
+  const fs::path file = b.write_gltf(dir / "empty.gltf");
+  try {
+    import_file(file);
+    FAIL() << "imported";
+  } catch (const Error& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.rfind(file.string() + ": nothing to draw", 0), 0u) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos);
+  }
+  const CommandResult r = run_command(std::string(FACET_CLI) + " render '" + file.string() +
+                                      "' -o '" + (dir / "out.png").string() + "' --size 64x64");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_EQ(std::count(r.stderr_text.begin(), r.stderr_text.end(), '\n'), 1) << r.stderr_text;
+  EXPECT_TRUE(contains(r.stderr_text, "nothing to draw")) << r.stderr_text;
+  EXPECT_FALSE(fs::exists(dir / "out.png"));
+}
+
+// KHR_texture_basisu (KTX2 images facet cannot decode): one warning naming the extension; the
+// texture that has no other source is left out (the material's factors alone), not a checker.
+TEST(GltfImport, UnsupportedRequiredExtensionIsOneWarningNamingIt) {
+  GltfBuilder b;
+  b.json["extensionsUsed"] = {"KHR_texture_basisu"};
+  b.json["extensionsRequired"] = {"KHR_texture_basisu"};
+  const std::string ktx2 = "\xABKTX 20\xBB\r\n\x1A\n";
+  b.json["images"] = {
+      {{"bufferView", b.view(ktx2.data(), ktx2.size())}, {"mimeType", "image/ktx2"}}};
+  b.json["textures"] = {{{"extensions", {{"KHR_texture_basisu", {{"source", 0}}}}}}};
+  b.json["materials"] = {
+      {{"pbrMetallicRoughness",
+        {{"baseColorFactor", {0, 0, 1, 1}}, {"baseColorTexture", {{"index", 0}}}}}}};
+  json quad = unit_quad(b);
+  quad["material"] = 0;
+  b.add_mesh_node(quad);
+  const fs::path file = b.write_glb(dir_for("basisu") / "b.glb");
+  const Imported got = import_file(file);
+  ASSERT_EQ(got.warnings.size(), 1u);
+  EXPECT_TRUE(contains(got.warnings[0], "requires KHR_texture_basisu")) << got.warnings[0];
+  EXPECT_FALSE(material_of(got.scene).base_color_map);
+  EXPECT_EQ(material_of(got.scene).base_color, glm::vec4(0, 0, 1, 1));
+}
+
 // --- damaged files ---------------------------------------------------------------------
 
 TEST(GltfImport, AccessorReachingPastItsBufferFailsNamingIt) {

@@ -47,6 +47,14 @@ class SceneBuilder {
     texcoord_set_ = std::move(materials.texcoord_set);
     node_of_.assign(model_.nodes.size(), -1);
     for (int root : roots()) add_tree(root);
+    // A valid file may still draw nothing (a scene of cameras, meshes no node places, quantized
+    // data a reader did not scale): say so rather than leave an empty image.
+    const bool drawn = std::any_of(scene_.nodes.begin(), scene_.nodes.end(),
+                                   [](const SceneNode& n) { return !n.instances.empty(); });
+    if (!drawn)
+      throw Error(file_.path + ": nothing to draw: the scene places no mesh with positions (" +
+                  std::to_string(model_.nodes.size()) + " nodes and " +
+                  std::to_string(model_.meshes.size()) + " meshes in the file)");
     import_gltf_cameras_and_lights(file_, node_of_, options_, scene_);
     return std::move(scene_);
   }

@@ -612,6 +612,59 @@ TEST(GltfImport, UnsupportedRequiredExtensionIsOneWarningNamingIt) {
   EXPECT_EQ(material_of(got.scene).base_color, glm::vec4(0, 0, 1, 1));
 }
 
+// --- material extensions ------------------------------------------------------------------
+
+Scene import_materials(const json& materials, const std::string& name) {
+  GltfBuilder b;
+  b.json["materials"] = materials;
+  for (std::size_t i = 0; i < materials.size(); ++i) {
+    json quad = unit_quad(b);
+    quad["material"] = i;
+    b.add_mesh_node(quad, {{"translation", {2.0 * i, 0, 0}}});
+  }
+  return import_file(b.write_gltf(dir_for(name) / "m.gltf")).scene;
+}
+
+TEST(GltfImport, SpecularGlossinessBecomesMetallicRoughness) {
+  const Scene scene = import_materials(
+      {{{"extensions",
+         {{"KHR_materials_pbrSpecularGlossiness",
+           {{"diffuseFactor", {0.8, 0.2, 0.2, 1}},
+            {"specularFactor", {0.04, 0.04, 0.04}},
+            {"glossinessFactor", 0.75}}}}}},
+       {{"extensions",
+         {{"KHR_materials_pbrSpecularGlossiness",
+           {{"diffuseFactor", {0, 0, 0, 1}}, {"specularFactor", {1, 0.8, 0.3}}}}}}}},
+      "spec_gloss");
+  const Material& plastic = material_of(scene, 0);
+  EXPECT_EQ(plastic.shading, ShadingModel::pbr);
+  EXPECT_NEAR(plastic.metallic, 0.0f, 1e-6f);  // a dielectric's 4 %
+  EXPECT_NEAR(plastic.roughness, 0.25f, 1e-6f);
+  EXPECT_NEAR(glm::length(glm::vec3(plastic.base_color) - glm::vec3(0.8f, 0.2f, 0.2f)), 0, 1e-5f);
+  const Material& gold = material_of(scene, 1);
+  EXPECT_GT(gold.metallic, 0.9f);
+  EXPECT_NEAR(gold.roughness, 0.0f, 1e-6f);  // glossiness 1
+  EXPECT_NEAR(glm::length(glm::vec3(gold.base_color) - glm::vec3(1, 0.8f, 0.3f)), 0, 0.05f);
+}
+
+TEST(GltfImport, UnlitEmissiveStrengthTransmissionAndClearcoat) {
+  const Scene scene = import_materials(
+      {{{"extensions", {{"KHR_materials_unlit", json::object()}}}},
+       {{"emissiveFactor", {1, 0.5, 0}},
+        {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 4}}}}}},
+       {{"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1}}}}}},
+       {{"pbrMetallicRoughness", {{"roughnessFactor", 0.8}}},
+        {"extensions",
+         {{"KHR_materials_clearcoat", {{"clearcoatFactor", 0.5}, {"clearcoatRoughness", 0.2}}}}}}},
+      "material_extensions");
+  EXPECT_EQ(material_of(scene, 0).shading, ShadingModel::unlit);
+  EXPECT_EQ(material_of(scene, 1).emissive, glm::vec3(4, 2, 0));
+  const Material& glass = material_of(scene, 2);
+  EXPECT_EQ(glass.alpha_mode, AlphaMode::blend);
+  EXPECT_LT(glass.base_color.a, 0.5f);
+  EXPECT_NEAR(material_of(scene, 3).roughness, 0.5f, 1e-6f);
+}
+
 // --- damaged files ---------------------------------------------------------------------
 
 TEST(GltfImport, AccessorReachingPastItsBufferFailsNamingIt) {

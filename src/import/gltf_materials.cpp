@@ -8,6 +8,9 @@
 //   KHR_materials_emissive_strength       scales the emissive factor
 //   KHR_materials_transmission  approximated as blending: facet draws no refraction, so a glass
 //                               is see-through by (1 - transmission) of its color's weight
+//   KHR_materials_clearcoat     approximated in the one specular lobe: roughness moves toward
+//                               the coat's as far as clearcoatFactor says
+//   (sheen, specular, ior, volume and the rest are not read: the base layer is drawn)
 //   KHR_texture_transform       each map's own transform (TextureMap::transform)
 //   texCoord                    facet meshes carry one texture coordinate set: a material reads
 //                               the set of its base color map (else its first map's); maps that
@@ -173,6 +176,12 @@ class Converter {
         out.alpha_mode = AlphaMode::blend;
         out.base_color.a *= 1.0f - 0.9f * transmission;  // a glass keeps its highlights
       }
+    }
+    if (const auto* c = extension(m.extensions, "KHR_materials_clearcoat")) {
+      // One specular lobe: the coat's gloss shows as the surface's, as far as the coat covers it.
+      const float coat = clamp01(number(*c, "clearcoatFactor", 0.0));
+      const float coat_roughness = clamp01(number(*c, "clearcoatRoughness", 0.0));
+      out.roughness = std::min(out.roughness, glm::mix(out.roughness, coat_roughness, coat));
     }
   }
 

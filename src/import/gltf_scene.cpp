@@ -29,6 +29,7 @@ const std::set<std::string> kSupported = {
     "KHR_materials_pbrSpecularGlossiness",
     "KHR_materials_emissive_strength",
     "KHR_materials_transmission",
+    "KHR_materials_clearcoat",
     "KHR_draco_mesh_compression",
     "EXT_meshopt_compression",
     "KHR_lights_punctual",

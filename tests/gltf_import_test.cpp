@@ -3,6 +3,7 @@
 // vertex colors, cameras, lights, quantized attributes, mirrored nodes, texture coordinate sets,
 // instancing, every primitive mode, files with nothing to draw and required extensions.
 #include <gtest/gtest.h>
+#include <meshoptimizer.h>
 
 #include <algorithm>
 #include <cmath>
@@ -16,6 +17,7 @@
 #include "facet/import.hpp"
 #include "support/gltf_builder.hpp"
 #include "support/render_helpers.hpp"
+#include "support/required_package.hpp"
 #include "support/sample_models.hpp"
 
 namespace facet::test {
@@ -663,6 +665,90 @@ TEST(GltfImport, UnlitEmissiveStrengthTransmissionAndClearcoat) {
   EXPECT_EQ(glass.alpha_mode, AlphaMode::blend);
   EXPECT_LT(glass.base_color.a, 0.5f);
   EXPECT_NEAR(material_of(scene, 3).roughness, 0.5f, 1e-6f);
+}
+
+// --- compressed meshes ----------------------------------------------------------------------
+
+// The Draco-compressed copy of 2CylinderEngine in assimp-testmodels draws in the same place as
+// the uncompressed GLB. The compressed copy holds 110336 triangles to the GLB's 121496 (the
+// copies differ; assimp's own Draco decoding gave the same 110336).
+TEST(GltfImport, DracoCompressedModelMatchesItsUncompressedCopy) {
+  const fs::path draco = kSampleModels / "glTF2/draco/2CylinderEngine.gltf";
+  const fs::path plain = kSampleModels / "glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb";
+  FACET_REQUIRE_PACKAGE(fs::exists(draco) && fs::exists(plain),
+                        "assimp-testmodels is not installed");
+  const Imported compressed = import_file(draco);
+  const Imported uncompressed = import_file(plain);
+  EXPECT_TRUE(compressed.warnings.empty()) << compressed.warnings[0];
+  EXPECT_EQ(compressed.scene.triangle_count(), 110336u);
+  EXPECT_EQ(uncompressed.scene.triangle_count(), 121496u);
+  const Bounds a = compressed.scene.bounds(), b = uncompressed.scene.bounds();
+  const float size = glm::length(b.max - b.min);
+  EXPECT_LT(glm::length(a.min - b.min), size * 1e-3f);  // Draco quantizes positions
+  EXPECT_LT(glm::length(a.max - b.max), size * 1e-3f);
+}
+
+// EXT_meshopt_compression: positions and indices encoded with meshoptimizer, in a GLB and in a
+// .gltf whose fallback buffer has no URI (as gltfpack writes them).
+TEST(GltfImport, MeshoptCompressedViewsAreDecoded) {
+  const std::vector<glm::vec3> positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  const std::vector<unsigned> indices = {0, 1, 2, 0, 2, 3};
+  std::vector<unsigned char> vertices(meshopt_encodeVertexBufferBound(4, 12));
+  vertices.resize(
+      meshopt_encodeVertexBuffer(vertices.data(), vertices.size(), positions.data(), 4, 12));
+  std::vector<unsigned char> triangles(meshopt_encodeIndexBufferBound(6, 4));
+  triangles.resize(
+      meshopt_encodeIndexBuffer(triangles.data(), triangles.size(), indices.data(), 6));
+  GltfBuilder b;
+  b.json["extensionsUsed"] = {"EXT_meshopt_compression"};
+  b.json["extensionsRequired"] = {"EXT_meshopt_compression"};
+  b.view(vertices.data(), vertices.size());
+  b.view(triangles.data(), triangles.size());
+  const json compressed = b.json["bufferViews"];
+  auto meshopt = [&](int i, int stride, int count, const char* mode) {
+    return json{{"buffer", 0},
+                {"byteOffset", compressed[i]["byteOffset"]},
+                {"byteLength", compressed[i]["byteLength"]},
+                {"byteStride", stride},
+                {"count", count},
+                {"mode", mode}};
+  };
+  b.json["buffers"] = {
+      nullptr,
+      {{"byteLength", 72}, {"extensions", {{"EXT_meshopt_compression", {{"fallback", true}}}}}}};
+  b.json["bufferViews"] = {
+      {{"buffer", 1},
+       {"byteLength", 48},
+       {"byteStride", 12},
+       {"extensions", {{"EXT_meshopt_compression", meshopt(0, 12, 4, "ATTRIBUTES")}}}},
+      {{"buffer", 1},
+       {"byteOffset", 48},
+       {"byteLength", 24},
+       {"extensions", {{"EXT_meshopt_compression", meshopt(1, 4, 6, "TRIANGLES")}}}}};
+  const int p = b.accessor(0, kGlFloat, 4, "VEC3");
+  b.json["accessors"][p]["min"] = {0, 0, 0};
+  b.json["accessors"][p]["max"] = {1, 1, 0};
+  const int i = b.accessor(1, kGlUnsignedInt, 6, "SCALAR");
+  b.add_mesh_node({{"attributes", {{"POSITION", p}}}, {"indices", i}});
+  const fs::path dir = dir_for("meshopt");
+  for (const fs::path& file : {b.write_glb(dir / "m.glb"), b.write_gltf(dir / "m.gltf")}) {
+    SCOPED_TRACE(file.string());
+    const Imported got = import_file(file);
+    EXPECT_TRUE(got.warnings.empty()) << got.warnings[0];
+    const Mesh& mesh = mesh_of(got.scene);
+    EXPECT_EQ(mesh.primitive_count(), 2u);
+    const Bounds bounds = got.scene.bounds();
+    EXPECT_EQ(bounds.min, glm::vec3(0, 0, 0));
+    EXPECT_EQ(bounds.max, glm::vec3(1, 1, 0));
+  }
+  // A count the compressed bytes cannot hold is refused before anything is allocated.
+  b.json["bufferViews"][0]["extensions"]["EXT_meshopt_compression"]["count"] = 100000000;
+  try {
+    import_file(b.write_glb(dir / "liar.glb"));
+    FAIL() << "imported";
+  } catch (const Error& e) {
+    EXPECT_TRUE(contains(e.what(), "more than the codec can hold")) << e.what();
+  }
 }
 
 // --- damaged files ---------------------------------------------------------------------

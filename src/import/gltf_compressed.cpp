@@ -5,7 +5,7 @@
 //   accessor without a buffer view, which is how a Draco primitive's indices are written (the
 //   indices are in the Draco data), and a .gltf buffer without a URI, which is how meshopt's
 //   fallback buffers are written (the data is in the compressed views). Such a primitive loses
-//   its "indices" and such a buffer gets an empty data URI; nothing else changes.
+//   its "indices" and such a buffer gets a three-byte data URI; nothing else changes.
 // * After (decode_meshopt_views): each EXT_meshopt_compression buffer view is decoded
 //   (meshoptimizer) into a buffer of its own, and the view pointed at it, so that accessors read
 //   it as any other. A view that claims more than kMaxDecodedRatio times its compressed size, or
@@ -57,8 +57,9 @@ bool adapt(nlohmann::json& doc) {
     for (auto& b : doc["buffers"]) {
       if (b.is_object() && !b.contains("uri") && b.contains("extensions") &&
           b["extensions"].is_object() && b["extensions"].contains("EXT_meshopt_compression")) {
-        b["uri"] = "data:application/octet-stream;base64,";
-        b["byteLength"] = 0;
+        // Three zero bytes: tinygltf decodes no empty data URI, and the buffer is never read.
+        b["uri"] = "data:application/octet-stream;base64,AAAA";
+        b["byteLength"] = 3;
         changed = true;
       }
     }

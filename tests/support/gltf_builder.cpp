@@ -102,14 +102,16 @@ int GltfBuilder::add_mesh_node(const nlohmann::json& primitive, const nlohmann::
 
 std::string GltfBuilder::gltf_text() const {
   nlohmann::json doc = json;
-  doc["buffers"] = {{{"byteLength", buffer.size()},
-                     {"uri", "data:application/octet-stream;base64," + base64(buffer)}}};
+  if (!doc.contains("buffers")) doc["buffers"] = {nullptr};
+  doc["buffers"][0] = {{"byteLength", buffer.size()},
+                       {"uri", "data:application/octet-stream;base64," + base64(buffer)}};
   return doc.dump();
 }
 
 std::string GltfBuilder::glb_bytes() const {
   nlohmann::json doc = json;
-  doc["buffers"] = {{{"byteLength", buffer.size()}}};
+  if (!doc.contains("buffers")) doc["buffers"] = {nullptr};
+  doc["buffers"][0] = {{"byteLength", buffer.size()}};
   std::string text = doc.dump();
   while (text.size() % 4) text += ' ';
   std::string bin(buffer.begin(), buffer.end());

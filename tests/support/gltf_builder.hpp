@@ -42,7 +42,9 @@ class GltfBuilder {
   std::filesystem::path write_gltf(const std::filesystem::path& path) const;
   std::filesystem::path write_glb(const std::filesystem::path& path) const;
 
-  nlohmann::json json;  // the document; "buffers" is filled in when written
+  // The document. Buffer 0 (`buffer`) is filled in when written; a test may add more buffers
+  // after it in json["buffers"] (put a null first).
+  nlohmann::json json;
   std::vector<std::uint8_t> buffer;
 };
 

@@ -2,6 +2,8 @@
 // (support/gltf_builder.hpp): meshes, node transforms, materials with their maps and samplers,
 // vertex colors, cameras, lights, quantized attributes, mirrored nodes, texture coordinate sets,
 // instancing, every primitive mode, files with nothing to draw and required extensions.
+#include <draco/compression/encode.h>
+#include <draco/mesh/triangle_soup_mesh_builder.h>
 #include <gtest/gtest.h>
 #include <meshoptimizer.h>
 
@@ -686,6 +688,70 @@ TEST(GltfImport, DracoCompressedModelMatchesItsUncompressedCopy) {
   const float size = glm::length(b.max - b.min);
   EXPECT_LT(glm::length(a.min - b.min), size * 1e-3f);  // Draco quantizes positions
   EXPECT_LT(glm::length(a.max - b.max), size * 1e-3f);
+}
+
+// KHR_draco_mesh_compression on a model made here: the unit quad's two triangles with texture
+// coordinates, encoded by Draco (positions quantized to 14 bits), indices only in the Draco data.
+TEST(GltfImport, DracoPrimitiveDecodesPositionsTextureCoordinatesAndTriangles) {
+  draco::TriangleSoupMeshBuilder soup;
+  soup.Start(2);
+  const int pos = soup.AddAttribute(draco::GeometryAttribute::POSITION, 3, draco::DT_FLOAT32);
+  const int tex = soup.AddAttribute(draco::GeometryAttribute::TEX_COORD, 2, draco::DT_FLOAT32);
+  const glm::vec3 corner[4] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  const int faces[2][3] = {{0, 1, 2}, {0, 2, 3}};
+  for (int f = 0; f < 2; ++f) {
+    glm::vec3 p[3];
+    glm::vec2 uv[3];
+    for (int c = 0; c < 3; ++c) {
+      p[c] = corner[faces[f][c]];
+      uv[c] = glm::vec2(p[c].x, 1.0f - p[c].y);  // glTF's v runs down
+    }
+    soup.SetAttributeValuesForFace(pos, draco::FaceIndex(f), &p[0], &p[1], &p[2]);
+    soup.SetAttributeValuesForFace(tex, draco::FaceIndex(f), &uv[0], &uv[1], &uv[2]);
+  }
+  std::unique_ptr<draco::Mesh> mesh = soup.Finalize();
+  ASSERT_TRUE(mesh);
+  draco::Encoder encoder;
+  encoder.SetAttributeQuantization(draco::GeometryAttribute::POSITION, 14);
+  draco::EncoderBuffer encoded;
+  ASSERT_TRUE(encoder.EncodeMeshToBuffer(*mesh, &encoded).ok());
+
+  GltfBuilder b;
+  b.json["extensionsUsed"] = {"KHR_draco_mesh_compression"};
+  b.json["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+  const int view = b.view(encoded.data(), encoded.size());
+  const std::size_t points = mesh->num_points();
+  b.json["accessors"] = {{{"componentType", kGlFloat},
+                          {"count", points},
+                          {"type", "VEC3"},
+                          {"min", {0, 0, 0}},
+                          {"max", {1, 1, 0}}},
+                         {{"componentType", kGlFloat}, {"count", points}, {"type", "VEC2"}},
+                         {{"componentType", kGlUnsignedShort}, {"count", 6}, {"type", "SCALAR"}}};
+  b.add_mesh_node({{"attributes", {{"POSITION", 0}, {"TEXCOORD_0", 1}}},
+                   {"indices", 2},
+                   {"extensions",
+                    {{"KHR_draco_mesh_compression",
+                      {{"bufferView", view},
+                       {"attributes",
+                        {{"POSITION", mesh->attribute(pos)->unique_id()},
+                         {"TEXCOORD_0", mesh->attribute(tex)->unique_id()}}}}}}}});
+  const fs::path dir = dir_for("draco");
+  for (const fs::path& file : {b.write_glb(dir / "d.glb"), b.write_gltf(dir / "d.gltf")}) {
+    SCOPED_TRACE(file.string());
+    const Imported got = import_file(file);
+    EXPECT_TRUE(got.warnings.empty()) << got.warnings[0];
+    const Mesh& quad = mesh_of(got.scene);
+    EXPECT_EQ(quad.primitive_count(), 2u);
+    ASSERT_EQ(quad.texcoords.size(), quad.positions.size());
+    for (std::size_t v = 0; v < quad.positions.size(); ++v) {
+      EXPECT_NEAR(quad.texcoords[v].x, quad.positions[v].x, 1e-3f);
+      EXPECT_NEAR(quad.texcoords[v].y, quad.positions[v].y, 1e-3f);
+    }
+    const Bounds bounds = got.scene.bounds();
+    EXPECT_NEAR(glm::length(bounds.max - glm::vec3(1, 1, 0)), 0.0f, 1e-3f);
+    EXPECT_EQ(render_small(got.scene).culled, 0u);  // the winding survived
+  }
 }
 
 // EXT_meshopt_compression: positions and indices encoded with meshoptimizer, in a GLB and in a

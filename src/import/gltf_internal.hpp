@@ -87,11 +87,13 @@ class GltfAccessors {
 
 // Materials, each with the texture coordinate set its maps read (Mesh has one set).
 struct GltfMaterials {
-  std::vector<Material> materials;  // the file's, then the glTF default material last
-  std::vector<int> texcoord_set;    // per material
+  std::vector<Material> materials;                       // the file's, in its order
+  std::vector<int> texcoord_set;                         // per material
   std::vector<std::shared_ptr<const Texture>> textures;  // every texture they use, once
 };
 GltfMaterials import_gltf_materials(const GltfFile& file, const ImportOptions& options);
+// glTF 2.0 §3.9.6's material for a primitive without one: white, metallic 1, roughness 1.
+Material gltf_default_material();
 
 // One primitive of a mesh as a facet Mesh (triangles, lines or points), finished (finish_mesh),
 // texture coordinates from set `texcoord_set` with v flipped to facet's v-up; `flip_winding`

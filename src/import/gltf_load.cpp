@@ -33,14 +33,25 @@ struct FileAccess {
   std::map<std::string, std::string>* refused = nullptr;
 };
 
+// The model's folder as tinygltf joins a URI to it (its JoinPath); empty for the working
+// directory.
+std::string folder_prefix(const FileAccess& access) {
+  const std::string& dir = access.base_dir;
+  return dir.empty() || dir.back() == '/' ? dir : dir + "/";
+}
+
 // The URI as the model wrote it, relative to the model's folder (tinygltf joins the two).
 std::string as_referenced(const std::string& path, const FileAccess& access) {
-  const std::string prefix = access.base_dir.empty() ? std::string() : access.base_dir + "/";
+  const std::string prefix = folder_prefix(access);
   return !prefix.empty() && path.rfind(prefix, 0) == 0 ? path.substr(prefix.size()) : path;
 }
 
 bool file_exists(const std::string& path, void* user) {
   const auto& access = *static_cast<const FileAccess*>(user);
+  // tinygltf looks for a URI beside the model, then in the working directory: only the first is
+  // the file the model means.
+  const std::string prefix = folder_prefix(access);
+  if (!prefix.empty() && path.rfind(prefix, 0) != 0) return false;
   struct stat st {};
   // A refused file "exists", so that reading it fails with the reason rather than "not found".
   return access.rules && ::stat(path.c_str(), &st) == 0;

@@ -122,13 +122,6 @@ class Converter {
       out_.materials.push_back(material(file_.model.materials[i]));
       out_.texcoord_set.push_back(texcoord_set(out_.materials.back()));
     }
-    Material fallback;  // glTF 2.0 §3.9.6's default material
-    fallback.name = "glTF default";
-    fallback.shading = ShadingModel::pbr;
-    fallback.metallic = 1.0f;
-    fallback.roughness = 1.0f;
-    out_.materials.push_back(fallback);
-    out_.texcoord_set.push_back(0);
     return std::move(out_);
   }
 
@@ -271,6 +264,15 @@ class Converter {
 };
 
 }  // namespace
+
+Material gltf_default_material() {
+  Material fallback;
+  fallback.name = "glTF default";
+  fallback.shading = ShadingModel::pbr;
+  fallback.metallic = 1.0f;
+  fallback.roughness = 1.0f;
+  return fallback;
+}
 
 GltfMaterials import_gltf_materials(const GltfFile& file, const ImportOptions& options) {
   return Converter(file, options).convert();

@@ -46,6 +46,7 @@ class SceneBuilder {
     scene_.materials = std::move(materials.materials);
     scene_.textures = std::move(materials.textures);
     texcoord_set_ = std::move(materials.texcoord_set);
+    file_materials_ = scene_.materials.size();
     node_of_.assign(model_.nodes.size(), -1);
     for (int root : roots()) add_tree(root);
     // A valid file may still draw nothing (a scene of cameras, meshes no node places, quantized
@@ -172,10 +173,8 @@ class SceneBuilder {
     std::vector<MeshInstance> out;
     const auto& primitives = model_.meshes[static_cast<std::size_t>(mesh)].primitives;
     for (std::size_t p = 0; p < primitives.size(); ++p) {
-      const int default_material = static_cast<int>(scene_.materials.size()) - 1;
       const int m = primitives[p].material;
-      const int material =
-          m >= 0 && m < default_material ? m : default_material;  // the glTF default last
+      const int material = m >= 0 && m < static_cast<int>(file_materials_) ? m : default_material();
       auto [it, added] = meshes_.try_emplace({mesh, static_cast<int>(p), mirrored}, -1);
       if (added) {
         auto made = gltf_primitive_mesh(file_, data_, mesh, static_cast<int>(p),
@@ -197,7 +196,19 @@ class SceneBuilder {
   const ImportOptions& options_;
   GltfAccessors data_;
   Scene scene_;
+  // The glTF default material, added after the file's when a primitive first needs it.
+  int default_material() {
+    if (default_material_ < 0) {
+      scene_.materials.push_back(gltf_default_material());
+      texcoord_set_.push_back(0);
+      default_material_ = static_cast<int>(scene_.materials.size()) - 1;
+    }
+    return default_material_;
+  }
+
   std::vector<int> texcoord_set_;
+  std::size_t file_materials_ = 0;
+  int default_material_ = -1;
   std::vector<int> node_of_;                          // glTF node -> Scene::nodes, -1 until placed
   std::map<std::tuple<int, int, bool>, int> meshes_;  // (mesh, primitive, mirrored) -> index
 };

@@ -618,8 +618,11 @@ TEST(GltfImport, UnsupportedRequiredExtensionIsOneWarningNamingIt) {
 
 // --- material extensions ------------------------------------------------------------------
 
-Scene import_materials(const json& materials, const std::string& name) {
-  GltfBuilder b;
+// One quad per material; `builder` may hold images the materials use.
+Scene import_materials(const json& materials, const std::string& name,
+                       GltfBuilder* builder = nullptr) {
+  GltfBuilder own;
+  GltfBuilder& b = builder ? *builder : own;
   b.json["materials"] = materials;
   for (std::size_t i = 0; i < materials.size(); ++i) {
     json quad = unit_quad(b);
@@ -630,6 +633,8 @@ Scene import_materials(const json& materials, const std::string& name) {
 }
 
 TEST(GltfImport, SpecularGlossinessBecomesMetallicRoughness) {
+  GltfBuilder b;
+  const int texture = add_embedded_image(b);  // opaque: gloss 1 in alpha
   const Scene scene = import_materials(
       {{{"extensions",
          {{"KHR_materials_pbrSpecularGlossiness",
@@ -638,8 +643,11 @@ TEST(GltfImport, SpecularGlossinessBecomesMetallicRoughness) {
             {"glossinessFactor", 0.75}}}}}},
        {{"extensions",
          {{"KHR_materials_pbrSpecularGlossiness",
-           {{"diffuseFactor", {0, 0, 0, 1}}, {"specularFactor", {1, 0.8, 0.3}}}}}}}},
-      "spec_gloss");
+           {{"diffuseFactor", {0, 0, 0, 1}}, {"specularFactor", {1, 0.8, 0.3}}}}}}},
+       {{"extensions",
+         {{"KHR_materials_pbrSpecularGlossiness",
+           {{"glossinessFactor", 0.25}, {"specularGlossinessTexture", {{"index", texture}}}}}}}}},
+      "spec_gloss", &b);
   const Material& plastic = material_of(scene, 0);
   EXPECT_EQ(plastic.shading, ShadingModel::pbr);
   EXPECT_NEAR(plastic.metallic, 0.0f, 1e-6f);  // a dielectric's 4 %
@@ -649,6 +657,12 @@ TEST(GltfImport, SpecularGlossinessBecomesMetallicRoughness) {
   EXPECT_GT(gold.metallic, 0.9f);
   EXPECT_NEAR(gold.roughness, 0.0f, 1e-6f);  // glossiness 1
   EXPECT_NEAR(glm::length(glm::vec3(gold.base_color) - glm::vec3(1, 0.8f, 0.3f)), 0, 0.05f);
+  // The gloss map (alpha 1, factor 0.25) baked into roughness 0.75, which the factor 1 keeps.
+  const Material& mapped = material_of(scene, 2);
+  EXPECT_FLOAT_EQ(mapped.roughness, 1.0f);
+  ASSERT_TRUE(mapped.metallic_roughness_map);
+  EXPECT_NEAR(mapped.metallic_roughness_map.texture->texel(0, 0, 0).g, 0.75f, 0.5f / 255);
+  EXPECT_EQ(scene.textures.size(), 1u);  // the baked map only
 }
 
 TEST(GltfImport, UnlitEmissiveStrengthTransmissionAndClearcoat) {

@@ -3,7 +3,8 @@
 //
 //   pbrMetallicRoughness        pbr, every factor and map; samplers' wrap and filters
 //   KHR_materials_pbrSpecularGlossiness   pbr, the factors converted (convert_specular_glossiness),
-//                               the diffuse map as the base color map
+//                               the diffuse map as the base color map, the gloss map baked into
+//                               a roughness map (the specular color stays the factors')
 //   KHR_materials_unlit         unlit
 //   KHR_materials_emissive_strength       scales the emissive factor
 //   KHR_materials_transmission  approximated as blending: facet draws no refraction, so a glass
@@ -61,6 +62,24 @@ glm::vec4 factors(const Vector& values, glm::vec4 fallback) {
 }
 
 float clamp01(double v) { return std::clamp(static_cast<float>(v), 0.0f, 1.0f); }
+
+// A specular-glossiness map's gloss (alpha, times the factor) as the packed map the PBR shader
+// reads: roughness 1 - gloss in G, 1 in B so that the material's metallic factor (converted
+// from the factors) stays what it is.
+std::shared_ptr<const Texture> roughness_from_gloss(const Texture& map, float glossiness) {
+  if (map.format() != Texture::Format::rgba8) return nullptr;
+  const Texture::Level& level = map.level(0);
+  std::vector<std::uint8_t> packed(level.rgba8.size());
+  for (std::size_t i = 0; i + 3 < packed.size(); i += 4) {
+    const float gloss = level.rgba8[i + 3] / 255.0f * glossiness;
+    packed[i + 0] = 0;
+    packed[i + 1] = static_cast<std::uint8_t>(std::lround((1.0f - gloss) * 255.0f));
+    packed[i + 2] = 255;
+    packed[i + 3] = 255;
+  }
+  return Texture::from_rgba8(level.width, level.height, std::move(packed), false,
+                             map.name() + " (roughness from gloss)");
+}
 
 const tinygltf::Value* extension(const tinygltf::ExtensionMap& map, const char* name) {
   auto it = map.find(name);
@@ -159,6 +178,22 @@ class Converter {
       convert_specular_glossiness(diffuse, glm::max(specular, glm::vec3(0.0f)),
                                   clamp01(number(*sg, "glossinessFactor", 1.0)), out);
       if (!out.base_color_map) out.base_color_map = map(ref(*sg, "diffuseTexture"), true, 0);
+      // The gloss varies over the surface: baked into a roughness map, which the roughness
+      // factor (now 1) scales as glTF's does.
+      const std::size_t textures_before = out_.textures.size();
+      TextureMap gloss = map(ref(*sg, "specularGlossinessTexture"), false, 1);
+      if (gloss && gloss.texture != missing_texture()) {
+        // The map as decoded is not drawn: only what is baked from it.
+        if (out_.textures.size() > textures_before && out_.textures.back() == gloss.texture)
+          out_.textures.pop_back();
+        gloss.texture =
+            roughness_from_gloss(*gloss.texture, clamp01(number(*sg, "glossinessFactor", 1.0)));
+        if (gloss.texture) {
+          out_.textures.push_back(gloss.texture);
+          out.metallic_roughness_map = gloss;
+          out.roughness = 1.0f;
+        }
+      }
     }
     if (extension(m.extensions, "KHR_materials_unlit")) out.shading = ShadingModel::unlit;
     if (const auto* e = extension(m.extensions, "KHR_materials_emissive_strength"))

@@ -1,8 +1,11 @@
-// GltfBuilder (gltf_builder.hpp): glTF files written by the tests.
+// GltfBuilder (gltf_builder.hpp): glTF files written by the tests, and the glTF tests' helpers.
 #include "support/gltf_builder.hpp"
 
 #include <cstring>
 #include <fstream>
+
+#include "facet/error.hpp"
+#include "support/render_helpers.hpp"
 
 namespace facet::test {
 namespace {
@@ -142,6 +145,48 @@ nlohmann::json unit_quad(GltfBuilder& b) {
   const int uv = b.vec2s({{0, 1}, {1, 1}, {1, 0}, {0, 0}});
   const int i = b.indices({0, 1, 2, 0, 2, 3});
   return {{"attributes", {{"POSITION", p}, {"NORMAL", n}, {"TEXCOORD_0", uv}}}, {"indices", i}};
+}
+
+ImportedGltf import_gltf(const std::filesystem::path& path, bool allow_outside) {
+  ImportedGltf out;
+  ImportOptions options;
+  options.allow_outside_paths = allow_outside;
+  options.warn = [&](const std::string& w) { out.warnings.push_back(w); };
+  out.scene = import_scene(path.string(), options);
+  return out;
+}
+
+std::filesystem::path gltf_test_dir(const std::string& name) {
+  return fresh_test_dir("facet_gltf_", name);
+}
+
+std::string ppm_2x2() {
+  std::string bytes = "P6\n2 2\n255\n";
+  for (unsigned char c : {255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255})
+    bytes += static_cast<char>(c);
+  return bytes;
+}
+
+int add_embedded_image(GltfBuilder& b) {
+  const std::string image = ppm_2x2();
+  const int view = b.view(image.data(), image.size());
+  b.json["images"].push_back({{"bufferView", view}, {"mimeType", "image/png"}});
+  b.json["textures"].push_back({{"source", b.json["images"].size() - 1}});
+  return static_cast<int>(b.json["textures"].size()) - 1;
+}
+
+const Material& material_of(const Scene& scene, int node) {
+  for (const SceneNode& n : scene.nodes) {
+    if (!n.instances.empty() && node < 0) return scene.materials.at(n.instances[0].material);
+  }
+  return scene.materials.at(scene.nodes.at(node).instances.at(0).material);
+}
+
+const Mesh& mesh_of(const Scene& scene) {
+  for (const SceneNode& n : scene.nodes) {
+    if (!n.instances.empty()) return *scene.meshes.at(n.instances[0].mesh);
+  }
+  throw Error("no mesh");
 }
 
 }  // namespace facet::test

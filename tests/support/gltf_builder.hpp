@@ -1,7 +1,8 @@
 // Test helper: glTF 2.0 files made by the tests themselves, so that each glTF feature is tested
 // on a model made for it. Data goes into one binary buffer; the JSON is nlohmann::json that a
 // test fills in (meshes, nodes, materials, extensions); the file is written as .gltf (buffer in
-// a base64 data URI) or .glb (buffer in the BIN chunk).
+// a base64 data URI) or .glb (buffer in the BIN chunk). Also the few helpers the glTF tests
+// share (gltf_import_test.cpp, gltf_geometry_test.cpp, gltf_materials_test.cpp).
 #pragma once
 
 #include <cstdint>
@@ -10,6 +11,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
+
+#include "facet/import.hpp"
 
 namespace facet::test {
 
@@ -51,5 +54,24 @@ class GltfBuilder {
 // The unit quad [0, 1] x [0, 1] at z = 0 facing +Z, as two counter-clockwise triangles with
 // normals and texture coordinates (glTF's: v = 0 at the top), in builder `b`: its primitive.
 nlohmann::json unit_quad(GltfBuilder& b);
+
+// What a glTF test imports: the scene and the warnings the import gave.
+struct ImportedGltf {
+  Scene scene;
+  std::vector<std::string> warnings;
+};
+ImportedGltf import_gltf(const std::filesystem::path& path, bool allow_outside = false);
+
+// A fresh directory for one glTF test's files.
+std::filesystem::path gltf_test_dir(const std::string& name);
+
+// A 2x2 binary PPM (stb_image reads it; readers decode by content, not by mimeType): red,
+// green / blue, white; and that image embedded in `b` as a new texture (its index returned).
+std::string ppm_2x2();
+int add_embedded_image(GltfBuilder& b);
+
+// The material and the mesh of the first node that draws one (material_of: or of node `node`).
+const Material& material_of(const Scene& scene, int node = -1);
+const Mesh& mesh_of(const Scene& scene);
 
 }  // namespace facet::test

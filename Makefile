@@ -17,7 +17,8 @@ PACKAGES := build-essential cmake pkg-config libglm-dev libpng-dev libtbb-dev li
   libgtest-dev libstb-dev libassimp-dev assimp-testmodels glmark2-data clang libclang-rt-dev \
   libopenal-dev libsdl2-dev libimgui-dev libhwy-dev libopenexr-dev xdotool xvfb python3 \
   pybind11-dev python3-dev python3-numpy python3-pytest python3-pip python3-setuptools \
-  python3-wheel python3-venv python3-distributed libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
+  python3-wheel python3-venv python3-distributed libtinygltf-dev nlohmann-json3-dev \
+  libmeshoptimizer-dev libdraco-dev libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
 
 BUILD_DIR ?= build
 ASAN_DIR ?= build-asan

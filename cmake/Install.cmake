@@ -59,7 +59,7 @@ install(FILES ${PROJECT_BINARY_DIR}/facetConfig.cmake ${PROJECT_BINARY_DIR}/face
 # static builds they are in Libs (plain `pkg-config --libs facet` links); a shared library
 # carries them itself, so they go to Libs.private.
 set(FACET_PC_CORE_DEPS "-lz -ltbb -lhwy")
-set(FACET_PC_ALL_DEPS "${FACET_PC_CORE_DEPS} -lassimp -lopenal")
+set(FACET_PC_ALL_DEPS "${FACET_PC_CORE_DEPS} -lassimp -ldraco -lmeshoptimizer -lopenal")
 if(BUILD_SHARED_LIBS)
   set(FACET_PC_CORE_LIBS "")
   set(FACET_PC_CORE_PRIVATE "${FACET_PC_CORE_DEPS}")

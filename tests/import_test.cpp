@@ -43,7 +43,6 @@ const std::map<std::string, std::string> kExpectedFailures = {
     {"glTF2/TestNoRootNode/SceneWithoutNodes.gltf", "a scene without nodes: nothing to draw"},
     {"glTF2/SchemaFailures/sceneWrongType.gltf", "deliberate schema error"},
     {"glTF2/RecursiveNodes/RecursiveNodes.gltf", "deliberately recursive node graph"},
-    {"glTF2/issue_3269/texcoord_crash.gltf", "TEXCOORD_1 without TEXCOORD_0: invalid glTF"},
 };
 
 ImportOptions quiet() {

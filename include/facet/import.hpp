@@ -1,6 +1,6 @@
-// Model import (facet::import): reads a 3D file into a facet Scene. Formats through assimp
-// (OBJ+MTL, glTF 2.0 .gltf/.glb, STL, 3DS, FBX, COLLADA, OFF, …) and facet's own readers for PLY
-// and the classic course format `.d`. Models keep their own coordinates: nothing is rescaled or
+// Model import (facet::import): reads a 3D file into a facet Scene. glTF 2.0 (.gltf/.glb)
+// through tinygltf, PLY and the classic course format `.d` through facet's own readers, other
+// formats through assimp (OBJ+MTL, STL, 3DS, FBX, COLLADA, OFF, …). Models keep their own coordinates: nothing is rescaled or
 // re-centred.
 #pragma once
 

@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "facet/import.hpp"
+#include "facet/material.hpp"
 
 namespace facet::io {
 
@@ -32,6 +33,10 @@ PlyGeometry parse_ply_geometry(std::string_view bytes, const std::string& name);
 // One node drawing the PLY model, in the material assimp's reader gave it (ply_import.cpp).
 Scene import_ply_scene(const std::string& path, const ImportOptions& options);
 
+// glTF 2.0, .gltf and .glb, through tinygltf (gltf_*.cpp). The scene has meshes, materials,
+// nodes, lights and cameras, but no default camera yet (import_scene frames it).
+Scene import_gltf_scene(const std::string& path, const ImportOptions& options);
+
 // Every format assimp reads. The scene has meshes, materials, nodes, lights and cameras, but no
 // default camera yet (import_scene frames it).
 Scene import_assimp_scene(const std::string& path, const ImportOptions& options);
@@ -39,6 +44,18 @@ Scene import_assimp_scene(const std::string& path, const ImportOptions& options)
 // Sizes the file's header claims, checked against its real size before any reader allocates
 // them (precheck.cpp: GLB chunks, OFF counts); throws facet::Error naming the field.
 void precheck_model(const std::string& path);
+
+// What every imported mesh goes through before it enters a Scene (mesh_finish.cpp): validated
+// (errors "<where>: <what>"), non-finite positions reported, other bad attributes repaired,
+// smooth normals (options.crease_angle_degrees) where it has none, identical vertices joined,
+// tangents where `material` has a normal map. Lines and points are only validated and repaired.
+void finish_mesh(Mesh& mesh, const Material& material, const ImportOptions& options,
+                 const std::string& where);
+
+// KHR_materials_pbrSpecularGlossiness factors to metallic-roughness (specular_glossiness.cpp):
+// sets out.base_color, metallic and roughness.
+void convert_specular_glossiness(glm::vec4 diffuse, glm::vec3 specular, float glossiness,
+                                 Material& out);
 
 // options.warn, or one "facet: warning:" line on stderr when it is not set.
 void warn(const ImportOptions& options, const std::string& message);

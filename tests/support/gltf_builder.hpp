@@ -1,0 +1,77 @@
+// Test helper: glTF 2.0 files made by the tests themselves, so that each glTF feature is tested
+// on a model made for it. Data goes into one binary buffer; the JSON is nlohmann::json that a
+// test fills in (meshes, nodes, materials, extensions); the file is written as .gltf (buffer in
+// a base64 data URI) or .glb (buffer in the BIN chunk). Also the few helpers the glTF tests
+// share (gltf_import_test.cpp, gltf_geometry_test.cpp, gltf_materials_test.cpp).
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "facet/import.hpp"
+
+namespace facet::test {
+
+// glTF component types (the OpenGL enums).
+inline constexpr int kGlByte = 5120, kGlUnsignedByte = 5121, kGlShort = 5122,
+                     kGlUnsignedShort = 5123, kGlUnsignedInt = 5125, kGlFloat = 5126;
+
+class GltfBuilder {
+ public:
+  GltfBuilder();
+
+  // Bytes appended to the buffer (4-byte aligned) as a new buffer view; returns its index.
+  int view(const void* data, std::size_t size, int stride = 0);
+  // An accessor of `count` elements of `type` ("SCALAR", "VEC2", ...) on a view.
+  int accessor(int view, int component_type, std::size_t count, const std::string& type,
+               bool normalized = false);
+  // Float accessors (positions get the min and max glTF requires).
+  int positions(const std::vector<glm::vec3>& values);
+  int vec2s(const std::vector<glm::vec2>& values);
+  int vec3s(const std::vector<glm::vec3>& values);
+  int vec4s(const std::vector<glm::vec4>& values);
+  int indices(const std::vector<std::uint16_t>& values);
+
+  // A mesh of one primitive ({"attributes": ..., "indices": ..., "material": ..., "mode": ...}
+  // as given) and a root node drawing it; returns the node's index.
+  int add_mesh_node(const nlohmann::json& primitive, const nlohmann::json& node_fields = {});
+
+  std::string gltf_text() const;
+  std::string glb_bytes() const;
+  std::filesystem::path write_gltf(const std::filesystem::path& path) const;
+  std::filesystem::path write_glb(const std::filesystem::path& path) const;
+
+  // The document. Buffer 0 (`buffer`) is filled in when written; a test may add more buffers
+  // after it in json["buffers"] (put a null first).
+  nlohmann::json json;
+  std::vector<std::uint8_t> buffer;
+};
+
+// The unit quad [0, 1] x [0, 1] at z = 0 facing +Z, as two counter-clockwise triangles with
+// normals and texture coordinates (glTF's: v = 0 at the top), in builder `b`: its primitive.
+nlohmann::json unit_quad(GltfBuilder& b);
+
+// What a glTF test imports: the scene and the warnings the import gave.
+struct ImportedGltf {
+  Scene scene;
+  std::vector<std::string> warnings;
+};
+ImportedGltf import_gltf(const std::filesystem::path& path, bool allow_outside = false);
+
+// A fresh directory for one glTF test's files.
+std::filesystem::path gltf_test_dir(const std::string& name);
+
+// A 2x2 binary PPM (stb_image reads it; readers decode by content, not by mimeType): red,
+// green / blue, white; and that image embedded in `b` as a new texture (its index returned).
+std::string ppm_2x2();
+int add_embedded_image(GltfBuilder& b);
+
+// The material and the mesh of the first node that draws one (material_of: or of node `node`).
+const Material& material_of(const Scene& scene, int node = -1);
+const Mesh& mesh_of(const Scene& scene);
+
+}  // namespace facet::test

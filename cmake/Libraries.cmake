@@ -8,8 +8,8 @@
 #   facet::gl      src/gl (optional: FACET_BUILD_GL)     core, OpenGL, EGL
 #   facet::facet   all four (an interface target: the umbrella for users who want everything)
 #
-# Libraries are static unless BUILD_SHARED_LIBS is on; shared ones carry a SONAME of the major
-# version (libfacet.so.0).
+# Libraries are shared unless BUILD_SHARED_LIBS is off (CMakeLists.txt); shared ones carry a
+# SONAME of the major version (libfacet.so.0).
 
 configure_file(${PROJECT_SOURCE_DIR}/cmake/version.hpp.in
                ${PROJECT_BINARY_DIR}/include/facet/version.hpp @ONLY)
@@ -30,7 +30,9 @@ function(facet_layer name export_name output_name)
     OUTPUT_NAME ${output_name}
     POSITION_INDEPENDENT_CODE ON
     VERSION ${PROJECT_VERSION}
-    SOVERSION ${PROJECT_VERSION_MAJOR})
+    SOVERSION ${PROJECT_VERSION_MAJOR}
+    # Installed shared layers find each other in their own folder, wherever the prefix.
+    INSTALL_RPATH "$ORIGIN")
 endfunction()
 
 # The reference rasterizer (src/pipeline/reference.cpp) is the tests' oracle, not part of the

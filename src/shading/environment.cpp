@@ -5,11 +5,10 @@
 #include <cmath>
 
 #include "facet/texture.hpp"
+#include "shading/brdf.hpp"  // kPi
 
 namespace facet::shading {
 namespace {
-
-constexpr float kPi = 3.14159265358979f;
 
 glm::vec3 sky_gradient(const Environment& env, glm::vec3 d) {
   // Square roots widen the bright band at the horizon, as a real sky looks.

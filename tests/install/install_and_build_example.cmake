@@ -1,23 +1,21 @@
-# Install test (ctest: InstallAndBuildExample, and InstallSharedAndBuildExample with -DSHARED=ON),
-# run as a script with cmake -P:
-#   1. static: cmake --install BUILD_DIR; shared: configure SOURCE_DIR with BUILD_SHARED_LIBS=ON
-#      (libraries only) into WORK_DIR/build, build and install that
-#   2. check the headers, libraries (and, shared, their SONAME), pkg-config files, man page,
-#      CMake package; run `facet --version` and the thumbnailer's Exec line (static: the
-#      program is installed too)
+# Install test (ctest: InstallAndBuildExample), run as a script with cmake -P:
+#   1. cmake --install BUILD_DIR into a scratch prefix
+#   2. check the headers, libraries (shared: their SONAME, and that libfacet.so needs no
+#      assimp, OpenAL or SDL), pkg-config files, man page, CMake package; run the installed
+#      `facet --version` and the thumbnailer's Exec line
 #   3. configure examples/ against the prefix with find_package(facet COMPONENTS core), with
 #      assimp and OpenAL made unfindable, build it and check hello_triangle needs neither
 #   4. build hello_triangle again with plain g++ $(pkg-config --cflags --libs facet)
 #   5. run both; each must write a PNG
-#   6. static, with the Python module built (PYTHON_MODULE): the installed package imports
-#      from the prefix's site-packages folder alone and renders a PNG
-# The shared variant builds the libraries only (no program, no Python module): its prefix is
-# where the Python module's pip test (python/tests) builds against, needing this test first.
+#   6. with the Python module built (PYTHON_MODULE): the installed package imports from the
+#      prefix's site-packages folder alone and renders a PNG
+# A shared install's prefix is where the Python module's pip test (python/tests) builds
+# against, needing this test first.
 # Any failing step stops the script with FATAL_ERROR, which fails the test.
 #
-# Inputs (-D): SOURCE_DIR (project root), BUILD_DIR (a built tree; static only), WORK_DIR
-#              (scratch, wiped), VERSION (the project's), optional SHARED, CONFIG (build type),
-#              GENERATOR, CXX_COMPILER, PYTHON_MODULE (ON: check the installed module),
+# Inputs (-D): SOURCE_DIR (project root), BUILD_DIR (a built tree), WORK_DIR (scratch, wiped),
+#              VERSION (the project's), SHARED (the build's BUILD_SHARED_LIBS), CONFIG (build
+#              type), GENERATOR, CXX_COMPILER, PYTHON_MODULE (ON: check the installed module),
 #              PYTHON_EXECUTABLE.
 cmake_minimum_required(VERSION 3.25)
 
@@ -95,22 +93,7 @@ file(MAKE_DIRECTORY ${WORK_DIR})
 
 # 1. Install.
 set(layers facet facet-import facet-worlds facet-sound)
-if(SHARED)
-  set(shared_build ${WORK_DIR}/build)
-  # Unoptimized (-O0, no debug info): this test checks what is installed and how it links, not
-  # how fast it draws, and -O0 halves the build, the longest step of the CI's `make test`.
-  set(configure_facet -S ${SOURCE_DIR} -B ${shared_build} -DCMAKE_BUILD_TYPE=${CONFIG}
-      "-DCMAKE_CXX_FLAGS_${config_upper}=-O0 -DNDEBUG" "-DCMAKE_C_FLAGS_${config_upper}=-O0 -DNDEBUG"
-      -DBUILD_SHARED_LIBS=ON -DFACET_BUILD_PROGRAM=OFF -DFACET_BUILD_TESTS=OFF
-      -DFACET_BUILD_PYTHON=OFF -DCMAKE_INSTALL_LIBDIR=lib)
-  run_step("configure shared libraries" ${CMAKE_COMMAND} ${configure_facet} ${toolchain_args})
-  run_step("build shared libraries" ${CMAKE_COMMAND} --build ${shared_build} --config ${CONFIG}
-           --parallel 2)
-  run_step("install" ${CMAKE_COMMAND} --install ${shared_build} --prefix ${prefix}
-           --config ${CONFIG})
-else()
-  run_step("install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix} --config ${CONFIG})
-endif()
+run_step("install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix} --config ${CONFIG})
 
 # 2. The files a user relies on.
 foreach(file include/facet/facet.hpp include/facet/renderer.hpp include/facet/version.hpp
@@ -137,35 +120,34 @@ if(SHARED)
   if(core_needed MATCHES "assimp|openal|SDL")
     message(FATAL_ERROR "install test: libfacet.so links more than the core needs: ${core_needed}")
   endif()
-else()
-  require_file(${prefix}/bin/facet)
-  execute_process(COMMAND ${prefix}/bin/facet --version OUTPUT_VARIABLE version_line
-                  RESULT_VARIABLE result)
-  if(NOT result STREQUAL "0" OR NOT version_line STREQUAL "facet ${VERSION}\n")
-    message(FATAL_ERROR "install test: facet --version printed '${version_line}', not "
-                        "'facet ${VERSION}'")
-  endif()
-  # The thumbnailer's Exec line, run as a file manager would (%s %i %o filled in, `facet` found
-  # in the prefix), must write a PNG thumbnail of a model.
-  set(thumbnailer ${prefix}/share/thumbnailers/facet.thumbnailer)
-  require_file(${thumbnailer})
-  file(STRINGS ${thumbnailer} exec_line REGEX "^Exec=facet ")
-  if(NOT exec_line MATCHES "%s" OR NOT exec_line MATCHES "%i" OR NOT exec_line MATCHES "%o")
-    message(FATAL_ERROR "install test: ${thumbnailer} has no Exec=facet line with %s %i %o")
-  endif()
-  set(model ${WORK_DIR}/tetrahedron.obj)
-  file(WRITE ${model} "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n")
-  set(thumbnail ${WORK_DIR}/thumbnail.png)
-  string(REGEX REPLACE "^Exec=facet " "" exec_args "${exec_line}")
-  string(REPLACE "%s" "64" exec_args "${exec_args}")
-  string(REPLACE "%i" "${model}" exec_args "${exec_args}")
-  string(REPLACE "%o" "${thumbnail}" exec_args "${exec_args}")
-  separate_arguments(exec_args UNIX_COMMAND "${exec_args}")
-  run_step("run the thumbnailer's Exec line" ${prefix}/bin/facet ${exec_args})
-  file(READ ${thumbnail} signature LIMIT 8 HEX)
-  if(NOT signature STREQUAL "89504e470d0a1a0a")
-    message(FATAL_ERROR "install test: the thumbnailer wrote no PNG to ${thumbnail}")
-  endif()
+endif()
+require_file(${prefix}/bin/facet)
+execute_process(COMMAND ${prefix}/bin/facet --version OUTPUT_VARIABLE version_line
+                RESULT_VARIABLE result)
+if(NOT result STREQUAL "0" OR NOT version_line STREQUAL "facet ${VERSION}\n")
+  message(FATAL_ERROR "install test: facet --version printed '${version_line}', not "
+                      "'facet ${VERSION}'")
+endif()
+# The thumbnailer's Exec line, run as a file manager would (%s %i %o filled in, `facet` found
+# in the prefix), must write a PNG thumbnail of a model.
+set(thumbnailer ${prefix}/share/thumbnailers/facet.thumbnailer)
+require_file(${thumbnailer})
+file(STRINGS ${thumbnailer} exec_line REGEX "^Exec=facet ")
+if(NOT exec_line MATCHES "%s" OR NOT exec_line MATCHES "%i" OR NOT exec_line MATCHES "%o")
+  message(FATAL_ERROR "install test: ${thumbnailer} has no Exec=facet line with %s %i %o")
+endif()
+set(model ${WORK_DIR}/tetrahedron.obj)
+file(WRITE ${model} "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n")
+set(thumbnail ${WORK_DIR}/thumbnail.png)
+string(REGEX REPLACE "^Exec=facet " "" exec_args "${exec_line}")
+string(REPLACE "%s" "64" exec_args "${exec_args}")
+string(REPLACE "%i" "${model}" exec_args "${exec_args}")
+string(REPLACE "%o" "${thumbnail}" exec_args "${exec_args}")
+separate_arguments(exec_args UNIX_COMMAND "${exec_args}")
+run_step("run the thumbnailer's Exec line" ${prefix}/bin/facet ${exec_args})
+file(READ ${thumbnail} signature LIMIT 8 HEX)
+if(NOT signature STREQUAL "89504e470d0a1a0a")
+  message(FATAL_ERROR "install test: the thumbnailer wrote no PNG to ${thumbnail}")
 endif()
 
 # 3. Build the example against the installed package only (no package registry, no build tree),
@@ -212,7 +194,7 @@ run_hello(${hello} ${WORK_DIR}/hello_triangle.png)
 run_hello(${hello_pc} ${WORK_DIR}/hello_triangle_pkg_config.png)
 
 # 6. The Python module, installed with the rest, imports from the prefix alone.
-if(PYTHON_MODULE AND NOT SHARED)
+if(PYTHON_MODULE)
   file(GLOB_RECURSE python_package LIST_DIRECTORIES false ${prefix}/__init__.py)
   list(FILTER python_package INCLUDE REGEX "/facet/__init__\\.py$")
   list(LENGTH python_package found)

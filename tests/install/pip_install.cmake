@@ -1,4 +1,4 @@
-# Pip install test (ctest: PipInstall, after InstallSharedAndBuildExample, whose prefix it
+# Pip install test (ctest: PipInstall, after InstallAndBuildExample, whose prefix it
 # uses), run as a script with cmake -P:
 #   1. a virtual environment that sees the system's packages (NumPy), without pip of its own:
 #      python3 -m venv --system-site-packages --without-pip (the system's pip runs in it)
@@ -22,7 +22,7 @@ foreach(var SOURCE_DIR WORK_DIR PREFIX PYTHON_EXECUTABLE)
 endforeach()
 if(NOT EXISTS ${PREFIX}/lib/cmake/facet/facetConfig.cmake)
   message(FATAL_ERROR "pip install test: no facet installed in ${PREFIX} (run "
-                      "InstallSharedAndBuildExample first; ctest does, as a fixture)")
+                      "InstallAndBuildExample first; ctest does, as a fixture)")
 endif()
 
 function(run_step name)

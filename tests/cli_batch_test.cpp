@@ -12,6 +12,7 @@
 
 #include "support/render_helpers.hpp"
 #include "support/required_package.hpp"
+#include "support/text.hpp"
 
 namespace facet::test {
 namespace {
@@ -60,10 +61,6 @@ std::vector<std::string> files_under(const fs::path& dir) {
 }
 
 long count_lines(const std::string& text) { return std::count(text.begin(), text.end(), '\n'); }
-
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
 
 CommandResult run_facet(const fs::path& dir, const std::string& args) {
   return run_command("cd '" + dir.string() + "' && " + FACET_CLI + " " + args);

@@ -16,6 +16,7 @@
 
 #include "support/cli_content_inputs.hpp"
 #include "support/render_helpers.hpp"
+#include "support/text.hpp"
 
 namespace facet::test {
 namespace {
@@ -30,10 +31,6 @@ std::string read_file(const fs::path& path) {
 }
 
 long count_lines(const std::string& text) { return std::count(text.begin(), text.end(), '\n'); }
-
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
 
 // A camera path through the shapes scene: keys at 0 s and 1 s.
 fs::path write_camera_path(const fs::path& dir) {

@@ -16,16 +16,13 @@
 #include "support/render_helpers.hpp"
 #include "support/required_package.hpp"
 #include "support/sample_models.hpp"
+#include "support/text.hpp"
 
 namespace facet::test {
 namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
-
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
 
 // --- texture coordinate sets and KHR_texture_transform -----------------------------------
 

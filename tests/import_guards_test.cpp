@@ -29,6 +29,7 @@
 #include "facet/import.hpp"
 #include "facet/texture.hpp"
 #include "support/render_helpers.hpp"
+#include "support/text.hpp"
 
 namespace facet::test {
 namespace {
@@ -108,10 +109,6 @@ void write_buffer(const fs::path& path) {
   const float positions[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
   std::ofstream(path, std::ios::binary)
       .write(reinterpret_cast<const char*>(positions), sizeof positions);
-}
-
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
 }
 
 std::shared_ptr<const Texture> base_color_texture(const Scene& scene) {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -16,6 +17,7 @@
 #include "pipeline/frame.hpp"
 #include "pipeline/raster/block_raster.hpp"
 #include "pipeline/setup/fixed_point.hpp"
+#include "pipeline/setup/sample_positions.hpp"
 #include "shading/fog.hpp"
 #include "shading/fragment.hpp"
 #include "shading/kernels.hpp"
@@ -51,7 +53,27 @@ struct TileContext {
   // own (render_tile.cpp sets it before the first triangle).
   WaitingPixels* waiting = nullptr;
   RasterKernels kernels{};  // the frame's (pipeline/kernels.hpp), set with the tile
+  // MSAA (raster/msaa.hpp): sample s of pixel i has color[s * sample_plane + i] and
+  // depth[s * sample_plane + i]; plane 0 is the one the one-sample paths use. While split[i] is
+  // 0, every sample of pixel i has color[i]'s color (the other planes' colors are stale): a
+  // write that covers all samples costs one color, and only edge pixels hold several.
+  int samples = 1;
+  std::ptrdiff_t sample_plane = 0;
+  std::uint8_t* split = nullptr;
+  // Per pixel, the samples the triangle being drawn covers there that pass the depth test
+  // (msaa.hpp sets it before shading the pixel); and that triangle's depth at each sample
+  // minus its depth at the pixel centre.
+  std::uint16_t* sample_mask = nullptr;
+  float sample_z[kMaxSamples] = {};
 };
+
+// MSAA: gives each sample of pixel i its own copy of the pixel's color, before a write that
+// leaves the samples different.
+inline void split_pixel(TileContext& tile, std::ptrdiff_t i) {
+  if (tile.split[i]) return;
+  for (int s = 1; s < tile.samples; ++s) tile.color[s * tile.sample_plane + i] = tile.color[i];
+  tile.split[i] = 1;
+}
 
 // Shading models may opt out of the depth test (debug counters) and blend additively.
 template <class Shading>
@@ -315,10 +337,35 @@ class PixelWriter {
     }
     if constexpr (!kFogged) shading::apply_fog(color, uniforms_.frame->view_depth(w, z), fog_);
     const std::ptrdiff_t pixel = index(x, y);
-    blend_into<Shading, kAlpha>(tile_.color[pixel], color);
-    if constexpr (kDepthWrite) tile_.depth[pixel] = z;
+    if (tile_.samples > 1) {
+      store_samples(pixel, z, color);
+    } else {
+      blend_into<Shading, kAlpha>(tile_.color[pixel], color);
+      if constexpr (kDepthWrite) tile_.depth[pixel] = z;
+    }
     ++shaded;
     return true;
+  }
+
+  // MSAA: writes the pixel's color, shaded once, to the samples tile.sample_mask says, each
+  // with its own depth and blending.
+  void store_samples(std::ptrdiff_t pixel, float z, const glm::vec4& color) {
+    const unsigned mask = tile_.sample_mask[pixel];
+    const std::ptrdiff_t plane = tile_.sample_plane;
+    if (mask == (1u << tile_.samples) - 1 && !tile_.split[pixel]) {
+      blend_into<Shading, kAlpha>(tile_.color[pixel], color);  // every sample alike still
+    } else {
+      split_pixel(tile_, pixel);
+      for (unsigned m = mask; m != 0; m &= m - 1) {
+        blend_into<Shading, kAlpha>(tile_.color[std::countr_zero(m) * plane + pixel], color);
+      }
+    }
+    if constexpr (kDepthWrite) {
+      for (unsigned m = mask; m != 0; m &= m - 1) {
+        const int s = std::countr_zero(m);
+        tile_.depth[s * plane + pixel] = z + tile_.sample_z[s];
+      }
+    }
   }
 
   shading::Fragment fragment;

@@ -64,10 +64,10 @@ Mesh sixteenth_grid(int cells_x, int cells_y, unsigned seed) {
   for (int j = 0; j <= cells_y; ++j) {
     for (int i = 0; i <= cells_x; ++i) {
       const bool interior = i > 0 && j > 0 && i < cells_x && j < cells_y;
-      const double sx = std::round((-10.0 + i * cell_w) * 16.0) / 16.0 +
-                        (interior ? jitter(rng) / 16.0 : 0.0);
-      const double sy = std::round((-10.0 + j * cell_h) * 16.0) / 16.0 +
-                        (interior ? jitter(rng) / 16.0 : 0.0);
+      const double sx =
+          std::round((-10.0 + i * cell_w) * 16.0) / 16.0 + (interior ? jitter(rng) / 16.0 : 0.0);
+      const double sy =
+          std::round((-10.0 + j * cell_h) * 16.0) / 16.0 + (interior ? jitter(rng) / 16.0 : 0.0);
       mesh.positions.push_back(at_pixel(sx, sy, kWidth, kHeight, kDistance));
     }
   }
@@ -120,8 +120,8 @@ TEST(Msaa, SharedEdgesCoverEverySampleExactlyOnce) {
     }
     // Spokes through a pixel centre, a pixel corner, a 4x sample and anywhere; phase 0 puts
     // spokes along rows and columns, through whole rows of samples.
-    const double centres[][2] = {{40.5, 30.5}, {40.0, 30.0}, {40.5 - 2.0 / 16, 30.5 - 6.0 / 16},
-                                 {33.37, 41.81}};
+    const double centres[][2] = {
+        {40.5, 30.5}, {40.0, 30.0}, {40.5 - 2.0 / 16, 30.5 - 6.0 / 16}, {33.37, 41.81}};
     for (const auto& c : centres) {
       for (double phase : {0.0, 0.377}) {
         expect_every_sample_once(fan(c[0], c[1], 24, phase), samples,
@@ -139,7 +139,8 @@ double area_in_pixel(const double x[3], const double y[3], int px, int py) {
   const struct {
     int axis;
     double bound, sign;
-  } sides[4] = {{0, double(px), 1.0}, {0, px + 1.0, -1.0}, {1, double(py), 1.0}, {1, py + 1.0, -1.0}};
+  } sides[4] = {
+      {0, double(px), 1.0}, {0, px + 1.0, -1.0}, {1, double(py), 1.0}, {1, py + 1.0, -1.0}};
   for (const auto& side : sides) {
     std::vector<glm::dvec2> kept;
     for (std::size_t i = 0; i < polygon.size(); ++i) {
@@ -206,8 +207,8 @@ double edge_coverage_error(int samples) {
 TEST(Msaa, EdgePixelsCoverageIsCloseToTheExactArea) {
   const double one = edge_coverage_error(1), four = edge_coverage_error(4);
   const double eight = edge_coverage_error(8), sixteen = edge_coverage_error(16);
-  std::printf("mean edge coverage error: 1x %.4f, 4x %.4f, 8x %.4f, 16x %.4f\n", one, four,
-              eight, sixteen);
+  std::printf("mean edge coverage error: 1x %.4f, 4x %.4f, 8x %.4f, 16x %.4f\n", one, four, eight,
+              sixteen);
   EXPECT_GT(one, 0.15);
   EXPECT_LT(four, 0.075);
   EXPECT_LT(eight, 0.75 * four);
@@ -263,8 +264,8 @@ TEST(Msaa, ThreadsAndTileSizesGiveIdenticalImages) {
 
 TEST(Msaa, EverySimdTargetGivesThePortableTargetsImage) {
   const std::vector<std::int64_t> targets = simd_targets();
-  for (ShadingModel model : {ShadingModel::unlit, ShadingModel::phong, ShadingModel::pbr,
-                             ShadingModel::wire_overlay}) {
+  for (ShadingModel model :
+       {ShadingModel::unlit, ShadingModel::phong, ShadingModel::pbr, ShadingModel::wire_overlay}) {
     const Framebuffer expected = [&] {
       ForcedTarget portable(targets.back());  // the list is best first
       return render_shapes_msaa(model, 0, 64);
@@ -272,8 +273,10 @@ TEST(Msaa, EverySimdTargetGivesThePortableTargetsImage) {
     for (std::int64_t target : targets) {
       ForcedTarget forced(target);
       const Framebuffer fb = render_shapes_msaa(model, 0, 64);
-      ASSERT_EQ(fb.rgba8(), expected.rgba8()) << to_string(model) << " on " << hwy::TargetName(target);
-      ASSERT_EQ(fb.depth(), expected.depth()) << to_string(model) << " on " << hwy::TargetName(target);
+      ASSERT_EQ(fb.rgba8(), expected.rgba8())
+          << to_string(model) << " on " << hwy::TargetName(target);
+      ASSERT_EQ(fb.depth(), expected.depth())
+          << to_string(model) << " on " << hwy::TargetName(target);
     }
   }
 }

@@ -110,6 +110,7 @@ struct ShotLog {
   std::string mode;
   std::string shading;  // "material" or a shading model's name
   int threads = -1;
+  int msaa = -1;
   std::string camera;  // "orbit" or "first person"
   std::string sound;   // "on", "muted" or "none" (a scene without sound)
 };
@@ -118,7 +119,7 @@ ShotLog shot_log(const Session& s, int n) {
       "saved facet-screenshot-" + std::to_string(n) +
       R"(\.png \(render (\d+)x(\d+), window (\d+)x(\d+), eye ([-\d.]+),([-\d.]+),)"
       R"(([-\d.]+), forward ([-\d.]+),([-\d.]+),([-\d.]+), fov ([\d.]+), mode ([^,]+), )"
-      R"(shading ([^,]+), threads (\d+), camera ([^,]+), sound ([^)]+)\))");
+      R"(shading ([^,]+), threads (\d+), msaa (\d+), camera ([^,]+), sound ([^)]+)\))");
   std::smatch m;
   ShotLog out;
   if (!std::regex_search(s.log, m, line)) {
@@ -133,8 +134,9 @@ ShotLog shot_log(const Session& s, int n) {
   out.mode = m[12];
   out.shading = m[13];
   out.threads = std::stoi(m[14]);
-  out.camera = m[15];
-  out.sound = m[16];
+  out.msaa = std::stoi(m[15]);
+  out.camera = m[16];
+  out.sound = m[17];
   return out;
 }
 

@@ -52,6 +52,7 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
       ->capture_default_str();
   cmd->add_option("--tile-size", o.tile_size, "Tile edge in pixels: 16, 32, 64 or 128")
       ->capture_default_str();
+  cmd->add_option("--msaa", o.msaa, msaa_help(4));
   cmd->add_flag("--orthographic,--ortho", o.orthographic,
                 "Parallel projection, fitted to the whole scene, seen along the camera's line of "
                 "sight (the automatic three-quarter view, --eye/--target or --camera)");
@@ -66,6 +67,7 @@ int run_render(const RenderOptions& o) {
   // command fails fast and leaves nothing behind.
   ImageSize size = parse_size("--size", o.size);
   check_threads(o.threads);
+  check_msaa(o.msaa);
   if (!std::isfinite(o.exposure) || std::abs(o.exposure) > 20.0f) {
     throw Error("--exposure: must be within -20 .. 20 stops");
   }
@@ -96,6 +98,7 @@ int run_render(const RenderOptions& o) {
   RenderSettings settings;
   settings.threads = o.threads;
   settings.tile_size = o.tile_size;
+  settings.msaa = o.msaa;
   // Transparent: the framebuffer holds premultiplied color (blending over alpha 0), written
   // out with straight alpha (FrameRenderer).
   settings.clear_color = glm::vec4(background, transparent ? 0.0f : 1.0f);

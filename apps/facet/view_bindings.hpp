@@ -30,6 +30,7 @@ inline constexpr ViewBinding kViewBindings[] = {
     {"F7", "shading model (the materials' own, unlit ... pbr)"},
     {"F8", "threads: 1, 2, ... cores, all"},
     {"F9", "overlay on / off"},
+    {"F10", "anti-aliasing (MSAA): 1, 2, 4, 8, 16 samples per pixel"},
     {"F11", "windowed / fullscreen"},
     {"F12", "save the frame (facet-screenshot-N.png)"},
     {"Shift+F12", "save the window, bars included (facet-window-N.png)"},

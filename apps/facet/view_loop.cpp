@@ -34,9 +34,7 @@ std::string next_file_name(const char* prefix) {
   }
 }
 
-bool is_function_key(SDL_Keycode key) {
-  return (key >= SDLK_F1 && key <= SDLK_F9) || key == SDLK_F11;
-}
+bool is_function_key(SDL_Keycode key) { return key >= SDLK_F1 && key <= SDLK_F11; }
 
 }  // namespace
 
@@ -59,6 +57,7 @@ ViewLoop::~ViewLoop() = default;
 void ViewLoop::make_renderer() {
   RenderSettings rs;
   rs.threads = settings_.threads;
+  rs.msaa = settings_.msaa;
   rs.clear_color = setup_.clear_color;
   rs.debug_view = settings_.debug_view();
   renderer_ = std::make_unique<Renderer>(rs);
@@ -89,6 +88,7 @@ void ViewLoop::apply(const SettingUpdate& update) {
                            DepthImage::none);  // shown and saved as color only
       break;
     case SettingChange::threads:
+    case SettingChange::msaa:
       make_renderer();
       break;
     case SettingChange::fullscreen:
@@ -166,6 +166,7 @@ void ViewLoop::render(double now, double dt) {
   info.triangles = renderer_->stats().drawn;
   info.lines = renderer_->stats().lines_drawn;
   info.threads = settings_.threads;
+  info.msaa = settings_.msaa;
   info.mode = to_string(settings_.mode);
   info.shading = settings_.shading_name();
   info.camera = setup_.camera_path                      ? "camera path"
@@ -191,10 +192,10 @@ void ViewLoop::save_frame() {
   const char* sound = !sound_ ? "none" : sound_->muted() ? "muted" : "on";
   std::printf(
       "view: saved %s (render %dx%d, window %dx%d, eye %.4f,%.4f,%.4f, forward %.4f,%.4f,%.4f, "
-      "fov %.1f, mode %s, shading %s, threads %d, camera %s, sound %s)\n",
+      "fov %.1f, mode %s, shading %s, threads %d, msaa %d, camera %s, sound %s)\n",
       name.c_str(), frame_.width(), frame_.height(), ww, wh, c.eye.x, c.eye.y, c.eye.z, f.x, f.y,
       f.z, c.fov_y_degrees, std::string(to_string(settings_.mode)).c_str(),
-      settings_.shading_name().c_str(), settings_.threads, camera_mode, sound);
+      settings_.shading_name().c_str(), settings_.threads, settings_.msaa, camera_mode, sound);
   std::fflush(stdout);
 }
 

@@ -141,6 +141,11 @@ SettingUpdate apply_function_key(int keycode, ViewSettings& s) {
     case SDLK_F9:
       s.overlay = !s.overlay;
       return {SettingChange::overlay, s.overlay ? "overlay: on" : "overlay: off"};
+    case SDLK_F10:
+      s.msaa = s.msaa >= 16 ? 1 : s.msaa * 2;
+      u = {SettingChange::msaa, "anti-aliasing: "};
+      u.message += s.msaa == 1 ? std::string("off (1 sample)") : std::to_string(s.msaa) + "x MSAA";
+      return u;
     case SDLK_F11:
       s.fullscreen = !s.fullscreen;
       return {SettingChange::fullscreen, s.fullscreen ? "fullscreen" : "windowed"};

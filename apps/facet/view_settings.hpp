@@ -1,5 +1,6 @@
-// The viewer's adjustable settings and the function keys that change them (F1-F9, F11): render
-// mode, shading model, field of view, render resolution, threads, overlay, help, fullscreen.
+// The viewer's adjustable settings and the function keys that change them (F1-F11): render
+// mode, shading model, field of view, render resolution, threads, overlay, anti-aliasing, help,
+// fullscreen.
 // Each change comes back with a one-line description for the overlay's change panel.
 #pragma once
 
@@ -23,6 +24,7 @@ struct ViewSettings {
   float fov_degrees = 60.0f;
   ImageSize size;
   int threads = 0;  // 0 = all cores
+  int msaa = 4;     // samples per pixel (RenderSettings::msaa); F10 cycles 1, 2, 4, 8, 16
   bool overlay = true;
   bool help = false;
   bool fullscreen = false;
@@ -33,14 +35,25 @@ struct ViewSettings {
   std::string shading_name() const;  // "material" when not forced
 };
 
-enum class SettingChange { none, mode, shading, fov, size, threads, overlay, help, fullscreen };
+enum class SettingChange {
+  none,
+  mode,
+  shading,
+  fov,
+  size,
+  threads,
+  msaa,
+  overlay,
+  help,
+  fullscreen
+};
 
 struct SettingUpdate {
   SettingChange change = SettingChange::none;
   std::string message;  // e.g. "render mode: wireframe"
 };
 
-// Applies a function key (an SDL_Keycode); keys that are not F1-F9 or F11 change nothing.
+// Applies a function key (an SDL_Keycode); keys that are not F1-F11 change nothing.
 SettingUpdate apply_function_key(int keycode, ViewSettings& settings);
 
 // Render resolutions that F5/F6 step through.

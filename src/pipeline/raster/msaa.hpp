@@ -76,7 +76,66 @@ inline EdgeCover classify_samples(const SetupTriangle& t, const SampleSteps& ste
   return cover;
 }
 
-// Rasterizes one triangle into a multisampled tile, 8x8 blocks at a time as raster_triangle.
+// The pixels of [left, right] x [top, bottom] (frame pixels, at most PackedPixels::kCapacity),
+// one at a time: the samples each covers that pass the depth test go to tile.sample_mask, and
+// the pixels with any are shaded and written.
+template <class Shading, AlphaMode kAlpha>
+void shade_covered_samples(TileContext& tile, const SetupTriangle& t, const SampleSteps& steps,
+                           PixelWriter<Shading, kAlpha>& out, PackedPixels& pixels, int left,
+                           int top, int right, int bottom) {
+  constexpr bool kDepthTest = depth_tested<Shading>();
+  const int samples = tile.samples;
+  const unsigned all = (1u << samples) - 1;
+  const std::ptrdiff_t plane = tile.sample_plane;
+  pixels.count = 0;
+  for (int y = top; y <= bottom; ++y) {
+    std::int64_t e[3];
+    for (int i = 0; i < 3; ++i) e[i] = edge_at_centre(t, i, left, y);
+    const float z_row = evaluate_row(t.z, t.ref_y, static_cast<float>(y) + 0.5f);
+    for (int x = left; x <= right; ++x) {
+      // Most pixels of a box lie wholly outside an edge or inside all three: the steps'
+      // extremes tell, and only the others test their samples one by one.
+      const std::int64_t reach_in =
+          (e[0] + steps.edge_min[0]) | (e[1] + steps.edge_min[1]) | (e[2] + steps.edge_min[2]);
+      unsigned mask = 0;
+      if (reach_in >= 0) {
+        mask = all;
+      } else if (!((e[0] + steps.edge_max[0]) < 0 || (e[1] + steps.edge_max[1]) < 0 ||
+                   (e[2] + steps.edge_max[2]) < 0)) {
+        for (int s = 0; s < samples; ++s) {
+          const std::int64_t outside =
+              (e[0] + steps.edge[0][s]) | (e[1] + steps.edge[1][s]) | (e[2] + steps.edge[2][s]);
+          mask |= static_cast<unsigned>(outside >= 0) << s;
+        }
+      }
+      for (int i = 0; i < 3; ++i) e[i] += std::int64_t{t.a[i]} * kSubpixelScale;
+      if (mask == 0) continue;
+      const std::ptrdiff_t pixel =
+          static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride + (x - tile.x0);
+      if constexpr (kDepthTest) {
+        const float z = evaluate_in_row(z_row, t.z, t.ref_x, static_cast<float>(x) + 0.5f);
+        for (unsigned m = mask; m != 0; m &= m - 1) {
+          const int s = std::countr_zero(m);
+          if (!(z + tile.sample_z[s] < tile.depth[s * plane + pixel]))  // NaN fails
+            mask &= ~(1u << s);
+        }
+        if (mask == 0) continue;
+      }
+      tile.sample_mask[pixel] = static_cast<std::uint16_t>(mask);
+      const int n = pixels.count++;
+      pixels.x[n] = static_cast<std::int16_t>(x);
+      pixels.y[n] = static_cast<std::int16_t>(y);
+    }
+  }
+  if (pixels.count == 0) return;
+  pixels.pad(0);  // interpolate_pixels reads whole vectors of positions
+  tile.kernels.interpolate_pixels(t, out.fragment.planes, Shading::kVaryings, 0, pixels.count,
+                                  pixels.x, pixels.y, pixels.z, pixels.w, pixels.v);
+  out.shade(pixels);
+}
+
+// Rasterizes one triangle into a multisampled tile, 8x8 blocks at a time as raster_triangle;
+// a triangle whose box holds at most a block's worth of pixels in one go.
 template <class Shading, AlphaMode kAlpha>
 void raster_triangle_msaa(TileContext& tile, const SetupTriangle& t) {
   const int x0 = std::max(t.min_x, tile.x0), x1 = std::min(t.max_x, tile.x1 - 1);
@@ -87,6 +146,13 @@ void raster_triangle_msaa(TileContext& tile, const SetupTriangle& t) {
   const int samples = tile.samples;
   const std::ptrdiff_t plane = tile.sample_plane;
   const SampleSteps steps(t, samples, tile.sample_z);
+  PackedPixels pixels;
+  if ((x1 - x0 + 1) * (y1 - y0 + 1) <= PackedPixels::kCapacity) {
+    // Small: no block is whole, and one walk of the box costs less than classifying blocks.
+    shade_covered_samples(tile, t, steps, out, pixels, x0, y0, x1, y1);
+    tile.pixels_shaded += out.shaded;
+    return;
+  }
   constexpr bool kDepthTest = depth_tested<Shading>();
   constexpr bool kTightensBound = Writer::kDepthWrite && kAlpha == AlphaMode::opaque;
   // Whole blocks: every edge inside, nothing to test (cover_block interpolates for them).
@@ -102,7 +168,6 @@ void raster_triangle_msaa(TileContext& tile, const SetupTriangle& t) {
   whole.depth_stride = tile.stride;
   whole.interpolate = true;
   alignas(64) BlockFragments block;
-  PackedPixels pixels;
   const int bx0 = (x0 - tile.x0) / kBlockSize, bx1 = (x1 - tile.x0) / kBlockSize;
   const int by0 = (y0 - tile.y0) / kBlockSize, by1 = (y1 - tile.y0) / kBlockSize;
   for (int by = by0; by <= by1; ++by) {
@@ -141,43 +206,7 @@ void raster_triangle_msaa(TileContext& tile, const SetupTriangle& t) {
         if constexpr (kTightensBound) max_depth = std::min(max_depth, farthest);
         continue;
       }
-      // Pixel by pixel: the samples each covers and that pass the depth test.
-      pixels.count = 0;
-      for (int y = top; y <= bottom; ++y) {
-        std::int64_t e[3];
-        for (int i = 0; i < 3; ++i) e[i] = edge_at_centre(t, i, left, y);
-        const float z_row = evaluate_row(t.z, t.ref_y, static_cast<float>(y) + 0.5f);
-        for (int x = left; x <= right; ++x) {
-          unsigned mask = 0;
-          for (int s = 0; s < samples; ++s) {
-            const std::int64_t outside =
-                (e[0] + steps.edge[0][s]) | (e[1] + steps.edge[1][s]) | (e[2] + steps.edge[2][s]);
-            mask |= static_cast<unsigned>(outside >= 0) << s;
-          }
-          for (int i = 0; i < 3; ++i) e[i] += std::int64_t{t.a[i]} * kSubpixelScale;
-          if (mask == 0) continue;
-          const std::ptrdiff_t pixel =
-              static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride + (x - tile.x0);
-          if constexpr (kDepthTest) {
-            const float z = evaluate_in_row(z_row, t.z, t.ref_x, static_cast<float>(x) + 0.5f);
-            for (unsigned m = mask; m != 0; m &= m - 1) {
-              const int s = std::countr_zero(m);
-              if (!(z + tile.sample_z[s] < tile.depth[s * plane + pixel]))  // NaN fails
-                mask &= ~(1u << s);
-            }
-            if (mask == 0) continue;
-          }
-          tile.sample_mask[pixel] = static_cast<std::uint16_t>(mask);
-          const int n = pixels.count++;
-          pixels.x[n] = static_cast<std::int16_t>(x);
-          pixels.y[n] = static_cast<std::int16_t>(y);
-        }
-      }
-      if (pixels.count == 0) continue;
-      pixels.pad(0);  // interpolate_pixels reads whole vectors of positions
-      tile.kernels.interpolate_pixels(t, out.fragment.planes, Shading::kVaryings, 0, pixels.count,
-                                      pixels.x, pixels.y, pixels.z, pixels.w, pixels.v);
-      out.shade(pixels);
+      shade_covered_samples(tile, t, steps, out, pixels, left, top, right, bottom);
     }
   }
   tile.pixels_shaded += out.shaded;

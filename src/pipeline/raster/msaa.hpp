@@ -8,8 +8,9 @@
 //
 // Cost: blocks whose every sample the triangle covers, in front of everything drawn there, take
 // the one-sample whole-block path (cover_block, shade_full_block) and write one color a pixel;
-// only their depths are per sample. Every other block is walked a pixel at a time with the
-// sample tests in 64-bit integers: that is the work along edges.
+// only their depths are per sample. Every other block, and the whole box of a small triangle,
+// is searched for covered samples (SIMD across box rows, find_box_samples): that is the work
+// along edges.
 #pragma once
 
 #include <algorithm>
@@ -35,11 +36,15 @@ struct SampleSteps {
   std::int64_t edge[3][kMaxSamples];
   std::int64_t edge_min[3], edge_max[3];
   float z_min, z_max;
+  // The SIMD box search computes in 32 bits (SampleBoxSearch): only for these coefficients.
+  bool fits_32_bits = true;
 
   // Fills z (the tile's sample_z) with the depth steps.
   SampleSteps(const SetupTriangle& t, int samples, float* z) {
     const SampleOffset* pattern = sample_pattern(samples);
     for (int i = 0; i < 3; ++i) {
+      const std::int64_t size = std::abs(std::int64_t{t.a[i]}) + std::abs(std::int64_t{t.b[i]});
+      fits_32_bits = fits_32_bits && size < (std::int64_t{1} << 18);
       edge_min[i] = edge_max[i] = std::int64_t{t.a[i]} * pattern[0].x * kSampleUnit +
                                   std::int64_t{t.b[i]} * pattern[0].y * kSampleUnit;
       for (int s = 0; s < samples; ++s) {
@@ -76,9 +81,10 @@ inline EdgeCover classify_samples(const SetupTriangle& t, const SampleSteps& ste
   return cover;
 }
 
-// The pixels of [left, right] x [top, bottom] (frame pixels, at most PackedPixels::kCapacity),
-// one at a time: the samples each covers that pass the depth test go to tile.sample_mask, and
-// the pixels with any are shaded and written.
+// The pixels of [left, right] x [top, bottom] (frame pixels, at most PackedPixels::kCapacity):
+// the samples each covers that pass the depth test go to tile.sample_mask, and the pixels with
+// any are shaded and written. The search runs with SIMD (find_box_samples) for triangles whose
+// edge coefficients allow 32 bits, one pixel at a time in 64 bits for the others.
 template <class Shading, AlphaMode kAlpha>
 void shade_covered_samples(TileContext& tile, const SetupTriangle& t, const SampleSteps& steps,
                            PixelWriter<Shading, kAlpha>& out, PackedPixels& pixels, int left,
@@ -87,44 +93,73 @@ void shade_covered_samples(TileContext& tile, const SetupTriangle& t, const Samp
   const int samples = tile.samples;
   const unsigned all = (1u << samples) - 1;
   const std::ptrdiff_t plane = tile.sample_plane;
-  pixels.count = 0;
-  for (int y = top; y <= bottom; ++y) {
-    std::int64_t e[3];
-    for (int i = 0; i < 3; ++i) e[i] = edge_at_centre(t, i, left, y);
-    const float z_row = evaluate_row(t.z, t.ref_y, static_cast<float>(y) + 0.5f);
-    for (int x = left; x <= right; ++x) {
-      // Most pixels of a box lie wholly outside an edge or inside all three: the steps'
-      // extremes tell, and only the others test their samples one by one.
-      const std::int64_t reach_in =
-          (e[0] + steps.edge_min[0]) | (e[1] + steps.edge_min[1]) | (e[2] + steps.edge_min[2]);
-      unsigned mask = 0;
-      if (reach_in >= 0) {
-        mask = all;
-      } else if (!((e[0] + steps.edge_max[0]) < 0 || (e[1] + steps.edge_max[1]) < 0 ||
-                   (e[2] + steps.edge_max[2]) < 0)) {
-        for (int s = 0; s < samples; ++s) {
-          const std::int64_t outside =
-              (e[0] + steps.edge[0][s]) | (e[1] + steps.edge[1][s]) | (e[2] + steps.edge[2][s]);
-          mask |= static_cast<unsigned>(outside >= 0) << s;
-        }
+  if (steps.fits_32_bits) {  // SIMD across box rows, the same samples and depths as below
+    SampleBoxSearch search;
+    search.triangle = &t;
+    search.x0 = left, search.y0 = top;
+    search.width = right - left + 1, search.height = bottom - top + 1;
+    search.samples = samples;
+    constexpr std::int64_t kClamp = std::int64_t{1} << 30;
+    for (int i = 0; i < 3; ++i) {
+      // floor(E / 16): the first centre lies on the sixteenths' grid, like every sample.
+      search.e_first[i] = static_cast<std::int32_t>(
+          std::clamp(edge_at_centre(t, i, left, top) >> 4, -kClamp, kClamp));
+      for (int s = 0; s < samples; ++s) {
+        search.step[i][s] = static_cast<std::int32_t>(steps.edge[i][s] / kSampleUnit);
       }
-      for (int i = 0; i < 3; ++i) e[i] += std::int64_t{t.a[i]} * kSubpixelScale;
-      if (mask == 0) continue;
-      const std::ptrdiff_t pixel =
-          static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride + (x - tile.x0);
-      if constexpr (kDepthTest) {
-        const float z = evaluate_in_row(z_row, t.z, t.ref_x, static_cast<float>(x) + 0.5f);
-        for (unsigned m = mask; m != 0; m &= m - 1) {
-          const int s = std::countr_zero(m);
-          if (!(z + tile.sample_z[s] < tile.depth[s * plane + pixel]))  // NaN fails
-            mask &= ~(1u << s);
+    }
+    search.sample_z = tile.sample_z;
+    search.depth_test = kDepthTest;
+    search.depth =
+        tile.depth + static_cast<std::ptrdiff_t>(top - tile.y0) * tile.stride + (left - tile.x0);
+    search.depth_stride = tile.stride;
+    search.plane = plane;
+    std::uint16_t masks[PackedPixels::kCapacity + kBoxSearchSlack];
+    pixels.count = tile.kernels.find_box_samples(search, pixels.x, pixels.y, masks);
+    for (int n = 0; n < pixels.count; ++n) {
+      tile.sample_mask[static_cast<std::ptrdiff_t>(pixels.y[n] - tile.y0) * tile.stride +
+                       (pixels.x[n] - tile.x0)] = masks[n];
+    }
+  } else {
+    pixels.count = 0;
+    for (int y = top; y <= bottom; ++y) {
+      std::int64_t e[3];
+      for (int i = 0; i < 3; ++i) e[i] = edge_at_centre(t, i, left, y);
+      const float z_row = evaluate_row(t.z, t.ref_y, static_cast<float>(y) + 0.5f);
+      for (int x = left; x <= right; ++x) {
+        // Most pixels of a box lie wholly outside an edge or inside all three: the steps'
+        // extremes tell, and only the others test their samples one by one.
+        const std::int64_t reach_in =
+            (e[0] + steps.edge_min[0]) | (e[1] + steps.edge_min[1]) | (e[2] + steps.edge_min[2]);
+        unsigned mask = 0;
+        if (reach_in >= 0) {
+          mask = all;
+        } else if (!((e[0] + steps.edge_max[0]) < 0 || (e[1] + steps.edge_max[1]) < 0 ||
+                     (e[2] + steps.edge_max[2]) < 0)) {
+          for (int s = 0; s < samples; ++s) {
+            const std::int64_t outside =
+                (e[0] + steps.edge[0][s]) | (e[1] + steps.edge[1][s]) | (e[2] + steps.edge[2][s]);
+            mask |= static_cast<unsigned>(outside >= 0) << s;
+          }
         }
+        for (int i = 0; i < 3; ++i) e[i] += std::int64_t{t.a[i]} * kSubpixelScale;
         if (mask == 0) continue;
+        const std::ptrdiff_t pixel =
+            static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride + (x - tile.x0);
+        if constexpr (kDepthTest) {
+          const float z = evaluate_in_row(z_row, t.z, t.ref_x, static_cast<float>(x) + 0.5f);
+          for (unsigned m = mask; m != 0; m &= m - 1) {
+            const int s = std::countr_zero(m);
+            if (!(z + tile.sample_z[s] < tile.depth[s * plane + pixel]))  // NaN fails
+              mask &= ~(1u << s);
+          }
+          if (mask == 0) continue;
+        }
+        tile.sample_mask[pixel] = static_cast<std::uint16_t>(mask);
+        const int n = pixels.count++;
+        pixels.x[n] = static_cast<std::int16_t>(x);
+        pixels.y[n] = static_cast<std::int16_t>(y);
       }
-      tile.sample_mask[pixel] = static_cast<std::uint16_t>(mask);
-      const int n = pixels.count++;
-      pixels.x[n] = static_cast<std::int16_t>(x);
-      pixels.y[n] = static_cast<std::int16_t>(y);
     }
   }
   if (pixels.count == 0) return;

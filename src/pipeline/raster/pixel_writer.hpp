@@ -350,21 +350,35 @@ class PixelWriter {
   // MSAA: writes the pixel's color, shaded once, to the samples tile.sample_mask says, each
   // with its own depth and blending.
   void store_samples(std::ptrdiff_t pixel, float z, const glm::vec4& color) {
+    // Locals: the stores below are floats, which the compiler must assume may change the tile's
+    // float fields (sample_z) unless they are read once here.
     const unsigned mask = tile_.sample_mask[pixel];
+    const int samples = tile_.samples;
     const std::ptrdiff_t plane = tile_.sample_plane;
-    if (mask == (1u << tile_.samples) - 1 && !tile_.split[pixel]) {
-      blend_into<Shading, kAlpha>(tile_.color[pixel], color);  // every sample alike still
-    } else {
-      split_pixel(tile_, pixel);
-      for (unsigned m = mask; m != 0; m &= m - 1) {
-        blend_into<Shading, kAlpha>(tile_.color[std::countr_zero(m) * plane + pixel], color);
+    glm::vec4* color_at = tile_.color + pixel;
+    float* depth_at = tile_.depth + pixel;
+    float sample_z[kMaxSamples];
+    if constexpr (kDepthWrite) std::copy_n(tile_.sample_z, samples, sample_z);
+    const unsigned all = (1u << samples) - 1;
+    if (mask == all) {
+      constexpr bool kReplaces =
+          !additive<Shading>() && (kAlpha == AlphaMode::opaque || kAlpha == AlphaMode::mask);
+      if (kReplaces || !tile_.split[pixel]) {
+        blend_into<Shading, kAlpha>(*color_at, color);  // every sample alike (again)
+        tile_.split[pixel] = 0;
+      } else {
+        for (int s = 0; s < samples; ++s) blend_into<Shading, kAlpha>(color_at[s * plane], color);
       }
+      if constexpr (kDepthWrite) {
+        for (int s = 0; s < samples; ++s) depth_at[s * plane] = z + sample_z[s];
+      }
+      return;
     }
-    if constexpr (kDepthWrite) {
-      for (unsigned m = mask; m != 0; m &= m - 1) {
-        const int s = std::countr_zero(m);
-        tile_.depth[s * plane + pixel] = z + tile_.sample_z[s];
-      }
+    split_pixel(tile_, pixel);
+    for (unsigned m = mask; m != 0; m &= m - 1) {
+      const int s = std::countr_zero(m);
+      blend_into<Shading, kAlpha>(color_at[s * plane], color);
+      if constexpr (kDepthWrite) depth_at[s * plane] = z + sample_z[s];
     }
   }
 

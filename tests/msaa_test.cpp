@@ -85,13 +85,13 @@ Mesh sixteenth_grid(int cells_x, int cells_y, unsigned seed) {
   return mesh;
 }
 
-// A fan of triangles around (cx, cy) (pixels), its rim far outside the screen.
-Mesh fan(double cx, double cy, int spokes, double phase) {
+// A fan of triangles around (cx, cy) (pixels), its rim `radius` pixels away, outside the screen.
+Mesh fan(double cx, double cy, int spokes, double phase, double radius = 200.0) {
   Mesh mesh;
   mesh.positions.push_back(at_pixel(cx, cy, kWidth, kHeight, kDistance));
   for (int k = 0; k < spokes; ++k) {
     const double angle = phase + k * 2.0 * 3.14159265358979323846 / spokes;
-    mesh.positions.push_back(at_pixel(cx + 200.0 * std::cos(angle), cy + 200.0 * std::sin(angle),
+    mesh.positions.push_back(at_pixel(cx + radius * std::cos(angle), cy + radius * std::sin(angle),
                                       kWidth, kHeight, kDistance));
   }
   for (std::uint32_t k = 0; k < static_cast<std::uint32_t>(spokes); ++k) {
@@ -126,6 +126,10 @@ TEST(Msaa, SharedEdgesCoverEverySampleExactlyOnce) {
       for (double phase : {0.0, 0.377}) {
         expect_every_sample_once(fan(c[0], c[1], 24, phase), samples,
                                  "fan at " + std::to_string(c[0]) + "," + std::to_string(c[1]));
+        // Edges over 1024 pixels long: too long for the SIMD search's 32 bits, walked in 64.
+        expect_every_sample_once(
+            fan(c[0], c[1], 24, phase, 3000.0), samples,
+            "wide fan at " + std::to_string(c[0]) + "," + std::to_string(c[1]));
       }
     }
   }

@@ -220,6 +220,61 @@ TEST(Msaa, EdgePixelsCoverageIsCloseToTheExactArea) {
   EXPECT_LT(sixteen, 0.6 * four);
 }
 
+// A cut-out quad whose alpha runs from 0 at the left to 1 at the right, white on black: its red
+// channel per pixel in a float target, row `row`.
+std::vector<float> cut_out_row(int samples, int row) {
+  Mesh quad;
+  const double left = 8.0, right = 88.0, top = 10.0, bottom = 60.0;
+  quad.positions = {at_pixel(left, top, kWidth, kHeight, kDistance),
+                    at_pixel(right, top, kWidth, kHeight, kDistance),
+                    at_pixel(right, bottom, kWidth, kHeight, kDistance),
+                    at_pixel(left, bottom, kWidth, kHeight, kDistance)};
+  quad.colors = {{1, 1, 1, 0}, {1, 1, 1, 1}, {1, 1, 1, 1}, {1, 1, 1, 0}};
+  quad.indices = {0, 2, 1, 0, 3, 2};
+  Material material;
+  material.shading = ShadingModel::vertex_color;
+  material.use_vertex_colors = true;
+  material.alpha_mode = AlphaMode::mask;
+  material.alpha_cutoff = 0.5f;
+  material.cull = CullMode::none;
+  RenderSettings settings;
+  settings.msaa = samples;
+  settings.clear_color = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+  Renderer renderer(settings);
+  Framebuffer fb(kWidth, kHeight, ColorFormat::rgba32f);
+  renderer.begin_frame(test_camera(kWidth, kHeight));
+  renderer.draw(quad, material);
+  renderer.finish(fb);
+  std::vector<float> values(kWidth);
+  for (int x = 0; x < kWidth; ++x) values[x] = fb.rgba32f()[(row * kWidth + x) * 4];
+  return values;
+}
+
+// Alpha to coverage: under MSAA a cut-out keeps round(N * a') of its samples, a' being alpha
+// mapped so that the cutoff keeps half; at 1 sample it is the plain cutoff.
+TEST(Msaa, AlphaToCoverageSoftensCutOutEdges) {
+  const std::vector<float> one = cut_out_row(1, 35), four = cut_out_row(4, 35);
+  int first_kept = -1;  // the first column the one-sample cutoff keeps
+  for (int x = 0; x < kWidth; ++x) {
+    ASSERT_TRUE(one[x] == 0.0f || one[x] == 1.0f) << x;
+    if (one[x] == 1.0f && first_kept < 0) first_kept = x;
+  }
+  ASSERT_GT(first_kept, 40);
+  ASSERT_LT(first_kept, 56);  // alpha 0.5 at pixel 48
+  bool seen[5] = {};
+  for (int x = 9; x < 87; ++x) {
+    EXPECT_LE(four[x], four[x + 1]) << "coverage falls at column " << x;  // alpha only grows
+    const float k = four[x] * 4.0f;
+    ASSERT_EQ(k, std::round(k)) << x;
+    seen[static_cast<int>(k)] = true;
+  }
+  for (int k = 0; k <= 4; ++k) EXPECT_TRUE(seen[k]) << k << " of 4 samples never kept";
+  // Half the samples where the one-sample cutoff switches.
+  EXPECT_EQ(four[first_kept], 0.5f);
+  const std::vector<float> above = cut_out_row(4, 5);  // above the quad: nothing
+  EXPECT_EQ(*std::max_element(above.begin(), above.end()), 0.0f);
+}
+
 TEST(Msaa, UnsupportedSampleCountsAreRefused) {
   for (int samples : {-4, 0, 3, 6, 32}) {
     RenderSettings settings;

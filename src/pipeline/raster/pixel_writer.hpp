@@ -67,6 +67,24 @@ struct TileContext {
   float sample_z[kMaxSamples] = {};
 };
 
+// Alpha to coverage for cut-out (alpha-mask) draws under MSAA: the samples a pixel of this alpha
+// keeps. Alpha is mapped so that the cutoff keeps half of them, 1 all and 0 none (linearly on
+// each side: the cut-out's edge is where a one-sample render puts it, softened across the
+// samples), and that many samples are kept, the first ones of the pattern. A fixed subset, not a
+// dither: the image stays the same for every tile and thread.
+inline unsigned alpha_to_coverage(float alpha, float cutoff, int samples) {
+  float kept;
+  if (!(alpha == alpha)) return 0u;  // NaN: discarded, as the one-sample test does
+  if (alpha >= cutoff) {
+    kept = cutoff >= 1.0f ? 1.0f : 0.5f + 0.5f * (alpha - cutoff) / (1.0f - cutoff);
+  } else {
+    kept = cutoff <= 0.0f ? 0.0f : 0.5f * alpha / cutoff;
+  }
+  const float count = std::clamp(kept, 0.0f, 1.0f) * static_cast<float>(samples) + 0.5f;
+  const int n = static_cast<int>(count);  // round half up, 0 .. samples
+  return n >= 32 ? ~0u : (1u << n) - 1u;
+}
+
 // MSAA: gives each sample of pixel i its own copy of the pixel's color, before a write that
 // leaves the samples different.
 inline void split_pixel(TileContext& tile, std::ptrdiff_t i) {
@@ -328,7 +346,14 @@ class PixelWriter {
   template <bool kFogged = false>
   bool store(int x, int y, float z, float w, glm::vec4 color) {
     if constexpr (kAlpha == AlphaMode::mask) {
-      if (!(color.a >= alpha_cutoff_)) return false;  // cut-out: no color, no depth
+      if (tile_.samples > 1) {
+        // Alpha to coverage: the cut-out's edge falls across the samples.
+        const std::ptrdiff_t pixel = index(x, y);
+        tile_.sample_mask[pixel] &= alpha_to_coverage(color.a, alpha_cutoff_, tile_.samples);
+        if (tile_.sample_mask[pixel] == 0) return false;
+      } else if (!(color.a >= alpha_cutoff_)) {
+        return false;  // cut-out: no color, no depth
+      }
     }
     if constexpr (edge_overlay<Shading>()) {
       if (distance_to_edges(*t_, edge_scales_, x, y) < kOverlayHalfWidth) {

@@ -376,14 +376,13 @@ class PixelWriter {
   // with its own depth and blending.
   void store_samples(std::ptrdiff_t pixel, float z, const glm::vec4& color) {
     // Locals: the stores below are floats, which the compiler must assume may change the tile's
-    // float fields (sample_z) unless they are read once here.
+    // fields unless they are read once here.
     const unsigned mask = tile_.sample_mask[pixel];
     const int samples = tile_.samples;
     const std::ptrdiff_t plane = tile_.sample_plane;
     glm::vec4* color_at = tile_.color + pixel;
     float* depth_at = tile_.depth + pixel;
-    float sample_z[kMaxSamples];
-    if constexpr (kDepthWrite) std::copy_n(tile_.sample_z, samples, sample_z);
+    const float* sample_z = tile_.sample_z;
     const unsigned all = (1u << samples) - 1;
     if (mask == all) {
       constexpr bool kReplaces =

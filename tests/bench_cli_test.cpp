@@ -63,7 +63,7 @@ TEST(BenchCli, PrintsOneRowPerSceneWithEveryStageAndWritesJson) {
 
 TEST(BenchCli, BadValuesGiveOneErrorLine) {
   for (const char* args : {"--scene no_such_scene", "--frames 0", "--warmup -1", "--threads -2",
-                           "--size 0x10", "--tile-size 48"}) {
+                           "--size 0x10", "--tile-size 48", "--msaa 3"}) {
     std::string command = FACET_CLI;
     command += " bench --size 32x18 ";
     command += args;

@@ -156,8 +156,10 @@ TEST(CliFraming, TheViewerTakesOnlyPlusYUp) {
 
 TEST(CliBackground, NoneGivesAlphaZeroAroundAnOpaqueModel) {
   REQUIRE_INSTALLED(kBunny);
-  Rgba8Image opaque = render("opaque", kBunny + " --size 120x90");
-  Rgba8Image clear = render("clear", kBunny + " --size 120x90 --background none");
+  // One sample a pixel: every pixel is the model's or the background's (with anti-aliasing the
+  // silhouette's pixels are partly both, alpha between 0 and 255).
+  Rgba8Image opaque = render("opaque", kBunny + " --size 120x90 --msaa 1");
+  Rgba8Image clear = render("clear", kBunny + " --size 120x90 --background none --msaa 1");
   ASSERT_EQ(clear.pixels.size(), opaque.pixels.size());
   EXPECT_EQ(channel(clear, 0, 0, 3), 0);
   EXPECT_EQ(channel(clear, 119, 89, 3), 0);

@@ -461,7 +461,7 @@ TEST(GlTwin, FillRuleOnEdgesThroughPixelCentres) {
 }
 
 // docs/gl_twin.md's picture: the islands by facet, by the twin, and their difference x8 (the
-// viewer's F10 view), side by side. A golden: it fails when either renderer's image moves.
+// viewer's B key view), side by side. A golden: it fails when either renderer's image moves.
 TEST(GlTwinDocs, IslandsSideBySide) {
   REQUIRE_GL(gl);
   constexpr int kPanelWidth = 240, kPanelHeight = 135;

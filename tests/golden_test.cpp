@@ -45,7 +45,9 @@ TEST_P(ShapesScene, MatchesGolden) {
   const fs::path output = fs::path(::testing::TempDir()) / (model + ".png");
   fs::remove(output);
 
-  const std::string command = std::string(FACET_CLI) + " render --scene shapes --size " +
+  // One sample a pixel: these goldens hold the shading models, not the anti-aliasing
+  // (msaa_test.cpp's golden does).
+  const std::string command = std::string(FACET_CLI) + " render --msaa 1 --scene shapes --size " +
                               std::to_string(kWidth) + "x" + std::to_string(kHeight) +
                               " --shading " + model + golden_case.extra_args + " -o '" +
                               output.string() + "'";

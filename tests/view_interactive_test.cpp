@@ -110,6 +110,7 @@ struct ShotLog {
   std::string mode;
   std::string shading;  // "material" or a shading model's name
   int threads = -1;
+  int msaa = -1;
   std::string camera;  // "orbit" or "first person"
   std::string sound;   // "on", "muted" or "none" (a scene without sound)
 };
@@ -118,7 +119,7 @@ ShotLog shot_log(const Session& s, int n) {
       "saved facet-screenshot-" + std::to_string(n) +
       R"(\.png \(render (\d+)x(\d+), window (\d+)x(\d+), eye ([-\d.]+),([-\d.]+),)"
       R"(([-\d.]+), forward ([-\d.]+),([-\d.]+),([-\d.]+), fov ([\d.]+), mode ([^,]+), )"
-      R"(shading ([^,]+), threads (\d+), camera ([^,]+), sound ([^)]+)\))");
+      R"(shading ([^,]+), threads (\d+), msaa (\d+), camera ([^,]+), sound ([^)]+)\))");
   std::smatch m;
   ShotLog out;
   if (!std::regex_search(s.log, m, line)) {
@@ -133,8 +134,9 @@ ShotLog shot_log(const Session& s, int n) {
   out.mode = m[12];
   out.shading = m[13];
   out.threads = std::stoi(m[14]);
-  out.camera = m[15];
-  out.sound = m[16];
+  out.msaa = std::stoi(m[15]);
+  out.camera = m[16];
+  out.sound = m[17];
   return out;
 }
 
@@ -439,14 +441,15 @@ TEST(ViewInput, LetterboxBarsWhenTheWindowAspectDiffers) {
 }
 
 #if FACET_HAS_GL
-// F10 switches facet's renderer -> its OpenGL twin -> their difference -> facet: the twin's
+// B switches facet's renderer -> its OpenGL twin -> their difference -> facet: the twin's
 // frame is facet's to within edge pixels, the difference view is dark where they agree, and
 // each screenshot's log line names the backend that drew it.
-TEST(ViewInput, F10TogglesTheOpenGLTwinAndTheDifference) {
+TEST(ViewInput, BTogglesTheOpenGLTwinAndTheDifference) {
   REQUIRE_TOOLS();
-  const std::string f10 = "xdotool key F10\nshot\n";
-  Session s = run_session("f10", "start_view --scene shapes --size 320x180 --overlay off\n" + f10 +
-                                     f10 + f10 + "stop_view\n");
+  const std::string b = "xdotool key b\nshot\n";
+  Session s = run_session(
+      "backend", "start_view --scene shapes --size 320x180 --overlay off --msaa 1\n" + b + b + b +
+                     "stop_view\n");
   ASSERT_EQ(s.result.exit_code, 0) << s.result.stderr_text;
   const char* const backends[] = {"facet", "gl", "difference", "facet"};
   for (int n = 1; n <= 4; ++n) {

@@ -67,6 +67,7 @@ TEST(View, IslandsAtAFixedTimeAreDeterministic) {
   fs::path dir = fresh_test_dir("facet_view_", "islands");
   std::string shots[2] = {(dir / "a.png").string(), (dir / "b.png").string()};
   for (const std::string& shot : shots) {
+    // One sample a pixel: the golden holds the world at t = 3, not the anti-aliasing.
     CommandResult r = run_view_under_xvfb(
         "--scene islands --frames 2 --time 5 --size 320x180 "
         "--screenshot '" +
@@ -88,7 +89,7 @@ TEST(View, IslandsAtThreeSecondsMatchTheGolden) {
   std::string shots[2] = {(dir / "a.png").string(), (dir / "b.png").string()};
   for (const std::string& shot : shots) {
     CommandResult r = run_view_under_xvfb(
-        "--scene islands --frames 5 --time 3 --size 320x180 --screenshot '" + shot + "'");
+        "--scene islands --frames 5 --time 3 --size 320x180 --msaa 1 --screenshot '" + shot + "'");
     ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
   }
   expect_matches_golden(shots[0], "view_islands_t3");
@@ -107,6 +108,19 @@ TEST(View, WithoutADisplayFailsWithOneLineSuggestingXvfb) {
   EXPECT_EQ(std::count(r.stderr_text.begin(), r.stderr_text.end(), '\n'), 1) << r.stderr_text;
   EXPECT_NE(r.stderr_text.find("xvfb-run"), std::string::npos) << r.stderr_text;
   EXPECT_FALSE(fs::exists(shot));
+}
+
+// A sample count MSAA does not have is refused before any window opens.
+TEST(View, UnsupportedMsaaIsOneErrorLine) {
+  for (const char* samples : {"3", "0", "32"}) {
+    const CommandResult r =
+        run_command(std::string("env -u DISPLAY -u WAYLAND_DISPLAY ") + FACET_CLI +
+                    " view --scene shapes --frames 1 --msaa " + samples);
+    EXPECT_EQ(r.exit_code, kUsageError) << samples;
+    EXPECT_EQ(std::count(r.stderr_text.begin(), r.stderr_text.end(), '\n'), 1) << r.stderr_text;
+    EXPECT_NE(r.stderr_text.find("--msaa: must be 1, 2, 4, 8 or 16"), std::string::npos)
+        << r.stderr_text;
+  }
 }
 
 }  // namespace

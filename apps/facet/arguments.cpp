@@ -81,4 +81,16 @@ void check_threads(int threads) {
   }
 }
 
+void check_msaa(int samples) {
+  if (samples != 1 && samples != 2 && samples != 4 && samples != 8 && samples != 16) {
+    throw Error("--msaa: must be 1, 2, 4, 8 or 16 samples per pixel, got " +
+                std::to_string(samples));
+  }
+}
+
+std::string msaa_help(int default_samples) {
+  return "Multisample anti-aliasing: samples per pixel, 1 (off), 2, 4, 8 or 16 (default: " +
+         std::to_string(default_samples) + ")";
+}
+
 }  // namespace facet::cli

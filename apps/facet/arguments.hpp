@@ -26,5 +26,9 @@ glm::vec3 parse_vec3(const std::string& flag, const std::string& text);
 glm::vec3 parse_color(const std::string& flag, const std::string& text);
 // Throws unless --threads is 0 (all cores) or 1 to RenderSettings::kMaxThreads.
 void check_threads(int threads);
+// Throws unless --msaa is 1, 2, 4, 8 or 16 (RenderSettings::msaa).
+void check_msaa(int samples);
+// The --msaa help text, with the command's default.
+std::string msaa_help(int default_samples);
 
 }  // namespace facet::cli

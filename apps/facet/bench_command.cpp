@@ -40,6 +40,7 @@ SceneResult run_scene(const std::string& name, const BenchOptions& o, const Imag
   RenderSettings settings;
   settings.threads = o.threads;
   settings.tile_size = o.tile_size;
+  settings.msaa = o.msaa;
   settings.clear_color = scene->clear_color();
   Renderer renderer(settings);
   // Color only, as glmark2's frames are: both depth-test, neither reads the depth back.
@@ -86,7 +87,7 @@ void write_json(const std::string& path, const BenchOptions& o, const ImageSize&
   if (!out) throw Error(o.json + ": cannot write");
   out << "{\n  \"size\": \"" << size.width << "x" << size.height
       << "\",\n  \"threads\": " << o.threads << ",\n  \"tile_size\": " << o.tile_size
-      << ",\n  \"frames\": " << o.frames << ",\n  \"scenes\": [\n";
+      << ",\n  \"msaa\": " << o.msaa << ",\n  \"frames\": " << o.frames << ",\n  \"scenes\": [\n";
   for (std::size_t i = 0; i < results.size(); ++i) {
     const SceneResult& r = results[i];
     out << "    {\"name\": \"" << r.name << "\", \"median_ms\": " << r.median_ms
@@ -116,6 +117,7 @@ CLI::App* add_bench_command(CLI::App& app, BenchOptions& o) {
       ->capture_default_str();
   cmd->add_option("--tile-size", o.tile_size, "Tile edge in pixels: 16, 32, 64 or 128")
       ->capture_default_str();
+  cmd->add_option("--msaa", o.msaa, msaa_help(1));
   cmd->add_option("--json", o.json, "Also write the results to this JSON file");
   return cmd;
 }
@@ -125,6 +127,7 @@ int run_bench(const BenchOptions& o) {
   if (o.frames < 1) throw Error("--frames: must be at least 1");
   if (o.warmup < 0) throw Error("--warmup: must be 0 or more");
   check_threads(o.threads);
+  check_msaa(o.msaa);
   if (o.tile_size != 16 && o.tile_size != 32 && o.tile_size != 64 && o.tile_size != 128) {
     throw Error("--tile-size: must be 16, 32, 64 or 128, got " + std::to_string(o.tile_size));
   }

@@ -15,6 +15,7 @@ struct BenchOptions {
   int warmup = 5;
   int threads = 0;
   int tile_size = 64;
+  int msaa = 1;      // glmark2 runs without anti-aliasing
   std::string json;  // empty: no JSON file
 };
 

@@ -59,6 +59,7 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
                   "Renderer: facet (the software rasterizer) or gl (its OpenGL twin, headless "
                   "through EGL: docs/gl_twin.md)")
       ->capture_default_str();
+  cmd->add_option("--msaa", o.msaa, msaa_help(4));
   cmd->add_flag("--orthographic,--ortho", o.orthographic,
                 "Parallel projection, fitted to the whole scene, seen along the camera's line of "
                 "sight (the automatic three-quarter view, --eye/--target or --camera)");
@@ -73,6 +74,7 @@ int run_render(const RenderOptions& o) {
   // command fails fast and leaves nothing behind.
   ImageSize size = parse_size("--size", o.size);
   check_threads(o.threads);
+  check_msaa(o.msaa);
   if (!std::isfinite(o.exposure) || std::abs(o.exposure) > 20.0f) {
     throw Error("--exposure: must be within -20 .. 20 stops");
   }
@@ -107,6 +109,7 @@ int run_render(const RenderOptions& o) {
   RenderSettings settings;
   settings.threads = o.threads;
   settings.tile_size = o.tile_size;
+  settings.msaa = o.msaa;
   // Transparent: the framebuffer holds premultiplied color (blending over alpha 0), written
   // out with straight alpha (FrameRenderer).
   settings.clear_color = glm::vec4(background, transparent ? 0.0f : 1.0f);

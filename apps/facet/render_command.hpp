@@ -22,6 +22,7 @@ struct RenderOptions {
   float exposure = 0.0f;
   int threads = 0;
   int tile_size = 64;
+  int msaa = 4;  // anti-aliased images by default (RenderSettings::msaa)
   bool orthographic = false;
   std::string backend = "facet";  // or "gl": the OpenGL twin (render_backend.hpp)
   BatchOptions batch;             // the positional models; several, or a folder, make a batch

@@ -39,6 +39,7 @@ CLI::App* add_view_command(CLI::App& app, ViewOptions& o) {
       ->capture_default_str();
   cmd->add_option("--threads", o.threads, "Worker threads, 0 = all cores, at most 256")
       ->capture_default_str();
+  cmd->add_option("--msaa", o.msaa, msaa_help(4) + "; F10 cycles it");
   cmd->add_option("--frames", o.frames, "Render this many frames, then quit (0: until closed)")
       ->capture_default_str();
   cmd->add_option("--screenshot", o.screenshot, "Save the last frame to this PNG or PPM file");
@@ -61,6 +62,7 @@ CLI::App* add_view_command(CLI::App& app, ViewOptions& o) {
 int run_view(const ViewOptions& o) {
   ImageSize size = parse_size("--size", o.size);
   check_threads(o.threads);
+  check_msaa(o.msaa);
   if (o.frames < 0) throw Error("--frames: must be 0 (until closed) or more");
   if (o.time && !std::isfinite(*o.time)) throw Error("--time: must be a finite number of seconds");
   if (!o.screenshot.empty()) check_writable(o.screenshot);
@@ -88,6 +90,7 @@ int run_view(const ViewOptions& o) {
   setup.walk_speed = walking_speed(scene);
   setup.settings.size = size;
   setup.settings.threads = o.threads;
+  setup.settings.msaa = o.msaa;
   setup.settings.fov_degrees = setup.start.fov_y_degrees;
   setup.settings.overlay = o.overlay == "on" || (o.overlay == "auto" && o.frames == 0);
   setup.settings.fullscreen = o.fullscreen;

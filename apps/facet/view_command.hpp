@@ -15,6 +15,7 @@ struct ViewOptions {
   SceneOptions scene;
   std::string size = "1280x720";  // render resolution, independent of the window
   int threads = 0;
+  int msaa = 4;                  // F10 cycles it
   int frames = 0;                // 0: run until the window is closed
   std::string screenshot;        // empty: none
   std::optional<double> time;    // fixed animation time in seconds; unset: the real clock

@@ -35,7 +35,8 @@ std::string next_file_name(const char* prefix) {
   }
 }
 
-bool is_function_key(SDL_Keycode key) { return (key >= SDLK_F1 && key <= SDLK_F11); }
+// The keys that change a view setting (apply_setting_key): F1 to F11, and B for the backend.
+bool is_setting_key(SDL_Keycode key) { return (key >= SDLK_F1 && key <= SDLK_F11) || key == SDLK_b; }
 
 }  // namespace
 
@@ -82,6 +83,7 @@ bool ViewLoop::make_gl() {
 void ViewLoop::make_renderer() {
   RenderSettings rs;
   rs.threads = settings_.threads;
+  rs.msaa = settings_.msaa;
   rs.clear_color = setup_.clear_color;
   rs.debug_view = settings_.debug_view();
   renderer_ = std::make_unique<Renderer>(rs);
@@ -116,6 +118,7 @@ void ViewLoop::apply(const SettingUpdate& update) {
       if (!make_gl()) return;  // it said why
       break;
     case SettingChange::threads:
+    case SettingChange::msaa:
       make_renderer();
       break;
     case SettingChange::fullscreen:
@@ -134,8 +137,8 @@ bool ViewLoop::handle_events() {
   bool running = true;
   while (SDL_PollEvent(&event)) {
     overlay_.handle(event);
-    if (event.type == SDL_KEYDOWN && !event.key.repeat && is_function_key(event.key.keysym.sym)) {
-      apply(apply_function_key(event.key.keysym.sym, settings_));
+    if (event.type == SDL_KEYDOWN && !event.key.repeat && is_setting_key(event.key.keysym.sym)) {
+      apply(apply_setting_key(event.key.keysym.sym, settings_));
       continue;
     }
     switch (controls_.handle(event)) {
@@ -193,6 +196,7 @@ void ViewLoop::render(double now, double dt) {
                                                         : renderer_->stats().drawn;
   info.lines = renderer_->stats().lines_drawn;
   info.threads = settings_.threads;
+  info.msaa = settings_.msaa;
   info.mode = to_string(settings_.mode);
   info.shading = settings_.shading_name();
   info.camera = setup_.camera_path                      ? "camera path"
@@ -239,10 +243,10 @@ void ViewLoop::save_frame() {
   const char* sound = !sound_ ? "none" : sound_->muted() ? "muted" : "on";
   std::printf(
       "view: saved %s (render %dx%d, window %dx%d, eye %.4f,%.4f,%.4f, forward %.4f,%.4f,%.4f, "
-      "fov %.1f, mode %s, shading %s, threads %d, camera %s, sound %s)\n",
+      "fov %.1f, mode %s, shading %s, threads %d, msaa %d, camera %s, sound %s)\n",
       name.c_str(), frame_.width(), frame_.height(), ww, wh, c.eye.x, c.eye.y, c.eye.z, f.x, f.y,
       f.z, c.fov_y_degrees, std::string(to_string(settings_.mode)).c_str(),
-      settings_.shading_name().c_str(), settings_.threads, camera_mode, sound);
+      settings_.shading_name().c_str(), settings_.threads, settings_.msaa, camera_mode, sound);
   // A line of its own, so that scripts reading the line above need not change.
   const bool gl_drew = gl_ && settings_.backend != ViewBackend::facet;
   std::printf("view: %s drawn by backend %s%s%s\n", name.c_str(),

@@ -40,6 +40,11 @@ void stats_panel(const OverlayInfo& info) {
     } else {
       ImGui::Text("threads: %d", info.threads);
     }
+    if (info.msaa > 1) {
+      ImGui::Text("msaa: %dx (F10)", info.msaa);
+    } else {
+      ImGui::Text("msaa: off (F10)");
+    }
     ImGui::Text("mode: %s", info.mode.c_str());
     ImGui::Text("shading: %s", info.shading.c_str());
     ImGui::Text("camera: %s", info.camera.c_str());

@@ -31,6 +31,7 @@ struct OverlayInfo {
   std::uint64_t triangles = 0;  // FrameStats::drawn
   std::uint64_t lines = 0;      // FrameStats::lines_drawn
   int threads = 0;              // 0 = all cores
+  int msaa = 1;                 // samples per pixel
   std::string mode, shading, camera;
   std::string sound;      // "on", "muted", "off (no device)"; empty: the scene has none
   std::string backend;    // "facet", "gl" or "difference" (F10)

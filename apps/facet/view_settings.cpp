@@ -114,7 +114,7 @@ std::string ViewSettings::shading_name() const {
   return shading ? std::string(to_string(*shading)) : std::string("material");
 }
 
-SettingUpdate apply_function_key(int keycode, ViewSettings& s) {
+SettingUpdate apply_setting_key(int keycode, ViewSettings& s) {
   SettingUpdate u;
   switch (keycode) {
     case SDLK_F1:
@@ -153,6 +153,11 @@ SettingUpdate apply_function_key(int keycode, ViewSettings& s) {
       s.overlay = !s.overlay;
       return {SettingChange::overlay, s.overlay ? "overlay: on" : "overlay: off"};
     case SDLK_F10:
+      s.msaa = s.msaa >= 16 ? 1 : s.msaa * 2;
+      u = {SettingChange::msaa, "anti-aliasing: "};
+      u.message += s.msaa == 1 ? std::string("off (1 sample)") : std::to_string(s.msaa) + "x MSAA";
+      return u;
+    case SDLK_b:
       s.backend = static_cast<ViewBackend>((static_cast<int>(s.backend) + 1) % 3);
       u = {SettingChange::backend, "backend: "};
       u.message += to_string(s.backend);

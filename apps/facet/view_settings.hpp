@@ -1,5 +1,6 @@
-// The viewer's adjustable settings and the function keys that change them (F1-F9, F11): render
-// mode, shading model, field of view, render resolution, threads, overlay, help, fullscreen.
+// The viewer's adjustable settings and the function keys that change them (F1-F11): render
+// mode, shading model, field of view, render resolution, threads, overlay, anti-aliasing, help,
+// fullscreen.
 // Each change comes back with a one-line description for the overlay's change panel.
 #pragma once
 
@@ -28,6 +29,7 @@ struct ViewSettings {
   float fov_degrees = 60.0f;
   ImageSize size;
   int threads = 0;  // 0 = all cores
+  int msaa = 4;     // samples per pixel (RenderSettings::msaa); F10 cycles 1, 2, 4, 8, 16
   bool overlay = true;
   bool help = false;
   bool fullscreen = false;
@@ -46,6 +48,7 @@ enum class SettingChange {
   fov,
   size,
   threads,
+  msaa,
   overlay,
   help,
   fullscreen,
@@ -57,8 +60,8 @@ struct SettingUpdate {
   std::string message;  // e.g. "render mode: wireframe"
 };
 
-// Applies a function key (an SDL_Keycode); keys that are not F1-F11 change nothing.
-SettingUpdate apply_function_key(int keycode, ViewSettings& settings);
+// Applies a setting key (an SDL_Keycode): F1-F11, or B for the backend; others change nothing.
+SettingUpdate apply_setting_key(int keycode, ViewSettings& settings);
 
 // Render resolutions that F5/F6 step through.
 inline constexpr ImageSize kViewResolutions[] = {{320, 180},   {640, 360},  {960, 540},

@@ -35,6 +35,15 @@ struct RenderSettings {
   glm::vec4 clear_color{0.0f, 0.0f, 0.0f, 1.0f};  // linear RGBA
   float exposure = 0.0f;  // in stops: colors are scaled by 2^exposure before output
   DebugView debug_view = DebugView::none;
+  // Multisample anti-aliasing: samples per pixel, 1 (off), 2, 4, 8 or 16, at the D3D11 / OpenGL
+  // standard sample positions. Coverage and depth are per sample, shading once per pixel per
+  // triangle (at the pixel centre), and the samples are averaged in linear light before the sRGB
+  // encode. The depth image takes sample 0's depth; the extra outputs (ids, normals, view depth,
+  // ...) are rendered without multisampling, so each pixel holds the pixel centre's winner,
+  // never a blend. Cut-out (alpha-mask) materials use alpha to coverage. Lines and points cover
+  // every sample of their pixels. Debug views render with 1 sample. docs/pipeline.md,
+  // "Anti-aliasing".
+  int msaa = 1;
 };
 
 struct FrameStats {

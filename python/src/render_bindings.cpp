@@ -139,9 +139,8 @@ class PyRenderer {
                   " is outside 1x1 .. " + std::to_string(Framebuffer::kMaxSize) + "x" +
                   std::to_string(Framebuffer::kMaxSize));
     }
-    // Anti-aliasing is issue 27: until the core resolves samples, only msaa=1.
-    if (msaa != 1) throw Error("Renderer: msaa is not available yet (use msaa=1)");
     RenderSettings settings;
+    settings.msaa = msaa;  // the renderer refuses counts other than 1, 2, 4, 8 and 16
     settings.threads = threads;
     settings.tile_size = tile_size;
     settings.clear_color = rgba(background, {"Renderer", "background"});
@@ -244,8 +243,9 @@ void write_png(py::handle path, py::handle image) {
 
 void bind_render(py::module_& m) {
   py::class_<PyRenderer>(m, "Renderer", R"doc(
-Renders scenes into width x height images. threads: worker threads (0: all cores). msaa: only 1
-for now. background: linear RGB(A) where nothing is drawn. exposure: in stops, colors are
+Renders scenes into width x height images. threads: worker threads (0: all cores). msaa:
+samples per pixel for anti-aliasing, 1 (off), 2, 4, 8 or 16; the color is resolved from them,
+the other outputs take each pixel centre's surface. background: linear RGB(A) where nothing is drawn. exposure: in stops, colors are
 scaled by 2^exposure. tile_size: 16, 32, 64 or 128. The GIL is released while a frame renders,
 so renderers in several Python threads render at once; one renderer renders one frame at a
 time.)doc")
@@ -276,7 +276,7 @@ Row 0 is the top of the image. The arrays own their memory (no copy is made).)do
       .def_property_readonly("width", &PyRenderer::width)
       .def_property_readonly("height", &PyRenderer::height)
       .def_property_readonly("threads", [](const PyRenderer& r) { return r.settings().threads; })
-      .def_property_readonly("msaa", [](const PyRenderer&) { return 1; })
+      .def_property_readonly("msaa", [](const PyRenderer& r) { return r.settings().msaa; })
       .def_property_readonly(
           "stats", [](const PyRenderer& r) { return stats_dict(r.stats()); },
           "What the last frame did: triangles in, culled, clipped, drawn, pixels shaded, and "

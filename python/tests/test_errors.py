@@ -80,7 +80,7 @@ BAD_CALLS = [
     (lambda: setattr(front_camera(), "near", -1),
      r"Camera.near: camera: near plane must be positive"),
     # renderers
-    (lambda: facet.Renderer(64, 48, msaa=4), r"msaa is not available yet"),
+    (lambda: facet.Renderer(64, 48, msaa=3), r"renderer: msaa must be 1, 2, 4, 8 or 16 .*got 3"),
     (lambda: facet.Renderer(0, 48), r"Renderer: size 0x48 is outside 1x1 .. 8192x8192"),
     (lambda: facet.Renderer(64, 48, threads=1000), r"renderer: threads must be .*256, got 1000"),
     (lambda: facet.Renderer(64, 48, tile_size=20),

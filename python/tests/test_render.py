@@ -179,6 +179,34 @@ def test_stats_of_the_last_frame():
     assert (renderer.width, renderer.height, renderer.threads, renderer.msaa) == (32, 32, 2, 1)
 
 
+def test_msaa_blends_edge_pixels_and_keeps_ids_whole():
+    # A quad's silhouette: at 1 sample every pixel is the quad's or the background's; at 4 the
+    # edge pixels lie between, the inside stays the quad's, and the ids never blend.
+    vertices, faces, _ = quad(half=0.37)
+    turn = np.radians(20.0)  # slanted edges, not along rows and columns
+    rotation = np.array([[np.cos(turn), -np.sin(turn), 0], [np.sin(turn), np.cos(turn), 0],
+                         [0, 0, 1]])
+    vertices = np.asarray(vertices, np.float32) @ rotation.T.astype(np.float32)
+    scene = facet.Scene()
+    node = scene.add_mesh(vertices, faces, material=unlit((1.0, 1.0, 1.0)))
+    frames = {}
+    for samples in (1, 4):
+        renderer = facet.Renderer(64, 48, msaa=samples)
+        assert renderer.msaa == samples
+        frames[samples] = renderer.render(scene, front_camera(), ["color", "instance"],
+                                          color_format="float")
+    one, four = frames[1]["color"][..., 0], frames[4]["color"][..., 0]
+    assert set(np.unique(one)) <= {0.0, 1.0}
+    partial = (four > 0.0) & (four < 1.0)
+    assert partial.sum() > 20
+    assert set(np.unique(four[partial] * 4)) <= {1.0, 2.0, 3.0}  # k of the 4 samples
+    inside = (one[1:-1, 1:-1] == 1) & (one[:-2, 1:-1] == 1) & (one[2:, 1:-1] == 1) \
+        & (one[1:-1, :-2] == 1) & (one[1:-1, 2:] == 1)
+    assert inside.sum() > 50 and np.all(four[1:-1, 1:-1][inside] == 1.0)
+    assert set(np.unique(frames[4]["instance"])) <= {0, node}
+    assert np.array_equal(frames[4]["instance"], frames[1]["instance"])
+
+
 def test_write_png(tmp_path):
     image = np.zeros((20, 30, 4), np.uint8)
     image[..., 0] = 255

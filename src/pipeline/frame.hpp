@@ -244,6 +244,9 @@ struct Frame : PrimitiveBuffer {
   int width = 0;
   int height = 0;
   int tile_size = 64;
+  // Samples per pixel (RenderSettings::msaa; 1 for debug views and the extra outputs' passes):
+  // setup widens pixel boxes and binning its tile tests to the samples' reach (raster/msaa.hpp).
+  int samples = 1;
   int tiles_x = 0;
   int tiles_y = 0;
   glm::mat4 view_projection{1.0f};

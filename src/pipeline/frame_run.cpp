@@ -87,6 +87,8 @@ void Renderer::Impl::prepare_tiles(const Framebuffer& target) {
   frame.width = target.width();
   frame.height = target.height();
   frame.tile_size = settings.tile_size;
+  // The debug views show what the pipeline did per pixel: one sample.
+  frame.samples = settings.debug_view == DebugView::none ? settings.msaa : 1;
   frame.tiles_x = (frame.width + frame.tile_size - 1) / frame.tile_size;
   frame.tiles_y = (frame.height + frame.tile_size - 1) / frame.tile_size;
   std::size_t tiles = static_cast<std::size_t>(frame.tiles_x) * frame.tiles_y;
@@ -98,11 +100,15 @@ void Renderer::Impl::prepare_tiles(const Framebuffer& target) {
   // in a steady-state frame.
   const std::size_t pixels = static_cast<std::size_t>(frame.tile_size) * frame.tile_size;
   const int blocks_x = (frame.tile_size + pipeline::kBlockSize - 1) / pipeline::kBlockSize;
+  const std::size_t samples = static_cast<std::size_t>(frame.samples);
   for (TileBuffers& buffers : tile_buffers) {
-    if (buffers.color.size() >= pixels) continue;
-    buffers.color.resize(pixels);
-    buffers.depth.resize(pixels + pipeline::kDepthSlack);  // find_box_pixels reads past rows
+    if (buffers.color.size() >= pixels * samples && buffers.split.size() >= pixels) continue;
+    buffers.color.resize(pixels * samples);
+    // find_box_pixels reads past rows
+    buffers.depth.resize(pixels * samples + pipeline::kDepthSlack);
     buffers.block_max_depth.resize(static_cast<std::size_t>(blocks_x) * blocks_x);
+    buffers.split.resize(pixels);
+    buffers.sample_mask.resize(pixels);
   }
 }
 

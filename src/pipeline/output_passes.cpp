@@ -82,6 +82,8 @@ void Renderer::Impl::run_extra_outputs(Framebuffer& target) {
   settings.exposure = 0.0f;
   settings.debug_view = DebugView::none;
   settings.clear_color = glm::vec4(0.0f);
+  // Ids, normals and depths are not averaged: each pixel takes its centre's winner.
+  settings.msaa = 1;
   lighting.fog.mode = FogMode::none;
   lighting.environment.show_as_background = false;
   // Lines and points are color only: the passes leave their pixels empty (no depth, id or

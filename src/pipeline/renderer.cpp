@@ -28,6 +28,11 @@ Renderer::Renderer(const RenderSettings& settings) {
   if (ts != 16 && ts != 32 && ts != 64 && ts != 128) {
     throw Error("renderer: tile size must be 16, 32, 64 or 128, got " + std::to_string(ts));
   }
+  const int n = settings.msaa;
+  if (n != 1 && n != 2 && n != 4 && n != 8 && n != 16) {
+    throw Error("renderer: msaa must be 1, 2, 4, 8 or 16 samples per pixel, got " +
+                std::to_string(n));
+  }
   impl_ = std::make_unique<Impl>(settings);
 }
 

@@ -3,9 +3,11 @@
 
 #include <algorithm>
 #include <bit>
+#include <cstdlib>
 
 #include "core/parallel.hpp"
 #include "pipeline/setup/fixed_point.hpp"
+#include "pipeline/setup/sample_positions.hpp"
 
 namespace facet::pipeline {
 
@@ -25,9 +27,13 @@ std::int64_t edge_extreme(const SetupTriangle& t, int i, int x0, int y0, int x1,
 
 }  // namespace
 
-bool triangle_may_touch(const SetupTriangle& t, int x0, int y0, int x1, int y1) {
+bool triangle_may_touch(const SetupTriangle& t, int x0, int y0, int x1, int y1,
+                        std::int32_t reach) {
   for (int i = 0; i < 3; ++i) {
-    if (edge_extreme(t, i, x0, y0, x1, y1, true) < 0) return false;
+    // A point within `reach` of a centre along each axis adds at most (|a| + |b|) * reach.
+    const std::int64_t slack =
+        (std::abs(std::int64_t{t.a[i]}) + std::abs(std::int64_t{t.b[i]})) * std::int64_t{reach};
+    if (edge_extreme(t, i, x0, y0, x1, y1, true) + slack < 0) return false;
   }
   return true;
 }
@@ -63,7 +69,8 @@ void for_each_entry(const Frame& frame, std::size_t begin, std::size_t end, Visi
 bool may_touch_tile(const Frame& frame, const SetupTriangle& t, int tx, int ty) {
   const int ts = frame.tile_size;
   return triangle_may_touch(t, tx * ts, ty * ts, std::min((tx + 1) * ts, frame.width),
-                            std::min((ty + 1) * ts, frame.height));
+                            std::min((ty + 1) * ts, frame.height),
+                            frame.samples > 1 ? kSampleReach : 0);
 }
 
 // Calls visit(tile, entry, hides) for every tile each primitive of entries [begin, end) may

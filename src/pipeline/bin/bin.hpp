@@ -61,8 +61,11 @@ inline SequenceEntry binning_entry(const Frame& frame, std::uint32_t index,
 }
 
 // True if the triangle may cover a pixel centre of the rectangle [x0, x1) x [y0, y1):
-// the edge functions' maxima over the rectangle's centres are all non-negative.
-bool triangle_may_touch(const SetupTriangle& t, int x0, int y0, int x1, int y1);
+// the edge functions' maxima over the rectangle's centres are all non-negative. With reach
+// (fixed point), a point up to that far from a centre along each axis (MSAA samples:
+// kSampleReach).
+bool triangle_may_touch(const SetupTriangle& t, int x0, int y0, int x1, int y1,
+                        std::int32_t reach = 0);
 
 // True if the triangle covers every pixel centre of [x0, x1) x [y0, y1): the edge functions'
 // minima over the rectangle's centres are all non-negative (and so is its bounding box).

@@ -39,6 +39,8 @@ class PrimitiveSink {
         chunk_(chunk),
         varyings_(static_cast<std::uint32_t>(varyings)) {}
 
+  const Frame& frame() const { return frame_; }
+
   // A place for the next triangle (and its varying planes), in submission order. `edges` is
   // the triangle being set up, with its edge functions and bounding box already final
   // (binning's tile tests read them). Always inline: setup calls it for every triangle, and

@@ -52,6 +52,16 @@ void clear_tile(TileContext& tile, const Background& background, bool color_hidd
                 kClearDepth);
   }
   std::fill_n(tile.block_max_depth, tile.blocks_x * tile.blocks_x, kClearDepth);
+  if (tile.samples > 1) {  // every sample at the clear depth, each pixel's samples alike
+    for (int s = 1; s < tile.samples; ++s) {
+      for (int y = 0; y < tile.y1 - tile.y0; ++y) {
+        std::fill_n(
+            tile.depth + s * tile.sample_plane + static_cast<std::ptrdiff_t>(y) * tile.stride,
+            tile.x1 - tile.x0, kClearDepth);
+      }
+    }
+    std::fill_n(tile.split, tile.sample_plane, std::uint8_t{0});
+  }
 }
 
 void fill_background(TileContext& tile, const Background& background) {
@@ -72,12 +82,58 @@ void fill_background(TileContext& tile, const Background& background) {
       row[x] = glm::vec4(background_radiance(view, environment, tile.x0 + x, tile.y0 + y), 1.0f);
     }
   }
+  if (tile.samples == 1) return;
+  // The other samples of pixels whose samples differ (plane 0 is done above): the environment
+  // seen through the pixel centre, into those still at the clear depth.
+  for (int y = 0; y < tile.y1 - tile.y0; ++y) {
+    for (int x = 0; x < tile.x1 - tile.x0; ++x) {
+      const std::ptrdiff_t pixel = static_cast<std::ptrdiff_t>(y) * tile.stride + x;
+      if (!tile.split[pixel]) continue;
+      bool computed = false;
+      glm::vec4 sky{0.0f};
+      for (int s = 1; s < tile.samples; ++s) {
+        const std::ptrdiff_t i = s * tile.sample_plane + pixel;
+        if (tile.depth[i] != kClearDepth) continue;
+        if (!computed) {
+          sky = glm::vec4(background_radiance(view, environment, tile.x0 + x, tile.y0 + y), 1.0f);
+          computed = true;
+        }
+        tile.color[i] = sky;
+      }
+    }
+  }
 }
+
+namespace {
+
+// The MSAA resolve of one tile row: each pixel's samples averaged in linear light (in sample
+// order, then scaled: the same sum on every path), or its one color where they are alike.
+void average_samples(const TileContext& tile, std::ptrdiff_t first, int count, glm::vec4* out) {
+  const float inverse = 1.0f / static_cast<float>(tile.samples);
+  for (int x = 0; x < count; ++x) {
+    const std::ptrdiff_t pixel = first + x;
+    if (!tile.split[pixel]) {
+      out[x] = tile.color[pixel];
+      continue;
+    }
+    glm::vec4 sum = tile.color[pixel];
+    for (int s = 1; s < tile.samples; ++s) sum += tile.color[s * tile.sample_plane + pixel];
+    out[x] = sum * inverse;
+  }
+}
+
+}  // namespace
 
 void resolve_tile(const TileContext& tile, float scale, bool display_referred,
                   Framebuffer& target) {
+  glm::vec4 averaged[kMaxTileSize];
   for (int y = tile.y0; y < tile.y1; ++y) {
     const glm::vec4* color = tile.color + static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride;
+    if (tile.samples > 1) {
+      average_samples(tile, static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride,
+                      tile.x1 - tile.x0, averaged);
+      color = averaged;
+    }
     const float* depth = tile.depth + static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride;
     std::size_t row = static_cast<std::size_t>(y) * target.width();
     store_row(*tile.frame->kernels, target, row + tile.x0, color, tile.x1 - tile.x0, scale,

@@ -38,7 +38,9 @@ void fill_background(TileContext& tile, const Background& background);
 // A linear color as the display value a display-referred tile holds for it: its sRGB codes
 // / 255 (alpha is never encoded).
 glm::vec4 display_value_of(const glm::vec4& linear);
-// Writes the tile to the framebuffer; colors are scaled by `scale` (exposure) first. In a
+// Writes the tile to the framebuffer; colors are scaled by `scale` (exposure) first. A
+// multisampled tile's samples are averaged in linear light first (the depth image takes sample
+// 0's depth). In a
 // display-referred frame (Background::display_referred) the tile holds display values, which
 // an 8-bit target takes as they are, rounded to 8 bits, instead of sRGB-encoded (scale is then
 // 1).

@@ -193,6 +193,61 @@ int FindBoxPixels(const SetupTriangle& t, int x0, int y0, int width, int height,
                      xs, ys);
 }
 
+int FindBoxSamples(const SampleBoxSearch& in, std::int16_t* xs, std::int16_t* ys,
+                   std::uint16_t* masks) {
+  const FloatTag df;
+  const IntTag di;
+  const hn::Rebind<std::int16_t, FloatTag> d16;
+  const hn::Rebind<std::uint16_t, FloatTag> du16;
+  const int lanes = static_cast<int>(hn::Lanes(df));
+  const SetupTriangle& t = *in.triangle;
+  const auto half = hn::Set(df, 0.5f);
+  int count = 0;
+  for (int x = 0; x < in.width; x += lanes) {
+    const auto column = hn::Iota(di, x);
+    const auto in_box = hn::Lt(column, hn::Set(di, in.width));
+    hn::Vec<decltype(di)> along_row[3];
+    for (int i = 0; i < 3; ++i) {
+      along_row[i] = hn::Mul(hn::Set(di, t.a[i] * 16), column);  // |a| < 2^18: no overflow
+    }
+    const auto frame_x = hn::Add(column, hn::Set(di, in.x0));
+    // evaluate_in_row's dx * (px - ref_x), the same for every row.
+    const auto z_along_row =
+        hn::Mul(hn::Set(df, t.z.dx),
+                hn::Sub(hn::Add(hn::ConvertTo(df, frame_x), half), hn::Set(df, t.ref_x)));
+    for (int row = 0; row < in.height; ++row) {
+      hn::Vec<decltype(di)> edge[3];
+      for (int i = 0; i < 3; ++i) {
+        edge[i] = hn::Add(hn::Set(di, in.e_first[i] + row * t.b[i] * 16), along_row[i]);
+      }
+      const int y = in.y0 + row;
+      const float z_row = evaluate_row(t.z, t.ref_y, static_cast<float>(y) + 0.5f);
+      const auto z = hn::Add(hn::Set(df, z_row), z_along_row);
+      const float* depth = in.depth + static_cast<std::ptrdiff_t>(row) * in.depth_stride + x;
+      auto bits = hn::Zero(di);
+      for (int s = 0; s < in.samples; ++s) {
+        auto outside = hn::Zero(di);
+        for (int i = 0; i < 3; ++i) {
+          outside = hn::Or(outside, hn::Add(edge[i], hn::Set(di, in.step[i][s])));
+        }
+        auto covered = hn::RebindMask(df, hn::AndNot(hn::Lt(outside, hn::Zero(di)), in_box));
+        if (in.depth_test) {
+          const auto sample_z = hn::Add(z, hn::Set(df, in.sample_z[s]));
+          covered = hn::And(covered, hn::Lt(sample_z, hn::LoadU(df, depth + s * in.plane)));
+        }
+        bits = hn::Or(bits, hn::IfThenElseZero(hn::RebindMask(di, covered), hn::Set(di, 1 << s)));
+      }
+      const auto any = hn::Ne(bits, hn::Zero(di));
+      const auto n = hn::CountTrue(di, any);
+      hn::StoreU(hn::DemoteTo(d16, hn::Compress(frame_x, any)), d16, xs + count);
+      hn::StoreU(hn::Set(d16, static_cast<std::int16_t>(y)), d16, ys + count);
+      hn::StoreU(hn::DemoteTo(du16, hn::Compress(bits, any)), du16, masks + count);
+      count += static_cast<int>(n);
+    }
+  }
+  return count;
+}
+
 const char* TargetName() { return hwy::TargetName(HWY_TARGET); }
 
 }  // namespace facet::pipeline::HWY_NAMESPACE
@@ -205,12 +260,13 @@ HWY_EXPORT(CoverBlock);
 HWY_EXPORT(TargetName);
 HWY_EXPORT(InterpolatePixels);
 HWY_EXPORT(FindBoxPixels);
+HWY_EXPORT(FindBoxSamples);
 
 const char* simd_target_name() { return HWY_DISPATCH_TABLE(TargetName)[chosen_simd_target()](); }
 
 RasterKernels raster_kernels(SimdTarget index) {
   return {HWY_DISPATCH_TABLE(CoverBlock)[index], HWY_DISPATCH_TABLE(InterpolatePixels)[index],
-          HWY_DISPATCH_TABLE(FindBoxPixels)[index]};
+          HWY_DISPATCH_TABLE(FindBoxPixels)[index], HWY_DISPATCH_TABLE(FindBoxSamples)[index]};
 }
 
 }  // namespace facet::pipeline

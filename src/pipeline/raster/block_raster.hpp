@@ -62,6 +62,26 @@ inline constexpr int kDepthSlack = 16;
 // Entries the pixel search may write past the last pixel it finds (RasterKernels).
 inline constexpr int kBoxSearchSlack = 16;
 
+// A box search under MSAA (raster/msaa.hpp): the pixels of the box of `width` x `height` pixels
+// at frame pixel (x0, y0), at most kBlockPixels, whose samples triangle t covers and pass the
+// depth test. Edge values are counted in sixteenths of a pixel, the grid the sample positions lie
+// on: floor(E / 16) at the box's first pixel centre is e_first (clamped to +-2^30), a pixel
+// step adds 16 * a, sample s adds step[i][s] (a * offset x + b * offset y). Exact in 32 bits
+// when |a| + |b| < 2^18 for every edge (msaa.hpp checks; others take the scalar walk): the
+// steps across a box of 64 pixels stay within 2^28, so a clamped e_first keeps every sign.
+struct SampleBoxSearch {
+  const SetupTriangle* triangle;
+  int x0, y0, width, height;
+  int samples;
+  std::int32_t e_first[3];
+  std::int32_t step[3][16];
+  const float* sample_z;  // the depth step of each sample (TileContext::sample_z)
+  bool depth_test;
+  const float* depth;  // plane 0's depth at the box's first pixel; kDepthSlack readable after
+  int depth_stride;
+  std::ptrdiff_t plane;  // floats between sample planes
+};
+
 // The raster's SIMD kernels (block_raster.cpp, compiled for every target Highway supports) for
 // the target chosen now, as plain function pointers: the raster loops call them a triangle or
 // a block at a time, so dispatching each call (asking libhwy for the chosen target, then
@@ -96,6 +116,13 @@ struct RasterKernels {
   int (*find_box_pixels)(const SetupTriangle& t, int x0, int y0, int width, int height,
                          const float* depth, int depth_stride, bool depth_test, std::int16_t* x,
                          std::int16_t* y);
+  // The MSAA box search (SampleBoxSearch): the pixels with a covered sample that passes the
+  // depth test (the same samples, and the same sample depths, z at the centre as evaluate_row
+  // and evaluate_in_row give it plus sample_z[s], as msaa.hpp's scalar walk): positions to x[n],
+  // y[n], sample bits to masks[n], from n = 0; returns how many. Like find_box_pixels it stores
+  // whole vectors, up to kBoxSearchSlack entries past the last found.
+  int (*find_box_samples)(const SampleBoxSearch& search, std::int16_t* x, std::int16_t* y,
+                          std::uint16_t* masks);
 };
 RasterKernels raster_kernels(SimdTarget target);
 

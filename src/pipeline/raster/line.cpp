@@ -7,6 +7,7 @@
 // vertex is drawn once and segments never double a pixel. Everything is integer (fixed
 // point), so a pixel's coverage does not depend on which tile evaluates it.
 #include <algorithm>
+#include <bit>
 #include <cstdlib>
 
 #include "pipeline/raster/raster.hpp"
@@ -41,6 +42,30 @@ void walk(const Walk& w, int lo, int hi, Visit&& visit) {
   }
 }
 
+// Under MSAA a line covers every sample of the pixels it covers (it is not anti-aliased), each
+// sample passing the depth test on its own, so a line along a multisampled silhouette is hidden
+// exactly where the surface hides it.
+void plot_samples(TileContext& tile, std::ptrdiff_t i, float z, const glm::vec4& color) {
+  unsigned mask = 0;
+  for (int s = 0; s < tile.samples; ++s) {
+    if (z <= tile.depth[s * tile.sample_plane + i] + kLineDepthBias) mask |= 1u << s;
+  }
+  if (mask == 0) return;
+  if (mask == (1u << tile.samples) - 1) {
+    tile.split[i] = 0;  // every sample this color
+    tile.color[i] = color;
+  } else {
+    split_pixel(tile, i);
+    for (unsigned m = mask; m != 0; m &= m - 1)
+      tile.color[std::countr_zero(m) * tile.sample_plane + i] = color;
+  }
+  for (unsigned m = mask; m != 0; m &= m - 1) {
+    float& depth = tile.depth[std::countr_zero(m) * tile.sample_plane + i];
+    depth = std::min(z, depth);
+  }
+  ++tile.pixels_shaded;
+}
+
 }  // namespace
 
 void raster_line(TileContext& tile, const SetupLine& l) {
@@ -50,6 +75,10 @@ void raster_line(TileContext& tile, const SetupLine& l) {
     if (x < tile.x0 || x >= tile.x1 || y < tile.y0 || y >= tile.y1) return;
     float z = l.z0 + (l.z1 - l.z0) * t;
     std::size_t i = static_cast<std::size_t>(y - tile.y0) * tile.stride + (x - tile.x0);
+    if (tile.samples > 1) {
+      plot_samples(tile, static_cast<std::ptrdiff_t>(i), z, l.color);
+      return;
+    }
     if (!(z <= tile.depth[i] + kLineDepthBias)) return;
     tile.color[i] = l.color;
     tile.depth[i] = std::min(z, tile.depth[i]);

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -16,6 +17,7 @@
 #include "pipeline/frame.hpp"
 #include "pipeline/raster/block_raster.hpp"
 #include "pipeline/setup/fixed_point.hpp"
+#include "pipeline/setup/sample_positions.hpp"
 #include "shading/fog.hpp"
 #include "shading/fragment.hpp"
 #include "shading/kernels.hpp"
@@ -51,7 +53,45 @@ struct TileContext {
   // own (render_tile.cpp sets it before the first triangle).
   WaitingPixels* waiting = nullptr;
   RasterKernels kernels{};  // the frame's (pipeline/kernels.hpp), set with the tile
+  // MSAA (raster/msaa.hpp): sample s of pixel i has color[s * sample_plane + i] and
+  // depth[s * sample_plane + i]; plane 0 is the one the one-sample paths use. While split[i] is
+  // 0, every sample of pixel i has color[i]'s color (the other planes' colors are stale): a
+  // write that covers all samples costs one color, and only edge pixels hold several.
+  int samples = 1;
+  std::ptrdiff_t sample_plane = 0;
+  std::uint8_t* split = nullptr;
+  // Per pixel, the samples the triangle being drawn covers there that pass the depth test
+  // (msaa.hpp sets it before shading the pixel); and that triangle's depth at each sample
+  // minus its depth at the pixel centre.
+  std::uint16_t* sample_mask = nullptr;
+  float sample_z[kMaxSamples] = {};
 };
+
+// Alpha to coverage for cut-out (alpha-mask) draws under MSAA: the samples a pixel of this alpha
+// keeps. Alpha is mapped so that the cutoff keeps half of them, 1 all and 0 none (linearly on
+// each side: the cut-out's edge is where a one-sample render puts it, softened across the
+// samples), and that many samples are kept, the first ones of the pattern. A fixed subset, not a
+// dither: the image stays the same for every tile and thread.
+inline unsigned alpha_to_coverage(float alpha, float cutoff, int samples) {
+  float kept;
+  if (!(alpha == alpha)) return 0u;  // NaN: discarded, as the one-sample test does
+  if (alpha >= cutoff) {
+    kept = cutoff >= 1.0f ? 1.0f : 0.5f + 0.5f * (alpha - cutoff) / (1.0f - cutoff);
+  } else {
+    kept = cutoff <= 0.0f ? 0.0f : 0.5f * alpha / cutoff;
+  }
+  const float count = std::clamp(kept, 0.0f, 1.0f) * static_cast<float>(samples) + 0.5f;
+  const int n = static_cast<int>(count);  // round half up, 0 .. samples
+  return n >= 32 ? ~0u : (1u << n) - 1u;
+}
+
+// MSAA: gives each sample of pixel i its own copy of the pixel's color, before a write that
+// leaves the samples different.
+inline void split_pixel(TileContext& tile, std::ptrdiff_t i) {
+  if (tile.split[i]) return;
+  for (int s = 1; s < tile.samples; ++s) tile.color[s * tile.sample_plane + i] = tile.color[i];
+  tile.split[i] = 1;
+}
 
 // Shading models may opt out of the depth test (debug counters) and blend additively.
 template <class Shading>
@@ -306,7 +346,14 @@ class PixelWriter {
   template <bool kFogged = false>
   bool store(int x, int y, float z, float w, glm::vec4 color) {
     if constexpr (kAlpha == AlphaMode::mask) {
-      if (!(color.a >= alpha_cutoff_)) return false;  // cut-out: no color, no depth
+      if (tile_.samples > 1) {
+        // Alpha to coverage: the cut-out's edge falls across the samples.
+        const std::ptrdiff_t pixel = index(x, y);
+        tile_.sample_mask[pixel] &= alpha_to_coverage(color.a, alpha_cutoff_, tile_.samples);
+        if (tile_.sample_mask[pixel] == 0) return false;
+      } else if (!(color.a >= alpha_cutoff_)) {
+        return false;  // cut-out: no color, no depth
+      }
     }
     if constexpr (edge_overlay<Shading>()) {
       if (distance_to_edges(*t_, edge_scales_, x, y) < kOverlayHalfWidth) {
@@ -315,10 +362,48 @@ class PixelWriter {
     }
     if constexpr (!kFogged) shading::apply_fog(color, uniforms_.frame->view_depth(w, z), fog_);
     const std::ptrdiff_t pixel = index(x, y);
-    blend_into<Shading, kAlpha>(tile_.color[pixel], color);
-    if constexpr (kDepthWrite) tile_.depth[pixel] = z;
+    if (tile_.samples > 1) {
+      store_samples(pixel, z, color);
+    } else {
+      blend_into<Shading, kAlpha>(tile_.color[pixel], color);
+      if constexpr (kDepthWrite) tile_.depth[pixel] = z;
+    }
     ++shaded;
     return true;
+  }
+
+  // MSAA: writes the pixel's color, shaded once, to the samples tile.sample_mask says, each
+  // with its own depth and blending.
+  void store_samples(std::ptrdiff_t pixel, float z, const glm::vec4& color) {
+    // Locals: the stores below are floats, which the compiler must assume may change the tile's
+    // fields unless they are read once here.
+    const unsigned mask = tile_.sample_mask[pixel];
+    const int samples = tile_.samples;
+    const std::ptrdiff_t plane = tile_.sample_plane;
+    glm::vec4* color_at = tile_.color + pixel;
+    float* depth_at = tile_.depth + pixel;
+    const float* sample_z = tile_.sample_z;
+    const unsigned all = (1u << samples) - 1;
+    if (mask == all) {
+      constexpr bool kReplaces =
+          !additive<Shading>() && (kAlpha == AlphaMode::opaque || kAlpha == AlphaMode::mask);
+      if (kReplaces || !tile_.split[pixel]) {
+        blend_into<Shading, kAlpha>(*color_at, color);  // every sample alike (again)
+        tile_.split[pixel] = 0;
+      } else {
+        for (int s = 0; s < samples; ++s) blend_into<Shading, kAlpha>(color_at[s * plane], color);
+      }
+      if constexpr (kDepthWrite) {
+        for (int s = 0; s < samples; ++s) depth_at[s * plane] = z + sample_z[s];
+      }
+      return;
+    }
+    split_pixel(tile_, pixel);
+    for (unsigned m = mask; m != 0; m &= m - 1) {
+      const int s = std::countr_zero(m);
+      blend_into<Shading, kAlpha>(color_at[s * plane], color);
+      if constexpr (kDepthWrite) depth_at[s * plane] = z + sample_z[s];
+    }
   }
 
   shading::Fragment fragment;

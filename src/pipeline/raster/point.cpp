@@ -12,10 +12,35 @@
 // Depth: the centre's, at every pixel, tested (nearer than what is there) and written like an
 // opaque triangle's. Points are unlit: their color was fixed at setup.
 #include <algorithm>
+#include <bit>
 
 #include "pipeline/raster/raster.hpp"
 
 namespace facet::pipeline {
+namespace {
+
+// Under MSAA a point covers every sample of its pixels (its square is not anti-aliased), each
+// sample passing the depth test on its own.
+void plot_samples(TileContext& tile, std::ptrdiff_t i, const SetupPoint& p) {
+  unsigned mask = 0;
+  for (int s = 0; s < tile.samples; ++s) {
+    if (p.z < tile.depth[s * tile.sample_plane + i]) mask |= 1u << s;
+  }
+  if (mask == 0) return;
+  if (mask == (1u << tile.samples) - 1) {
+    tile.split[i] = 0;  // every sample this color
+    tile.color[i] = p.color;
+  } else {
+    split_pixel(tile, i);
+    for (unsigned m = mask; m != 0; m &= m - 1)
+      tile.color[std::countr_zero(m) * tile.sample_plane + i] = p.color;
+  }
+  for (unsigned m = mask; m != 0; m &= m - 1)
+    tile.depth[std::countr_zero(m) * tile.sample_plane + i] = p.z;
+  ++tile.pixels_shaded;
+}
+
+}  // namespace
 
 void raster_point(TileContext& tile, const SetupPoint& p) {
   const int x0 = std::max(p.min_x, tile.x0), x1 = std::min(p.max_x, tile.x1 - 1);
@@ -24,6 +49,10 @@ void raster_point(TileContext& tile, const SetupPoint& p) {
     const std::size_t row = static_cast<std::size_t>(y - tile.y0) * tile.stride;
     for (int x = x0; x <= x1; ++x) {
       const std::size_t i = row + static_cast<std::size_t>(x - tile.x0);
+      if (tile.samples > 1) {
+        plot_samples(tile, static_cast<std::ptrdiff_t>(i), p);
+        continue;
+      }
       if (!(p.z < tile.depth[i])) continue;
       tile.color[i] = p.color;
       tile.depth[i] = p.z;

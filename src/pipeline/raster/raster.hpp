@@ -11,6 +11,7 @@
 
 #include "pipeline/frame.hpp"
 #include "pipeline/raster/block_raster.hpp"
+#include "pipeline/raster/msaa.hpp"
 #include "pipeline/raster/pixel_writer.hpp"
 #include "pipeline/raster/small_triangles.hpp"
 #include "pipeline/setup/fixed_point.hpp"
@@ -23,7 +24,6 @@ namespace facet::pipeline {
 // says why 32 bits hold them). An edge inside at all four corners is inside at every pixel
 // between them. Returns whether the rectangle lies outside some edge (no pixel covered),
 // inside all three (every pixel covered), or crosses an edge.
-enum class EdgeCover { outside, crossed, inside };
 inline EdgeCover classify_edges(const SetupTriangle& t, int block_x, int block_y, BlockInput& in) {
   EdgeCover cover = EdgeCover::inside;
   for (int i = 0; i < 3; ++i) {
@@ -73,6 +73,10 @@ inline std::uint64_t block_pixels_mask(int width, int height) {
 //      draws go straight into the tile (shade_full_block).
 template <class Shading, AlphaMode kAlpha = AlphaMode::opaque>
 void raster_triangle(TileContext& tile, const SetupTriangle& t) {
+  if (tile.samples > 1) {  // multisampled tiles (pixels never wait there)
+    raster_triangle_msaa<Shading, kAlpha>(tile, t);
+    return;
+  }
   const int x0 = std::max(t.min_x, tile.x0), x1 = std::min(t.max_x, tile.x1 - 1);
   const int y0 = std::max(t.min_y, tile.y0), y1 = std::min(t.max_y, tile.y1 - 1);
   if (x0 > x1 || y0 > y1) return;

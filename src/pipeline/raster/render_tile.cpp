@@ -73,12 +73,18 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
   tile.color = buffers.color.data();
   tile.depth = buffers.depth.data();
   tile.block_max_depth = buffers.block_max_depth.data();
+  tile.samples = frame.samples;
+  tile.sample_plane = static_cast<std::ptrdiff_t>(ts) * ts;
+  tile.split = buffers.split.data();
+  tile.sample_mask = buffers.sample_mask.data();
   pipeline::WaitingPixels waiting;
   tile.waiting = &waiting;
   // Skip what the tile's last full, opaque, nearest triangle hides anyway (binning noted
   // whether there may be one); in bins of a few (large) triangles, also what such triangles
   // hide block by block.
-  const bool may_hide = frame.bin_may_hide[index] != 0;
+  // Under MSAA, occlusion's pixel-centre reasoning does not hold for the samples: nothing is
+  // skipped.
+  const bool may_hide = frame.bin_may_hide[index] != 0 && tile.samples == 1;
   if (may_hide) {
     bin += pipeline::first_visible_entry(frame, bin, bin_end - bin, tile.x0, tile.y0, tile.x1,
                                          tile.y1);
@@ -89,7 +95,8 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
                             pipeline::hides_clear(frame, *bin, tile.x0, tile.y0, tile.x1, tile.y1);
   pipeline::clear_tile(tile, background, color_hidden);
   std::uint32_t block_starts[pipeline::kMaxTileBlocks];
-  if (bin_end - bin <= static_cast<std::ptrdiff_t>(pipeline::kMaxBlockOcclusionEntries) &&
+  if (tile.samples == 1 &&
+      bin_end - bin <= static_cast<std::ptrdiff_t>(pipeline::kMaxBlockOcclusionEntries) &&
       pipeline::first_visible_entries_per_block(frame, bin, bin_end - bin, tile.x0, tile.y0,
                                                 tile.x1, tile.y1, tile.blocks_x, block_starts)) {
     tile.block_starts = block_starts;

@@ -24,6 +24,7 @@
 #include "pipeline/geometry/projected_load-inl.h"
 #include "pipeline/setup/back_faces.hpp"
 #include "pipeline/setup/fixed_point.hpp"
+#include "pipeline/setup/sample_positions.hpp"
 #include "pipeline/setup/setup.hpp"
 
 HWY_BEFORE_NAMESPACE();
@@ -132,6 +133,8 @@ int SetupBatchLanes(const SetupBatch& b, const SetupBatchTarget& target) {
   const IntVec zero = hn::Zero(di);
   const IntVec last_x = hn::Set(di, target.width - 1), last_y = hn::Set(di, target.height - 1);
   const FloatVec to_pixels = hn::Set(df, 1.0f / static_cast<float>(kSubpixelScale));
+  const bool multisampled = target.out.frame().samples > 1;
+  const IntVec reach = hn::Set(di, multisampled ? kSampleReach : 0);
   // One vector of triangles' results, for the per-triangle part.
   alignas(64) std::int32_t swapped[kLanes];
   alignas(64) std::int32_t a[3][kLanes], bx[3][kLanes];
@@ -193,10 +196,12 @@ int SetupBatchLanes(const SetupBatch& b, const SetupBatchTarget& target) {
     const IntVec low_y = hn::Min(hn::Min(y[0], y[1]), y[2]);
     const IntVec high_x = hn::Max(hn::Max(x[0], x[1]), x[2]);
     const IntVec high_y = hn::Max(hn::Max(y[0], y[1]), y[2]);
-    const IntVec box_x0 = hn::Max(zero, first_centre(low_x));
-    const IntVec box_y0 = hn::Max(zero, first_centre(low_y));
-    const IntVec box_x1 = hn::Min(last_x, last_centre(high_x));
-    const IntVec box_y1 = hn::Min(last_y, last_centre(high_y));
+    // Under MSAA, the pixels whose samples the triangle may cover: the box widened by the
+    // samples' reach (sample_positions.hpp).
+    const IntVec box_x0 = hn::Max(zero, first_centre(hn::Sub(low_x, reach)));
+    const IntVec box_y0 = hn::Max(zero, first_centre(hn::Sub(low_y, reach)));
+    const IntVec box_x1 = hn::Min(last_x, last_centre(hn::Add(high_x, reach)));
+    const IntVec box_y1 = hn::Min(last_y, last_centre(hn::Add(high_y, reach)));
     keep = hn::AndNot(hn::Or(hn::Gt(box_x0, box_x1), hn::Gt(box_y0, box_y1)), keep);
     hn::Store(box_x0, di, min_x), hn::Store(box_y0, di, min_y);
     hn::Store(box_x1, di, max_x), hn::Store(box_y1, di, max_y);
@@ -214,13 +219,14 @@ int SetupBatchLanes(const SetupBatch& b, const SetupBatchTarget& target) {
       hn::Store(ai, di, a[i]), hn::Store(bi, di, bx[i]);
       hn::Store(hn::ConvertTo(dl, hn::Sub(hn::PromoteTo(dd, bias[i]), products)), dl, c[i]);
     }
-    // Small triangles covering no pixel centre: dropped.
+    // Small triangles covering no pixel centre: dropped (not under MSAA, where they may still
+    // cover a sample).
     const IntVec box_width = hn::Sub(box_x1, box_x0), box_height = hn::Sub(box_y1, box_y0);
     const IntVec side = hn::Set(di, kProbedBoxSide), span = hn::Set(di, kProbedSpan);
     const auto probed = hn::And(
         hn::And(keep, hn::And(hn::Lt(box_width, side), hn::Lt(box_height, side))),
         hn::And(hn::Lt(hn::Sub(high_x, low_x), span), hn::Lt(hn::Sub(high_y, low_y), span)));
-    if (!hn::AllFalse(di, probed)) {
+    if (!multisampled && !hn::AllFalse(di, probed)) {
       const auto covers =
           CoversACentre(x, y, edge_a, edge_b, bias, box_x0, box_y0, box_width, box_height, probed);
       keep = hn::AndNot(hn::AndNot(covers, probed), keep);

@@ -1,0 +1,250 @@
+// Stage: raster + shade under multisampling (RenderSettings::msaa > 1). raster_triangle
+// (raster.hpp) hands a triangle here when the tile holds several samples a pixel
+// (TileContext::samples). Coverage and depth are per sample, with the same fixed-point edge
+// functions and top-left rule as one sample a pixel, evaluated at the standard sample positions
+// (setup/sample_positions.hpp); the pixel is shaded once, at its centre (its varyings
+// extrapolated there when the centre itself is outside), and that color goes to the samples it
+// covers that pass the depth test (PixelWriter::store_samples). output.cpp averages the samples.
+//
+// Cost: blocks whose every sample the triangle covers, in front of everything drawn there, take
+// the one-sample whole-block path (cover_block, shade_full_block) and write one color a pixel;
+// only their depths are per sample. Every other block, and the whole box of a small triangle,
+// is searched for covered samples (SIMD across box rows, find_box_samples): that is the work
+// along edges.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+
+#include "pipeline/raster/block_raster.hpp"
+#include "pipeline/raster/pixel_writer.hpp"
+#include "pipeline/setup/sample_positions.hpp"
+#include "pipeline/setup/setup.hpp"
+
+namespace facet::pipeline {
+
+// How a block lies against a triangle's edges: outside some edge (nothing covered), inside all
+// three (everything covered) or crossing one (raster.hpp's classify_edges, classify_samples).
+enum class EdgeCover { outside, crossed, inside };
+
+// What a triangle's samples add to its values at the pixel centre: each edge function's step
+// (exact, fixed point) and the depth's (rounded once, the same on every path, so a sample's
+// depth is fl(depth at the centre + step) wherever it is computed). Rounding is monotonic, so
+// fl(a + min step) and fl(b + max step) bound the samples' depths of centres within [a, b].
+struct SampleSteps {
+  std::int64_t edge[3][kMaxSamples];
+  std::int64_t edge_min[3], edge_max[3];
+  float z_min, z_max;
+  // The SIMD box search computes in 32 bits (SampleBoxSearch): only for these coefficients.
+  bool fits_32_bits = true;
+
+  // Fills z (the tile's sample_z) with the depth steps.
+  SampleSteps(const SetupTriangle& t, int samples, float* z) {
+    const SampleOffset* pattern = sample_pattern(samples);
+    for (int i = 0; i < 3; ++i) {
+      const std::int64_t size = std::abs(std::int64_t{t.a[i]}) + std::abs(std::int64_t{t.b[i]});
+      fits_32_bits = fits_32_bits && size < (std::int64_t{1} << 18);
+      edge_min[i] = edge_max[i] = std::int64_t{t.a[i]} * pattern[0].x * kSampleUnit +
+                                  std::int64_t{t.b[i]} * pattern[0].y * kSampleUnit;
+      for (int s = 0; s < samples; ++s) {
+        edge[i][s] = std::int64_t{t.a[i]} * pattern[s].x * kSampleUnit +
+                     std::int64_t{t.b[i]} * pattern[s].y * kSampleUnit;
+        edge_min[i] = std::min(edge_min[i], edge[i][s]);
+        edge_max[i] = std::max(edge_max[i], edge[i][s]);
+      }
+    }
+    for (int s = 0; s < samples; ++s) {
+      // Sixteenths are exact in float; no contraction (the build's -ffp-contract=off).
+      z[s] = t.z.dx * (static_cast<float>(pattern[s].x) / 16.0f) +
+             t.z.dy * (static_cast<float>(pattern[s].y) / 16.0f);
+    }
+    z_min = *std::min_element(z, z + samples);
+    z_max = *std::max_element(z, z + samples);
+  }
+};
+
+// Which samples of the pixels of [x0, x1] x [y0, y1] (frame pixels, inclusive) triangle t may
+// cover: outside (none), inside (all, at every pixel) or crossed. Exact: each edge is linear, so
+// its extremes over the samples are at the rectangle's corners plus the steps' extremes.
+inline EdgeCover classify_samples(const SetupTriangle& t, const SampleSteps& steps, int x0, int y0,
+                                  int x1, int y1) {
+  EdgeCover cover = EdgeCover::inside;
+  for (int i = 0; i < 3; ++i) {
+    const std::int64_t c[4] = {edge_at_centre(t, i, x0, y0), edge_at_centre(t, i, x1, y0),
+                               edge_at_centre(t, i, x0, y1), edge_at_centre(t, i, x1, y1)};
+    const std::int64_t lowest = *std::min_element(c, c + 4) + steps.edge_min[i];
+    const std::int64_t highest = *std::max_element(c, c + 4) + steps.edge_max[i];
+    if (highest < 0) return EdgeCover::outside;
+    if (lowest < 0) cover = EdgeCover::crossed;
+  }
+  return cover;
+}
+
+// The pixels of [left, right] x [top, bottom] (frame pixels, at most PackedPixels::kCapacity):
+// the samples each covers that pass the depth test go to tile.sample_mask, and the pixels with
+// any are shaded and written. The search runs with SIMD (find_box_samples) for triangles whose
+// edge coefficients allow 32 bits, one pixel at a time in 64 bits for the others.
+template <class Shading, AlphaMode kAlpha>
+void shade_covered_samples(TileContext& tile, const SetupTriangle& t, const SampleSteps& steps,
+                           PixelWriter<Shading, kAlpha>& out, PackedPixels& pixels, int left,
+                           int top, int right, int bottom) {
+  constexpr bool kDepthTest = depth_tested<Shading>();
+  const int samples = tile.samples;
+  const unsigned all = (1u << samples) - 1;
+  const std::ptrdiff_t plane = tile.sample_plane;
+  if (steps.fits_32_bits) {  // SIMD across box rows, the same samples and depths as below
+    SampleBoxSearch search;
+    search.triangle = &t;
+    search.x0 = left, search.y0 = top;
+    search.width = right - left + 1, search.height = bottom - top + 1;
+    search.samples = samples;
+    constexpr std::int64_t kClamp = std::int64_t{1} << 30;
+    for (int i = 0; i < 3; ++i) {
+      // floor(E / 16): the first centre lies on the sixteenths' grid, like every sample.
+      search.e_first[i] = static_cast<std::int32_t>(
+          std::clamp(edge_at_centre(t, i, left, top) >> 4, -kClamp, kClamp));
+      for (int s = 0; s < samples; ++s) {
+        search.step[i][s] = static_cast<std::int32_t>(steps.edge[i][s] / kSampleUnit);
+      }
+    }
+    search.sample_z = tile.sample_z;
+    search.depth_test = kDepthTest;
+    search.depth =
+        tile.depth + static_cast<std::ptrdiff_t>(top - tile.y0) * tile.stride + (left - tile.x0);
+    search.depth_stride = tile.stride;
+    search.plane = plane;
+    std::uint16_t masks[PackedPixels::kCapacity + kBoxSearchSlack];
+    pixels.count = tile.kernels.find_box_samples(search, pixels.x, pixels.y, masks);
+    for (int n = 0; n < pixels.count; ++n) {
+      tile.sample_mask[static_cast<std::ptrdiff_t>(pixels.y[n] - tile.y0) * tile.stride +
+                       (pixels.x[n] - tile.x0)] = masks[n];
+    }
+  } else {
+    pixels.count = 0;
+    for (int y = top; y <= bottom; ++y) {
+      std::int64_t e[3];
+      for (int i = 0; i < 3; ++i) e[i] = edge_at_centre(t, i, left, y);
+      const float z_row = evaluate_row(t.z, t.ref_y, static_cast<float>(y) + 0.5f);
+      for (int x = left; x <= right; ++x) {
+        // Most pixels of a box lie wholly outside an edge or inside all three: the steps'
+        // extremes tell, and only the others test their samples one by one.
+        const std::int64_t reach_in =
+            (e[0] + steps.edge_min[0]) | (e[1] + steps.edge_min[1]) | (e[2] + steps.edge_min[2]);
+        unsigned mask = 0;
+        if (reach_in >= 0) {
+          mask = all;
+        } else if (!((e[0] + steps.edge_max[0]) < 0 || (e[1] + steps.edge_max[1]) < 0 ||
+                     (e[2] + steps.edge_max[2]) < 0)) {
+          for (int s = 0; s < samples; ++s) {
+            const std::int64_t outside =
+                (e[0] + steps.edge[0][s]) | (e[1] + steps.edge[1][s]) | (e[2] + steps.edge[2][s]);
+            mask |= static_cast<unsigned>(outside >= 0) << s;
+          }
+        }
+        for (int i = 0; i < 3; ++i) e[i] += std::int64_t{t.a[i]} * kSubpixelScale;
+        if (mask == 0) continue;
+        const std::ptrdiff_t pixel =
+            static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride + (x - tile.x0);
+        if constexpr (kDepthTest) {
+          const float z = evaluate_in_row(z_row, t.z, t.ref_x, static_cast<float>(x) + 0.5f);
+          for (unsigned m = mask; m != 0; m &= m - 1) {
+            const int s = std::countr_zero(m);
+            if (!(z + tile.sample_z[s] < tile.depth[s * plane + pixel]))  // NaN fails
+              mask &= ~(1u << s);
+          }
+          if (mask == 0) continue;
+        }
+        tile.sample_mask[pixel] = static_cast<std::uint16_t>(mask);
+        const int n = pixels.count++;
+        pixels.x[n] = static_cast<std::int16_t>(x);
+        pixels.y[n] = static_cast<std::int16_t>(y);
+      }
+    }
+  }
+  if (pixels.count == 0) return;
+  pixels.pad(0);  // interpolate_pixels reads whole vectors of positions
+  tile.kernels.interpolate_pixels(t, out.fragment.planes, Shading::kVaryings, 0, pixels.count,
+                                  pixels.x, pixels.y, pixels.z, pixels.w, pixels.v);
+  out.shade(pixels);
+}
+
+// Rasterizes one triangle into a multisampled tile, 8x8 blocks at a time as raster_triangle;
+// a triangle whose box holds at most a block's worth of pixels in one go.
+template <class Shading, AlphaMode kAlpha>
+void raster_triangle_msaa(TileContext& tile, const SetupTriangle& t) {
+  const int x0 = std::max(t.min_x, tile.x0), x1 = std::min(t.max_x, tile.x1 - 1);
+  const int y0 = std::max(t.min_y, tile.y0), y1 = std::min(t.max_y, tile.y1 - 1);
+  if (x0 > x1 || y0 > y1) return;
+  using Writer = PixelWriter<Shading, kAlpha>;
+  Writer out(tile, t);
+  const int samples = tile.samples;
+  const std::ptrdiff_t plane = tile.sample_plane;
+  const SampleSteps steps(t, samples, tile.sample_z);
+  PackedPixels pixels;
+  if ((x1 - x0 + 1) * (y1 - y0 + 1) <= PackedPixels::kCapacity) {
+    // Small: no block is whole, and one walk of the box costs less than classifying blocks.
+    shade_covered_samples(tile, t, steps, out, pixels, x0, y0, x1, y1);
+    tile.pixels_shaded += out.shaded;
+    return;
+  }
+  constexpr bool kDepthTest = depth_tested<Shading>();
+  constexpr bool kTightensBound = Writer::kDepthWrite && kAlpha == AlphaMode::opaque;
+  // Whole blocks: every edge inside, nothing to test (cover_block interpolates for them).
+  BlockInput whole;
+  std::fill_n(whole.e, 3, 0), std::fill_n(whole.a, 3, 0), std::fill_n(whole.b, 3, 0);
+  whole.x_begin = whole.y_begin = 0;
+  whole.x_end = whole.y_end = kBlockSize;
+  whole.triangle = &t;
+  whole.varying_planes = out.fragment.planes;
+  whole.varyings = Shading::kVaryings;
+  whole.depth_test = false;
+  whole.depth = tile.depth;
+  whole.depth_stride = tile.stride;
+  whole.interpolate = true;
+  alignas(64) BlockFragments block;
+  const int bx0 = (x0 - tile.x0) / kBlockSize, bx1 = (x1 - tile.x0) / kBlockSize;
+  const int by0 = (y0 - tile.y0) / kBlockSize, by1 = (y1 - tile.y0) / kBlockSize;
+  for (int by = by0; by <= by1; ++by) {
+    const int block_y = tile.y0 + by * kBlockSize;
+    const int top = std::max(y0, block_y), bottom = std::min(y1, block_y + kBlockSize - 1);
+    for (int bx = bx0; bx <= bx1; ++bx) {
+      const int block_x = tile.x0 + bx * kBlockSize;
+      const int left = std::max(x0, block_x), right = std::min(x1, block_x + kBlockSize - 1);
+      const EdgeCover edges = classify_samples(t, steps, left, top, right, bottom);
+      if (edges == EdgeCover::outside) continue;
+      float& max_depth = tile.block_max_depth[by * tile.blocks_x + bx];
+      float farthest = 0.0f;
+      if constexpr (kDepthTest) {
+        const DepthRange range = depth_range_over(t, left, top, right, bottom);
+        if (range.nearest + steps.z_min >= max_depth) continue;  // NaN goes on (and fails)
+        farthest = range.farthest + steps.z_max;
+      }
+      const bool whole_block = edges == EdgeCover::inside && left == block_x && top == block_y &&
+                               right - left + 1 == kBlockSize && bottom - top + 1 == kBlockSize;
+      const std::ptrdiff_t first =
+          static_cast<std::ptrdiff_t>(block_y - tile.y0) * tile.stride + (block_x - tile.x0);
+      if (whole_block && out.full_blocks() && (!kDepthTest || farthest < max_depth)) {
+        whole.px0 = static_cast<float>(block_x) + 0.5f;
+        whole.py0 = static_cast<float>(block_y) + 0.5f;
+        tile.kernels.cover_block(whole, block);
+        out.shade_full_block(block, block_x, block_y);
+        for (int row = 0; row < kBlockSize; ++row) {
+          const std::ptrdiff_t pixel = first + static_cast<std::ptrdiff_t>(row) * tile.stride;
+          const float* z = block.z + row * kBlockSize;
+          for (int s = 0; s < samples; ++s) {
+            float* depth = tile.depth + s * plane + pixel;
+            for (int x = 0; x < kBlockSize; ++x) depth[x] = z[x] + tile.sample_z[s];
+          }
+          std::memset(tile.split + pixel, 0, kBlockSize);
+        }
+        if constexpr (kTightensBound) max_depth = std::min(max_depth, farthest);
+        continue;
+      }
+      shade_covered_samples(tile, t, steps, out, pixels, left, top, right, bottom);
+    }
+  }
+  tile.pixels_shaded += out.shaded;
+}
+
+}  // namespace facet::pipeline

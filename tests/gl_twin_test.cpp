@@ -347,7 +347,7 @@ double psnr(const test::Rgba8Image& a, const test::Rgba8Image& b) {
 TEST(GlTwinCli, RenderBackendGlDrawsWhatFacetDraws) {
   REQUIRE_GL(gl);
   const auto dir = test::fresh_test_dir("facet_gl_twin_", "cli");
-  const std::string common = std::string(FACET_CLI) + " render --scene teapot --size 160x90 -o ";
+  const std::string common = std::string(FACET_CLI) + " render --scene teapot --size 160x90 --msaa 1 -o ";
   const test::CommandResult twin =
       test::run_command(common + (dir / "gl.png").string() + " --backend gl");
   ASSERT_EQ(twin.exit_code, 0) << twin.stderr_text;

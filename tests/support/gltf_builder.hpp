@@ -35,6 +35,16 @@ class GltfBuilder {
   int vec3s(const std::vector<glm::vec3>& values);
   int vec4s(const std::vector<glm::vec4>& values);
   int indices(const std::vector<std::uint16_t>& values);
+  int scalars(const std::vector<float>& values);
+  int mat4s(const std::vector<glm::mat4>& values);  // column-major, as glTF stores them
+
+  // A channel of animation `animation` (created as needed) moving `path` ("translation",
+  // "rotation", "scale", "weights") of `node`: keys at `times`, `values` flat (3 or 4 numbers a
+  // key, or one per morph target; three times as many for CUBICSPLINE: in-tangent, value,
+  // out-tangent per key), `interpolation` "LINEAR", "STEP" or "CUBICSPLINE".
+  void animate(int node, const std::string& path, const std::vector<float>& times,
+               const std::vector<float>& values, const std::string& interpolation = "LINEAR",
+               int animation = 0);
 
   // A mesh of one primitive ({"attributes": ..., "indices": ..., "material": ..., "mode": ...}
   // as given) and a root node drawing it; returns the node's index.
@@ -55,12 +65,18 @@ class GltfBuilder {
 // normals and texture coordinates (glTF's: v = 0 at the top), in builder `b`: its primitive.
 nlohmann::json unit_quad(GltfBuilder& b);
 
+// A two-bone skinned bar on a nested skeleton, animated (gltf_builder.cpp says how, and what
+// each pose puts where): its mesh node's index.
+int add_skinned_bar(GltfBuilder& b);
+
 // What a glTF test imports: the scene and the warnings the import gave.
 struct ImportedGltf {
   Scene scene;
   std::vector<std::string> warnings;
 };
 ImportedGltf import_gltf(const std::filesystem::path& path, bool allow_outside = false);
+// The same with options of the test's own (their warn is replaced).
+ImportedGltf import_gltf(const std::filesystem::path& path, ImportOptions options);
 
 // A fresh directory for one glTF test's files.
 std::filesystem::path gltf_test_dir(const std::string& name);

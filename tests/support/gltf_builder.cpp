@@ -177,17 +177,7 @@ nlohmann::json unit_quad(GltfBuilder& b) {
   return {{"attributes", {{"POSITION", p}, {"NORMAL", n}, {"TEXCOORD_0", uv}}}, {"indices", i}};
 }
 
-// A bar 0.2 wide from y = 0 to y = 2 (rows of two vertices at y = 0, 1, 2), skinned to two
-// joints: joint 0 at the bar's foot, joint 1 at y = 1 (its child). The bottom row follows
-// joint 0, the top row joint 1, the middle row both (weights as normalized unsigned bytes 128
-// and 127, joints as unsigned bytes). Animation 0 turns joint 1 by 90 degrees about +Z from
-// t = 0 to t = 1.
-//
-// The skeleton hangs under a node translated by (10, 0, 0) that is not the skin's (nor the
-// mesh's) root: the bind space is the skeleton's own, so the inverse bind matrices are the
-// identity and translate(0, -1, 0), and the joints' parent moves the whole bar to x = 10
-// (RecursiveSkeletons-like). The mesh node itself is translated by (0, 0, 5), which a skinned
-// mesh ignores (glTF 2.0 §3.7.3.1).
+// The two-bone bar (gltf_builder.hpp says what each pose puts where).
 int add_skinned_bar(GltfBuilder& b) {
   const int p = b.positions(
       {{-0.1f, 0, 0}, {0.1f, 0, 0}, {-0.1f, 1, 0}, {0.1f, 1, 0}, {-0.1f, 2, 0}, {0.1f, 2, 0}});

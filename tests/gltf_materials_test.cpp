@@ -162,5 +162,71 @@ TEST(GltfImport, UnlitEmissiveStrengthTransmissionAndClearcoat) {
   EXPECT_NEAR(material_of(scene, 3).roughness, 0.5f, 1e-6f);
 }
 
+// A velvet: dark base, navy sheen. Its base color becomes base (1 - 0.5 x 0.5) + 0.5 sheen =
+// (0.02 x 0.75 + 0.025, 0.02 x 0.75 + 0.05, 0.02 x 0.75 + 0.25): navy, not the near-black base.
+TEST(GltfImport, SheenColourContributesToTheBaseColour) {
+  GltfBuilder b;
+  const int texture = add_embedded_image(b);
+  const Scene scene = import_materials(
+      {{{"pbrMetallicRoughness", {{"baseColorFactor", {0.02, 0.02, 0.02, 1}}}},
+        {"extensions",
+         {{"KHR_materials_sheen",
+           {{"sheenColorFactor", {0.05, 0.1, 0.5}}, {"sheenRoughnessFactor", 0.6}}}}}},
+       {{"pbrMetallicRoughness",
+         {{"baseColorFactor", {1, 1, 1, 1}}, {"baseColorTexture", {{"index", texture}}}}},
+        {"extensions", {{"KHR_materials_sheen", {{"sheenColorFactor", {0, 0, 1}}}}}}}},
+      "sheen", &b);
+  const glm::vec4 velvet = material_of(scene, 0).base_color;
+  EXPECT_NEAR(velvet.r, 0.04f, 1e-5f);
+  EXPECT_NEAR(velvet.g, 0.065f, 1e-5f);
+  EXPECT_NEAR(velvet.b, 0.265f, 1e-5f);
+  // With a base color map the sheen is baked into it: its red texel (1, 0, 0) becomes
+  // (1 x 0.5, 0, 0.5) in linear light.
+  const Material& mapped = material_of(scene, 1);
+  ASSERT_TRUE(mapped.base_color_map);
+  const glm::vec4 red = mapped.base_color_map.texture->texel(0, 0, 0);
+  const glm::vec3 linear(red);  // texel() decodes sRGB
+  EXPECT_NEAR(linear.r, 0.5f, 0.01f);
+  EXPECT_NEAR(linear.g, 0.0f, 0.01f);
+  EXPECT_NEAR(linear.b, 0.5f, 0.01f);
+  EXPECT_EQ(mapped.base_color, glm::vec4(1.0f));
+}
+
+// facet's lobe has F0 0.04 (ior 1.5): a weaker specular spreads the highlight (roughness toward
+// 1 by 1 - weight); ior 1.5 and specular 1 change nothing; a metal keeps its roughness.
+TEST(GltfImport, SpecularAndIorSetTheHighlightsWeight) {
+  const json rough = {{"roughnessFactor", 0.2}, {"metallicFactor", 0}};
+  const Scene scene = import_materials(
+      {{{"pbrMetallicRoughness", rough},
+        {"extensions", {{"KHR_materials_specular", {{"specularFactor", 0}}}}}},
+       {{"pbrMetallicRoughness", rough},
+        {"extensions", {{"KHR_materials_specular", {{"specularFactor", 0.5}}}}}},
+       {{"pbrMetallicRoughness", rough}, {"extensions", {{"KHR_materials_ior", {{"ior", 1.5}}}}}},
+       {{"pbrMetallicRoughness", rough}, {"extensions", {{"KHR_materials_ior", {{"ior", 1.0}}}}}},
+       {{"pbrMetallicRoughness", {{"roughnessFactor", 0.2}, {"metallicFactor", 1}}},
+        {"extensions", {{"KHR_materials_specular", {{"specularFactor", 0}}}}}}},
+      "specular_ior");
+  EXPECT_NEAR(material_of(scene, 0).roughness, 1.0f, 1e-6f);
+  EXPECT_NEAR(material_of(scene, 1).roughness, 0.6f, 1e-6f);  // weight 0.5: halfway to 1
+  EXPECT_NEAR(material_of(scene, 2).roughness, 0.2f, 1e-6f);
+  EXPECT_NEAR(material_of(scene, 3).roughness, 1.0f, 1e-6f);  // ior 1: no reflection at all
+  EXPECT_NEAR(material_of(scene, 4).roughness, 0.2f, 1e-6f);
+}
+
+// A green glass lets through transmission x (1 - F0) x its luminance (0.2126 x 0.2 + 0.7152 x
+// 0.8 + 0.0722 x 0.2 = 0.6292): alpha 1 - 0.96 x 0.6292 = 0.396, so it tints what is behind it;
+// a clear glass is drawn at the floor of 0.1.
+TEST(GltfImport, TransmissionIsSeeThroughWithATint) {
+  const Scene scene = import_materials(
+      {{{"pbrMetallicRoughness", {{"baseColorFactor", {0.2, 0.8, 0.2, 1}}}},
+        {"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1}}}}}},
+       {{"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1}}}}}}},
+      "transmission");
+  const Material& green = material_of(scene, 0);
+  EXPECT_EQ(green.alpha_mode, AlphaMode::blend);
+  EXPECT_NEAR(green.base_color.a, 1.0f - 0.96f * 0.6292f, 1e-3f);
+  EXPECT_NEAR(material_of(scene, 1).base_color.a, 0.1f, 1e-6f);
+}
+
 }  // namespace
 }  // namespace facet::test

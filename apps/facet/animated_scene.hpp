@@ -1,9 +1,11 @@
 // The scene `facet render` and `facet view` draw, posed by time: the islands world keeps its
-// animation handles and moves with the clock; any other scene (a model, shapes, teapot) stands
-// still.
+// animation handles and moves with the clock; a glTF model asked to be posed (--time, --frames,
+// --animation) is imported again for each time (ImportOptions::time), keeping its materials,
+// lights and view from the first; any other scene (shapes, teapot, a model at rest) stands still.
 #pragma once
 
 #include <memory>
+#include <optional>
 
 #include "facet/islands.hpp"
 #include "facet/scene.hpp"
@@ -13,8 +15,10 @@ namespace facet::cli {
 
 class AnimatedScene {
  public:
-  // Builds the scene the options ask for (build_scene), with the islands' handles kept.
-  explicit AnimatedScene(const SceneOptions& options);
+  // Builds the scene the options ask for (build_scene), with the islands' handles kept. With
+  // `model_time`, a model is posed at that time (its animation sampled) and again at every
+  // other time at() is given.
+  explicit AnimatedScene(const SceneOptions& options, std::optional<double> model_time = {});
 
   Scene& scene() { return world_ ? world_->scene : scene_; }
   IslandsWorld* world() { return world_.get(); }  // null unless the islands
@@ -25,6 +29,8 @@ class AnimatedScene {
  private:
   std::unique_ptr<IslandsWorld> world_;
   Scene scene_;
+  SceneOptions options_;              // kept to pose the model again
+  std::optional<double> model_time_;  // the time the model is posed at; empty: not posed
 };
 
 }  // namespace facet::cli

@@ -28,6 +28,10 @@ class SilencedStream {
 Scene import_model(const std::string& path, bool allow_outside_paths) {
   ImportOptions options;
   options.allow_outside_paths = allow_outside_paths;
+  return import_model(path, options);
+}
+
+Scene import_model(const std::string& path, const ImportOptions& options) {
   SilencedStream out(std::cout), err(std::cerr);
   return import_scene(path, options);
 }

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "facet/import.hpp"
 #include "facet/scene.hpp"
 
 namespace facet::cli {
@@ -15,5 +16,7 @@ namespace facet::cli {
 // lost. Throws facet::Error as import_scene does.
 // allow_outside_paths: ImportOptions::allow_outside_paths.
 Scene import_model(const std::string& path, bool allow_outside_paths = false);
+// The same with every import option (their warn left as the library's: one line on stderr).
+Scene import_model(const std::string& path, const ImportOptions& options);
 
 }  // namespace facet::cli

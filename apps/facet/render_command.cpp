@@ -98,7 +98,11 @@ int run_render(const RenderOptions& o) {
     throw Error("--background none: " + o.output + " is a PPM, which has no alpha; use .png");
   }
   auto start = Clock::now();
-  AnimatedScene animated(o.scene);
+  // A model is posed when a time is asked for (its animation sampled; at rest otherwise).
+  const bool posed = o.frames.time || o.frames.frames || o.scene.animation;
+  AnimatedScene animated(
+      o.scene,
+      posed ? std::optional(job.frames.empty() ? 0.0 : job.frames[0].seconds) : std::nullopt);
   Scene& scene = animated.scene();
   if (!o.scene.fog_color && !transparent) scene.lighting.fog.color = background;
   const float aspect = static_cast<float>(size.width) / size.height;

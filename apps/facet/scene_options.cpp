@@ -242,6 +242,9 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o, std::vector<std::string>*
   cmd.add_option("--point-size", o.point_size,
                  "Side of each point of a point cloud in pixels, (0, 256] (default: 3)");
   add_allow_outside_paths_flag(cmd, o.allow_outside_paths);
+  cmd.add_option("--animation", o.animation,
+                 "The glTF model's animation N (0-based) that --time or --frames samples "
+                 "(default: 0; alone, sampled at time 0)");
 }
 
 Scene build_scene(const SceneOptions& o) {
@@ -250,11 +253,17 @@ Scene build_scene(const SceneOptions& o) {
   // silently (and fails before the model is imported).
   glm::vec3 fog_color = o.fog_color ? parse_color("--fog-color", *o.fog_color) : glm::vec3(0.0f);
   if (o.environment_projection) parse_environment_projection(*o.environment_projection);
+  if (o.animation && o.model.empty())
+    throw Error("--animation: picks an animation of a model file, not of a built-in scene");
   Scene scene;
   if (o.model.empty()) {
     scene = make_builtin_scene(o.scene.value_or("shapes"));
   } else {
-    scene = import_model(o.model, o.allow_outside_paths);
+    ImportOptions import;
+    import.allow_outside_paths = o.allow_outside_paths;
+    import.animation = o.animation.value_or(0);
+    import.time = o.model_time;
+    scene = import_model(o.model, import);
   }
   if (changes_framing(o)) {
     scene.framing = requested_framing(o);

@@ -28,6 +28,10 @@ struct SceneOptions {
   std::optional<float> reflectivity;
   std::optional<float> point_size;
   bool allow_outside_paths = false;  // ImportOptions::allow_outside_paths
+  std::optional<int> animation;      // --animation N: ImportOptions::animation
+  // ImportOptions::time: not a flag of its own; AnimatedScene sets it from --time or the frame's
+  // time when the model is to be posed.
+  std::optional<double> model_time;
 };
 
 // Adds the options to a subcommand. With `models`, the positional takes any number of model

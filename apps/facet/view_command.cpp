@@ -80,7 +80,9 @@ int run_view(const ViewOptions& o) {
   // The window first: with no display the command fails before loading anything.
   ViewWindow window("facet view", size.width, size.height);
 
-  AnimatedScene loaded(o.scene);
+  // A model with --animation N is shown at time 0 of it (the viewer does not play a model's
+  // animation; it animates only the islands, through their world).
+  AnimatedScene loaded(o.scene, o.scene.animation ? std::optional(0.0) : std::nullopt);
   Scene& scene = loaded.scene();
   if (!o.scene.fog_color) scene.lighting.fog.color = background;
   setup.scene = &scene;

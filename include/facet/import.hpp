@@ -1,10 +1,11 @@
 // Model import (facet::import): reads a 3D file into a facet Scene. glTF 2.0 (.gltf/.glb)
 // through tinygltf, PLY and the classic course format `.d` through facet's own readers, other
-// formats through assimp (OBJ+MTL, STL, 3DS, FBX, COLLADA, OFF, …). Models keep their own coordinates: nothing is rescaled or
-// re-centred.
+// formats through assimp (OBJ+MTL, STL, 3DS, FBX, COLLADA, OFF, …). Models keep their own
+// coordinates: nothing is rescaled or re-centred.
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "facet/mesh_tools.hpp"  // normals and tangents for meshes that come without
@@ -27,6 +28,15 @@ struct ImportOptions {
   // Whatever this says, only regular files are read: a directory, named pipe, socket or device
   // (/dev/zero) as a model or a referenced file is refused, saying which it is.
   bool allow_outside_paths = false;
+  // glTF: the pose the model is drawn in. Unset: the rest pose (each node's own transform, each
+  // morphed mesh at its default weights, skinned meshes as their joints' rest transforms place
+  // them). Set: animation number `animation` (0-based) sampled at `time` seconds (clamped to
+  // its first and last keys) moves nodes, joints and morph weights; skins and morph targets are
+  // applied on the CPU, so the scene holds the posed meshes. A file without animations is
+  // drawn at rest whatever the time; an `animation` the file does not have, or a time that is
+  // not finite, throws facet::Error. Other formats are always drawn as they are stored.
+  std::optional<double> time;
+  int animation = 0;
 };
 
 // Throws facet::Error (file, and line or index where known) if the file cannot be read. Sizes

@@ -35,9 +35,13 @@ std::string path_text(py::handle path, const char* function) {
   }
 }
 
-std::unique_ptr<SceneHandle> load(py::handle path, py::handle crease_angle) {
+std::unique_ptr<SceneHandle> load(py::handle path, py::handle crease_angle, py::handle time,
+                                  py::handle animation, bool allow_outside_paths) {
   ImportOptions options;
   options.crease_angle_degrees = number(crease_angle, {"load", "crease_angle"});
+  if (!time.is_none()) options.time = number(time, {"load", "time"});
+  options.animation = integer(animation, {"load", "animation"});
+  options.allow_outside_paths = allow_outside_paths;
   std::vector<std::string> warnings;
   options.warn = [&warnings](const std::string& warning) { warnings.push_back(warning); };
   const std::string file = path_text(path, "load");
@@ -222,13 +226,20 @@ object-to-world matrix (default: identity). Arrays are copied.)doc")
         return out.str();
       });
 
-  m.def("load", &load, py::arg("path"), py::arg("crease_angle") = 80.0,
+  m.def("load", &load, py::arg("path"), py::arg("crease_angle") = 80.0, py::kw_only(),
+        py::arg("time") = py::none(), py::arg("animation") = 0,
+        py::arg("allow_outside_paths") = false,
         R"doc(
 Reads a model file into a Scene, as `facet render` does: OBJ+MTL, glTF 2.0 (.gltf/.glb), PLY,
 STL, 3DS, FBX, COLLADA, OFF and .d. Meshes without normals get smooth ones, split where faces
 meet at more than crease_angle degrees. The scene's camera frames the model; a file without
 lights gets three lights around that view. Problems that do not stop the import (a missing
-texture) are Python warnings; the rest raise facet.Error.)doc");
+texture) are Python warnings; the rest raise facet.Error.
+
+A glTF model is drawn at rest unless `time` (seconds) is given: then its animation number
+`animation` (0-based) is sampled at that time, skins and morph targets applied; an animation the
+file does not have raises facet.Error. Files the model references must lie in its folder unless
+allow_outside_paths is True.)doc");
 }
 
 }  // namespace facet::python

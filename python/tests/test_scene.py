@@ -199,3 +199,65 @@ def test_version():
     source = pathlib.Path(__file__).resolve().parents[2] / "CMakeLists.txt"
     if source.exists():
         assert f"VERSION {facet.__version__}" in source.read_text()
+
+
+def write_moving_quad(folder, buffer_uri=None):
+    """A glTF quad whose node moves from x = 0 at t = 0 to x = 10 at t = 1 (LINEAR)."""
+    import base64
+    import json
+    import struct
+
+    positions = struct.pack("<12f", 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0)
+    indices = struct.pack("<6H", 0, 1, 2, 0, 2, 3) + b"\0\0"
+    times = struct.pack("<2f", 0, 1)
+    moves = struct.pack("<6f", 0, 0, 0, 10, 0, 0)
+    data = positions + indices + times + moves
+    views, offset = [], 0
+    for part in (positions, indices, times, moves):
+        views.append({"buffer": 0, "byteOffset": offset, "byteLength": len(part)})
+        offset += len(part)
+    uri = buffer_uri or "data:application/octet-stream;base64," + base64.b64encode(data).decode()
+    if buffer_uri:
+        (folder / buffer_uri).write_bytes(data)
+    document = {
+        "asset": {"version": "2.0"},
+        "scenes": [{"nodes": [0]}],
+        "nodes": [{"mesh": 0}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+        "accessors": [
+            {"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3",
+             "min": [0, 0, 0], "max": [1, 1, 0]},
+            {"bufferView": 1, "componentType": 5123, "count": 6, "type": "SCALAR"},
+            {"bufferView": 2, "componentType": 5126, "count": 2, "type": "SCALAR",
+             "min": [0], "max": [1]},
+            {"bufferView": 3, "componentType": 5126, "count": 2, "type": "VEC3"},
+        ],
+        "bufferViews": views,
+        "buffers": [{"byteLength": len(data), "uri": uri}],
+        "animations": [{
+            "samplers": [{"input": 2, "output": 3, "interpolation": "LINEAR"}],
+            "channels": [{"sampler": 0, "target": {"node": 0, "path": "translation"}}],
+        }],
+    }
+    path = folder / "moving.gltf"
+    path.write_text(json.dumps(document))
+    return path
+
+
+def test_load_poses_a_gltf_animation_at_a_time(tmp_path):
+    path = write_moving_quad(tmp_path)
+    assert facet.load(path).bounds[0][0] == pytest.approx(0.0)  # at rest
+    assert facet.load(path, time=0.5).bounds[0][0] == pytest.approx(5.0)
+    assert facet.load(path, time=7).bounds[0][0] == pytest.approx(10.0)  # clamped to the end
+    with pytest.raises(facet.Error, match="animation 2 does not exist"):
+        facet.load(path, time=0.5, animation=2)
+
+
+def test_load_reads_outside_files_only_when_allowed(tmp_path):
+    model = tmp_path / "model"
+    model.mkdir()
+    path = write_moving_quad(model, buffer_uri="../shared.bin")
+    assert (tmp_path / "shared.bin").exists()  # beside the model's folder, not in it
+    with pytest.raises(facet.Error, match="outside"):
+        facet.load(path)
+    assert facet.load(path, allow_outside_paths=True).triangle_count == 2

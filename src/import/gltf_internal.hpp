@@ -1,7 +1,8 @@
 // Internal to the glTF 2.0 reader (src/import/gltf_*.cpp): tinygltf parses the file
 // (gltf_load.cpp, every file it opens held to guarded_files.hpp's rules); facet reads the data
 // through bounds-checked accessors (gltf_accessors.cpp), makes meshes of the primitives
-// (gltf_meshes.cpp), materials and textures (gltf_materials.cpp), cameras and lights
+// (gltf_meshes.cpp) posed by skins and morph targets (gltf_deform.cpp) and animations
+// (gltf_animation.cpp), materials and textures (gltf_materials.cpp), cameras and lights
 // (gltf_objects.cpp), and the node hierarchy that places them (gltf_scene.cpp).
 #pragma once
 
@@ -95,13 +96,45 @@ GltfMaterials import_gltf_materials(const GltfFile& file, const ImportOptions& o
 // glTF 2.0 §3.9.6's material for a primitive without one: white, metallic 1, roughness 1.
 Material gltf_default_material();
 
+// How a primitive is deformed where a node draws it (gltf_deform.cpp): morph target weights
+// (empty: none) and skin matrices, each joint's world transform times its inverse bind matrix
+// brought into the drawing node's space (empty: not skinned).
+struct MeshPose {
+  std::vector<float> weights;
+  std::vector<glm::mat4> joints;
+};
+// Applies the pose to a primitive's positions, normals and tangents as read (before normals
+// are made for a mesh without): the weighted morph target deltas (POSITION, NORMAL, TANGENT),
+// then linear blend skinning with JOINTS_n / WEIGHTS_n (weights normalized to sum 1; a vertex
+// with none stays put). `attribute_values` reads a primitive or target attribute's accessor.
+// Throws facet::Error "<where>: ..." for a target or joint index out of range.
+void deform_primitive(const GltfAccessors& data, const tinygltf::Primitive& primitive,
+                      const MeshPose& pose, std::vector<glm::vec3>& positions,
+                      std::vector<glm::vec3>& normals, std::vector<glm::vec4>& tangents,
+                      const std::string& where);
+
+// The pose of every glTF node (gltf_animation.cpp): its local transform and the morph weights
+// of its mesh, at rest or with ImportOptions::animation sampled at ImportOptions::time, and
+// the world transform that follows from its ancestors (for joints, which need not be in the
+// scene drawn). Throws facet::Error for an animation the file does not have, or damaged
+// animation data.
+struct GltfPose {
+  std::vector<glm::mat4> local;
+  std::vector<glm::mat4> world;
+  std::vector<std::vector<float>> weights;  // empty for a node without a morphed mesh
+};
+GltfPose gltf_pose(const GltfFile& file, const GltfAccessors& data, const ImportOptions& options);
+// The skin matrices of `skin` for a mesh drawn at `node` (MeshPose::joints).
+std::vector<glm::mat4> gltf_skin_matrices(const GltfFile& file, const GltfAccessors& data,
+                                          const GltfPose& pose, int skin, int node);
+
 // One primitive of a mesh as a facet Mesh (triangles, lines or points), finished (finish_mesh),
 // texture coordinates from set `texcoord_set` with v flipped to facet's v-up; `flip_winding`
 // reverses each triangle (a mirrored node). Null when the primitive has nothing to draw.
 std::shared_ptr<const Mesh> gltf_primitive_mesh(const GltfFile& file, const GltfAccessors& data,
                                                 int mesh, int primitive, int texcoord_set,
                                                 const Material& material, bool flip_winding,
-                                                const ImportOptions& options);
+                                                const MeshPose& pose, const ImportOptions& options);
 
 // A node's local transform (matrix, or translation * rotation * scale); throws if not finite.
 glm::mat4 gltf_node_transform(const tinygltf::Node& node, const std::string& where);

@@ -7,11 +7,26 @@
 //                               a roughness map (the specular color stays the factors')
 //   KHR_materials_unlit         unlit
 //   KHR_materials_emissive_strength       scales the emissive factor
-//   KHR_materials_transmission  approximated as blending: facet draws no refraction, so a glass
-//                               is see-through by (1 - transmission) of its color's weight
+//   KHR_materials_transmission  approximated as blending (facet draws no refraction): the
+//                               surface lets through transmission x (1 - F0) of the light,
+//                               filtered by its color, so the background is dimmed by the
+//                               color's luminance and the color fills in: a clear glass is
+//                               nearly invisible but for its highlights, a green one tints
+//                               green (alpha = 1 - luminance x transmission x (1 - F0), >= 0.1)
+//   KHR_materials_ior           F0 = ((ior - 1) / (ior + 1))², which sets how much a
+//                               transmissive surface reflects, and the specular weight below
+//   KHR_materials_specular      the dielectric specular is F0 x specularColor x specular;
+//                               facet's PBR lobe has F0 = 0.04 (ior 1.5), so a weaker specular
+//                               (weight = that / 0.04, below 1) is drawn as a rougher, dimmer
+//                               highlight: roughness moves toward 1 by (1 - weight); a stronger
+//                               one stays as it is. Their textures are not read
+//   KHR_materials_sheen         the velvet's sheen lobe as its average contribution: the base
+//                               color becomes base (1 - 0.5 max(sheen)) + 0.5 sheenColor (the
+//                               layering of the extension with a directional albedo of 0.5), a
+//                               base color map baked to match; the sheen maps are not read
 //   KHR_materials_clearcoat     approximated in the one specular lobe: roughness moves toward
 //                               the coat's as far as clearcoatFactor says
-//   (sheen, specular, ior, volume and the rest are not read: the base layer is drawn)
+//   (volume and the rest are not read: the base layer is drawn)
 //   KHR_texture_transform       each map's own transform (TextureMap::transform)
 //   texCoord                    facet meshes carry one texture coordinate set: a material reads
 //                               the set of its base color map (else its first map's); maps that
@@ -20,6 +35,7 @@
 #include <cmath>
 #include <string>
 
+#include "facet/color.hpp"
 #include "facet/error.hpp"
 #include "import/gltf_internal.hpp"
 
@@ -62,6 +78,38 @@ glm::vec4 factors(const Vector& values, glm::vec4 fallback) {
 }
 
 float clamp01(double v) { return std::clamp(static_cast<float>(v), 0.0f, 1.0f); }
+
+// The sheen lobe's albedo averaged over directions, for the sheen approximation (a Charlie
+// sheen's directional albedo is between about 0.3 and 0.6 for the roughnesses velvet uses).
+constexpr float kSheenAlbedo = 0.5f;
+// facet's PBR shader's dielectric reflectance at normal incidence (ior 1.5).
+constexpr float kFacetF0 = 0.04f;
+
+float f0_of_ior(double ior) {
+  const double r = (ior - 1.0) / (ior + 1.0);
+  return static_cast<float>(r * r);
+}
+
+// A base color map with the sheen baked in: map x factor x (1 - k max(sheen)) + k sheen, in
+// linear light, encoded back to sRGB (the material's color factor becomes white).
+std::shared_ptr<const Texture> base_with_sheen(const Texture& map, glm::vec3 factor,
+                                               glm::vec3 sheen) {
+  if (map.format() != Texture::Format::rgba8) return nullptr;
+  const Texture::Level& level = map.level(0);
+  const float keep = 1.0f - kSheenAlbedo * std::max({sheen.r, sheen.g, sheen.b});
+  std::vector<std::uint8_t> baked(level.rgba8);
+  for (std::size_t i = 0; i + 3 < baked.size(); i += 4) {
+    glm::vec3 c(baked[i], baked[i + 1], baked[i + 2]);
+    c /= 255.0f;
+    if (map.srgb()) c = srgb_to_linear(c);
+    c = glm::min(c * factor * keep + kSheenAlbedo * sheen, glm::vec3(1.0f));
+    if (map.srgb()) c = linear_to_srgb(c);
+    for (int k = 0; k < 3; ++k)
+      baked[i + k] = static_cast<std::uint8_t>(std::lround(c[k] * 255.0f));
+  }
+  return Texture::from_rgba8(level.width, level.height, std::move(baked), map.srgb(),
+                             map.name() + " (with sheen)");
+}
 
 // A specular-glossiness map's gloss (alpha, times the factor) as the packed map the PBR shader
 // reads: roughness 1 - gloss in G, 1 in B so that the material's metallic factor (converted
@@ -198,12 +246,42 @@ class Converter {
     if (extension(m.extensions, "KHR_materials_unlit")) out.shading = ShadingModel::unlit;
     if (const auto* e = extension(m.extensions, "KHR_materials_emissive_strength"))
       out.emissive *= std::max(static_cast<float>(number(*e, "emissiveStrength", 1.0)), 0.0f);
+    float f0 = kFacetF0;
+    if (const auto* i = extension(m.extensions, "KHR_materials_ior")) {
+      const double ior = number(*i, "ior", 1.5);
+      // 0 is allowed and means a reflectance of 1 (glTF: "ior = 0 ... F0 = 1.0").
+      if (ior == 0.0)
+        f0 = 1.0f;
+      else if (ior >= 1.0)
+        f0 = f0_of_ior(ior);
+    }
+    if (const auto* s = extension(m.extensions, "KHR_materials_specular")) {
+      const float strength = clamp01(number(*s, "specularFactor", 1.0));
+      const glm::vec3 tint =
+          glm::max(glm::vec3(vector(*s, "specularColorFactor", glm::vec4(1.0f))), glm::vec3(0));
+      f0 = std::min(f0 * std::max({tint.r, tint.g, tint.b}), 1.0f) * strength;
+    }
+    // A dimmer dielectric highlight than facet's lobe draws: spread out instead (metals keep
+    // theirs, the extensions leave their F0 alone).
+    const float weight = std::min(f0 / kFacetF0, 1.0f);
+    out.roughness =
+        glm::mix(out.roughness, glm::mix(1.0f, out.roughness, weight), 1 - out.metallic);
     if (const auto* t = extension(m.extensions, "KHR_materials_transmission")) {
       const float transmission = clamp01(number(*t, "transmissionFactor", 0.0));
       if (transmission > 0.0f && out.alpha_mode != AlphaMode::mask) {
         out.alpha_mode = AlphaMode::blend;
-        out.base_color.a *= 1.0f - 0.9f * transmission;  // a glass keeps its highlights
+        // Light through a colored glass is filtered by its color (and reflected by F0): the
+        // background is dimmed by as much, and the glass's own color fills the rest in.
+        const glm::vec3 c = glm::min(glm::vec3(out.base_color), glm::vec3(1.0f));
+        const float luminance = 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
+        const float through = transmission * (1.0f - std::min(f0, 1.0f)) * luminance;
+        out.base_color.a *= std::max(1.0f - through, 0.1f);
       }
+    }
+    if (const auto* sheen = extension(m.extensions, "KHR_materials_sheen")) {
+      const glm::vec3 color =
+          glm::clamp(glm::vec3(vector(*sheen, "sheenColorFactor", glm::vec4(0.0f))), 0.0f, 1.0f);
+      add_sheen(color, out);
     }
     if (const auto* c = extension(m.extensions, "KHR_materials_clearcoat")) {
       // One specular lobe: the coat's gloss shows as the surface's, as far as the coat covers it.
@@ -211,6 +289,23 @@ class Converter {
       const float coat_roughness = clamp01(number(*c, "clearcoatRoughness", 0.0));
       out.roughness = std::min(out.roughness, glm::mix(out.roughness, coat_roughness, coat));
     }
+  }
+
+  void add_sheen(glm::vec3 sheen, Material& out) {
+    const float strongest = std::max({sheen.r, sheen.g, sheen.b});
+    if (!(strongest > 0.0f)) return;
+    if (out.base_color_map && out.base_color_map.texture != missing_texture()) {
+      auto baked = base_with_sheen(*out.base_color_map.texture, glm::vec3(out.base_color), sheen);
+      if (baked) {
+        out_.textures.push_back(baked);
+        out.base_color_map.texture = std::move(baked);
+        out.base_color = glm::vec4(1.0f, 1.0f, 1.0f, out.base_color.a);
+        return;
+      }
+    }
+    const glm::vec3 base =
+        glm::vec3(out.base_color) * (1.0f - kSheenAlbedo * strongest) + kSheenAlbedo * sheen;
+    out.base_color = glm::vec4(base, out.base_color.a);
   }
 
   // The map a reference names, with its sampler and transform; `slot` orders the maps for the

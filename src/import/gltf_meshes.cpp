@@ -75,7 +75,8 @@ std::vector<glm::vec3> vec3s(const std::vector<glm::vec4>& in) {
 std::shared_ptr<const Mesh> gltf_primitive_mesh(const GltfFile& file, const GltfAccessors& data,
                                                 int mesh_index, int primitive_index,
                                                 int texcoord_set, const Material& material,
-                                                bool flip_winding, const ImportOptions& options) {
+                                                bool flip_winding, const MeshPose& pose,
+                                                const ImportOptions& options) {
   const tinygltf::Primitive& p = file.model.meshes[static_cast<std::size_t>(mesh_index)]
                                      .primitives[static_cast<std::size_t>(primitive_index)];
   const std::string where = file.path + ": mesh " + std::to_string(mesh_index) + " primitive " +
@@ -121,6 +122,11 @@ std::shared_ptr<const Mesh> gltf_primitive_mesh(const GltfFile& file, const Gltf
   // glTF's v runs down the image from its top; facet's runs up from the bottom.
   for (const glm::vec4& uv : read("TEXCOORD_" + std::to_string(texcoord_set), 2))
     mesh.texcoords.emplace_back(uv.x, 1.0f - uv.y);
+  // Skins and morph targets (gltf_deform.cpp), before finish_mesh makes normals for a mesh
+  // without: those must be the posed surface's. (Draco data has its attributes inside the
+  // compressed stream, which facet does not pose: it is drawn at rest.)
+  if (!draco && (!pose.weights.empty() || !pose.joints.empty()))
+    deform_primitive(data, p, pose, mesh.positions, mesh.normals, mesh.tangents, where);
   const std::vector<glm::vec4> colors = read("COLOR_0", 3);
   mesh.colors.reserve(colors.size());
   for (glm::vec4 c : colors)

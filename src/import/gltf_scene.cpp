@@ -6,7 +6,9 @@
 // or a cycle) makes the file invalid. A node whose world transform mirrors (determinant < 0)
 // draws its meshes with the winding reversed (gltf_primitive_mesh), so that the faces glTF
 // calls front stay front. EXT_mesh_gpu_instancing's instances become child nodes, one per
-// instance, each drawing the node's meshes.
+// instance, each drawing the node's meshes. Node transforms, skins and morph weights are those
+// of the pose (gltf_animation.cpp: at rest, or an animation sampled at ImportOptions::time);
+// skinned and morphed meshes are posed per drawing node (gltf_deform.cpp).
 #include <algorithm>
 #include <filesystem>
 #include <glm/gtc/quaternion.hpp>
@@ -34,6 +36,9 @@ const std::set<std::string> kSupported = {
     "EXT_meshopt_compression",
     "KHR_lights_punctual",
     "EXT_mesh_gpu_instancing",
+    "KHR_materials_sheen",
+    "KHR_materials_specular",
+    "KHR_materials_ior",
 };
 
 class SceneBuilder {
@@ -47,6 +52,7 @@ class SceneBuilder {
     scene_.textures = std::move(materials.textures);
     texcoord_set_ = std::move(materials.texcoord_set);
     file_materials_ = scene_.materials.size();
+    pose_ = gltf_pose(file_, data_, options_);
     node_of_.assign(model_.nodes.size(), -1);
     for (int root : roots()) add_tree(root);
     // A valid file may still draw nothing (a scene of cameras, meshes no node places, quantized
@@ -106,7 +112,7 @@ class SceneBuilder {
       const tinygltf::Node& node = model_.nodes[static_cast<std::size_t>(next.node)];
       SceneNode out;
       out.name = node.name;
-      out.transform = gltf_node_transform(node, where(next.node));
+      out.transform = pose_.local[static_cast<std::size_t>(next.node)];
       out.parent = next.parent;
       const glm::mat4 world = next.parent_world * out.transform;
       const int index = static_cast<int>(scene_.nodes.size());
@@ -123,7 +129,7 @@ class SceneBuilder {
       throw Error(where(gltf_node) + ": mesh " + std::to_string(node.mesh) + " does not exist");
     auto instancing = node.extensions.find("EXT_mesh_gpu_instancing");
     if (instancing == node.extensions.end()) {
-      scene_.nodes[static_cast<std::size_t>(index)].instances = instances(node.mesh, world);
+      scene_.nodes[static_cast<std::size_t>(index)].instances = instances(gltf_node, world);
       return;
     }
     const std::vector<glm::mat4> copies = instance_transforms(instancing->second, gltf_node);
@@ -132,7 +138,7 @@ class SceneBuilder {
       copy.name = node.name + " instance " + std::to_string(i);
       copy.transform = copies[i];
       copy.parent = index;
-      copy.instances = instances(node.mesh, world * copies[i]);
+      copy.instances = instances(gltf_node, world * copies[i]);
       scene_.nodes.push_back(std::move(copy));
     }
   }
@@ -167,20 +173,31 @@ class SceneBuilder {
     return out;
   }
 
-  // The mesh's primitives, each a facet mesh in its material, mirrored or not as `world` is.
-  std::vector<MeshInstance> instances(int mesh, const glm::mat4& world) {
-    const bool mirrored = glm::determinant(glm::mat3(world)) < 0.0f;
+  // The node's mesh's primitives, each a facet mesh in its material, mirrored or not as `world`
+  // is, posed by the node's skin and morph weights.
+  std::vector<MeshInstance> instances(int gltf_node, const glm::mat4& world) {
+    const tinygltf::Node& node = model_.nodes[static_cast<std::size_t>(gltf_node)];
+    const int mesh = node.mesh;
+    MeshPose pose;
+    pose.weights = pose_.weights[static_cast<std::size_t>(gltf_node)];
+    if (node.skin >= 0) pose.joints = gltf_skin_matrices(file_, data_, pose_, node.skin, gltf_node);
+    // A posed mesh is the drawing node's own; an unposed one is shared by every node drawing it.
+    const int posed_by = pose.weights.empty() && pose.joints.empty() ? -1 : gltf_node;
+    // A skinned mesh is placed by its joints: whether it mirrors is theirs to say (the first
+    // joint's, brought into the node's space, stands for all).
+    const glm::mat4 placing = pose.joints.empty() ? world : world * pose.joints.front();
+    const bool mirrored = glm::determinant(glm::mat3(placing)) < 0.0f;
     std::vector<MeshInstance> out;
     const auto& primitives = model_.meshes[static_cast<std::size_t>(mesh)].primitives;
     for (std::size_t p = 0; p < primitives.size(); ++p) {
       const int m = primitives[p].material;
       const int material = m >= 0 && m < static_cast<int>(file_materials_) ? m : default_material();
-      auto [it, added] = meshes_.try_emplace({mesh, static_cast<int>(p), mirrored}, -1);
+      auto [it, added] = meshes_.try_emplace({mesh, static_cast<int>(p), mirrored, posed_by}, -1);
       if (added) {
         auto made = gltf_primitive_mesh(file_, data_, mesh, static_cast<int>(p),
                                         texcoord_set_[static_cast<std::size_t>(material)],
                                         scene_.materials[static_cast<std::size_t>(material)],
-                                        mirrored, options_);
+                                        mirrored, pose, options_);
         if (made) {
           scene_.meshes.push_back(std::move(made));
           it->second = static_cast<int>(scene_.meshes.size()) - 1;
@@ -209,8 +226,10 @@ class SceneBuilder {
   std::vector<int> texcoord_set_;
   std::size_t file_materials_ = 0;
   int default_material_ = -1;
-  std::vector<int> node_of_;                          // glTF node -> Scene::nodes, -1 until placed
-  std::map<std::tuple<int, int, bool>, int> meshes_;  // (mesh, primitive, mirrored) -> index
+  std::vector<int> node_of_;  // glTF node -> Scene::nodes, -1 until placed
+  GltfPose pose_;
+  // (mesh, primitive, mirrored, posing node or -1) -> Scene::meshes index
+  std::map<std::tuple<int, int, bool, int>, int> meshes_;
 };
 
 void warn_unsupported(const GltfFile& file, const ImportOptions& options) {

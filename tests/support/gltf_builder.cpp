@@ -1,8 +1,10 @@
 // GltfBuilder (gltf_builder.hpp): glTF files written by the tests, and the glTF tests' helpers.
 #include "support/gltf_builder.hpp"
 
+#include <cmath>
 #include <cstring>
 #include <fstream>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "facet/error.hpp"
 #include "support/render_helpers.hpp"
@@ -93,6 +95,34 @@ int GltfBuilder::indices(const std::vector<std::uint16_t>& values) {
   return accessor(view, kGlUnsignedShort, values.size(), "SCALAR");
 }
 
+int GltfBuilder::scalars(const std::vector<float>& values) {
+  return float_accessor(*this, values, "SCALAR");
+}
+
+int GltfBuilder::mat4s(const std::vector<glm::mat4>& values) {
+  return float_accessor(*this, values, "MAT4");
+}
+
+void GltfBuilder::animate(int node, const std::string& path, const std::vector<float>& times,
+                          const std::vector<float>& values, const std::string& interpolation,
+                          int animation) {
+  if (!json.contains("animations")) json["animations"] = nlohmann::json::array();
+  while (static_cast<int>(json["animations"].size()) <= animation)
+    json["animations"].push_back(
+        {{"channels", nlohmann::json::array()}, {"samplers", nlohmann::json::array()}});
+  const int input = scalars(times);
+  json["accessors"][input]["min"] = {times.front()};
+  json["accessors"][input]["max"] = {times.back()};
+  const int width = path == "rotation" ? 4 : path == "weights" ? 1 : 3;
+  const int view = this->view(values.data(), values.size() * sizeof(float));
+  const char* type = width == 4 ? "VEC4" : width == 3 ? "VEC3" : "SCALAR";
+  const int output = accessor(view, kGlFloat, values.size() / width, type);
+  nlohmann::json& a = json["animations"][animation];
+  a["samplers"].push_back({{"input", input}, {"output", output}, {"interpolation", interpolation}});
+  a["channels"].push_back(
+      {{"sampler", a["samplers"].size() - 1}, {"target", {{"node", node}, {"path", path}}}});
+}
+
 int GltfBuilder::add_mesh_node(const nlohmann::json& primitive, const nlohmann::json& node_fields) {
   json["meshes"].push_back({{"primitives", {primitive}}});
   nlohmann::json node = node_fields.is_null() ? nlohmann::json::object() : node_fields;
@@ -147,10 +177,44 @@ nlohmann::json unit_quad(GltfBuilder& b) {
   return {{"attributes", {{"POSITION", p}, {"NORMAL", n}, {"TEXCOORD_0", uv}}}, {"indices", i}};
 }
 
+// The two-bone bar (gltf_builder.hpp says what each pose puts where).
+int add_skinned_bar(GltfBuilder& b) {
+  const int p = b.positions(
+      {{-0.1f, 0, 0}, {0.1f, 0, 0}, {-0.1f, 1, 0}, {0.1f, 1, 0}, {-0.1f, 2, 0}, {0.1f, 2, 0}});
+  const std::vector<std::uint8_t> joints = {0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0,
+                                            0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0};
+  const std::vector<std::uint8_t> weights = {255, 0,   0, 0, 255, 0,   0, 0, 128, 127, 0, 0,
+                                             128, 127, 0, 0, 0,   255, 0, 0, 0,   255, 0, 0};
+  const int j = b.accessor(b.view(joints.data(), joints.size()), kGlUnsignedByte, 6, "VEC4");
+  const int w =
+      b.accessor(b.view(weights.data(), weights.size()), kGlUnsignedByte, 6, "VEC4", true);
+  const int i = b.indices({0, 1, 3, 0, 3, 2, 2, 3, 5, 2, 5, 4});
+  const int mesh_node = b.add_mesh_node(
+      {{"attributes", {{"POSITION", p}, {"JOINTS_0", j}, {"WEIGHTS_0", w}}}, {"indices", i}},
+      {{"skin", 0}, {"translation", {0, 0, 5}}});
+  const int parent = mesh_node + 1, joint0 = mesh_node + 2, joint1 = mesh_node + 3;
+  b.json["nodes"].push_back({{"translation", {10, 0, 0}}, {"children", {joint0}}});
+  b.json["nodes"].push_back({{"children", {joint1}}});
+  b.json["nodes"].push_back({{"translation", {0, 1, 0}}});
+  b.json["scenes"][0]["nodes"].push_back(parent);
+  const int ibm = b.mat4s({glm::mat4(1.0f), glm::translate(glm::mat4(1.0f), glm::vec3(0, -1, 0))});
+  b.json["skins"] = {{{"joints", {joint0, joint1}}, {"inverseBindMatrices", ibm}}};
+  const float h = std::sqrt(0.5f);
+  b.animate(joint1, "rotation", {0, 1}, {0, 0, 0, 1, 0, 0, h, h});
+  return mesh_node;
+}
+
 ImportedGltf import_gltf(const std::filesystem::path& path, bool allow_outside) {
   ImportedGltf out;
   ImportOptions options;
   options.allow_outside_paths = allow_outside;
+  options.warn = [&](const std::string& w) { out.warnings.push_back(w); };
+  out.scene = import_scene(path.string(), options);
+  return out;
+}
+
+ImportedGltf import_gltf(const std::filesystem::path& path, ImportOptions options) {
+  ImportedGltf out;
   options.warn = [&](const std::string& w) { out.warnings.push_back(w); };
   out.scene = import_scene(path.string(), options);
   return out;

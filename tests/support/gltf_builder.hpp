@@ -35,6 +35,16 @@ class GltfBuilder {
   int vec3s(const std::vector<glm::vec3>& values);
   int vec4s(const std::vector<glm::vec4>& values);
   int indices(const std::vector<std::uint16_t>& values);
+  int scalars(const std::vector<float>& values);
+  int mat4s(const std::vector<glm::mat4>& values);  // column-major, as glTF stores them
+
+  // A channel of animation `animation` (created as needed) moving `path` ("translation",
+  // "rotation", "scale", "weights") of `node`: keys at `times`, `values` flat (3 or 4 numbers a
+  // key, or one per morph target; three times as many for CUBICSPLINE: in-tangent, value,
+  // out-tangent per key), `interpolation` "LINEAR", "STEP" or "CUBICSPLINE".
+  void animate(int node, const std::string& path, const std::vector<float>& times,
+               const std::vector<float>& values, const std::string& interpolation = "LINEAR",
+               int animation = 0);
 
   // A mesh of one primitive ({"attributes": ..., "indices": ..., "material": ..., "mode": ...}
   // as given) and a root node drawing it; returns the node's index.
@@ -55,12 +65,27 @@ class GltfBuilder {
 // normals and texture coordinates (glTF's: v = 0 at the top), in builder `b`: its primitive.
 nlohmann::json unit_quad(GltfBuilder& b);
 
+// A bar 0.2 wide from y = 0 to y = 2 (rows of two vertices at y = 0, 1, 2), skinned to two
+// joints: joint 0 at the bar's foot, joint 1 at y = 1 (its child). The bottom row follows
+// joint 0, the top row joint 1, the middle row both (weights as normalized unsigned bytes 128
+// and 127, joints as unsigned bytes). Animation 0 turns joint 1 by 90 degrees about +Z from
+// t = 0 to t = 1.
+//
+// The skeleton hangs under a node translated by (10, 0, 0) that is not the skin's (nor the
+// mesh's) root: the bind space is the skeleton's own, so the inverse bind matrices are the
+// identity and translate(0, -1, 0), and the joints' parent moves the whole bar to x = 10
+// (RecursiveSkeletons-like). The mesh node itself is translated by (0, 0, 5), which a skinned
+// mesh ignores (glTF 2.0 §3.7.3.1). Returns the mesh node's index.
+int add_skinned_bar(GltfBuilder& b);
+
 // What a glTF test imports: the scene and the warnings the import gave.
 struct ImportedGltf {
   Scene scene;
   std::vector<std::string> warnings;
 };
 ImportedGltf import_gltf(const std::filesystem::path& path, bool allow_outside = false);
+// The same with options of the test's own (their warn is replaced).
+ImportedGltf import_gltf(const std::filesystem::path& path, ImportOptions options);
 
 // A fresh directory for one glTF test's files.
 std::filesystem::path gltf_test_dir(const std::string& name);

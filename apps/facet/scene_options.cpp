@@ -183,6 +183,13 @@ void add_allow_outside_paths_flag(CLI::App& command, bool& allow_outside_paths) 
                    "refused with a warning, as missing)");
 }
 
+void add_import_timeout_option(CLI::App& command, double& seconds) {
+  command.add_option("--import-timeout", seconds,
+                     "Seconds assimp may take to read the model (OBJ, STL, 3DS, FBX, COLLADA, "
+                     "OFF, ...) before it is stopped and the import fails (default: 60; 0: no "
+                     "limit)");
+}
+
 void add_scene_options(CLI::App& cmd, SceneOptions& o, std::vector<std::string>* models) {
   if (models) {
     cmd.add_option("model", *models,
@@ -242,6 +249,7 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o, std::vector<std::string>*
   cmd.add_option("--point-size", o.point_size,
                  "Side of each point of a point cloud in pixels, (0, 256] (default: 3)");
   add_allow_outside_paths_flag(cmd, o.allow_outside_paths);
+  add_import_timeout_option(cmd, o.import_timeout);
 }
 
 Scene build_scene(const SceneOptions& o) {
@@ -254,7 +262,7 @@ Scene build_scene(const SceneOptions& o) {
   if (o.model.empty()) {
     scene = make_builtin_scene(o.scene.value_or("shapes"));
   } else {
-    scene = import_model(o.model, o.allow_outside_paths);
+    scene = import_model(o.model, o.allow_outside_paths, o.import_timeout);
   }
   if (changes_framing(o)) {
     scene.framing = requested_framing(o);

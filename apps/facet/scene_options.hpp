@@ -28,6 +28,7 @@ struct SceneOptions {
   std::optional<float> reflectivity;
   std::optional<float> point_size;
   bool allow_outside_paths = false;  // ImportOptions::allow_outside_paths
+  double import_timeout = 60.0;      // ImportOptions::import_time_limit_seconds
 };
 
 // Adds the options to a subcommand. With `models`, the positional takes any number of model
@@ -37,6 +38,8 @@ void add_scene_options(CLI::App& command, SceneOptions& options,
 
 // --allow-outside-paths, for every command that imports a model.
 void add_allow_outside_paths_flag(CLI::App& command, bool& allow_outside_paths);
+// --import-timeout S, for every command that imports a model.
+void add_import_timeout_option(CLI::App& command, double& seconds);
 
 // Imports the model or builds the built-in scene (default `shapes`), then applies the
 // options; --up AXIS, --azimuth and --elevation make the scene's default view the automatic

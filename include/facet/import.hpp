@@ -1,9 +1,10 @@
 // Model import (facet::import): reads a 3D file into a facet Scene. glTF 2.0 (.gltf/.glb)
 // through tinygltf, PLY and the classic course format `.d` through facet's own readers, other
-// formats through assimp (OBJ+MTL, STL, 3DS, FBX, COLLADA, OFF, …). Models keep their own coordinates: nothing is rescaled or
-// re-centred.
+// formats through assimp (OBJ+MTL, STL, 3DS, FBX, COLLADA, OFF, …). Models keep their own
+// coordinates: nothing is rescaled or re-centred.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <string>
 
@@ -27,6 +28,20 @@ struct ImportOptions {
   // Whatever this says, only regular files are read: a directory, named pipe, socket or device
   // (/dev/zero) as a model or a referenced file is refused, saying which it is.
   bool allow_outside_paths = false;
+
+  // The formats read through assimp (OBJ, STL, 3DS, FBX, COLLADA, OFF, ...) are first read by
+  // assimp in a child process under these limits; only when that read ends normally (the file
+  // read, or assimp's own error) does this process read it for real. A bug inside assimp (an
+  // endless loop, a crash, an assertion, a huge allocation) is then one facet::Error naming the
+  // file ("assimp crashed (signal 11, Segmentation fault) reading it"), never a hang or a dead
+  // caller. Costs a second read of the file by assimp (docs/import.md). facet's own readers
+  // (glTF, PLY, .d) are not fenced: they are fuzzed instead.
+  bool fence_assimp = true;
+  // Wall-clock seconds the fenced read may take (the child's CPU time is held to the same,
+  // plus one); a slower read fails with "took longer than N s". <= 0: no time limit.
+  double import_time_limit_seconds = 60.0;
+  // Address space the fenced read may add, in bytes; 0: half the machine's memory.
+  std::uint64_t import_memory_limit_bytes = 0;
 };
 
 // Throws facet::Error (file, and line or index where known) if the file cannot be read. Sizes

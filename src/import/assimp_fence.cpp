@@ -99,6 +99,30 @@ struct Limits {
 
 [[noreturn]] void exit_out_of_memory() { ::_exit(kOutOfMemoryExit); }
 
+// FACET_FENCE_TEST_FAULT's failures, made in the child instead of a probe's.
+void make_fault(Fault fault, const Limits& limits) {
+  switch (fault) {
+    case Fault::none:
+      return;
+    case Fault::crash:
+      ::raise(SIGSEGV);
+      return;
+    case Fault::abort: {
+      static const char message[] = "assimp: code/Test.cpp:1: fenced: Assertion `probe' failed.\n";
+      [[maybe_unused]] auto written = ::write(STDERR_FILENO, message, sizeof message - 1);
+      std::abort();
+    }
+    case Fault::hang:
+      for (volatile std::uint64_t spin = 0;;) spin = spin + 1;
+    case Fault::memory: {
+      const std::uint64_t size = std::max<std::uint64_t>(limits.budget, 1) * 2;
+      auto* volatile block = new char[static_cast<std::size_t>(size)];
+      block[0] = 1;
+      return;
+    }
+  }
+}
+
 // The child, from fork() to _exit(): nothing here may wait for another thread. Never returns,
 // and never unwinds into the caller's frames (an exception there would run the parent's code
 // in the child).
@@ -129,31 +153,15 @@ struct Limits {
     ::setrlimit(RLIMIT_CPU, &processor);
   }
   std::set_new_handler(exit_out_of_memory);
-  switch (fault) {
-    case Fault::none:
-      break;
-    case Fault::crash:
-      ::raise(SIGSEGV);
-      break;
-    case Fault::abort: {
-      static const char message[] = "assimp: code/Test.cpp:1: fenced: Assertion `probe' failed.\n";
-      [[maybe_unused]] auto written = ::write(STDERR_FILENO, message, sizeof message - 1);
-      std::abort();
-    }
-    case Fault::hang:
-      for (volatile std::uint64_t spin = 0;; spin = spin + 1) {
-      }
-    case Fault::memory: {
-      const std::uint64_t size = std::max<std::uint64_t>(limits.budget, 1) * 2;
-      auto* volatile block = new char[static_cast<std::size_t>(size)];
-      block[0] = 1;
-      break;
-    }
-  }
   try {
+    make_fault(fault, limits);
     probe();
+  } catch (const std::bad_alloc&) {
+    // Where operator new is replaced by one that throws without asking the new-handler (a
+    // host's counting allocator), or the probe found assimp's read failed for want of memory.
+    ::_exit(kOutOfMemoryExit);
   } catch (...) {
-    // An error the read threw is the real read's to report.
+    // Any other error the read threw is the real read's to report.
   }
   const char done = 1;
   [[maybe_unused]] auto written = ::write(done_fd, &done, 1);

@@ -20,8 +20,10 @@
 #include <cmath>
 #include <filesystem>
 #include <glm/geometric.hpp>
+#include <new>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <unordered_map>
 #include <vector>
@@ -281,7 +283,11 @@ Scene import_assimp_scene(const std::string& path, const ImportOptions& options)
     Assimp::Importer probe;
     probe.SetIOHandler(new GuardedIOSystem(rules));
     std::size_t dropped = 0;
-    read_and_process(probe, path, dropped);
+    // assimp reports an allocation that failed (under the child's memory limit) as an ordinary
+    // read error: the fence must hear of it, or the real read makes the allocation unlimited.
+    if (!read_and_process(probe, path, dropped) &&
+        std::string_view(probe.GetErrorString()).find("bad_alloc") != std::string_view::npos)
+      throw std::bad_alloc();
   });
   Assimp::Importer importer;
   // Every file assimp opens goes through facet's rules (guarded_io.hpp); the importer owns it.

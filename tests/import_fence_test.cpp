@@ -163,7 +163,7 @@ TEST(ImportFence, ForksWhileOtherThreadsWork) {
   for (int t = 0; t < 4; ++t) {
     imports.push_back(std::async(std::launch::async, [] {
       std::size_t triangles = 0;
-      for (int i = 0; i < 10; ++i)
+      for (int i = 0; i < 5; ++i)
         triangles += import_scene(kBox.string(), quiet()).triangle_count();
       return triangles;
     }));

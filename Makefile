@@ -7,7 +7,8 @@
 #   make test-sanitize  the tests under ASan+UBSan (build-asan/), the threaded raster tests
 #                       under TSan (build-tsan/); also separately: make test-asan, make test-tsan
 #   make test-fuzz      the libFuzzer targets (tests/fuzz/*_fuzz.cpp, clang, build-fuzz/), each for
-#                       FUZZ_SECONDS (default 60) from a scratch copy of tests/fuzz/corpus/NAME/
+#                       FUZZ_SECONDS (default 60) from a scratch copy of tests/fuzz/corpus/NAME/;
+#                       then FUZZ_MUTATIONS (default 1000) seeded mutations of each sample format
 #   make install        cmake --install build --prefix $(PREFIX)   (PREFIX=/usr/local by default):
 #                       the libraries, the program and the Python module (docs/python.md)
 #   make clean          remove the build trees and islands.png
@@ -25,6 +26,7 @@ ASAN_DIR ?= build-asan
 TSAN_DIR ?= build-tsan
 FUZZ_DIR ?= build-fuzz
 FUZZ_SECONDS ?= 60
+FUZZ_MUTATIONS ?= 1000
 JOBS ?= $(shell nproc)
 # The Python the module is built for and tested with: Debian's, which has the packages above
 # (NumPy, pytest), even where another python3 comes first on the PATH.
@@ -147,6 +149,10 @@ test-fuzz: deps
 	  grep -E '^(Done|stat::number_of_executed_units|stat::peak_rss_mb)' $(FUZZ_DIR)/$$name.log || true; \
 	  rm -rf "$$scratch"; \
 	done
+	@# The seeded mutations of every sample format (tests/import_mutations_test.cpp), longer than
+	@# in `make test`: FUZZ_MUTATIONS per format, in the Release build.
+	$(MAKE) build
+	FACET_MUTATIONS=$(FUZZ_MUTATIONS) $(BUILD_DIR)/tests/facet_tests --gtest_filter='*ImportMutations*'
 
 install: build
 	cmake --install $(BUILD_DIR) --prefix $(PREFIX)

@@ -156,12 +156,13 @@ CLI::App* add_info_command(CLI::App& app, InfoOptions& options) {
   command->add_option("MODEL", options.model, "Model file (OBJ, glTF, PLY, STL, 3DS, FBX, .d, ...)")
       ->required();
   add_allow_outside_paths_flag(*command, options.allow_outside_paths);
+  add_import_timeout_option(*command, options.import_timeout);
   return command;
 }
 
 int run_info(const InfoOptions& options) {
   // Throws facet::Error: main prints one line.
-  Scene scene = import_model(options.model, options.allow_outside_paths);
+  Scene scene = import_model(options.model, options.allow_outside_paths, options.import_timeout);
   row("file", options.model);
   print_geometry(scene);
   print_materials(scene);

@@ -11,6 +11,7 @@ namespace facet::cli {
 struct InfoOptions {
   std::string model;
   bool allow_outside_paths = false;
+  double import_timeout = 60.0;
 };
 
 // Adds the `info` subcommand and its arguments to app; options are filled on parse.

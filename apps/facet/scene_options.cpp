@@ -183,6 +183,13 @@ void add_allow_outside_paths_flag(CLI::App& command, bool& allow_outside_paths) 
                    "refused with a warning, as missing)");
 }
 
+void add_import_timeout_option(CLI::App& command, double& seconds) {
+  command.add_option("--import-timeout", seconds,
+                     "Seconds assimp may take to read the model (OBJ, STL, 3DS, FBX, COLLADA, "
+                     "OFF, ...) before it is stopped and the import fails (default: 60; 0: no "
+                     "limit)");
+}
+
 void add_scene_options(CLI::App& cmd, SceneOptions& o, std::vector<std::string>* models) {
   if (models) {
     cmd.add_option("model", *models,
@@ -245,6 +252,7 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o, std::vector<std::string>*
   cmd.add_option("--animation", o.animation,
                  "The glTF model's animation N (0-based) that --time or --frames samples "
                  "(default: 0; alone, sampled at time 0)");
+  add_import_timeout_option(cmd, o.import_timeout);
 }
 
 Scene build_scene(const SceneOptions& o) {
@@ -263,6 +271,7 @@ Scene build_scene(const SceneOptions& o) {
     import.allow_outside_paths = o.allow_outside_paths;
     import.animation = o.animation.value_or(0);
     import.time = o.model_time;
+    import.import_time_limit_seconds = o.import_timeout;
     scene = import_model(o.model, import);
   }
   if (changes_framing(o)) {

@@ -32,6 +32,7 @@ struct SceneOptions {
   // ImportOptions::time: not a flag of its own; AnimatedScene sets it from --time or the frame's
   // time when the model is to be posed.
   std::optional<double> model_time;
+  double import_timeout = 60.0;  // ImportOptions::import_time_limit_seconds
 };
 
 // Adds the options to a subcommand. With `models`, the positional takes any number of model
@@ -41,6 +42,8 @@ void add_scene_options(CLI::App& command, SceneOptions& options,
 
 // --allow-outside-paths, for every command that imports a model.
 void add_allow_outside_paths_flag(CLI::App& command, bool& allow_outside_paths);
+// --import-timeout S, for every command that imports a model.
+void add_import_timeout_option(CLI::App& command, double& seconds);
 
 // Imports the model or builds the built-in scene (default `shapes`), then applies the
 // options; --up AXIS, --azimuth and --elevation make the scene's default view the automatic

@@ -4,6 +4,7 @@
 // coordinates: nothing is rescaled or re-centred.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
@@ -37,6 +38,20 @@ struct ImportOptions {
   // not finite, throws facet::Error. Other formats are always drawn as they are stored.
   std::optional<double> time;
   int animation = 0;
+
+  // The formats read through assimp (OBJ, STL, 3DS, FBX, COLLADA, OFF, ...) are first read by
+  // assimp in a child process under these limits; only when that read ends normally (the file
+  // read, or assimp's own error) does this process read it for real. A bug inside assimp (an
+  // endless loop, a crash, an assertion, a huge allocation) is then one facet::Error naming the
+  // file ("assimp crashed (signal 11, Segmentation fault) reading it"), never a hang or a dead
+  // caller. Costs a second read of the file by assimp (docs/import.md). facet's own readers
+  // (glTF, PLY, .d) are not fenced: they are fuzzed instead.
+  bool fence_assimp = true;
+  // Wall-clock seconds the fenced read may take (the child's CPU time is held to the same,
+  // plus one); a slower read fails with "took longer than N s". <= 0: no time limit.
+  double import_time_limit_seconds = 60.0;
+  // Address space the fenced read may add, in bytes; 0: half the machine's memory.
+  std::uint64_t import_memory_limit_bytes = 0;
 };
 
 // Throws facet::Error (file, and line or index where known) if the file cannot be read. Sizes

@@ -81,16 +81,23 @@ Scene import_scene(const std::string& path, const ImportOptions& options) {
   // can frame them: say so rather than fail later on a camera made of infinities.
   const Bounds bounds = scene.bounds();
   const glm::vec3 size = bounds.max - bounds.min;
+  char span[96];
+  std::snprintf(span, sizeof span, "(%g, %g, %g) to (%g, %g, %g)", bounds.min.x, bounds.min.y,
+                bounds.min.z, bounds.max.x, bounds.max.y, bounds.max.z);
   if (!std::isfinite(size.x) || !std::isfinite(size.y) || !std::isfinite(size.z)) {
-    char span[96];
-    std::snprintf(span, sizeof span, "(%g, %g, %g) to (%g, %g, %g)", bounds.min.x, bounds.min.y,
-                  bounds.min.z, bounds.max.x, bounds.max.y, bounds.max.z);
     throw Error(path + ": positions span more than a float can hold, " + span +
                 ": a damaged file?");
   }
   // Framed for 16:9 here; a renderer of another aspect frames it again (scene_camera).
   scene.framing = Framing{};
   scene.camera = frame_scene(scene, 16.0f / 9.0f, *scene.framing);
+  // A finite span can still be too wide to frame (1e35 apart: the far plane overflows).
+  try {
+    scene.camera.validate();
+  } catch (const Error& e) {
+    throw Error(path + ": positions span " + span + ", too far apart for a camera to frame (" +
+                e.what() + "): a damaged file?");
+  }
   if (!scene.has_file_lights) {
     // A file without lights would draw as a grey silhouette: light it as a photographer lights
     // a product, from the framing view (the lights a program that moves the camera may set

@@ -20,14 +20,17 @@
 #include <cmath>
 #include <filesystem>
 #include <glm/geometric.hpp>
+#include <new>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <unordered_map>
 #include <vector>
 
 #include "facet/error.hpp"
 #include "facet/mesh_tools.hpp"
+#include "import/assimp_fence.hpp"
 #include "import/guarded_io.hpp"
 
 namespace facet::io {
@@ -257,11 +260,35 @@ Scene convert(const aiScene& ai, const std::string& path, const ImportOptions& o
   return scene;
 }
 
+// assimp's read of the file and the post-processing after it, as the fenced probe and the real
+// read both make it (read, then post-process, validation first: point clouds need their faces
+// in between). The importer's scene, or null (importer.GetErrorString() says why); `dropped`:
+// the points with a non-finite position left out.
+const aiScene* read_and_process(Assimp::Importer& importer, const std::string& path,
+                                std::size_t& dropped) {
+  const aiScene* ai = importer.ReadFile(path, 0);
+  if (!ai) return nullptr;
+  dropped = add_point_faces(*const_cast<aiScene*>(ai));  // the importer's own scene, not const
+  return importer.ApplyPostProcessing(kPostProcess);
+}
+
 }  // namespace
 
 Scene import_assimp_scene(const std::string& path, const ImportOptions& options) {
   precheck_model(path);
   const ReferenceRules rules(path, options);
+  // The same read in a child process first (assimp_fence.hpp): a hang or crash inside assimp
+  // is an error here, not this process's end. Its refusals and warnings are the real read's.
+  run_fenced(path, options, [&] {
+    Assimp::Importer probe;
+    probe.SetIOHandler(new GuardedIOSystem(rules));
+    std::size_t dropped = 0;
+    // assimp reports an allocation that failed (under the child's memory limit) as an ordinary
+    // read error: the fence must hear of it, or the real read makes the allocation unlimited.
+    if (!read_and_process(probe, path, dropped) &&
+        std::string_view(probe.GetErrorString()).find("bad_alloc") != std::string_view::npos)
+      throw std::bad_alloc();
+  });
   Assimp::Importer importer;
   // Every file assimp opens goes through facet's rules (guarded_io.hpp); the importer owns it.
   auto* files = new GuardedIOSystem(rules);
@@ -273,16 +300,11 @@ Scene import_assimp_scene(const std::string& path, const ImportOptions& options)
     return files->refusals().empty() ? message : files->refusals().front();
   };
   try {
-    // Read, then post-process (validation first): point clouds need their faces in between.
-    ai = importer.ReadFile(path, 0);
-    if (ai) {
-      // The importer's own scene, not const.
-      const std::size_t dropped = add_point_faces(*const_cast<aiScene*>(ai));
-      if (dropped > 0) {
-        io::warn(options, path + ": " + std::to_string(dropped) +
-                              " points with a non-finite position left out");
-      }
-      ai = importer.ApplyPostProcessing(kPostProcess);
+    std::size_t dropped = 0;
+    ai = read_and_process(importer, path, dropped);
+    if (dropped > 0) {
+      io::warn(options, path + ": " + std::to_string(dropped) +
+                            " points with a non-finite position left out");
     }
   } catch (const std::exception& e) {  // assimp's DeadlyImportError escapes in some readers
     throw Error(refused_or(path + ": cannot import: " + one_line(e.what())));

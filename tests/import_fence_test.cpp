@@ -1,0 +1,208 @@
+// The fence around assimp (src/import/assimp_fence.cpp): a read by assimp that crashes, aborts
+// on an assertion, loops for ever or allocates without end is one facet::Error naming the file
+// and what happened, within the time limit, and the calling process lives on. The faults are
+// made on purpose in the fenced child (FACET_FENCE_TEST_FAULT: assimp 5.2 has no known file
+// that crashes or hangs its OBJ, STL, 3DS, COLLADA or OFF readers once facet's prechecks ran;
+// import_mutations_test.cpp looks for them). Fenced imports are the same as unfenced ones, and
+// fork from a process whose oneTBB workers are busy without stalling.
+#include <gtest/gtest.h>
+#include <stdlib.h>
+
+#include <atomic>
+#include <chrono>
+#include <filesystem>
+#include <future>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "facet/error.hpp"
+#include "facet/import.hpp"
+#include "support/cli_content_inputs.hpp"
+#include "support/render_helpers.hpp"
+#include "support/required_package.hpp"
+#include "support/sample_models.hpp"
+
+#ifndef FACET_SANITIZE_THREAD
+#include <tbb/parallel_for.h>
+#endif
+
+namespace facet::test {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+const fs::path kBox = kSampleModels / "OBJ/box.obj";
+const fs::path kStl = kSampleModels / "STL/Spider_binary.stl";
+
+// Sets FACET_FENCE_TEST_FAULT for one test (the fenced child reads it).
+class ScopedFault {
+ public:
+  explicit ScopedFault(const char* fault) { ::setenv("FACET_FENCE_TEST_FAULT", fault, 1); }
+  ~ScopedFault() { ::unsetenv("FACET_FENCE_TEST_FAULT"); }
+  ScopedFault(const ScopedFault&) = delete;
+  ScopedFault& operator=(const ScopedFault&) = delete;
+};
+
+ImportOptions quiet() {
+  ImportOptions options;
+  options.warn = [](const std::string&) {};
+  return options;
+}
+
+// The error import_scene throws, or "" if it imported.
+std::string import_error(const fs::path& model, const ImportOptions& options) {
+  try {
+    import_scene(model.string(), options);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+void expect_one_line_naming(const std::string& message, const fs::path& model) {
+  EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  EXPECT_EQ(message.rfind(model.string() + ": cannot import: ", 0), 0u) << message;
+}
+
+TEST(ImportFence, CrashInsideAssimpIsOneError) {
+  REQUIRE_INSTALLED(kBox);
+  const ScopedFault fault("crash");
+  const std::string message = import_error(kBox, quiet());
+  expect_one_line_naming(message, kBox);
+  EXPECT_NE(message.find("assimp crashed (signal 11, Segmentation fault) reading it"),
+            std::string::npos)
+      << message;
+}
+
+TEST(ImportFence, AssertionInsideAssimpIsOneErrorQuotingIt) {
+  REQUIRE_INSTALLED(kBox);
+  const ScopedFault fault("abort");
+  const std::string message = import_error(kBox, quiet());
+  expect_one_line_naming(message, kBox);
+  EXPECT_NE(message.find("assimp aborted (signal 6, Aborted) reading it: "), std::string::npos)
+      << message;
+  EXPECT_NE(message.find("Assertion `probe' failed."), std::string::npos) << message;
+}
+
+TEST(ImportFence, EndlessLoopStopsAtTheTimeLimit) {
+  REQUIRE_INSTALLED(kBox);
+  const ScopedFault fault("hang");
+  ImportOptions options = quiet();
+  options.import_time_limit_seconds = 0.5;
+  const auto start = Clock::now();
+  const std::string message = import_error(kBox, options);
+  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  expect_one_line_naming(message, kBox);
+  EXPECT_NE(message.find("assimp took longer than 0.5 s reading it and was stopped"),
+            std::string::npos)
+      << message;
+  EXPECT_GE(seconds, 0.5);
+  EXPECT_LT(seconds, 3.0);
+}
+
+TEST(ImportFence, HugeAllocationStopsAtTheMemoryLimit) {
+  REQUIRE_INSTALLED(kBox);
+  const ScopedFault fault("memory");
+  ImportOptions options = quiet();
+  options.import_memory_limit_bytes = 256ull << 20;
+  const std::string message = import_error(kBox, options);
+  expect_one_line_naming(message, kBox);
+  // An AddressSanitizer build's allocator reports and exits on its own instead.
+  EXPECT_TRUE(message.find("assimp needed more than 256 MiB of memory reading it") !=
+                  std::string::npos ||
+              message.find("assimp's reader exited with status") != std::string::npos)
+      << message;
+}
+
+TEST(ImportFence, TurnedOffTheChildIsNotStarted) {
+  REQUIRE_INSTALLED(kBox);
+  const ScopedFault fault("crash");  // would fail the import, were a child started
+  ImportOptions options = quiet();
+  options.fence_assimp = false;
+  EXPECT_EQ(import_error(kBox, options), "");
+}
+
+TEST(ImportFence, FencedImportIsTheUnfencedOne) {
+  REQUIRE_INSTALLED(kStl);
+  ImportOptions fenced = quiet(), unfenced = quiet();
+  unfenced.fence_assimp = false;
+  for (const fs::path& model : {kBox, kStl}) {
+    SCOPED_TRACE(model.string());
+    const Scene a = import_scene(model.string(), fenced);
+    const Scene b = import_scene(model.string(), unfenced);
+    ASSERT_EQ(a.meshes.size(), b.meshes.size());
+    for (std::size_t i = 0; i < a.meshes.size(); ++i) {
+      EXPECT_EQ(a.meshes[i]->positions, b.meshes[i]->positions);
+      EXPECT_EQ(a.meshes[i]->indices, b.meshes[i]->indices);
+    }
+    EXPECT_EQ(a.materials.size(), b.materials.size());
+    EXPECT_EQ(a.nodes.size(), b.nodes.size());
+  }
+}
+
+// fork() copies only the calling thread: the child must not need a lock another thread holds.
+// Imports from four threads at once while oneTBB's workers are busy: all finish, promptly.
+TEST(ImportFence, ForksWhileOtherThreadsWork) {
+  REQUIRE_INSTALLED(kBox);
+  std::atomic<bool> stop{false};
+  auto busy = std::async(std::launch::async, [&] {
+    while (!stop) {
+#ifndef FACET_SANITIZE_THREAD
+      tbb::parallel_for(0, 1000, [](int i) {
+        std::vector<int> scratch(static_cast<std::size_t>(i % 97) + 1);  // malloc under way
+        scratch.back() = i;
+      });
+#else
+      std::vector<int> scratch(97);
+#endif
+    }
+  });
+  std::vector<std::future<std::size_t>> imports;
+  for (int t = 0; t < 4; ++t) {
+    imports.push_back(std::async(std::launch::async, [] {
+      std::size_t triangles = 0;
+      for (int i = 0; i < 5; ++i)
+        triangles += import_scene(kBox.string(), quiet()).triangle_count();
+      return triangles;
+    }));
+  }
+  for (auto& import : imports) {
+    ASSERT_EQ(import.wait_for(std::chrono::seconds(30)), std::future_status::ready);
+    EXPECT_EQ(import.get(), 5u * 12u);
+  }
+  stop = true;
+  busy.get();
+}
+
+// The CLI on a model whose read crashes or hangs assimp: one line on stderr, exit 2, no image.
+TEST(ImportFence, CliSaysOneLineAndWritesNothing) {
+  REQUIRE_INSTALLED(kBox);
+  for (const char* fault : {"crash", "hang"}) {
+    SCOPED_TRACE(fault);
+    const fs::path dir = fresh_test_dir("facet_import_fence_", fault);
+    const auto start = Clock::now();
+    const CommandResult r = run_command(
+        "cd '" + dir.string() + "' && FACET_FENCE_TEST_FAULT=" + fault + " " + FACET_CLI +
+        " render " + kBox.string() + " --import-timeout 1 -o out.png" + kCliSize);
+    EXPECT_LT(std::chrono::duration<double>(Clock::now() - start).count(), 10.0);
+    EXPECT_EQ(r.exit_code, kUsageError);
+    const std::vector<std::string> lines = lines_of(r.stderr_text);
+    ASSERT_EQ(lines.size(), 1u) << r.stderr_text;
+    EXPECT_EQ(lines[0].rfind("facet: error: " + kBox.string() + ": cannot import: assimp ", 0), 0u)
+        << lines[0];
+    EXPECT_EQ(list_dir(dir), std::vector<std::string>{});
+  }
+}
+
+TEST(ImportFence, CliRefusesANegativeTimeout) {
+  REQUIRE_INSTALLED(kBox);
+  const fs::path dir = fresh_test_dir("facet_import_fence_", "negative");
+  const CommandResult r = run_facet(dir, "info " + kBox.string() + " --import-timeout -1");
+  EXPECT_EQ(r.exit_code, kUsageError);
+  EXPECT_NE(r.stderr_text.find("--import-timeout"), std::string::npos) << r.stderr_text;
+}
+
+}  // namespace
+}  // namespace facet::test

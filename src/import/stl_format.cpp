@@ -17,7 +17,6 @@
 #include <string>
 #include <string_view>
 
-#include "core/parallel.hpp"
 #include "facet/error.hpp"
 
 namespace facet::io::stl {
@@ -118,7 +117,7 @@ Geometry parse_binary(const Source& source, const std::string& name) {
   const int tasks = static_cast<int>((triangles + kTrianglesPerTask - 1) / kTrianglesPerTask);
   std::vector<Range> ranges(static_cast<std::size_t>(tasks));
   std::vector<glm::vec3> corners(triangles * 3);
-  parallel_tasks(tasks, default_workers(), [&](int task, int) {
+  parallel_tasks(tasks, [&](int task) {
     const std::size_t begin = static_cast<std::size_t>(task) * kTrianglesPerTask;
     const std::size_t end = std::min(triangles, begin + kTrianglesPerTask);
     std::vector<unsigned char> bytes((end - begin) * kRecordBytes);

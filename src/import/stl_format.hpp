@@ -13,6 +13,10 @@
 // Materialise's extension: "COLOR=" and four bytes in the header give the model's color.
 #pragma once
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -61,6 +65,19 @@ Geometry parse(const Source& source, const std::string& name);
 // positions become one vertex, numbered in order of first use, whatever the thread count.
 // Taken by value and released before returning: the caller moves the corners in.
 Mesh weld(std::vector<glm::vec3> corners);
+
+// Runs body(task) for every task in [0, count) on all cores, one task per index, so the unit of
+// work, never the schedule, decides what each writes (the core's parallel_tasks is internal to
+// facet::core; the import layer calls oneTBB directly, as the worlds do).
+template <class Body>
+void parallel_tasks(int count, const Body& body) {
+  tbb::parallel_for(
+      tbb::blocked_range<int>(0, count, 1),
+      [&](const tbb::blocked_range<int>& range) {
+        for (int i = range.begin(); i < range.end(); ++i) body(i);
+      },
+      tbb::simple_partitioner());
+}
 
 // A source over bytes in memory (tests, the fuzz target); the bytes must outlive it.
 Source memory_source(const char* data, std::size_t size);

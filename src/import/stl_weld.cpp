@@ -19,7 +19,6 @@
 #include <cstring>
 #include <vector>
 
-#include "core/parallel.hpp"
 #include "import/stl_format.hpp"
 
 namespace facet::io::stl {
@@ -45,7 +44,7 @@ std::uint64_t hash(const glm::vec3& p) {
 template <class Body>
 void for_each_range(std::size_t n, const Body& body) {
   const int tasks = static_cast<int>((n + kCornersPerTask - 1) / kCornersPerTask);
-  parallel_tasks(tasks, default_workers(), [&](int task, int) {
+  parallel_tasks(tasks, [&](int task) {
     const std::size_t begin = static_cast<std::size_t>(task) * kCornersPerTask;
     body(task, begin, std::min(n, begin + kCornersPerTask));
   });

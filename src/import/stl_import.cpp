@@ -5,8 +5,8 @@
 // has one), faceted where the file's normals can shade it, smooth normals (with the crease
 // angle) where they cannot.
 //
-// A binary file is read in parallel ranges straight from the file (pread), never whole: the
-// corners it becomes are all the import holds besides the mesh it makes.
+// A binary file is read in parallel ranges straight from the file (pread), never whole: what
+// the import holds is the corners it becomes, the weld's table and the mesh it makes.
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>

@@ -2,7 +2,7 @@
 # only what it uses. Includes flow downward only (tools/check_layers.py, run by ctest).
 #
 #   facet::core    src/core, src/shading, src/pipeline   glm, zlib, oneTBB, Highway (stb inside)
-#   facet::import  src/import                            core, assimp, tinygltf, Draco, meshopt
+#   facet::import  src/import                            core, assimp, tinygltf, Draco, meshopt, oneTBB
 #   facet::worlds  src/worlds                            core, oneTBB
 #   facet::sound   src/sound                             OpenAL Soft
 #   facet::gl      src/gl (optional: FACET_BUILD_GL)     core, OpenGL, EGL
@@ -46,7 +46,7 @@ target_link_libraries(facet_core PUBLIC glm::glm PRIVATE ZLIB::ZLIB TBB::tbb hwy
 
 file(GLOB FACET_IMPORT_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/import/*.cpp)
 facet_layer(facet_import import facet-import ${FACET_IMPORT_SOURCES})
-target_link_libraries(facet_import PUBLIC facet_core PRIVATE assimp::assimp
+target_link_libraries(facet_import PUBLIC facet_core PRIVATE assimp::assimp TBB::tbb
                       nlohmann_json::nlohmann_json draco::draco meshoptimizer::meshoptimizer)
 target_include_directories(facet_import PRIVATE ${TINYGLTF_INCLUDE_DIR})
 # No stb in tinygltf (facet decodes images itself); every file including the header agrees.

@@ -34,7 +34,7 @@ namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 const fs::path kBox = kSampleModels / "OBJ/box.obj";
-const fs::path kStl = kSampleModels / "STL/Spider_binary.stl";
+const fs::path kOff = kSampleModels / "OFF/Wuson.off";
 
 // Sets FACET_FENCE_TEST_FAULT for one test (the fenced child reads it).
 class ScopedFault {
@@ -125,10 +125,10 @@ TEST(ImportFence, TurnedOffTheChildIsNotStarted) {
 }
 
 TEST(ImportFence, FencedImportIsTheUnfencedOne) {
-  REQUIRE_INSTALLED(kStl);
+  REQUIRE_INSTALLED(kOff);
   ImportOptions fenced = quiet(), unfenced = quiet();
   unfenced.fence_assimp = false;
-  for (const fs::path& model : {kBox, kStl}) {
+  for (const fs::path& model : {kBox, kOff}) {
     SCOPED_TRACE(model.string());
     const Scene a = import_scene(model.string(), fenced);
     const Scene b = import_scene(model.string(), unfenced);

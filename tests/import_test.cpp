@@ -37,7 +37,6 @@ const std::map<std::string, std::string> kExpectedFailures = {
     {"PLY/pond.0.ply",
      "a binary point cloud damaged in packaging (CRs stripped): 69 bytes short of the vertices "
      "its header declares"},
-    {"STL/triangle_with_empty_solid.stl", "assimp 5.2 validation rejects its empty second solid"},
     {"OFF/invalid.off", "deliberately invalid (no faces)"},
     {"glTF2/TestNoRootNode/NoScene.gltf", "no scene at all"},
     {"glTF2/TestNoRootNode/SceneWithoutNodes.gltf", "a scene without nodes: nothing to draw"},

@@ -45,7 +45,7 @@ struct ImportOptions {
   // endless loop, a crash, an assertion, a huge allocation) is then one facet::Error naming the
   // file ("assimp crashed (signal 11, Segmentation fault) reading it"), never a hang or a dead
   // caller. Costs a second read of the file by assimp (docs/import.md). facet's own readers
-  // (glTF, PLY, .d) are not fenced: they are fuzzed instead.
+  // (glTF, PLY, STL, .d) are not fenced: they are fuzzed instead.
   bool fence_assimp = true;
   // Wall-clock seconds the fenced read may take (the child's CPU time is held to the same,
   // plus one); a slower read fails with "took longer than N s". <= 0: no time limit.

@@ -33,6 +33,10 @@ PlyGeometry parse_ply_geometry(std::string_view bytes, const std::string& name);
 // One node drawing the PLY model, in the material assimp's reader gave it (ply_import.cpp).
 Scene import_ply_scene(const std::string& path, const ImportOptions& options);
 
+// STL, binary or ASCII, welded into one indexed mesh (stl_*.cpp), in the material assimp's
+// reader gave it.
+Scene import_stl_scene(const std::string& path, const ImportOptions& options);
+
 // glTF 2.0, .gltf and .glb, through tinygltf (gltf_*.cpp). The scene has meshes, materials,
 // nodes, lights and cameras, but no default camera yet (import_scene frames it).
 Scene import_gltf_scene(const std::string& path, const ImportOptions& options);

@@ -12,6 +12,8 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <optional>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "facet/material.hpp"
@@ -189,13 +191,40 @@ struct SetupPoint {
   glm::vec4 color;                 // linear RGBA
 };
 
+// Allocates without initializing: a vector of it that grows leaves its new elements unwritten.
+// The frame's triangle and plane arrays are sized for every primitive of the frame (each chunk
+// gets a region as big as its input), but only the primitives that survive culling are written,
+// and at a million triangles to a few hundred thousand pixels most do not: pages never written
+// are never made resident, so the memory the arrays cost follows what is drawn, not the input
+// (the 20-million-triangle model of BENCHMARKS.md's "Big meshes": 5.6 GB less). Only for
+// aggregates of trivially copyable members (implicit-lifetime types: allocating the storage
+// creates them, C++20 [intro.object]); nothing reads an element before writing it.
+template <class T>
+struct UninitializedAllocator : std::allocator<T> {
+  static_assert(std::is_aggregate_v<T> && std::is_trivially_copyable_v<T> &&
+                std::is_trivially_destructible_v<T>);
+  template <class U>
+  struct rebind {
+    using other = UninitializedAllocator<U>;
+  };
+  UninitializedAllocator() = default;
+  template <class U>
+  UninitializedAllocator(const UninitializedAllocator<U>&) {}
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args) {
+    if constexpr (sizeof...(Args) > 0) ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
+template <class T>
+using UninitializedVector = std::vector<T, UninitializedAllocator<T>>;
+
 // Set-up primitives: what setup produces and raster reads. SetupTriangle::varying_planes
 // indexes planes.
 struct PrimitiveBuffer {
-  std::vector<SetupTriangle> triangles;
+  UninitializedVector<SetupTriangle> triangles;
   std::vector<SetupLine> lines;
   std::vector<SetupPoint> points;  // never in a chunk's overflow: one point per input point
-  std::vector<Plane> planes;
+  UninitializedVector<Plane> planes;
 
   void clear() { triangles.clear(), lines.clear(), points.clear(), planes.clear(); }
 };

@@ -19,8 +19,8 @@ constexpr std::size_t kChunkPrimitives = 2048;
 // Makes v hold at least n elements. It never shrinks, so a frame that needs fewer primitives
 // than the last initializes nothing, and it grows by half again when a frame needs more than
 // any before, so animated scenes settle and then allocate nothing.
-template <class T>
-void ensure_size(std::vector<T>& v, std::size_t n) {
+template <class T, class Allocator>
+void ensure_size(std::vector<T, Allocator>& v, std::size_t n) {
   if (v.size() >= n) return;
   if (v.capacity() < n) v.reserve(n + n / 2);
   v.resize(n);

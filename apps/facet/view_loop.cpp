@@ -36,7 +36,9 @@ std::string next_file_name(const char* prefix) {
 }
 
 // The keys that change a view setting (apply_setting_key): F1 to F11, and B for the backend.
-bool is_setting_key(SDL_Keycode key) { return (key >= SDLK_F1 && key <= SDLK_F11) || key == SDLK_b; }
+bool is_setting_key(SDL_Keycode key) {
+  return (key >= SDLK_F1 && key <= SDLK_F11) || key == SDLK_b;
+}
 
 }  // namespace
 
@@ -62,6 +64,7 @@ ViewLoop::~ViewLoop() = default;
 RenderSettings ViewLoop::gl_settings() const {
   RenderSettings rs;
   rs.clear_color = setup_.clear_color;
+  rs.msaa = settings_.msaa;
   return rs;
 }
 
@@ -118,8 +121,14 @@ void ViewLoop::apply(const SettingUpdate& update) {
       if (!make_gl()) return;  // it said why
       break;
     case SettingChange::threads:
-    case SettingChange::msaa:
       make_renderer();
+      break;
+    case SettingChange::msaa:  // both renderers draw with the new sample count
+      make_renderer();
+      if (gl_) {
+        gl_.reset();
+        if (!make_gl()) return;
+      }
       break;
     case SettingChange::fullscreen:
       window_.set_fullscreen(settings_.fullscreen);

@@ -18,8 +18,9 @@ class GlRenderer {
   // Makes an OpenGL 3.3 core context through EGL, without a window or a display server
   // (EGL_MESA_platform_surfaceless where it exists, else the default display). Throws
   // facet::Error with one line saying what is missing when there is no usable OpenGL.
-  // Uses clear_color and exposure of the settings; threads, tile size and debug views are the
-  // software renderer's own and are ignored.
+  // Uses clear_color, exposure and msaa of the settings (msaa above the context's
+  // GL_MAX_SAMPLES is clamped, with one warning on stderr); threads, tile size and debug views are
+  // the software renderer's own and are ignored.
   explicit GlRenderer(const RenderSettings& settings = {});
   ~GlRenderer();
   GlRenderer(const GlRenderer&) = delete;

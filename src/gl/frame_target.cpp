@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <glm/common.hpp>
+#include <string>
 #include <vector>
 
 #include "facet/color.hpp"
@@ -19,39 +21,69 @@ std::uint8_t unorm8(float v) {  // clamped, NaN to 0, rounded: core/color.hpp's 
 }  // namespace
 
 FrameTarget::~FrameTarget() {
-  glDeleteFramebuffers(1, &framebuffer_);
-  glDeleteRenderbuffers(1, &color_);
-  glDeleteRenderbuffers(1, &depth_);
+  const GLuint framebuffers[] = {framebuffer_, ms_framebuffer_};
+  const GLuint renderbuffers[] = {color_, depth_, ms_color_, ms_depth_};
+  glDeleteFramebuffers(2, framebuffers);
+  glDeleteRenderbuffers(4, renderbuffers);
 }
 
-void FrameTarget::bind(int width, int height) {
-  if (width != width_ || height != height_) {
-    if (framebuffer_ == 0) {
-      glGenFramebuffers(1, &framebuffer_);
-      glGenRenderbuffers(1, &color_);
-      glGenRenderbuffers(1, &depth_);
-    }
-    // Float color: the image stays linear and unclamped until the encode at readback, as in
-    // facet's tiles.
-    glBindRenderbuffer(GL_RENDERBUFFER, color_);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA32F, width, height);
-    glBindRenderbuffer(GL_RENDERBUFFER, depth_);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, width, height);
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
+void FrameTarget::make(int width, int height, int samples) {
+  if (framebuffer_ == 0) {
+    glGenFramebuffers(1, &framebuffer_);
+    glGenRenderbuffers(1, &color_);
+    glGenRenderbuffers(1, &depth_);
+    glGenFramebuffers(1, &ms_framebuffer_);
+    glGenRenderbuffers(1, &ms_color_);
+    glGenRenderbuffers(1, &ms_depth_);
+  }
+  // Float color: the image stays linear and unclamped until the encode at readback, as in
+  // facet's tiles.
+  auto attach = [&](GLuint framebuffer, GLuint color, GLuint depth, int n) {
+    glBindRenderbuffer(GL_RENDERBUFFER, color);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, n, GL_RGBA32F, width, height);
+    glBindRenderbuffer(GL_RENDERBUFFER, depth);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, n, GL_DEPTH_COMPONENT32F, width, height);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
     if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
       throw Error("OpenGL backend: cannot make a " + std::to_string(width) + "x" +
-                  std::to_string(height) + " float framebuffer");
+                  std::to_string(height) + " float framebuffer with " + std::to_string(n) +
+                  " samples a pixel");
     }
-    width_ = width, height_ = height;
+  };
+  attach(framebuffer_, color_, depth_, 0);
+  if (samples > 1) attach(ms_framebuffer_, ms_color_, ms_depth_, samples);
+  width_ = width, height_ = height, samples_ = samples;
+}
+
+void FrameTarget::bind(int width, int height, int samples) {
+  if (width != width_ || height != height_ || samples != asked_samples_) {
+    GLint max_samples = 1;
+    glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
+    const int usable = std::max(1, std::min(samples, static_cast<int>(max_samples)));
+    if (usable < samples && !warned_) {
+      std::fprintf(stderr, "OpenGL backend: %d samples a pixel asked, this OpenGL has at most %d\n",
+                   samples, usable);
+      warned_ = true;
+    }
+    make(width, height, usable);
+    asked_samples_ = samples;
   }
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+  glBindFramebuffer(GL_FRAMEBUFFER, samples_ > 1 ? ms_framebuffer_ : framebuffer_);
   glViewport(0, 0, width, height);
 }
 
-void FrameTarget::read(Framebuffer& target, float exposure) const {
+void FrameTarget::read(Framebuffer& target, float exposure) {
   const int w = width_, h = height_;
+  if (samples_ > 1) {  // resolve: each pixel's samples averaged; depth takes one
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, ms_framebuffer_);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_);
+    glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    if (target.has_depth()) {
+      glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    }
+  }
   std::vector<float> rgba(static_cast<std::size_t>(w) * h * 4);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
   glPixelStorei(GL_PACK_ALIGNMENT, 4);

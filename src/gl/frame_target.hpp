@@ -1,6 +1,8 @@
 // The offscreen image the GL twin draws into: a framebuffer object with a linear float color
 // buffer and a float depth buffer, and the readback into a facet::Framebuffer (rows flipped,
-// exposure applied, sRGB-encoded as facet's resolve does).
+// exposure applied, sRGB-encoded as facet's resolve does). With MSAA it draws into multisampled
+// buffers, resolved by a blit into the single-sample ones before the readback: the color is
+// linear float, so the average is in linear light, as facet's resolve.
 #pragma once
 
 #include "facet/framebuffer.hpp"
@@ -15,14 +17,22 @@ class FrameTarget {
   FrameTarget(const FrameTarget&) = delete;
   FrameTarget& operator=(const FrameTarget&) = delete;
 
-  // Binds a width x height target for drawing (made or remade when the size changes).
-  void bind(int width, int height);
-  // Reads the drawn image into target (same size), its color scaled by 2^exposure.
-  void read(Framebuffer& target, float exposure) const;
+  // Binds a width x height target with `samples` samples a pixel for drawing (made or remade
+  // when either changes). samples above GL_MAX_SAMPLES are clamped, with one warning on stderr.
+  void bind(int width, int height, int samples);
+  // The samples a pixel of the bound target (after the clamp).
+  int samples() const { return samples_; }
+  // Resolves the samples if there are several, then reads the drawn image into target (same
+  // size), its color scaled by 2^exposure. The depth image takes one sample's depth (GL's
+  // blit of depth picks one; facet's takes sample 0).
+  void read(Framebuffer& target, float exposure);
 
  private:
-  GLuint framebuffer_ = 0, color_ = 0, depth_ = 0;
-  int width_ = 0, height_ = 0;
+  void make(int width, int height, int samples);
+  GLuint framebuffer_ = 0, color_ = 0, depth_ = 0;           // single-sample: read back
+  GLuint ms_framebuffer_ = 0, ms_color_ = 0, ms_depth_ = 0;  // multisampled: drawn into
+  int width_ = 0, height_ = 0, samples_ = 0, asked_samples_ = 0;
+  bool warned_ = false;
 };
 
 }  // namespace facet::gl

@@ -134,7 +134,13 @@ struct GlState {
     const gl::GpuMesh& mesh = resources.mesh(*draw.mesh);
     std::string defines = std::string("#define ") + model + "\n";
     if (material.shading == ShadingModel::wire_overlay) defines += "#define WIRE_OVERLAY\n";
-    if (material.alpha_mode == AlphaMode::mask) defines += "#define ALPHA_MASK\n";
+    if (material.alpha_mode == AlphaMode::mask) {
+      defines += "#define ALPHA_MASK\n";
+      if (target.samples() > 1) {  // gl_SampleMask: GLSL 4.00, or 3.30 with this extension
+        defines += "#extension GL_ARB_sample_shading : enable\n#define ALPHA_TO_COVERAGE " +
+                   std::to_string(target.samples()) + "\n";
+      }
+    }
     if (mesh.mode == GL_LINES) defines += "#define PRIMITIVE_LINES\n";
     if (mesh.mode == GL_POINTS) defines += "#define PRIMITIVE_POINTS\n";
     Program& p = program(defines);
@@ -218,7 +224,7 @@ struct GlState {
     gl::depth_view_range(draws, camera, frame.depth_view_near, frame.depth_view_far);
 
     bind_environment(scene.lighting.environment);
-    target.bind(out.width(), out.height());
+    target.bind(out.width(), out.height(), settings.msaa);
     // The last frame may have left depth writes off (blended draws, the sky), and glClear
     // obeys the depth mask.
     set_blending(AlphaMode::opaque);

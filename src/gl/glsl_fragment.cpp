@@ -223,7 +223,23 @@ void main() {
     if (abs(dot(line, vec3(gl_FragCoord.xy, 1.0))) < 0.5 * length(line.xy)) color = u_wire_color;
   }
 #endif
-#ifdef ALPHA_MASK
+#if defined(ALPHA_MASK) && defined(ALPHA_TO_COVERAGE) && defined(GL_ARB_sample_shading)
+  // MSAA: alpha to coverage as pixel_writer.hpp's alpha_to_coverage, the cutoff keeping half the
+  // samples and the first ones of the pattern kept (a fixed subset, where GL's own
+  // GL_SAMPLE_ALPHA_TO_COVERAGE is the driver's choice). The mask is ANDed with the coverage.
+  {
+    float c = u_alpha_cutoff, kept;
+    if (isnan(color.a)) discard;
+    if (color.a >= c) {
+      kept = c >= 1.0 ? 1.0 : 0.5 + 0.5 * (color.a - c) / (1.0 - c);
+    } else {
+      kept = c <= 0.0 ? 0.0 : 0.5 * color.a / c;
+    }
+    int n = int(clamp(kept, 0.0, 1.0) * float(ALPHA_TO_COVERAGE) + 0.5);
+    if (n == 0) discard;
+    gl_SampleMask[0] = n >= 32 ? -1 : (1 << n) - 1;
+  }
+#elif defined(ALPHA_MASK)
   if (!(color.a >= u_alpha_cutoff)) discard;  // cut-out: no color, no depth
 #endif
 #ifdef MODEL_WIRE

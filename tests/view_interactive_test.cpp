@@ -447,9 +447,9 @@ TEST(ViewInput, LetterboxBarsWhenTheWindowAspectDiffers) {
 TEST(ViewInput, BTogglesTheOpenGLTwinAndTheDifference) {
   REQUIRE_TOOLS();
   const std::string b = "xdotool key b\nshot\n";
-  Session s = run_session(
-      "backend", "start_view --scene shapes --size 320x180 --overlay off --msaa 1\n" + b + b + b +
-                     "stop_view\n");
+  Session s =
+      run_session("backend", "start_view --scene shapes --size 320x180 --overlay off --msaa 1\n" +
+                                 b + b + b + "stop_view\n");
   ASSERT_EQ(s.result.exit_code, 0) << s.result.stderr_text;
   const char* const backends[] = {"facet", "gl", "difference", "facet"};
   for (int n = 1; n <= 4; ++n) {

@@ -22,9 +22,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       for (std::size_t p = 0; p < file.model.meshes[m].primitives.size(); ++p) {
         for (bool mirrored : {false, true}) {
           try {
-            auto mesh = facet::io::gltf_primitive_mesh(file, accessors, static_cast<int>(m),
-                                                       static_cast<int>(p), 0, material, mirrored,
-                                                       options);
+            auto mesh =
+                facet::io::gltf_primitive_mesh(file, accessors, static_cast<int>(m),
+                                               static_cast<int>(p), 0, material, mirrored, options);
             if (mesh) mesh->validate();
           } catch (const facet::Error&) {
             // One damaged primitive: the next may still be read.

@@ -19,12 +19,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const facet::Material material;
     const facet::ImportOptions options;
     for (std::size_t m = 0; m < file.model.meshes.size(); ++m) {
+      // The mesh's default morph weights, so that its targets are read too (no skin: joints
+      // come from the node hierarchy, which this target does not build).
+      facet::io::MeshPose pose;
+      for (double weight : file.model.meshes[m].weights)
+        pose.weights.push_back(static_cast<float>(weight));
       for (std::size_t p = 0; p < file.model.meshes[m].primitives.size(); ++p) {
         for (bool mirrored : {false, true}) {
           try {
-            auto mesh =
-                facet::io::gltf_primitive_mesh(file, accessors, static_cast<int>(m),
-                                               static_cast<int>(p), 0, material, mirrored, options);
+            auto mesh = facet::io::gltf_primitive_mesh(file, accessors, static_cast<int>(m),
+                                                       static_cast<int>(p), 0, material, mirrored,
+                                                       pose, options);
             if (mesh) mesh->validate();
           } catch (const facet::Error&) {
             // One damaged primitive: the next may still be read.

@@ -8,8 +8,8 @@
 
 # The program's and the tests' own files, which drive the library rather than do its work, compile
 # at -O0 in sanitizer builds (FACET_SANITIZE_DRIVER_OPTIONS, used by those targets): instrumented
-# at -O1 they take two to three times as long to compile, and the suite's time is spent in the
-# library, which keeps the build type's -O1.
+# at -O1 they compile far slower, and the suite's time is spent in the library, which keeps the
+# build type's -O1.
 set(FACET_SANITIZE_DRIVER_OPTIONS "")
 if(FACET_SANITIZE STREQUAL "")
   return()

@@ -126,15 +126,9 @@ void keep_images(const std::string& name, const Framebuffer& facet, const Frameb
   write_image(gl, (dir / (name + "_gl.png")).string());
 }
 
-// The PSNR bounds are 6 dB under what Mesa 22.3 llvmpipe measures (docs/gl_twin.md has the
-// table), so that a wrong light or texture fails (lighting 10 % darker costs 30 to 50 dB), and
-// at least the 35 dB the twin is meant to reach on any driver. Measured:
-//   scenes    shapes 86.9, teapot 78.4, bunny 77.4, islands 54.3
-//   models    unlit 81.0, vertex_color 81.0, flat 91.0, lambert 85.7, gouraud 85.6, phong 85.9,
-//             blinn_phong 84.8, pbr 83.1, depth 89.4, normals 87.3, texcoords 80.7,
-//             wireframe 46.9, wire_overlay 55.2
-//   samplers  nearest 44.5, bilinear 59.7, trilinear 52.5, bilinear clamp 65.9,
-//             trilinear mirror 53.8
+// The PSNR bounds sit 6 dB under what Mesa's llvmpipe reaches (docs/gl_twin.md has the table),
+// so that a wrong light or texture fails, and never under the 35 dB the twin is meant to reach on
+// any driver.
 struct Expected {
   const char* scene;
   double min_psnr;  // dB
@@ -181,8 +175,7 @@ GlRenderer* shared_gl_msaa4() {
   return renderer.get();
 }
 
-// Measured: shapes 46.4 dB, teapot 38.5 dB (bounds 6 dB under, as above), against 34.2 and
-// 30.4 dB for facet at one sample: the edges are anti-aliased alike, but not identically. Mesa
+// The edges are anti-aliased alike, but not identically (docs/gl_twin.md has the PSNRs). Mesa
 // puts the standard 4x positions in GL's window coordinates, whose rows run up, so in the image
 // as read back its pattern is facet's mirrored top to bottom (GL_SAMPLE_POSITION 0 is at
 // (0.375, 0.125), facet's at (0.375, 0.875) from the top left). Edge pixels then differ by up to
@@ -423,8 +416,8 @@ double psnr(const test::Rgba8Image& a, const test::Rgba8Image& b) {
 TEST(GlTwinCli, RenderBackendGlDrawsWhatFacetDraws) {
   REQUIRE_GL(gl);
   const auto dir = test::fresh_test_dir("facet_gl_twin_", "cli");
-  // One sample a pixel: at 4 the two sample patterns are mirrored (see GlTwinMsaa) and the
-  // edges alone cost 14 dB (measured 43.0 dB), which would hide a wrong light.
+  // One sample a pixel: at 4 the two sample patterns are mirrored (see GlTwinMsaa), and the
+  // edges' difference would hide a wrong light.
   const std::string common =
       std::string(FACET_CLI) + " render --scene teapot --size 160x90 --msaa 1 -o ";
   const test::CommandResult twin =

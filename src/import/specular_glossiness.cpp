@@ -18,7 +18,8 @@ float brightness(glm::vec3 c) {
 
 // KHR_materials_pbrSpecularGlossiness to metallic-roughness, per material factor (textures are
 // not re-baked): the approximation from the glTF sample models' conversion notes. Metallic is
-// solved from how much brighter the specular is than a dielectric's 4 %; roughness = 1 - gloss.
+// solved from how much brighter the specular is than a dielectric's (kDielectric); roughness =
+// 1 - gloss.
 void convert_specular_glossiness(glm::vec4 diffuse, glm::vec3 specular, float glossiness,
                                  Material& out) {
   constexpr float kDielectric = 0.04f;

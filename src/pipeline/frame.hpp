@@ -196,7 +196,7 @@ struct SetupPoint {
 // gets a region as big as its input), but only the primitives that survive culling are written,
 // and at a million triangles to a few hundred thousand pixels most do not: pages never written
 // are never made resident, so the memory the arrays cost follows what is drawn, not the input
-// (the 20-million-triangle model of BENCHMARKS.md's "Big meshes": 5.6 GB less). Only for
+// (BENCHMARKS.md, "Big meshes"). Only for
 // aggregates of trivially copyable members (implicit-lifetime types: allocating the storage
 // creates them, C++20 [intro.object]); nothing reads an element before writing it.
 template <class T>

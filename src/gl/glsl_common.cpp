@@ -6,6 +6,13 @@ namespace facet::gl {
 const char* const kCommonGlsl = R"glsl(
 const float kPi = 3.14159265358979;
 
+// ---- What the vertex stage hands on, declared once for every stage that passes or reads it
+// (`out Varyings VARYINGS out_v;`): the blocks of consecutive stages must match member for
+// member. color: material x vertex color; normal: world, unit; position: world; tangent: world
+// xyz, w handedness; diffuse, specular: Gouraud's light at the vertex. (One line: GLSL 3.30
+// has no line continuation.) ----
+#define VARYINGS { vec2 texcoord; vec4 color; vec3 normal; vec3 position; vec4 tangent; vec3 diffuse; vec3 specular; }
+
 // ---- Lights (shading/lighting.hpp): prepared on the CPU exactly as facet prepares them. ----
 #define MAX_LIGHTS 32
 const int kDirectional = 0, kPoint = 1, kSpot = 2;

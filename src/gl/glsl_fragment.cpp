@@ -6,15 +6,7 @@
 namespace facet::gl {
 
 const char* const kFragmentGlsl = R"glsl(
-in Varyings {
-  vec2 texcoord;
-  vec4 color;
-  vec3 normal;
-  vec3 position;
-  vec4 tangent;
-  vec3 diffuse;
-  vec3 specular;
-} in_v;
+in Varyings VARYINGS in_v;
 flat in int normals_front;
 flat in vec4 face_color;
 flat in vec3 edge_lines[3];

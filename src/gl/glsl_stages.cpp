@@ -22,15 +22,7 @@ uniform bool u_use_vertex_colors;
 uniform bool u_has_normals;
 uniform float u_point_size;
 
-out Varyings {
-  vec2 texcoord;
-  vec4 color;     // material x vertex color
-  vec3 normal;    // world, unit
-  vec3 position;  // world
-  vec4 tangent;   // world xyz, w handedness
-  vec3 diffuse;   // Gouraud: light at the vertex
-  vec3 specular;
-} out_v;
+out Varyings VARYINGS out_v;
 
 void main() {
   gl_Position = u_model_view_projection * vec4(a_position, 1.0);
@@ -67,25 +59,9 @@ layout(triangle_strip, max_vertices = 3) out;
 #define CORNERS 3
 #endif
 
-in Varyings {
-  vec2 texcoord;
-  vec4 color;
-  vec3 normal;
-  vec3 position;
-  vec4 tangent;
-  vec3 diffuse;
-  vec3 specular;
-} in_v[];
+in Varyings VARYINGS in_v[];
 
-out Varyings {
-  vec2 texcoord;
-  vec4 color;
-  vec3 normal;
-  vec3 position;
-  vec4 tangent;
-  vec3 diffuse;
-  vec3 specular;
-} out_v;
+out Varyings VARYINGS out_v;
 
 // Whether the vertex normals point to the side the triangle's winding calls its front; the
 // fragment stage compares it with gl_FrontFacing (back_faces.hpp's reverses_normal).

@@ -129,8 +129,8 @@ TEST(GltfImport, MaterialHasEveryMapFactorSamplerAndAlphaMode) {
 TEST(GltfImport, PrimitiveWithoutMaterialGetsTheGltfDefault) {
   GltfBuilder b;
   b.add_mesh_node(unit_quad(b));
-  const Material& m =
-      material_of(import_gltf(b.write_gltf(gltf_test_dir("default") / "d.gltf")).scene);
+  const ImportedGltf got = import_gltf(b.write_gltf(gltf_test_dir("default") / "d.gltf"));
+  const Material& m = material_of(got.scene);
   EXPECT_EQ(m.shading, ShadingModel::pbr);
   EXPECT_EQ(m.base_color, glm::vec4(1.0f));
   EXPECT_FLOAT_EQ(m.metallic, 1.0f);

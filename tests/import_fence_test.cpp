@@ -99,7 +99,7 @@ TEST(ImportFence, EndlessLoopStopsAtTheTimeLimit) {
             std::string::npos)
       << message;
   EXPECT_GE(seconds, 0.5);
-  EXPECT_LT(seconds, 3.0);
+  EXPECT_LT(seconds, 10.0);  // the child would hang for ever: it was stopped
 }
 
 TEST(ImportFence, HugeAllocationStopsAtTheMemoryLimit) {

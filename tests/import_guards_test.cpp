@@ -276,7 +276,7 @@ TEST(ImportGuards, GlbChunkClaimingFourGibibytesFailsAtOnce) {
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
   EXPECT_FALSE(r.scene);
   EXPECT_TRUE(contains(r.error, "GLB chunk 0 (JSON) claims 4294967280 bytes")) << r.error;
-  EXPECT_LT(seconds, 1.0);
+  EXPECT_LT(seconds, 5.0);  // reading the 4 GiB first takes tens of seconds
   EXPECT_LT(peak_resident_kib() - peak_before, 256 * 1024) << "KiB more at peak";
 }
 

@@ -449,7 +449,9 @@ TEST(ImportContent, GlmarkBunnyLoadsWithSmoothNormalsQuickly) {
     if (glm::dot(a, b) > 0.9f) ++smooth;
   }
   EXPECT_GT(smooth, mesh.indices.size() / 3 * 9 / 10);
-  EXPECT_LT(seconds, 2.0) << "well under a second on a normal machine, even with sanitizers";
+  // A bound that catches a pass quadratic in the vertices (minutes here), not a speed claim: a
+  // busy machine under a sanitizer must not fail it.
+  EXPECT_LT(seconds, 20.0);
 }
 
 // --- compute_smooth_normals and compute_tangents ----------------------------------------------

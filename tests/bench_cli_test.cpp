@@ -61,9 +61,22 @@ TEST(BenchCli, PrintsOneRowPerSceneWithEveryStageAndWritesJson) {
   }
 }
 
+// --scene takes a list: one row per scene, in the order given.
+TEST(BenchCli, SceneListRunsEachSceneInOrder) {
+  std::string command = FACET_CLI;
+  command += " bench --scene overdraw-front-to-back,shapes --size 32x18 --frames 1 --warmup 0";
+  CommandResult r = run_command(command);
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  std::vector<std::string> out = lines(r.stdout_text);
+  ASSERT_EQ(out.size(), 4u) << r.stdout_text;
+  EXPECT_EQ(words(out[1]).at(0), "overdraw-front-to-back");
+  EXPECT_EQ(words(out[2]).at(0), "shapes");
+}
+
 TEST(BenchCli, BadValuesGiveOneErrorLine) {
-  for (const char* args : {"--scene no_such_scene", "--frames 0", "--warmup -1", "--threads -2",
-                           "--size 0x10", "--tile-size 48", "--msaa 3"}) {
+  for (const char* args :
+       {"--scene no_such_scene", "--scene overdraw,", "--scene shapes,nope", "--backend vulkan",
+        "--frames 0", "--warmup -1", "--threads -2", "--size 0x10", "--tile-size 48", "--msaa 3"}) {
     std::string command = FACET_CLI;
     command += " bench --size 32x18 ";
     command += args;

@@ -4,10 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
+#include <sstream>
 #include <string>
 
 #include "facet/gl.hpp"
@@ -431,6 +433,34 @@ TEST(GlTwinCli, RenderBackendGlDrawsWhatFacetDraws) {
   const test::Rgba8Image b = test::read_png((dir / "facet.png").string());
   ASSERT_EQ(a.width, 160);
   EXPECT_GE(psnr(a, b), 51.0);  // measured 57.2 dB
+}
+
+// `facet bench --backend gl` times the scenes the twin can draw, says which OpenGL it is, and
+// leaves out the glmark2 equivalents under `all` (their shading is facet's own).
+TEST(GlTwinCli, BenchTimesTheScenesTheTwinCanDraw) {
+  REQUIRE_GL(gl);
+  const std::string bench =
+      std::string(FACET_CLI) + " bench --backend gl --size 64x36 --frames 2 --warmup 1 --threads 2";
+  const test::CommandResult r = test::run_command(bench + " --scene shapes,overdraw");
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  EXPECT_EQ(r.stdout_text.rfind("OpenGL: " + gl->renderer_name(), 0), 0u) << r.stdout_text;
+  std::istringstream rows(r.stdout_text);
+  std::vector<std::string> names;
+  for (std::string line; std::getline(rows, line);) {
+    std::istringstream words(line);
+    std::string name, median;
+    words >> name >> median;
+    if (!median.empty() && std::isdigit(static_cast<unsigned char>(median[0]))) {
+      names.push_back(name);
+      EXPECT_GT(std::stod(median), 0.0) << line;
+    }
+  }
+  EXPECT_EQ(names, (std::vector<std::string>{"shapes", "overdraw"})) << r.stdout_text;
+  const test::CommandResult glmark2 = test::run_command(bench + " --scene build:use-vbo=true");
+  EXPECT_EQ(glmark2.exit_code, 2);
+  EXPECT_NE(glmark2.stderr_text.find("--scene build:use-vbo=true: a glmark2 scene"),
+            std::string::npos)
+      << glmark2.stderr_text;
 }
 
 // No usable OpenGL (glvnd pointed at no EGL vendor): one line saying what is missing, exit code

@@ -5,7 +5,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
+#include <functional>
+#include <memory>
 #include <vector>
 
 #include "arguments.hpp"
@@ -13,6 +16,7 @@
 #include "facet/framebuffer.hpp"
 #include "facet/image_io.hpp"
 #include "facet/renderer.hpp"
+#include "render_backend.hpp"
 #include "scenes/bench_scenes.hpp"
 
 namespace facet::cli {
@@ -35,40 +39,65 @@ double median(std::vector<double> v) {
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-SceneResult run_scene(const std::string& name, const BenchOptions& o, const ImageSize& size) {
-  auto scene = bench::make_bench_scene(name);  // setup: not timed
+RenderSettings bench_settings(const BenchOptions& o, const bench::BenchScene& scene) {
   RenderSettings settings;
   settings.threads = o.threads;
   settings.tile_size = o.tile_size;
   settings.msaa = o.msaa;
-  settings.clear_color = scene->clear_color();
-  Renderer renderer(settings);
-  // Color only, as glmark2's frames are: both depth-test, neither reads the depth back.
-  Framebuffer framebuffer(size.width, size.height, ColorFormat::rgba8_srgb, DepthImage::none);
-  const float aspect = static_cast<float>(size.width) / size.height;
-  std::vector<double> total, geometry, binning, raster, resolve;
+  settings.clear_color = scene.clear_color();
+  return settings;
+}
+
+// Renders the warm-up and measured frames, each by draw_frame(t) (animations follow the clock,
+// as in glmark2); returns the measured frames' wall times in ms, with after_frame called after
+// each measured one.
+std::vector<double> time_frames(const BenchOptions& o,
+                                const std::function<void(double)>& draw_frame,
+                                const std::function<void()>& after_frame) {
   using Clock = std::chrono::steady_clock;
+  std::vector<double> total;
   auto t0 = Clock::now();
   for (int frame = 0; frame < o.warmup + o.frames; ++frame) {
-    // Animations follow the clock, as in glmark2.
     double t = std::chrono::duration<double>(Clock::now() - t0).count();
     auto start = Clock::now();
-    scene->record(renderer, t, aspect);
-    renderer.finish(framebuffer);
+    draw_frame(t);
     double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     if (frame < o.warmup) continue;
-    const FrameStats& s = renderer.stats();
     total.push_back(ms);
-    geometry.push_back(s.ms_geometry);
-    binning.push_back(s.ms_binning);
-    raster.push_back(s.ms_raster - s.ms_resolve);
-    resolve.push_back(s.ms_resolve);
+    after_frame();
   }
-  SceneResult r;
-  r.name = name;
+  return total;
+}
+
+void set_times(SceneResult& r, const std::vector<double>& total) {
   r.median_ms = median(total);
   r.min_ms = *std::min_element(total.begin(), total.end());
   r.max_ms = *std::max_element(total.begin(), total.end());
+}
+
+SceneResult run_scene(const std::string& name, bench::BenchScene& scene, const BenchOptions& o,
+                      const ImageSize& size) {
+  Renderer renderer(bench_settings(o, scene));
+  // Color only, as glmark2's frames are: both depth-test, neither reads the depth back.
+  Framebuffer framebuffer(size.width, size.height, ColorFormat::rgba8_srgb, DepthImage::none);
+  const float aspect = static_cast<float>(size.width) / size.height;
+  std::vector<double> geometry, binning, raster, resolve;
+  std::vector<double> total = time_frames(
+      o,
+      [&](double t) {
+        scene.record(renderer, t, aspect);
+        renderer.finish(framebuffer);
+      },
+      [&] {
+        const FrameStats& s = renderer.stats();
+        geometry.push_back(s.ms_geometry);
+        binning.push_back(s.ms_binning);
+        raster.push_back(s.ms_raster - s.ms_resolve);
+        resolve.push_back(s.ms_resolve);
+      });
+  SceneResult r;
+  r.name = name;
+  set_times(r, total);
   r.geometry_ms = median(geometry);
   r.binning_ms = median(binning);
   r.raster_ms = median(raster);
@@ -81,13 +110,31 @@ SceneResult run_scene(const std::string& name, const BenchOptions& o, const Imag
   return r;
 }
 
+// The same frames drawn by the OpenGL twin: whole-frame times only (OpenGL reports no stages),
+// the pixels read back into the framebuffer as facet's finish() writes them.
+SceneResult run_scene_gl(const std::string& name, bench::BenchScene& scene, const BenchOptions& o,
+                         const ImageSize& size) {
+  GlBackend gl(bench_settings(o, scene));  // setup: not timed
+  Framebuffer framebuffer(size.width, size.height, ColorFormat::rgba8_srgb, DepthImage::none);
+  const float aspect = static_cast<float>(size.width) / size.height;
+  Camera camera;
+  std::vector<double> total = time_frames(
+      o, [&](double t) { gl.render(*scene.scene_at(t, aspect, camera), camera, framebuffer); },
+      [] {});
+  SceneResult r;
+  r.name = name;
+  set_times(r, total);
+  return r;
+}
+
 void write_json(const std::string& path, const BenchOptions& o, const ImageSize& size,
                 const std::vector<SceneResult>& results) {
   std::ofstream out(path);
   if (!out) throw Error(o.json + ": cannot write");
   out << "{\n  \"size\": \"" << size.width << "x" << size.height
       << "\",\n  \"threads\": " << o.threads << ",\n  \"tile_size\": " << o.tile_size
-      << ",\n  \"msaa\": " << o.msaa << ",\n  \"frames\": " << o.frames << ",\n  \"scenes\": [\n";
+      << ",\n  \"msaa\": " << o.msaa << ",\n  \"backend\": \"" << o.backend << "\""
+      << ",\n  \"frames\": " << o.frames << ",\n  \"scenes\": [\n";
   for (std::size_t i = 0; i < results.size(); ++i) {
     const SceneResult& r = results[i];
     out << "    {\"name\": \"" << r.name << "\", \"median_ms\": " << r.median_ms
@@ -102,12 +149,37 @@ void write_json(const std::string& path, const BenchOptions& o, const ImageSize&
   out << "  ]\n}\n";
 }
 
+// The scenes named by --scene: one name, names separated by commas, or all.
+std::vector<std::string> scene_list(const std::string& text) {
+  if (text == "all") return bench::bench_scene_names();
+  std::vector<std::string> names;
+  std::size_t start = 0;
+  while (true) {
+    std::size_t comma = text.find(',', start);
+    names.push_back(text.substr(start, comma - start));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return names;
+}
+
+// llvmpipe, the OpenGL of a machine without a GPU, makes its own threads: --threads sets how
+// many (Mesa's LP_NUM_THREADS) unless the environment already says.
+void set_gl_threads(int threads) {
+  if (threads > 0) setenv("LP_NUM_THREADS", std::to_string(threads).c_str(), 0);
+}
+
 }  // namespace
 
 CLI::App* add_bench_command(CLI::App& app, BenchOptions& o) {
   CLI::App* cmd = app.add_subcommand("bench", "Measure ms/frame on the benchmark scenes");
-  cmd->add_option("--scene", o.scene,
-                  "Scene to run: " + joined(bench::bench_scene_names()) + ", or all")
+  cmd->add_option(
+         "--scene", o.scene,
+         "Scenes to run, separated by commas: " + joined(bench::bench_scene_names()) + "; or all")
+      ->capture_default_str();
+  cmd->add_option("--backend", o.backend,
+                  "Renderer: facet, or gl (its OpenGL twin: the scenes it can draw, timed the same "
+                  "way with the pixels read back; --threads sets llvmpipe's LP_NUM_THREADS)")
       ->capture_default_str();
   cmd->add_option("--size", o.size, "Frame size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--frames", o.frames, "Frames measured per scene (after the warm-up)")
@@ -131,23 +203,54 @@ int run_bench(const BenchOptions& o) {
   if (o.tile_size != 16 && o.tile_size != 32 && o.tile_size != 64 && o.tile_size != 128) {
     throw Error("--tile-size: must be 16, 32, 64 or 128, got " + std::to_string(o.tile_size));
   }
-  std::vector<std::string> names =
-      o.scene == "all" ? bench::bench_scene_names() : std::vector<std::string>{o.scene};
+  const Backend backend = parse_backend("--backend", o.backend);
+  // Every name is checked before the first frame, so a typo does not end a long run half-way.
+  const std::vector<std::string> known = bench::bench_scene_names();
+  const std::vector<std::string> glmark2 = bench::glmark2_scene_names();
+  auto listed = [](const std::vector<std::string>& list, const std::string& name) {
+    return std::find(list.begin(), list.end(), name) != list.end();
+  };
+  std::vector<std::string> names;
+  for (const std::string& name : scene_list(o.scene)) {
+    if (!listed(known, name)) {
+      throw Error("--scene: unknown benchmark scene '" + name + "' (" + joined(known) +
+                  "; or all)");
+    }
+    if (backend == Backend::gl && listed(glmark2, name)) {
+      if (o.scene == "all") continue;
+      throw Error("--scene " + name +
+                  ": a glmark2 scene, shaded as glmark2 does by facet only; "
+                  "not with --backend gl");
+    }
+    names.push_back(name);
+  }
+  if (backend == Backend::gl) {
+    set_gl_threads(o.threads);
+    std::printf("OpenGL: %s\n", GlBackend(RenderSettings{}).description().c_str());
+  }
   std::vector<SceneResult> results;
   std::printf("%-28s %9s %9s %9s %10s %10s %8s %8s %8s %8s\n", "scene", "median", "min", "max",
               "Mtri/s", "Mpix/s", "geom", "bin", "raster", "resolve");
   for (const std::string& name : names) {
-    SceneResult r = run_scene(name, o, size);
-    std::printf("%-28s %9.2f %9.2f %9.2f %10.1f %10.1f %8.2f %8.2f %8.2f %8.2f\n", r.name.c_str(),
-                r.median_ms, r.min_ms, r.max_ms, r.triangles_per_s / 1e6, r.pixels_per_s / 1e6,
-                r.geometry_ms, r.binning_ms, r.raster_ms, r.resolve_ms);
+    auto scene = bench::make_bench_scene(name);  // setup: not timed
+    if (backend == Backend::gl) {
+      SceneResult r = run_scene_gl(name, *scene, o, size);
+      std::printf("%-28s %9.2f %9.2f %9.2f %10s %10s %8s %8s %8s %8s\n", r.name.c_str(),
+                  r.median_ms, r.min_ms, r.max_ms, "-", "-", "-", "-", "-", "-");
+      results.push_back(r);
+    } else {
+      SceneResult r = run_scene(name, *scene, o, size);
+      std::printf("%-28s %9.2f %9.2f %9.2f %10.1f %10.1f %8.2f %8.2f %8.2f %8.2f\n", r.name.c_str(),
+                  r.median_ms, r.min_ms, r.max_ms, r.triangles_per_s / 1e6, r.pixels_per_s / 1e6,
+                  r.geometry_ms, r.binning_ms, r.raster_ms, r.resolve_ms);
+      results.push_back(r);
+    }
     std::fflush(stdout);
-    results.push_back(r);
   }
   std::printf(
-      "(ms/frame at %dx%d, %d frames after %d warm-up; stage columns are medians in ms: raster "
-      "is raster + shade)\n",
-      size.width, size.height, o.frames, o.warmup);
+      "(ms/frame at %dx%d, %d frames after %d warm-up, backend %s; stage columns are medians in "
+      "ms: raster is raster + shade)\n",
+      size.width, size.height, o.frames, o.warmup, backend_name(backend));
   if (!o.json.empty()) write_json(o.json, o, size, results);
   return 0;
 }

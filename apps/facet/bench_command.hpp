@@ -1,5 +1,7 @@
 // `facet bench`: renders benchmark scenes for N frames after a warm-up and reports ms/frame
-// (median, min, max), throughput and the time per pipeline stage; optionally as JSON.
+// (median, min, max), throughput and the time per pipeline stage; optionally as JSON. With
+// --backend gl the OpenGL twin draws the scenes it can (the built-in ones, not the glmark2
+// equivalents), timed the same way, readback included.
 #pragma once
 
 #include <string>
@@ -9,7 +11,8 @@
 namespace facet::cli {
 
 struct BenchOptions {
-  std::string scene = "all";
+  std::string scene = "all";  // a name, names separated by commas, or all
+  std::string backend = "facet";
   std::string size = "1920x1080";
   int frames = 50;
   int warmup = 5;

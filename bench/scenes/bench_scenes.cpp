@@ -1,9 +1,13 @@
 // The built-in benchmark scenes (see bench_scenes.hpp).
 #include "scenes/bench_scenes.hpp"
 
+#include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <glm/gtc/matrix_transform.hpp>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "facet/error.hpp"
 #include "facet/import.hpp"
@@ -11,6 +15,7 @@
 #include "facet/procedural.hpp"
 #include "facet/scene.hpp"
 #include "facet/texture.hpp"
+#include "facet/worlds.hpp"
 
 namespace facet::bench {
 namespace {
@@ -25,63 +30,92 @@ std::shared_ptr<const Mesh> load_first_mesh(const std::string& path) {
   return scene.meshes.at(0);
 }
 
-// The scenes' meshes do not change: they are drawn through shared pointers, so the renderer
+// A benchmark scene that is a Scene: facet records it with draw_scene, the OpenGL twin draws it
+// whole. Its meshes do not change: they are drawn through shared pointers, so the renderer
 // checks each once, as a GPU driver checks the vertex buffers glmark2 draws from.
+class SceneBench : public BenchScene {
+ public:
+  void record(Renderer& renderer, double t, float aspect) override {
+    Camera camera;
+    const Scene* frame = scene_at(t, aspect, camera);
+    renderer.begin_frame(camera, frame->lighting);
+    draw_scene(renderer, *frame);
+  }
+  const Scene* scene_at(double t, float aspect, Camera& camera) override {
+    pose(t, aspect);
+    camera = scene_camera(scene_, aspect);
+    camera.aspect = aspect;
+    return &scene_;
+  }
+
+ protected:
+  // Moves what the frame at time t moves (the camera's aspect is set after).
+  virtual void pose(double /*t*/, float /*aspect*/) {}
+  // One node drawing `mesh` with `material`.
+  void add_node(std::shared_ptr<const Mesh> mesh, const Material& material) {
+    scene_.meshes.push_back(std::move(mesh));
+    scene_.materials.push_back(material);
+    SceneNode node;
+    node.instances.push_back({static_cast<int>(scene_.meshes.size()) - 1,
+                              static_cast<int>(scene_.materials.size()) - 1});
+    scene_.nodes.push_back(std::move(node));
+  }
+
+  Scene scene_;
+};
+
+// A built-in world (shapes, teapot) from its own camera, still.
+class WorldScene : public SceneBench {
+ public:
+  explicit WorldScene(const std::string& name) { scene_ = make_builtin_scene(name); }
+};
 
 // bunny.obj (70k triangles, indexed) in the normals view, fov 45, near 0.1, far 100, looking
 // at the origin from (0, 0.1, distance).
-class BunnyScene : public BenchScene {
+class BunnyScene : public SceneBench {
  public:
-  explicit BunnyScene(float distance) : distance_(distance), mesh_(load_first_mesh(kBunnyPath)) {
-    material_.shading = ShadingModel::normals;
+  explicit BunnyScene(float distance) {
+    Material material;
+    material.shading = ShadingModel::normals;
+    add_node(load_first_mesh(kBunnyPath), material);
+    scene_.camera =
+        Camera::look_at({0.0f, 0.1f, distance}, {0, 0, 0}, {0, 1, 0}, 45.0f, 1.0f, 0.1f, 100.0f);
   }
-  void record(Renderer& renderer, double, float aspect) override {
-    renderer.begin_frame(Camera::look_at({0.0f, 0.1f, distance_}, {0, 0, 0}, {0, 1, 0}, 45.0f,
-                                         aspect, 0.1f, 100.0f));
-    renderer.draw(mesh_, material_);
-  }
-
- private:
-  float distance_;
-  std::shared_ptr<const Mesh> mesh_;
-  Material material_;
 };
 
 // At least a million small triangles: a 16 x 9 grid of spheres of 7,200 triangles each
 // (1,036,800 in all), Gouraud-lit, turning slowly.
-class MillionScene : public BenchScene {
+class MillionScene : public SceneBench {
  public:
-  MillionScene() : sphere_(std::make_shared<const Mesh>(uv_sphere(0.45f, 60, 60))) {
-    material_.shading = ShadingModel::gouraud;
-    material_.base_color = {0.8f, 0.5f, 0.3f, 1.0f};
-    lighting_.lights = {Light::directional({-0.3f, -0.5f, -1.0f})};
+  MillionScene() {
+    Material material;
+    material.shading = ShadingModel::gouraud;
+    material.base_color = {0.8f, 0.5f, 0.3f, 1.0f};
+    auto sphere = std::make_shared<const Mesh>(uv_sphere(0.45f, 60, 60));
+    for (int i = 0; i < kColumns * kRows; ++i) add_node(sphere, material);
+    scene_.lighting.lights = {Light::directional({-0.3f, -0.5f, -1.0f})};
+    scene_.camera = Camera::look_at({0, 0, 11.5f}, {0, 0, 0}, {0, 1, 0}, 45.0f, 1.0f, 0.5f, 50.0f);
   }
-  void record(Renderer& renderer, double t, float aspect) override {
-    renderer.begin_frame(
-        Camera::look_at({0, 0, 11.5f}, {0, 0, 0}, {0, 1, 0}, 45.0f, aspect, 0.5f, 50.0f),
-        lighting_);
+
+ protected:
+  void pose(double t, float) override {
     for (int row = 0; row < kRows; ++row) {
       for (int column = 0; column < kColumns; ++column) {
         glm::vec3 position{(column - (kColumns - 1) * 0.5f) * 1.0f, (row - (kRows - 1) * 0.5f),
                            0.0f};
-        transforms_[row * kColumns + column] = glm::rotate(
+        scene_.nodes[row * kColumns + column].transform = glm::rotate(
             glm::translate(glm::mat4(1.0f), position), static_cast<float>(t), glm::vec3(0, 1, 0));
-        renderer.draw(sphere_, material_, transforms_[row * kColumns + column]);
       }
     }
   }
 
  private:
   static constexpr int kColumns = 16, kRows = 9;
-  std::shared_ptr<const Mesh> sphere_;
-  Material material_;
-  Lighting lighting_;
-  glm::mat4 transforms_[kColumns * kRows];
 };
 
 // Eight full-screen textured quads with trilinear filtering: every pixel shaded 8 times
 // when drawn back to front; front to back, the early depth test rejects all but one.
-class OverdrawScene : public BenchScene {
+class OverdrawScene : public SceneBench {
  public:
   explicit OverdrawScene(bool front_to_back) : front_to_back_(front_to_back) {
     // A generated 512x512 texture: no data files needed.
@@ -93,44 +127,42 @@ class OverdrawScene : public BenchScene {
         p[2] = ((x / 32 + y / 32) % 2) ? 200 : 60, p[3] = 255;
       }
     }
-    material_.shading = ShadingModel::unlit;
-    material_.base_color_map.texture = Texture::from_rgba8(512, 512, rgba, true, "overdraw");
-    material_.cull = CullMode::none;
-    quad_ = std::make_shared<const Mesh>(rectangle(2.0f, 2.0f));
+    Material material;
+    material.shading = ShadingModel::unlit;
+    material.base_color_map.texture = Texture::from_rgba8(512, 512, rgba, true, "overdraw");
+    material.cull = CullMode::none;
+    scene_.textures.push_back(material.base_color_map.texture);
+    auto quad = std::make_shared<const Mesh>(rectangle(2.0f, 2.0f));
+    for (int i = 0; i < 8; ++i) add_node(quad, material);
+    // The camera at the origin, quads at depths 1..8 scaled to fill the view exactly.
+    scene_.camera = Camera::look_at({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 60.0f, 1.0f, 0.5f, 20.0f);
   }
-  void record(Renderer& renderer, double, float aspect) override {
-    // An orthographic-like setup: the camera at the origin, quads at depths 1..8 scaled to
-    // fill the view exactly.
-    Camera camera = Camera::look_at({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 60.0f, aspect, 0.5f, 20.0f);
-    renderer.begin_frame(camera);
+
+ protected:
+  void pose(double, float aspect) override {
     float half_height = std::tan(glm::radians(30.0f));
     for (int i = 0; i < 8; ++i) {
       float depth = front_to_back_ ? 1.0f + i : 8.0f - i;
-      transforms_[i] =
+      scene_.nodes[i].transform =
           glm::scale(glm::translate(glm::mat4(1.0f), {0, 0, -depth}),
                      {half_height * aspect * depth * 1.02f, half_height * depth * 1.02f, 1.0f});
-      renderer.draw(quad_, material_, transforms_[i]);
     }
   }
 
  private:
   bool front_to_back_;
-  std::shared_ptr<const Mesh> quad_;
-  Material material_;
-  glm::mat4 transforms_[8];
 };
 
 // The islands world (facet view --scene islands) from its start camera, animated by the clock:
 // the interactive engine's workload (its speed targets are for this scene).
-class IslandsScene : public BenchScene {
+class IslandsScene : public SceneBench {
  public:
   IslandsScene() : world_(make_islands_world()) {}
-  void record(Renderer& renderer, double t, float aspect) override {
+  const Scene* scene_at(double t, float aspect, Camera& camera) override {
     world_.animate(t);
-    Camera camera = world_.scene.camera;
+    camera = world_.scene.camera;
     camera.aspect = aspect;
-    renderer.begin_frame(camera, world_.scene.lighting);
-    draw_scene(renderer, world_.scene);
+    return &world_.scene;
   }
   glm::vec4 clear_color() const override { return {world_.scene.lighting.fog.color, 1.0f}; }
 
@@ -142,14 +174,15 @@ class IslandsScene : public BenchScene {
 
 std::vector<std::string> bench_scene_names() {
   std::vector<std::string> names = glmark2_scene_names();
-  for (const char* name :
-       {"bunny-close", "bunny-far", "million", "overdraw", "overdraw-front-to-back", "islands"}) {
+  for (const char* name : {"shapes", "teapot", "bunny-close", "bunny-far", "million", "overdraw",
+                           "overdraw-front-to-back", "islands"}) {
     names.push_back(name);
   }
   return names;
 }
 
 std::unique_ptr<BenchScene> make_bench_scene(const std::string& name) {
+  if (name == "shapes" || name == "teapot") return std::make_unique<WorldScene>(name);
   if (name == "bunny-close") return std::make_unique<BunnyScene>(2.2f);
   if (name == "bunny-far") return std::make_unique<BunnyScene>(6.0f);
   if (name == "million") return std::make_unique<MillionScene>();

@@ -1,6 +1,7 @@
 // Benchmark scenes for `facet bench`: each records one frame at a given time into a renderer.
-// Built-in (bunny-close, bunny-far, million, overdraw, overdraw-front-to-back, islands) here; the
-// glmark2-equivalent scenes in glmark2_scenes.cpp. Models come from Debian's glmark2-data.
+// Built-in (shapes, teapot, bunny-close, bunny-far, million, overdraw, overdraw-front-to-back,
+// islands) here, each a Scene that the OpenGL twin can draw too; the glmark2-equivalent scenes in
+// glmark2_scenes.cpp, which record their own draws. Models come from Debian's glmark2-data.
 #pragma once
 
 #include <glm/vec4.hpp>
@@ -8,7 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "facet/camera.hpp"
 #include "facet/renderer.hpp"
+#include "facet/scene.hpp"
 
 namespace facet::bench {
 
@@ -18,6 +21,12 @@ class BenchScene {
   // Records the frame at time t seconds (animations follow the clock) for a target of the
   // given aspect: begin_frame + draws. The renderer's finish() is the caller's.
   virtual void record(Renderer& renderer, double t, float aspect) = 0;
+  // The same frame as a Scene seen by `camera`, for renderers that draw whole scenes (the
+  // OpenGL twin: facet bench --backend gl); nullptr for a scene that records its own draws with
+  // shading only facet has (the glmark2 equivalents). The scene lives as long as this object.
+  virtual const Scene* scene_at(double /*t*/, float /*aspect*/, Camera& /*camera*/) {
+    return nullptr;
+  }
   virtual glm::vec4 clear_color() const { return {0.0f, 0.0f, 0.0f, 1.0f}; }
 };
 

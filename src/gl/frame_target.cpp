@@ -3,12 +3,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
-#include <glm/common.hpp>
 #include <string>
 #include <vector>
 
-#include "facet/color.hpp"
 #include "facet/error.hpp"
 
 namespace facet::gl {
@@ -17,6 +16,41 @@ namespace {
 std::uint8_t unorm8(float v) {  // clamped, NaN to 0, rounded: core/color.hpp's encode_unorm8
   return static_cast<std::uint8_t>((v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f) * 255.0f + 0.5f);
 }
+
+// Linear light to 8-bit sRGB by the curve's thresholds instead of a power per channel, which at
+// 1080p took the readback longer than drawing the frame. Code k is the count of the 255
+// thresholds at or below the value: threshold k is where the exact curve (in double) crosses
+// k - 0.5 of 255. A table over [0, 1] in 4096 steps gives the count at each step's start, and
+// at most a few thresholds lie inside one step.
+class Srgb8Encoder {
+ public:
+  Srgb8Encoder() {
+    for (int k = 1; k <= 255; ++k) {
+      const double encoded = (k - 0.5) / 255.0;
+      const double linear =
+          encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4);
+      threshold_[k] = static_cast<float>(linear);
+    }
+    threshold_[256] = 2.0f;  // above every clamped value: the scan stops at 255
+    int code = 0;
+    for (int step = 0; step < kSteps; ++step) {
+      const float start = static_cast<float>(step) / kSteps;
+      while (threshold_[code + 1] <= start) ++code;
+      first_code_[step] = static_cast<std::uint8_t>(code);
+    }
+  }
+  std::uint8_t operator()(float linear) const {
+    const float v = linear > 0.0f ? (linear < 1.0f ? linear : 1.0f) : 0.0f;  // NaN to 0
+    int code = first_code_[std::min(static_cast<int>(v * kSteps), kSteps - 1)];
+    while (v >= threshold_[code + 1]) ++code;
+    return static_cast<std::uint8_t>(code);
+  }
+
+ private:
+  static constexpr int kSteps = 4096;
+  float threshold_[257] = {};  // threshold_[k]: the smallest value coded k (k in 1..255)
+  std::uint8_t first_code_[kSteps] = {};
+};
 
 }  // namespace
 
@@ -94,12 +128,10 @@ void FrameTarget::read(Framebuffer& target, float exposure) {
     const float* from = rgba.data() + static_cast<std::size_t>(h - 1 - y) * w * 4;
     const std::size_t row = static_cast<std::size_t>(y) * w * 4;
     if (target.format() == ColorFormat::rgba8_srgb) {
+      static const Srgb8Encoder encode;
       std::uint8_t* out = target.rgba8().data() + row;
       for (int x = 0; x < w; ++x, from += 4, out += 4) {
-        const glm::vec3 linear =
-            glm::clamp(glm::vec3(from[0], from[1], from[2]) * scale, 0.0f, 1.0f);
-        const glm::vec3 encoded = linear_to_srgb(linear);
-        for (int c = 0; c < 3; ++c) out[c] = unorm8(encoded[c]);
+        for (int c = 0; c < 3; ++c) out[c] = encode(from[c] * scale);
         out[3] = unorm8(from[3]);
       }
     } else {

@@ -1,8 +1,8 @@
 // The offscreen image the GL twin draws into: a framebuffer object with a linear float color
 // buffer and a float depth buffer, and the readback into a facet::Framebuffer (rows flipped,
-// exposure applied, sRGB-encoded as facet's resolve does). With MSAA it draws into multisampled
-// buffers, resolved by a blit into the single-sample ones before the readback: the color is
-// linear float, so the average is in linear light, as facet's resolve.
+// exposure applied, encoded to 8-bit sRGB as facet's resolve encodes). With MSAA it draws into
+// multisampled buffers, resolved by a blit into the single-sample ones before the readback: the
+// color is linear float, so the average is in linear light, as facet's resolve.
 #pragma once
 
 #include "facet/framebuffer.hpp"

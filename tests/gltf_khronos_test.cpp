@@ -1,6 +1,6 @@
 // The glTF 2.0 reader on Khronos's own sample models (tests/data/khronos, listed with their
 // sources and licenses in its README.md), each for the feature it was made to show: every
-// primitive mode, morph targets and a skin posed at a time, a sparse accessor, and a file's
+// primitive mode, morph targets and skins posed at a time, a sparse accessor, and a file's
 // perspective and orthographic cameras. Expected values come from the models' data and READMEs,
 // worked out in the comments.
 #include <gtest/gtest.h>
@@ -124,6 +124,26 @@ TEST(GltfKhronos, SimpleSkinBendsAtItsUpperJoint) {
   EXPECT_TRUE(has_position(bent, {-1, 0.5f, 0}));
   EXPECT_TRUE(has_position(bent, {-1, 1.5f, 0}));
   EXPECT_TRUE(has_position(bent, {-0.5f, 0, 0}) && has_position(bent, {0.5f, 0, 0}));  // still
+}
+
+// RiggedSimple (COLLADA2GLTF): a tube along the bind space's Z, 1 wide at the foot and 0.45 at
+// the top, on two joints under a Z-up-to-Y-up root matrix, the skeleton beside the mesh node. At
+// rest it stands along Y from -4.575 to 4.575. At the animation's second key (t = 1.0417) the
+// upper joint leans back: the highest vertex, bind (0, -0.45, 4.575), is at (0, 4.048, -2.211)
+// and the tube reaches z = -2.955 (worked out from the file's matrices and keys with a
+// script of its own).
+TEST(GltfKhronos, RiggedSimpleLeansAtItsSecondKey) {
+  const Bounds rest = import_gltf(khronos("RiggedSimple")).scene.bounds();
+  EXPECT_NEAR(glm::length(rest.min - glm::vec3(-1, -4.575f, -1)), 0.0f, 2e-3f);
+  EXPECT_NEAR(glm::length(rest.max - glm::vec3(1, 4.575f, 1)), 0.0f, 2e-3f);
+  const Scene leaning = import_gltf(khronos("RiggedSimple"), at_time(1.0416669845581055)).scene;
+  const Bounds bounds = leaning.bounds();
+  EXPECT_NEAR(glm::length(bounds.min - glm::vec3(-1, -4.5751f, -2.9545f)), 0.0f, 2e-3f);
+  EXPECT_NEAR(glm::length(bounds.max - glm::vec3(1, 4.0479f, 1)), 0.0f, 2e-3f);
+  const std::vector<glm::vec3> p = world_positions(leaning);
+  EXPECT_TRUE(std::any_of(p.begin(), p.end(), [](glm::vec3 q) {
+    return glm::length(q - glm::vec3(0, 4.0479f, -2.2114f)) < 2e-3f;
+  }));
 }
 
 // SimpleSparseAccessor: a strip of 12 triangles along y = 0 .. 1, x = 0 .. 6, whose sparse

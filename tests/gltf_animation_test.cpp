@@ -100,6 +100,32 @@ TEST(GltfPose, WeightsAnimatedLinearlyAndAtRestWithoutATime) {
   EXPECT_NEAR(mesh_of(import_gltf(path).scene).positions[2].y, 1.0f, 1e-6f);
 }
 
+// Three and four morph targets: a weights channel's keys are that many scalars each, not one
+// VEC3 or VEC4 (AnimatedMorphSphere-like files with several targets were refused). Target t
+// lifts vertex 2 by t + 1 in y; the weights go from all 0 at t = 0 to all 1 at t = 2.
+TEST(GltfPose, WeightsChannelOfThreeAndFourTargets) {
+  for (int targets : {2, 3, 4, 5}) {
+    GltfBuilder b;
+    json primitive = unit_quad(b);
+    float lift = 0.0f;
+    for (int t = 0; t < targets; ++t) {
+      const float dy = static_cast<float>(t + 1);
+      primitive["targets"].push_back(
+          {{"POSITION", b.vec3s({{0, 0, 0}, {0, 0, 0}, {0, dy, 0}, {0, 0, 0}})}});
+      lift += dy;
+    }
+    const int node = b.add_mesh_node(primitive);
+    std::vector<float> keys(static_cast<std::size_t>(targets), 0.0f);
+    keys.resize(static_cast<std::size_t>(2 * targets), 1.0f);
+    b.animate(node, "weights", {0, 2}, keys);
+    const auto path = b.write_gltf(gltf_test_dir("morph_" + std::to_string(targets)) / "m.gltf");
+    // t = 0.5: every weight 0.25, vertex 2 at y = 1 + 0.25 x (1 + 2 + ... + targets).
+    EXPECT_NEAR(mesh_of(import_gltf(path, at_time(0.5)).scene).positions[2].y, 1 + 0.25f * lift,
+                1e-5f)
+        << targets << " targets";
+  }
+}
+
 // --- animation sampling -------------------------------------------------------------------
 
 // A quad whose node's x translation is keyed 0 at t = 1, 10 at t = 2, 30 at t = 4.

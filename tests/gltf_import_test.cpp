@@ -144,6 +144,8 @@ TEST(GltfImport, VertexColorsFromBytesAndFloats) {
                                           0,   0, 255, 0,   51, 51,  51, 255};
   quad["attributes"]["COLOR_0"] =
       b.accessor(b.view(rgba.data(), rgba.size()), kGlUnsignedByte, 4, "VEC4", true);
+  b.json["materials"] = {{{"alphaMode", "BLEND"}}};  // keeps the colors' alpha
+  quad["material"] = 0;
   b.add_mesh_node(quad);
   json rgb_quad = unit_quad(b);
   rgb_quad["attributes"]["COLOR_0"] =
@@ -169,6 +171,37 @@ TEST(GltfImport, VertexColorsFromBytesAndFloats) {
         EXPECT_EQ(mesh.colors[i].a, 1.0f);
       }
     }
+  }
+}
+
+// alphaMode OPAQUE ignores alpha (glTF 2.0 §3.9.4), and the pipeline writes a draw's alpha into
+// the image: an opaque material's base color and vertex colors come in with alpha 1, a blended
+// one's as the file has them. (Khronos's BoxVertexColors, made by FBX2glTF, has vertex colors
+// of alpha 0 on an opaque material: it came out see-through in a PNG.)
+TEST(GltfImport, OpaqueMaterialsIgnoreAlpha) {
+  for (const std::string mode : {"OPAQUE", "BLEND"}) {
+    GltfBuilder b;
+    json quad = unit_quad(b);
+    quad["attributes"]["COLOR_0"] =
+        b.vec4s({{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0.5f}, {1, 1, 1, 0}});
+    b.json["materials"] = {
+        {{"alphaMode", mode}, {"pbrMetallicRoughness", {{"baseColorFactor", {1, 1, 1, 0.25}}}}}};
+    quad["material"] = 0;
+    b.add_mesh_node(quad);
+    const ImportedGltf got = import_gltf(b.write_gltf(gltf_test_dir("alpha_" + mode) / "a.gltf"));
+    const bool opaque = mode == "OPAQUE";
+    EXPECT_EQ(material_of(got.scene).base_color.a, opaque ? 1.0f : 0.25f) << mode;
+    const Mesh& mesh = mesh_of(got.scene);
+    ASSERT_EQ(mesh.colors.size(), mesh.positions.size());
+    for (std::size_t i = 0; i < mesh.colors.size(); ++i) {
+      const glm::vec3 p = mesh.positions[i];
+      const float file_alpha = p == glm::vec3(1, 1, 0) ? 0.5f : 0.0f;  // vertex 2 is (1, 1)
+      EXPECT_EQ(mesh.colors[i].a, opaque ? 1.0f : file_alpha) << mode << " vertex " << i;
+    }
+    EXPECT_EQ(glm::vec3(mesh.colors[0]) + glm::vec3(mesh.colors[1]) + glm::vec3(mesh.colors[2]) +
+                  glm::vec3(mesh.colors[3]),
+              glm::vec3(2, 2, 2))
+        << "the colors themselves are kept";
   }
 }
 

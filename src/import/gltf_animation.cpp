@@ -149,7 +149,7 @@ class Poser {
     if (path == "rotation") width = 4;
     if (path == "weights") width = weights.size();
     if (width == 0 || out.matrix.size() == 16) return;  // nothing it can move
-    const Track track = read_track(s, width, where);
+    const Track track = read_track(s, width, path == "weights", where);
     const std::vector<float> v = sample(track, time, path == "rotation");
     if (path == "weights") {
       weights = v;
@@ -161,7 +161,7 @@ class Poser {
     }
   }
 
-  Track read_track(const tinygltf::AnimationSampler& s, std::size_t width,
+  Track read_track(const tinygltf::AnimationSampler& s, std::size_t width, bool weights,
                    const std::string& where) const {
     Track track;
     track.width = width;
@@ -176,8 +176,9 @@ class Poser {
                     ")");
     }
     const std::vector<glm::vec4> output = data_.floats(s.output, components);
-    // Weights are scalars, `width` of them per key; the other paths one vector per key.
-    const std::size_t per_element = width == 3 || width == 4 ? width : 1;
+    // Weights are scalars, `width` of them per key (whatever their number, 3 and 4 too); the
+    // other paths one vector per key.
+    const std::size_t per_element = weights ? 1 : width;
     const std::size_t needed = track.times.size() * (track.cubic ? 3 : 1) * width / per_element;
     if (output.size() < needed || static_cast<std::size_t>(components) < per_element)
       throw Error(where + ": " + std::to_string(output.size()) + " output values for " +

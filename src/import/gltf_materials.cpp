@@ -215,6 +215,10 @@ class Converter {
     out.alpha_cutoff = std::isfinite(m.alphaCutoff) ? static_cast<float>(m.alphaCutoff) : 0.5f;
     if (m.doubleSided) out.cull = CullMode::none;
     extensions(m, out);
+    // OPAQUE: "the alpha value is ignored" (glTF 2.0 §3.9.4). The pipeline writes a draw's alpha
+    // into the image whatever its mode, so an opaque surface must carry alpha 1 (FBX2glTF's
+    // BoxVertexColors has base colors and vertex colors of alpha 0 and is opaque).
+    if (out.alpha_mode == AlphaMode::opaque) out.base_color.a = 1.0f;
     return out;
   }
 

@@ -129,8 +129,9 @@ std::shared_ptr<const Mesh> gltf_primitive_mesh(const GltfFile& file, const Gltf
     deform_primitive(data, p, pose, mesh.positions, mesh.normals, mesh.tangents, where);
   const std::vector<glm::vec4> colors = read("COLOR_0", 3);
   mesh.colors.reserve(colors.size());
-  for (glm::vec4 c : colors)
-    mesh.colors.push_back(components == 3 ? glm::vec4(glm::vec3(c), 1) : c);
+  // An opaque material ignores alpha (glTF 2.0 §3.9.4), the vertex colors' too.
+  const bool keep_alpha = components == 4 && material.alpha_mode != AlphaMode::opaque;
+  for (glm::vec4 c : colors) mesh.colors.push_back(keep_alpha ? c : glm::vec4(glm::vec3(c), 1));
 
   std::vector<std::uint32_t> order;
   if (draco) {

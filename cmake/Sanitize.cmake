@@ -14,8 +14,13 @@ set(FACET_SANITIZE_DRIVER_OPTIONS "")
 if(FACET_SANITIZE STREQUAL "")
   return()
 elseif(FACET_SANITIZE STREQUAL "address")
+  # UBSan's null and alignment checks are left out: together they guard nearly every pointer
+  # use and cost a quarter to a third of the build's compile time. A null dereference still
+  # stops the run (ASan reports the SEGV with its stack), and facet reads file data with memcpy,
+  # never through a cast pointer that could be misaligned.
   set(_facet_sanitize_flags
-    -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all)
+    -fsanitize=address,undefined -fno-sanitize=null,alignment -fno-omit-frame-pointer
+    -fno-sanitize-recover=all)
 elseif(FACET_SANITIZE STREQUAL "thread")
   set(_facet_sanitize_flags -fsanitize=thread -fno-omit-frame-pointer)
   # oneTBB's scheduler lives in an uninstrumented libtbb.so, so TSan cannot see the

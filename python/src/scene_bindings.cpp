@@ -36,12 +36,24 @@ std::string path_text(py::handle path, const char* function) {
 }
 
 std::unique_ptr<SceneHandle> load(py::handle path, py::handle crease_angle, py::handle time,
-                                  py::handle animation, bool allow_outside_paths) {
+                                  py::handle animation, bool allow_outside_paths, bool fence_assimp,
+                                  py::handle import_timeout, py::handle import_memory_limit) {
   ImportOptions options;
   options.crease_angle_degrees = number(crease_angle, {"load", "crease_angle"});
   if (!time.is_none()) options.time = number(time, {"load", "time"});
   options.animation = integer(animation, {"load", "animation"});
   options.allow_outside_paths = allow_outside_paths;
+  options.fence_assimp = fence_assimp;
+  // None: no limit (the library's "<= 0").
+  options.import_time_limit_seconds =
+      import_timeout.is_none() ? 0.0 : number(import_timeout, {"load", "import_timeout"});
+  if (!import_memory_limit.is_none()) {
+    // A float holds byte counts far past any machine's memory exactly enough for a limit.
+    const double bytes = number(import_memory_limit, {"load", "import_memory_limit"});
+    if (!(bytes >= 1.0))
+      throw Error("load: import_memory_limit must be a positive number of bytes or None");
+    options.import_memory_limit_bytes = static_cast<std::uint64_t>(bytes);
+  }
   std::vector<std::string> warnings;
   options.warn = [&warnings](const std::string& warning) { warnings.push_back(warning); };
   const std::string file = path_text(path, "load");
@@ -228,7 +240,8 @@ object-to-world matrix (default: identity). Arrays are copied.)doc")
 
   m.def("load", &load, py::arg("path"), py::arg("crease_angle") = 80.0, py::kw_only(),
         py::arg("time") = py::none(), py::arg("animation") = 0,
-        py::arg("allow_outside_paths") = false,
+        py::arg("allow_outside_paths") = false, py::arg("fence_assimp") = true,
+        py::arg("import_timeout") = 60.0, py::arg("import_memory_limit") = py::none(),
         R"doc(
 Reads a model file into a Scene, as `facet render` does: OBJ+MTL, glTF 2.0 (.gltf/.glb), PLY,
 STL, 3DS, FBX, COLLADA, OFF and .d. Meshes without normals get smooth ones, split where faces
@@ -239,7 +252,13 @@ texture) are Python warnings; the rest raise facet.Error.
 A glTF model is drawn at rest unless `time` (seconds) is given: then its animation number
 `animation` (0-based) is sampled at that time, skins and morph targets applied; an animation the
 file does not have raises facet.Error. Files the model references must lie in its folder unless
-allow_outside_paths is True.)doc");
+allow_outside_paths is True.
+
+The formats assimp reads (OBJ, STL, 3DS, FBX, COLLADA, OFF, ...) are first read in a child
+process (fence_assimp), limited to import_timeout seconds (None: no limit) and
+import_memory_limit bytes of address space (None: half the machine's memory): a crash, a hang
+or a runaway allocation inside assimp raises facet.Error naming the file instead of taking the
+interpreter down. facet's own readers (glTF, PLY, STL, .d) need no fence.)doc");
 }
 
 }  // namespace facet::python

@@ -261,3 +261,24 @@ def test_load_reads_outside_files_only_when_allowed(tmp_path):
     with pytest.raises(facet.Error, match="outside"):
         facet.load(path)
     assert facet.load(path, allow_outside_paths=True).triangle_count == 2
+
+
+def write_obj_triangle(folder):
+    path = folder / "triangle.obj"  # OBJ: read by assimp, so fenced
+    path.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")
+    return path
+
+
+def test_load_fences_assimp_in_time_and_memory(tmp_path, monkeypatch):
+    path = write_obj_triangle(tmp_path)
+    # The fence's test hook makes the fenced child hang, or allocate without end.
+    monkeypatch.setenv("FACET_FENCE_TEST_FAULT", "hang")
+    with pytest.raises(facet.Error, match=r"triangle\.obj: .*took longer than 0\.5 s"):
+        facet.load(path, import_timeout=0.5)
+    # Unfenced, no child is started: the hook never runs and the file loads.
+    assert facet.load(path, fence_assimp=False).triangle_count == 1
+    monkeypatch.setenv("FACET_FENCE_TEST_FAULT", "memory")
+    with pytest.raises(facet.Error, match="more than 256 MiB of memory"):
+        facet.load(path, import_memory_limit=256 * 2**20)
+    with pytest.raises(facet.Error, match="import_memory_limit must be a positive"):
+        facet.load(path, import_memory_limit=0)

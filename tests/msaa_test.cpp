@@ -306,6 +306,88 @@ Framebuffer render_shapes_msaa(ShadingModel model, int threads, int tile_size) {
   return render_shapes(model, 203, 117, settings);
 }
 
+// A rectangle of the screen's pixels [x0, x1] x [y0, y1] at `distance`, as two triangles.
+Mesh screen_rectangle(double x0, double y0, double x1, double y1, double distance) {
+  return soup(
+      {at_pixel(x0, y0, kWidth, kHeight, distance), at_pixel(x0, y1, kWidth, kHeight, distance),
+       at_pixel(x1, y1, kWidth, kHeight, distance), at_pixel(x0, y0, kWidth, kHeight, distance),
+       at_pixel(x1, y1, kWidth, kHeight, distance), at_pixel(x1, y0, kWidth, kHeight, distance)});
+}
+
+// A far layer over the whole screen, then small near squares (their pixels may wait), then a
+// middle layer: the near squares must stay in front of the middle layer at every sample count,
+// however the middle layer's whole covered blocks are written.
+TEST(Msaa, LaterLayersBehindSmallNearTrianglesDoNotCoverThem) {
+  const Mesh far = screen_rectangle(-20, -20, kWidth + 20, kHeight + 20, 6.0);
+  Mesh near;
+  for (int k = 0; k < 6; ++k) {
+    const double x = 3.0 + 15.0 * k, y = 5.0 + 9.0 * k;
+    const Mesh square = screen_rectangle(x, y, x + 3.0, y + 3.0, 2.0);
+    near.positions.insert(near.positions.end(), square.positions.begin(), square.positions.end());
+  }
+  const Mesh middle = screen_rectangle(-20, -20, kWidth + 20, kHeight + 20, 4.0);
+  for (int samples : kSampleCounts) {
+    RenderSettings settings;
+    settings.msaa = samples;
+    Renderer renderer(settings);
+    Framebuffer fb(kWidth, kHeight);
+    renderer.begin_frame(test_camera(kWidth, kHeight));
+    Material material;
+    material.shading = ShadingModel::unlit;
+    material.cull = CullMode::none;
+    const glm::vec4 colors[3] = {{1, 0, 0, 1}, {0, 1, 0, 1}, {0, 0, 1, 1}};
+    const Mesh* meshes[3] = {&far, &near, &middle};
+    for (int m = 0; m < 3; ++m) {
+      material.base_color = colors[m];
+      renderer.draw(*meshes[m], material);
+    }
+    renderer.finish(fb);
+    for (int k = 0; k < 6; ++k) {  // the squares' middle pixels: green, every sample
+      const int x = 4 + 15 * k, y = 6 + 9 * k;
+      const std::uint8_t* rgba = fb.rgba8().data() + 4 * (static_cast<std::size_t>(y) * kWidth + x);
+      EXPECT_EQ(rgba[0], 0) << samples << " samples, square " << k;
+      EXPECT_EQ(rgba[1], 255) << samples << " samples, square " << k;
+      EXPECT_EQ(rgba[2], 0) << samples << " samples, square " << k;
+    }
+  }
+}
+
+// A far red layer over the whole screen, then a near blue triangle covering every pixel centre of
+// the first tiles but not every sample of the first column (its left edge 0.3 pixels in): the
+// occlusion skip (occlusion.hpp) must not take the blue one for a hider of the tiles there, so
+// those pixels blend red and blue at every sample count.
+TEST(Msaa, OcclusionSkipKeepsWhatShowsBetweenSamples) {
+  const Mesh red = screen_rectangle(-20, -20, kWidth + 20, kHeight + 20, 6.0);
+  const Mesh blue = soup({at_pixel(0.3, -200.0, kWidth, kHeight, 2.0),
+                          at_pixel(0.3, kHeight + 200.0, kWidth, kHeight, 2.0),
+                          at_pixel(kWidth + 400.0, kHeight / 2.0, kWidth, kHeight, 2.0)});
+  for (int samples : kSampleCounts) {
+    RenderSettings settings;
+    settings.msaa = samples;
+    settings.clear_color = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    Renderer renderer(settings);
+    Framebuffer fb(kWidth, kHeight);
+    renderer.begin_frame(test_camera(kWidth, kHeight));
+    Material material;
+    material.shading = ShadingModel::unlit;
+    material.cull = CullMode::none;
+    material.base_color = {1, 0, 0, 1};
+    renderer.draw(red, material);
+    material.base_color = {0, 0, 1, 1};
+    renderer.draw(blue, material);
+    renderer.finish(fb);
+    for (int y = 0; y < kHeight; ++y) {
+      const std::uint8_t* rgba = fb.rgba8().data() + 4 * static_cast<std::size_t>(y) * kWidth;
+      if (samples == 1) {  // the centre is blue's
+        ASSERT_EQ(rgba[0], 0) << "row " << y;
+      } else {
+        ASSERT_GT(rgba[0], 0) << samples << " samples, row " << y;
+      }
+      ASSERT_GT(rgba[2], 0) << samples << " samples, row " << y;
+    }
+  }
+}
+
 TEST(Msaa, ThreadsAndTileSizesGiveIdenticalImages) {
   for (ShadingModel model : {ShadingModel::lambert, ShadingModel::wireframe,
                              ShadingModel::wire_overlay, ShadingModel::pbr}) {

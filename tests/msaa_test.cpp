@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <glm/gtc/matrix_transform.hpp>
 #include <random>
 #include <string>
 #include <vector>
@@ -419,6 +420,82 @@ TEST(Msaa, EverySimdTargetGivesThePortableTargetsImage) {
       ASSERT_EQ(fb.depth(), expected.depth())
           << to_string(model) << " on " << hwy::TargetName(target);
     }
+  }
+}
+
+// Layers of small triangles (their pixels wait with their sample masks), a far one drawn first
+// and hidden by a full near layer drawn last (occlusion skips it), at 4 samples: the same image
+// and depths for any thread count, tile size and SIMD target.
+Framebuffer render_small_layers_msaa(int threads, int tile_size) {
+  RenderSettings settings;
+  settings.threads = threads;
+  settings.tile_size = tile_size;
+  settings.msaa = 4;
+  Renderer renderer(settings);
+  Framebuffer fb(kWidth, kHeight);
+  renderer.begin_frame(test_camera(kWidth, kHeight));
+  Material material;
+  material.shading = ShadingModel::lambert;
+  material.cull = CullMode::none;
+  const Mesh fine = sixteenth_grid(48, 36, 7);
+  const Mesh coarse = sixteenth_grid(4, 3, 8);
+  material.base_color = {0.8f, 0.3f, 0.2f, 1.0f};
+  renderer.draw(fine, material, glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -1.0f)));
+  material.base_color = {0.2f, 0.7f, 0.3f, 1.0f};
+  renderer.draw(fine, material);
+  Mesh partial = coarse;  // the near layer's first half: not every tile hidden
+  partial.indices.resize(partial.indices.size() / 2);
+  material.base_color = {0.2f, 0.3f, 0.9f, 1.0f};
+  renderer.draw(partial, material, glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, 0.5f)));
+  renderer.finish(fb);
+  return fb;
+}
+
+TEST(Msaa, SmallTrianglesAndOcclusionGiveOneImageForEveryThreadTileAndTarget) {
+  const Framebuffer expected = render_small_layers_msaa(1, 64);
+  for (int threads : {2, 3}) {
+    for (int tile : {16, 32, 128}) {
+      const Framebuffer fb = render_small_layers_msaa(threads, tile);
+      ASSERT_EQ(fb.rgba8(), expected.rgba8()) << threads << " threads, tile " << tile;
+      ASSERT_EQ(fb.depth(), expected.depth()) << threads << " threads, tile " << tile;
+    }
+  }
+  for (std::int64_t target : simd_targets()) {
+    ForcedTarget forced(target);
+    const Framebuffer fb = render_small_layers_msaa(0, 64);
+    ASSERT_EQ(fb.rgba8(), expected.rgba8()) << hwy::TargetName(target);
+    ASSERT_EQ(fb.depth(), expected.depth()) << hwy::TargetName(target);
+  }
+}
+
+// One draw of a fine near grid followed by the same grid farther away: the far triangles' pixels
+// wait in the same batches as the near ones' that hide them, found before those were written,
+// and must fail their samples' depth test when written. The image and depths are those of the
+// near grid alone.
+TEST(Msaa, WaitingPixelsBehindEarlierOnesOfTheirDrawAreNotWritten) {
+  const Mesh near = sixteenth_grid(48, 36, 7);
+  Mesh both = near;
+  const auto count = static_cast<std::uint32_t>(near.positions.size());
+  for (const glm::vec3& p : near.positions) both.positions.push_back(p * 1.5f);  // same pixels
+  for (std::uint32_t i : near.indices) both.indices.push_back(i + count);
+  for (int samples : kSampleCounts) {
+    const auto render = [&](const Mesh& mesh) {
+      RenderSettings settings;
+      settings.msaa = samples;
+      Renderer renderer(settings);
+      Framebuffer fb(kWidth, kHeight);
+      renderer.begin_frame(test_camera(kWidth, kHeight));
+      Material material;
+      material.shading = ShadingModel::lambert;
+      material.cull = CullMode::none;
+      renderer.draw(mesh, material);
+      renderer.finish(fb);
+      return fb;
+    };
+    const Framebuffer expected = render(near);
+    const Framebuffer fb = render(both);
+    ASSERT_EQ(fb.rgba8(), expected.rgba8()) << samples << " samples";
+    ASSERT_EQ(fb.depth(), expected.depth()) << samples << " samples";
   }
 }
 

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <glm/gtc/matrix_transform.hpp>
 #include <random>
 #include <string>
 #include <vector>
@@ -306,6 +307,88 @@ Framebuffer render_shapes_msaa(ShadingModel model, int threads, int tile_size) {
   return render_shapes(model, 203, 117, settings);
 }
 
+// A rectangle of the screen's pixels [x0, x1] x [y0, y1] at `distance`, as two triangles.
+Mesh screen_rectangle(double x0, double y0, double x1, double y1, double distance) {
+  return soup(
+      {at_pixel(x0, y0, kWidth, kHeight, distance), at_pixel(x0, y1, kWidth, kHeight, distance),
+       at_pixel(x1, y1, kWidth, kHeight, distance), at_pixel(x0, y0, kWidth, kHeight, distance),
+       at_pixel(x1, y1, kWidth, kHeight, distance), at_pixel(x1, y0, kWidth, kHeight, distance)});
+}
+
+// A far layer over the whole screen, then small near squares (their pixels may wait), then a
+// middle layer: the near squares must stay in front of the middle layer at every sample count,
+// however the middle layer's whole covered blocks are written.
+TEST(Msaa, LaterLayersBehindSmallNearTrianglesDoNotCoverThem) {
+  const Mesh far = screen_rectangle(-20, -20, kWidth + 20, kHeight + 20, 6.0);
+  Mesh near;
+  for (int k = 0; k < 6; ++k) {
+    const double x = 3.0 + 15.0 * k, y = 5.0 + 9.0 * k;
+    const Mesh square = screen_rectangle(x, y, x + 3.0, y + 3.0, 2.0);
+    near.positions.insert(near.positions.end(), square.positions.begin(), square.positions.end());
+  }
+  const Mesh middle = screen_rectangle(-20, -20, kWidth + 20, kHeight + 20, 4.0);
+  for (int samples : kSampleCounts) {
+    RenderSettings settings;
+    settings.msaa = samples;
+    Renderer renderer(settings);
+    Framebuffer fb(kWidth, kHeight);
+    renderer.begin_frame(test_camera(kWidth, kHeight));
+    Material material;
+    material.shading = ShadingModel::unlit;
+    material.cull = CullMode::none;
+    const glm::vec4 colors[3] = {{1, 0, 0, 1}, {0, 1, 0, 1}, {0, 0, 1, 1}};
+    const Mesh* meshes[3] = {&far, &near, &middle};
+    for (int m = 0; m < 3; ++m) {
+      material.base_color = colors[m];
+      renderer.draw(*meshes[m], material);
+    }
+    renderer.finish(fb);
+    for (int k = 0; k < 6; ++k) {  // the squares' middle pixels: green, every sample
+      const int x = 4 + 15 * k, y = 6 + 9 * k;
+      const std::uint8_t* rgba = fb.rgba8().data() + 4 * (static_cast<std::size_t>(y) * kWidth + x);
+      EXPECT_EQ(rgba[0], 0) << samples << " samples, square " << k;
+      EXPECT_EQ(rgba[1], 255) << samples << " samples, square " << k;
+      EXPECT_EQ(rgba[2], 0) << samples << " samples, square " << k;
+    }
+  }
+}
+
+// A far red layer over the whole screen, then a near blue triangle covering every pixel centre of
+// the first tiles but not every sample of the first column (its left edge 0.3 pixels in): the
+// occlusion skip (occlusion.hpp) must not take the blue one for a hider of the tiles there, so
+// those pixels blend red and blue at every sample count.
+TEST(Msaa, OcclusionSkipKeepsWhatShowsBetweenSamples) {
+  const Mesh red = screen_rectangle(-20, -20, kWidth + 20, kHeight + 20, 6.0);
+  const Mesh blue = soup({at_pixel(0.3, -200.0, kWidth, kHeight, 2.0),
+                          at_pixel(0.3, kHeight + 200.0, kWidth, kHeight, 2.0),
+                          at_pixel(kWidth + 400.0, kHeight / 2.0, kWidth, kHeight, 2.0)});
+  for (int samples : kSampleCounts) {
+    RenderSettings settings;
+    settings.msaa = samples;
+    settings.clear_color = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    Renderer renderer(settings);
+    Framebuffer fb(kWidth, kHeight);
+    renderer.begin_frame(test_camera(kWidth, kHeight));
+    Material material;
+    material.shading = ShadingModel::unlit;
+    material.cull = CullMode::none;
+    material.base_color = {1, 0, 0, 1};
+    renderer.draw(red, material);
+    material.base_color = {0, 0, 1, 1};
+    renderer.draw(blue, material);
+    renderer.finish(fb);
+    for (int y = 0; y < kHeight; ++y) {
+      const std::uint8_t* rgba = fb.rgba8().data() + 4 * static_cast<std::size_t>(y) * kWidth;
+      if (samples == 1) {  // the centre is blue's
+        ASSERT_EQ(rgba[0], 0) << "row " << y;
+      } else {
+        ASSERT_GT(rgba[0], 0) << samples << " samples, row " << y;
+      }
+      ASSERT_GT(rgba[2], 0) << samples << " samples, row " << y;
+    }
+  }
+}
+
 TEST(Msaa, ThreadsAndTileSizesGiveIdenticalImages) {
   for (ShadingModel model : {ShadingModel::lambert, ShadingModel::wireframe,
                              ShadingModel::wire_overlay, ShadingModel::pbr}) {
@@ -337,6 +420,82 @@ TEST(Msaa, EverySimdTargetGivesThePortableTargetsImage) {
       ASSERT_EQ(fb.depth(), expected.depth())
           << to_string(model) << " on " << hwy::TargetName(target);
     }
+  }
+}
+
+// Layers of small triangles (their pixels wait with their sample masks), a far one drawn first
+// and hidden by a full near layer drawn last (occlusion skips it), at 4 samples: the same image
+// and depths for any thread count, tile size and SIMD target.
+Framebuffer render_small_layers_msaa(int threads, int tile_size) {
+  RenderSettings settings;
+  settings.threads = threads;
+  settings.tile_size = tile_size;
+  settings.msaa = 4;
+  Renderer renderer(settings);
+  Framebuffer fb(kWidth, kHeight);
+  renderer.begin_frame(test_camera(kWidth, kHeight));
+  Material material;
+  material.shading = ShadingModel::lambert;
+  material.cull = CullMode::none;
+  const Mesh fine = sixteenth_grid(48, 36, 7);
+  const Mesh coarse = sixteenth_grid(4, 3, 8);
+  material.base_color = {0.8f, 0.3f, 0.2f, 1.0f};
+  renderer.draw(fine, material, glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -1.0f)));
+  material.base_color = {0.2f, 0.7f, 0.3f, 1.0f};
+  renderer.draw(fine, material);
+  Mesh partial = coarse;  // the near layer's first half: not every tile hidden
+  partial.indices.resize(partial.indices.size() / 2);
+  material.base_color = {0.2f, 0.3f, 0.9f, 1.0f};
+  renderer.draw(partial, material, glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, 0.5f)));
+  renderer.finish(fb);
+  return fb;
+}
+
+TEST(Msaa, SmallTrianglesAndOcclusionGiveOneImageForEveryThreadTileAndTarget) {
+  const Framebuffer expected = render_small_layers_msaa(1, 64);
+  for (int threads : {2, 3}) {
+    for (int tile : {16, 32, 128}) {
+      const Framebuffer fb = render_small_layers_msaa(threads, tile);
+      ASSERT_EQ(fb.rgba8(), expected.rgba8()) << threads << " threads, tile " << tile;
+      ASSERT_EQ(fb.depth(), expected.depth()) << threads << " threads, tile " << tile;
+    }
+  }
+  for (std::int64_t target : simd_targets()) {
+    ForcedTarget forced(target);
+    const Framebuffer fb = render_small_layers_msaa(0, 64);
+    ASSERT_EQ(fb.rgba8(), expected.rgba8()) << hwy::TargetName(target);
+    ASSERT_EQ(fb.depth(), expected.depth()) << hwy::TargetName(target);
+  }
+}
+
+// One draw of a fine near grid followed by the same grid farther away: the far triangles' pixels
+// wait in the same batches as the near ones' that hide them, found before those were written,
+// and must fail their samples' depth test when written. The image and depths are those of the
+// near grid alone.
+TEST(Msaa, WaitingPixelsBehindEarlierOnesOfTheirDrawAreNotWritten) {
+  const Mesh near = sixteenth_grid(48, 36, 7);
+  Mesh both = near;
+  const auto count = static_cast<std::uint32_t>(near.positions.size());
+  for (const glm::vec3& p : near.positions) both.positions.push_back(p * 1.5f);  // same pixels
+  for (std::uint32_t i : near.indices) both.indices.push_back(i + count);
+  for (int samples : kSampleCounts) {
+    const auto render = [&](const Mesh& mesh) {
+      RenderSettings settings;
+      settings.msaa = samples;
+      Renderer renderer(settings);
+      Framebuffer fb(kWidth, kHeight);
+      renderer.begin_frame(test_camera(kWidth, kHeight));
+      Material material;
+      material.shading = ShadingModel::lambert;
+      material.cull = CullMode::none;
+      renderer.draw(mesh, material);
+      renderer.finish(fb);
+      return fb;
+    };
+    const Framebuffer expected = render(near);
+    const Framebuffer fb = render(both);
+    ASSERT_EQ(fb.rgba8(), expected.rgba8()) << samples << " samples";
+    ASSERT_EQ(fb.depth(), expected.depth()) << samples << " samples";
   }
 }
 

@@ -38,10 +38,13 @@ bool triangle_may_touch(const SetupTriangle& t, int x0, int y0, int x1, int y1,
   return true;
 }
 
-bool triangle_covers(const SetupTriangle& t, int x0, int y0, int x1, int y1) {
+bool triangle_covers(const SetupTriangle& t, int x0, int y0, int x1, int y1, std::int32_t reach) {
   if (t.min_x > x0 || t.min_y > y0 || t.max_x < x1 - 1 || t.max_y < y1 - 1) return false;
   for (int i = 0; i < 3; ++i) {
-    if (edge_extreme(t, i, x0, y0, x1, y1, false) < 0) return false;
+    // As in triangle_may_touch: a point within `reach` of a centre takes at most this off.
+    const std::int64_t slack =
+        (std::abs(std::int64_t{t.a[i]}) + std::abs(std::int64_t{t.b[i]})) * std::int64_t{reach};
+    if (edge_extreme(t, i, x0, y0, x1, y1, false) - slack < 0) return false;
   }
   return true;
 }

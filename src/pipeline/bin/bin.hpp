@@ -68,7 +68,9 @@ bool triangle_may_touch(const SetupTriangle& t, int x0, int y0, int x1, int y1,
                         std::int32_t reach = 0);
 
 // True if the triangle covers every pixel centre of [x0, x1) x [y0, y1): the edge functions'
-// minima over the rectangle's centres are all non-negative (and so is its bounding box).
-bool triangle_covers(const SetupTriangle& t, int x0, int y0, int x1, int y1);
+// minima over the rectangle's centres are all non-negative (and so is its bounding box). With
+// reach, every point up to that far from a centre along each axis (MSAA samples: kSampleReach).
+bool triangle_covers(const SetupTriangle& t, int x0, int y0, int x1, int y1,
+                     std::int32_t reach = 0);
 
 }  // namespace facet::pipeline

@@ -6,11 +6,13 @@
 // extrapolated there when the centre itself is outside), and that color goes to the samples it
 // covers that pass the depth test (PixelWriter::store_samples). output.cpp averages the samples.
 //
-// Cost: blocks whose every sample the triangle covers, in front of everything drawn there, take
-// the one-sample whole-block path (cover_block, shade_full_block) and write one color a pixel;
-// only their depths are per sample. Every other block, and the whole box of a small triangle,
-// is searched for covered samples (SIMD across box rows, find_box_samples): that is the work
-// along edges.
+// Cost: blocks whose every sample the triangle covers, in front of every sample drawn there
+// (block_in_front), take the one-sample whole-block path (cover_block, shade_full_block) and
+// write one color a pixel; only their depths are per sample. Every other block, and the whole
+// box of a small triangle, is searched for covered samples (SIMD across box rows,
+// find_box_samples): that is the work along edges. Small triangles of draws whose pixels may wait
+// join the tile's waiting pixels with their samples (small_triangles.hpp) and are shaded a batch
+// of several triangles at a time, as at one sample.
 #pragma once
 
 #include <algorithm>
@@ -19,6 +21,8 @@
 
 #include "pipeline/raster/block_raster.hpp"
 #include "pipeline/raster/pixel_writer.hpp"
+#include "pipeline/raster/sample_steps.hpp"
+#include "pipeline/raster/small_triangles.hpp"
 #include "pipeline/setup/sample_positions.hpp"
 #include "pipeline/setup/setup.hpp"
 
@@ -27,42 +31,6 @@ namespace facet::pipeline {
 // How a block lies against a triangle's edges: outside some edge (nothing covered), inside all
 // three (everything covered) or crossing one (raster.hpp's classify_edges, classify_samples).
 enum class EdgeCover { outside, crossed, inside };
-
-// What a triangle's samples add to its values at the pixel centre: each edge function's step
-// (exact, fixed point) and the depth's (rounded once, the same on every path, so a sample's
-// depth is fl(depth at the centre + step) wherever it is computed). Rounding is monotonic, so
-// fl(a + min step) and fl(b + max step) bound the samples' depths of centres within [a, b].
-struct SampleSteps {
-  std::int64_t edge[3][kMaxSamples];
-  std::int64_t edge_min[3], edge_max[3];
-  float z_min, z_max;
-  // The SIMD box search computes in 32 bits (SampleBoxSearch): only for these coefficients.
-  bool fits_32_bits = true;
-
-  // Fills z (the tile's sample_z) with the depth steps.
-  SampleSteps(const SetupTriangle& t, int samples, float* z) {
-    const SampleOffset* pattern = sample_pattern(samples);
-    for (int i = 0; i < 3; ++i) {
-      const std::int64_t size = std::abs(std::int64_t{t.a[i]}) + std::abs(std::int64_t{t.b[i]});
-      fits_32_bits = fits_32_bits && size < (std::int64_t{1} << 18);
-      edge_min[i] = edge_max[i] = std::int64_t{t.a[i]} * pattern[0].x * kSampleUnit +
-                                  std::int64_t{t.b[i]} * pattern[0].y * kSampleUnit;
-      for (int s = 0; s < samples; ++s) {
-        edge[i][s] = std::int64_t{t.a[i]} * pattern[s].x * kSampleUnit +
-                     std::int64_t{t.b[i]} * pattern[s].y * kSampleUnit;
-        edge_min[i] = std::min(edge_min[i], edge[i][s]);
-        edge_max[i] = std::max(edge_max[i], edge[i][s]);
-      }
-    }
-    for (int s = 0; s < samples; ++s) {
-      // Sixteenths are exact in float; no contraction (the build's -ffp-contract=off).
-      z[s] = t.z.dx * (static_cast<float>(pattern[s].x) / 16.0f) +
-             t.z.dy * (static_cast<float>(pattern[s].y) / 16.0f);
-    }
-    z_min = *std::min_element(z, z + samples);
-    z_max = *std::max_element(z, z + samples);
-  }
-};
 
 // Which samples of the pixels of [x0, x1] x [y0, y1] (frame pixels, inclusive) triangle t may
 // cover: outside (none), inside (all, at every pixel) or crossed. Exact: each edge is linear, so
@@ -94,26 +62,8 @@ void shade_covered_samples(TileContext& tile, const SetupTriangle& t, const Samp
   const unsigned all = (1u << samples) - 1;
   const std::ptrdiff_t plane = tile.sample_plane;
   if (steps.fits_32_bits) {  // SIMD across box rows, the same samples and depths as below
-    SampleBoxSearch search;
-    search.triangle = &t;
-    search.x0 = left, search.y0 = top;
-    search.width = right - left + 1, search.height = bottom - top + 1;
-    search.samples = samples;
-    constexpr std::int64_t kClamp = std::int64_t{1} << 30;
-    for (int i = 0; i < 3; ++i) {
-      // floor(E / 16): the first centre lies on the sixteenths' grid, like every sample.
-      search.e_first[i] = static_cast<std::int32_t>(
-          std::clamp(edge_at_centre(t, i, left, top) >> 4, -kClamp, kClamp));
-      for (int s = 0; s < samples; ++s) {
-        search.step[i][s] = static_cast<std::int32_t>(steps.edge[i][s] / kSampleUnit);
-      }
-    }
-    search.sample_z = tile.sample_z;
-    search.depth_test = kDepthTest;
-    search.depth =
-        tile.depth + static_cast<std::ptrdiff_t>(top - tile.y0) * tile.stride + (left - tile.x0);
-    search.depth_stride = tile.stride;
-    search.plane = plane;
+    const SampleBoxSearch search =
+        sample_box_search<kDepthTest>(tile, t, steps, tile.sample_z, left, top, right, bottom);
     std::uint16_t masks[PackedPixels::kCapacity + kBoxSearchSlack];
     pixels.count = tile.kernels.find_box_samples(search, pixels.x, pixels.y, masks);
     for (int n = 0; n < pixels.count; ++n) {
@@ -169,18 +119,48 @@ void shade_covered_samples(TileContext& tile, const SetupTriangle& t, const Samp
   out.shade(pixels);
 }
 
+// Whether every sample of the whole block at tile pixel `first` passes the depth test, the
+// block's depths at the centres being z (cover_block's) and the triangle's depth steps
+// tile.sample_z. The tile's depth bound for the block (block_max_depth) bounds its depths from
+// above only: pixels drawn since it was lowered may be nearer, so each sample is compared.
+inline bool block_in_front(const TileContext& tile, const float* z, std::ptrdiff_t first) {
+  bool in_front = true;
+  for (int s = 0; s < tile.samples; ++s) {
+    const float step = tile.sample_z[s];
+    for (int row = 0; row < kBlockSize; ++row) {
+      const float* depth = tile.depth + s * tile.sample_plane + first +
+                           static_cast<std::ptrdiff_t>(row) * tile.stride;
+      const float* row_z = z + row * kBlockSize;
+      for (int x = 0; x < kBlockSize; ++x) in_front &= row_z[x] + step < depth[x];  // NaN fails
+    }
+  }
+  return in_front;
+}
+
 // Rasterizes one triangle into a multisampled tile, 8x8 blocks at a time as raster_triangle;
-// a triangle whose box holds at most a block's worth of pixels in one go.
+// a triangle whose box holds at most a block's worth of pixels in one go. Small triangles of
+// draws whose pixels may wait join the tile's waiting pixels, as at one sample
+// (small_triangles.hpp), with their samples.
 template <class Shading, AlphaMode kAlpha>
 void raster_triangle_msaa(TileContext& tile, const SetupTriangle& t) {
   const int x0 = std::max(t.min_x, tile.x0), x1 = std::min(t.max_x, tile.x1 - 1);
   const int y0 = std::max(t.min_y, tile.y0), y1 = std::min(t.max_y, tile.y1 - 1);
   if (x0 > x1 || y0 > y1) return;
   using Writer = PixelWriter<Shading, kAlpha>;
-  Writer out(tile, t);
   const int samples = tile.samples;
   const std::ptrdiff_t plane = tile.sample_plane;
-  const SampleSteps steps(t, samples, tile.sample_z);
+  float sample_z[kMaxSamples];
+  const SampleSteps steps(t, samples, sample_z);
+  if constexpr (Writer::kWaits) {
+    if (steps.fits_32_bits && box_may_wait(x1 - x0 + 1, y1 - y0 + 1) &&
+        tile.frame->draws[t.draw].batch_shaded) {
+      add_waiting<Shading, kAlpha>(tile, t, x0, y0, x1, y1, &steps, sample_z);
+      return;
+    }
+  }
+  flush_waiting(tile);  // this triangle is drawn after them
+  std::copy_n(sample_z, samples, tile.sample_z);
+  Writer out(tile, t);
   PackedPixels pixels;
   if ((x1 - x0 + 1) * (y1 - y0 + 1) <= PackedPixels::kCapacity) {
     // Small: no block is whole, and one walk of the box costs less than classifying blocks.
@@ -210,6 +190,8 @@ void raster_triangle_msaa(TileContext& tile, const SetupTriangle& t) {
     const int top = std::max(y0, block_y), bottom = std::min(y1, block_y + kBlockSize - 1);
     for (int bx = bx0; bx <= bx1; ++bx) {
       const int block_x = tile.x0 + bx * kBlockSize;
+      if (tile.block_starts != nullptr && tile.entry < tile.block_starts[by * tile.blocks_x + bx])
+        continue;  // a later triangle hides this one here (occlusion.hpp)
       const int left = std::max(x0, block_x), right = std::min(x1, block_x + kBlockSize - 1);
       const EdgeCover edges = classify_samples(t, steps, left, top, right, bottom);
       if (edges == EdgeCover::outside) continue;
@@ -224,10 +206,15 @@ void raster_triangle_msaa(TileContext& tile, const SetupTriangle& t) {
                                right - left + 1 == kBlockSize && bottom - top + 1 == kBlockSize;
       const std::ptrdiff_t first =
           static_cast<std::ptrdiff_t>(block_y - tile.y0) * tile.stride + (block_x - tile.x0);
+      // Whole blocks in front of the block's depth bound are likely in front of every sample.
       if (whole_block && out.full_blocks() && (!kDepthTest || farthest < max_depth)) {
         whole.px0 = static_cast<float>(block_x) + 0.5f;
         whole.py0 = static_cast<float>(block_y) + 0.5f;
         tile.kernels.cover_block(whole, block);
+        if (kDepthTest && !block_in_front(tile, block.z, first)) {
+          shade_covered_samples(tile, t, steps, out, pixels, left, top, right, bottom);
+          continue;
+        }
         out.shade_full_block(block, block_x, block_y);
         for (int row = 0; row < kBlockSize; ++row) {
           const std::ptrdiff_t pixel = first + static_cast<std::ptrdiff_t>(row) * tile.stride;

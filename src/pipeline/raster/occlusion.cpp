@@ -7,6 +7,8 @@
 #include "pipeline/bin/bin.hpp"
 #include "pipeline/output/output.hpp"
 #include "pipeline/raster/pixel_writer.hpp"
+#include "pipeline/raster/sample_steps.hpp"
+#include "pipeline/setup/sample_positions.hpp"
 #include "pipeline/setup/setup.hpp"
 
 namespace facet::pipeline {
@@ -27,10 +29,37 @@ ScanEntry scan_entry(const Frame& frame, std::uint32_t entry) {
   return {&t, pipeline.occludes};
 }
 
-// depth_range_over the part of t's bounding box in the rectangle [x0, x1) x [y0, y1).
-DepthRange depth_range_within(const SetupTriangle& t, int x0, int y0, int x1, int y1) {
-  return depth_range_over(t, std::max(t.min_x, x0), std::max(t.min_y, y0),
-                          std::min(t.max_x, x1 - 1), std::min(t.max_y, y1 - 1));
+// Under MSAA the tests reason about every sample instead of every pixel centre: a sample's depth
+// is its pixel centre's plus the triangle's step for it, rounded once (SampleSteps), so the
+// steps' extremes added to the centres' bounds bound the samples' depths (rounding is
+// monotonic); and covering every point within half a pixel of each centre (kSampleReach) covers
+// every sample. Then each sample, like each centre at one sample, ends with the hider's color and
+// depth whether what it hides was drawn or not (and a pixel whose samples the hider all writes is
+// left unsplit either way).
+
+// t's depths over its pixel centres within `range` widened to its samples (none at one).
+DepthRange over_samples(const Frame& frame, const SetupTriangle& t, DepthRange range) {
+  if (frame.samples == 1) return range;
+  float z[kMaxSamples];
+  const SampleSteps steps(t, frame.samples, z);
+  return {range.nearest + steps.z_min, range.farthest + steps.z_max};  // NaN stays
+}
+
+// How far from a pixel centre the frame's samples lie (kSampleReach under MSAA).
+std::int32_t sample_reach(const Frame& frame) { return frame.samples > 1 ? kSampleReach : 0; }
+
+// depth_range_over the part of t's bounding box in the rectangle [x0, x1) x [y0, y1), over its
+// samples.
+DepthRange depth_range_within(const Frame& frame, const SetupTriangle& t, int x0, int y0, int x1,
+                              int y1) {
+  return over_samples(frame, t,
+                      depth_range_over(t, std::max(t.min_x, x0), std::max(t.min_y, y0),
+                                       std::min(t.max_x, x1 - 1), std::min(t.max_y, y1 - 1)));
+}
+
+// triangle_covers for every sample of the rectangle's pixels.
+bool covers_samples(const Frame& frame, const SetupTriangle& t, int x0, int y0, int x1, int y1) {
+  return triangle_covers(t, x0, y0, x1, y1, sample_reach(frame));
 }
 
 // Whether entry could hide the tile: an occluding draw's triangle whose bounding box holds the
@@ -60,8 +89,8 @@ std::size_t first_visible_entry(const Frame& frame, const std::uint32_t* bin, st
   // front of the ground drawn after it), the last candidate cannot hide what came before: the
   // scan stops there and keeps the best hider found so far, leaving any between to be drawn.
   const SetupTriangle& last = frame.triangles[bin[last_candidate]];
-  const float last_farthest = triangle_covers(last, x0, y0, x1, y1)
-                                  ? depth_range_within(last, x0, y0, x1, y1).farthest
+  const float last_farthest = covers_samples(frame, last, x0, y0, x1, y1)
+                                  ? depth_range_within(frame, last, x0, y0, x1, y1).farthest
                                   : -std::numeric_limits<float>::infinity();  // no stop
   std::size_t first = 0;
   // The nearest depth any entry so far can write in the tile.
@@ -70,10 +99,10 @@ std::size_t first_visible_entry(const Frame& frame, const std::uint32_t* bin, st
     const ScanEntry e = scan_entry(frame, bin[i]);
     if (!e.triangle) break;
     const SetupTriangle& t = *e.triangle;
-    const DepthRange range = depth_range_within(t, x0, y0, x1, y1);
+    const DepthRange range = depth_range_within(frame, t, x0, y0, x1, y1);
     if (!(range.nearest == range.nearest)) break;  // NaN: no bound
     if (e.occludes && i > first && range.farthest < nearest_so_far &&
-        triangle_covers(t, x0, y0, x1, y1)) {
+        covers_samples(frame, t, x0, y0, x1, y1)) {
       // In a covered tile the bounding box clipped to it is the tile, so range is over it.
       first = i;
     }
@@ -86,8 +115,8 @@ std::size_t first_visible_entry(const Frame& frame, const std::uint32_t* bin, st
 bool hides_clear(const Frame& frame, std::uint32_t entry, int x0, int y0, int x1, int y1) {
   if (!may_hide(frame, entry, x0, y0, x1, y1)) return false;
   const SetupTriangle& t = frame.triangles[entry];
-  return depth_range_within(t, x0, y0, x1, y1).farthest < kClearDepth &&  // NaN: false
-         triangle_covers(t, x0, y0, x1, y1);
+  return depth_range_within(frame, t, x0, y0, x1, y1).farthest < kClearDepth &&  // NaN: false
+         covers_samples(frame, t, x0, y0, x1, y1);
 }
 
 namespace {
@@ -102,7 +131,7 @@ bool any_entry_nearer_than_one_before(const Frame& frame, const std::uint32_t* b
   for (std::size_t i = 0; i < count; ++i) {
     const ScanEntry e = scan_entry(frame, bin[i]);
     if (!e.triangle) return false;  // as below: nothing after it is looked at
-    const DepthRange range = depth_range_within(*e.triangle, x0, y0, x1, y1);
+    const DepthRange range = depth_range_within(frame, *e.triangle, x0, y0, x1, y1);
     if (!(range.nearest == range.nearest)) return false;  // NaN: no bound
     if (e.occludes && range.nearest < farthest_before) return true;
     farthest_before = std::max(farthest_before, range.farthest);
@@ -123,6 +152,7 @@ bool first_visible_entries_per_block(const Frame& frame, const std::uint32_t* bi
     starts[b] = 0;
     nearest_so_far[b] = std::numeric_limits<float>::infinity();
   }
+  const std::int32_t reach = sample_reach(frame);
   for (std::size_t i = 0; i < count; ++i) {
     const ScanEntry e = scan_entry(frame, bin[i]);
     if (!e.triangle) return true;
@@ -137,14 +167,15 @@ bool first_visible_entries_per_block(const Frame& frame, const std::uint32_t* bi
         const int block_x0 = x0 + bx * kBlockSize, block_x1 = std::min(block_x0 + kBlockSize, x1);
         // One that covers no pixel centre of the block changes nothing there. (Its box may:
         // a quad's two triangles share theirs, and each would bound the other's depth.)
-        if (!triangle_may_touch(t, block_x0, block_y0, block_x1, block_y1)) continue;
-        const DepthRange range =
+        if (!triangle_may_touch(t, block_x0, block_y0, block_x1, block_y1, reach)) continue;
+        const DepthRange range = over_samples(
+            frame, t,
             depth_range_over(t, std::max(left, block_x0), std::max(top, block_y0),
-                             std::min(right, block_x1 - 1), std::min(bottom, block_y1 - 1));
+                             std::min(right, block_x1 - 1), std::min(bottom, block_y1 - 1)));
         if (!(range.nearest == range.nearest)) return true;  // NaN: no bound
         const int b = by * blocks_x + bx;
         if (e.occludes && i > starts[b] && range.farthest < nearest_so_far[b] &&
-            triangle_covers(t, block_x0, block_y0, block_x1, block_y1)) {
+            triangle_covers(t, block_x0, block_y0, block_x1, block_y1, reach)) {
           starts[b] = static_cast<std::uint32_t>(i);
         }
         nearest_so_far[b] = std::min(nearest_so_far[b], range.nearest);

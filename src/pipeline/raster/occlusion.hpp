@@ -20,7 +20,9 @@ namespace facet::pipeline {
 //     have there (exact bounds: depth_range_over),
 // and every earlier entry is a depth-tested triangle. Then each tile pixel ends with entry i's
 // color and depth whether the earlier entries were drawn or not: i passes "less" against the
-// clear depth exactly where it passes against anything they wrote.
+// clear depth exactly where it passes against anything they wrote. Under MSAA the same holds
+// sample by sample, with "every pixel centre" read as "every sample" and the depth bounds
+// widened to the samples (occlusion.cpp).
 std::size_t first_visible_entry(const Frame& frame, const std::uint32_t* bin, std::size_t count,
                                 int x0, int y0, int x1, int y1);
 

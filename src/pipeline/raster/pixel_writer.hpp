@@ -67,6 +67,11 @@ struct TileContext {
   float sample_z[kMaxSamples] = {};
 };
 
+// Where frame pixel (x, y) is in the tile's buffers (plane 0).
+inline std::ptrdiff_t tile_index(const TileContext& tile, int x, int y) {
+  return static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride + (x - tile.x0);
+}
+
 // Alpha to coverage for cut-out (alpha-mask) draws under MSAA: the samples a pixel of this alpha
 // keeps. Alpha is mapped so that the cutoff keeps half of them, 1 all and 0 none (linearly on
 // each side: the cut-out's edge is where a one-sample render puts it, softened across the
@@ -292,20 +297,14 @@ class PixelWriter {
 
   // The waiting pixels of several triangles of the draw, whose plane slopes for the base
   // color map's level of detail are slopes[k][n] (TexelBatch): sampled and shaded with SIMD,
-  // then each written unless the depth test against the tile now fails (WaitingPixels).
-  void shade_waiting(PackedPixels& pixels, const float (*slopes)[PackedPixels::kCapacity]) {
+  // fogged, into colors; write_waiting (small_triangles.hpp) tests and stores them.
+  void shade_waiting(PackedPixels& pixels, const float (*slopes)[PackedPixels::kCapacity],
+                     float (*colors)[4]) {
     if constexpr (kWaits) {
       pixels.pad(Shading::kVaryings);
       const Texels texels = sample_base_map(pixels.count, pixels.v, pixels.w, slopes);
-      alignas(64) float colors[PackedPixels::kCapacity][4];
       Shading::fragment_batch(uniforms_,
                               {pixels.count, pixels.w, pixels.z, pixels.v, texels, &fog_}, colors);
-      for (int n = 0; n < pixels.count; ++n) {
-        const int x = pixels.x[n], y = pixels.y[n];
-        if (!(pixels.z[n] < tile_.depth[index(x, y)])) continue;  // a pixel before it is nearer
-        const float* c = colors[n];
-        store<true>(x, y, pixels.z[n], pixels.w[n], glm::vec4(c[0], c[1], c[2], c[3]));
-      }
     }
   }
 
@@ -413,9 +412,7 @@ class PixelWriter {
   static constexpr int kTexcoordSlot = base_color_texcoord<Shading>();  // -1: none
 
   // Where frame pixel (x, y) is in the tile's buffers.
-  std::ptrdiff_t index(int x, int y) const {
-    return static_cast<std::ptrdiff_t>(y - tile_.y0) * tile_.stride + (x - tile_.x0);
-  }
+  std::ptrdiff_t index(int x, int y) const { return tile_index(tile_, x, y); }
 
   using EdgeScalesOrNone = std::conditional_t<edge_overlay<Shading>(), EdgeScales, std::monostate>;
   PixelWriter(TileContext& tile, std::uint32_t draw, const SetupTriangle* t,

@@ -73,7 +73,7 @@ inline std::uint64_t block_pixels_mask(int width, int height) {
 //      draws go straight into the tile (shade_full_block).
 template <class Shading, AlphaMode kAlpha = AlphaMode::opaque>
 void raster_triangle(TileContext& tile, const SetupTriangle& t) {
-  if (tile.samples > 1) {  // multisampled tiles (pixels never wait there)
+  if (tile.samples > 1) {  // multisampled tiles (msaa.hpp; their small triangles wait too)
     raster_triangle_msaa<Shading, kAlpha>(tile, t);
     return;
   }

@@ -82,9 +82,8 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
   // Skip what the tile's last full, opaque, nearest triangle hides anyway (binning noted
   // whether there may be one); in bins of a few (large) triangles, also what such triangles
   // hide block by block.
-  // Under MSAA, occlusion's pixel-centre reasoning does not hold for the samples: nothing is
-  // skipped.
-  const bool may_hide = frame.bin_may_hide[index] != 0 && tile.samples == 1;
+  // Under MSAA the same, reasoning about every sample (occlusion.cpp).
+  const bool may_hide = frame.bin_may_hide[index] != 0;
   if (may_hide) {
     bin += pipeline::first_visible_entry(frame, bin, bin_end - bin, tile.x0, tile.y0, tile.x1,
                                          tile.y1);
@@ -95,8 +94,7 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
                             pipeline::hides_clear(frame, *bin, tile.x0, tile.y0, tile.x1, tile.y1);
   pipeline::clear_tile(tile, background, color_hidden);
   std::uint32_t block_starts[pipeline::kMaxTileBlocks];
-  if (tile.samples == 1 &&
-      bin_end - bin <= static_cast<std::ptrdiff_t>(pipeline::kMaxBlockOcclusionEntries) &&
+  if (bin_end - bin <= static_cast<std::ptrdiff_t>(pipeline::kMaxBlockOcclusionEntries) &&
       pipeline::first_visible_entries_per_block(frame, bin, bin_end - bin, tile.x0, tile.y0,
                                                 tile.x1, tile.y1, tile.blocks_x, block_starts)) {
     tile.block_starts = block_starts;

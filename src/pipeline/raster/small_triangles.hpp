@@ -10,6 +10,7 @@
 
 #include "pipeline/raster/block_raster.hpp"
 #include "pipeline/raster/pixel_writer.hpp"
+#include "pipeline/raster/sample_steps.hpp"
 
 namespace facet::pipeline {
 
@@ -53,7 +54,10 @@ void raster_small_triangle(TileContext& tile, const SetupTriangle& t, int x0, in
 // (flush_waiting). A waiting pixel passed the depth test against the tile as it was before the
 // others waited; when written it is tested again, against what the pixels before it wrote: so a
 // pixel writes exactly when drawing the triangles one by one would have written it, with the same
-// color.
+// color. Under MSAA the same holds sample by sample: a waiting pixel carries the samples its
+// triangle covers that passed the depth test when it was found, and each is tested again when
+// the pixel is written (the pixel is shaded once at its centre whatever its samples, so its color
+// is the one drawing triangles one by one gives).
 struct WaitingPixels {
   // Positions start at zero: interpolate_pixels reads whole vectors of them, the entries after
   // the last one found too, which then hold zeros, earlier pixels' positions or what the
@@ -63,6 +67,9 @@ struct WaitingPixels {
     std::fill(std::begin(pixels.y), std::end(pixels.y), 0);
   }
   PackedPixels pixels;
+  // MSAA: each waiting pixel's samples (bits), alongside its position (and like the positions,
+  // with room for a box found past a batch and for the search's whole-vector stores).
+  std::uint16_t masks[std::size(PackedPixels{}.x)];
   // Each pixel's triangle's plane slopes for the texture's level of detail (TexelBatch).
   alignas(64) float slopes[shading::TexelBatch::kSlopes][PackedPixels::kCapacity];
   std::uint32_t draw = 0;
@@ -74,6 +81,7 @@ struct WaitingPixels {
   struct Run {
     const SetupTriangle* triangle;
     int count;
+    float sample_z[kMaxSamples];  // MSAA: the triangle's depth steps (TileContext::sample_z)
   };
   Run runs[PackedPixels::kCapacity];
   int run_count = 0;
@@ -99,6 +107,19 @@ inline bool box_may_wait(int width, int height) {
   return width * height <= kMaxWaitingTriangleBox && width <= kMaxWaitingBox;
 }
 
+// MSAA: the pixels of the small triangle t's box [x0, x1] x [y0, y1] (inclusive, at most
+// kBlockPixels) with covered samples that pass the depth test, t's depth steps being sample_z
+// (steps.fits_32_bits): positions to out.x, y and sample bits to masks from entry `first` on;
+// returns how many. The same search as msaa.hpp's for a triangle drawn alone.
+template <class Shading>
+int find_small_samples(const TileContext& tile, const SetupTriangle& t, const SampleSteps& steps,
+                       const float* sample_z, int x0, int y0, int x1, int y1, PackedPixels& out,
+                       std::uint16_t* masks, int first) {
+  const SampleBoxSearch search =
+      sample_box_search<depth_tested<Shading>()>(tile, t, steps, sample_z, x0, y0, x1, y1);
+  return tile.kernels.find_box_samples(search, out.x + first, out.y + first, masks + first);
+}
+
 // Shades and writes whatever waits in the tile (WaitingPixels).
 inline void flush_waiting(TileContext& tile) {
   if (tile.waiting->flush != nullptr) tile.waiting->flush(tile);
@@ -118,21 +139,58 @@ void write_waiting(TileContext& tile) {
                                     pixels.z, pixels.w, pixels.v);
     first += run.count;
   }
-  waiting.run_count = 0;
   for (int n = pixels.count; n % 8 != 0; ++n) {  // read by the SIMD sampler, then ignored
     for (auto& slope : waiting.slopes) slope[n] = 0.0f;
   }
   PixelWriter<Shading, kAlpha> out(tile, waiting.draw);
-  out.shade_waiting(pixels, waiting.slopes);
+  alignas(64) float colors[PackedPixels::kCapacity][4];
+  out.shade_waiting(pixels, waiting.slopes, colors);
+  if (tile.samples == 1) {
+    for (int n = 0; n < pixels.count; ++n) {
+      const int x = pixels.x[n], y = pixels.y[n];
+      const float* depth = tile.depth + tile_index(tile, x, y);
+      if (!(pixels.z[n] < *depth)) continue;  // a pixel before it is nearer
+      const float* c = colors[n];
+      out.template store<true>(x, y, pixels.z[n], pixels.w[n], glm::vec4(c[0], c[1], c[2], c[3]));
+    }
+  } else {
+    const int samples = tile.samples;
+    const std::ptrdiff_t plane = tile.sample_plane;
+    int n = 0;
+    for (int r = 0; r < waiting.run_count; ++r) {
+      const WaitingPixels::Run& run = waiting.runs[r];
+      std::copy_n(run.sample_z, samples, tile.sample_z);  // store_samples reads them
+      for (const int end = n + run.count; n < end; ++n) {
+        const int x = pixels.x[n], y = pixels.y[n];
+        const std::ptrdiff_t pixel = tile_index(tile, x, y);
+        // A pixel before it may be nearer. Every sample is compared (no branch on each result:
+        // they follow no pattern), and those it does not cover are masked out.
+        unsigned passed = 0;
+        for (int s = 0; s < samples; ++s) {
+          passed |=
+              static_cast<unsigned>(pixels.z[n] + run.sample_z[s] < tile.depth[s * plane + pixel])
+              << s;
+        }
+        const unsigned mask = waiting.masks[n] & passed;
+        if (mask == 0) continue;
+        tile.sample_mask[pixel] = static_cast<std::uint16_t>(mask);
+        const float* c = colors[n];
+        out.template store<true>(x, y, pixels.z[n], pixels.w[n], glm::vec4(c[0], c[1], c[2], c[3]));
+      }
+    }
+  }
+  waiting.run_count = 0;
   tile.pixels_shaded += out.shaded;
   pixels.count = 0;
   waiting.flush = nullptr;
 }
 
 // Adds triangle t's pixels in the box [x0, x1] x [y0, y1] (inclusive, at most kMaxWaitingBox
-// pixels) to the tile's waiting pixels.
+// pixels) to the tile's waiting pixels. Under MSAA, steps and sample_z are t's (SampleSteps);
+// at one sample they are null.
 template <class Shading, AlphaMode kAlpha>
-void add_waiting_band(TileContext& tile, const SetupTriangle& t, int x0, int y0, int x1, int y1) {
+void add_waiting_band(TileContext& tile, const SetupTriangle& t, const SampleSteps* steps,
+                      const float* sample_z, int x0, int y0, int x1, int y1) {
   WaitingPixels& waiting = *tile.waiting;
   PackedPixels& pixels = waiting.pixels;
   // A triangle covers about half its box: what waits is shaded first when even that would not
@@ -145,19 +203,28 @@ void add_waiting_band(TileContext& tile, const SetupTriangle& t, int x0, int y0,
     waiting.flush(tile);
   }
   int first = pixels.count;
-  const int found = find_small_pixels<Shading>(tile, t, x0, y0, x1, y1, pixels, first);
+  const int found = steps == nullptr
+                        ? find_small_pixels<Shading>(tile, t, x0, y0, x1, y1, pixels, first)
+                        : find_small_samples<Shading>(tile, t, *steps, sample_z, x0, y0, x1, y1,
+                                                      pixels, waiting.masks, first);
   if (found == 0) return;
   if (first + found > kMaxWaitingBox) {
     std::int16_t x[kMaxWaitingBox], y[kMaxWaitingBox];
+    std::uint16_t masks[kMaxWaitingBox];
     std::copy_n(pixels.x + first, found, x);
     std::copy_n(pixels.y + first, found, y);
+    if (steps != nullptr) std::copy_n(waiting.masks + first, found, masks);
     waiting.flush(tile);  // pads past what waited: over these
     std::copy_n(x, found, pixels.x);
     std::copy_n(y, found, pixels.y);
+    if (steps != nullptr) std::copy_n(masks, found, waiting.masks);
     first = 0;
   }
   pixels.count = first + found;
-  waiting.runs[waiting.run_count++] = {&t, found};
+  WaitingPixels::Run& run = waiting.runs[waiting.run_count++];
+  run.triangle = &t;
+  run.count = found;
+  if (steps != nullptr) std::copy_n(sample_z, tile.samples, run.sample_z);
   if constexpr (base_color_texcoord<Shading>() >= 0) {
     const Plane* uv = tile.frame->planes.data() + t.varying_planes + base_color_texcoord<Shading>();
     const float slopes[shading::TexelBatch::kSlopes] = {uv[0].dx, uv[1].dx,   uv[0].dy,
@@ -178,12 +245,15 @@ void add_waiting_band(TileContext& tile, const SetupTriangle& t, int x0, int y0,
 }
 
 // Adds small triangle t's pixels in its bounding box [x0, x1] x [y0, y1] (inclusive;
-// box_may_wait) to the tile's waiting pixels, a band of rows at a time.
+// box_may_wait) to the tile's waiting pixels, a band of rows at a time. Under MSAA, steps and
+// sample_z are t's (SampleSteps, fits_32_bits); at one sample they are null.
 template <class Shading, AlphaMode kAlpha>
-void add_waiting(TileContext& tile, const SetupTriangle& t, int x0, int y0, int x1, int y1) {
+void add_waiting(TileContext& tile, const SetupTriangle& t, int x0, int y0, int x1, int y1,
+                 const SampleSteps* steps = nullptr, const float* sample_z = nullptr) {
   const int rows = kMaxWaitingBox / (x1 - x0 + 1);
   for (int y = y0; y <= y1; y += rows) {
-    add_waiting_band<Shading, kAlpha>(tile, t, x0, y, x1, std::min(y + rows - 1, y1));
+    add_waiting_band<Shading, kAlpha>(tile, t, steps, sample_z, x0, y, x1,
+                                      std::min(y + rows - 1, y1));
   }
 }
 

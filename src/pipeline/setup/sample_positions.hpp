@@ -1,6 +1,6 @@
 // Multisample positions: where in a pixel the samples of 2, 4, 8 and 16x MSAA lie. Setup and
-// binning read the samples' reach (kSampleReach), the MSAA raster (raster/msaa.hpp) the
-// positions themselves; tests check coverage against them.
+// binning read the samples' reach (kSampleReach), setup's small-triangle probe and the MSAA
+// raster (raster/msaa.hpp) the positions themselves; tests check coverage against them.
 #pragma once
 
 #include <cstdint>

@@ -86,10 +86,16 @@ struct Coefficients {
 // products below 2^30. The centres visited are the largest probed box's; the sign bit marks those
 // past a lane's own box. (In 32-bit integers, not double: comparisons per centre and edge in
 // double would make the probe a large part of the kernel.)
+// Under MSAA (samples > 1, pattern: sample_pattern) the points tested are the pixels' samples
+// instead of their centres: a sample adds a * offset x + b * offset y (sixteenths of a pixel, at
+// most half a pixel: the products stay below 2^24, the sums inside 32 bits, as the boxes, widened
+// by the samples' reach, stay within kProbedBoxSide). Exact, so a triangle dropped covers no
+// sample.
 HWY_INLINE hn::Mask<IntTag> CoversACentre(const IntVec x[3], const IntVec y[3], const IntVec a[3],
                                           const IntVec b[3], const IntVec bias[3], IntVec box_x0,
                                           IntVec box_y0, IntVec box_width, IntVec box_height,
-                                          hn::Mask<IntTag> probed) {
+                                          hn::Mask<IntTag> probed, const SampleOffset* pattern,
+                                          int samples) {
   const IntTag di;
   const int columns = hn::GetLane(hn::MaxOfLanes(di, hn::IfThenElseZero(probed, box_width))) + 1;
   const int rows = hn::GetLane(hn::MaxOfLanes(di, hn::IfThenElseZero(probed, box_height))) + 1;
@@ -108,14 +114,32 @@ HWY_INLINE hn::Mask<IntTag> CoversACentre(const IntVec x[3], const IntVec y[3], 
         bias[i]);
     step_x[i] = hn::ShiftLeft<kSubpixelBits>(a[i]), step_y[i] = hn::ShiftLeft<kSubpixelBits>(b[i]);
   }
-  // The sign bit stays set in a lane while every centre so far has a negative edge.
+  // Each sample's step of each edge (zero at one sample: the centre).
+  IntVec sample_step[3][kMaxSamples];
+  for (int i = 0; i < 3; ++i) {
+    for (int s = 0; s < samples; ++s) {
+      sample_step[i][s] = hn::Add(hn::Mul(a[i], hn::Set(di, pattern[s].x * kSampleUnit)),
+                                  hn::Mul(b[i], hn::Set(di, pattern[s].y * kSampleUnit)));
+    }
+  }
+  // The sign bit stays set in a lane while every point so far has a negative edge.
   IntVec all_outside = hn::Set(di, -1);
   for (int r = 0; r < rows; ++r) {
     IntVec e[3] = {row[0], row[1], row[2]};
     IntVec row_outside = hn::IfThenElseZero(hn::Gt(hn::Set(di, r), box_height), outside);
     for (int column = 0; column < columns; ++column) {
-      const IntVec signs = hn::Or(hn::Or(e[0], e[1]), hn::Or(e[2], column_limit[column]));
-      all_outside = hn::And(all_outside, hn::Or(signs, row_outside));
+      const IntVec limits = hn::Or(column_limit[column], row_outside);
+      if (samples == 1) {
+        const IntVec signs = hn::Or(hn::Or(e[0], e[1]), hn::Or(e[2], limits));
+        all_outside = hn::And(all_outside, signs);
+      } else {
+        for (int s = 0; s < samples; ++s) {
+          const IntVec signs =
+              hn::Or(hn::Or(hn::Add(e[0], sample_step[0][s]), hn::Add(e[1], sample_step[1][s])),
+                     hn::Or(hn::Add(e[2], sample_step[2][s]), limits));
+          all_outside = hn::And(all_outside, signs);
+        }
+      }
       for (int i = 0; i < 3; ++i) e[i] = hn::Add(e[i], step_x[i]);
     }
     for (int i = 0; i < 3; ++i) row[i] = hn::Add(row[i], step_y[i]);
@@ -133,7 +157,8 @@ int SetupBatchLanes(const SetupBatch& b, const SetupBatchTarget& target) {
   const IntVec zero = hn::Zero(di);
   const IntVec last_x = hn::Set(di, target.width - 1), last_y = hn::Set(di, target.height - 1);
   const FloatVec to_pixels = hn::Set(df, 1.0f / static_cast<float>(kSubpixelScale));
-  const bool multisampled = target.out.frame().samples > 1;
+  const int samples = target.out.frame().samples;
+  const bool multisampled = samples > 1;
   const IntVec reach = hn::Set(di, multisampled ? kSampleReach : 0);
   // One vector of triangles' results, for the per-triangle part.
   alignas(64) std::int32_t swapped[kLanes];
@@ -219,16 +244,15 @@ int SetupBatchLanes(const SetupBatch& b, const SetupBatchTarget& target) {
       hn::Store(ai, di, a[i]), hn::Store(bi, di, bx[i]);
       hn::Store(hn::ConvertTo(dl, hn::Sub(hn::PromoteTo(dd, bias[i]), products)), dl, c[i]);
     }
-    // Small triangles covering no pixel centre: dropped (not under MSAA, where they may still
-    // cover a sample).
+    // Small triangles covering no pixel centre (under MSAA, no sample): dropped.
     const IntVec box_width = hn::Sub(box_x1, box_x0), box_height = hn::Sub(box_y1, box_y0);
     const IntVec side = hn::Set(di, kProbedBoxSide), span = hn::Set(di, kProbedSpan);
     const auto probed = hn::And(
         hn::And(keep, hn::And(hn::Lt(box_width, side), hn::Lt(box_height, side))),
         hn::And(hn::Lt(hn::Sub(high_x, low_x), span), hn::Lt(hn::Sub(high_y, low_y), span)));
-    if (!multisampled && !hn::AllFalse(di, probed)) {
-      const auto covers =
-          CoversACentre(x, y, edge_a, edge_b, bias, box_x0, box_y0, box_width, box_height, probed);
+    if (!hn::AllFalse(di, probed)) {
+      const auto covers = CoversACentre(x, y, edge_a, edge_b, bias, box_x0, box_y0, box_width,
+                                        box_height, probed, sample_pattern(samples), samples);
       keep = hn::AndNot(hn::AndNot(covers, probed), keep);
     }
     // The kept lanes as bits, visited lowest first below, so that the loop over them has no

@@ -1,0 +1,84 @@
+// Stage: raster under multisampling, the per-triangle part every MSAA path shares: what a
+// triangle's samples add to its edge functions and depth at a pixel centre (SampleSteps), and
+// the SIMD search for the covered samples of a box built from them (sample_box_search). Used by
+// msaa.hpp for a triangle drawn alone and by small_triangles.hpp for those whose pixels wait.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdlib>
+
+#include "pipeline/raster/block_raster.hpp"
+#include "pipeline/raster/pixel_writer.hpp"
+#include "pipeline/setup/sample_positions.hpp"
+#include "pipeline/setup/setup.hpp"
+
+namespace facet::pipeline {
+
+// What a triangle's samples add to its values at the pixel centre: each edge function's step
+// (exact, fixed point) and the depth's (rounded once, the same on every path, so a sample's
+// depth is fl(depth at the centre + step) wherever it is computed). Rounding is monotonic, so
+// fl(a + min step) and fl(b + max step) bound the samples' depths of centres within [a, b].
+struct SampleSteps {
+  std::int64_t edge[3][kMaxSamples];
+  std::int64_t edge_min[3], edge_max[3];
+  float z_min, z_max;
+  // The SIMD box search computes in 32 bits (SampleBoxSearch): only for these coefficients.
+  bool fits_32_bits = true;
+
+  // Fills z[0 .. samples) with the depth steps (the tile's sample_z while t is drawn).
+  SampleSteps(const SetupTriangle& t, int samples, float* z) {
+    const SampleOffset* pattern = sample_pattern(samples);
+    for (int i = 0; i < 3; ++i) {
+      const std::int64_t size = std::abs(std::int64_t{t.a[i]}) + std::abs(std::int64_t{t.b[i]});
+      fits_32_bits = fits_32_bits && size < (std::int64_t{1} << 18);
+      edge_min[i] = edge_max[i] = std::int64_t{t.a[i]} * pattern[0].x * kSampleUnit +
+                                  std::int64_t{t.b[i]} * pattern[0].y * kSampleUnit;
+      for (int s = 0; s < samples; ++s) {
+        edge[i][s] = std::int64_t{t.a[i]} * pattern[s].x * kSampleUnit +
+                     std::int64_t{t.b[i]} * pattern[s].y * kSampleUnit;
+        edge_min[i] = std::min(edge_min[i], edge[i][s]);
+        edge_max[i] = std::max(edge_max[i], edge[i][s]);
+      }
+    }
+    for (int s = 0; s < samples; ++s) {
+      // Sixteenths are exact in float; no contraction (the build's -ffp-contract=off).
+      z[s] = t.z.dx * (static_cast<float>(pattern[s].x) / 16.0f) +
+             t.z.dy * (static_cast<float>(pattern[s].y) / 16.0f);
+    }
+    z_min = *std::min_element(z, z + samples);
+    z_max = *std::max_element(z, z + samples);
+  }
+};
+
+// The search of the pixels of [left, right] x [top, bottom] (frame pixels, at most kBlockPixels)
+// for the samples triangle t covers that pass the depth test against the tile, its depth steps
+// being sample_z (SampleSteps). Only when steps.fits_32_bits.
+template <bool kDepthTest>
+SampleBoxSearch sample_box_search(const TileContext& tile, const SetupTriangle& t,
+                                  const SampleSteps& steps, const float* sample_z, int left,
+                                  int top, int right, int bottom) {
+  SampleBoxSearch search;
+  search.triangle = &t;
+  search.x0 = left, search.y0 = top;
+  search.width = right - left + 1, search.height = bottom - top + 1;
+  search.samples = tile.samples;
+  constexpr std::int64_t kClamp = std::int64_t{1} << 30;
+  for (int i = 0; i < 3; ++i) {
+    // floor(E / 16): the first centre lies on the sixteenths' grid, like every sample.
+    search.e_first[i] = static_cast<std::int32_t>(
+        std::clamp(edge_at_centre(t, i, left, top) >> 4, -kClamp, kClamp));
+    for (int s = 0; s < tile.samples; ++s) {
+      search.step[i][s] = static_cast<std::int32_t>(steps.edge[i][s] / kSampleUnit);
+    }
+  }
+  search.sample_z = sample_z;
+  search.depth_test = kDepthTest;
+  search.depth =
+      tile.depth + static_cast<std::ptrdiff_t>(top - tile.y0) * tile.stride + (left - tile.x0);
+  search.depth_stride = tile.stride;
+  search.plane = tile.sample_plane;
+  return search;
+}
+
+}  // namespace facet::pipeline

@@ -20,8 +20,9 @@ std::uint8_t unorm8(float v) {  // clamped, NaN to 0, rounded: core/color.hpp's 
 // Linear light to 8-bit sRGB by the curve's thresholds instead of a power per channel, which at
 // 1080p took the readback longer than drawing the frame. Code k is the count of the 255
 // thresholds at or below the value: threshold k is where the exact curve (in double) crosses
-// k - 0.5 of 255. A table over [0, 1] in 4096 steps gives the count at each step's start, and
-// at most a few thresholds lie inside one step.
+// k - 0.5 of 255. A table over [0, 1] in 4096 steps gives the count at each step's start; the
+// curve is never steeper than about 0.8 codes a step, so at most one more threshold lies inside
+// a step (the constructor checks), added without a branch.
 class Srgb8Encoder {
  public:
   Srgb8Encoder() {
@@ -31,24 +32,27 @@ class Srgb8Encoder {
           encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4);
       threshold_[k] = static_cast<float>(linear);
     }
-    threshold_[256] = 2.0f;  // above every clamped value: the scan stops at 255
+    threshold_[256] = threshold_[257] = 2.0f;  // above every clamped value: 255 is the last
     int code = 0;
     for (int step = 0; step < kSteps; ++step) {
       const float start = static_cast<float>(step) / kSteps;
       while (threshold_[code + 1] <= start) ++code;
       first_code_[step] = static_cast<std::uint8_t>(code);
+      const float end = static_cast<float>(step + 1) / kSteps;
+      if (step + 1 < kSteps && threshold_[code + 2] < end) {
+        throw Error("OpenGL backend: two sRGB codes begin inside one step of the encode table");
+      }
     }
   }
   std::uint8_t operator()(float linear) const {
     const float v = linear > 0.0f ? (linear < 1.0f ? linear : 1.0f) : 0.0f;  // NaN to 0
-    int code = first_code_[std::min(static_cast<int>(v * kSteps), kSteps - 1)];
-    while (v >= threshold_[code + 1]) ++code;
-    return static_cast<std::uint8_t>(code);
+    const int code = first_code_[std::min(static_cast<int>(v * kSteps), kSteps - 1)];
+    return static_cast<std::uint8_t>(code + (v >= threshold_[code + 1]));
   }
 
  private:
   static constexpr int kSteps = 4096;
-  float threshold_[257] = {};  // threshold_[k]: the smallest value coded k (k in 1..255)
+  float threshold_[258] = {};  // threshold_[k]: the smallest value coded k (k in 1..255)
   std::uint8_t first_code_[kSteps] = {};
 };
 

@@ -463,6 +463,30 @@ TEST(GlTwinCli, BenchTimesTheScenesTheTwinCanDraw) {
       << glmark2.stderr_text;
 }
 
+// `facet render --compare facet,gl`: facet's image and the twin's side by side, the right panel
+// the twin's own image but for its label.
+TEST(GlTwinCli, CompareDrawsFacetAndTheTwinSideBySide) {
+  REQUIRE_GL(gl);
+  const auto dir = test::fresh_test_dir("facet_gl_twin_", "compare");
+  const std::string common = std::string(FACET_CLI) + " render --scene teapot --size 96x54 -o ";
+  const test::CommandResult both =
+      test::run_command(common + (dir / "both.png").string() + " --compare facet,gl");
+  ASSERT_EQ(both.exit_code, 0) << both.stderr_text;
+  ASSERT_EQ(test::run_command(common + (dir / "gl.png").string() + " --backend gl").exit_code, 0);
+  const test::Rgba8Image picture = test::read_png((dir / "both.png").string());
+  const test::Rgba8Image twin = test::read_png((dir / "gl.png").string());
+  ASSERT_EQ(picture.width, 2 * 96);
+  int differing = 0;
+  for (int y = 28; y < 54; ++y) {  // below the label
+    for (int x = 0; x < 96; ++x) {
+      const std::uint8_t* a = &picture.pixels[(y * picture.width + 96 + x) * 4];
+      const std::uint8_t* b = &twin.pixels[(y * 96 + x) * 4];
+      differing += !std::equal(a, a + 4, b);
+    }
+  }
+  EXPECT_EQ(differing, 0);
+}
+
 // No usable OpenGL (glvnd pointed at no EGL vendor): one line saying what is missing, exit code
 // 2, no file; facet's own backend is unaffected.
 TEST(GlTwinCli, NoOpenGLIsOneLineAndExitCodeTwo) {

@@ -252,7 +252,10 @@ int run_batch(const RenderOptions& o) {
 }
 
 int run_render_command(const RenderOptions& options) {
-  if (is_batch(options.batch, options.output)) return run_batch(options);
+  if (is_batch(options.batch, options.output)) {
+    if (options.compare) throw Error("--compare: makes one picture of one model, not a batch");
+    return run_batch(options);
+  }
   RenderOptions one = options;
   if (!one.batch.models.empty()) one.scene.model = one.batch.models.front();
   return run_render(one);

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "animated_scene.hpp"
 #include "arguments.hpp"
@@ -14,7 +15,9 @@
 #include "facet/framebuffer.hpp"
 #include "facet/renderer.hpp"
 #include "facet/scene.hpp"
+#include "output_files.hpp"
 #include "render_backend.hpp"
+#include "render_compare.hpp"
 #include "render_frames.hpp"
 
 namespace facet::cli {
@@ -60,6 +63,10 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
                   "through EGL: docs/gl_twin.md)")
       ->capture_default_str();
   cmd->add_option("--msaa", o.msaa, msaa_help(4));
+  cmd->add_option("--compare", o.compare,
+                  "Draw the view once per variant and write them side by side, labelled: shading "
+                  "models (every material shaded so) and backends, separated by commas, e.g. "
+                  "flat,gouraud,phong or facet,gl; each panel is --size");
   cmd->add_flag("--orthographic,--ortho", o.orthographic,
                 "Parallel projection, fitted to the whole scene, seen along the camera's line of "
                 "sight (the automatic three-quarter view, --eye/--target or --camera)");
@@ -97,6 +104,17 @@ int run_render(const RenderOptions& o) {
   if (transparent && job.outputs.container == Container::ppm) {
     throw Error("--background none: " + o.output + " is a PPM, which has no alpha; use .png");
   }
+  std::vector<CompareVariant> variants;
+  if (o.compare) {
+    variants = parse_compare(*o.compare, backend);
+    const bool color_image =
+        job.outputs.outputs == std::vector<Output>{Output::color} &&
+        (job.outputs.container == Container::png || job.outputs.container == Container::ppm);
+    if (job.sequence) throw Error("--compare: makes one picture, not a sequence of frames");
+    if (!color_image) throw Error("--compare: writes one color image, a .png or a .ppm");
+    if (transparent) throw Error("--compare: the panels are drawn on an opaque background");
+    if (debug_view != DebugView::none) throw Error("--compare: not with --debug-view");
+  }
   auto start = Clock::now();
   // A model is posed when a time is asked for (its animation sampled; at rest otherwise).
   const bool posed = o.frames.time || o.frames.frames || o.scene.animation;
@@ -119,6 +137,16 @@ int run_render(const RenderOptions& o) {
   settings.clear_color = glm::vec4(background, transparent ? 0.0f : 1.0f);
   settings.debug_view = debug_view;
   settings.exposure = o.exposure;
+  if (o.compare) {
+    const Framebuffer picture =
+        render_comparison(variants, animated.scene(), camera, size, settings);
+    write_outputs(picture, job.outputs, o.output);
+    if (!job.quiet) {
+      std::printf("%s: %d panels of %dx%d side by side (%s)\n", o.output.c_str(),
+                  static_cast<int>(variants.size()), size.width, size.height, o.compare->c_str());
+    }
+    return 0;
+  }
   Renderer renderer(settings);
   std::unique_ptr<GlBackend> gl;
   if (backend == Backend::gl) gl = std::make_unique<GlBackend>(settings);

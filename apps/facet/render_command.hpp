@@ -24,8 +24,9 @@ struct RenderOptions {
   int tile_size = 64;
   int msaa = 4;  // anti-aliased images by default (RenderSettings::msaa)
   bool orthographic = false;
-  std::string backend = "facet";  // or "gl": the OpenGL twin (render_backend.hpp)
-  BatchOptions batch;             // the positional models; several, or a folder, make a batch
+  std::string backend = "facet";       // or "gl": the OpenGL twin (render_backend.hpp)
+  std::optional<std::string> compare;  // variants side by side (render_compare.hpp)
+  BatchOptions batch;                  // the positional models; several, or a folder, make a batch
 };
 
 // Adds the `render` subcommand and its flags to app; options are filled on parse.

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "imgui_drawing.hpp"
 #include "view_bindings.hpp"
 
 namespace facet::cli {
@@ -18,10 +19,6 @@ constexpr ImGuiWindowFlags kPanelFlags =
     ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
     ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs;
-
-glm::vec4 unpack_color(ImU32 c) {  // IM_COL32: R in the lowest byte
-  return glm::vec4(c & 0xff, (c >> 8) & 0xff, (c >> 16) & 0xff, (c >> 24) & 0xff) / 255.0f;
-}
 
 void stats_panel(const OverlayInfo& info) {
   ImGui::SetNextWindowPos(ImVec2(kMargin, kMargin));
@@ -122,12 +119,7 @@ ViewOverlay::ViewOverlay() {
   // facet draws VtxOffset correctly, so ImGui may emit lists of more than 64K vertices.
   io.BackendFlags |= ImGuiBackendFlags_RendererHasVtxOffset;
   io.BackendRendererName = "facet";
-  unsigned char* pixels = nullptr;
-  int width = 0, height = 0;
-  io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
-  std::vector<std::uint8_t> rgba(pixels, pixels + static_cast<std::size_t>(width) * height * 4);
-  font_ = Texture::from_rgba8(width, height, std::move(rgba), false, "imgui-font");
-  io.Fonts->SetTexID(static_cast<ImTextureID>(font_.get()));
+  font_ = make_imgui_font_texture();
   ImGui::StyleColorsDark();
   // Tight rows, so the help panel fits a 640x360 window.
   ImGui::GetStyle().ItemSpacing.y = 1.0f;
@@ -206,28 +198,7 @@ WindowLayer ViewOverlay::draw_layer(int window_width, int window_height, bool ch
 }
 
 void ViewOverlay::render_draw_data(Framebuffer& target, ImVec2 origin) {
-  const ImDrawData* data = ImGui::GetDrawData();
-  const float left = data->DisplayPos.x + origin.x, top = data->DisplayPos.y + origin.y;
-  for (int l = 0; l < data->CmdListsCount; ++l) {
-    const ImDrawList* list = data->CmdLists[l];
-    vertices_.clear();
-    for (const ImDrawVert& v : list->VtxBuffer) {
-      vertices_.push_back({{v.pos.x - left, v.pos.y - top}, {v.uv.x, v.uv.y}, unpack_color(v.col)});
-    }
-    indices_.assign(list->IdxBuffer.begin(), list->IdxBuffer.end());
-    for (const ImDrawCmd& cmd : list->CmdBuffer) {
-      if (cmd.UserCallback) continue;  // we install none
-      ImVec4 clip = cmd.ClipRect;
-      OverlayDraw draw;
-      draw.vertices = std::span<const OverlayVertex>(vertices_).subspan(cmd.VtxOffset);
-      draw.indices = std::span<const std::uint32_t>(indices_).subspan(cmd.IdxOffset, cmd.ElemCount);
-      draw.texture = static_cast<const Texture*>(cmd.GetTexID());
-      draw.scissor = {
-          static_cast<int>(std::floor(clip.x - left)), static_cast<int>(std::floor(clip.y - top)),
-          static_cast<int>(std::ceil(clip.z - left)), static_cast<int>(std::ceil(clip.w - top))};
-      draw_overlay(target, draw);
-    }
-  }
+  draw_imgui(*ImGui::GetDrawData(), target, origin, vertices_, indices_);
 }
 
 }  // namespace facet::cli

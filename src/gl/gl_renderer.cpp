@@ -134,6 +134,9 @@ struct GlState {
     const gl::GpuMesh& mesh = resources.mesh(*draw.mesh);
     std::string defines = std::string("#define ") + model + "\n";
     if (material.shading == ShadingModel::wire_overlay) defines += "#define WIRE_OVERLAY\n";
+    if (material.alpha_mode == AlphaMode::opaque || material.alpha_mode == AlphaMode::mask) {
+      defines += "#define ALPHA_OPAQUE\n";  // alpha 1 where drawn, as facet writes
+    }
     if (material.alpha_mode == AlphaMode::mask) {
       defines += "#define ALPHA_MASK\n";
       if (target.samples() > 1) {  // gl_SampleMask: GLSL 4.00, or 3.30 with this extension

@@ -238,6 +238,9 @@ void main() {
   out_color = color;  // facet's lines are not fogged (pipeline/raster/line.cpp)
   return;
 #endif
+#ifdef ALPHA_OPAQUE
+  color.a = 1.0;  // pixel_writer.hpp's blend_into: an opaque surface covers what it draws
+#endif
   if (u_fog_mode != 0) {
     float depth = view_depth();
     float keep = u_fog_mode == 1 ? (u_fog_end - depth) / max(u_fog_end - u_fog_start, 1e-6)

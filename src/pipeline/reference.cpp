@@ -61,7 +61,7 @@ Varyings interpolate(const ClipVertex* const v[3], const std::int64_t e[3]) {
 
 // Lambert as shading/models.hpp's LambertShading computes it:
 //   albedo = base color x texel,  rgb = albedo x (ambient + sum_lights radiance x max(N.L, 0)),
-//   alpha = albedo's,
+//   alpha = 1 (an opaque draw covers what it draws, whatever the texel's alpha),
 // with radiance = color x intensity, L the unit vector against the light's direction, and N
 // the interpolated world normal renormalised and, for a two-sided material (cull none),
 // reversed on a triangle seen from the side its vertex normals turn away from (as
@@ -80,7 +80,7 @@ glm::vec4 shade(const ReferenceScene& scene, const Varyings& v, bool reverse_nor
   for (const Light& l : scene.lighting.lights) {
     light += l.color * l.intensity * std::max(glm::dot(n, -unit(l.direction)), 0.0f);
   }
-  return {glm::vec3(albedo) * light, albedo.a};
+  return {glm::vec3(albedo) * light, 1.0f};
 }
 
 // Rasterizes one screen triangle with its clip vertices' varyings; shades with scene unless it

@@ -24,6 +24,7 @@ template <bool kMasked>
 struct OutputModel {
   static constexpr int kFirstSlot = kMasked ? kUnlitVaryings : 0;  // the model's own varyings
   static constexpr int kNormalSlot = -1;
+  static constexpr bool kWritesData = true;  // every channel is the output's (pixel_writer.hpp)
 
   static void alpha_vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
     if constexpr (kMasked) surface_vertex<kUnlitVaryings>(in, u, out);
@@ -115,6 +116,7 @@ struct TriangleOutput : OutputModel<kMasked>, OutputBase<kMasked> {
 struct AlbedoOutput : SamplesBaseColorAhead {
   static constexpr int kVaryings = kUnlitVaryings;
   static constexpr int kNormalSlot = -1;
+  static constexpr bool kWritesData = true;  // its alpha is the material's, opaque or not
   static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
     surface_vertex<kUnlitVaryings>(in, u, out);
   }

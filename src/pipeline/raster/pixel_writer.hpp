@@ -109,6 +109,13 @@ constexpr bool additive() {
   if constexpr (requires { Shading::kAdditive; }) return Shading::kAdditive;
   return false;
 }
+// Models of the extra outputs write data, not a color: their fourth channel is kept as computed
+// where a color's alpha would be 1 (blend_into).
+template <class Shading>
+constexpr bool writes_data() {
+  if constexpr (requires { Shading::kWritesData; }) return Shading::kWritesData;
+  return false;
+}
 
 // Models whose fragment() returns display values (shading/models.hpp's DisplayReferred).
 template <class Shading>
@@ -211,11 +218,13 @@ void blend_into(glm::vec4& out, const glm::vec4& color) {
     out += glm::vec4(glm::vec3(color) * color.a, 0.0f);
   } else {
     // Channel by channel: GCC assembles `color` in memory from 4- and 8-byte pieces, and a
-    // 16-byte copy reloading them would stall on store forwarding.
+    // 16-byte copy reloading them would stall on store forwarding. Opaque and cut-out draws
+    // cover what they draw: alpha 1, whatever a texture's alpha channel says (glTF ignores an
+    // opaque material's alpha; a PNG with alpha must not see through an opaque surface).
     out.r = color.r;
     out.g = color.g;
     out.b = color.b;
-    out.a = color.a;
+    out.a = writes_data<Shading>() ? color.a : 1.0f;
   }
 }
 
@@ -323,6 +332,9 @@ class PixelWriter {
       for (int row = 0; row < kBlockSize; ++row) {
         const std::ptrdiff_t pixel = first + static_cast<std::ptrdiff_t>(row) * tile_.stride;
         std::memcpy(&tile_.depth[pixel], block.z + row * kBlockSize, sizeof(float) * kBlockSize);
+        if constexpr (!writes_data<Shading>()) {
+          for (int x = 0; x < kBlockSize; ++x) tile_.color[pixel + x].a = 1.0f;  // as blend_into
+        }
       }
       shaded += kBlockPixels;
     }

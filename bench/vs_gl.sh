@@ -24,10 +24,7 @@ for r in $(seq "$ROUNDS"); do
     --frames 20 | awk -v r="$r" '$2 ~ /^[0-9.]+$/ { print $1, r, $2 }' >>"$OUT/facet"
 done
 date -u
-# Per scene: the median of the rounds (sorted values, middle one), then every round's value.
-medians() { sort -k1,1 -k3,3n "$1" | awk '
-  { v[$1] = v[$1] " " $3; n[$1]++; all[$1, n[$1]] = $3 }
-  END { for (k in n) print k, all[k, int((n[k] + 1) / 2)], v[k] }' | sort; }
+source bench/round_medians.sh
 medians "$OUT/facet" >"$OUT/facet.med"
 medians "$OUT/gl" >"$OUT/gl.med"
 echo "scene | facet ms | OpenGL ms | ratio | facet rounds | OpenGL rounds"

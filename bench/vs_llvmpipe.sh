@@ -24,10 +24,7 @@ for r in $(seq "$ROUNDS"); do
     awk -v r="$r" 'NR > 1 && $2 ~ /^[0-9.]+$/ { print $1, r, $2 }' >>"$OUT/facet"
 done
 date -u
-# Per scene: the median of the rounds (sorted values, middle one).
-medians() { sort -k1,1 -k3,3n "$1" | awk '
-  { v[$1] = v[$1] " " $3; n[$1]++; all[$1, n[$1]] = $3 }
-  END { for (k in n) print k, all[k, int((n[k] + 1) / 2)], v[k] }' | sort; }
+source bench/round_medians.sh
 medians "$OUT/llvmpipe" >"$OUT/llvmpipe.med"
 medians "$OUT/facet" >"$OUT/facet.med"
 echo "scene | facet ms | llvmpipe ms | ratio | facet rounds | llvmpipe rounds"

@@ -14,6 +14,7 @@
 #include "facet/error.hpp"
 #include "facet/import.hpp"
 #include "support/gltf_builder.hpp"
+#include "support/world_positions.hpp"
 
 namespace facet::test {
 namespace {
@@ -25,19 +26,6 @@ ImportOptions at_time(double seconds, int animation = 0) {
   options.time = seconds;
   options.animation = animation;
   return options;
-}
-
-// The world-space positions of the first mesh a node draws (its node's transform applied).
-std::vector<glm::vec3> world_positions(const Scene& scene) {
-  for (std::size_t n = 0; n < scene.nodes.size(); ++n) {
-    if (scene.nodes[n].instances.empty()) continue;
-    const glm::mat4 world = scene.world_transform(static_cast<int>(n));
-    std::vector<glm::vec3> out;
-    for (const glm::vec3& p : scene.meshes.at(scene.nodes[n].instances[0].mesh)->positions)
-      out.emplace_back(world * glm::vec4(p, 1.0f));
-    return out;
-  }
-  return {};
 }
 
 void expect_near(glm::vec3 got, glm::vec3 want, const std::string& what) {

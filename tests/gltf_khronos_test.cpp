@@ -17,6 +17,7 @@
 #include "facet/import.hpp"
 #include "support/gltf_builder.hpp"
 #include "support/render_helpers.hpp"
+#include "support/world_positions.hpp"
 
 namespace facet::test {
 namespace {
@@ -29,19 +30,6 @@ ImportOptions at_time(double seconds) {
   ImportOptions options;
   options.time = seconds;
   return options;
-}
-
-// The world-space positions of the first mesh a node draws.
-std::vector<glm::vec3> world_positions(const Scene& scene) {
-  for (std::size_t n = 0; n < scene.nodes.size(); ++n) {
-    if (scene.nodes[n].instances.empty()) continue;
-    const glm::mat4 world = scene.world_transform(static_cast<int>(n));
-    std::vector<glm::vec3> out;
-    for (const glm::vec3& p : scene.meshes.at(scene.nodes[n].instances[0].mesh)->positions)
-      out.emplace_back(world * glm::vec4(p, 1.0f));
-    return out;
-  }
-  return {};
 }
 
 // Whether some position is within 1e-4 of `want`.

@@ -78,12 +78,7 @@ Views scene_named(const std::string& name) {
 Framebuffer facet_image(const Scene& scene, const Camera& camera, int msaa = 1) {
   RenderSettings settings;
   settings.msaa = msaa;
-  Renderer renderer(settings);
-  Framebuffer image(kWidth, kHeight);
-  renderer.begin_frame(camera, scene.lighting);
-  draw_scene(renderer, scene);
-  renderer.finish(image);
-  return image;
+  return test::render_scene_image(scene, camera, kWidth, kHeight, settings);
 }
 
 Framebuffer gl_image(GlRenderer& gl, const Scene& scene, const Camera& camera) {
@@ -560,10 +555,7 @@ std::string shared_edge_owner(GlRenderer* gl, bool horizontal) {
   if (gl) {
     gl->render(scene, camera, image);
   } else {
-    Renderer renderer;
-    renderer.begin_frame(camera, scene.lighting);
-    draw_scene(renderer, scene);
-    renderer.finish(image);
+    image = test::render_scene_image(scene, camera, 8, 8);
   }
   std::string line;
   for (int i = 0; i < 8; ++i) {
@@ -593,11 +585,9 @@ TEST(GlTwinDocs, IslandsSideBySide) {
   constexpr int kPanelWidth = 240, kPanelHeight = 135;
   Views v = scene_named("islands");
   v.camera.aspect = static_cast<float>(kPanelWidth) / kPanelHeight;
-  Renderer renderer;
-  Framebuffer reference(kPanelWidth, kPanelHeight), twin(kPanelWidth, kPanelHeight);
-  renderer.begin_frame(v.camera, v.scene.lighting);
-  draw_scene(renderer, v.scene);
-  renderer.finish(reference);
+  const Framebuffer reference =
+      test::render_scene_image(v.scene, v.camera, kPanelWidth, kPanelHeight);
+  Framebuffer twin(kPanelWidth, kPanelHeight);
   gl->render(v.scene, v.camera, twin);
   Framebuffer difference = reference;
   cli::show_difference(difference, twin);

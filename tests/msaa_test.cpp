@@ -315,6 +315,30 @@ Mesh screen_rectangle(double x0, double y0, double x1, double y1, double distanc
        at_pixel(x1, y1, kWidth, kHeight, distance), at_pixel(x1, y0, kWidth, kHeight, distance)});
 }
 
+// Unlit, two-sided meshes drawn in order, each in its color, in front of test_camera on opaque
+// black, at `samples` a pixel.
+struct Layer {
+  const Mesh* mesh;
+  glm::vec4 color;
+};
+Framebuffer render_layers(const std::vector<Layer>& layers, int samples) {
+  RenderSettings settings;
+  settings.msaa = samples;
+  settings.clear_color = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+  Renderer renderer(settings);
+  Framebuffer fb(kWidth, kHeight);
+  renderer.begin_frame(test_camera(kWidth, kHeight));
+  Material material;
+  material.shading = ShadingModel::unlit;
+  material.cull = CullMode::none;
+  for (const Layer& layer : layers) {
+    material.base_color = layer.color;
+    renderer.draw(*layer.mesh, material);
+  }
+  renderer.finish(fb);
+  return fb;
+}
+
 // A far layer over the whole screen, then small near squares (their pixels may wait), then a
 // middle layer: the near squares must stay in front of the middle layer at every sample count,
 // however the middle layer's whole covered blocks are written.
@@ -328,21 +352,8 @@ TEST(Msaa, LaterLayersBehindSmallNearTrianglesDoNotCoverThem) {
   }
   const Mesh middle = screen_rectangle(-20, -20, kWidth + 20, kHeight + 20, 4.0);
   for (int samples : kSampleCounts) {
-    RenderSettings settings;
-    settings.msaa = samples;
-    Renderer renderer(settings);
-    Framebuffer fb(kWidth, kHeight);
-    renderer.begin_frame(test_camera(kWidth, kHeight));
-    Material material;
-    material.shading = ShadingModel::unlit;
-    material.cull = CullMode::none;
-    const glm::vec4 colors[3] = {{1, 0, 0, 1}, {0, 1, 0, 1}, {0, 0, 1, 1}};
-    const Mesh* meshes[3] = {&far, &near, &middle};
-    for (int m = 0; m < 3; ++m) {
-      material.base_color = colors[m];
-      renderer.draw(*meshes[m], material);
-    }
-    renderer.finish(fb);
+    const Framebuffer fb = render_layers(
+        {{&far, {1, 0, 0, 1}}, {&near, {0, 1, 0, 1}}, {&middle, {0, 0, 1, 1}}}, samples);
     for (int k = 0; k < 6; ++k) {  // the squares' middle pixels: green, every sample
       const int x = 4 + 15 * k, y = 6 + 9 * k;
       const std::uint8_t* rgba = fb.rgba8().data() + 4 * (static_cast<std::size_t>(y) * kWidth + x);
@@ -363,20 +374,7 @@ TEST(Msaa, OcclusionSkipKeepsWhatShowsBetweenSamples) {
                           at_pixel(0.3, kHeight + 200.0, kWidth, kHeight, 2.0),
                           at_pixel(kWidth + 400.0, kHeight / 2.0, kWidth, kHeight, 2.0)});
   for (int samples : kSampleCounts) {
-    RenderSettings settings;
-    settings.msaa = samples;
-    settings.clear_color = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
-    Renderer renderer(settings);
-    Framebuffer fb(kWidth, kHeight);
-    renderer.begin_frame(test_camera(kWidth, kHeight));
-    Material material;
-    material.shading = ShadingModel::unlit;
-    material.cull = CullMode::none;
-    material.base_color = {1, 0, 0, 1};
-    renderer.draw(red, material);
-    material.base_color = {0, 0, 1, 1};
-    renderer.draw(blue, material);
-    renderer.finish(fb);
+    const Framebuffer fb = render_layers({{&red, {1, 0, 0, 1}}, {&blue, {0, 0, 1, 1}}}, samples);
     for (int y = 0; y < kHeight; ++y) {
       const std::uint8_t* rgba = fb.rgba8().data() + 4 * static_cast<std::size_t>(y) * kWidth;
       if (samples == 1) {  // the centre is blue's
@@ -518,11 +516,7 @@ Framebuffer shapes_crop(int samples) {
   camera.aspect = static_cast<float>(kFullWidth) / kFullHeight;
   RenderSettings settings;
   settings.msaa = samples;
-  Renderer renderer(settings);
-  Framebuffer full(kFullWidth, kFullHeight);
-  renderer.begin_frame(camera, scene.lighting);
-  draw_scene(renderer, scene);
-  renderer.finish(full);
+  const Framebuffer full = render_scene_image(scene, camera, kFullWidth, kFullHeight, settings);
   constexpr int kX = 134, kY = 54, kCropW = 64, kCropH = 48;
   Framebuffer crop(kCropW, kCropH);
   for (int y = 0; y < kCropH; ++y) {

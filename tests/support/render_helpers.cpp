@@ -31,16 +31,21 @@ Mesh soup_quad(float x0, float y0, float x1, float y1, float z) {
   return soup({{x0, y0, z}, {x1, y0, z}, {x1, y1, z}, {x0, y0, z}, {x1, y1, z}, {x0, y1, z}});
 }
 
+Framebuffer render_scene_image(const Scene& scene, const Camera& camera, int width, int height,
+                               RenderSettings settings) {
+  Renderer renderer(settings);
+  Framebuffer fb(width, height);
+  renderer.begin_frame(camera, scene.lighting);
+  draw_scene(renderer, scene);
+  renderer.finish(fb);
+  return fb;
+}
+
 Framebuffer render_shapes(ShadingModel model, int width, int height, RenderSettings settings) {
   Scene scene = make_shapes_scene();
   for (auto& material : scene.materials) material.shading = model;
   scene.camera.aspect = static_cast<float>(width) / height;
-  Renderer renderer(settings);
-  Framebuffer fb(width, height);
-  renderer.begin_frame(scene.camera, scene.lighting);
-  draw_scene(renderer, scene);
-  renderer.finish(fb);
-  return fb;
+  return render_scene_image(scene, scene.camera, width, height, settings);
 }
 
 std::vector<int> coverage_counts(const std::vector<const Mesh*>& meshes, const Camera& camera,

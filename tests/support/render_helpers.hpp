@@ -13,6 +13,7 @@
 #include "facet/material.hpp"
 #include "facet/mesh.hpp"
 #include "facet/renderer.hpp"
+#include "facet/scene.hpp"
 #include "facet/texture.hpp"
 #include "pipeline/frame.hpp"
 
@@ -24,6 +25,10 @@ Mesh soup(const std::vector<glm::vec3>& positions);
 // The rectangle [x0, x1] x [y0, y1] at depth z (facing +Z) as a soup of two triangles sharing
 // the diagonal from (x0, y0) to (x1, y1).
 Mesh soup_quad(float x0, float y0, float x1, float y1, float z);
+
+// The scene seen by camera (its own lighting), width x height, by facet's renderer.
+Framebuffer render_scene_image(const Scene& scene, const Camera& camera, int width, int height,
+                               RenderSettings settings = {});
 
 // The built-in shapes scene with every material set to `model`, width x height.
 Framebuffer render_shapes(ShadingModel model, int width, int height, RenderSettings settings = {});

@@ -19,6 +19,7 @@
 #include "facet/scene.hpp"
 #include "facet/worlds.hpp"
 #include "support/golden.hpp"
+#include "support/render_helpers.hpp"
 
 namespace facet::test {
 namespace {
@@ -100,6 +101,19 @@ INSTANTIATE_TEST_SUITE_P(DocsPictures, PipelineStage, ::testing::ValuesIn(kPictu
                          [](const ::testing::TestParamInfo<Picture>& param_info) {
                            return std::string(param_info.param.name);
                          });
+
+// "Tone mapping": the scene 1.5 stops brighter through each curve, side by side, as the
+// command under the picture draws it.
+TEST(DocsPictures, ToneMappingCurvesSideBySide) {
+  const std::string path =
+      (std::filesystem::path(::testing::TempDir()) / "docs_tone_mapping.png").string();
+  const CommandResult r = run_command(std::string(FACET_CLI) +
+                                      " render --scene shapes --size 240x135 --exposure 1.5 "
+                                      "--compare none,pbr-neutral,aces -q -o '" +
+                                      path + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  expect_matches_golden_in(FACET_DOCS_PICTURE_DIR, path, "tone_mapping");
+}
 
 }  // namespace
 }  // namespace facet::test

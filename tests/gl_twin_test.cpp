@@ -397,6 +397,33 @@ TEST(GlTwin, EnvironmentAndExponentialFogMatchFacet) {
   expect_twins({"environment", v, 73});  // measured 79.6 dB
 }
 
+// Tone mapped, 1.5 stops brighter, with fog: the twin maps its read-back colors and fogs toward
+// the same inverse of the fog color, so the two stay as close as without a curve.
+TEST(GlTwin, ToneMappingMatchesFacet) {
+  REQUIRE_GL(gl);
+  Views v = shapes_with(ShadingModel::phong);
+  v.scene.lighting.fog.mode = FogMode::linear;
+  v.scene.lighting.fog.start = 5.0f;
+  v.scene.lighting.fog.end = 25.0f;
+  for (ToneMapping curve : {ToneMapping::pbr_neutral, ToneMapping::aces}) {
+    RenderSettings settings;
+    settings.tone_mapping = curve;
+    settings.exposure = 1.5f;
+    const Framebuffer reference =
+        test::render_scene_image(v.scene, v.camera, kWidth, kHeight, settings);
+    GlRenderer twin_renderer(settings);
+    const Framebuffer twin = gl_image(twin_renderer, v.scene, v.camera);
+    RenderSettings unmapped = settings;
+    unmapped.tone_mapping = ToneMapping::none;
+    const double db = psnr(reference, twin);
+    std::printf("tone mapping %d: PSNR %.2f dB\n", static_cast<int>(curve), db);
+    EXPECT_GE(db, 60.0);
+    EXPECT_LT(psnr(test::render_scene_image(v.scene, v.camera, kWidth, kHeight, unmapped), twin),
+              40.0)
+        << "the curve changes the image";
+  }
+}
+
 // --- `facet render --backend gl` -----------------------------------------------------------
 
 double psnr(const test::Rgba8Image& a, const test::Rgba8Image& b) {

@@ -45,12 +45,12 @@ TEST_P(ShapesScene, MatchesGolden) {
   const fs::path output = fs::path(::testing::TempDir()) / (model + ".png");
   fs::remove(output);
 
-  // One sample a pixel: these goldens hold the shading models, not the anti-aliasing
-  // (msaa_test.cpp's golden does).
-  const std::string command = std::string(FACET_CLI) + " render --msaa 1 --scene shapes --size " +
-                              std::to_string(kWidth) + "x" + std::to_string(kHeight) +
-                              " --shading " + model + golden_case.extra_args + " -o '" +
-                              output.string() + "'";
+  // One sample a pixel and no tone mapping: these goldens hold the shading models, not the
+  // anti-aliasing (msaa_test.cpp's golden does) nor the curves (tone_mapping_test.cpp).
+  const std::string command =
+      std::string(FACET_CLI) + " render --msaa 1 --tone-mapping none --scene shapes --size " +
+      std::to_string(kWidth) + "x" + std::to_string(kHeight) + " --shading " + model +
+      golden_case.extra_args + " -o '" + output.string() + "'";
   CommandResult result = run_command(command);
   ASSERT_EQ(result.exit_code, 0) << command << "\n" << result.stderr_text;
   expect_matches_golden(output.string(), "shapes_" + model);

@@ -281,7 +281,8 @@ TEST(Points, PlyPointCloudRendersLikeItsGolden) {
   }
   const fs::path output = dir / "points_wuson.png";
   const std::string command = std::string(FACET_CLI) + " render '" + cloud.string() +
-                              "' --size 320x180 --point-size 2 -o '" + output.string() + "'";
+                              "' --size 320x180 --point-size 2 --tone-mapping none -o '" +
+                              output.string() + "'";
   CommandResult result = run_command(command);
   ASSERT_EQ(result.exit_code, 0) << command << "\n" << result.stderr_text;
   EXPECT_NE(result.stdout_text.find(std::to_string(positions.size()) + " points drawn"),

@@ -73,7 +73,8 @@ TEST(RenderCompare, BadListsAndOptionsGiveOneErrorLine) {
     const char* message;
   } cases[] = {
       {"--compare flat", "name at least two variants"},
-      {"--compare flat,glossy", "'glossy' is neither a shading model nor a backend"},
+      {"--compare flat,glossy",
+       "'glossy' is neither a shading model, a backend nor a tone mapping"},
       {"--compare flat,phong,flat", "flat is named twice"},
       {"--compare flat,phong --background none", "opaque background"},
       {"--compare flat,phong --debug-view overdraw", "not with --debug-view"},

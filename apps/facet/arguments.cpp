@@ -93,4 +93,36 @@ std::string msaa_help(int default_samples) {
          std::to_string(default_samples) + ")";
 }
 
+namespace {
+constexpr ToneMapping kToneMappings[] = {ToneMapping::none, ToneMapping::pbr_neutral,
+                                         ToneMapping::aces};
+}  // namespace
+
+const char* to_string(ToneMapping curve) {
+  switch (curve) {
+    case ToneMapping::pbr_neutral:
+      return "pbr-neutral";
+    case ToneMapping::aces:
+      return "aces";
+    default:
+      return "none";
+  }
+}
+
+ToneMapping parse_tone_mapping(const std::string& text) {
+  for (ToneMapping curve : kToneMappings) {
+    if (text == to_string(curve)) return curve;
+  }
+  throw Error("--tone-mapping: expected none, pbr-neutral or aces, got '" + text + "'");
+}
+
+std::string tone_mapping_help(ToneMapping default_curve) {
+  return std::string(
+             "How colors brighter than white are shown: pbr-neutral (Khronos PBR Neutral: "
+             "colors kept, highlights roll off to white), aces (ACES filmic: more "
+             "contrast) or none (clipped); the background color is never mapped "
+             "(default: ") +
+         to_string(default_curve) + ")";
+}
+
 }  // namespace facet::cli

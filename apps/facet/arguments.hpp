@@ -5,6 +5,8 @@
 #include <glm/vec3.hpp>
 #include <string>
 
+#include "facet/color.hpp"
+
 namespace facet::cli {
 
 struct ImageSize {
@@ -30,5 +32,10 @@ void check_threads(int threads);
 void check_msaa(int samples);
 // The --msaa help text, with the command's default.
 std::string msaa_help(int default_samples);
+// --tone-mapping's names: none, pbr-neutral, aces.
+ToneMapping parse_tone_mapping(const std::string& text);
+const char* to_string(ToneMapping curve);
+// The --tone-mapping help text, with the command's default.
+std::string tone_mapping_help(ToneMapping default_curve);
 
 }  // namespace facet::cli

@@ -44,6 +44,7 @@ RenderSettings bench_settings(const BenchOptions& o, const bench::BenchScene& sc
   settings.threads = o.threads;
   settings.tile_size = o.tile_size;
   settings.msaa = o.msaa;
+  settings.tone_mapping = parse_tone_mapping(o.tone_mapping);
   settings.clear_color = scene.clear_color();
   return settings;
 }
@@ -133,7 +134,8 @@ void write_json(const std::string& path, const BenchOptions& o, const ImageSize&
   if (!out) throw Error(o.json + ": cannot write");
   out << "{\n  \"size\": \"" << size.width << "x" << size.height
       << "\",\n  \"threads\": " << o.threads << ",\n  \"tile_size\": " << o.tile_size
-      << ",\n  \"msaa\": " << o.msaa << ",\n  \"backend\": \"" << o.backend << "\""
+      << ",\n  \"msaa\": " << o.msaa << ",\n  \"tone_mapping\": \"" << o.tone_mapping << "\""
+      << ",\n  \"backend\": \"" << o.backend << "\""
       << ",\n  \"frames\": " << o.frames << ",\n  \"scenes\": [\n";
   for (std::size_t i = 0; i < results.size(); ++i) {
     const SceneResult& r = results[i];
@@ -190,6 +192,7 @@ CLI::App* add_bench_command(CLI::App& app, BenchOptions& o) {
   cmd->add_option("--tile-size", o.tile_size, "Tile edge in pixels: 16, 32, 64 or 128")
       ->capture_default_str();
   cmd->add_option("--msaa", o.msaa, msaa_help(1));
+  cmd->add_option("--tone-mapping", o.tone_mapping, tone_mapping_help(ToneMapping::none));
   cmd->add_option("--json", o.json, "Also write the results to this JSON file");
   return cmd;
 }
@@ -200,6 +203,7 @@ int run_bench(const BenchOptions& o) {
   if (o.warmup < 0) throw Error("--warmup: must be 0 or more");
   check_threads(o.threads);
   check_msaa(o.msaa);
+  parse_tone_mapping(o.tone_mapping);
   if (o.tile_size != 16 && o.tile_size != 32 && o.tile_size != 64 && o.tile_size != 128) {
     throw Error("--tile-size: must be 16, 32, 64 or 128, got " + std::to_string(o.tile_size));
   }

@@ -18,8 +18,9 @@ struct BenchOptions {
   int warmup = 5;
   int threads = 0;
   int tile_size = 64;
-  int msaa = 1;      // glmark2 runs without anti-aliasing
-  std::string json;  // empty: no JSON file
+  int msaa = 1;                       // glmark2 runs without anti-aliasing
+  std::string tone_mapping = "none";  // nor tone mapping
+  std::string json;                   // empty: no JSON file
 };
 
 CLI::App* add_bench_command(CLI::App& app, BenchOptions& options);

@@ -54,6 +54,7 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
                   "tile tinted by how many primitives were binned into it)");
   cmd->add_option("--exposure", o.exposure, "Exposure in stops: colors scaled by 2^EXPOSURE")
       ->capture_default_str();
+  cmd->add_option("--tone-mapping", o.tone_mapping, tone_mapping_help(ToneMapping::pbr_neutral));
   cmd->add_option("--threads", o.threads, "Worker threads, 0 = all cores, at most 256")
       ->capture_default_str();
   cmd->add_option("--tile-size", o.tile_size, "Tile edge in pixels: 16, 32, 64 or 128")
@@ -65,8 +66,9 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
   cmd->add_option("--msaa", o.msaa, msaa_help(4));
   cmd->add_option("--compare", o.compare,
                   "Draw the view once per variant and write them side by side, labelled: shading "
-                  "models (every material shaded so) and backends, separated by commas, e.g. "
-                  "flat,gouraud,phong or facet,gl; each panel is --size");
+                  "models (every material shaded so), backends and tone mappings, separated by "
+                  "commas, e.g. flat,gouraud,phong or facet,gl or none,pbr-neutral,aces; each "
+                  "panel is --size");
   cmd->add_flag("--orthographic,--ortho", o.orthographic,
                 "Parallel projection, fitted to the whole scene, seen along the camera's line of "
                 "sight (the automatic three-quarter view, --eye/--target or --camera)");
@@ -85,6 +87,7 @@ int run_render(const RenderOptions& o) {
   if (!std::isfinite(o.exposure) || std::abs(o.exposure) > 20.0f) {
     throw Error("--exposure: must be within -20 .. 20 stops");
   }
+  const ToneMapping tone_mapping = parse_tone_mapping(o.tone_mapping);
   const bool transparent = o.background == "none";
   glm::vec3 background =
       transparent ? glm::vec3(0.0f)
@@ -137,6 +140,7 @@ int run_render(const RenderOptions& o) {
   settings.clear_color = glm::vec4(background, transparent ? 0.0f : 1.0f);
   settings.debug_view = debug_view;
   settings.exposure = o.exposure;
+  settings.tone_mapping = tone_mapping;
   if (o.compare) {
     const Framebuffer picture =
         render_comparison(variants, animated.scene(), camera, size, settings);

@@ -20,6 +20,8 @@ struct RenderOptions {
   std::optional<std::string> background;  // r,g,b or "none"
   std::optional<std::string> debug_view;
   float exposure = 0.0f;
+  // Highlights kept rather than clipped in every thumbnail (RenderSettings::tone_mapping).
+  std::string tone_mapping = "pbr-neutral";
   int threads = 0;
   int tile_size = 64;
   int msaa = 4;  // anti-aliased images by default (RenderSettings::msaa)

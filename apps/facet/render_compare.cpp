@@ -15,7 +15,7 @@ namespace {
 constexpr int kMaxWidth = 8192;  // as --size
 
 std::string known_names() {
-  std::string names = "facet, gl";
+  std::string names = "facet, gl, none, pbr-neutral, aces";
   for (std::string_view model : shading_model_names()) names += ", " + std::string(model);
   return names;
 }
@@ -66,9 +66,12 @@ std::vector<CompareVariant> parse_compare(const std::string& list, Backend backe
       v.backend = parse_backend("--compare", v.name);
     } else if (parse_shading_model(v.name, v.shading)) {
       v.shaded_as = true;
+    } else if (v.name == "none" || v.name == "pbr-neutral" || v.name == "aces") {
+      v.tone_mapping = parse_tone_mapping(v.name);
     } else {
-      throw Error("--compare: '" + v.name + "' is neither a shading model nor a backend (" +
-                  known_names() + ")");
+      throw Error("--compare: '" + v.name +
+                  "' is neither a shading model, a backend nor a tone mapping (" + known_names() +
+                  ")");
     }
     for (const CompareVariant& earlier : variants) {
       if (earlier.name == v.name) throw Error("--compare: " + v.name + " is named twice");
@@ -92,21 +95,28 @@ Framebuffer render_comparison(const std::vector<CompareVariant>& variants, const
   }
   Framebuffer picture(count * size.width, size.height, ColorFormat::rgba8_srgb, DepthImage::none);
   Framebuffer panel(size.width, size.height, ColorFormat::rgba8_srgb, DepthImage::none);
-  Renderer renderer(settings);
+  std::unique_ptr<Renderer> renderer;
   std::unique_ptr<GlBackend> gl;  // made when a variant asks for it
+  ToneMapping made_with = settings.tone_mapping;
   for (int i = 0; i < count; ++i) {
     const CompareVariant& v = variants[i];
+    // The renderers are made again for a variant of another tone mapping.
+    RenderSettings own = settings;
+    own.tone_mapping = v.tone_mapping.value_or(settings.tone_mapping);
+    if (own.tone_mapping != made_with) renderer.reset(), gl.reset();
+    made_with = own.tone_mapping;
     Scene variant = scene;  // materials copied; meshes and textures shared
     if (v.shaded_as) {
       for (Material& material : variant.materials) material.shading = v.shading;
     }
     if (v.backend == Backend::gl) {
-      if (!gl) gl = std::make_unique<GlBackend>(settings);
+      if (!gl) gl = std::make_unique<GlBackend>(own);
       gl->render(variant, camera, panel);
     } else {
-      renderer.begin_frame(camera, variant.lighting);
-      draw_scene(renderer, variant);
-      renderer.finish(panel);
+      if (!renderer) renderer = std::make_unique<Renderer>(own);
+      renderer->begin_frame(camera, variant.lighting);
+      draw_scene(*renderer, variant);
+      renderer->finish(panel);
     }
     const std::size_t row = static_cast<std::size_t>(size.width) * 4;
     for (int y = 0; y < size.height; ++y) {

@@ -1,9 +1,10 @@
 // `facet render --compare A,B,...`: one view drawn once per variant — a shading model given to
-// every material (flat, gouraud, phong, ...) or a backend (facet, gl) — and the images laid side
-// by side, left to right in the order given, each labelled with its name: the comparison the
-// course write-ups on shading show, in one picture.
+// every material (flat, gouraud, phong, ...), a backend (facet, gl) or a tone mapping (none,
+// pbr-neutral, aces) — and the images laid side by side, left to right in the order given, each
+// labelled with its name: the comparison the course write-ups on shading show, in one picture.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,10 +23,11 @@ struct CompareVariant {
   bool shaded_as = false;  // every material gets `shading`
   ShadingModel shading{};
   Backend backend = Backend::facet;
+  std::optional<ToneMapping> tone_mapping;  // instead of the settings'
 };
 
-// The variants of a --compare list: shading model names and backend names, separated by
-// commas; a variant that names a model is drawn by `backend`. Throws facet::Error naming
+// The variants of a --compare list: shading model, backend and tone mapping names, separated
+// by commas; a variant that names a model is drawn by `backend`. Throws facet::Error naming
 // --compare for an unknown name, a repeat, or fewer than two.
 std::vector<CompareVariant> parse_compare(const std::string& list, Backend backend);
 

@@ -23,6 +23,7 @@ inline constexpr ViewBinding kViewBindings[] = {
     {"Tab", "orbit <-> first person"},
     {"M", "mute / unmute sound"},
     {"B", "renderer: facet, its OpenGL twin, their difference (x8)"},
+    {"T", "tone mapping: pbr-neutral, aces, none"},
     {"F1", "this help"},
     {"F2", "render mode: shaded, wireframe, wire overlay, depth, normals,"},
     {"", "overdraw heat map, tile bins"},

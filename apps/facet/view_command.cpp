@@ -40,6 +40,8 @@ CLI::App* add_view_command(CLI::App& app, ViewOptions& o) {
   cmd->add_option("--threads", o.threads, "Worker threads, 0 = all cores, at most 256")
       ->capture_default_str();
   cmd->add_option("--msaa", o.msaa, msaa_help(4) + "; F10 cycles it");
+  cmd->add_option("--tone-mapping", o.tone_mapping,
+                  tone_mapping_help(ToneMapping::pbr_neutral) + "; T cycles it");
   cmd->add_option("--frames", o.frames, "Render this many frames, then quit (0: until closed)")
       ->capture_default_str();
   cmd->add_option("--screenshot", o.screenshot, "Save the last frame to this PNG or PPM file");
@@ -53,7 +55,7 @@ CLI::App* add_view_command(CLI::App& app, ViewOptions& o) {
       ->capture_default_str();
   cmd->add_flag("--fullscreen", o.fullscreen, "Start fullscreen (F11 toggles)");
   cmd->add_option("--backend", o.backend,
-                  "Renderer at the start: facet or gl (its OpenGL twin); F10 switches between "
+                  "Renderer at the start: facet or gl (its OpenGL twin); B switches between "
                   "them and their difference")
       ->capture_default_str();
   return cmd;
@@ -63,6 +65,7 @@ int run_view(const ViewOptions& o) {
   ImageSize size = parse_size("--size", o.size);
   check_threads(o.threads);
   check_msaa(o.msaa);
+  const ToneMapping tone_mapping = parse_tone_mapping(o.tone_mapping);
   if (o.frames < 0) throw Error("--frames: must be 0 (until closed) or more");
   if (o.time && !std::isfinite(*o.time)) throw Error("--time: must be a finite number of seconds");
   if (!o.screenshot.empty()) check_writable(o.screenshot);
@@ -93,6 +96,7 @@ int run_view(const ViewOptions& o) {
   setup.settings.size = size;
   setup.settings.threads = o.threads;
   setup.settings.msaa = o.msaa;
+  setup.settings.tone_mapping = tone_mapping;
   setup.settings.fov_degrees = setup.start.fov_y_degrees;
   setup.settings.overlay = o.overlay == "on" || (o.overlay == "auto" && o.frames == 0);
   setup.settings.fullscreen = o.fullscreen;

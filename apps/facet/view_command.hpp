@@ -22,7 +22,8 @@ struct ViewOptions {
   std::string camera_path;       // empty: the camera follows input
   std::string overlay = "auto";  // auto: on unless scripted (--frames)
   bool fullscreen = false;
-  std::string backend = "facet";  // or gl (render_backend.hpp); F10 switches at run time
+  std::string backend = "facet";             // or gl (render_backend.hpp); B switches at run time
+  std::string tone_mapping = "pbr-neutral";  // T cycles it
 };
 
 // Adds the `view` subcommand and its flags to app; options are filled on parse.

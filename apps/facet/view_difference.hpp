@@ -1,4 +1,4 @@
-// The viewer's third backend mode (F10): where facet's image and its OpenGL twin's disagree,
+// The viewer's third backend mode (B): where facet's image and its OpenGL twin's disagree,
 // each channel's difference amplified so that one level of 255 shows.
 #pragma once
 

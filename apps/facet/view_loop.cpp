@@ -35,9 +35,10 @@ std::string next_file_name(const char* prefix) {
   }
 }
 
-// The keys that change a view setting (apply_setting_key): F1 to F11, and B for the backend.
+// The keys that change a view setting (apply_setting_key): F1 to F11, B for the backend and T
+// for the tone mapping.
 bool is_setting_key(SDL_Keycode key) {
-  return (key >= SDLK_F1 && key <= SDLK_F11) || key == SDLK_b;
+  return (key >= SDLK_F1 && key <= SDLK_F11) || key == SDLK_b || key == SDLK_t;
 }
 
 }  // namespace
@@ -65,10 +66,11 @@ RenderSettings ViewLoop::gl_settings() const {
   RenderSettings rs;
   rs.clear_color = setup_.clear_color;
   rs.msaa = settings_.msaa;
+  rs.tone_mapping = settings_.tone_mapping;
   return rs;
 }
 
-// Asked for with F10: without OpenGL the viewer says why and goes back to facet's renderer.
+// Asked for with B: without OpenGL the viewer says why and goes back to facet's renderer.
 bool ViewLoop::make_gl() {
   if (gl_ || settings_.backend == ViewBackend::facet) return true;
   try {
@@ -89,6 +91,7 @@ void ViewLoop::make_renderer() {
   rs.msaa = settings_.msaa;
   rs.clear_color = setup_.clear_color;
   rs.debug_view = settings_.debug_view();
+  rs.tone_mapping = settings_.tone_mapping;
   renderer_ = std::make_unique<Renderer>(rs);
 }
 
@@ -123,7 +126,8 @@ void ViewLoop::apply(const SettingUpdate& update) {
     case SettingChange::threads:
       make_renderer();
       break;
-    case SettingChange::msaa:  // both renderers draw with the new sample count
+    case SettingChange::msaa:  // both renderers draw with the new setting
+    case SettingChange::tone_mapping:
       make_renderer();
       if (gl_) {
         gl_.reset();
@@ -206,6 +210,7 @@ void ViewLoop::render(double now, double dt) {
   info.lines = renderer_->stats().lines_drawn;
   info.threads = settings_.threads;
   info.msaa = settings_.msaa;
+  info.tone_mapping = to_string(settings_.tone_mapping);
   info.mode = to_string(settings_.mode);
   info.shading = settings_.shading_name();
   info.camera = setup_.camera_path                      ? "camera path"

@@ -42,11 +42,12 @@ void stats_panel(const OverlayInfo& info) {
     } else {
       ImGui::Text("msaa: off (F10)");
     }
+    ImGui::Text("tone mapping: %s (T)", info.tone_mapping.c_str());
     ImGui::Text("mode: %s", info.mode.c_str());
     ImGui::Text("shading: %s", info.shading.c_str());
     ImGui::Text("camera: %s", info.camera.c_str());
     if (!info.sound.empty()) ImGui::Text("sound: %s", info.sound.c_str());
-    ImGui::Text("backend: %s (F10), %.1f ms", info.backend.c_str(), info.backend_ms);
+    ImGui::Text("backend: %s (B), %.1f ms", info.backend.c_str(), info.backend_ms);
     if (!info.gl_name.empty()) ImGui::Text("OpenGL: %s", info.gl_name.c_str());
     ImGui::TextDisabled("F1 help");
   }

@@ -32,9 +32,10 @@ struct OverlayInfo {
   std::uint64_t lines = 0;      // FrameStats::lines_drawn
   int threads = 0;              // 0 = all cores
   int msaa = 1;                 // samples per pixel
+  std::string tone_mapping;     // "pbr-neutral", "aces" or "none" (T)
   std::string mode, shading, camera;
   std::string sound;      // "on", "muted", "off (no device)"; empty: the scene has none
-  std::string backend;    // "facet", "gl" or "difference" (F10)
+  std::string backend;    // "facet", "gl" or "difference" (B)
   double backend_ms = 0;  // what the backend took to draw the frame
   std::string gl_name;    // the OpenGL renderer, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
 };

@@ -162,6 +162,13 @@ SettingUpdate apply_setting_key(int keycode, ViewSettings& s) {
       u = {SettingChange::backend, "backend: "};
       u.message += to_string(s.backend);
       return u;
+    case SDLK_t:
+      s.tone_mapping = s.tone_mapping == ToneMapping::pbr_neutral ? ToneMapping::aces
+                       : s.tone_mapping == ToneMapping::aces      ? ToneMapping::none
+                                                                  : ToneMapping::pbr_neutral;
+      u = {SettingChange::tone_mapping, "tone mapping: "};
+      u.message += to_string(s.tone_mapping);
+      return u;
     case SDLK_F11:
       s.fullscreen = !s.fullscreen;
       return {SettingChange::fullscreen, s.fullscreen ? "fullscreen" : "windowed"};

@@ -1,6 +1,6 @@
-// The viewer's adjustable settings and the function keys that change them (F1-F11): render
-// mode, shading model, field of view, render resolution, threads, overlay, anti-aliasing, help,
-// fullscreen.
+// The viewer's adjustable settings and the keys that change them (F1-F11, B, T): render mode,
+// shading model, field of view, render resolution, threads, overlay, anti-aliasing, help,
+// fullscreen, backend, tone mapping.
 // Each change comes back with a one-line description for the overlay's change panel.
 #pragma once
 
@@ -18,7 +18,7 @@ namespace facet::cli {
 enum class RenderMode { shaded, wireframe, wire_overlay, depth, normals, overdraw, tile_bins };
 std::string_view to_string(RenderMode mode);
 
-// F10 cycles these: which renderer draws the frame (facet's own or its OpenGL twin), or the
+// B cycles these: which renderer draws the frame (facet's own or its OpenGL twin), or the
 // difference of the two, amplified (view_difference.hpp).
 enum class ViewBackend { facet, gl, difference };
 std::string_view to_string(ViewBackend backend);
@@ -34,6 +34,7 @@ struct ViewSettings {
   bool help = false;
   bool fullscreen = false;
   ViewBackend backend = ViewBackend::facet;
+  ToneMapping tone_mapping = ToneMapping::pbr_neutral;  // T cycles pbr-neutral, aces, none
 
   // The material shading model the mode and F7 ask for; empty: the material's own.
   std::optional<ShadingModel> forced_shading() const;
@@ -52,7 +53,8 @@ enum class SettingChange {
   overlay,
   help,
   fullscreen,
-  backend
+  backend,
+  tone_mapping
 };
 
 struct SettingUpdate {
@@ -60,7 +62,8 @@ struct SettingUpdate {
   std::string message;  // e.g. "render mode: wireframe"
 };
 
-// Applies a setting key (an SDL_Keycode): F1-F11, or B for the backend; others change nothing.
+// Applies a setting key (an SDL_Keycode): F1-F11, B for the backend, T for the tone mapping;
+// others change nothing.
 SettingUpdate apply_setting_key(int keycode, ViewSettings& settings);
 
 // Render resolutions that F5/F6 step through.

@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "facet/camera.hpp"
+#include "facet/color.hpp"
 #include "facet/framebuffer.hpp"
 #include "facet/light.hpp"
 #include "facet/material.hpp"
@@ -34,6 +35,7 @@ struct RenderSettings {
   int tile_size = 64;                             // tile edge in pixels: 16, 32, 64 or 128
   glm::vec4 clear_color{0.0f, 0.0f, 0.0f, 1.0f};  // linear RGBA
   float exposure = 0.0f;  // in stops: colors are scaled by 2^exposure before output
+  ToneMapping tone_mapping = ToneMapping::none;
   DebugView debug_view = DebugView::none;
   // Multisample anti-aliasing: samples per pixel, 1 (off), 2, 4, 8 or 16, at the D3D11 / OpenGL
   // standard sample positions. Coverage and depth are per sample, shading once per pixel per

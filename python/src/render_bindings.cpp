@@ -126,12 +126,19 @@ ColorFormat color_format(const std::string& name) {
   throw Error("render: color_format must be 'uint8' or 'float', got '" + name + "'");
 }
 
+ToneMapping tone_mapping_named(const std::string& name) {
+  if (name == "none") return ToneMapping::none;
+  if (name == "pbr-neutral") return ToneMapping::pbr_neutral;
+  if (name == "aces") return ToneMapping::aces;
+  throw Error("Renderer: tone_mapping must be 'none', 'pbr-neutral' or 'aces', got '" + name + "'");
+}
+
 // facet.Renderer: a facet::Renderer and the size of the images it makes. One frame at a time
 // each (the mutex); several renderers render at once.
 class PyRenderer {
  public:
   PyRenderer(int width, int height, int threads, int msaa, py::handle background,
-             py::handle exposure, int tile_size)
+             py::handle exposure, const std::string& tone_mapping, int tile_size)
       : width_(width), height_(height) {
     if (width < 1 || height < 1 || width > Framebuffer::kMaxSize ||
         height > Framebuffer::kMaxSize) {
@@ -145,6 +152,7 @@ class PyRenderer {
     settings.tile_size = tile_size;
     settings.clear_color = rgba(background, {"Renderer", "background"});
     settings.exposure = number(exposure, {"Renderer", "exposure"});
+    settings.tone_mapping = tone_mapping_named(tone_mapping);
     renderer_ = std::make_unique<Renderer>(settings);  // its errors say "renderer: ..."
   }
 
@@ -245,14 +253,16 @@ void bind_render(py::module_& m) {
   py::class_<PyRenderer>(m, "Renderer", R"doc(
 Renders scenes into width x height images. threads: worker threads (0: all cores). msaa:
 samples per pixel for anti-aliasing, 1 (off), 2, 4, 8 or 16; the color is resolved from them,
-the other outputs take each pixel centre's surface. background: linear RGB(A) where nothing is drawn. exposure: in stops, colors are
-scaled by 2^exposure. tile_size: 16, 32, 64 or 128. The GIL is released while a frame renders,
+the other outputs take each pixel centre's surface. background: linear RGB(A) where nothing is
+drawn. exposure: in stops, colors are scaled by 2^exposure. tone_mapping: how colors brighter
+than white are shown, 'none' (clipped; a float color keeps them), 'pbr-neutral' (Khronos PBR
+Neutral) or 'aces' (ACES filmic); the background color is not mapped. tile_size: 16, 32, 64 or 128. The GIL is released while a frame renders,
 so renderers in several Python threads render at once; one renderer renders one frame at a
 time.)doc")
-      .def(py::init<int, int, int, int, py::handle, py::handle, int>(), py::arg("width"),
-           py::arg("height"), py::arg("threads") = 0, py::arg("msaa") = 1, py::kw_only(),
-           py::arg("background") = py::make_tuple(0.0, 0.0, 0.0, 1.0), py::arg("exposure") = 0.0,
-           py::arg("tile_size") = 64)
+      .def(py::init<int, int, int, int, py::handle, py::handle, const std::string&, int>(),
+           py::arg("width"), py::arg("height"), py::arg("threads") = 0, py::arg("msaa") = 1,
+           py::kw_only(), py::arg("background") = py::make_tuple(0.0, 0.0, 0.0, 1.0),
+           py::arg("exposure") = 0.0, py::arg("tone_mapping") = "none", py::arg("tile_size") = 64)
       .def("render", &PyRenderer::render, py::arg("scene"), py::arg("camera") = py::none(),
            py::arg("outputs") = py::make_tuple("color", "depth"), py::kw_only(),
            py::arg("color_format") = "uint8", py::arg("normal_space") = "world", R"doc(

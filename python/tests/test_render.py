@@ -38,6 +38,25 @@ def test_float_color_is_linear():
     assert np.abs(frames["uint8"][24, 32, :3] - srgb8([0.5, 0.25, 0.125])).max() <= 1
 
 
+def test_tone_mapping_keeps_highlights_and_the_background():
+    vertices, faces, _ = quad(half=0.5)
+    scene = facet.Scene()
+    scene.add_mesh(vertices, faces, material=unlit((0.75, 0.1875, 0.0375)))  # x 8: (6, 1.5, 0.3)
+    colors = {
+        curve: facet.Renderer(64, 48, background=(0.1, 0.2, 0.3), exposure=3, tone_mapping=curve)
+        .render(scene, front_camera(), ["color"])["color"]
+        for curve in ("none", "pbr-neutral", "aces")
+    }
+    assert tuple(colors["none"][24, 32, :3]) == (255, 255, 149)  # clipped
+    for curve in ("pbr-neutral", "aces"):
+        red, green, blue = colors[curve][24, 32, :3]
+        assert red > 200 and green < 250, curve  # bright, its hue kept: not clipped to yellow
+        assert red > green > blue, curve
+        assert np.array_equal(colors[curve][0, 0], colors["none"][0, 0])  # not mapped
+    with pytest.raises(facet.Error, match="tone_mapping must be"):
+        facet.Renderer(8, 8, tone_mapping="filmic")
+
+
 @pytest.mark.parametrize("distance", [0.75, 4.0, 37.0])
 def test_depth_is_the_distance_along_the_camera_axis(distance):
     # A wall across the upper half of the view at `distance`, nothing below.

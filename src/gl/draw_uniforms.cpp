@@ -76,7 +76,7 @@ void set_frame_uniforms(Program& p, const FrameState& frame) {
   glUniform1i(p.uniform("u_fog_mode"), fog.mode == FogMode::linear        ? 1
                                        : fog.mode == FogMode::exponential ? 2
                                                                           : 0);
-  set_vec3(p, "u_fog_color", fog.color);
+  set_vec3(p, "u_fog_color", frame.fog_color);
   glUniform1f(p.uniform("u_fog_start"), fog.start);
   glUniform1f(p.uniform("u_fog_end"), fog.end);
   glUniform1f(p.uniform("u_fog_density"), fog.density);

@@ -19,6 +19,9 @@ inline constexpr int kEnvironmentUnit = 6;
 struct FrameState {
   std::uint64_t number = 0;  // counts frames from 1, so a program knows whose constants it holds
   const Lighting* lighting = nullptr;
+  // The fog color drawn: the lighting's, or under tone mapping what the curve shows as it
+  // (facet::inverse_tone_map), as facet's frame fogs.
+  glm::vec3 fog_color{0.0f};
   glm::vec3 eye{0.0f};            // Camera::shading_eye
   glm::vec3 view_depth{1, 0, 0};  // from_w, from_z, offset (shading/uniforms.hpp's ViewDepth)
   float depth_view_near = 0.1f, depth_view_far = 100.0f;

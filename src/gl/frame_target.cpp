@@ -112,7 +112,7 @@ void FrameTarget::bind(int width, int height, int samples) {
   glViewport(0, 0, width, height);
 }
 
-void FrameTarget::read(Framebuffer& target, float exposure) {
+void FrameTarget::read(Framebuffer& target, const Output& output) {
   const int w = width_, h = height_;
   if (samples_ > 1) {  // resolve: each pixel's samples averaged; depth takes one
     glBindFramebuffer(GL_READ_FRAMEBUFFER, ms_framebuffer_);
@@ -122,14 +122,29 @@ void FrameTarget::read(Framebuffer& target, float exposure) {
       glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
     }
   }
-  std::vector<float> rgba(static_cast<std::size_t>(w) * h * 4);
+  std::vector<glm::vec4> rgba(static_cast<std::size_t>(w) * h);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
   glPixelStorei(GL_PACK_ALIGNMENT, 4);
   glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, rgba.data());
-  const float scale = std::exp2(exposure);
+  const bool mapped = output.tone_mapping != ToneMapping::none;
+  std::vector<float> depth;
+  if (target.has_depth() || (mapped && !output.maps_background)) {
+    depth.resize(static_cast<std::size_t>(w) * h);
+    glReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+  }
+  float scale = std::exp2(output.exposure);
+  if (mapped) {  // the exposure goes into the mapped colors
+    std::vector<glm::vec4> drawn = rgba;
+    tone_map(output.tone_mapping, drawn, output.exposure);
+    for (std::size_t i = 0; i < rgba.size(); ++i) {
+      const bool cleared = !output.maps_background && depth[i] == 1.0f;
+      rgba[i] = cleared ? glm::vec4(glm::vec3(rgba[i]) * scale, rgba[i].a) : drawn[i];
+    }
+    scale = 1.0f;
+  }
   // GL's first row is the bottom one; facet's the top one.
   for (int y = 0; y < h; ++y) {
-    const float* from = rgba.data() + static_cast<std::size_t>(h - 1 - y) * w * 4;
+    const float* from = &rgba[static_cast<std::size_t>(h - 1 - y) * w].x;
     const std::size_t row = static_cast<std::size_t>(y) * w * 4;
     if (target.format() == ColorFormat::rgba8_srgb) {
       static const Srgb8Encoder encode;
@@ -147,8 +162,6 @@ void FrameTarget::read(Framebuffer& target, float exposure) {
     }
   }
   if (!target.has_depth()) return;
-  std::vector<float> depth(static_cast<std::size_t>(w) * h);
-  glReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
   for (int y = 0; y < h; ++y) {
     std::copy_n(depth.data() + static_cast<std::size_t>(h - 1 - y) * w, w,
                 target.depth().data() + static_cast<std::size_t>(y) * w);

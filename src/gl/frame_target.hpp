@@ -5,6 +5,7 @@
 // color is linear float, so the average is in linear light, as facet's resolve.
 #pragma once
 
+#include "facet/color.hpp"
 #include "facet/framebuffer.hpp"
 #include "gl/gl_api.hpp"
 
@@ -22,10 +23,17 @@ class FrameTarget {
   void bind(int width, int height, int samples);
   // The samples a pixel of the bound target (after the clamp).
   int samples() const { return samples_; }
+  // How the drawn colors become the target's: facet's resolve (pipeline/output/output.hpp)
+  // as the twin can do it, after GL's resolve of the samples rather than per sample.
+  struct Output {
+    float exposure = 0.0f;  // in stops
+    ToneMapping tone_mapping = ToneMapping::none;
+    bool maps_background = false;  // the sky is drawn: mapped too; else the clear color is not
+  };
   // Resolves the samples if there are several, then reads the drawn image into target (same
-  // size), its color scaled by 2^exposure. The depth image takes one sample's depth (GL's
-  // blit of depth picks one; facet's takes sample 0).
-  void read(Framebuffer& target, float exposure);
+  // size), its color scaled by 2^exposure and tone mapped. The depth image takes one sample's
+  // depth (GL's blit of depth picks one; facet's takes sample 0).
+  void read(Framebuffer& target, const Output& output);
 
  private:
   void make(int width, int height, int samples);

@@ -2,10 +2,13 @@
 // in facet's order, the opaque ones, the sky where nothing opaque was drawn, the blended ones back
 // to front, then the readback. Each draw picks a program for its shading model (glsl_fragment.cpp),
 // as facet's renderer picks a specialised raster loop (pipeline/record/pipeline_table.cpp).
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "facet/error.hpp"
 #include "facet/gl.hpp"
@@ -61,6 +64,18 @@ const char* model_define(ShadingModel model) {
 bool always_opaque(ShadingModel m) {
   return m == ShadingModel::depth || m == ShadingModel::normals || m == ShadingModel::texcoords ||
          m == ShadingModel::wireframe;
+}
+
+// The tone mapping of a frame: none when every draw shows data (the depth, normals and
+// texture-coordinate views), as facet's resolve leaves frames of display values alone.
+ToneMapping tone_mapping_of(const std::vector<GlDraw>& draws, const RenderSettings& settings) {
+  const bool data_only =
+      !draws.empty() && std::all_of(draws.begin(), draws.end(), [](const GlDraw& draw) {
+        const ShadingModel m = draw.material->shading;
+        return m == ShadingModel::depth || m == ShadingModel::normals ||
+               m == ShadingModel::texcoords;
+      });
+  return data_only ? ToneMapping::none : settings.tone_mapping;
 }
 
 // Blending as facet's raster loop writes a pixel (pixel_writer.hpp's blend_into): "over" with
@@ -224,6 +239,14 @@ struct GlState {
     frame.display_exact = out.format() == ColorFormat::rgba32f;
     frame.viewport = {out.width(), out.height()};
     const std::vector<GlDraw> draws = gl::ordered_draws(scene, camera);
+    const ToneMapping tone_mapping = tone_mapping_of(draws, settings);
+    frame.fog_color = scene.lighting.fog.color;
+    if (tone_mapping != ToneMapping::none) {
+      const float scale = std::exp2(settings.exposure);
+      frame.fog_color =
+          inverse_tone_map(tone_mapping, glm::min(frame.fog_color * scale, glm::vec3(1.0f))) /
+          scale;
+    }
     gl::depth_view_range(draws, camera, frame.depth_view_near, frame.depth_view_far);
 
     bind_environment(scene.lighting.environment);
@@ -247,7 +270,8 @@ struct GlState {
       this->draw(draw, frame);
     }
     if (sky_pending) draw_sky(frame);
-    target.read(out, settings.exposure);
+    target.read(out,
+                {settings.exposure, tone_mapping, scene.lighting.environment.show_as_background});
     resources.free_unused();
     last_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

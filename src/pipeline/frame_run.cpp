@@ -2,6 +2,7 @@
 // clip and setup (geometry/, setup/) — then binning (bin/), then per tile in parallel: clear,
 // raster + shade, resolve (raster/render_tile.cpp, output/).
 #include <algorithm>
+#include <cmath>
 #include <glm/matrix.hpp>
 
 #include "core/parallel.hpp"
@@ -23,19 +24,25 @@ using pipeline::ms_since;
 using pipeline::TileBuffers;
 
 // Whether every color this frame writes into its tiles is a display value (an 8-bit code, as
-// the debug views and the glmark2 scenes' models write): then the tiles hold code / 255, which
-// resolve rounds back to the code, instead of the code's decoded linear value, which resolve's
-// sRGB encode turns back into the same code with far more work a pixel than the rounding. The
-// bytes are the same either way. Only for 8-bit sRGB targets at exposure 0, without fog,
-// environment, debug view, lines or points (their colors are linear), when every draw's model
-// writes display values unblended. Decided after geometry, which counted the lines and points.
-bool Renderer::Impl::display_referred_frame(const Framebuffer& target) const {
-  if (target.format() != ColorFormat::rgba8_srgb || settings.exposure != 0.0f) return false;
+// the debug views and the glmark2 scenes' models write): without fog, environment, debug view,
+// lines or points (their colors are linear), every draw's model writes display values
+// unblended. Such a frame is not tone mapped. Decided after geometry, which counted the lines
+// and points.
+bool Renderer::Impl::draws_only_display_values() const {
   if (background.environment != nullptr || settings.debug_view != DebugView::none) return false;
   if (lighting.fog.mode != FogMode::none) return false;
   if (frame.stats.lines_drawn > 0 || frame.stats.points_drawn > 0) return false;
   return std::all_of(frame.draws.begin(), frame.draws.end(),
                      [](const pipeline::DrawRecord& d) { return d.pipeline.display_referred; });
+}
+
+// A frame of display values into an 8-bit sRGB target at exposure 0: the tiles hold code / 255,
+// which resolve rounds back to the code, instead of the code's decoded linear value, which
+// resolve's sRGB encode turns back into the same code with far more work a pixel than the
+// rounding. The bytes are the same either way.
+bool Renderer::Impl::display_referred_frame(const Framebuffer& target) const {
+  return target.format() == ColorFormat::rgba8_srgb && settings.exposure == 0.0f &&
+         draws_only_display_values();
 }
 
 // Transparency: opaque (and cut-out) draws first in submission order, then blended draws back
@@ -168,6 +175,16 @@ void Renderer::Impl::run(Framebuffer& target) {
   frame.stats.ms_geometry = ms_since(start);
   const bool referred = display_referred_frame(target);
   background.display_referred = frame.stats.display_referred = referred;
+  resolve.scale = std::exp2(settings.exposure);
+  resolve.display_referred = referred;
+  resolve.tone_mapping = draws_only_display_values() ? ToneMapping::none : settings.tone_mapping;
+  resolve.maps_background = background.environment != nullptr;
+  // Fog fades toward what the curve shows as the fog color after the exposure, as it shows a
+  // clear color of that value (facet::inverse_tone_map).
+  if (resolve.tone_mapping != ToneMapping::none) {
+    const glm::vec3 shown = glm::min(lighting.fog.color * resolve.scale, glm::vec3(1.0f));
+    lighting.fog.color = inverse_tone_map(resolve.tone_mapping, shown) / resolve.scale;
+  }
   // A float target keeps display values as code / 255 whatever else the frame draws (no sRGB
   // encode follows to undo a decode), and the debug views' values unrounded.
   uniforms.display_exact = target.format() == ColorFormat::rgba32f;

@@ -80,6 +80,7 @@ void Renderer::Impl::run_extra_outputs(Framebuffer& target) {
   const RenderSettings color_settings = settings;
   const Lighting color_lighting = lighting;
   settings.exposure = 0.0f;
+  settings.tone_mapping = ToneMapping::none;
   settings.debug_view = DebugView::none;
   settings.clear_color = glm::vec4(0.0f);
   // Ids, normals and depths are not averaged: each pixel takes its centre's winner.

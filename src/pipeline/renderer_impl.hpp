@@ -58,6 +58,7 @@ struct Renderer::Impl {
   std::vector<std::uint64_t> tile_pixels_shaded;
   std::vector<double> tile_ms, tile_resolve_ms;  // per tile: its task, and its resolve
   pipeline::Background background;
+  pipeline::Resolve resolve;  // set when the frame runs
   Camera camera;
   Lighting lighting;
   bool recording = false;
@@ -111,6 +112,7 @@ struct Renderer::Impl {
   void run_extra_outputs(Framebuffer& target);
   void order_draws();
   void set_depth_view_range();
+  bool draws_only_display_values() const;
   bool display_referred_frame(const Framebuffer& target) const;
 };
 

@@ -71,7 +71,7 @@ void resolve_overdraw(const TileContext& tile, Framebuffer& target) {
 // The shaded tile, tinted by its bin size, with a dark outline so the tile grid shows.
 void resolve_tile_bins(const TileContext& tile, std::size_t bin_size, float scale,
                        Framebuffer& target) {
-  resolve_tile(tile, scale, false, target);
+  resolve_tile(tile, Resolve{scale}, target);
   const glm::vec3 tint = heat(static_cast<float>(bin_size), 10.0f);
   for (int y = tile.y0; y < tile.y1; ++y) {
     std::size_t row = static_cast<std::size_t>(y) * target.width();
@@ -103,7 +103,7 @@ void resolve_debug_tile(const TileContext& tile, DebugView view, std::size_t bin
   } else if (view == DebugView::tile_bins) {
     resolve_tile_bins(tile, bin_size, scale, target);
   } else {
-    resolve_tile(tile, scale, false, target);
+    resolve_tile(tile, Resolve{scale}, target);
   }
 }
 

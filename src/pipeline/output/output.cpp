@@ -106,40 +106,68 @@ void fill_background(TileContext& tile, const Background& background) {
 
 namespace {
 
+// Tone maps count colors of the tile from index first (of its color and depth planes) into out,
+// exposure included.
+void tone_map(const TileContext& tile, const Resolve& resolve, std::ptrdiff_t first, int count,
+              glm::vec4* out) {
+  const float* depth = resolve.maps_background ? nullptr : tile.depth + first;
+  tile.frame->kernels->tone_map_row(resolve.tone_mapping, tile.color + first, depth, kClearDepth,
+                                    count, resolve.scale, out);
+}
+
 // The MSAA resolve of one tile row: each pixel's samples averaged in linear light (in sample
 // order, then scaled: the same sum on every path), or its one color where they are alike.
-void average_samples(const TileContext& tile, std::ptrdiff_t first, int count, glm::vec4* out) {
+// Tone mapped, each sample is mapped before the average.
+void average_samples(const TileContext& tile, const Resolve& resolve, std::ptrdiff_t first,
+                     int count, glm::vec4* out) {
+  const bool mapped = resolve.tone_mapping != ToneMapping::none;
+  if (mapped) {
+    tone_map(tile, resolve, first, count, out);
+  } else {
+    std::copy_n(tile.color + first, count, out);
+  }
   const float inverse = 1.0f / static_cast<float>(tile.samples);
   for (int x = 0; x < count; ++x) {
     const std::ptrdiff_t pixel = first + x;
-    if (!tile.split[pixel]) {
-      out[x] = tile.color[pixel];
-      continue;
+    if (!tile.split[pixel]) continue;
+    glm::vec4 sum = out[x];
+    for (int s = 1; s < tile.samples; ++s) {
+      const std::ptrdiff_t sample = s * tile.sample_plane + pixel;
+      glm::vec4 color;
+      if (mapped) {
+        tone_map(tile, resolve, sample, 1, &color);
+      } else {
+        color = tile.color[sample];
+      }
+      sum += color;
     }
-    glm::vec4 sum = tile.color[pixel];
-    for (int s = 1; s < tile.samples; ++s) sum += tile.color[s * tile.sample_plane + pixel];
     out[x] = sum * inverse;
   }
 }
 
 }  // namespace
 
-void resolve_tile(const TileContext& tile, float scale, bool display_referred,
-                  Framebuffer& target) {
-  glm::vec4 averaged[kMaxTileSize];
+void resolve_tile(const TileContext& tile, const Resolve& resolve, Framebuffer& target) {
+  glm::vec4 resolved[kMaxTileSize];
+  // Mapped colors have the exposure in them.
+  const float scale = resolve.tone_mapping == ToneMapping::none ? resolve.scale : 1.0f;
   for (int y = tile.y0; y < tile.y1; ++y) {
-    const glm::vec4* color = tile.color + static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride;
+    const std::ptrdiff_t first = static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride;
+    const int width = tile.x1 - tile.x0;
+    const glm::vec4* color = tile.color + first;
     if (tile.samples > 1) {
-      average_samples(tile, static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride,
-                      tile.x1 - tile.x0, averaged);
-      color = averaged;
+      average_samples(tile, resolve, first, width, resolved);
+      color = resolved;
+    } else if (resolve.tone_mapping != ToneMapping::none) {
+      tone_map(tile, resolve, first, width, resolved);
+      color = resolved;
     }
-    const float* depth = tile.depth + static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride;
+    const float* depth = tile.depth + first;
     std::size_t row = static_cast<std::size_t>(y) * target.width();
-    store_row(*tile.frame->kernels, target, row + tile.x0, color, tile.x1 - tile.x0, scale,
-              display_referred);
+    store_row(*tile.frame->kernels, target, row + tile.x0, color, width, scale,
+              resolve.display_referred);
     if (target.has_depth()) {
-      std::copy_n(depth, tile.x1 - tile.x0, target.depth().data() + row + tile.x0);
+      std::copy_n(depth, width, target.depth().data() + row + tile.x0);
     }
   }
 }

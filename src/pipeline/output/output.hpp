@@ -6,6 +6,7 @@
 
 #include "facet/framebuffer.hpp"
 #include "facet/light.hpp"
+#include "facet/renderer.hpp"
 #include "pipeline/raster/raster.hpp"
 
 namespace facet::pipeline {
@@ -23,6 +24,17 @@ struct Background {
   int width = 1, height = 1;  // framebuffer size
 };
 
+// How resolve turns a tile's linear colors into the target's.
+struct Resolve {
+  float scale = 1.0f;  // the exposure, 2^stops
+  // The tiles hold display values (Background::display_referred): rounded, never mapped.
+  bool display_referred = false;
+  ToneMapping tone_mapping = ToneMapping::none;
+  // The background is the environment, mapped as what is drawn is; else only the pixels drawn
+  // (their depth no longer the clear depth) are mapped, never the clear color.
+  bool maps_background = false;
+};
+
 // The depth a tile starts at: the far plane.
 inline constexpr float kClearDepth = 1.0f;
 
@@ -38,13 +50,12 @@ void fill_background(TileContext& tile, const Background& background);
 // A linear color as the display value a display-referred tile holds for it: its sRGB codes
 // / 255 (alpha is never encoded).
 glm::vec4 display_value_of(const glm::vec4& linear);
-// Writes the tile to the framebuffer; colors are scaled by `scale` (exposure) first. A
-// multisampled tile's samples are averaged in linear light first (the depth image takes sample
-// 0's depth). In a
-// display-referred frame (Background::display_referred) the tile holds display values, which
-// an 8-bit target takes as they are, rounded to 8 bits, instead of sRGB-encoded (scale is then
-// 1).
-void resolve_tile(const TileContext& tile, float scale, bool display_referred, Framebuffer& target);
+// Writes the tile to the framebuffer; colors are scaled by the exposure and tone mapped first
+// (tone_map_row.hpp). A multisampled tile's samples are averaged in linear light, each
+// mapped first (the depth image takes sample 0's depth). In a display-referred frame the tile
+// holds display values, which an 8-bit target takes as they are, rounded to 8 bits, instead
+// of sRGB-encoded (scale is then 1).
+void resolve_tile(const TileContext& tile, const Resolve& resolve, Framebuffer& target);
 // A tile with an empty bin under a plain clear color is written straight from it.
 void resolve_cleared_tile(const TileContext& tile, const glm::vec4& color, float scale,
                           Framebuffer& target);

@@ -59,12 +59,11 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
   const std::uint32_t* bin = frame.bin_entries.data() + frame.bin_start[index];
   const std::uint32_t* bin_end = frame.bin_entries.data() + frame.bin_start[index + 1];
   const std::size_t bin_size = static_cast<std::size_t>(bin_end - bin);
-  const float scale = std::exp2(settings.exposure);
   const DebugView debug = settings.debug_view;
   if (bin == bin_end && !background.environment && debug == DebugView::none) {
     // Lazy clear: nothing drawn here, write the clear values directly.
     auto resolve_start = Clock::now();
-    pipeline::resolve_cleared_tile(tile, settings.clear_color, scale, target);
+    pipeline::resolve_cleared_tile(tile, settings.clear_color, resolve.scale, target);
     tile_resolve_ms[index] = ms_since(resolve_start);
     return;
   }
@@ -131,9 +130,9 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
   if (background_pending) pipeline::fill_background(tile, background);
   auto resolve_start = Clock::now();
   if (debug == DebugView::none) {
-    pipeline::resolve_tile(tile, scale, background.display_referred, target);
+    pipeline::resolve_tile(tile, resolve, target);
   } else {
-    pipeline::resolve_debug_tile(tile, debug, bin_size, scale, target);
+    pipeline::resolve_debug_tile(tile, debug, bin_size, resolve.scale, target);
   }
   tile_resolve_ms[index] = ms_since(resolve_start);
   tile_pixels_shaded[index] = tile.pixels_shaded;

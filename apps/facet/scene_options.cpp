@@ -147,6 +147,7 @@ void apply_environment(const SceneOptions& o, Scene& scene) {
     env.projection = parse_environment_projection(*o.environment_projection);
   env.reflections = true;
   env.show_as_background = true;
+  env.image_based_lighting = true;  // it lights PBR materials, as f3d's --hdri does
 }
 
 // The framing --up AXIS, --azimuth and --elevation describe; each value checked.
@@ -231,8 +232,9 @@ void add_scene_options(CLI::App& cmd, SceneOptions& o, std::vector<std::string>*
                  "point,X,Y,Z[,R,G,B[,I]] or spot,X,Y,Z,DX,DY,DZ[,INNER,OUTER[,R,G,B[,I]]]")
       ->allow_extra_args(false);  // one light per --light: a model path after it stays the model
   cmd.add_option("--env", o.environment,
-                 "Environment image (equirectangular or sphere map) for reflections and the "
-                 "background, or 'sky' for a procedural sky gradient");
+                 "Environment image (equirectangular or sphere map) for reflections, the "
+                 "background and the light of PBR materials (image-based lighting), or 'sky' for "
+                 "a procedural sky gradient");
   cmd.add_option("--env-projection", o.environment_projection,
                  "equirectangular (default) or sphere");
   cmd.add_option("--fog", o.fog,

@@ -53,6 +53,10 @@ struct Environment {
   float intensity = 1.0f;
   bool show_as_background = false;  // draw the environment (or sky gradient) behind the scene
   bool reflections = false;         // reflective materials and PBR specular sample it
+  // Image-based lighting: physically based materials take their ambient light from the
+  // environment, diffuse (its irradiance) and specular (blurred by roughness), instead of
+  // Lighting::ambient. docs/pipeline.md, "Image-based lighting".
+  bool image_based_lighting = false;
   glm::vec3 sky_zenith{0.18f, 0.35f, 0.70f};  // procedural sky, linear RGB
   glm::vec3 sky_horizon{0.75f, 0.82f, 0.90f};
   glm::vec3 ground{0.25f, 0.23f, 0.20f};

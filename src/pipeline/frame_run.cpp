@@ -135,6 +135,11 @@ void Renderer::Impl::run(Framebuffer& target) {
   uniforms.lights = frame.lights.data();
   uniforms.light_count = static_cast<int>(frame.lights.size());
   uniforms.lighting = &lighting;
+  uniforms.environment_light = nullptr;
+  if (lighting.environment.image_based_lighting) {
+    environment_light = shading::project_environment(lighting.environment);
+    uniforms.environment_light = &environment_light;
+  }
   uniforms.near_plane = camera.near_plane;
   uniforms.far_plane = camera.far_plane;
   uniforms.view = camera.view();

@@ -58,7 +58,8 @@ struct Renderer::Impl {
   std::vector<std::uint64_t> tile_pixels_shaded;
   std::vector<double> tile_ms, tile_resolve_ms;  // per tile: its task, and its resolve
   pipeline::Background background;
-  pipeline::Resolve resolve;  // set when the frame runs
+  pipeline::Resolve resolve;                         // set when the frame runs
+  shading::IrradianceHarmonics environment_light{};  // when the environment lights the frame
   Camera camera;
   Lighting lighting;
   bool recording = false;

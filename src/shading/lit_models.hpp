@@ -4,6 +4,7 @@
 
 #include "shading/brdf.hpp"
 #include "shading/environment.hpp"
+#include "shading/environment_light.hpp"
 #include "shading/kernels.hpp"
 #include "shading/models.hpp"
 
@@ -135,8 +136,28 @@ struct ConstantColorGouraudShading : GouraudLight<kConstantGouraudDiffuseSlot, f
   }
 };
 
+// The light a PBR surface takes from the environment (environment_light.hpp): the irradiance
+// through the diffuse albedo, and the split sum's specular from the mirror direction's radiance
+// blurred by roughness, moving toward the irradiance around that direction (a cosine lobe, the
+// widest GGX lobe's shape) as the surface roughens.
+inline glm::vec3 environment_light(const PbrSurface& surface, glm::vec3 f0, const SurfacePoint& s,
+                                   const DrawUniforms& u) {
+  const IrradianceHarmonics& light = *u.frame->environment_light;
+  const Environment& environment = u.frame->lighting->environment;
+  const glm::vec3 diffuse =
+      surface.albedo * (1.0f - surface.metallic) * irradiance(light, s.normal) * (1.0f / kPi);
+  const glm::vec3 mirror = glm::reflect(-s.view, s.normal);
+  const float spread = surface.roughness * surface.roughness;
+  const glm::vec3 seen =
+      glm::mix(environment_radiance(environment, mirror, surface.roughness * 8.0f),
+               irradiance(light, mirror) * (1.0f / kPi), spread);
+  const SpecularIntegral brdf = specular_integral(glm::dot(s.normal, s.view), surface.roughness);
+  return diffuse + seen * (f0 * brdf.scale + brdf.bias);
+}
+
 // Physically based: Cook-Torrance (GGX, Smith, Schlick), metallic-roughness, occlusion,
-// emission, and image-based specular from the environment when reflections are on.
+// emission, and the environment's light (image-based lighting) or, when reflections are on,
+// its mirror image.
 // Lights are scaled by pi so a white Lambertian surface under a unit light looks as bright as
 // in the Lambert model (the "punctual light" convention of glTF viewers).
 struct PbrShading : LightsBackFaces {
@@ -170,7 +191,9 @@ struct PbrShading : LightsBackFaces {
     glm::vec3 f0 = glm::mix(glm::vec3(0.04f), surface.albedo, surface.metallic);
     glm::vec3 diffuse_albedo = surface.albedo * (1.0f - surface.metallic);
     glm::vec3 ambient = u.frame->ambient * (diffuse_albedo + f0 * 0.5f);
-    if (u.frame->lighting->environment.reflections) {
+    if (u.frame->environment_light) {
+      ambient = environment_light(surface, f0, s, u);
+    } else if (u.frame->lighting->environment.reflections) {
       // Split-sum-free approximation: the mirror direction, blurred by roughness (mip level).
       glm::vec3 mirror = glm::reflect(-s.view, s.normal);
       glm::vec3 fresnel = fresnel_schlick(f0, glm::dot(s.normal, s.view));

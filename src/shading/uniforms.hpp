@@ -11,6 +11,7 @@
 
 #include "facet/light.hpp"
 #include "facet/material.hpp"
+#include "shading/environment_light.hpp"
 
 namespace facet::shading {
 
@@ -45,6 +46,8 @@ struct FrameUniforms {
   const LightData* lights = nullptr;
   int light_count = 0;
   const Lighting* lighting = nullptr;  // fog and environment
+  // The environment's light (environment_light.hpp) when it lights PBR materials, else null.
+  const IrradianceHarmonics* environment_light = nullptr;
   float near_plane = 0.1f;
   float far_plane = 100.0f;
   glm::mat4 view{1.0f};       // the camera's view matrix (what the extra outputs measure in)

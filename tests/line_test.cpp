@@ -1,5 +1,6 @@
 // Lines: a fill rule of their own. Polylines never double a pixel at shared vertices and
-// have no gaps; line coverage does not depend on the tile size.
+// have no gaps; line coverage does not depend on the tile size. Under MSAA a segment is a
+// rectangle one pixel wide whose samples average into an anti-aliased line.
 #include <gtest/gtest.h>
 
 #include "pipeline/record/custom_draw.hpp"
@@ -75,6 +76,73 @@ TEST(Lines, SteepPolylineCoversEachRowOnce) {
     EXPECT_EQ(row, spanned ? 1 : 0) << "row " << y;
   }
   EXPECT_EQ(counts, line_counts(mesh, 64));  // tiles do not change coverage
+}
+
+// One white segment (or several) on black, with `samples` a pixel, into a float target: each
+// pixel's red is the share of its samples the segment covers.
+std::vector<float> line_coverage(const Mesh& mesh, int samples, int tile_size = 64,
+                                 int threads = 0) {
+  RenderSettings settings;
+  settings.msaa = samples;
+  settings.tile_size = tile_size;
+  settings.threads = threads;
+  settings.clear_color = glm::vec4(0.0f);
+  Renderer renderer(settings);
+  Framebuffer fb(kWidth, kHeight, ColorFormat::rgba32f);
+  Material material;
+  material.shading = ShadingModel::unlit;
+  material.base_color = glm::vec4(1.0f);
+  renderer.begin_frame(test_camera(kWidth, kHeight));
+  renderer.draw(mesh, material);
+  renderer.finish(fb);
+  std::vector<float> red(kWidth * kHeight);
+  for (int i = 0; i < kWidth * kHeight; ++i) red[i] = fb.rgba32f()[i * 4];
+  return red;
+}
+
+TEST(Lines, MultisampledSegmentsAreAntiAliasedRectanglesOnePixelWide) {
+  // x-major, 105.4 pixels along x: a rectangle one pixel tall along it has that area.
+  const Mesh segment = polyline({{5.3, 10.2}, {110.7, 40.9}});
+  const Mesh steep = polyline({{60.2, 2.7}, {40.9, 75.5}});  // y-major, 72.8 pixels along y
+  for (int samples : {4, 8, 16}) {
+    SCOPED_TRACE(samples);
+    for (const auto& [mesh, length] : {std::pair{&segment, 105.4}, std::pair{&steep, 72.8}}) {
+      const std::vector<float> coverage = line_coverage(*mesh, samples);
+      double area = 0.0;
+      int partial = 0;
+      for (float c : coverage) {
+        area += c;
+        partial += c > 0.0f && c < 1.0f;
+        EXPECT_LE(c, 1.0f);
+      }
+      EXPECT_NEAR(area, length, 0.02 * length);
+      EXPECT_GT(partial, length / 2) << "edge pixels partly covered: anti-aliased";
+      // Tiles and threads do not change coverage.
+      EXPECT_EQ(line_coverage(*mesh, samples, 16, 1), coverage);
+      EXPECT_EQ(line_coverage(*mesh, samples, 32, 3), coverage);
+    }
+  }
+}
+
+TEST(Lines, MultisampledPolylinesCoverEachSampleOnce) {
+  // One segment, and the same segment cut in two at a point between pixel centres: no sample
+  // doubled or lost at the shared end. (The cut snaps to 1/256 pixel, so the halves are not
+  // exactly the whole: a sample at the rectangle's edge may change sides.)
+  const Mesh whole = polyline({{5.3, 10.2}, {110.7, 40.9}});
+  const double t = 0.4137;
+  const glm::dvec2 cut{5.3 + t * (110.7 - 5.3), 10.2 + t * (40.9 - 10.2)};
+  const Mesh first = polyline({{5.3, 10.2}, cut}), second = polyline({cut, {110.7, 40.9}});
+  const std::vector<float> one = line_coverage(whole, 8);
+  const std::vector<float> a = line_coverage(first, 8), b = line_coverage(second, 8);
+  double halves = 0.0, whole_area = 0.0;
+  int moved = 0;
+  for (int i = 0; i < kWidth * kHeight; ++i) {
+    EXPECT_LE(a[i] + b[i], 1.0f) << "pixel " << i % kWidth << "," << i / kWidth;
+    halves += a[i] + b[i], whole_area += one[i];
+    moved += a[i] + b[i] != one[i];
+  }
+  EXPECT_NEAR(halves, whole_area, 2.0 / 8.0);  // two samples at most
+  EXPECT_LE(moved, 2);
 }
 
 // Segments are counted apart from triangles: a wireframe draws no triangle, and its frame is not

@@ -42,8 +42,9 @@ struct RenderSettings {
   // triangle (at the pixel centre), and the samples are averaged in linear light before the sRGB
   // encode. The depth image takes sample 0's depth; the extra outputs (ids, normals, view depth,
   // ...) are rendered without multisampling, so each pixel holds the pixel centre's winner,
-  // never a blend. Cut-out (alpha-mask) materials use alpha to coverage. Lines and points cover
-  // every sample of their pixels. Debug views render with 1 sample. docs/pipeline.md,
+  // never a blend. Cut-out (alpha-mask) materials use alpha to coverage. Lines are one pixel
+  // wide rectangles whose samples average (anti-aliased); points cover every sample of their
+  // pixels. Debug views render with 1 sample. docs/pipeline.md,
   // "Anti-aliasing".
   int msaa = 1;
 };

@@ -20,10 +20,14 @@ bool setup_line(PrimitiveSink& out, int width, int height, const glm::vec4& a, c
   SetupLine l;
   l.x0 = s0.x, l.y0 = s0.y, l.x1 = s1.x, l.y1 = s1.y;
   l.z0 = s0.z, l.z1 = s1.z;
-  l.min_x = std::max(0, static_cast<int>(floor_div(std::min(l.x0, l.x1), kSubpixelScale)));
-  l.min_y = std::max(0, static_cast<int>(floor_div(std::min(l.y0, l.y1), kSubpixelScale)));
-  l.max_x = std::min(width - 1, static_cast<int>(floor_div(std::max(l.x0, l.x1), kSubpixelScale)));
-  l.max_y = std::min(height - 1, static_cast<int>(floor_div(std::max(l.y0, l.y1), kSubpixelScale)));
+  // The pixels the segment passes through and one more on every side: under MSAA it is a
+  // rectangle one pixel wide, whose samples reach into the neighbours (line.cpp).
+  l.min_x = std::max(0, static_cast<int>(floor_div(std::min(l.x0, l.x1), kSubpixelScale)) - 1);
+  l.min_y = std::max(0, static_cast<int>(floor_div(std::min(l.y0, l.y1), kSubpixelScale)) - 1);
+  l.max_x =
+      std::min(width - 1, static_cast<int>(floor_div(std::max(l.x0, l.x1), kSubpixelScale)) + 1);
+  l.max_y =
+      std::min(height - 1, static_cast<int>(floor_div(std::max(l.y0, l.y1), kSubpixelScale)) + 1);
   if (l.min_x > l.max_x || l.min_y > l.max_y) return false;
   l.color = color;
   out.add_line(l.min_x, l.min_y, l.max_x, l.max_y) = l;

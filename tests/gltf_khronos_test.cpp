@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <glm/glm.hpp>
 #include <map>
 #include <optional>
@@ -14,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "facet/error.hpp"
 #include "facet/import.hpp"
 #include "support/gltf_builder.hpp"
 #include "support/render_helpers.hpp"
@@ -132,6 +134,48 @@ TEST(GltfKhronos, RiggedSimpleLeansAtItsSecondKey) {
   EXPECT_TRUE(std::any_of(p.begin(), p.end(), [](glm::vec3 q) {
     return glm::length(q - glm::vec3(0, 4.0479f, -2.2114f)) < 2e-3f;
   }));
+}
+
+// AnimatedModel poses from the file read once: the same world positions as importing the file
+// again at each time, its length that of the animation's keys, and no reading of the file after
+// it is made (the test moves the file away before posing).
+TEST(GltfKhronos, AnimatedModelPosesAsImportAtEveryTimeWithoutTheFile) {
+  const std::filesystem::path dir = fresh_test_dir("facet_animated_", "posing");
+  for (const char* name : {"SimpleSkin", "RiggedSimple", "SimpleMorph"}) {
+    SCOPED_TRACE(name);
+    const std::filesystem::path copy = dir / (std::string(name) + ".gltf");
+    std::filesystem::copy_file(khronos(name), copy);
+    const AnimatedModel model(copy.string());
+    EXPECT_EQ(model.animation_count(), 1);
+    std::vector<std::vector<glm::vec3>> imported;
+    const double times[] = {0.0, 0.37, 1.0, 2.5};
+    for (double t : times)
+      imported.push_back(world_positions(import_scene(copy.string(), at_time(t))));
+    std::filesystem::remove(copy);
+    for (std::size_t i = 0; i < std::size(times); ++i) {
+      EXPECT_EQ(world_positions(model.pose(times[i])), imported[i]) << "t = " << times[i];
+    }
+    EXPECT_NE(imported[0], imported[2]) << "the pose moves";
+  }
+  // SimpleSkin's keys run from 0 to 5.5 s.
+  std::filesystem::copy_file(khronos("SimpleSkin"), dir / "skin.gltf");
+  EXPECT_DOUBLE_EQ(AnimatedModel((dir / "skin.gltf").string()).duration(), 5.5);
+}
+
+TEST(GltfKhronos, AnimatedModelRefusesOtherFormatsAndMissingAnimations) {
+  const std::filesystem::path dir = fresh_test_dir("facet_animated_", "refused");
+  std::filesystem::copy_file(khronos("SimpleSkin"), dir / "skin.gltf");
+  ImportOptions second;
+  second.animation = 1;
+  try {
+    AnimatedModel((dir / "skin.gltf").string(), second);
+    ADD_FAILURE() << "animation 1 of a file with one";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("animation 1 asked, the file has 1"), std::string::npos)
+        << e.what();
+  }
+  std::ofstream(dir / "tetra.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  EXPECT_THROW(AnimatedModel((dir / "tetra.obj").string()), Error);
 }
 
 // SimpleSparseAccessor: a strip of 12 triangles along y = 0 .. 1, x = 0 .. 6, whose sparse

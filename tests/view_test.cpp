@@ -62,6 +62,26 @@ TEST(View, ScriptedFramesMatchRenderOfTheSameCamera) {
   expect_images_match(view, read_png(rendered));
 }
 
+// A glTF model's animation plays in the viewer: --time 1 and 4 show two poses, each the same
+// again at the same time (AnimatedModel's poses are tested against import in
+// gltf_khronos_test.cpp).
+TEST(View, AnimatedModelsArePosedByTheClock) {
+  FACET_REQUIRE_PACKAGE(have_xvfb(), "xvfb-run is not installed");
+  const fs::path dir = fresh_test_dir("facet_view_", "animated");
+  const std::string model = std::string(FACET_KHRONOS_DIR) + "/SimpleSkin.gltf";
+  auto shot_at = [&](const std::string& time, const std::string& name) {
+    const std::string shot = (dir / name).string();
+    const CommandResult r = run_view_under_xvfb("'" + model + "' --frames 2 --time " + time +
+                                                " --size 160x90 --screenshot '" + shot + "'");
+    EXPECT_EQ(r.exit_code, 0) << r.stderr_text;
+    return read_png(shot);
+  };
+  const Rgba8Image first = shot_at("1", "a.png"), again = shot_at("1", "b.png");
+  const Rgba8Image later = shot_at("4", "c.png");
+  EXPECT_TRUE(first.pixels == again.pixels) << "the same --time gave different images";
+  EXPECT_FALSE(first.pixels == later.pixels) << "the pose did not change";
+}
+
 TEST(View, IslandsAtAFixedTimeAreDeterministic) {
   FACET_REQUIRE_PACKAGE(have_xvfb(), "xvfb-run is not installed");
   fs::path dir = fresh_test_dir("facet_view_", "islands");

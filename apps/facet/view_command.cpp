@@ -83,13 +83,14 @@ int run_view(const ViewOptions& o) {
   // The window first: with no display the command fails before loading anything.
   ViewWindow window("facet view", size.width, size.height);
 
-  // A model with --animation N is shown at time 0 of it (the viewer does not play a model's
-  // animation; it animates only the islands, through their world).
-  AnimatedScene loaded(o.scene, o.scene.animation ? std::optional(0.0) : std::nullopt);
+  // A model is posed by the clock (or --time): a glTF model's animation plays, looped
+  // (--animation picks which); the islands move through their world.
+  AnimatedScene loaded(o.scene, o.scene.model.empty() ? std::nullopt : std::optional(0.0));
   Scene& scene = loaded.scene();
   if (!o.scene.fog_color) scene.lighting.fog.color = background;
   setup.scene = &scene;
   setup.world = loaded.world();
+  setup.animated = &loaded;
   setup.start = build_camera(o.scene, scene, static_cast<float>(size.width) / size.height);
   setup.camera_mode = o.scene.model.empty() ? CameraMode::first_person : CameraMode::orbit;
   setup.walk_speed = walking_speed(scene);

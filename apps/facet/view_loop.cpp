@@ -3,6 +3,7 @@
 
 #include <SDL.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -191,7 +192,11 @@ Camera ViewLoop::camera(double t) const {
 void ViewLoop::render(double now, double dt) {
   // Animation follows time, never the frame count: the same t always gives the same image.
   double t = setup_.fixed_time.value_or(now);
-  if (setup_.world) setup_.world->animate(t);
+  if (setup_.animated) {
+    // A model's animation loops; the islands' clock runs on.
+    const double length = setup_.animated->model_duration();
+    setup_.animated->at(length > 0.0 && !setup_.fixed_time ? std::fmod(t, length) : t);
+  }
   Camera view = camera(t);
   last_camera_ = view;
   if (sound_) sound_->update(*setup_.world, view, dt);

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "animated_scene.hpp"
 #include "camera_path.hpp"
 #include "facet/framebuffer.hpp"
 #include "facet/islands.hpp"
@@ -27,7 +28,8 @@ namespace facet::cli {
 // What the loop runs on; built by run_view from the command line.
 struct ViewSetup {
   Scene* scene = nullptr;
-  IslandsWorld* world = nullptr;  // non-null: animate (and sound) the islands
+  IslandsWorld* world = nullptr;      // non-null: the islands, with sound
+  AnimatedScene* animated = nullptr;  // the scene, posed by the clock (the islands, a model)
   Camera start;
   CameraMode camera_mode = CameraMode::first_person;
   float walk_speed = 1.0f;

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -62,6 +63,33 @@ struct ImportOptions {
 // scene_camera frames it again for another aspect); a file without lights gets three
 // lights around that view and an ambient term (three_point_lights), so it draws lit as it is.
 Scene import_scene(const std::string& path, const ImportOptions& options = {});
+
+// A glTF model read once and posed at any time without reading or decoding it again: what
+// import_scene gives with ImportOptions::time set to each time, its materials and textures
+// imported once and shared by every pose. For a viewer or a frame sequence of an animated
+// model.
+class AnimatedModel {
+ public:
+  // Reads a .gltf or .glb file as import_scene does (same checks and errors); throws
+  // facet::Error for another format, or an options.animation the file does not have.
+  explicit AnimatedModel(const std::string& path, const ImportOptions& options = {});
+  ~AnimatedModel();
+  AnimatedModel(AnimatedModel&&) noexcept;
+  AnimatedModel& operator=(AnimatedModel&&) noexcept;
+
+  // The number of animations in the file, and the length in seconds of options.animation (its
+  // last key's time; 0 without animations).
+  int animation_count() const;
+  double duration() const;
+  // The meshes and nodes of the pose at `seconds` of options.animation (clamped to its keys,
+  // as ImportOptions::time), with the materials, lights and cameras of the file (no framing
+  // camera or default lights: import_scene's scene has those, and they do not move).
+  Scene pose(double seconds) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 // The `.d` format: optional header `data <vertices> <polygons>`, then one `x y z` line per
 // vertex, then one `<n> i1 ... in` line per polygon (1-based indices, convex, fan-triangulated);

@@ -145,7 +145,10 @@ glm::mat4 gltf_node_transform(const tinygltf::Node& node, const std::string& whe
 void import_gltf_cameras_and_lights(const GltfFile& file, const std::vector<int>& node_of,
                                     const ImportOptions& options, Scene& scene);
 
-// The whole scene from a parsed file (gltf_scene.cpp): no default camera yet.
-Scene gltf_scene(const GltfFile& file, const ImportOptions& options);
+// The whole scene from a parsed file (gltf_scene.cpp): no default camera yet. With `materials`
+// (imported before from the same file) they are used again, textures shared, and the file's
+// unsupported extensions are not warned about again.
+Scene gltf_scene(const GltfFile& file, const ImportOptions& options,
+                 const GltfMaterials* materials = nullptr);
 
 }  // namespace facet::io

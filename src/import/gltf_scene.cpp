@@ -46,8 +46,8 @@ class SceneBuilder {
   SceneBuilder(const GltfFile& file, const ImportOptions& options)
       : file_(file), model_(file.model), options_(options), data_(file) {}
 
-  Scene build() {
-    GltfMaterials materials = import_gltf_materials(file_, options_);
+  Scene build(const GltfMaterials* imported) {
+    GltfMaterials materials = imported ? *imported : import_gltf_materials(file_, options_);
     scene_.materials = std::move(materials.materials);
     scene_.textures = std::move(materials.textures);
     texcoord_set_ = std::move(materials.texcoord_set);
@@ -244,9 +244,10 @@ void warn_unsupported(const GltfFile& file, const ImportOptions& options) {
 
 }  // namespace
 
-Scene gltf_scene(const GltfFile& file, const ImportOptions& options) {
-  warn_unsupported(file, options);
-  return SceneBuilder(file, options).build();
+Scene gltf_scene(const GltfFile& file, const ImportOptions& options,
+                 const GltfMaterials* materials) {
+  if (!materials) warn_unsupported(file, options);
+  return SceneBuilder(file, options).build(materials);
 }
 
 Scene import_gltf_scene(const std::string& path, const ImportOptions& options) {

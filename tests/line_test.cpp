@@ -15,27 +15,37 @@ namespace {
 constexpr int kWidth = 120;
 constexpr int kHeight = 80;
 
+// One white segment (or several) on black, with `samples` a pixel, into a float target: each
+// pixel's red is the share of its samples the segment covers.
+std::vector<float> line_coverage(const Mesh& mesh, int samples, int tile_size = 64,
+                                 int threads = 0) {
+  RenderSettings settings;
+  settings.msaa = samples;
+  settings.tile_size = tile_size;
+  settings.threads = threads;
+  settings.clear_color = glm::vec4(0.0f);
+  Renderer renderer(settings);
+  Framebuffer fb(kWidth, kHeight, ColorFormat::rgba32f);
+  Material material;
+  material.shading = ShadingModel::unlit;
+  material.base_color = glm::vec4(1.0f);
+  renderer.begin_frame(test_camera(kWidth, kHeight));
+  renderer.draw(mesh, material);
+  renderer.finish(fb);
+  std::vector<float> red(kWidth * kHeight);
+  for (int i = 0; i < kWidth * kHeight; ++i) red[i] = fb.rgba32f()[i * 4];
+  return red;
+}
+
 std::vector<int> line_counts(const Mesh& mesh, int tile_size) {
-  // Lines ignore the depth test only through their bias; draw each with the counter by
-  // rendering into a float target where lines write their color (1, 0, 0, 0) additively is
-  // not available, so count via separate renders: one per segment, summed.
+  // Each segment drawn alone, so a pixel two of them cover counts twice.
   std::vector<int> counts(kWidth * kHeight, 0);
   for (std::size_t s = 0; s + 1 < mesh.positions.size(); s += 2) {
     Mesh one;
     one.topology = Topology::lines;
     one.positions = {mesh.positions[s], mesh.positions[s + 1]};
-    RenderSettings settings;
-    settings.tile_size = tile_size;
-    settings.clear_color = glm::vec4(0.0f);
-    Renderer renderer(settings);
-    Framebuffer fb(kWidth, kHeight, ColorFormat::rgba32f);
-    Material material;
-    material.shading = ShadingModel::unlit;
-    material.base_color = glm::vec4(1.0f);
-    renderer.begin_frame(test_camera(kWidth, kHeight));
-    renderer.draw(one, material);
-    renderer.finish(fb);
-    for (int i = 0; i < kWidth * kHeight; ++i) counts[i] += fb.rgba32f()[i * 4] > 0.5f ? 1 : 0;
+    const std::vector<float> covered = line_coverage(one, 1, tile_size);
+    for (int i = 0; i < kWidth * kHeight; ++i) counts[i] += covered[i] > 0.5f ? 1 : 0;
   }
   return counts;
 }
@@ -76,28 +86,6 @@ TEST(Lines, SteepPolylineCoversEachRowOnce) {
     EXPECT_EQ(row, spanned ? 1 : 0) << "row " << y;
   }
   EXPECT_EQ(counts, line_counts(mesh, 64));  // tiles do not change coverage
-}
-
-// One white segment (or several) on black, with `samples` a pixel, into a float target: each
-// pixel's red is the share of its samples the segment covers.
-std::vector<float> line_coverage(const Mesh& mesh, int samples, int tile_size = 64,
-                                 int threads = 0) {
-  RenderSettings settings;
-  settings.msaa = samples;
-  settings.tile_size = tile_size;
-  settings.threads = threads;
-  settings.clear_color = glm::vec4(0.0f);
-  Renderer renderer(settings);
-  Framebuffer fb(kWidth, kHeight, ColorFormat::rgba32f);
-  Material material;
-  material.shading = ShadingModel::unlit;
-  material.base_color = glm::vec4(1.0f);
-  renderer.begin_frame(test_camera(kWidth, kHeight));
-  renderer.draw(mesh, material);
-  renderer.finish(fb);
-  std::vector<float> red(kWidth * kHeight);
-  for (int i = 0; i < kWidth * kHeight; ++i) red[i] = fb.rgba32f()[i * 4];
-  return red;
 }
 
 TEST(Lines, MultisampledSegmentsAreAntiAliasedRectanglesOnePixelWide) {

@@ -41,6 +41,9 @@ Rgb PbrNeutral(FloatTag df, Rgb c) {
   c = {hn::Sub(c.r, offset), hn::Sub(c.g, offset), hn::Sub(c.b, offset)};
   const Vec peak = hn::Max(c.r, hn::Max(c.g, c.b));
   const auto compressed = hn::Ge(peak, hn::Set(df, kStart));
+  // Most of an image lies below the knee: such vectors skip the compression, whose lanes they
+  // would not take anyway.
+  if (hn::AllFalse(df, compressed)) return c;
   // Below the start the divisions are not used: their divisor is kept away from zero.
   const Vec safe_peak = hn::Max(peak, hn::Set(df, kStart));
   const Vec one = hn::Set(df, 1.0f);

@@ -13,6 +13,7 @@ in facet's source tree has the whole story.
 
 from ._facet import (
     OUTPUTS,
+    AnimatedModel,
     SHADING_MODELS,
     Camera,
     Error,
@@ -27,6 +28,7 @@ from ._facet import (
 
 __all__ = [
     "OUTPUTS",
+    "AnimatedModel",
     "SHADING_MODELS",
     "Camera",
     "Error",

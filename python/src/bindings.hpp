@@ -40,6 +40,7 @@ T object_of(py::handle value, const char* function, const char* argument, const 
 void bind_materials_and_lights(py::module_& m);  // material_bindings.cpp: Material, Light
 void bind_camera(py::module_& m);                // camera_bindings.cpp: Camera
 void bind_scene(py::module_& m);                 // scene_bindings.cpp: Scene, load
+void bind_animation(py::module_& m);             // animation_bindings.cpp: AnimatedModel
 void bind_render(py::module_& m);                // render_bindings.cpp: Renderer, write_png
 
 }  // namespace facet::python

@@ -16,5 +16,6 @@ PYBIND11_MODULE(_facet, m) {
   facet::python::bind_materials_and_lights(m);
   facet::python::bind_camera(m);
   facet::python::bind_scene(m);
+  facet::python::bind_animation(m);
   facet::python::bind_render(m);
 }

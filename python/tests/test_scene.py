@@ -253,6 +253,20 @@ def test_load_poses_a_gltf_animation_at_a_time(tmp_path):
         facet.load(path, time=0.5, animation=2)
 
 
+def test_an_animated_model_is_posed_without_reading_the_file_again(tmp_path):
+    path = write_moving_quad(tmp_path)
+    model = facet.AnimatedModel(path)
+    assert model.duration == pytest.approx(1.0) and model.animation_count == 1
+    path.unlink()  # the poses need the file no more
+    assert model.scene(0.5).bounds[0][0] == pytest.approx(5.0)
+    assert model.scene(0.25).bounds[0][0] == pytest.approx(2.5)
+    assert model.scene(7).bounds[0][0] == pytest.approx(10.0)  # clamped to the end
+    frame = facet.Renderer(32, 24).render(model.scene(1.0), outputs=["depth"])
+    assert (frame["depth"] > 0).any()
+    with pytest.raises(facet.Error, match="animation 2 does not exist"):
+        facet.AnimatedModel(write_moving_quad(tmp_path), animation=2)
+
+
 def test_load_reads_outside_files_only_when_allowed(tmp_path):
     model = tmp_path / "model"
     model.mkdir()

@@ -28,14 +28,10 @@ AnimatedModel::AnimatedModel(const std::string& path, const ImportOptions& optio
   impl_->file = io::parse_gltf(io::read_whole_file(path), path, &rules);
   impl_->options = options;
   const auto& animations = impl_->file.model.animations;
-  if (!animations.empty() &&
-      (options.animation < 0 || static_cast<std::size_t>(options.animation) >= animations.size())) {
-    throw Error(path + ": animation " + std::to_string(options.animation) +
-                " asked, the file has " + std::to_string(animations.size()));
-  }
   try {
     impl_->materials = io::import_gltf_materials(impl_->file, options);
-    if (!animations.empty()) {
+    // An animation the file does not have fails the first pose, below, as it fails an import.
+    if (options.animation >= 0 && static_cast<std::size_t>(options.animation) < animations.size()) {
       const io::GltfAccessors data(impl_->file);
       for (const tinygltf::AnimationSampler& sampler :
            animations[static_cast<std::size_t>(options.animation)].samplers) {
@@ -45,7 +41,7 @@ AnimatedModel::AnimatedModel(const std::string& path, const ImportOptions& optio
         }
       }
     }
-    pose(0.0);  // a file that cannot be posed fails here, not at the first frame
+    pose(0.0);  // a file that cannot be posed fails here, not at the first pose asked for
   } catch (const Error&) {
     throw;
   } catch (const std::exception& e) {  // bad_alloc on absurd sizes, and the like

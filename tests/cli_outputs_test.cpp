@@ -37,7 +37,7 @@ ExtraOutputs all_extra(NormalSpace normals = NormalSpace::world) {
 }
 
 // What `facet render --scene shapes --size 64x48` draws, in process: the scene's own camera,
-// the CLI's default background as clear color, its default 4 samples a pixel.
+// the CLI's default background as clear color, its default 4 samples a pixel and shadows.
 Framebuffer reference(ColorFormat format, NormalSpace normals = NormalSpace::world) {
   Scene scene = make_builtin_scene("shapes");
   const glm::vec3 background = srgb_to_linear(glm::vec3(0.53f, 0.66f, 0.82f));
@@ -46,7 +46,8 @@ Framebuffer reference(ColorFormat format, NormalSpace normals = NormalSpace::wor
   camera.aspect = static_cast<float>(kWidth) / kHeight;
   RenderSettings settings;
   settings.clear_color = glm::vec4(background, 1.0f);
-  settings.msaa = 4;  // facet render's default
+  settings.msaa = 4;        // facet render's default
+  settings.shadows = true;  // likewise
   Renderer renderer(settings);
   Framebuffer image(kWidth, kHeight, format, DepthImage::none, all_extra(normals));
   renderer.begin_frame(camera, scene.lighting);

@@ -93,4 +93,18 @@ std::string msaa_help(int default_samples) {
          std::to_string(default_samples) + ")";
 }
 
+bool parse_shadows(const std::string& text) {
+  if (text == "on") return true;
+  if (text == "off") return false;
+  throw Error("--shadows: expected on or off, got '" + text + "'");
+}
+
+void check_shadow_map_size(int size) {
+  if (size < RenderSettings::kMinShadowMapSize || size > Framebuffer::kMaxSize) {
+    throw Error("--shadow-map-size: must be " + std::to_string(RenderSettings::kMinShadowMapSize) +
+                " to " + std::to_string(Framebuffer::kMaxSize) + " texels, got " +
+                std::to_string(size));
+  }
+}
+
 }  // namespace facet::cli

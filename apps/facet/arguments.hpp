@@ -30,5 +30,9 @@ void check_threads(int threads);
 void check_msaa(int samples);
 // The --msaa help text, with the command's default.
 std::string msaa_help(int default_samples);
+// --shadows on|off as a bool; throws for anything else.
+bool parse_shadows(const std::string& text);
+// Throws unless --shadow-map-size is within RenderSettings' range.
+void check_shadow_map_size(int size);
 
 }  // namespace facet::cli

@@ -18,7 +18,9 @@ struct BenchOptions {
   int warmup = 5;
   int threads = 0;
   int tile_size = 64;
-  int msaa = 1;      // glmark2 runs without anti-aliasing
+  int msaa = 1;                 // glmark2 runs without anti-aliasing
+  std::string shadows = "off";  // glmark2 draws none (RenderSettings::shadows)
+  int shadow_map_size = 2048;
   std::string json;  // empty: no JSON file
 };
 

@@ -33,6 +33,17 @@ DebugView parse_debug_view(const std::string& text) {
 
 }  // namespace
 
+void add_shadow_options(CLI::App& cmd, std::string& shadows, int& map_size) {
+  cmd.add_option("--shadows", shadows,
+                 "Shadows of the scene's directional lights (each that casts them: a model's own "
+                 "sun, or the key of the default three lights), through shadow maps: on or off")
+      ->capture_default_str();
+  cmd.add_option("--shadow-map-size", map_size,
+                 "Shadow map edge in texels, " + std::to_string(RenderSettings::kMinShadowMapSize) +
+                     " .. " + std::to_string(Framebuffer::kMaxSize))
+      ->capture_default_str();
+}
+
 CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
   CLI::App* cmd = app.add_subcommand("render",
                                      "Render a model or a built-in scene to image files, one frame "
@@ -63,6 +74,16 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
                   "through EGL: docs/gl_twin.md)")
       ->capture_default_str();
   cmd->add_option("--msaa", o.msaa, msaa_help(4));
+  cmd->add_option("--shadows", o.shadows,
+                  "Shadows of the scene's directional lights (each that casts them: a model's "
+                  "own sun, or the key of the default three lights), through shadow maps: on or "
+                  "off")
+      ->capture_default_str();
+  cmd->add_option("--shadow-map-size", o.shadow_map_size,
+                  "Shadow map edge in texels, " +
+                      std::to_string(RenderSettings::kMinShadowMapSize) + " .. " +
+                      std::to_string(Framebuffer::kMaxSize))
+      ->capture_default_str();
   cmd->add_option("--compare", o.compare,
                   "Draw the view once per variant and write them side by side, labelled: shading "
                   "models (every material shaded so) and backends, separated by commas, e.g. "
@@ -82,6 +103,8 @@ int run_render(const RenderOptions& o) {
   ImageSize size = parse_size("--size", o.size);
   check_threads(o.threads);
   check_msaa(o.msaa);
+  const bool shadows = parse_shadows(o.shadows);
+  check_shadow_map_size(o.shadow_map_size);
   if (!std::isfinite(o.exposure) || std::abs(o.exposure) > 20.0f) {
     throw Error("--exposure: must be within -20 .. 20 stops");
   }
@@ -132,6 +155,8 @@ int run_render(const RenderOptions& o) {
   settings.threads = o.threads;
   settings.tile_size = o.tile_size;
   settings.msaa = o.msaa;
+  settings.shadows = shadows;
+  settings.shadow_map_size = o.shadow_map_size;
   // Transparent: the framebuffer holds premultiplied color (blending over alpha 0), written
   // out with straight alpha (FrameRenderer).
   settings.clear_color = glm::vec4(background, transparent ? 0.0f : 1.0f);

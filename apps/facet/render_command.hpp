@@ -22,12 +22,18 @@ struct RenderOptions {
   float exposure = 0.0f;
   int threads = 0;
   int tile_size = 64;
-  int msaa = 4;  // anti-aliased images by default (RenderSettings::msaa)
+  int msaa = 4;                // anti-aliased images by default (RenderSettings::msaa)
+  std::string shadows = "on";  // "on" or "off" (RenderSettings::shadows)
+  int shadow_map_size = 2048;  // RenderSettings::shadow_map_size
   bool orthographic = false;
   std::string backend = "facet";       // or "gl": the OpenGL twin (render_backend.hpp)
   std::optional<std::string> compare;  // variants side by side (render_compare.hpp)
   BatchOptions batch;                  // the positional models; several, or a folder, make a batch
 };
+
+// Adds --shadows (on or off) and --shadow-map-size to a command (render, bench), filling these
+// on parse.
+void add_shadow_options(CLI::App& cmd, std::string& shadows, int& map_size);
 
 // Adds the `render` subcommand and its flags to app; options are filled on parse.
 CLI::App* add_render_command(CLI::App& app, RenderOptions& options);

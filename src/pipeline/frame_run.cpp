@@ -119,6 +119,11 @@ void Renderer::Impl::run(Framebuffer& target) {
   // Per-draw pointers into frame-wide data, set now that the draw list no longer grows.
   frame.lights.clear();
   for (const Light& light : lighting.lights) frame.lights.push_back(shading::prepare_light(light));
+  if (shadows_ready) {
+    for (std::size_t i = 0; i < frame.lights.size() && i < shadows.size(); ++i) {
+      if (shadows[i].map.depth) frame.lights[i].shadow = &shadows[i].map;
+    }
+  }
   // One SIMD target for the whole frame: every kernel is fetched for it here.
   kernels = pipeline::kernels_for(chosen_simd_target());
   frame.kernels = &kernels;

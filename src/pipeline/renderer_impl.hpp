@@ -19,6 +19,7 @@
 #include "pipeline/frame.hpp"
 #include "pipeline/kernels.hpp"
 #include "pipeline/output/output.hpp"
+#include "shading/shadow_map.hpp"
 
 namespace facet {
 namespace pipeline {
@@ -67,7 +68,22 @@ struct Renderer::Impl {
   std::uint32_t draw_calls = 0;
   // The float target the extra outputs' passes render into, reused while the size stays.
   std::optional<Framebuffer> pass_target;
-  std::uint64_t primitives_outside = 0;  // of draws outside the frustum, never recorded
+  std::uint64_t primitives_outside = 0;  // of draws outside the frustum, never drawn in color
+  // Whether this frame renders shadow maps (RenderSettings::shadows and a light that casts
+  // them), decided at begin_frame(); then the draws outside the camera's view are kept here,
+  // since they may still cast shadows into it (shadow_passes.cpp).
+  bool frame_shadows = false;
+  std::vector<pipeline::DrawRecord> outside_view_draws;
+  // Each light's shadow map (by its index in lighting.lights): the depth target of its pass and
+  // what the lit models read of it; `map.depth` null when the light has none this frame.
+  struct LightShadow {
+    std::optional<Framebuffer> target;
+    shading::ShadowMap map;
+  };
+  std::vector<LightShadow> shadows;
+  bool shadows_ready = false;  // run() hands the maps to the lights (between the passes and finish)
+  std::vector<pipeline::DrawRecord> shadow_draws;  // the color pass's draws during the passes
+  double shadow_ms = 0.0;
   // Meshes drawn through shared pointers, checked once (Renderer::draw): checking every mesh again
   // in every frame costs real time in big worlds of many draws, all of it on the recording thread.
   // An entry holds its mesh, so no other mesh can take its address while it is remembered; it is
@@ -109,6 +125,8 @@ struct Renderer::Impl {
   void check_extra_outputs(const Framebuffer& target) const;
   // The passes of target's extra outputs, after run() drew its color (output_passes.cpp).
   void run_extra_outputs(Framebuffer& target);
+  // The shadow maps of the frame's lights, before the color pass (shadow_passes.cpp).
+  void run_shadow_passes();
   void order_draws();
   void set_depth_view_range();
   bool display_referred_frame(const Framebuffer& target) const;

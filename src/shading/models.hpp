@@ -36,13 +36,16 @@
 
 namespace facet::shading {
 
-// Diffuse + ambient from every light (the classic teaching setup).
+// Diffuse + ambient from every light (the classic teaching setup), each after its shadow.
 inline glm::vec3 diffuse_light(glm::vec3 albedo, glm::vec3 normal, glm::vec3 position,
                                const DrawUniforms& u) {
   glm::vec3 light = u.frame->ambient;
   for (int i = 0; i < u.frame->light_count; ++i) {
-    IncidentLight in = incident(u.frame->lights[i], position);
-    light += in.radiance * std::max(0.0f, glm::dot(normal, in.direction));
+    const LightData& l = u.frame->lights[i];
+    IncidentLight in = incident(l, position);
+    const float n_dot_l = std::max(0.0f, glm::dot(normal, in.direction));
+    if (l.shadow && n_dot_l > 0.0f) in.radiance = received_radiance(l, in, position, normal);
+    light += in.radiance * n_dot_l;
   }
   return albedo * light;
 }

@@ -1,0 +1,142 @@
+// The shadow maps' passes (RenderSettings::shadows): before the color pass, the frame's draws
+// run once more per shadow-casting directional or spot light, seen from the light (an
+// orthographic view along a directional light, a perspective one from a spot: shadow_fit.hpp),
+// into a depth target of the map's size: the same tiled
+// pipeline, so the maps, and the images, are the same for any thread count, tile size and SIMD
+// target. The color pass's lit models then read them (shading/shadow_map.hpp).
+#include <algorithm>
+#include <optional>
+
+#include "pipeline/record/pipeline_table.hpp"
+#include "pipeline/renderer_impl.hpp"
+#include "pipeline/shadow/shadow_fit.hpp"
+#include "shading/models.hpp"
+
+namespace facet {
+
+using pipeline::DrawRecord;
+
+namespace {
+
+// Whether a draw casts shadows: filled triangles that are not blended (a blended surface lets
+// light through; how much, a depth map cannot say). Lines and points do not.
+bool casts_shadow(const DrawRecord& draw) {
+  return draw.mesh->topology != Topology::lines && draw.mesh->topology != Topology::points &&
+         draw.pipeline.fills_triangles && !pipeline::is_blended(draw.material.alpha_mode);
+}
+
+// The depth pass draws the cheapest model that writes depth (its color is not read), and for
+// cut-out materials the unlit one, whose alpha cuts out as in color.
+pipeline::DrawPipeline shadow_pipeline(AlphaMode alpha) {
+  if (alpha == AlphaMode::mask) {
+    return pipeline::make_pipeline<shading::UnlitShading, AlphaMode::mask>();
+  }
+  return pipeline::make_pipeline<shading::ConstantColorUnlitShading>();
+}
+
+// Adds the world-space box around a draw's mesh bounds to `box`.
+void add_draw_bounds(const DrawRecord& draw, pipeline::WorldBox& box) {
+  if (!draw.bounds) return;
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::vec3 p((corner & 1) ? draw.bounds->high.x : draw.bounds->low.x,
+                      (corner & 2) ? draw.bounds->high.y : draw.bounds->low.y,
+                      (corner & 4) ? draw.bounds->high.z : draw.bounds->low.z);
+    box.add(glm::vec3(draw.uniforms.model * glm::vec4(p, 1.0f)));
+  }
+}
+
+// What the lit models read of a light's map: the transform from the light's camera to the
+// map's texels, and the target's depth image (window depths, top row first).
+shading::ShadowMap shadow_map_of(const Camera& light, const Framebuffer& target) {
+  const float size = static_cast<float>(target.width());
+  // NDC -> continuous texel coordinates (texel centres on integers, y down, as setup's
+  // to_screen places pixel centres at + 0.5) and window depth.
+  glm::mat4 to_map(1.0f);
+  to_map[0][0] = 0.5f * size, to_map[3][0] = 0.5f * size - 0.5f;
+  to_map[1][1] = -0.5f * size, to_map[3][1] = 0.5f * size - 0.5f;
+  to_map[2][2] = 0.5f, to_map[3][2] = 0.5f;
+  shading::ShadowMap map;
+  map.world_to_map = to_map * light.view_projection();
+  map.depth = target.depth().data();
+  map.size = target.width();
+  return map;
+}
+
+// The view of a light's map this frame, or none (no shadows from it).
+std::optional<Camera> shadow_view(const Light& light, const Camera& camera,
+                                  const pipeline::WorldBox& scene, int size) {
+  if (!light.casts_shadows) return std::nullopt;
+  if (light.type == LightType::directional) {
+    return pipeline::fit_directional_shadow(camera, light.direction, scene, size);
+  }
+  if (light.type == LightType::spot) {
+    return pipeline::fit_spot_shadow(light.position, light.direction, light.outer_cone_degrees,
+                                     scene, size);
+  }
+  return std::nullopt;  // point lights cast no shadows (they would need six maps)
+}
+
+}  // namespace
+
+void Renderer::Impl::run_shadow_passes() {
+  shadow_ms = 0.0;
+  shadows_ready = false;
+  if (!frame_shadows) return;
+  const auto start = pipeline::Clock::now();
+  shadows.resize(std::max(shadows.size(), lighting.lights.size()));
+  for (LightShadow& shadow : shadows) shadow.map.depth = nullptr;
+
+  // The box every draw lies in: receivers across the light, casters along it.
+  pipeline::WorldBox scene;
+  for (const DrawRecord& draw : frame.draws) add_draw_bounds(draw, scene);
+  for (const DrawRecord& draw : outside_view_draws) add_draw_bounds(draw, scene);
+
+  // What the passes change, put back afterwards: the color pass's draws, camera and settings.
+  const Camera color_camera = camera;
+  const RenderSettings color_settings = settings;
+  const glm::mat4 color_view_projection = frame.view_projection;
+  const FogMode color_fog = lighting.fog.mode;
+  const bool color_background = lighting.environment.show_as_background;
+  std::swap(frame.draws, shadow_draws);
+  frame.draws.clear();
+  for (const std::vector<DrawRecord>* draws : {&shadow_draws, &outside_view_draws}) {
+    for (const DrawRecord& draw : *draws) {
+      if (!casts_shadow(draw)) continue;
+      frame.draws.push_back(draw);
+      DrawRecord& caster = frame.draws.back();
+      caster.pipeline = shadow_pipeline(draw.material.alpha_mode);
+      caster.material.cull = CullMode::none;  // open meshes cast from either side
+    }
+  }
+  settings.msaa = 1;
+  settings.exposure = 0.0f;
+  settings.debug_view = DebugView::none;
+  lighting.fog.mode = FogMode::none;
+  lighting.environment.show_as_background = false;
+  const int size = settings.shadow_map_size;
+  for (std::size_t i = 0; i < lighting.lights.size(); ++i) {
+    const std::optional<Camera> view = shadow_view(lighting.lights[i], color_camera, scene, size);
+    if (!view) continue;  // no shadows from it, or nothing it could shade is seen
+    LightShadow& shadow = shadows[i];
+    if (!shadow.target || shadow.target->width() != size) {
+      shadow.target.emplace(size, size, ColorFormat::rgba8_srgb, DepthImage::keep);
+    }
+    camera = *view;
+    frame.view_projection = view->view_projection();
+    for (DrawRecord& caster : frame.draws) {
+      caster.uniforms.model_view_projection = frame.view_projection * caster.uniforms.model;
+    }
+    run(*shadow.target);
+    shadow.map = shadow_map_of(*view, *shadow.target);
+  }
+  std::swap(frame.draws, shadow_draws);
+  camera = color_camera;
+  settings = color_settings;
+  frame.view_projection = color_view_projection;
+  lighting.fog.mode = color_fog;
+  lighting.environment.show_as_background = color_background;
+  shadows_ready = true;
+  shadow_ms = pipeline::ms_since(start);
+}
+
+}  // namespace facet

@@ -162,6 +162,7 @@ void Renderer::Impl::run(Framebuffer& target) {
       lighting.environment.show_as_background ? &lighting.environment : nullptr;
   background.inverse_view_projection = glm::inverse(frame.view_projection);
   background.eye = camera.shading_eye();
+  background.depth_only = depth_only_pass;
   background.width = frame.width;
   background.height = frame.height;
   pipeline::prepare_debug_frame(settings.debug_view, lighting, background);

@@ -81,7 +81,10 @@ struct Renderer::Impl {
     shading::ShadowMap map;
   };
   std::vector<LightShadow> shadows;
-  bool shadows_ready = false;  // run() hands the maps to the lights (between the passes and finish)
+  bool shadows_ready = false;
+  bool depth_only_pass =
+      false;  // run() writes depth alone (a shadow map: Background::depth_only)  // run() hands the
+              // maps to the lights (between the passes and finish)
   std::vector<pipeline::DrawRecord> shadow_draws;  // the color pass's draws during the passes
   double shadow_ms = 0.0;
   // Meshes drawn through shared pointers, checked once (Renderer::draw): checking every mesh again

@@ -55,11 +55,8 @@ shading::ShadowMap shadow_map_of(const Camera& light, const Framebuffer& target)
   to_map[0][0] = 0.5f * size, to_map[3][0] = 0.5f * size - 0.5f;
   to_map[1][1] = -0.5f * size, to_map[3][1] = 0.5f * size - 0.5f;
   to_map[2][2] = 0.5f, to_map[3][2] = 0.5f;
-  shading::ShadowMap map;
-  map.world_to_map = to_map * light.view_projection();
-  map.depth = target.depth().data();
-  map.size = target.width();
-  return map;
+  return shading::make_shadow_map(to_map * light.view_projection(), target.depth().data(),
+                                  target.width(), light.projection_kind == Projection::perspective);
 }
 
 // The view of a light's map this frame, or none (no shadows from it).
@@ -113,6 +110,7 @@ void Renderer::Impl::run_shadow_passes() {
   settings.debug_view = DebugView::none;
   lighting.fog.mode = FogMode::none;
   lighting.environment.show_as_background = false;
+  depth_only_pass = true;
   const int size = settings.shadow_map_size;
   for (std::size_t i = 0; i < lighting.lights.size(); ++i) {
     const std::optional<Camera> view = shadow_view(lighting.lights[i], color_camera, scene, size);
@@ -129,6 +127,7 @@ void Renderer::Impl::run_shadow_passes() {
     run(*shadow.target);
     shadow.map = shadow_map_of(*view, *shadow.target);
   }
+  depth_only_pass = false;
   std::swap(frame.draws, shadow_draws);
   camera = color_camera;
   settings = color_settings;

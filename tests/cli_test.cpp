@@ -132,6 +132,7 @@ const BadCase kBadCases[] = {
     {"shadows_maybe", "--shadows maybe -o out.png"},
     {"shadow_map_zero", "--shadow-map-size 0 -o out.png"},
     {"shadow_map_huge", "--shadow-map-size 100000 -o out.png"},
+    {"shadow_cascades_5", "--shadow-cascades 5 -o out.png"},
     {"near_zero", "--near 0 -o out.png"},
     {"far_behind_near", "--far 0.05 -o out.png"},
     {"orthographic_fov", "--orthographic --fov 30 -o out.png"},

@@ -63,9 +63,10 @@ Light sun(glm::vec3 travel, float intensity) {
   return Light::directional(travel, glm::vec3(1.0f), intensity);
 }
 
-RenderSettings shadow_settings(bool shadows) {
+RenderSettings shadow_settings(bool shadows, int cascades = 1) {
   RenderSettings s;
   s.shadows = shadows;
+  s.shadow_cascades = cascades;
   s.shadow_map_size = 512;  // texels of about a third of a pixel on the plane: a fair test
   return s;
 }
@@ -164,17 +165,21 @@ class SquareShadow : public testing::TestWithParam<ShadingModel> {};
 TEST_P(SquareShadow, OutlineIsTheSquareAndTheLitPlaneHasNoAcne) {
   const glm::vec3 down(0.0f, -1.0f, 0.0f);
   const Camera camera = view_camera();
-  const Framebuffer shadowed =
-      render_scene_image(shadow_scene(GetParam(), kSquare, sun(down, 1.0f)), camera, kWidth,
-                         kHeight, shadow_settings(true));
   const Framebuffer lit = render_scene_image(shadow_scene(GetParam(), kSquare, sun(down, 1.0f)),
                                              camera, kWidth, kHeight, shadow_settings(false));
   const Framebuffer dark = render_scene_image(shadow_scene(GetParam(), kSquare, sun(down, 0.0f)),
                                               camera, kWidth, kHeight, shadow_settings(false));
-  const Judged judged =
-      expect_outline(shadowed, lit, dark, expected_shadow(camera, sun(down, 1.0f), kSquare));
-  EXPECT_GT(judged.shadow, 250);  // the shadow shows, not all behind the occluder
-  EXPECT_GT(judged.lit, 3000);
+  // One map, and a cascade of three over the view's depths (the square in the second).
+  for (int cascades : {1, 3}) {
+    SCOPED_TRACE(std::to_string(cascades) + " cascades");
+    const Framebuffer shadowed =
+        render_scene_image(shadow_scene(GetParam(), kSquare, sun(down, 1.0f)), camera, kWidth,
+                           kHeight, shadow_settings(true, cascades));
+    const Judged judged =
+        expect_outline(shadowed, lit, dark, expected_shadow(camera, sun(down, 1.0f), kSquare));
+    EXPECT_GT(judged.shadow, 250);  // the shadow shows, not all behind the occluder
+    EXPECT_GT(judged.lit, 3000);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(LitModels, SquareShadow,
@@ -291,6 +296,7 @@ TEST(Shadows, SameImageForAnyThreadsTilesAndSimdTarget) {
   for (int msaa : {1, 4}) {
     RenderSettings first = base;
     first.msaa = msaa;
+    first.shadow_cascades = msaa == 4 ? 3 : 1;
     const Framebuffer reference = render_scene_image(scene, camera, kWidth, kHeight, first);
     for (int threads : {2, 3, 7}) {
       for (int tile : {16, 32, 128}) {
@@ -299,7 +305,8 @@ TEST(Shadows, SameImageForAnyThreadsTilesAndSimdTarget) {
         s.tile_size = tile;
         const Framebuffer fb = render_scene_image(scene, camera, kWidth, kHeight, s);
         EXPECT_TRUE(fb.rgba8() == reference.rgba8())
-            << threads << " threads, tiles of " << tile << ", msaa " << msaa;
+            << threads << " threads, tiles of " << tile << ", msaa " << msaa << ", cascades "
+            << first.shadow_cascades;
       }
     }
   }
@@ -310,8 +317,8 @@ TEST(Shadows, SameImageForAnyThreadsTilesAndSimdTarget) {
   }
 }
 
-// The map size is checked where the settings are: 0 and 100000 are refused with a message
-// that names the setting and its range.
+// The map size and the cascades are checked where the settings are: a size of 0 or 100000, or
+// 0 or 5 cascades, is refused with a message that names the setting and its range.
 TEST(Shadows, ShadowMapSizeOutOfRangeIsAClearError) {
   for (int size : {0, -5, 15, 8193, 100000}) {
     RenderSettings s;
@@ -323,6 +330,16 @@ TEST(Shadows, ShadowMapSizeOutOfRangeIsAClearError) {
       const std::string message = e.what();
       EXPECT_NE(message.find("shadow map size"), std::string::npos) << message;
       EXPECT_NE(message.find(std::to_string(size)), std::string::npos) << message;
+    }
+  }
+  for (int cascades : {0, -1, 5}) {
+    RenderSettings s;
+    s.shadow_cascades = cascades;
+    try {
+      Renderer renderer(s);
+      ADD_FAILURE() << cascades << " shadow cascades accepted";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("shadow cascades"), std::string::npos) << e.what();
     }
   }
   RenderSettings fine;

@@ -107,4 +107,12 @@ void check_shadow_map_size(int size) {
   }
 }
 
+void check_shadow_cascades(int cascades) {
+  if (cascades < 1 || cascades > RenderSettings::kMaxShadowCascades) {
+    throw Error("--shadow-cascades: must be 1 to " +
+                std::to_string(RenderSettings::kMaxShadowCascades) + ", got " +
+                std::to_string(cascades));
+  }
+}
+
 }  // namespace facet::cli

@@ -34,5 +34,7 @@ std::string msaa_help(int default_samples);
 bool parse_shadows(const std::string& text);
 // Throws unless --shadow-map-size is within RenderSettings' range.
 void check_shadow_map_size(int size);
+// Throws unless --shadow-cascades is within RenderSettings' range.
+void check_shadow_cascades(int cascades);
 
 }  // namespace facet::cli

@@ -45,8 +45,7 @@ RenderSettings bench_settings(const BenchOptions& o, const bench::BenchScene& sc
   settings.threads = o.threads;
   settings.tile_size = o.tile_size;
   settings.msaa = o.msaa;
-  settings.shadows = parse_shadows(o.shadows);
-  settings.shadow_map_size = o.shadow_map_size;
+  apply_shadow_options(o.shadows, false, settings);
   settings.clear_color = scene.clear_color();
   return settings;
 }
@@ -193,7 +192,7 @@ CLI::App* add_bench_command(CLI::App& app, BenchOptions& o) {
   cmd->add_option("--tile-size", o.tile_size, "Tile edge in pixels: 16, 32, 64 or 128")
       ->capture_default_str();
   cmd->add_option("--msaa", o.msaa, msaa_help(1));
-  add_shadow_options(*cmd, o.shadows, o.shadow_map_size);
+  add_shadow_options(*cmd, o.shadows);
   cmd->add_option("--json", o.json, "Also write the results to this JSON file");
   return cmd;
 }
@@ -204,8 +203,8 @@ int run_bench(const BenchOptions& o) {
   if (o.warmup < 0) throw Error("--warmup: must be 0 or more");
   check_threads(o.threads);
   check_msaa(o.msaa);
-  parse_shadows(o.shadows);
-  check_shadow_map_size(o.shadow_map_size);
+  RenderSettings checked;
+  apply_shadow_options(o.shadows, false, checked);
   if (o.tile_size != 16 && o.tile_size != 32 && o.tile_size != 64 && o.tile_size != 128) {
     throw Error("--tile-size: must be 16, 32, 64 or 128, got " + std::to_string(o.tile_size));
   }

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cli_fwd.hpp"
+#include "render_command.hpp"
 
 namespace facet::cli {
 
@@ -18,10 +19,9 @@ struct BenchOptions {
   int warmup = 5;
   int threads = 0;
   int tile_size = 64;
-  int msaa = 1;                 // glmark2 runs without anti-aliasing
-  std::string shadows = "off";  // glmark2 draws none (RenderSettings::shadows)
-  int shadow_map_size = 2048;
-  std::string json;  // empty: no JSON file
+  int msaa = 1;           // glmark2 runs without anti-aliasing
+  ShadowOptions shadows;  // off by default: glmark2 draws none
+  std::string json;       // empty: no JSON file
 };
 
 CLI::App* add_bench_command(CLI::App& app, BenchOptions& options);

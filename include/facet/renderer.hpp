@@ -55,6 +55,11 @@ struct RenderSettings {
   bool shadows = false;
   static constexpr int kMinShadowMapSize = 16;
   int shadow_map_size = 2048;
+  // A directional light's maps: 1, or up to kMaxShadowCascades maps, each fitted to a slice of
+  // the view's depths (nearer slices thinner), for views whose depths span too much for one
+  // map's texels to be small near the camera (a world seen from the ground). Each is a pass.
+  static constexpr int kMaxShadowCascades = 4;
+  int shadow_cascades = 1;
 };
 
 struct FrameStats {
@@ -94,7 +99,8 @@ struct FrameStats {
 class Renderer {
  public:
   // Throws facet::Error for invalid settings (negative threads, unsupported tile size or
-  // sample count, a shadow map size outside [kMinShadowMapSize, Framebuffer::kMaxSize]).
+  // sample count, a shadow map size outside [kMinShadowMapSize, Framebuffer::kMaxSize], shadow
+  // cascades outside [1, kMaxShadowCascades]).
   explicit Renderer(const RenderSettings& settings = {});
   ~Renderer();
   Renderer(const Renderer&) = delete;

@@ -121,7 +121,7 @@ void Renderer::Impl::run(Framebuffer& target) {
   for (const Light& light : lighting.lights) frame.lights.push_back(shading::prepare_light(light));
   if (shadows_ready) {
     for (std::size_t i = 0; i < frame.lights.size() && i < shadows.size(); ++i) {
-      if (shadows[i].map.depth) frame.lights[i].shadow = &shadows[i].map;
+      if (shadows[i].maps.count > 0) frame.lights[i].shadow = &shadows[i].maps;
     }
   }
   // One SIMD target for the whole frame: every kernel is fetched for it here.

@@ -74,17 +74,15 @@ struct Renderer::Impl {
   // since they may still cast shadows into it (shadow_passes.cpp).
   bool frame_shadows = false;
   std::vector<pipeline::DrawRecord> outside_view_draws;
-  // Each light's shadow map (by its index in lighting.lights): the depth target of its pass and
-  // what the lit models read of it; `map.depth` null when the light has none this frame.
+  // Each light's shadow maps (by its index in lighting.lights): the depth targets of its passes
+  // and what the lit models read of them; `maps.count` 0 when the light has none this frame.
   struct LightShadow {
-    std::optional<Framebuffer> target;
-    shading::ShadowMap map;
+    std::optional<Framebuffer> targets[shading::kMaxShadowCascades];
+    shading::ShadowMaps maps;
   };
   std::vector<LightShadow> shadows;
-  bool shadows_ready = false;
-  bool depth_only_pass =
-      false;  // run() writes depth alone (a shadow map: Background::depth_only)  // run() hands the
-              // maps to the lights (between the passes and finish)
+  bool shadows_ready = false;    // run() hands the maps to the lights (after the passes)
+  bool depth_only_pass = false;  // run() writes depth alone (Background::depth_only)
   std::vector<pipeline::DrawRecord> shadow_draws;  // the color pass's draws during the passes
   double shadow_ms = 0.0;
   // Meshes drawn through shared pointers, checked once (Renderer::draw): checking every mesh again

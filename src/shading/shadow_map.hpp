@@ -1,6 +1,6 @@
-// Shadow maps as the lit models read them: a light's depth map, written by the frame's shadow
-// passes (pipeline/shadow_passes.cpp) before the color pass, and the filtered lookup that says
-// how much of a light reaches a surface point (shadow_visibility), read per pixel by the lit
+// Shadow maps as the lit models read them: a light's depth maps, written by the frame's shadow
+// passes (pipeline/shadow/shadow_passes.cpp) before the color pass, and the filtered lookup that
+// says how much of a light reaches a surface point (shadow_visibility), read per pixel by the lit
 // models (models.hpp, lit_models.hpp) through LightData::shadow.
 #pragma once
 
@@ -138,6 +138,25 @@ inline float shadow_visibility(const ShadowMap& map, glm::vec3 p, glm::vec3 n) {
   }
   if (seen == 16) return 1.0f;
   return seen == 0 ? 0.0f : lit * (1.0f / 9.0f);
+}
+
+// A light's maps: one, or for a sun over a deep view a cascade of them, each fitted to a slice
+// of the view's depths, nearest first, so texels near the camera are small.
+inline constexpr int kMaxShadowCascades = 4;
+struct ShadowMaps {
+  int count = 0;
+  ShadowMap maps[kMaxShadowCascades];
+  // Map i serves view depths up to far_depth[i]; the last serves everything beyond too.
+  float far_depth[kMaxShadowCascades] = {};
+  glm::vec3 eye{0.0f}, forward{0.0f, 0.0f, -1.0f};  // the view depth is (p - eye) . forward
+};
+
+// The share of the light reaching p (normal n) from the map that serves p's view depth.
+inline float shadow_visibility(const ShadowMaps& maps, glm::vec3 p, glm::vec3 n) {
+  const float depth = glm::dot(p - maps.eye, maps.forward);
+  int i = 0;
+  while (i + 1 < maps.count && depth > maps.far_depth[i]) ++i;
+  return shadow_visibility(maps.maps[i], p, n);
 }
 
 }  // namespace facet::shading

@@ -14,7 +14,7 @@
 
 namespace facet::shading {
 
-struct ShadowMap;  // shadow_map.hpp
+struct ShadowMaps;  // shadow_map.hpp
 
 // A light prepared for shading: directions normalized, cone angles as cosines.
 struct LightData {
@@ -26,8 +26,9 @@ struct LightData {
   float inv_range_squared = 0.0f;               // 0: unlimited
   float cos_inner = 1.0f;
   float cos_outer = 0.0f;
-  // The light's shadow map in a frame that renders it (pipeline/shadow_passes.cpp), else null.
-  const ShadowMap* shadow = nullptr;
+  // The light's shadow maps in a frame that renders them (pipeline/shadow_passes.cpp), else
+  // null.
+  const ShadowMaps* shadow = nullptr;
 };
 
 struct ShadingKernels;  // kernels.hpp

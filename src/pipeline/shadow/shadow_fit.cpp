@@ -87,6 +87,31 @@ std::optional<Camera> fit_directional_shadow(const Camera& view, glm::vec3 trave
   return light;
 }
 
+ViewDepths scene_depths(const Camera& view, const WorldBox& scene) {
+  if (scene.empty()) return {1.0f, 0.0f};
+  Span depths;
+  const glm::mat4 camera_view = view.view();
+  for (int corner = 0; corner < 8; ++corner) {
+    depths.add(-(camera_view * glm::vec4(box_corner(scene, corner), 1.0f)).z);
+  }
+  return {std::max(depths.low, view.near_plane), std::min(depths.high, view.far_plane)};
+}
+
+void cascade_splits(ViewDepths depths, int count, float* split) {
+  constexpr float kLogarithmic = 0.8f;
+  // A perspective view's nearest depth is positive; an orthographic one's may be 0, where the
+  // logarithmic steps would all be 0: start those at a thousandth of the far depth.
+  const float near = std::max(depths.nearest, depths.farthest * 1e-3f), far = depths.farthest;
+  split[0] = depths.nearest;
+  for (int i = 1; i < count; ++i) {
+    const float t = static_cast<float>(i) / static_cast<float>(count);
+    const float logarithmic = near * std::pow(far / near, t);
+    const float even = depths.nearest + (far - depths.nearest) * t;
+    split[i] = kLogarithmic * logarithmic + (1.0f - kLogarithmic) * even;
+  }
+  split[count] = far;
+}
+
 std::optional<Camera> fit_spot_shadow(glm::vec3 position, glm::vec3 travel, float outer_degrees,
                                       const WorldBox& scene, int map_size) {
   if (scene.empty() || !(glm::length(travel) > 0.0f)) return std::nullopt;

@@ -28,6 +28,19 @@ struct WorldBox {
 std::optional<Camera> fit_directional_shadow(const Camera& view, glm::vec3 travel,
                                              const WorldBox& scene, int map_size);
 
+// The view depths of `scene` (the box around every draw) within the camera's near and far
+// planes: where a sun's cascades split. Empty (nearest > farthest) when the scene lies outside.
+struct ViewDepths {
+  float nearest, farthest;
+};
+ViewDepths scene_depths(const Camera& view, const WorldBox& scene);
+
+// Where `count` cascades over `depths` meet: split[0] = nearest, split[count] = farthest, and
+// between them the practical split scheme (Zhang et al., "Parallel-split shadow maps"): a blend
+// of logarithmic steps (each map's texels the same size on screen) and even ones, weighted
+// 0.8 toward logarithmic. split holds count + 1 values.
+void cascade_splits(ViewDepths depths, int count, float* split);
+
 // The perspective camera of a spot light's map: from `position` along `travel`, its field of
 // view the cone's (outer_degrees each side) plus two texels of margin, at most 160 degrees (a
 // wider cone is shadowed within the central 160), its near and far planes around `scene`; none

@@ -59,18 +59,36 @@ shading::ShadowMap shadow_map_of(const Camera& light, const Framebuffer& target)
                                   target.width(), light.projection_kind == Projection::perspective);
 }
 
-// The view of a light's map this frame, or none (no shadows from it).
-std::optional<Camera> shadow_view(const Light& light, const Camera& camera,
-                                  const pipeline::WorldBox& scene, int size) {
-  if (!light.casts_shadows) return std::nullopt;
-  if (light.type == LightType::directional) {
-    return pipeline::fit_directional_shadow(camera, light.direction, scene, size);
-  }
+// The views of a light's maps this frame (none: no shadows from it): a spot's one, a sun's
+// one per cascade, fitted to its slice of the view's depths. Returns how many.
+int shadow_views(const Light& light, const Camera& camera, const pipeline::WorldBox& scene,
+                 const RenderSettings& settings, Camera* views, float* far_depths) {
+  const int size = settings.shadow_map_size;
+  if (!light.casts_shadows) return 0;
   if (light.type == LightType::spot) {
-    return pipeline::fit_spot_shadow(light.position, light.direction, light.outer_cone_degrees,
-                                     scene, size);
+    const std::optional<Camera> view = pipeline::fit_spot_shadow(
+        light.position, light.direction, light.outer_cone_degrees, scene, size);
+    if (!view) return 0;
+    views[0] = *view, far_depths[0] = camera.far_plane;
+    return 1;
   }
-  return std::nullopt;  // point lights cast no shadows (they would need six maps)
+  if (light.type != LightType::directional) return 0;  // point lights would need six maps
+  const pipeline::ViewDepths depths = pipeline::scene_depths(camera, scene);
+  if (!(depths.nearest <= depths.farthest)) return 0;
+  float split[shading::kMaxShadowCascades + 1];
+  pipeline::cascade_splits(depths, settings.shadow_cascades, split);
+  int count = 0;
+  for (int c = 0; c < settings.shadow_cascades; ++c) {
+    Camera slice = camera;
+    slice.near_plane = split[c], slice.far_plane = split[c + 1];
+    if (!(slice.far_plane > slice.near_plane)) slice.far_plane = camera.far_plane;
+    const std::optional<Camera> view =
+        pipeline::fit_directional_shadow(slice, light.direction, scene, size);
+    if (!view) continue;  // the slice sees nothing of the scene
+    views[count] = *view, far_depths[count] = split[c + 1];
+    ++count;
+  }
+  return count;
 }
 
 }  // namespace
@@ -81,7 +99,7 @@ void Renderer::Impl::run_shadow_passes() {
   if (!frame_shadows) return;
   const auto start = pipeline::Clock::now();
   shadows.resize(std::max(shadows.size(), lighting.lights.size()));
-  for (LightShadow& shadow : shadows) shadow.map.depth = nullptr;
+  for (LightShadow& shadow : shadows) shadow.maps.count = 0;
 
   // The box every draw lies in: receivers across the light, casters along it.
   pipeline::WorldBox scene;
@@ -113,19 +131,28 @@ void Renderer::Impl::run_shadow_passes() {
   depth_only_pass = true;
   const int size = settings.shadow_map_size;
   for (std::size_t i = 0; i < lighting.lights.size(); ++i) {
-    const std::optional<Camera> view = shadow_view(lighting.lights[i], color_camera, scene, size);
-    if (!view) continue;  // no shadows from it, or nothing it could shade is seen
+    Camera views[shading::kMaxShadowCascades];
+    float far_depths[shading::kMaxShadowCascades];
+    const int count =
+        shadow_views(lighting.lights[i], color_camera, scene, color_settings, views, far_depths);
     LightShadow& shadow = shadows[i];
-    if (!shadow.target || shadow.target->width() != size) {
-      shadow.target.emplace(size, size, ColorFormat::rgba8_srgb, DepthImage::keep);
+    for (int c = 0; c < count; ++c) {
+      std::optional<Framebuffer>& target = shadow.targets[c];
+      if (!target || target->width() != size) {
+        target.emplace(size, size, ColorFormat::rgba8_srgb, DepthImage::keep);
+      }
+      camera = views[c];
+      frame.view_projection = views[c].view_projection();
+      for (DrawRecord& caster : frame.draws) {
+        caster.uniforms.model_view_projection = frame.view_projection * caster.uniforms.model;
+      }
+      run(*target);
+      shadow.maps.maps[c] = shadow_map_of(views[c], *target);
+      shadow.maps.far_depth[c] = far_depths[c];
     }
-    camera = *view;
-    frame.view_projection = view->view_projection();
-    for (DrawRecord& caster : frame.draws) {
-      caster.uniforms.model_view_projection = frame.view_projection * caster.uniforms.model;
-    }
-    run(*shadow.target);
-    shadow.map = shadow_map_of(*view, *shadow.target);
+    shadow.maps.count = count;
+    shadow.maps.eye = color_camera.eye;
+    shadow.maps.forward = color_camera.forward();
   }
   depth_only_pass = false;
   std::swap(frame.draws, shadow_draws);

@@ -83,7 +83,8 @@ struct Renderer::Impl {
   std::vector<LightShadow> shadows;
   bool shadows_ready = false;    // run() hands the maps to the lights (after the passes)
   bool depth_only_pass = false;  // run() writes depth alone (Background::depth_only)
-  std::vector<pipeline::DrawRecord> shadow_draws;  // the color pass's draws during the passes
+  std::vector<pipeline::DrawRecord> shadow_draws;    // the color pass's draws during the passes
+  std::vector<pipeline::DrawRecord> shadow_casters;  // every draw that casts, drawn for the maps
   double shadow_ms = 0.0;
   // Meshes drawn through shared pointers, checked once (Renderer::draw): checking every mesh again
   // in every frame costs real time in big worlds of many draws, all of it on the recording thread.

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <optional>
 
+#include "pipeline/record/draw_culling.hpp"
 #include "pipeline/record/pipeline_table.hpp"
 #include "pipeline/renderer_impl.hpp"
 #include "pipeline/shadow/shadow_fit.hpp"
@@ -112,17 +113,20 @@ void Renderer::Impl::run_shadow_passes() {
   const glm::mat4 color_view_projection = frame.view_projection;
   const FogMode color_fog = lighting.fog.mode;
   const bool color_background = lighting.environment.show_as_background;
-  std::swap(frame.draws, shadow_draws);
-  frame.draws.clear();
-  for (const std::vector<DrawRecord>* draws : {&shadow_draws, &outside_view_draws}) {
+  shadow_casters.clear();
+  for (const std::vector<DrawRecord>* draws : {&frame.draws, &outside_view_draws}) {
     for (const DrawRecord& draw : *draws) {
       if (!casts_shadow(draw)) continue;
-      frame.draws.push_back(draw);
-      DrawRecord& caster = frame.draws.back();
+      shadow_casters.push_back(draw);
+      DrawRecord& caster = shadow_casters.back();
       caster.pipeline = shadow_pipeline(draw.material.alpha_mode);
       caster.material.cull = CullMode::none;  // open meshes cast from either side
+      // Only a cut-out reads its texture (for alpha): the others' would be sampled for nothing.
+      if (caster.material.alpha_mode != AlphaMode::mask) caster.material.base_color_map = {};
+      caster.material.emissive_map = {};
     }
   }
+  std::swap(frame.draws, shadow_draws);
   settings.msaa = 1;
   settings.exposure = 0.0f;
   settings.debug_view = DebugView::none;
@@ -143,8 +147,15 @@ void Renderer::Impl::run_shadow_passes() {
       }
       camera = views[c];
       frame.view_projection = views[c].view_projection();
-      for (DrawRecord& caster : frame.draws) {
-        caster.uniforms.model_view_projection = frame.view_projection * caster.uniforms.model;
+      // Each pass draws the casters its view takes in, as recording does for the camera's.
+      frame.draws.clear();
+      for (const DrawRecord& caster : shadow_casters) {
+        const glm::mat4 model_view_projection = frame.view_projection * caster.uniforms.model;
+        if (caster.bounds && pipeline::box_outside_frustum(*caster.bounds, model_view_projection)) {
+          continue;
+        }
+        frame.draws.push_back(caster);
+        frame.draws.back().uniforms.model_view_projection = model_view_projection;
       }
       run(*target);
       shadow.maps.maps[c] = shadow_map_of(views[c], *target);

@@ -50,8 +50,8 @@ struct RenderSettings {
   // spot's cone) renders every triangle draw but the blended ones into a square map of
   // shadow_map_size texels a side (kMinShadowMapSize to Framebuffer::kMaxSize), through the
   // same tiled pipeline; the lit models (Lambert, Phong, Blinn-Phong and PBR per pixel, Gouraud
-  // per vertex, flat per triangle) scale the light by the share of a filtered 4x4-texel
-  // footprint that sees it. docs/pipeline.md, "Shadows".
+  // per vertex; not flat) scale the light by the share of a filtered 4x4-texel footprint that
+  // sees it. docs/pipeline.md, "Shadows".
   bool shadows = false;
   static constexpr int kMinShadowMapSize = 16;
   int shadow_map_size = 2048;

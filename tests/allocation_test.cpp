@@ -61,6 +61,23 @@ TEST(Allocations, SteadyStateFramesAllocateNothing) {
   }
 }
 
+// With shadows, the maps' targets and the passes' draw lists are kept from frame to frame too.
+TEST(Allocations, SteadyStateFramesWithShadowsAllocateNothing) {
+  if (!FACET_COUNTS_ALLOCATIONS) GTEST_SKIP() << "allocations are not counted in sanitizer builds";
+  for (const char* name : {"shapes", "islands"}) {
+    auto scene = bench::make_bench_scene(name);
+    RenderSettings settings;
+    settings.threads = 2;
+    settings.shadows = true;
+    settings.shadow_map_size = 256;
+    Renderer renderer(settings);
+    Framebuffer fb(320, 180);
+    allocations_in_frames(*scene, renderer, fb, 5);
+    EXPECT_EQ(allocations_in_frames(*scene, renderer, fb, 30), 0) << name;
+    EXPECT_GT(renderer.stats().ms_shadows, 0.0) << name << ": no shadow pass ran";
+  }
+}
+
 TEST(Allocations, TheCounterSeesAllocations) {
   if (!FACET_COUNTS_ALLOCATIONS) GTEST_SKIP() << "allocations are not counted in sanitizer builds";
   long before = g_allocations.load();

@@ -37,8 +37,8 @@ ExtraOutputs all_extra(NormalSpace normals = NormalSpace::world) {
 }
 
 // What `facet render --scene shapes --size 64x48` draws, in process: the scene's own camera,
-// the CLI's default background as clear color, its default 4 samples a pixel and its default
-// tone mapping.
+// the CLI's default background as clear color, its default 4 samples a pixel, tone mapping
+// and shadows.
 Framebuffer reference(ColorFormat format, NormalSpace normals = NormalSpace::world) {
   Scene scene = make_builtin_scene("shapes");
   const glm::vec3 background = srgb_to_linear(glm::vec3(0.53f, 0.66f, 0.82f));
@@ -47,8 +47,9 @@ Framebuffer reference(ColorFormat format, NormalSpace normals = NormalSpace::wor
   camera.aspect = static_cast<float>(kWidth) / kHeight;
   RenderSettings settings;
   settings.clear_color = glm::vec4(background, 1.0f);
-  settings.msaa = 4;  // facet render's default
-  settings.tone_mapping = ToneMapping::pbr_neutral;
+  settings.msaa = 4;                                 // facet render's default
+  settings.tone_mapping = ToneMapping::pbr_neutral;  // likewise
+  settings.shadows = true;                           // likewise
   Renderer renderer(settings);
   Framebuffer image(kWidth, kHeight, format, DepthImage::none, all_extra(normals));
   renderer.begin_frame(camera, scene.lighting);

@@ -441,9 +441,9 @@ TEST(GlTwinCli, RenderBackendGlDrawsWhatFacetDraws) {
   REQUIRE_GL(gl);
   const auto dir = test::fresh_test_dir("facet_gl_twin_", "cli");
   // One sample a pixel: at 4 the two sample patterns are mirrored (see GlTwinMsaa), and the
-  // edges' difference would hide a wrong light.
+  // edges' difference would hide a wrong light. No shadows: the twin draws none.
   const std::string common =
-      std::string(FACET_CLI) + " render --scene teapot --size 160x90 --msaa 1 -o ";
+      std::string(FACET_CLI) + " render --scene teapot --size 160x90 --msaa 1 --shadows off -o ";
   const test::CommandResult twin =
       test::run_command(common + (dir / "gl.png").string() + " --backend gl");
   ASSERT_EQ(twin.exit_code, 0) << twin.stderr_text;

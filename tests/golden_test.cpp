@@ -1,6 +1,7 @@
 // Golden images: `facet render --scene shapes` at 640x360 for every shading model, compared with
-// tests/golden/shapes_<model>.png. Set FACET_UPDATE_GOLDENS=1 to overwrite the goldens with the
-// current renders instead (do it on purpose, then look at every image before committing).
+// tests/golden/shapes_<model>.png, and with its default shadows, shapes_shadows.png. Set
+// FACET_UPDATE_GOLDENS=1 to overwrite the goldens with the current renders instead (do it on
+// purpose, then look at every image before committing).
 #include "support/golden.hpp"
 
 #include <gtest/gtest.h>
@@ -45,12 +46,15 @@ TEST_P(ShapesScene, MatchesGolden) {
   const fs::path output = fs::path(::testing::TempDir()) / (model + ".png");
   fs::remove(output);
 
-  // One sample a pixel and no tone mapping: these goldens hold the shading models, not the
-  // anti-aliasing (msaa_test.cpp's golden does) nor the curves (tone_mapping_test.cpp).
-  const std::string command =
-      std::string(FACET_CLI) + " render --msaa 1 --tone-mapping none --scene shapes --size " +
-      std::to_string(kWidth) + "x" + std::to_string(kHeight) + " --shading " + model +
-      golden_case.extra_args + " -o '" + output.string() + "'";
+  // One sample a pixel, no tone mapping and no shadows: these goldens hold the shading models,
+  // not the anti-aliasing (msaa_test.cpp's golden does), the curves (tone_mapping_test.cpp) or
+  // the shadows (ShapesSceneShadows's).
+  const std::string command = std::string(FACET_CLI) +
+                              " render --msaa 1 --tone-mapping none --shadows off --scene shapes "
+                              "--size " +
+                              std::to_string(kWidth) + "x" + std::to_string(kHeight) +
+                              " --shading " + model + golden_case.extra_args + " -o '" +
+                              output.string() + "'";
   CommandResult result = run_command(command);
   ASSERT_EQ(result.exit_code, 0) << command << "\n" << result.stderr_text;
   expect_matches_golden(output.string(), "shapes_" + model);
@@ -60,6 +64,18 @@ INSTANTIATE_TEST_SUITE_P(Golden, ShapesScene, ::testing::ValuesIn(kCases),
                          [](const ::testing::TestParamInfo<GoldenCase>& param_info) {
                            return std::string(param_info.param.model);
                          });
+
+// The shapes scene as `facet render` draws it by default (4x MSAA, shadows from the key light).
+TEST(ShapesSceneShadows, MatchesGolden) {
+  const fs::path output = fs::path(::testing::TempDir()) / "shadows.png";
+  fs::remove(output);
+  const std::string command = std::string(FACET_CLI) + " render --scene shapes --size " +
+                              std::to_string(kWidth) + "x" + std::to_string(kHeight) + " -o '" +
+                              output.string() + "'";
+  CommandResult result = run_command(command);
+  ASSERT_EQ(result.exit_code, 0) << command << "\n" << result.stderr_text;
+  expect_matches_golden(output.string(), "shapes_shadows");
+}
 
 }  // namespace
 }  // namespace facet::test

@@ -125,4 +125,26 @@ std::string tone_mapping_help(ToneMapping default_curve) {
          to_string(default_curve) + ")";
 }
 
+bool parse_shadows(const std::string& text) {
+  if (text == "on") return true;
+  if (text == "off") return false;
+  throw Error("--shadows: expected on or off, got '" + text + "'");
+}
+
+void check_shadow_map_size(int size) {
+  if (size < RenderSettings::kMinShadowMapSize || size > Framebuffer::kMaxSize) {
+    throw Error("--shadow-map-size: must be " + std::to_string(RenderSettings::kMinShadowMapSize) +
+                " to " + std::to_string(Framebuffer::kMaxSize) + " texels, got " +
+                std::to_string(size));
+  }
+}
+
+void check_shadow_cascades(int cascades) {
+  if (cascades < 1 || cascades > RenderSettings::kMaxShadowCascades) {
+    throw Error("--shadow-cascades: must be 1 to " +
+                std::to_string(RenderSettings::kMaxShadowCascades) + ", got " +
+                std::to_string(cascades));
+  }
+}
+
 }  // namespace facet::cli

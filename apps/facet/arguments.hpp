@@ -37,5 +37,11 @@ ToneMapping parse_tone_mapping(const std::string& text);
 const char* to_string(ToneMapping curve);
 // The --tone-mapping help text, with the command's default.
 std::string tone_mapping_help(ToneMapping default_curve);
+// --shadows on|off as a bool; throws for anything else.
+bool parse_shadows(const std::string& text);
+// Throws unless --shadow-map-size is within RenderSettings' range.
+void check_shadow_map_size(int size);
+// Throws unless --shadow-cascades is within RenderSettings' range.
+void check_shadow_cascades(int cascades);
 
 }  // namespace facet::cli

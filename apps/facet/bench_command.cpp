@@ -17,6 +17,7 @@
 #include "facet/image_io.hpp"
 #include "facet/renderer.hpp"
 #include "render_backend.hpp"
+#include "render_command.hpp"
 #include "scenes/bench_scenes.hpp"
 
 namespace facet::cli {
@@ -45,6 +46,7 @@ RenderSettings bench_settings(const BenchOptions& o, const bench::BenchScene& sc
   settings.tile_size = o.tile_size;
   settings.msaa = o.msaa;
   settings.tone_mapping = parse_tone_mapping(o.tone_mapping);
+  apply_shadow_options(o.shadows, false, settings);
   settings.clear_color = scene.clear_color();
   return settings;
 }
@@ -193,6 +195,7 @@ CLI::App* add_bench_command(CLI::App& app, BenchOptions& o) {
       ->capture_default_str();
   cmd->add_option("--msaa", o.msaa, msaa_help(1));
   cmd->add_option("--tone-mapping", o.tone_mapping, tone_mapping_help(ToneMapping::none));
+  add_shadow_options(*cmd, o.shadows);
   cmd->add_option("--json", o.json, "Also write the results to this JSON file");
   return cmd;
 }
@@ -204,6 +207,8 @@ int run_bench(const BenchOptions& o) {
   check_threads(o.threads);
   check_msaa(o.msaa);
   parse_tone_mapping(o.tone_mapping);
+  RenderSettings checked;
+  apply_shadow_options(o.shadows, false, checked);
   if (o.tile_size != 16 && o.tile_size != 32 && o.tile_size != 64 && o.tile_size != 128) {
     throw Error("--tile-size: must be 16, 32, 64 or 128, got " + std::to_string(o.tile_size));
   }

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cli_fwd.hpp"
+#include "render_command.hpp"
 
 namespace facet::cli {
 
@@ -20,6 +21,7 @@ struct BenchOptions {
   int tile_size = 64;
   int msaa = 1;                       // glmark2 runs without anti-aliasing
   std::string tone_mapping = "none";  // nor tone mapping
+  ShadowOptions shadows;              // nor shadows
   std::string json;                   // empty: no JSON file
 };
 

@@ -33,6 +33,32 @@ DebugView parse_debug_view(const std::string& text) {
 
 }  // namespace
 
+void add_shadow_options(CLI::App& cmd, ShadowOptions& o) {
+  cmd.add_option("--shadows", o.shadows,
+                 "Shadows of the scene's directional and spot lights (each that casts them: a "
+                 "model's own, or the key of the default three lights), through shadow maps: on "
+                 "or off")
+      ->capture_default_str();
+  cmd.add_option("--shadow-map-size", o.map_size,
+                 "Shadow map edge in texels, " + std::to_string(RenderSettings::kMinShadowMapSize) +
+                     " .. " + std::to_string(Framebuffer::kMaxSize))
+      ->capture_default_str();
+  cmd.add_option("--shadow-cascades", o.cascades,
+                 "Shadow maps per directional light, 1 .. " +
+                     std::to_string(RenderSettings::kMaxShadowCascades) +
+                     ", each fitted to a slice of the view's depths: more keep shadows sharp near "
+                     "the camera over a large world (the islands), at a depth pass each")
+      ->capture_default_str();
+}
+
+void apply_shadow_options(const ShadowOptions& o, bool default_on, RenderSettings& settings) {
+  settings.shadows = o.shadows ? parse_shadows(*o.shadows) : default_on;
+  check_shadow_map_size(o.map_size);
+  check_shadow_cascades(o.cascades);
+  settings.shadow_map_size = o.map_size;
+  settings.shadow_cascades = o.cascades;
+}
+
 CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
   CLI::App* cmd = app.add_subcommand("render",
                                      "Render a model or a built-in scene to image files, one frame "
@@ -64,6 +90,7 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
                   "through EGL: docs/gl_twin.md)")
       ->capture_default_str();
   cmd->add_option("--msaa", o.msaa, msaa_help(4));
+  add_shadow_options(*cmd, o.shadows);
   cmd->add_option("--compare", o.compare,
                   "Draw the view once per variant and write them side by side, labelled: shading "
                   "models (every material shaded so), backends and tone mappings, separated by "
@@ -84,6 +111,8 @@ int run_render(const RenderOptions& o) {
   ImageSize size = parse_size("--size", o.size);
   check_threads(o.threads);
   check_msaa(o.msaa);
+  RenderSettings shadow_settings;
+  apply_shadow_options(o.shadows, true, shadow_settings);
   if (!std::isfinite(o.exposure) || std::abs(o.exposure) > 20.0f) {
     throw Error("--exposure: must be within -20 .. 20 stops");
   }
@@ -135,6 +164,9 @@ int run_render(const RenderOptions& o) {
   settings.threads = o.threads;
   settings.tile_size = o.tile_size;
   settings.msaa = o.msaa;
+  settings.shadows = shadow_settings.shadows;
+  settings.shadow_map_size = shadow_settings.shadow_map_size;
+  settings.shadow_cascades = shadow_settings.shadow_cascades;
   // Transparent: the framebuffer holds premultiplied color (blending over alpha 0), written
   // out with straight alpha (FrameRenderer).
   settings.clear_color = glm::vec4(background, transparent ? 0.0f : 1.0f);

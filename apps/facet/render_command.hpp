@@ -3,14 +3,23 @@
 // folders into a folder (render_batch.hpp).
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "cli_fwd.hpp"
+#include "facet/renderer.hpp"
 #include "frame_options.hpp"
 #include "render_batch.hpp"
 #include "scene_options.hpp"
 
 namespace facet::cli {
+
+// --shadows, --shadow-map-size, --shadow-cascades (render and bench).
+struct ShadowOptions {
+  std::optional<std::string> shadows;  // "on" or "off"; unset: the command's default
+  int map_size = 2048;                 // RenderSettings::shadow_map_size
+  int cascades = 1;                    // RenderSettings::shadow_cascades
+};
 
 struct RenderOptions {
   SceneOptions scene;
@@ -24,12 +33,19 @@ struct RenderOptions {
   std::string tone_mapping = "pbr-neutral";
   int threads = 0;
   int tile_size = 64;
-  int msaa = 4;  // anti-aliased images by default (RenderSettings::msaa)
+  int msaa = 4;           // anti-aliased images by default (RenderSettings::msaa)
+  ShadowOptions shadows;  // on by default
   bool orthographic = false;
   std::string backend = "facet";       // or "gl": the OpenGL twin (render_backend.hpp)
   std::optional<std::string> compare;  // variants side by side (render_compare.hpp)
   BatchOptions batch;                  // the positional models; several, or a folder, make a batch
 };
+
+// Adds the shadow options to a command (render, bench), filled on parse.
+void add_shadow_options(CLI::App& cmd, ShadowOptions& options);
+// Checks them (throwing facet::Error naming the flag) and sets them in settings; shadows are
+// `default_on` unless --shadows says.
+void apply_shadow_options(const ShadowOptions& options, bool default_on, RenderSettings& settings);
 
 // Adds the `render` subcommand and its flags to app; options are filled on parse.
 CLI::App* add_render_command(CLI::App& app, RenderOptions& options);

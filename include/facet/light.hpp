@@ -22,6 +22,8 @@ struct Light {
   float range = 0.0f;      // point/spot: distance where the light fades out; 0 = unlimited
   float inner_cone_degrees = 25.0f;  // spot: full intensity inside this half-angle
   float outer_cone_degrees = 35.0f;  // spot: zero outside this half-angle
+  // Whether the light casts shadows when the frame renders them (RenderSettings::shadows).
+  bool casts_shadows = true;
 
   static Light directional(glm::vec3 direction, glm::vec3 color = glm::vec3(1.0f),
                            float intensity = 1.0f);
@@ -70,7 +72,8 @@ struct Lighting {
 };
 
 // Three lights that make any model readable: a warm key from the upper left front, a cool
-// fill from the right, a rim light from behind (all directional, relative to the view).
+// fill from the right, a rim light from behind (all directional, relative to the view); only the
+// key casts shadows.
 std::vector<Light> three_point_lights(glm::vec3 view_forward, glm::vec3 view_right);
 
 }  // namespace facet

@@ -47,6 +47,22 @@ struct RenderSettings {
   // pixels. Debug views render with 1 sample. docs/pipeline.md,
   // "Anti-aliasing".
   int msaa = 1;
+  // Shadow maps: each directional or spot light with Light::casts_shadows casts shadows when
+  // this is on (point lights do not). Before the color pass, a depth pass from each such light
+  // (orthographic along a directional light, fitted to what the camera sees; perspective over a
+  // spot's cone) renders every triangle draw but the blended ones into a square map of
+  // shadow_map_size texels a side (kMinShadowMapSize to Framebuffer::kMaxSize), through the
+  // same tiled pipeline; the lit models (Lambert, Phong, Blinn-Phong and PBR per pixel, Gouraud
+  // per vertex; not flat) scale the light by the share of a filtered 4x4-texel footprint that
+  // sees it. docs/pipeline.md, "Shadows".
+  bool shadows = false;
+  static constexpr int kMinShadowMapSize = 16;
+  int shadow_map_size = 2048;
+  // A directional light's maps: 1, or up to kMaxShadowCascades maps, each fitted to a slice of
+  // the view's depths (nearer slices thinner), for views whose depths span too much for one
+  // map's texels to be small near the camera (a world seen from the ground). Each is a pass.
+  static constexpr int kMaxShadowCascades = 4;
+  int shadow_cascades = 1;
 };
 
 struct FrameStats {
@@ -74,6 +90,9 @@ struct FrameStats {
   // The passes of the extra outputs asked for (ExtraOutputs), included in ms_total; the
   // counts above are the color pass's.
   double ms_extra_outputs = 0;
+  // The shadow maps' depth passes (RenderSettings::shadows), included in ms_total; the counts
+  // above are the color pass's.
+  double ms_shadows = 0;
   // Every color was a display value, an 8-bit code (as the normals, depth and texcoords
   // models write): resolve rounded them to bytes instead of sRGB-encoding them, with the same
   // result.
@@ -82,7 +101,9 @@ struct FrameStats {
 
 class Renderer {
  public:
-  // Throws facet::Error for invalid settings (negative threads, unsupported tile size).
+  // Throws facet::Error for invalid settings (negative threads, unsupported tile size or
+  // sample count, a shadow map size outside [kMinShadowMapSize, Framebuffer::kMaxSize], shadow
+  // cascades outside [1, kMaxShadowCascades]).
   explicit Renderer(const RenderSettings& settings = {});
   ~Renderer();
   Renderer(const Renderer&) = delete;

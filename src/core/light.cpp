@@ -43,6 +43,8 @@ std::vector<Light> three_point_lights(glm::vec3 forward, glm::vec3 right) {
   Light key = Light::directional(forward + right * 0.6f - up * 0.9f, {1.0f, 0.95f, 0.88f}, 1.0f);
   Light fill = Light::directional(forward * 0.6f - right - up * 0.2f, {0.75f, 0.82f, 1.0f}, 0.35f);
   Light rim = Light::directional(-forward - up * 0.5f, {1.0f, 1.0f, 1.0f}, 0.45f);
+  // Only the key light casts shadows: shadows from the fill and the rim would cross the key's.
+  fill.casts_shadows = rim.casts_shadows = false;
   return {key, fill, rim};
 }
 

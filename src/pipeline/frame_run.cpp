@@ -126,6 +126,11 @@ void Renderer::Impl::run(Framebuffer& target) {
   // Per-draw pointers into frame-wide data, set now that the draw list no longer grows.
   frame.lights.clear();
   for (const Light& light : lighting.lights) frame.lights.push_back(shading::prepare_light(light));
+  if (shadows_ready) {
+    for (std::size_t i = 0; i < frame.lights.size() && i < shadows.size(); ++i) {
+      if (shadows[i].maps.count > 0) frame.lights[i].shadow = &shadows[i].maps;
+    }
+  }
   // One SIMD target for the whole frame: every kernel is fetched for it here.
   kernels = pipeline::kernels_for(chosen_simd_target());
   frame.kernels = &kernels;
@@ -169,6 +174,7 @@ void Renderer::Impl::run(Framebuffer& target) {
       lighting.environment.show_as_background ? &lighting.environment : nullptr;
   background.inverse_view_projection = glm::inverse(frame.view_projection);
   background.eye = camera.shading_eye();
+  background.depth_only = depth_only_pass;
   background.width = frame.width;
   background.height = frame.height;
   pipeline::prepare_debug_frame(settings.debug_view, lighting, background);
@@ -186,7 +192,7 @@ void Renderer::Impl::run(Framebuffer& target) {
   resolve.maps_background = background.environment != nullptr;
   // Fog fades toward what the curve shows as the fog color after the exposure, as it shows a
   // clear color of that value (facet::inverse_tone_map).
-  if (resolve.tone_mapping != ToneMapping::none) {
+  if (resolve.tone_mapping != ToneMapping::none && lighting.fog.mode != FogMode::none) {
     const glm::vec3 shown = glm::min(lighting.fog.color * resolve.scale, glm::vec3(1.0f));
     lighting.fog.color = inverse_tone_map(resolve.tone_mapping, shown) / resolve.scale;
   }

@@ -2,6 +2,7 @@
 // when outside the view, its pipeline chosen from the table: record/), finish() runs the frame
 // (frame_run.cpp). Also the internal entry for draws with their own shading models
 // (record/custom_draw.hpp).
+#include <algorithm>
 #include <glm/gtc/matrix_inverse.hpp>
 #include <memory>
 #include <optional>
@@ -27,6 +28,18 @@ Renderer::Renderer(const RenderSettings& settings) {
   int ts = settings.tile_size;
   if (ts != 16 && ts != 32 && ts != 64 && ts != 128) {
     throw Error("renderer: tile size must be 16, 32, 64 or 128, got " + std::to_string(ts));
+  }
+  const int map = settings.shadow_map_size;
+  if (map < RenderSettings::kMinShadowMapSize || map > Framebuffer::kMaxSize) {
+    throw Error("renderer: shadow map size must be " +
+                std::to_string(RenderSettings::kMinShadowMapSize) + " to " +
+                std::to_string(Framebuffer::kMaxSize) + " texels, got " + std::to_string(map));
+  }
+  const int cascades = settings.shadow_cascades;
+  if (cascades < 1 || cascades > RenderSettings::kMaxShadowCascades) {
+    throw Error("renderer: shadow cascades must be 1 to " +
+                std::to_string(RenderSettings::kMaxShadowCascades) + ", got " +
+                std::to_string(cascades));
   }
   const int n = settings.msaa;
   if (n != 1 && n != 2 && n != 4 && n != 8 && n != 16) {
@@ -54,6 +67,12 @@ void Renderer::begin_frame(const Camera& camera, const Lighting& lighting) {
   impl_->camera = camera;
   impl_->lighting = lighting;
   impl_->frame.draws.clear();
+  impl_->outside_view_draws.clear();
+  impl_->frame_shadows =
+      impl_->settings.shadows &&
+      std::any_of(lighting.lights.begin(), lighting.lights.end(), [](const Light& light) {
+        return light.casts_shadows && light.type != LightType::point;
+      });
   impl_->primitives_outside = 0;
   impl_->instance_id.reset();
   impl_->draw_calls = 0;
@@ -66,15 +85,16 @@ void Renderer::begin_frame(const Camera& camera, const Lighting& lighting) {
 }
 
 void Renderer::draw(const Mesh& mesh, const Material& material, const glm::mat4& transform) {
-  impl_->check_and_record(mesh, material, transform,
-                          pipeline::pipeline_for(material, mesh, impl_->lighting));
+  impl_->check_and_record(
+      mesh, material, transform,
+      pipeline::pipeline_for(material, mesh, impl_->lighting, impl_->frame_shadows));
 }
 
 void Renderer::draw(const std::shared_ptr<const Mesh>& mesh, const Material& material,
                     const glm::mat4& transform) {
   const std::optional<pipeline::MeshBox>& box = impl_->checked_bounds(mesh);
   impl_->record(*mesh, box, material, transform,
-                pipeline::pipeline_for(material, *mesh, impl_->lighting));
+                pipeline::pipeline_for(material, *mesh, impl_->lighting, impl_->frame_shadows));
 }
 
 void Renderer::set_instance_id(std::uint32_t id) {
@@ -130,9 +150,10 @@ void Renderer::Impl::record(const Mesh& mesh, const std::optional<pipeline::Mesh
   }
   ++draw_calls;
   const glm::mat4 model_view_projection = frame.view_projection * transform;
-  if (box && pipeline::box_outside_frustum(*box, model_view_projection)) {
+  const bool outside = box && pipeline::box_outside_frustum(*box, model_view_projection);
+  if (outside) {
     primitives_outside += mesh.primitive_count();
-    return;
+    if (!frame_shadows) return;
   }
   pipeline::DrawRecord record;
   record.mesh = &mesh;
@@ -148,16 +169,20 @@ void Renderer::Impl::record(const Mesh& mesh, const std::optional<pipeline::Mesh
   u.model_view_projection = model_view_projection;
   u.normal_matrix = glm::inverseTranspose(glm::mat3(transform));
   u.instance_id = instance_id.value_or(draw_calls);
-  frame.draws.push_back(record);
+  (outside ? outside_view_draws : frame.draws).push_back(record);
 }
 
 void Renderer::finish(Framebuffer& target) {
   impl_->require_recording("finish()");
   if (target.extra_outputs().any()) impl_->check_extra_outputs(target);
   impl_->arena.execute([&] {
+    impl_->run_shadow_passes();
     impl_->run(target);
+    impl_->frame.stats.ms_shadows = impl_->shadow_ms;
+    impl_->frame.stats.ms_total += impl_->shadow_ms;
     if (target.extra_outputs().any()) impl_->run_extra_outputs(target);
   });
+  impl_->shadows_ready = false;
   impl_->recording = false;
 }
 

@@ -19,6 +19,7 @@
 #include "pipeline/frame.hpp"
 #include "pipeline/kernels.hpp"
 #include "pipeline/output/output.hpp"
+#include "shading/shadow_map.hpp"
 
 namespace facet {
 namespace pipeline {
@@ -69,7 +70,24 @@ struct Renderer::Impl {
   std::uint32_t draw_calls = 0;
   // The float target the extra outputs' passes render into, reused while the size stays.
   std::optional<Framebuffer> pass_target;
-  std::uint64_t primitives_outside = 0;  // of draws outside the frustum, never recorded
+  std::uint64_t primitives_outside = 0;  // of draws outside the frustum, never drawn in color
+  // Whether this frame renders shadow maps (RenderSettings::shadows and a light that casts
+  // them), decided at begin_frame(); then the draws outside the camera's view are kept here,
+  // since they may still cast shadows into it (shadow_passes.cpp).
+  bool frame_shadows = false;
+  std::vector<pipeline::DrawRecord> outside_view_draws;
+  // Each light's shadow maps (by its index in lighting.lights): the depth targets of its passes
+  // and what the lit models read of them; `maps.count` 0 when the light has none this frame.
+  struct LightShadow {
+    std::optional<Framebuffer> targets[shading::kMaxShadowCascades];
+    shading::ShadowMaps maps;
+  };
+  std::vector<LightShadow> shadows;
+  bool shadows_ready = false;    // run() hands the maps to the lights (after the passes)
+  bool depth_only_pass = false;  // run() writes depth alone (Background::depth_only)
+  std::vector<pipeline::DrawRecord> shadow_draws;    // the color pass's draws during the passes
+  std::vector<pipeline::DrawRecord> shadow_casters;  // every draw that casts, drawn for the maps
+  double shadow_ms = 0.0;
   // Meshes drawn through shared pointers, checked once (Renderer::draw): checking every mesh again
   // in every frame costs real time in big worlds of many draws, all of it on the recording thread.
   // An entry holds its mesh, so no other mesh can take its address while it is remembered; it is
@@ -111,6 +129,8 @@ struct Renderer::Impl {
   void check_extra_outputs(const Framebuffer& target) const;
   // The passes of target's extra outputs, after run() drew its color (output_passes.cpp).
   void run_extra_outputs(Framebuffer& target);
+  // The shadow maps of the frame's lights, before the color pass (shadow_passes.cpp).
+  void run_shadow_passes();
   void order_draws();
   void set_depth_view_range();
   bool draws_only_display_values() const;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <glm/glm.hpp>
 
+#include "shading/shadow_map.hpp"
 #include "shading/uniforms.hpp"
 
 namespace facet::shading {
@@ -37,6 +38,14 @@ inline IncidentLight incident(const LightData& light, glm::vec3 p) {
     attenuation *= t * t;
   }
   return {direction, light.radiance * attenuation};
+}
+
+// The radiance of `in` at world position p of unit normal n (facing the light), after the
+// light's shadow (none: unchanged, the same bits).
+inline glm::vec3 received_radiance(const LightData& light, const IncidentLight& in, glm::vec3 p,
+                                   glm::vec3 n) {
+  if (!light.shadow) return in.radiance;
+  return in.radiance * shadow_visibility(*light.shadow, p, n);
 }
 
 }  // namespace facet::shading

@@ -44,9 +44,11 @@ struct PhongShadingT : BatchForm<kBlinn ? BatchModel::blinn_phong : BatchModel::
     float shininess = u.material->shininess;
     glm::vec3 color = albedo * u.frame->ambient;
     for (int i = 0; i < u.frame->light_count; ++i) {
-      IncidentLight in = incident(u.frame->lights[i], s.position);
+      const LightData& light = u.frame->lights[i];
+      IncidentLight in = incident(light, s.position);
       float n_dot_l = glm::dot(s.normal, in.direction);
       if (n_dot_l <= 0.0f) continue;
+      in.radiance = received_radiance(light, in, s.position, s.normal);
       float highlight = kBlinn ? blinn_phong_specular(s.normal, s.view, in.direction, shininess)
                                : phong_specular(s.normal, s.view, in.direction, shininess);
       color += in.radiance * (albedo * n_dot_l + spec * highlight);
@@ -58,10 +60,10 @@ struct PhongShadingT : BatchForm<kBlinn ? BatchModel::blinn_phong : BatchModel::
 using PhongShading = PhongShadingT<false>;
 using BlinnPhongShading = PhongShadingT<true>;
 
-// Gouraud: Blinn-Phong evaluated at the vertices; the pixel interpolates diffuse and
-// specular light. GouraudLight is the lighting both layouts share: the diffuse light at slots
-// kDiffuse..kDiffuse+2, the specular light at the next three, after the surface layout's
-// texture coordinate and color if kWithSurface.
+// Gouraud: Blinn-Phong evaluated at the vertices, shadows included (a shadow is sampled at
+// each vertex, not per pixel); the pixel interpolates diffuse and specular light. GouraudLight is
+// the lighting both layouts share: the diffuse light at slots kDiffuse..kDiffuse+2, the specular
+// light at the next three, after the surface layout's texture coordinate and color if kWithSurface.
 template <int kDiffuse, bool kWithSurface>
 struct GouraudLight {
   static constexpr int kDiffuseSlot = kDiffuse;
@@ -73,9 +75,11 @@ struct GouraudLight {
     glm::vec3 view = safe_normalize(u.frame->eye - position);
     glm::vec3 diffuse = u.frame->ambient, specular(0.0f);
     for (int i = 0; i < u.frame->light_count; ++i) {
-      IncidentLight in = incident(u.frame->lights[i], position);
+      const LightData& light = u.frame->lights[i];
+      IncidentLight in = incident(light, position);
       float n_dot_l = glm::dot(normal, in.direction);
       if (n_dot_l <= 0.0f) continue;
+      in.radiance = received_radiance(light, in, position, normal);
       diffuse += in.radiance * n_dot_l;
       specular += in.radiance * u.material->specular_color *
                   blinn_phong_specular(normal, view, in.direction, u.material->shininess);
@@ -182,9 +186,11 @@ struct PbrShading : LightsBackFaces {
     }
     glm::vec3 color(0.0f);
     for (int i = 0; i < u.frame->light_count; ++i) {
-      IncidentLight in = incident(u.frame->lights[i], s.position);
+      const LightData& light = u.frame->lights[i];
+      IncidentLight in = incident(light, s.position);
       float n_dot_l = glm::dot(s.normal, in.direction);
       if (n_dot_l <= 0.0f) continue;
+      in.radiance = received_radiance(light, in, s.position, s.normal);
       color +=
           cook_torrance(surface, s.normal, s.view, in.direction) * in.radiance * (n_dot_l * kPi);
     }

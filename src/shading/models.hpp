@@ -36,13 +36,20 @@
 
 namespace facet::shading {
 
-// Diffuse + ambient from every light (the classic teaching setup).
-inline glm::vec3 diffuse_light(glm::vec3 albedo, glm::vec3 normal, glm::vec3 position,
-                               const DrawUniforms& u) {
+// Diffuse + ambient from every light (the classic teaching setup), each after its shadow unless
+// kShadowed is false.
+template <bool kShadowed = true>
+glm::vec3 diffuse_light(glm::vec3 albedo, glm::vec3 normal, glm::vec3 position,
+                        const DrawUniforms& u) {
   glm::vec3 light = u.frame->ambient;
   for (int i = 0; i < u.frame->light_count; ++i) {
-    IncidentLight in = incident(u.frame->lights[i], position);
-    light += in.radiance * std::max(0.0f, glm::dot(normal, in.direction));
+    const LightData& l = u.frame->lights[i];
+    IncidentLight in = incident(l, position);
+    const float n_dot_l = std::max(0.0f, glm::dot(normal, in.direction));
+    if (kShadowed && l.shadow && n_dot_l > 0.0f) {
+      in.radiance = received_radiance(l, in, position, normal);
+    }
+    light += in.radiance * n_dot_l;
   }
   return albedo * light;
 }
@@ -138,7 +145,8 @@ struct FlatShading {
   }
   static void face(glm::vec3 normal, glm::vec3 centre, const DrawUniforms& u, float* v[3]) {
     glm::vec4 average = (load4(v[0]) + load4(v[1]) + load4(v[2])) / 3.0f;
-    glm::vec4 lit{diffuse_light(glm::vec3(average), normal, centre, u), average.a};
+    // No shadows: one lookup at the centre would darken or light whole triangles at once.
+    glm::vec4 lit{diffuse_light<false>(glm::vec3(average), normal, centre, u), average.a};
     for (int i = 0; i < 3; ++i) store(v[i], lit);
   }
   static glm::vec4 fragment(const Fragment& f, const DrawUniforms&) { return load4(f.v); }

@@ -269,7 +269,7 @@ bool batch_shades(BatchModel model, const DrawUniforms& u) {
   // Unlit models use no light, and the Gouraud models' lights were applied at the vertices.
   const bool lit_per_pixel = model == BatchModel::lambert || model == BatchModel::phong ||
                              model == BatchModel::blinn_phong;
-  return !lit_per_pixel || only_directional_lights(u);
+  return !lit_per_pixel || (only_directional_lights(u) && !any_shadowed_light(u));
 }
 
 ShadeBatchKernel shade_batch_kernel(SimdTarget target) {

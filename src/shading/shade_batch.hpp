@@ -52,8 +52,8 @@ struct ShadeInput {
 };
 
 // Whether shade_batch can shade this draw with this model: no emissive map; for the models lit
-// per pixel every light directional; for Phong and Blinn-Phong also no normal or specular map
-// and no reflections.
+// per pixel every light directional and none shadowed; for Phong and Blinn-Phong also no
+// normal or specular map and no reflections.
 bool batch_shades(BatchModel model, const DrawUniforms& u);
 
 // Linear RGBA of every pixel, as the model's fragment() gives it (then fogged, if in.fog).

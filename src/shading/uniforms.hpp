@@ -15,6 +15,8 @@
 
 namespace facet::shading {
 
+struct ShadowMaps;  // shadow_map.hpp
+
 // A light prepared for shading: directions normalized, cone angles as cosines.
 struct LightData {
   LightType type = LightType::directional;
@@ -25,6 +27,9 @@ struct LightData {
   float inv_range_squared = 0.0f;               // 0: unlimited
   float cos_inner = 1.0f;
   float cos_outer = 0.0f;
+  // The light's shadow maps in a frame that renders them (pipeline/shadow_passes.cpp), else
+  // null.
+  const ShadowMaps* shadow = nullptr;
 };
 
 struct ShadingKernels;  // kernels.hpp
@@ -87,6 +92,13 @@ bool all_directional(const Lights& lights) {
 inline bool only_directional_lights(const DrawUniforms& u) {
   return all_directional(
       std::span(u.frame->lights, static_cast<std::size_t>(u.frame->light_count)));
+}
+// Whether a light of the frame has a shadow map: the batch forms of the models lit per pixel
+// or per vertex do not read shadows, and leave such draws to the scalar models.
+inline bool any_shadowed_light(const DrawUniforms& u) {
+  const std::span lights(u.frame->lights, static_cast<std::size_t>(u.frame->light_count));
+  return std::any_of(lights.begin(), lights.end(),
+                     [](const LightData& light) { return light.shadow != nullptr; });
 }
 
 // One vertex as the vertex functions see it: object-space attributes already fetched.

@@ -97,7 +97,9 @@ namespace facet::shading {
 
 HWY_EXPORT(GouraudVertexBatch);
 
-bool gouraud_batches_vertices(const DrawUniforms& u) { return only_directional_lights(u); }
+bool gouraud_batches_vertices(const DrawUniforms& u) {
+  return only_directional_lights(u) && !any_shadowed_light(u);
+}
 
 GouraudVertexBatchKernel gouraud_vertex_batch_kernel(SimdTarget target) {
   return HWY_DISPATCH_TABLE(GouraudVertexBatch)[target];

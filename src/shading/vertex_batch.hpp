@@ -25,7 +25,7 @@ struct VertexBatchInput {
   const glm::vec4* colors = nullptr;     // count of them, or null: white
 };
 
-// Whether gouraud_vertex_batch can light this draw: every light directional.
+// Whether gouraud_vertex_batch can light this draw: every light directional, none shadowed.
 bool gouraud_batches_vertices(const DrawUniforms& u);
 
 // Where the Gouraud models (lit_models.hpp) keep their varyings: the diffuse light at slots

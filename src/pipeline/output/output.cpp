@@ -44,7 +44,7 @@ glm::vec4 display_value_of(const glm::vec4& linear) {
 
 void clear_tile(TileContext& tile, const Background& background, bool color_hidden) {
   for (int y = 0; y < tile.y1 - tile.y0; ++y) {
-    if (!background.environment && !color_hidden) {
+    if (!background.environment && !color_hidden && !background.depth_only) {
       std::fill_n(tile.color + static_cast<std::ptrdiff_t>(y) * tile.stride, tile.x1 - tile.x0,
                   background.clear_color);
     }
@@ -168,6 +168,18 @@ void resolve_tile(const TileContext& tile, const Resolve& resolve, Framebuffer& 
               resolve.display_referred);
     if (target.has_depth()) {
       std::copy_n(depth, width, target.depth().data() + row + tile.x0);
+    }
+  }
+}
+
+void resolve_depth_tile(const TileContext& tile, bool cleared, Framebuffer& target) {
+  for (int y = tile.y0; y < tile.y1; ++y) {
+    float* out = target.depth().data() + static_cast<std::size_t>(y) * target.width() + tile.x0;
+    if (cleared) {
+      std::fill_n(out, tile.x1 - tile.x0, kClearDepth);
+    } else {
+      std::copy_n(tile.depth + static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride,
+                  tile.x1 - tile.x0, out);
     }
   }
 }

@@ -22,6 +22,9 @@ struct Background {
   glm::mat4 inverse_view_projection{1.0f};
   glm::vec3 eye{0.0f};
   int width = 1, height = 1;  // framebuffer size
+  // A depth-only pass (a shadow map's): only the tiles' depth is written out (resolve_depth_tile);
+  // their color is neither cleared nor resolved, since nothing reads it.
+  bool depth_only = false;
 };
 
 // How resolve turns a tile's linear colors into the target's.
@@ -56,6 +59,9 @@ glm::vec4 display_value_of(const glm::vec4& linear);
 // holds display values, which an 8-bit target takes as they are, rounded to 8 bits, instead
 // of sRGB-encoded (scale is then 1).
 void resolve_tile(const TileContext& tile, const Resolve& resolve, Framebuffer& target);
+// Writes only the tile's depth to the framebuffer's depth image (a depth-only pass); `cleared`:
+// the tile drew nothing, every pixel is at the clear depth.
+void resolve_depth_tile(const TileContext& tile, bool cleared, Framebuffer& target);
 // A tile with an empty bin under a plain clear color is written straight from it.
 void resolve_cleared_tile(const TileContext& tile, const glm::vec4& color, float scale,
                           Framebuffer& target);

@@ -63,7 +63,11 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
   if (bin == bin_end && !background.environment && debug == DebugView::none) {
     // Lazy clear: nothing drawn here, write the clear values directly.
     auto resolve_start = Clock::now();
-    pipeline::resolve_cleared_tile(tile, settings.clear_color, resolve.scale, target);
+    if (background.depth_only) {
+      pipeline::resolve_depth_tile(tile, true, target);
+    } else {
+      pipeline::resolve_cleared_tile(tile, settings.clear_color, resolve.scale, target);
+    }
     tile_resolve_ms[index] = ms_since(resolve_start);
     return;
   }
@@ -129,7 +133,9 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
   pipeline::flush_waiting(tile);
   if (background_pending) pipeline::fill_background(tile, background);
   auto resolve_start = Clock::now();
-  if (debug == DebugView::none) {
+  if (background.depth_only) {
+    pipeline::resolve_depth_tile(tile, false, target);
+  } else if (debug == DebugView::none) {
     pipeline::resolve_tile(tile, resolve, target);
   } else {
     pipeline::resolve_debug_tile(tile, debug, bin_size, resolve.scale, target);

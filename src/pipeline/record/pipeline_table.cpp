@@ -62,7 +62,8 @@ DrawPipeline pipeline_for(ShadingModel model, AlphaMode alpha) {
   return make_pipeline<LambertShading>();
 }
 
-DrawPipeline pipeline_for(const Material& material, const Mesh& mesh, const Lighting& lighting) {
+DrawPipeline pipeline_for(const Material& material, const Mesh& mesh, const Lighting& lighting,
+                          bool shadowed) {
   // Points are unlit and take their color at setup (primitive.cpp): the vertex stage only needs
   // their positions, so they get the model with the fewest varyings to compute.
   if (mesh.topology == Topology::points) return make_pipeline<shading::ConstantColorUnlitShading>();
@@ -75,7 +76,7 @@ DrawPipeline pipeline_for(const Material& material, const Mesh& mesh, const Ligh
     return with_alpha<shading::ConstantColorUnlitShading>(material.alpha_mode);
   }
   if (material.shading == ShadingModel::lambert && material.cull != CullMode::none &&
-      shading::all_directional(lighting.lights)) {
+      shading::all_directional(lighting.lights) && !shadowed) {
     return with_alpha<shading::UnpositionedLambertShading>(material.alpha_mode);
   }
   return pipeline_for(material.shading, material.alpha_mode);

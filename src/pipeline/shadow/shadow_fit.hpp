@@ -1,0 +1,51 @@
+// Where a light's shadow map looks from: for a directional light an orthographic view along the
+// light that takes in what the camera sees of the scene and every caster between that and the
+// light; for a spot light a perspective view from the light over its cone. Read by the shadow
+// passes (shadow_passes.cpp) once per light per frame.
+#pragma once
+
+#include <glm/vec3.hpp>
+#include <optional>
+
+#include "facet/camera.hpp"
+
+namespace facet::pipeline {
+
+// An axis-aligned world-space box; empty when low > high.
+struct WorldBox {
+  glm::vec3 low{1e30f};
+  glm::vec3 high{-1e30f};
+  bool empty() const { return !(low.x <= high.x && low.y <= high.y && low.z <= high.z); }
+  void add(glm::vec3 p) { low = glm::min(low, p), high = glm::max(high, p); }
+};
+
+// The orthographic camera of a map of map_size texels a side for a light travelling along
+// `travel`, or none when the camera sees nothing of `scene` (the box around every draw).
+// Across the light: the camera's frustum, cut to the view depths the scene spans, intersected
+// with the scene box, squared, with two texels of margin for the lookup's filter, and its centre
+// on whole texels (so the map does not shimmer as the camera turns). Along the light: the whole
+// scene box, so casters outside the camera's view still cast.
+std::optional<Camera> fit_directional_shadow(const Camera& view, glm::vec3 travel,
+                                             const WorldBox& scene, int map_size);
+
+// The view depths of `scene` (the box around every draw) within the camera's near and far
+// planes: where a sun's cascades split. Empty (nearest > farthest) when the scene lies outside.
+struct ViewDepths {
+  float nearest, farthest;
+};
+ViewDepths scene_depths(const Camera& view, const WorldBox& scene);
+
+// Where `count` cascades over `depths` meet: split[0] = nearest, split[count] = farthest, and
+// between them the practical split scheme (Zhang et al., "Parallel-split shadow maps"): a blend
+// of logarithmic steps (each map's texels the same size on screen) and even ones, weighted
+// 0.8 toward logarithmic. split holds count + 1 values.
+void cascade_splits(ViewDepths depths, int count, float* split);
+
+// The perspective camera of a spot light's map: from `position` along `travel`, its field of
+// view the cone's (outer_degrees each side) plus two texels of margin, at most 160 degrees (a
+// wider cone is shadowed within the central 160), its near and far planes around `scene`; none
+// when the scene is empty or the light's direction is zero.
+std::optional<Camera> fit_spot_shadow(glm::vec3 position, glm::vec3 travel, float outer_degrees,
+                                      const WorldBox& scene, int map_size);
+
+}  // namespace facet::pipeline

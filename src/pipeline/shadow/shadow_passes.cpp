@@ -1,0 +1,183 @@
+// The shadow maps' passes (RenderSettings::shadows): before the color pass, the frame's draws
+// run once more per shadow-casting directional or spot light, seen from the light (an
+// orthographic view along a directional light, a perspective one from a spot: shadow_fit.hpp),
+// into a depth target of the map's size: the same tiled
+// pipeline, so the maps, and the images, are the same for any thread count, tile size and SIMD
+// target. The color pass's lit models then read them (shading/shadow_map.hpp).
+#include <algorithm>
+#include <optional>
+
+#include "pipeline/record/draw_culling.hpp"
+#include "pipeline/record/pipeline_table.hpp"
+#include "pipeline/renderer_impl.hpp"
+#include "pipeline/shadow/shadow_fit.hpp"
+#include "shading/models.hpp"
+
+namespace facet {
+
+using pipeline::DrawRecord;
+
+namespace {
+
+// Whether a draw casts shadows: filled triangles that are not blended (a blended surface lets
+// light through; how much, a depth map cannot say). Lines and points do not.
+bool casts_shadow(const DrawRecord& draw) {
+  return draw.mesh->topology != Topology::lines && draw.mesh->topology != Topology::points &&
+         draw.pipeline.fills_triangles && !pipeline::is_blended(draw.material.alpha_mode);
+}
+
+// The depth pass draws the cheapest model that writes depth (its color is not read), and for
+// cut-out materials the unlit one, whose alpha cuts out as in color.
+pipeline::DrawPipeline shadow_pipeline(AlphaMode alpha) {
+  if (alpha == AlphaMode::mask) {
+    return pipeline::make_pipeline<shading::UnlitShading, AlphaMode::mask>();
+  }
+  return pipeline::make_pipeline<shading::ConstantColorUnlitShading>();
+}
+
+// Adds the world-space box around a draw's mesh bounds to `box`.
+void add_draw_bounds(const DrawRecord& draw, pipeline::WorldBox& box) {
+  if (!draw.bounds) return;
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::vec3 p((corner & 1) ? draw.bounds->high.x : draw.bounds->low.x,
+                      (corner & 2) ? draw.bounds->high.y : draw.bounds->low.y,
+                      (corner & 4) ? draw.bounds->high.z : draw.bounds->low.z);
+    box.add(glm::vec3(draw.uniforms.model * glm::vec4(p, 1.0f)));
+  }
+}
+
+// What the lit models read of a light's map: the transform from the light's camera to the
+// map's texels, and the target's depth image (window depths, top row first).
+shading::ShadowMap shadow_map_of(const Camera& light, const Framebuffer& target) {
+  const float size = static_cast<float>(target.width());
+  // NDC -> continuous texel coordinates (texel centres on integers, y down, as setup's
+  // to_screen places pixel centres at + 0.5) and window depth.
+  glm::mat4 to_map(1.0f);
+  to_map[0][0] = 0.5f * size, to_map[3][0] = 0.5f * size - 0.5f;
+  to_map[1][1] = -0.5f * size, to_map[3][1] = 0.5f * size - 0.5f;
+  to_map[2][2] = 0.5f, to_map[3][2] = 0.5f;
+  return shading::make_shadow_map(to_map * light.view_projection(), target.depth().data(),
+                                  target.width(), light.projection_kind == Projection::perspective);
+}
+
+// The views of a light's maps this frame (none: no shadows from it): a spot's one, a sun's
+// one per cascade, fitted to its slice of the view's depths. Returns how many.
+int shadow_views(const Light& light, const Camera& camera, const pipeline::WorldBox& scene,
+                 const RenderSettings& settings, Camera* views, float* far_depths) {
+  const int size = settings.shadow_map_size;
+  if (!light.casts_shadows) return 0;
+  if (light.type == LightType::spot) {
+    const std::optional<Camera> view = pipeline::fit_spot_shadow(
+        light.position, light.direction, light.outer_cone_degrees, scene, size);
+    if (!view) return 0;
+    views[0] = *view, far_depths[0] = camera.far_plane;
+    return 1;
+  }
+  if (light.type != LightType::directional) return 0;  // point lights would need six maps
+  const pipeline::ViewDepths depths = pipeline::scene_depths(camera, scene);
+  if (!(depths.nearest <= depths.farthest)) return 0;
+  float split[shading::kMaxShadowCascades + 1];
+  pipeline::cascade_splits(depths, settings.shadow_cascades, split);
+  int count = 0;
+  for (int c = 0; c < settings.shadow_cascades; ++c) {
+    Camera slice = camera;
+    slice.near_plane = split[c], slice.far_plane = split[c + 1];
+    if (!(slice.far_plane > slice.near_plane)) slice.far_plane = camera.far_plane;
+    const std::optional<Camera> view =
+        pipeline::fit_directional_shadow(slice, light.direction, scene, size);
+    if (!view) continue;  // the slice sees nothing of the scene
+    views[count] = *view, far_depths[count] = split[c + 1];
+    ++count;
+  }
+  return count;
+}
+
+}  // namespace
+
+void Renderer::Impl::run_shadow_passes() {
+  shadow_ms = 0.0;
+  shadows_ready = false;
+  if (!frame_shadows) return;
+  const auto start = pipeline::Clock::now();
+  shadows.resize(std::max(shadows.size(), lighting.lights.size()));
+  for (LightShadow& shadow : shadows) shadow.maps.count = 0;
+
+  // The box every draw lies in: receivers across the light, casters along it.
+  pipeline::WorldBox scene;
+  for (const DrawRecord& draw : frame.draws) add_draw_bounds(draw, scene);
+  for (const DrawRecord& draw : outside_view_draws) add_draw_bounds(draw, scene);
+
+  // What the passes change, put back afterwards: the color pass's draws, camera and settings.
+  const Camera color_camera = camera;
+  const RenderSettings color_settings = settings;
+  const glm::mat4 color_view_projection = frame.view_projection;
+  const FogMode color_fog = lighting.fog.mode;
+  const bool color_background = lighting.environment.show_as_background;
+  const bool color_environment_light = lighting.environment.image_based_lighting;
+  shadow_casters.clear();
+  for (const std::vector<DrawRecord>* draws : {&frame.draws, &outside_view_draws}) {
+    for (const DrawRecord& draw : *draws) {
+      if (!casts_shadow(draw)) continue;
+      shadow_casters.push_back(draw);
+      DrawRecord& caster = shadow_casters.back();
+      caster.pipeline = shadow_pipeline(draw.material.alpha_mode);
+      caster.material.cull = CullMode::none;  // open meshes cast from either side
+      // Only a cut-out reads its texture (for alpha): the others' would be sampled for nothing.
+      if (caster.material.alpha_mode != AlphaMode::mask) caster.material.base_color_map = {};
+      caster.material.emissive_map = {};
+    }
+  }
+  std::swap(frame.draws, shadow_draws);
+  settings.msaa = 1;
+  settings.exposure = 0.0f;
+  settings.tone_mapping = ToneMapping::none;
+  settings.debug_view = DebugView::none;
+  lighting.fog.mode = FogMode::none;
+  lighting.environment.show_as_background = false;
+  lighting.environment.image_based_lighting = false;
+  depth_only_pass = true;
+  const int size = settings.shadow_map_size;
+  for (std::size_t i = 0; i < lighting.lights.size(); ++i) {
+    Camera views[shading::kMaxShadowCascades];
+    float far_depths[shading::kMaxShadowCascades];
+    const int count =
+        shadow_views(lighting.lights[i], color_camera, scene, color_settings, views, far_depths);
+    LightShadow& shadow = shadows[i];
+    for (int c = 0; c < count; ++c) {
+      std::optional<Framebuffer>& target = shadow.targets[c];
+      if (!target || target->width() != size) {
+        target.emplace(size, size, ColorFormat::rgba8_srgb, DepthImage::keep);
+      }
+      camera = views[c];
+      frame.view_projection = views[c].view_projection();
+      // Each pass draws the casters its view takes in, as recording does for the camera's.
+      frame.draws.clear();
+      for (const DrawRecord& caster : shadow_casters) {
+        const glm::mat4 model_view_projection = frame.view_projection * caster.uniforms.model;
+        if (caster.bounds && pipeline::box_outside_frustum(*caster.bounds, model_view_projection)) {
+          continue;
+        }
+        frame.draws.push_back(caster);
+        frame.draws.back().uniforms.model_view_projection = model_view_projection;
+      }
+      run(*target);
+      shadow.maps.maps[c] = shadow_map_of(views[c], *target);
+      shadow.maps.far_depth[c] = far_depths[c];
+    }
+    shadow.maps.count = count;
+    shadow.maps.eye = color_camera.eye;
+    shadow.maps.forward = color_camera.forward();
+  }
+  depth_only_pass = false;
+  std::swap(frame.draws, shadow_draws);
+  camera = color_camera;
+  settings = color_settings;
+  frame.view_projection = color_view_projection;
+  lighting.fog.mode = color_fog;
+  lighting.environment.show_as_background = color_background;
+  lighting.environment.image_based_lighting = color_environment_light;
+  shadows_ready = true;
+  shadow_ms = pipeline::ms_since(start);
+}
+
+}  // namespace facet

@@ -84,6 +84,22 @@ TEST(View, AnimatedModelsArePosedByTheClock) {
   EXPECT_FALSE(first.pixels == later.pixels) << "the pose did not change";
 }
 
+TEST(View, ShadowsWhenAskedFor) {
+  FACET_REQUIRE_PACKAGE(have_xvfb(), "xvfb-run is not installed");
+  const fs::path dir = fresh_test_dir("facet_view_", "shadows");
+  auto shot_with = [&](const std::string& shadows) {
+    const std::string shot = (dir / (shadows + ".png")).string();
+    const CommandResult r =
+        run_view_under_xvfb("--scene shapes --frames 2 --size 160x90 --shadows " + shadows +
+                            " --screenshot '" + shot + "'");
+    EXPECT_EQ(r.exit_code, 0) << r.stderr_text;
+    return read_png(shot);
+  };
+  EXPECT_FALSE(shot_with("on").pixels == shot_with("off").pixels) << "no shadow drawn";
+  const CommandResult bad = run_view_under_xvfb("--scene shapes --frames 1 --shadow-map-size 0");
+  EXPECT_EQ(bad.exit_code, 2) << bad.stderr_text;
+}
+
 TEST(View, IslandsAtAFixedTimeAreDeterministic) {
   FACET_REQUIRE_PACKAGE(have_xvfb(), "xvfb-run is not installed");
   fs::path dir = fresh_test_dir("facet_view_", "islands");

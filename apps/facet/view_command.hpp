@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cli_fwd.hpp"
+#include "render_command.hpp"
 #include "scene_options.hpp"
 
 namespace facet::cli {
@@ -24,6 +25,7 @@ struct ViewOptions {
   bool fullscreen = false;
   std::string backend = "facet";             // or gl (render_backend.hpp); B switches at run time
   std::string tone_mapping = "pbr-neutral";  // T cycles it
+  ShadowOptions shadows;                     // off by default: they cost most of a frame
 };
 
 // Adds the `view` subcommand and its flags to app; options are filled on parse.

@@ -93,6 +93,9 @@ void ViewLoop::make_renderer() {
   rs.clear_color = setup_.clear_color;
   rs.debug_view = settings_.debug_view();
   rs.tone_mapping = settings_.tone_mapping;
+  rs.shadows = setup_.shadows.shadows;
+  rs.shadow_map_size = setup_.shadows.shadow_map_size;
+  rs.shadow_cascades = setup_.shadows.shadow_cascades;
   renderer_ = std::make_unique<Renderer>(rs);
 }
 
@@ -216,6 +219,7 @@ void ViewLoop::render(double now, double dt) {
   info.threads = settings_.threads;
   info.msaa = settings_.msaa;
   info.tone_mapping = to_string(settings_.tone_mapping);
+  info.shadows = setup_.shadows.shadows;
   info.mode = to_string(settings_.mode);
   info.shading = settings_.shading_name();
   info.camera = setup_.camera_path                      ? "camera path"

@@ -36,6 +36,8 @@ struct ViewSetup {
   ViewSettings settings;
   glm::vec4 clear_color{0.0f};
   std::optional<CameraPath> camera_path;
+  // --shadows and its map size and cascades (RenderSettings' shadow fields; the rest unused).
+  RenderSettings shadows;
   std::optional<double> fixed_time;  // --time
   int frames = 0;                    // 0: until closed
 };

@@ -114,11 +114,14 @@ void FrameTarget::bind(int width, int height, int samples) {
 
 void FrameTarget::read(Framebuffer& target, const Output& output) {
   const int w = width_, h = height_;
+  const bool mapped = output.tone_mapping != ToneMapping::none;
+  // Tone mapping leaves the clear color alone: it tells the pixels nothing was drawn on by depth.
+  const bool need_depth = target.has_depth() || (mapped && !output.maps_background);
   if (samples_ > 1) {  // resolve: each pixel's samples averaged; depth takes one
     glBindFramebuffer(GL_READ_FRAMEBUFFER, ms_framebuffer_);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_);
     glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    if (target.has_depth()) {
+    if (need_depth) {
       glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
     }
   }
@@ -126,9 +129,8 @@ void FrameTarget::read(Framebuffer& target, const Output& output) {
   glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
   glPixelStorei(GL_PACK_ALIGNMENT, 4);
   glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, rgba.data());
-  const bool mapped = output.tone_mapping != ToneMapping::none;
   std::vector<float> depth;
-  if (target.has_depth() || (mapped && !output.maps_background)) {
+  if (need_depth) {
     depth.resize(static_cast<std::size_t>(w) * h);
     glReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
   }

@@ -16,12 +16,20 @@ set(content "")
 set(filter "")
 set(tests 0)
 # Each suite's test is given a COST of its number of tests, so that ctest starts the big suites
-# first and the short ones fill in beside them.
+# first and the short ones fill in beside them. A few suites of few tests run for long (whole
+# batches of models through the program, the viewer under Xvfb): they start first, as do the
+# parameterized mutation sweeps.
+set(long_suites CliToneMapping CliFrames View CliFraming)
 macro(add_suite_test)
   if(NOT filter STREQUAL "")
+    set(cost ${tests})
+    list(FIND long_suites "${suite_name}" long)
+    if(long GREATER -1)
+      set(cost 1000)
+    endif()
     string(APPEND content
            "add_test([==[${filter}]==] [==[${TEST_EXECUTABLE}]==] [==[--gtest_filter=${filter}]==])\n"
-           "set_tests_properties([==[${filter}]==] PROPERTIES COST ${tests})\n")
+           "set_tests_properties([==[${filter}]==] PROPERTIES COST ${cost})\n")
   endif()
 endmacro()
 set(parameterized "")
@@ -31,6 +39,7 @@ foreach(line IN LISTS lines)
   if(line MATCHES "^([A-Za-z0-9_/]+)\\.")
     set(suite "${CMAKE_MATCH_1}")
     add_suite_test()
+    set(suite_name "${suite}")
     set(filter "")
     set(tests 0)
     set(parameterized "")
@@ -45,7 +54,8 @@ foreach(line IN LISTS lines)
     else()
       set(name "${parameterized}.${CMAKE_MATCH_1}")
       string(APPEND content
-             "add_test([==[${name}]==] [==[${TEST_EXECUTABLE}]==] [==[--gtest_filter=${name}]==])\n")
+             "add_test([==[${name}]==] [==[${TEST_EXECUTABLE}]==] [==[--gtest_filter=${name}]==])\n"
+             "set_tests_properties([==[${name}]==] PROPERTIES COST 500)\n")
     endif()
   endif()
 endforeach()

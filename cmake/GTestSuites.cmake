@@ -19,7 +19,7 @@ set(tests 0)
 # first and the short ones fill in beside them. A few suites of few tests run for long (whole
 # batches of models through the program, the viewer under Xvfb): they start first, as do the
 # parameterized mutation sweeps.
-set(long_suites CliToneMapping CliFrames View CliFraming)
+set(long_suites CliFrames View CliFraming)
 macro(add_suite_test)
   if(NOT filter STREQUAL "")
     set(cost ${tests})

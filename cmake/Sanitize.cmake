@@ -11,6 +11,7 @@
 # at -O1 they compile far slower, and the suite's time is spent in the library, which keeps the
 # build type's -O1.
 set(FACET_SANITIZE_DRIVER_OPTIONS "")
+set(FACET_SANITIZE_FLAGS_TEXT "")
 if(FACET_SANITIZE STREQUAL "")
   return()
 elseif(FACET_SANITIZE STREQUAL "address")
@@ -43,5 +44,6 @@ add_compile_definitions(HWY_DISABLED_TARGETS=6528)
 set(FACET_SANITIZE_DRIVER_OPTIONS -O0)
 add_compile_options(${_facet_sanitize_flags})
 add_link_options(${_facet_sanitize_flags})
-list(JOIN _facet_sanitize_flags " " _facet_sanitize_text)
-message(STATUS "facet: sanitizer '${FACET_SANITIZE}': ${_facet_sanitize_text}")
+# The install test builds its example programs with the same flags (they link sanitized libraries).
+list(JOIN _facet_sanitize_flags " " FACET_SANITIZE_FLAGS_TEXT)
+message(STATUS "facet: sanitizer '${FACET_SANITIZE}': ${FACET_SANITIZE_FLAGS_TEXT}")

@@ -50,6 +50,7 @@ Framebuffer reference(ColorFormat format, NormalSpace normals = NormalSpace::wor
   settings.msaa = 4;                                 // facet render's default
   settings.tone_mapping = ToneMapping::pbr_neutral;  // likewise
   settings.shadows = true;                           // likewise
+  settings.shadow_map_size = 256;                    // its auto size for 64x48
   Renderer renderer(settings);
   Framebuffer image(kWidth, kHeight, format, DepthImage::none, all_extra(normals));
   renderer.begin_frame(camera, scene.lighting);

@@ -132,6 +132,7 @@ const BadCase kBadCases[] = {
     {"shadows_maybe", "--shadows maybe -o out.png"},
     {"shadow_map_zero", "--shadow-map-size 0 -o out.png"},
     {"shadow_map_huge", "--shadow-map-size 100000 -o out.png"},
+    {"shadow_map_word", "--shadow-map-size big -o out.png"},
     {"shadow_cascades_5", "--shadow-cascades 5 -o out.png"},
     {"near_zero", "--near 0 -o out.png"},
     {"far_behind_near", "--far 0.05 -o out.png"},
@@ -186,6 +187,28 @@ TEST(CliRender, LightOptionsLeaveTheModelPathToTheModel) {
   ASSERT_EQ(one.exit_code, 0) << one.stderr_text;
   EXPECT_EQ(read_file(dir / "a.png"), read_file(dir / "b.png"));
   EXPECT_NE(read_file(dir / "a.png"), read_file(dir / "c.png")) << "the second light is lost";
+}
+
+// The default shadow map size, auto, is the power of two at least the image's longer edge,
+// 256 .. 2048: the same image as that size asked for, and not the same as half of it.
+TEST(CliRender, AutoShadowMapSizeFollowsTheImage) {
+  fs::path dir = fresh_test_dir("facet_cli_", "shadow_map_auto");
+  const struct {
+    const char* size;
+    int map;
+  } cases[] = {{"64x48", 256}, {"600x300", 1024}, {"90x2100", 2048}};
+  for (const auto& c : cases) {
+    auto render = [&](const std::string& map_flag, const char* output) {
+      const CommandResult r = run_facet(dir, std::string("render --scene shapes -q --size ") +
+                                                 c.size + map_flag + " -o " + output);
+      ASSERT_EQ(r.exit_code, 0) << c.size << map_flag << ": " << r.stderr_text;
+    };
+    render("", "auto.png");
+    render(" --shadow-map-size " + std::to_string(c.map), "same.png");
+    render(" --shadow-map-size " + std::to_string(c.map / 2), "half.png");
+    EXPECT_EQ(read_file(dir / "auto.png"), read_file(dir / "same.png")) << c.size;
+    EXPECT_NE(read_file(dir / "auto.png"), read_file(dir / "half.png")) << c.size;
+  }
 }
 
 // The error says what is wrong with the path: an output that is a directory, a model that is a

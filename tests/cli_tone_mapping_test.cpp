@@ -41,12 +41,11 @@ bool blown_out(const std::string& relative) {
   return relative == "FBX/animation_with_skeleton.png";
 }
 
-TEST(CliToneMapping, TheDefaultKeepsTheHighlightsOfEverySampleModel) {
+TEST(CliToneMappingSampleModels, TheDefaultKeepsTheHighlightsOfEveryOne) {
   REQUIRE_INSTALLED(kModels);
   const fs::path dir = fresh_test_dir("facet_tone_", "samples");
   // Some sample models fail on purpose (exit code 1): every one that renders is looked at. One
-  // sample a pixel and no shadows: the curve is what is tested, and the batch stays quick under
-  // the sanitizers.
+  // sample a pixel and no shadows: the curve is what is tested.
   run_facet(dir, "render " + kModels.string() +
                      " --size 64x64 --msaa 1 --shadows off --background none -q -o all/");
   int looked_at = 0;

@@ -1,6 +1,7 @@
 // Value parsers for the command line (see arguments.hpp).
 #include "arguments.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <vector>
@@ -131,12 +132,20 @@ bool parse_shadows(const std::string& text) {
   throw Error("--shadows: expected on or off, got '" + text + "'");
 }
 
-void check_shadow_map_size(int size) {
-  if (size < RenderSettings::kMinShadowMapSize || size > Framebuffer::kMaxSize) {
-    throw Error("--shadow-map-size: must be " + std::to_string(RenderSettings::kMinShadowMapSize) +
-                " to " + std::to_string(Framebuffer::kMaxSize) + " texels, got " +
-                std::to_string(size));
+int parse_shadow_map_size(const std::string& text, ImageSize image) {
+  if (text == "auto") {
+    int size = 256;
+    while (size < std::max(image.width, image.height) && size < 2048) size *= 2;
+    return size;
   }
+  int size = 0;
+  if (!parse_number(text, size) || size < RenderSettings::kMinShadowMapSize ||
+      size > Framebuffer::kMaxSize) {
+    throw Error("--shadow-map-size: expected auto or " +
+                std::to_string(RenderSettings::kMinShadowMapSize) + " to " +
+                std::to_string(Framebuffer::kMaxSize) + " texels, got '" + text + "'");
+  }
+  return size;
 }
 
 void check_shadow_cascades(int cascades) {

@@ -39,8 +39,11 @@ const char* to_string(ToneMapping curve);
 std::string tone_mapping_help(ToneMapping default_curve);
 // --shadows on|off as a bool; throws for anything else.
 bool parse_shadows(const std::string& text);
-// Throws unless --shadow-map-size is within RenderSettings' range.
-void check_shadow_map_size(int size);
+// --shadow-map-size: texels within RenderSettings' range, or "auto": the power of two at least
+// the image's longer edge, 256 .. 2048. A map fitted to the view then spends about a texel per
+// pixel, so shadows look alike at every image size and a thumbnail does not pay for a map many
+// times its size.
+int parse_shadow_map_size(const std::string& text, ImageSize image);
 // Throws unless --shadow-cascades is within RenderSettings' range.
 void check_shadow_cascades(int cascades);
 

@@ -40,13 +40,14 @@ double median(std::vector<double> v) {
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-RenderSettings bench_settings(const BenchOptions& o, const bench::BenchScene& scene) {
+RenderSettings bench_settings(const BenchOptions& o, const bench::BenchScene& scene,
+                              const ImageSize& size) {
   RenderSettings settings;
   settings.threads = o.threads;
   settings.tile_size = o.tile_size;
   settings.msaa = o.msaa;
   settings.tone_mapping = parse_tone_mapping(o.tone_mapping);
-  apply_shadow_options(o.shadows, false, settings);
+  apply_shadow_options(o.shadows, false, size, settings);
   settings.clear_color = scene.clear_color();
   return settings;
 }
@@ -80,7 +81,7 @@ void set_times(SceneResult& r, const std::vector<double>& total) {
 
 SceneResult run_scene(const std::string& name, bench::BenchScene& scene, const BenchOptions& o,
                       const ImageSize& size) {
-  Renderer renderer(bench_settings(o, scene));
+  Renderer renderer(bench_settings(o, scene, size));
   // Color only, as glmark2's frames are: both depth-test, neither reads the depth back.
   Framebuffer framebuffer(size.width, size.height, ColorFormat::rgba8_srgb, DepthImage::none);
   const float aspect = static_cast<float>(size.width) / size.height;
@@ -117,7 +118,7 @@ SceneResult run_scene(const std::string& name, bench::BenchScene& scene, const B
 // the pixels read back into the framebuffer as facet's finish() writes them.
 SceneResult run_scene_gl(const std::string& name, bench::BenchScene& scene, const BenchOptions& o,
                          const ImageSize& size) {
-  GlBackend gl(bench_settings(o, scene));  // setup: not timed
+  GlBackend gl(bench_settings(o, scene, size));  // setup: not timed
   Framebuffer framebuffer(size.width, size.height, ColorFormat::rgba8_srgb, DepthImage::none);
   const float aspect = static_cast<float>(size.width) / size.height;
   Camera camera;
@@ -208,7 +209,7 @@ int run_bench(const BenchOptions& o) {
   check_msaa(o.msaa);
   parse_tone_mapping(o.tone_mapping);
   RenderSettings checked;
-  apply_shadow_options(o.shadows, false, checked);
+  apply_shadow_options(o.shadows, false, size, checked);
   if (o.tile_size != 16 && o.tile_size != 32 && o.tile_size != 64 && o.tile_size != 128) {
     throw Error("--tile-size: must be 16, 32, 64 or 128, got " + std::to_string(o.tile_size));
   }

@@ -41,7 +41,9 @@ void add_shadow_options(CLI::App& cmd, ShadowOptions& o) {
       ->capture_default_str();
   cmd.add_option("--shadow-map-size", o.map_size,
                  "Shadow map edge in texels, " + std::to_string(RenderSettings::kMinShadowMapSize) +
-                     " .. " + std::to_string(Framebuffer::kMaxSize))
+                     " .. " + std::to_string(Framebuffer::kMaxSize) +
+                     ", or auto: the power of two at least the image's longer edge, 256 .. 2048 "
+                     "(shadows look alike at every image size)")
       ->capture_default_str();
   cmd.add_option("--shadow-cascades", o.cascades,
                  "Shadow maps per directional light, 1 .. " +
@@ -51,11 +53,11 @@ void add_shadow_options(CLI::App& cmd, ShadowOptions& o) {
       ->capture_default_str();
 }
 
-void apply_shadow_options(const ShadowOptions& o, bool default_on, RenderSettings& settings) {
+void apply_shadow_options(const ShadowOptions& o, bool default_on, ImageSize image,
+                          RenderSettings& settings) {
   settings.shadows = o.shadows ? parse_shadows(*o.shadows) : default_on;
-  check_shadow_map_size(o.map_size);
+  settings.shadow_map_size = parse_shadow_map_size(o.map_size, image);
   check_shadow_cascades(o.cascades);
-  settings.shadow_map_size = o.map_size;
   settings.shadow_cascades = o.cascades;
 }
 
@@ -112,7 +114,7 @@ int run_render(const RenderOptions& o) {
   check_threads(o.threads);
   check_msaa(o.msaa);
   RenderSettings shadow_settings;
-  apply_shadow_options(o.shadows, true, shadow_settings);
+  apply_shadow_options(o.shadows, true, size, shadow_settings);
   if (!std::isfinite(o.exposure) || std::abs(o.exposure) > 20.0f) {
     throw Error("--exposure: must be within -20 .. 20 stops");
   }

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "arguments.hpp"
 #include "cli_fwd.hpp"
 #include "facet/renderer.hpp"
 #include "frame_options.hpp"
@@ -17,7 +18,7 @@ namespace facet::cli {
 // --shadows, --shadow-map-size, --shadow-cascades (render and bench).
 struct ShadowOptions {
   std::optional<std::string> shadows;  // "on" or "off"; unset: the command's default
-  int map_size = 2048;                 // RenderSettings::shadow_map_size
+  std::string map_size = "auto";       // texels or "auto" (parse_shadow_map_size)
   int cascades = 1;                    // RenderSettings::shadow_cascades
 };
 
@@ -45,7 +46,8 @@ struct RenderOptions {
 void add_shadow_options(CLI::App& cmd, ShadowOptions& options);
 // Checks them (throwing facet::Error naming the flag) and sets them in settings; shadows are
 // `default_on` unless --shadows says.
-void apply_shadow_options(const ShadowOptions& options, bool default_on, RenderSettings& settings);
+void apply_shadow_options(const ShadowOptions& options, bool default_on, ImageSize image,
+                          RenderSettings& settings);
 
 // Adds the `render` subcommand and its flags to app; options are filled on parse.
 CLI::App* add_render_command(CLI::App& app, RenderOptions& options);

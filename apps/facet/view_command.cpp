@@ -68,7 +68,7 @@ int run_view(const ViewOptions& o) {
   check_msaa(o.msaa);
   const ToneMapping tone_mapping = parse_tone_mapping(o.tone_mapping);
   RenderSettings shadows;  // off unless asked: they cost several times a frame of the islands
-  apply_shadow_options(o.shadows, false, shadows);
+  apply_shadow_options(o.shadows, false, size, shadows);
   if (o.frames < 0) throw Error("--frames: must be 0 (until closed) or more");
   if (o.time && !std::isfinite(*o.time)) throw Error("--time: must be a finite number of seconds");
   if (!o.screenshot.empty()) check_writable(o.screenshot);

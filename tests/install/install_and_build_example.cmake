@@ -15,8 +15,9 @@
 #
 # Inputs (-D): SOURCE_DIR (project root), BUILD_DIR (a built tree), WORK_DIR (scratch, wiped),
 #              VERSION (the project's), SHARED (the build's BUILD_SHARED_LIBS), CONFIG (build
-#              type), GENERATOR, CXX_COMPILER, PYTHON_MODULE (ON: check the installed module),
-#              PYTHON_EXECUTABLE.
+#              type), GENERATOR, CXX_COMPILER, EXAMPLE_FLAGS (compile and link flags for the
+#              example programs: a sanitizer build's), PYTHON_MODULE (ON: check the installed
+#              module), PYTHON_EXECUTABLE.
 cmake_minimum_required(VERSION 3.25)
 
 foreach(var SOURCE_DIR BUILD_DIR WORK_DIR VERSION)
@@ -86,6 +87,10 @@ if(GENERATOR)
 endif()
 if(CXX_COMPILER)
   list(APPEND toolchain_args -DCMAKE_CXX_COMPILER=${CXX_COMPILER})
+endif()
+if(EXAMPLE_FLAGS)
+  list(APPEND toolchain_args "-DCMAKE_CXX_FLAGS=${EXAMPLE_FLAGS}"
+       "-DCMAKE_EXE_LINKER_FLAGS=${EXAMPLE_FLAGS}")
 endif()
 
 file(REMOVE_RECURSE ${WORK_DIR})
@@ -185,8 +190,8 @@ endif()
 set(hello_pc ${WORK_DIR}/hello_triangle_pkg_config)
 run_step("build hello_triangle with pkg-config" sh -c
   "PKG_CONFIG_PATH='${libdir}/pkgconfig' && export PKG_CONFIG_PATH && \
-   '${CXX_COMPILER}' -O1 '${SOURCE_DIR}/examples/hello_triangle.cpp' -o '${hello_pc}' \
-   $(pkg-config --cflags --libs facet)")
+   '${CXX_COMPILER}' -O1 ${EXAMPLE_FLAGS} '${SOURCE_DIR}/examples/hello_triangle.cpp' \
+   -o '${hello_pc}' $(pkg-config --cflags --libs facet)")
 require_core_only(${hello_pc})
 
 # 5. Run them.

@@ -271,9 +271,11 @@ TEST(CliRender, WireframeSummaryCountsLines) {
       run_facet(dir, "render --scene shapes --shading wireframe -o w.png --size 64x36");
   ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
   EXPECT_NE(r.stdout_text.find(" lines drawn"), std::string::npos) << r.stdout_text;
+  EXPECT_NE(r.stdout_text.find(" primitives in"), std::string::npos) << r.stdout_text;
   CommandResult shaded = run_facet(dir, "render --scene shapes -o s.png --size 64x36");
   ASSERT_EQ(shaded.exit_code, 0) << shaded.stderr_text;
   EXPECT_EQ(shaded.stdout_text.find(" lines drawn"), std::string::npos) << shaded.stdout_text;
+  EXPECT_NE(shaded.stdout_text.find(" triangles in"), std::string::npos) << shaded.stdout_text;
 }
 
 TEST(CliOutput, FailedRenderKeepsAnExistingFile) {

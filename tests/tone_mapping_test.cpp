@@ -157,6 +157,25 @@ TEST(ToneMapRow, TheInverseCurvesGiveBackWhatTheyWereShown) {
   }
 }
 
+// Fog's color under a curve, exposed and mapped, shows as the fog color itself (clipped to 1)
+// for colors the curve can show: the sky, greys, near-white.
+TEST(ToneMapRow, FogColorUnderACurveShowsAsTheFogColor) {
+  const glm::vec3 fogs[] = {{0.53f, 0.66f, 0.82f}, {0.2f, 0.2f, 0.2f}, {0.9f, 0.88f, 0.85f}};
+  for (const float scale : {0.5f, 1.0f, 2.0f}) {
+    for (const glm::vec3 fog : fogs) {
+      EXPECT_EQ(fog_color_under(ToneMapping::none, fog, scale), fog);
+      const glm::vec3 shown = glm::min(fog * scale, glm::vec3(1.0f));
+      for (ToneMapping curve : {ToneMapping::pbr_neutral, ToneMapping::aces}) {
+        const glm::vec3 under = fog_color_under(curve, fog, scale);
+        const glm::vec4 mapped = map_row(curve, {glm::vec4(under, 1.0f)}, {0.5f}, scale)[0];
+        for (int k = 0; k < 3; ++k) {
+          EXPECT_NEAR(mapped[k], shown[k], 2e-3f) << static_cast<int>(curve) << " x" << scale;
+        }
+      }
+    }
+  }
+}
+
 // A square of one unlit, very bright color, its edges at fractions of a pixel, over a dark
 // clear color.
 Framebuffer render_bright_square(RenderSettings settings, glm::vec3 color,

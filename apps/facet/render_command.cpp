@@ -208,18 +208,21 @@ int run_render(const RenderOptions& o) {
   std::string lines =
       s.lines_drawn > 0 ? ", " + std::to_string(s.lines_drawn) + " lines drawn" : "";
   if (s.points_drawn > 0) lines += ", " + std::to_string(s.points_drawn) + " points drawn";
+  // FrameStats::triangles_in counts every primitive submitted.
+  const char* submitted = lines.empty() ? "triangles" : "primitives";
   // Outputs beside the color image (or instead of it): say which files they went to.
   std::vector<std::string> files = job.outputs.files(o.output);
   const std::string written = files == std::vector<std::string>{o.output} ? "" : joined(files);
   std::printf(
-      "%s: %dx%d, %llu triangles in (%llu culled, %llu clipped, %llu drawn)%s, %llu pixels "
+      "%s: %dx%d, %llu %s in (%llu culled, %llu clipped, %llu drawn)%s, %llu pixels "
       "shaded; load %.1f ms, geometry %.1f ms, binning %.1f ms, raster %.1f ms, total %.1f ms; "
       "write %.1f ms%s%s\n",
       o.output.c_str(), size.width, size.height, static_cast<unsigned long long>(s.triangles_in),
-      static_cast<unsigned long long>(s.culled), static_cast<unsigned long long>(s.clipped),
-      static_cast<unsigned long long>(s.drawn), lines.c_str(),
-      static_cast<unsigned long long>(s.pixels_shaded), load_ms, s.ms_geometry, s.ms_binning,
-      s.ms_raster, s.ms_total, write_ms, written.empty() ? "" : "; wrote ", written.c_str());
+      submitted, static_cast<unsigned long long>(s.culled),
+      static_cast<unsigned long long>(s.clipped), static_cast<unsigned long long>(s.drawn),
+      lines.c_str(), static_cast<unsigned long long>(s.pixels_shaded), load_ms, s.ms_geometry,
+      s.ms_binning, s.ms_raster, s.ms_total, write_ms, written.empty() ? "" : "; wrote ",
+      written.c_str());
   return 0;
 }
 

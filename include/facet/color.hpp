@@ -39,4 +39,10 @@ void tone_map(ToneMapping curve, std::span<glm::vec4> colors, float exposure = 0
 // channels its matrices would need below 0 at 0. ToneMapping::none gives display itself.
 glm::vec3 inverse_tone_map(ToneMapping curve, glm::vec3 display);
 
+// What fog fades toward so that a fully fogged surface, scaled by exposure_scale (2^exposure)
+// and mapped by curve, shows as fog_color does as a clear color (which is not mapped): the
+// inverse of fog_color x exposure_scale (clipped to 1), over exposure_scale. ToneMapping::none
+// gives fog_color.
+glm::vec3 fog_color_under(ToneMapping curve, glm::vec3 fog_color, float exposure_scale);
+
 }  // namespace facet

@@ -240,13 +240,8 @@ struct GlState {
     frame.viewport = {out.width(), out.height()};
     const std::vector<GlDraw> draws = gl::ordered_draws(scene, camera);
     const ToneMapping tone_mapping = tone_mapping_of(draws, settings);
-    frame.fog_color = scene.lighting.fog.color;
-    if (tone_mapping != ToneMapping::none) {
-      const float scale = std::exp2(settings.exposure);
-      frame.fog_color =
-          inverse_tone_map(tone_mapping, glm::min(frame.fog_color * scale, glm::vec3(1.0f))) /
-          scale;
-    }
+    frame.fog_color =
+        fog_color_under(tone_mapping, scene.lighting.fog.color, std::exp2(settings.exposure));
     gl::depth_view_range(draws, camera, frame.depth_view_near, frame.depth_view_far);
 
     bind_environment(scene.lighting.environment);

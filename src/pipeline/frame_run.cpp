@@ -190,11 +190,10 @@ void Renderer::Impl::run(Framebuffer& target) {
   resolve.display_referred = referred;
   resolve.tone_mapping = draws_only_display_values() ? ToneMapping::none : settings.tone_mapping;
   resolve.maps_background = background.environment != nullptr;
-  // Fog fades toward what the curve shows as the fog color after the exposure, as it shows a
-  // clear color of that value (facet::inverse_tone_map).
-  if (resolve.tone_mapping != ToneMapping::none && lighting.fog.mode != FogMode::none) {
-    const glm::vec3 shown = glm::min(lighting.fog.color * resolve.scale, glm::vec3(1.0f));
-    lighting.fog.color = inverse_tone_map(resolve.tone_mapping, shown) / resolve.scale;
+  // Fog fades toward what the curve shows as the fog color, as a clear color of that value
+  // shows unmapped.
+  if (lighting.fog.mode != FogMode::none) {
+    lighting.fog.color = fog_color_under(resolve.tone_mapping, lighting.fog.color, resolve.scale);
   }
   // A float target keeps display values as code / 255 whatever else the frame draws (no sRGB
   // encode follows to undo a decode), and the debug views' values unrounded.

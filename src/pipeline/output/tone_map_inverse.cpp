@@ -67,4 +67,10 @@ glm::vec3 inverse_tone_map(ToneMapping curve, glm::vec3 display) {
   }
 }
 
+glm::vec3 fog_color_under(ToneMapping curve, glm::vec3 fog_color, float exposure_scale) {
+  if (curve == ToneMapping::none) return fog_color;
+  const glm::vec3 shown = glm::min(fog_color * exposure_scale, glm::vec3(1.0f));
+  return inverse_tone_map(curve, shown) / exposure_scale;
+}
+
 }  // namespace facet

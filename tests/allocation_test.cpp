@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <new>
 
+#include "facet/render_texture.hpp"
 #include "facet/scene.hpp"
 #include "scenes/bench_scenes.hpp"
 
@@ -76,6 +77,26 @@ TEST(Allocations, SteadyStateFramesWithShadowsAllocateNothing) {
     EXPECT_EQ(allocations_in_frames(*scene, renderer, fb, 30), 0) << name;
     EXPECT_GT(renderer.stats().ms_shadows, 0.0) << name << ": no shadow pass ran";
   }
+}
+
+// A render texture's frames, its mip chains and depth texture refreshed in place, likewise.
+TEST(Allocations, SteadyStateFramesIntoARenderTextureAllocateNothing) {
+  if (!FACET_COUNTS_ALLOCATIONS) GTEST_SKIP() << "allocations are not counted in sanitizer builds";
+  auto scene = bench::make_bench_scene("shapes");
+  RenderSettings settings;
+  settings.threads = 2;
+  Renderer renderer(settings);
+  RenderTexture target(160, 90, {ColorFormat::rgba8_srgb, true, true});
+  auto frames = [&](int count) {
+    const long before = g_allocations.load();
+    for (int i = 0; i < count; ++i) {
+      scene->record(renderer, 0.01 * i, 160.0f / 90.0f);
+      renderer.finish(target);
+    }
+    return g_allocations.load() - before;
+  };
+  frames(5);
+  EXPECT_EQ(frames(30), 0);
 }
 
 TEST(Allocations, TheCounterSeesAllocations) {

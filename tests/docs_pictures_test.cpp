@@ -15,6 +15,7 @@
 #include "facet/image_io.hpp"
 #include "facet/material.hpp"
 #include "facet/mesh.hpp"
+#include "facet/render_texture.hpp"
 #include "facet/renderer.hpp"
 #include "facet/scene.hpp"
 #include "facet/worlds.hpp"
@@ -113,6 +114,54 @@ TEST(DocsPictures, ToneMappingCurvesSideBySide) {
                                       path + "'");
   ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
   expect_matches_golden_in(FACET_DOCS_PICTURE_DIR, path, "tone_mapping");
+}
+
+// "Render textures": the shapes seen from behind, rendered into a RenderTexture with its mip
+// chain, shown on a screen in a dark frame standing behind them in the same scene.
+TEST(DocsPictures, RenderTextureOnAScreenInTheScene) {
+  const Scene scene = make_shapes_scene();
+  RenderSettings settings;
+  settings.clear_color = glm::vec4(srgb_to_linear({0.53f, 0.66f, 0.82f}), 1.0f);
+  Renderer renderer(settings);
+
+  RenderTexture behind(256, 144, {.mipmaps = true});
+  renderer.begin_frame(
+      Camera::look_at({-2.0f, 2.5f, -7.0f}, {0.0f, 0.5f, 0.0f}, {0, 1, 0}, 50.0f, 256.0f / 144.0f),
+      scene.lighting);
+  draw_scene(renderer, scene);
+  renderer.finish(behind);
+
+  // An upright rectangle at depth z, its texture coordinates 0 to 1 (v up).
+  auto rectangle = [](glm::vec2 low, glm::vec2 high, float z) {
+    Mesh mesh;
+    mesh.positions = {
+        {low.x, low.y, z}, {high.x, low.y, z}, {high.x, high.y, z}, {low.x, high.y, z}};
+    mesh.texcoords = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    mesh.indices = {0, 1, 2, 0, 2, 3};
+    return mesh;
+  };
+  const Mesh screen = rectangle({-0.4f, 1.6f}, {2.8f, 3.4f}, -2.5f);
+  const Mesh frame = rectangle({-0.5f, 1.5f}, {2.9f, 3.5f}, -2.51f);
+  Material shown;
+  shown.shading = ShadingModel::unlit;
+  shown.base_color_map.texture = behind.texture();
+  shown.base_color_map.sampler.wrap_u = shown.base_color_map.sampler.wrap_v = Wrap::clamp_to_edge;
+  Material dark;
+  dark.shading = ShadingModel::unlit;
+  dark.base_color = {0.02f, 0.02f, 0.02f, 1.0f};
+
+  Camera camera = scene.camera;
+  camera.aspect = static_cast<float>(kWidth) / kHeight;
+  renderer.begin_frame(camera, scene.lighting);
+  draw_scene(renderer, scene);
+  renderer.draw(frame, dark);
+  renderer.draw(screen, shown);
+  Framebuffer framebuffer(kWidth, kHeight);
+  renderer.finish(framebuffer);
+  const std::string path =
+      (std::filesystem::path(::testing::TempDir()) / "docs_render_texture.png").string();
+  write_image(framebuffer, path);
+  expect_matches_golden_in(FACET_DOCS_PICTURE_DIR, path, "render_texture");
 }
 
 }  // namespace

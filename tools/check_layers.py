@@ -13,7 +13,8 @@ import sys
 # Public headers, by the layer that implements them.
 PUBLIC = {
     "core": {"camera", "color", "error", "facet", "framebuffer", "image_io", "light", "material",
-             "mesh", "mesh_tools", "overlay", "renderer", "scene", "texture", "version"},
+             "mesh", "mesh_tools", "overlay", "render_texture", "renderer", "scene", "texture",
+             "version"},
     "import": {"import"},
     "worlds": {"worlds", "procedural", "teapot", "islands"},
     "sound": {"sound"},

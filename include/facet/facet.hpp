@@ -13,6 +13,7 @@
 #include "facet/mesh.hpp"
 #include "facet/mesh_tools.hpp"
 #include "facet/overlay.hpp"
+#include "facet/render_texture.hpp"
 #include "facet/renderer.hpp"
 #include "facet/scene.hpp"
 #include "facet/texture.hpp"

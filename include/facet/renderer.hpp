@@ -13,6 +13,7 @@
 #include "facet/light.hpp"
 #include "facet/material.hpp"
 #include "facet/mesh.hpp"
+#include "facet/render_texture.hpp"
 
 namespace facet {
 
@@ -138,6 +139,10 @@ class Renderer {
   // facet::Error when triangle ids are asked of a mesh of 2^24 triangles or more, whose ids a
   // float pass cannot hold exactly.
   void finish(Framebuffer& target);
+  // The same into an offscreen target, whose textures then hold the image (RenderTexture). A
+  // frame cannot sample what it renders into: throws facet::Error, rendering nothing, when a
+  // recorded draw's material or the environment uses one of target's textures.
+  void finish(RenderTexture& target);
 
   const FrameStats& stats() const;
 

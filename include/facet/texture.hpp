@@ -84,7 +84,17 @@ class Texture {
   }
 
  private:
+  friend class RenderTexture;
   Texture() = default;
+  // For RenderTexture: a texture whose base level its target's frames are copied into, with
+  // the whole mip chain or the base level alone; refresh_from_base_level() then filters the
+  // levels above it and decodes the linear copy, in place, allocating nothing.
+  static std::shared_ptr<Texture> render_target(int width, int height, Format format, bool srgb,
+                                                bool mipmaps, std::string name);
+  Level& base_level() { return levels_[0]; }
+  void refresh_from_base_level();
+  void keep_linear_copy();    // sizes linear_ and linear_offsets_, then decodes
+  void decode_linear_copy();  // rewrites linear_ from the rgba8 levels
   std::vector<Level> levels_;
   Format format_ = Format::rgba8;
   bool srgb_ = false;

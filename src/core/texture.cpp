@@ -252,11 +252,8 @@ void store_texel(Texture::Level& level, bool srgb, int x, int y, glm::vec4 c) {
   level.rgba8[i + 3] = shading::encode_unorm8(c[3]);
 }
 
-// The next level: each side halved (rounded down, at least 1); each texel the average, in
-// linear space, of the 2x2 source texels it covers, or of fewer where a side is already 1.
-// (On odd sizes the last source row/column is dropped, as a plain 2x2 box filter does.)
-template <class Reader>
-Texture::Level downsample(const Texture::Level& src, bool srgb, const Reader& read) {
+// Storage for the level after src: each side halved (rounded down, at least 1).
+Texture::Level next_level_storage(const Texture::Level& src) {
   Texture::Level dst;
   dst.width = std::max(1, src.width / 2);
   dst.height = std::max(1, src.height / 2);
@@ -266,6 +263,14 @@ Texture::Level downsample(const Texture::Level& src, bool srgb, const Reader& re
   } else {
     dst.rgba32f.resize(values);
   }
+  return dst;
+}
+
+// Fills dst, the level after src (next_level_storage): each texel the average, in linear space,
+// of the 2x2 source texels it covers, or of fewer where a side is already 1. (On odd sizes the
+// last source row/column is dropped, as a plain 2x2 box filter does.)
+template <class Reader>
+void downsample(const Texture::Level& src, bool srgb, const Reader& read, Texture::Level& dst) {
   const int nx = src.width > 1 ? 2 : 1, ny = src.height > 1 ? 2 : 1;
   const float weight = 1.0f / static_cast<float>(nx * ny);
   for (int y = 0; y < dst.height; ++y) {
@@ -277,19 +282,27 @@ Texture::Level downsample(const Texture::Level& src, bool srgb, const Reader& re
       store_texel(dst, srgb, x, y, sum * weight);
     }
   }
-  return dst;
 }
 
+// Filters each level from the previous (stored) one, as glGenerateMipmap does: one pass per
+// level, into the levels' existing storage.
+void filter_mip_chain(std::vector<Texture::Level>& levels, bool srgb) {
+  for (std::size_t l = 1; l < levels.size(); ++l) {
+    const Texture::Level& last = levels[l - 1];
+    if (last.rgba32f.empty()) {
+      downsample(last, srgb, Rgba8Reader(last, srgb), levels[l]);
+    } else {
+      downsample(last, false, FloatReader{last.rgba32f.data(), last.width, last.height}, levels[l]);
+    }
+  }
+}
+
+// Adds the levels down to 1x1 after levels[0], then filters them.
 void build_mip_chain(std::vector<Texture::Level>& levels, bool srgb) {
   while (levels.back().width > 1 || levels.back().height > 1) {
-    // Filter from the previous (stored) level, as glGenerateMipmap does: one pass per level.
-    const Texture::Level& last = levels.back();
-    Texture::Level next =
-        last.rgba32f.empty()
-            ? downsample(last, srgb, Rgba8Reader(last, srgb))
-            : downsample(last, false, FloatReader{last.rgba32f.data(), last.width, last.height});
-    levels.push_back(std::move(next));
+    levels.push_back(next_level_storage(levels.back()));
   }
+  filter_mip_chain(levels, srgb);
 }
 
 }  // namespace
@@ -303,29 +316,61 @@ std::shared_ptr<Texture> Texture::from_rgba8(int width, int height, std::vector<
   texture->name_ = std::move(name);
   texture->levels_.push_back(Level{width, height, std::move(rgba), {}});
   build_mip_chain(texture->levels_, srgb);
-  if (static_cast<std::size_t>(width) * height <= kMaxLinearTexels) {
-    std::size_t total = 0;
-    for (const Level& level : texture->levels_) {
-      texture->linear_offsets_.push_back(static_cast<std::int32_t>(total));
-      total += level.rgba8.size();
-    }
-    std::vector<std::int32_t>& offsets = texture->linear_offsets_;
-    offsets.resize((offsets.size() + kLevelOffsetsPadding - 1) / kLevelOffsetsPadding *
-                   kLevelOffsetsPadding);  // zeros (LinearLevels)
-    texture->linear_.resize(total);
-    for (std::size_t l = 0; l < texture->levels_.size(); ++l) {
-      const Level& level = texture->levels_[l];
-      const Rgba8Reader read(level, srgb);
-      float* linear = texture->linear_.data() + texture->linear_offsets_[l];
-      for (int y = 0; y < level.height; ++y) {
-        for (int x = 0; x < level.width; ++x) {
-          const Texel t = read(x, y);
-          std::memcpy(&linear[(static_cast<std::size_t>(y) * level.width + x) * 4], &t, sizeof t);
-        }
+  if (static_cast<std::size_t>(width) * height <= kMaxLinearTexels) texture->keep_linear_copy();
+  return texture;
+}
+
+void Texture::keep_linear_copy() {
+  std::size_t total = 0;
+  linear_offsets_.clear();
+  for (const Level& level : levels_) {
+    linear_offsets_.push_back(static_cast<std::int32_t>(total));
+    total += level.rgba8.size();
+  }
+  linear_offsets_.resize((linear_offsets_.size() + kLevelOffsetsPadding - 1) /
+                         kLevelOffsetsPadding * kLevelOffsetsPadding);  // zeros (LinearLevels)
+  linear_.resize(total);
+  decode_linear_copy();
+}
+
+void Texture::decode_linear_copy() {
+  for (std::size_t l = 0; l < levels_.size(); ++l) {
+    const Level& level = levels_[l];
+    const Rgba8Reader read(level, srgb_);
+    float* linear = linear_.data() + linear_offsets_[l];
+    for (int y = 0; y < level.height; ++y) {
+      for (int x = 0; x < level.width; ++x) {
+        const Texel t = read(x, y);
+        std::memcpy(&linear[(static_cast<std::size_t>(y) * level.width + x) * 4], &t, sizeof t);
       }
     }
   }
+}
+
+std::shared_ptr<Texture> Texture::render_target(int width, int height, Format format, bool srgb,
+                                                bool mipmaps, std::string name) {
+  const std::size_t values = static_cast<std::size_t>(width) * height * 4;
+  std::shared_ptr<Texture> texture(new Texture());
+  texture->format_ = format;
+  texture->srgb_ = format == Format::rgba8 && srgb;
+  texture->name_ = std::move(name);
+  Level base{width, height, {}, {}};
+  if (format == Format::rgba8) {
+    base.rgba8.resize(values);
+  } else {
+    base.rgba32f.resize(values);
+  }
+  texture->levels_.push_back(std::move(base));
+  if (mipmaps) build_mip_chain(texture->levels_, texture->srgb_);
+  if (format == Format::rgba8 && static_cast<std::size_t>(width) * height <= kMaxLinearTexels) {
+    texture->keep_linear_copy();
+  }
   return texture;
+}
+
+void Texture::refresh_from_base_level() {
+  filter_mip_chain(levels_, srgb_);
+  if (!linear_.empty()) decode_linear_copy();
 }
 
 std::shared_ptr<Texture> Texture::from_rgba32f(int width, int height, std::vector<float> rgba,

@@ -186,6 +186,34 @@ void Renderer::finish(Framebuffer& target) {
   impl_->recording = false;
 }
 
+namespace {
+
+// Whether a material or the environment of what was recorded samples one of target's textures.
+bool samples(const std::vector<pipeline::DrawRecord>& draws, const RenderTexture& target) {
+  for (const pipeline::DrawRecord& draw : draws) {
+    const Material& m = draw.material;
+    for (const TextureMap* map : {&m.base_color_map, &m.normal_map, &m.specular_map,
+                                  &m.metallic_roughness_map, &m.occlusion_map, &m.emissive_map}) {
+      if (target.owns(map->texture.get())) return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+void Renderer::finish(RenderTexture& target) {
+  impl_->require_recording("finish()");
+  if (samples(impl_->frame.draws, target) || samples(impl_->outside_view_draws, target) ||
+      target.owns(impl_->lighting.environment.image.get())) {
+    throw Error(
+        "renderer: a draw samples the render texture it would be rendered into; render that "
+        "texture with an earlier finish()");
+  }
+  finish(target.framebuffer());
+  target.update();
+}
+
 struct RendererAccess {
   static Renderer::Impl& impl(Renderer& renderer) { return *renderer.impl_; }
 };

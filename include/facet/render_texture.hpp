@@ -1,0 +1,59 @@
+// RenderTexture: an offscreen target that later draws sample as a texture. A frame renders into
+// it (Renderer::finish(RenderTexture&), the same tiled pipeline as any frame, so the same image
+// for any thread count, tile size and SIMD target), and its texture() then holds that image:
+// a mirror's view, a screen inside the scene, a light's depth. The texture is one object for
+// the target's whole life, rewritten in place by each such finish(), so the materials that
+// hold it see every new image; its mip chain is filtered after each render when asked for.
+#pragma once
+
+#include <memory>
+
+#include "facet/framebuffer.hpp"
+#include "facet/texture.hpp"
+
+namespace facet {
+
+struct RenderTextureOptions {
+  // rgba8_srgb: an 8-bit sRGB texture, as a framebuffer's PNG; rgba32f: linear float color.
+  ColorFormat format = ColorFormat::rgba8_srgb;
+  // The whole mip chain (box filtered in linear light, as Texture's), refreshed after every
+  // render, for draws that see the texture minified (Filter::trilinear); otherwise the base
+  // level alone.
+  bool mipmaps = false;
+  // Also depth_texture(): the window depth of each pixel (0 at the near plane, 1 at the far
+  // and where nothing was drawn) in red, green and blue, alpha 1; linear float.
+  bool depth = false;
+};
+
+class RenderTexture {
+ public:
+  // Throws facet::Error if a side is outside [1, Framebuffer::kMaxSize].
+  RenderTexture(int width, int height, const RenderTextureOptions& options = {});
+
+  int width() const { return framebuffer_.width(); }
+  int height() const { return framebuffer_.height(); }
+  const RenderTextureOptions& options() const { return options_; }
+
+  // What Renderer::finish renders into (its extra outputs: none).
+  Framebuffer& framebuffer() { return framebuffer_; }
+  const Framebuffer& framebuffer() const { return framebuffer_; }
+  // The color image, as a texture for materials (TextureMap) and environments.
+  const std::shared_ptr<const Texture>& texture() const { return color_; }
+  // The depth image as a texture; null unless RenderTextureOptions::depth.
+  const std::shared_ptr<const Texture>& depth_texture() const { return depth_; }
+  // Whether texture is one of this target's textures.
+  bool owns(const Texture* texture) const;
+
+  // Copies the framebuffer into the textures and filters their mip chains. Renderer::finish
+  // calls it after rendering; call it after writing framebuffer() yourself. Allocates nothing.
+  void update();
+
+ private:
+  RenderTextureOptions options_;
+  Framebuffer framebuffer_;
+  std::shared_ptr<Texture> color_texture_, depth_texture_;
+  // The same textures, as materials hold them.
+  std::shared_ptr<const Texture> color_, depth_;
+};
+
+}  // namespace facet

@@ -1,0 +1,49 @@
+// RenderTexture (see facet/render_texture.hpp): a framebuffer and the textures made of it.
+#include "facet/render_texture.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+namespace facet {
+
+RenderTexture::RenderTexture(int width, int height, const RenderTextureOptions& options)
+    : options_(options),
+      framebuffer_(width, height, options.format,
+                   options.depth ? DepthImage::keep : DepthImage::none) {
+  const bool srgb = options.format == ColorFormat::rgba8_srgb;
+  color_texture_ = Texture::render_target(width, height,
+                                          srgb ? Texture::Format::rgba8 : Texture::Format::rgba32f,
+                                          srgb, options.mipmaps, "render texture");
+  color_ = color_texture_;
+  if (options.depth) {
+    depth_texture_ = Texture::render_target(width, height, Texture::Format::rgba32f, false,
+                                            options.mipmaps, "render texture depth");
+    depth_ = depth_texture_;
+  }
+  update();
+}
+
+bool RenderTexture::owns(const Texture* texture) const {
+  return texture != nullptr && (texture == color_.get() || texture == depth_.get());
+}
+
+void RenderTexture::update() {
+  Texture::Level& color = color_texture_->base_level();
+  if (options_.format == ColorFormat::rgba8_srgb) {
+    std::memcpy(color.rgba8.data(), framebuffer_.rgba8().data(), color.rgba8.size());
+  } else {
+    std::memcpy(color.rgba32f.data(), framebuffer_.rgba32f().data(),
+                color.rgba32f.size() * sizeof(float));
+  }
+  color_texture_->refresh_from_base_level();
+  if (!depth_texture_) return;
+  const std::vector<float>& depth = framebuffer_.depth();
+  float* texels = depth_texture_->base_level().rgba32f.data();
+  for (std::size_t i = 0; i < depth.size(); ++i) {
+    std::fill_n(texels + 4 * i, 3, depth[i]);
+    texels[4 * i + 3] = 1.0f;
+  }
+  depth_texture_->refresh_from_base_level();
+}
+
+}  // namespace facet

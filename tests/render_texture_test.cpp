@@ -1,0 +1,180 @@
+// Render textures (facet/render_texture.hpp): a frame rendered offscreen is what later draws
+// sample, its mip chain is filtered when asked for, a frame cannot sample its own target, and
+// the image is the same for any thread count and tile size.
+#include "facet/render_texture.hpp"
+
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <memory>
+
+#include "facet/error.hpp"
+#include "facet/renderer.hpp"
+#include "facet/scene.hpp"
+#include "facet/worlds.hpp"
+#include "support/render_helpers.hpp"
+
+namespace facet::test {
+namespace {
+
+constexpr int kWidth = 64, kHeight = 48;
+
+// The shapes scene rendered into target, one sample a pixel, no tone mapping.
+void render_shapes_into(RenderTexture& target, RenderSettings settings = {}) {
+  static const Scene scene = make_shapes_scene();
+  Renderer renderer(settings);
+  Camera camera = scene.camera;
+  camera.aspect = static_cast<float>(target.width()) / target.height();
+  renderer.begin_frame(camera, scene.lighting);
+  draw_scene(renderer, scene);
+  renderer.finish(target);
+}
+
+// A rectangle filling an orthographic view 2 units tall, its texture coordinates 0 to 1 (v up).
+Mesh screen(float aspect) {
+  Mesh mesh;
+  mesh.positions = {{-aspect, -1, 0}, {aspect, -1, 0}, {aspect, 1, 0}, {-aspect, 1, 0}};
+  mesh.texcoords = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  mesh.indices = {0, 1, 2, 0, 2, 3};
+  return mesh;
+}
+
+// The screen drawn unlit with map, filling a width x height framebuffer.
+Framebuffer show_on_screen(const TextureMap& map, int width, int height) {
+  const float aspect = static_cast<float>(width) / height;
+  const Mesh mesh = screen(aspect);
+  Material material;
+  material.shading = ShadingModel::unlit;
+  material.base_color_map = map;
+  Renderer renderer;
+  renderer.begin_frame(
+      Camera::orthographic({0, 0, 1}, {0, 0, 0}, {0, 1, 0}, 2.0f, aspect, 0.5f, 1.5f));
+  renderer.draw(mesh, material);
+  Framebuffer out(width, height);
+  renderer.finish(out);
+  return out;
+}
+
+TEST(RenderTexture, ADrawSamplingItShowsTheImageRenderedIntoIt) {
+  RenderTexture target(kWidth, kHeight);
+  render_shapes_into(target);
+  EXPECT_EQ(target.texture()->level_count(), 1);
+  Sampler nearest{Filter::nearest, Wrap::clamp_to_edge, Wrap::clamp_to_edge};
+  const Framebuffer shown =
+      show_on_screen({target.texture(), nearest, glm::mat3(1.0f)}, kWidth, kHeight);
+  EXPECT_EQ(shown.rgba8(), target.framebuffer().rgba8());
+
+  // Rendered again into, the same texture object holds the new image.
+  const std::shared_ptr<const Texture> before = target.texture();
+  const std::vector<std::uint8_t> first = target.framebuffer().rgba8();
+  RenderSettings settings;
+  settings.clear_color = {1.0f, 0.0f, 0.0f, 1.0f};
+  render_shapes_into(target, settings);
+  EXPECT_EQ(target.texture(), before);
+  EXPECT_NE(target.framebuffer().rgba8(), first);
+  EXPECT_EQ(show_on_screen({target.texture(), nearest, glm::mat3(1.0f)}, kWidth, kHeight).rgba8(),
+            target.framebuffer().rgba8());
+}
+
+TEST(RenderTexture, MipmapsAreTheLevelsAverages) {
+  for (ColorFormat format : {ColorFormat::rgba8_srgb, ColorFormat::rgba32f}) {
+    RenderTexture target(kWidth, kHeight, {format, true, false});
+    render_shapes_into(target);
+    const Texture& texture = *target.texture();
+    ASSERT_EQ(texture.level_count(), 7);  // 64x48 down to 1x1
+    for (int level = 1; level < texture.level_count(); ++level) {
+      const Texture::Level& above = texture.level(level - 1);
+      const Texture::Level& here = texture.level(level);
+      for (int y = 0; y < here.height; ++y) {
+        for (int x = 0; x < here.width; ++x) {
+          glm::vec4 sum(0.0f);
+          int n = 0;
+          for (int dy = 0; dy < (above.height > 1 ? 2 : 1); ++dy) {
+            for (int dx = 0; dx < (above.width > 1 ? 2 : 1); ++dx, ++n) {
+              sum += texture.texel(level - 1, 2 * x + dx, 2 * y + dy);
+            }
+          }
+          const glm::vec4 texel = texture.texel(level, x, y);
+          for (int k = 0; k < 4; ++k) {
+            // An 8-bit level is rounded to its code: half a code step of sRGB at most.
+            EXPECT_NEAR(texel[k], sum[k] / n, format == ColorFormat::rgba32f ? 1e-6f : 0.01f)
+                << "level " << level << " (" << x << ", " << y << ")";
+          }
+        }
+      }
+    }
+  }
+}
+
+TEST(RenderTexture, DepthTextureHoldsTheWindowDepth) {
+  RenderTexture target(kWidth, kHeight, {ColorFormat::rgba8_srgb, false, true});
+  render_shapes_into(target);
+  ASSERT_NE(target.depth_texture(), nullptr);
+  const Texture& depth = *target.depth_texture();
+  EXPECT_EQ(depth.format(), Texture::Format::rgba32f);
+  int drawn = 0;
+  for (int y = 0; y < kHeight; ++y) {
+    for (int x = 0; x < kWidth; ++x) {
+      const float d = target.framebuffer().depth_at(x, y);
+      EXPECT_EQ(depth.texel(0, x, y), glm::vec4(d, d, d, 1.0f));
+      drawn += d < 1.0f;
+    }
+  }
+  EXPECT_GT(drawn, kWidth * kHeight / 4);
+  EXPECT_EQ(RenderTexture(4, 4).depth_texture(), nullptr);
+}
+
+// A draw that samples the target it is rendered into, or an environment that is that target:
+// one error, and nothing rendered.
+TEST(RenderTexture, AFrameCannotSampleItsOwnTarget) {
+  RenderTexture target(kWidth, kHeight, {ColorFormat::rgba8_srgb, false, true});
+  render_shapes_into(target);
+  const std::vector<std::uint8_t> before = target.framebuffer().rgba8();
+  const Mesh mesh = screen(1.0f);
+  for (int way = 0; way < 3; ++way) {
+    Material material;
+    Lighting lighting;
+    if (way == 0) material.base_color_map.texture = target.texture();
+    if (way == 1) material.normal_map.texture = target.depth_texture();
+    if (way == 2) lighting.environment.image = target.texture();
+    Renderer renderer;
+    renderer.begin_frame(test_camera(kWidth, kHeight), lighting);
+    renderer.draw(mesh, material, glm::translate(glm::mat4(1.0f), {0.0f, 0.0f, -3.0f}));
+    try {
+      renderer.finish(target);
+      ADD_FAILURE() << "way " << way << ": no error";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("samples the render texture"), std::string::npos)
+          << e.what();
+    }
+    EXPECT_EQ(target.framebuffer().rgba8(), before) << "way " << way;
+    // Into another target the same draws are fine.
+    RenderTexture other(kWidth, kHeight);
+    EXPECT_NO_THROW(renderer.finish(other)) << "way " << way;
+  }
+  EXPECT_THROW(RenderTexture(0, 4), Error);
+  EXPECT_THROW(RenderTexture(4, Framebuffer::kMaxSize + 1), Error);
+}
+
+TEST(RenderTexture, TheSameImageForAnyThreadsAndTiles) {
+  RenderTexture reference(kWidth, kHeight, {ColorFormat::rgba8_srgb, true, false});
+  RenderSettings one;
+  one.threads = 1;
+  render_shapes_into(reference, one);
+  for (int threads : {2, 3}) {
+    for (int tile : {16, 64}) {
+      RenderSettings settings;
+      settings.threads = threads;
+      settings.tile_size = tile;
+      RenderTexture target(kWidth, kHeight, {ColorFormat::rgba8_srgb, true, false});
+      render_shapes_into(target, settings);
+      for (int level = 0; level < reference.texture()->level_count(); ++level) {
+        EXPECT_EQ(target.texture()->level(level).rgba8, reference.texture()->level(level).rgba8)
+            << threads << " threads, tile " << tile << ", level " << level;
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace facet::test

@@ -124,6 +124,18 @@ TEST(RenderTexture, DepthTextureHoldsTheWindowDepth) {
   EXPECT_EQ(RenderTexture(4, 4).depth_texture(), nullptr);
 }
 
+// Depth alone: no color texture, and the same depths as with color.
+TEST(RenderTexture, DepthOnlyTargetsKeepTheSameDepths) {
+  RenderTexture both(kWidth, kHeight, {.depth = true});
+  RenderTexture depth_only(kWidth, kHeight, {.depth = true, .color = false});
+  render_shapes_into(both);
+  render_shapes_into(depth_only);
+  EXPECT_EQ(depth_only.texture(), nullptr);
+  EXPECT_EQ(depth_only.framebuffer().depth(), both.framebuffer().depth());
+  EXPECT_EQ(depth_only.depth_texture()->level(0).rgba32f, both.depth_texture()->level(0).rgba32f);
+  EXPECT_THROW(RenderTexture(4, 4, {.color = false}), Error);
+}
+
 // A draw that samples the target it is rendered into, or an environment that is that target:
 // one error, and nothing rendered.
 TEST(RenderTexture, AFrameCannotSampleItsOwnTarget) {

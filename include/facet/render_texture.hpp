@@ -23,11 +23,15 @@ struct RenderTextureOptions {
   // Also depth_texture(): the window depth of each pixel (0 at the near plane, 1 at the far
   // and where nothing was drawn) in red, green and blue, alpha 1; linear float.
   bool depth = false;
+  // False: depth alone (with depth true), as a shadow map is made: no color is cleared,
+  // shaded or resolved, and texture() is null.
+  bool color = true;
 };
 
 class RenderTexture {
  public:
-  // Throws facet::Error if a side is outside [1, Framebuffer::kMaxSize].
+  // Throws facet::Error if a side is outside [1, Framebuffer::kMaxSize], or for options that
+  // keep neither color nor depth.
   RenderTexture(int width, int height, const RenderTextureOptions& options = {});
 
   int width() const { return framebuffer_.width(); }
@@ -37,7 +41,8 @@ class RenderTexture {
   // What Renderer::finish renders into (its extra outputs: none).
   Framebuffer& framebuffer() { return framebuffer_; }
   const Framebuffer& framebuffer() const { return framebuffer_; }
-  // The color image, as a texture for materials (TextureMap) and environments.
+  // The color image, as a texture for materials (TextureMap) and environments; null for a
+  // depth-only target.
   const std::shared_ptr<const Texture>& texture() const { return color_; }
   // The depth image as a texture; null unless RenderTextureOptions::depth.
   const std::shared_ptr<const Texture>& depth_texture() const { return depth_; }

@@ -172,18 +172,22 @@ void Renderer::Impl::record(const Mesh& mesh, const std::optional<pipeline::Mesh
   (outside ? outside_view_draws : frame.draws).push_back(record);
 }
 
-void Renderer::finish(Framebuffer& target) {
-  impl_->require_recording("finish()");
-  if (target.extra_outputs().any()) impl_->check_extra_outputs(target);
-  impl_->arena.execute([&] {
-    impl_->run_shadow_passes();
-    impl_->run(target);
-    impl_->frame.stats.ms_shadows = impl_->shadow_ms;
-    impl_->frame.stats.ms_total += impl_->shadow_ms;
-    if (target.extra_outputs().any()) impl_->run_extra_outputs(target);
+void Renderer::finish(Framebuffer& target) { impl_->finish(target, false); }
+
+void Renderer::Impl::finish(Framebuffer& target, bool depth_only) {
+  require_recording("finish()");
+  if (target.extra_outputs().any()) check_extra_outputs(target);
+  arena.execute([&] {
+    run_shadow_passes();
+    depth_only_pass = depth_only;
+    run(target);
+    depth_only_pass = false;
+    frame.stats.ms_shadows = shadow_ms;
+    frame.stats.ms_total += shadow_ms;
+    if (target.extra_outputs().any()) run_extra_outputs(target);
   });
-  impl_->shadows_ready = false;
-  impl_->recording = false;
+  shadows_ready = false;
+  recording = false;
 }
 
 namespace {
@@ -210,7 +214,7 @@ void Renderer::finish(RenderTexture& target) {
         "renderer: a draw samples the render texture it would be rendered into; render that "
         "texture with an earlier finish()");
   }
-  finish(target.framebuffer());
+  impl_->finish(target.framebuffer(), !target.options().color);
   target.update();
 }
 

@@ -124,6 +124,9 @@ struct Renderer::Impl {
   void prepare_tiles(const Framebuffer& target);
   void render_tile(int index, int worker, Framebuffer& target);
   void run(Framebuffer& target);
+  // Renderer::finish: the shadow passes, then run() (writing depth alone when depth_only),
+  // then the extra outputs; ends the frame.
+  void finish(Framebuffer& target, bool depth_only);
   // Throws facet::Error for extra outputs the frame's draws cannot give exactly (ids too big
   // for a float pass), before anything is drawn (output_passes.cpp).
   void check_extra_outputs(const Framebuffer& target) const;

@@ -131,8 +131,8 @@ HWY_INLINE BatchV OrthographicShadow(const ShadowMap& map, const Vec3V& p, const
 
 // shadow_visibility(maps, p, n) in the lanes of `wanted`, 1 in the others: each lane's cascade
 // picked as shadow_visibility picks it, each cascade a lane picks looked up for its lanes.
-HWY_INLINE BatchV ShadowVisibility(const ShadowMaps& maps, const Vec3V& p, const Vec3V& n,
-                                   BatchMask wanted) {
+inline HWY_NOINLINE BatchV ShadowVisibility(const ShadowMaps& maps, const Vec3V& p, const Vec3V& n,
+                                            BatchMask wanted) {
   const BatchTag d;
   BatchV visibility = hn::Set(d, 1.0f);
   if (hn::AllFalse(d, wanted)) return visibility;

@@ -22,6 +22,39 @@ namespace hn = hwy::HWY_NAMESPACE;
 
 using BatchMask = hn::Mask<BatchTag>;
 
+// depth[i]: texel i of the four at row[lane], lane by lane. Vectors of 4 or 8 lanes transpose
+// the rows' loads in registers (8 lanes: lanes 0-3 in the low 128 bits, 4-7 in the high).
+HWY_INLINE void FootprintRow(const float* const* row, BatchV depth[4]) {
+  const BatchTag d;
+  constexpr std::size_t kLanes = hn::MaxLanes(d);
+#if HWY_TARGET != HWY_SCALAR  // which has no Combine or Interleave*
+  if constexpr (kLanes == 4 || kLanes == 8) {
+    BatchV r[4];
+    if constexpr (kLanes == 8) {
+      const hn::Half<BatchTag> d4;
+      for (int k = 0; k < 4; ++k)
+        r[k] = hn::Combine(d, hn::LoadU(d4, row[k + 4]), hn::LoadU(d4, row[k]));
+    } else {
+      for (int k = 0; k < 4; ++k) r[k] = hn::LoadU(d, row[k]);
+    }
+    const hn::Repartition<std::uint64_t, BatchTag> d64;
+    const BatchV t0 = hn::InterleaveLower(d, r[0], r[1]), t1 = hn::InterleaveLower(d, r[2], r[3]);
+    const BatchV t2 = hn::InterleaveUpper(d, r[0], r[1]), t3 = hn::InterleaveUpper(d, r[2], r[3]);
+    depth[0] = hn::BitCast(d, hn::InterleaveLower(d64, hn::BitCast(d64, t0), hn::BitCast(d64, t1)));
+    depth[1] = hn::BitCast(d, hn::InterleaveUpper(d64, hn::BitCast(d64, t0), hn::BitCast(d64, t1)));
+    depth[2] = hn::BitCast(d, hn::InterleaveLower(d64, hn::BitCast(d64, t2), hn::BitCast(d64, t3)));
+    depth[3] = hn::BitCast(d, hn::InterleaveUpper(d64, hn::BitCast(d64, t2), hn::BitCast(d64, t3)));
+    return;
+  }
+#endif
+  {
+    alignas(64) float texels[kLanes * 4];
+    for (std::size_t lane = 0; lane < kLanes; ++lane)
+      std::memcpy(&texels[lane * 4], row[lane], sizeof(float) * 4);
+    hn::LoadInterleaved4(d, texels, depth[0], depth[1], depth[2], depth[3]);
+  }
+}
+
 // shadow_visibility(map, p, n) for an orthographic map in the lanes of `live`; the other lanes'
 // results are not used. The 4 x 4 footprint's depths are read a lane at a time, a row of four
 // texels with one load where the footprint lies within the map.
@@ -77,26 +110,29 @@ HWY_INLINE BatchV OrthographicShadow(const ShadowMap& map, const Vec3V& p, const
   const BatchMask inside =
       hn::And(hn::And(hn::Ge(ix, hn::Zero(d)), hn::Ge(iy, hn::Zero(d))),
               hn::And(hn::Le(hn::Add(ix, four), size), hn::Le(hn::Add(iy, four), size)));
-  // depths[j][lane][i]: the depth of texel (ix + i, iy + j), clamped into the map where the
-  // footprint leaves it (those compares are not made).
+  // rows[j][lane]: where lane's texels (ix + i, iy + j), i = 0..3, lie: in the map itself, or
+  // copied to `clamped` where the footprint leaves the map (clamped into it; those compares are
+  // not made).
   constexpr int kMaxLanes = 8;
-  alignas(64) float depths[4][kMaxLanes][4];
   alignas(64) std::int32_t first_x[kMaxLanes], first_y[kMaxLanes];
   hn::Store(hn::ConvertTo(di, ix), di, first_x);
   hn::Store(hn::ConvertTo(di, iy), di, first_y);
+  const float* rows[4][kMaxLanes];
+  float clamped[kMaxLanes][4][4];
   const int lanes = static_cast<int>(hn::Lanes(d));
   const std::ptrdiff_t stride = map.size;
   for (int lane = 0; lane < lanes; ++lane) {
     const int x = first_x[lane], y = first_y[lane];
     if (x >= 0 && y >= 0 && x + 4 <= map.size && y + 4 <= map.size) {
       const float* texel = map.depth + y * stride + x;
-      for (int j = 0; j < 4; ++j)
-        std::memcpy(depths[j][lane], texel + j * stride, sizeof(float) * 4);
+      for (int j = 0; j < 4; ++j) rows[j][lane] = texel + j * stride;
     } else {
       for (int j = 0; j < 4; ++j) {
         const std::ptrdiff_t row = std::clamp(y + j, 0, map.size - 1) * stride;
-        for (int i = 0; i < 4; ++i)
-          depths[j][lane][i] = map.depth[row + std::clamp(x + i, 0, map.size - 1)];
+        for (int i = 0; i < 4; ++i) {
+          clamped[lane][j][i] = map.depth[row + std::clamp(x + i, 0, map.size - 1)];
+        }
+        rows[j][lane] = clamped[lane][j];
       }
     }
   }
@@ -108,7 +144,7 @@ HWY_INLINE BatchV OrthographicShadow(const ShadowMap& map, const Vec3V& p, const
     const BatchMask row_in = hn::And(hn::Ge(y, hn::Zero(d)), hn::Lt(y, size));
     const BatchV row_start = hn::Add(first, hn::Mul(slope_y, hn::Set(d, static_cast<float>(j))));
     BatchV depth[4];
-    hn::LoadInterleaved4(d, &depths[j][0][0], depth[0], depth[1], depth[2], depth[3]);
+    FootprintRow(rows[j], depth);
     BatchV row = hn::Zero(d);
     for (int i = 0; i < 4; ++i) {
       BatchMask sees =
@@ -130,8 +166,10 @@ HWY_INLINE BatchV OrthographicShadow(const ShadowMap& map, const Vec3V& p, const
 }
 
 // shadow_visibility(maps, p, n) in the lanes of `wanted`, 1 in the others: each lane's cascade
-// picked as shadow_visibility picks it, each cascade a lane picks looked up for its lanes.
-inline HWY_NOINLINE BatchV ShadowVisibility(const ShadowMaps& maps, const Vec3V& p, const Vec3V& n,
+// picked as shadow_visibility picks it, each cascade a lane picks looked up for its lanes. Out of
+// line (and of each file's own), so that the kernels' loops keep their registers for the draws
+// without shadows.
+static HWY_NOINLINE BatchV ShadowVisibility(const ShadowMaps& maps, const Vec3V& p, const Vec3V& n,
                                             BatchMask wanted) {
   const BatchTag d;
   BatchV visibility = hn::Set(d, 1.0f);

@@ -77,8 +77,9 @@ glm::vec3 random_point(std::mt19937& rng, const Sun& sun, int c) {
       depth(0.25f, 0.75f), beyond(1.0f, 1.3f), far(-1e6f, 1e6f);
   glm::vec3 m(across(rng), across(rng), depth(rng));
   switch (rng() % 16) {
-    case 0:  // far outside the map
+    case 0:  // far outside the map, now and then beyond 2^23 texels (no fraction left)
       m.x = far(rng), m.y = far(rng);
+      if (rng() % 2) m.x *= 1000.0f;
       break;
     case 1:  // beyond the far plane
       m.z = beyond(rng);

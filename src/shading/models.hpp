@@ -167,6 +167,11 @@ struct LambertShadingT
   static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
     surface_vertex<kVaryings>(in, u, out);
   }
+  // The batch form reads the position where a light casts shadows: without it, fragment().
+  static bool batch_shades(const DrawUniforms& u) {
+    return (kPositioned || !any_shadowed_light(u)) &&
+           BatchForm<BatchModel::lambert>::batch_shades(u);
+  }
   static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
     SurfacePoint s = surface_point<false, kPositioned>(f, u);
     glm::vec3 color = diffuse_light(glm::vec3(s.albedo), s.normal, s.position, u);

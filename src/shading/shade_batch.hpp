@@ -3,8 +3,9 @@
 // Highway supports): the raster loop (pipeline/raster/raster.hpp) packs the covered pixels of a
 // triangle (or of several small ones), then shades them together instead of calling the model's
 // fragment() per pixel. Same operations as their fragment() (models.hpp, lit_models.hpp) lane by
-// lane, so the same bits; draws the batch code does not cover (point or spot lights for the
-// models lit per pixel, emissive, normal or specular maps, reflections) keep fragment().
+// lane, so the same bits, shadows of directional lights included (shadow_batch-inl.h); draws
+// the batch code does not cover (point or spot lights for the models lit per pixel, emissive,
+// normal or specular maps, reflections) keep fragment().
 #pragma once
 
 #include "core/simd_target.hpp"
@@ -52,8 +53,8 @@ struct ShadeInput {
 };
 
 // Whether shade_batch can shade this draw with this model: no emissive map; for the models lit
-// per pixel every light directional and none shadowed; for Phong and Blinn-Phong also no
-// normal or specular map and no reflections.
+// per pixel every light directional (shadowed or not); for Phong and Blinn-Phong also no normal
+// or specular map and no reflections.
 bool batch_shades(BatchModel model, const DrawUniforms& u);
 
 // Linear RGBA of every pixel, as the model's fragment() gives it (then fogged, if in.fog).

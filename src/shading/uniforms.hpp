@@ -93,8 +93,8 @@ inline bool only_directional_lights(const DrawUniforms& u) {
   return all_directional(
       std::span(u.frame->lights, static_cast<std::size_t>(u.frame->light_count)));
 }
-// Whether a light of the frame has a shadow map: the batch forms of the models lit per pixel
-// or per vertex do not read shadows, and leave such draws to the scalar models.
+// Whether a light of the frame has a shadow map: then the batch forms of the models lit per
+// pixel read the pixels' positions, and the Lambert form without them is not taken.
 inline bool any_shadowed_light(const DrawUniforms& u) {
   const std::span lights(u.frame->lights, static_cast<std::size_t>(u.frame->light_count));
   return std::any_of(lights.begin(), lights.end(),

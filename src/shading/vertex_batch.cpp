@@ -13,6 +13,8 @@
 #include <cstring>
 
 #include "shading/batch_math-inl.h"
+#include "shading/lighting.hpp"
+#include "shading/shadow_batch-inl.h"
 #include "shading/surface.hpp"
 
 HWY_BEFORE_NAMESPACE();
@@ -62,8 +64,24 @@ void GouraudVertexBatch(const DrawUniforms& u, const VertexBatchInput& in, Goura
           material.shininess == 0.0f
               ? hn::Set(d, 1.0f)
               : PortablePow(StdMax(Dot(normal, half), hn::Zero(d)), material.shininess);
+      // received_radiance(): the radiance after the light's shadow at the vertex.
+      BatchV visibility = hn::Set(d, 1.0f);
+      if (l.shadow) {
+        const auto active = hn::FirstN(d, static_cast<std::size_t>(in.count - j));
+        visibility = ShadowVisibility(*l.shadow, {world[0], world[1], world[2]}, normal,
+                                      hn::And(lit, active));
+      }
       for (int c = 0; c < 3; ++c) {
         const BatchV radiance = hn::Set(d, l.radiance[c]);
+        if (l.shadow) {  // (radiance x visibility) x specular color x highlight
+          const BatchV received = hn::Mul(radiance, visibility);
+          diffuse[c] =
+              hn::IfThenElse(lit, hn::Add(diffuse[c], hn::Mul(received, n_dot_l)), diffuse[c]);
+          const BatchV tint = hn::Mul(received, hn::Set(d, material.specular_color[c]));
+          specular[c] =
+              hn::IfThenElse(lit, hn::Add(specular[c], hn::Mul(tint, highlight)), specular[c]);
+          continue;
+        }
         diffuse[c] =
             hn::IfThenElse(lit, hn::Add(diffuse[c], hn::Mul(radiance, n_dot_l)), diffuse[c]);
         const BatchV tint = hn::Set(d, l.radiance[c] * material.specular_color[c]);
@@ -98,7 +116,7 @@ namespace facet::shading {
 HWY_EXPORT(GouraudVertexBatch);
 
 bool gouraud_batches_vertices(const DrawUniforms& u) {
-  return only_directional_lights(u) && !any_shadowed_light(u);
+  return only_directional_lights(u) && only_orthographic_shadows(u);
 }
 
 GouraudVertexBatchKernel gouraud_vertex_batch_kernel(SimdTarget target) {

@@ -3,8 +3,8 @@
 // hands it the vertices of one vertex pass instead of calling vertex() for each. Its lighting (a
 // world position, a view direction, a normalized half vector and a power per light) is most of the
 // geometry stage's time in Gouraud-lit scenes. Same operations as GouraudShading::vertex()
-// (lit_models.hpp) lane by lane, so the same bits; draws with point or spot lights keep
-// vertex().
+// (lit_models.hpp) lane by lane, so the same bits, shadows of directional lights included
+// (shadow_batch-inl.h); draws with point or spot lights keep vertex().
 #pragma once
 
 #include <glm/glm.hpp>
@@ -25,7 +25,7 @@ struct VertexBatchInput {
   const glm::vec4* colors = nullptr;     // count of them, or null: white
 };
 
-// Whether gouraud_vertex_batch can light this draw: every light directional, none shadowed.
+// Whether gouraud_vertex_batch can light this draw: every light directional (shadowed or not).
 bool gouraud_batches_vertices(const DrawUniforms& u);
 
 // Where the Gouraud models (lit_models.hpp) keep their varyings: the diffuse light at slots

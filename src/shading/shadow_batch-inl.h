@@ -1,0 +1,206 @@
+// The shadow lookup of shadow_map.hpp (shadow_visibility of a light's ShadowMaps) for a vector of
+// surface points at once, for the batch kernels of the models lit per pixel (shade_batch.cpp) and
+// per vertex (vertex_batch.cpp), which take directional lights only, so orthographic maps only.
+// Included inside each file's HWY_NAMESPACE after batch_math-inl.h, the Highway "-inl.h" way.
+// Each step repeats shadow_visibility with the same IEEE operations in the same order (no fused
+// multiply-add), so each lane gets the scalar lookup's bits; shadow_batch_test checks it.
+#if defined(FACET_SHADING_SHADOW_BATCH_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef FACET_SHADING_SHADOW_BATCH_INL_H_
+#undef FACET_SHADING_SHADOW_BATCH_INL_H_
+#else
+#define FACET_SHADING_SHADOW_BATCH_INL_H_
+#endif
+
+#include <hwy/highway.h>
+
+#include "shading/batch_math-inl.h"
+#include "shading/shadow_map.hpp"
+
+HWY_BEFORE_NAMESPACE();
+namespace facet::shading::HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+using BatchMask = hn::Mask<BatchTag>;
+
+// depth[i]: texel i of the four at row[lane], lane by lane. Vectors of 4 or 8 lanes transpose
+// the rows' loads in registers (8 lanes: lanes 0-3 in the low 128 bits, 4-7 in the high).
+HWY_INLINE void FootprintRow(const float* const* row, BatchV depth[4]) {
+  const BatchTag d;
+  constexpr std::size_t kLanes = hn::MaxLanes(d);
+#if HWY_TARGET != HWY_SCALAR  // which has no Combine or Interleave*
+  if constexpr (kLanes == 4 || kLanes == 8) {
+    BatchV r[4];
+    if constexpr (kLanes == 8) {
+      const hn::Half<BatchTag> d4;
+      for (int k = 0; k < 4; ++k)
+        r[k] = hn::Combine(d, hn::LoadU(d4, row[k + 4]), hn::LoadU(d4, row[k]));
+    } else {
+      for (int k = 0; k < 4; ++k) r[k] = hn::LoadU(d, row[k]);
+    }
+    const hn::Repartition<std::uint64_t, BatchTag> d64;
+    const BatchV t0 = hn::InterleaveLower(d, r[0], r[1]), t1 = hn::InterleaveLower(d, r[2], r[3]);
+    const BatchV t2 = hn::InterleaveUpper(d, r[0], r[1]), t3 = hn::InterleaveUpper(d, r[2], r[3]);
+    depth[0] = hn::BitCast(d, hn::InterleaveLower(d64, hn::BitCast(d64, t0), hn::BitCast(d64, t1)));
+    depth[1] = hn::BitCast(d, hn::InterleaveUpper(d64, hn::BitCast(d64, t0), hn::BitCast(d64, t1)));
+    depth[2] = hn::BitCast(d, hn::InterleaveLower(d64, hn::BitCast(d64, t2), hn::BitCast(d64, t3)));
+    depth[3] = hn::BitCast(d, hn::InterleaveUpper(d64, hn::BitCast(d64, t2), hn::BitCast(d64, t3)));
+    return;
+  }
+#endif
+  {
+    alignas(64) float texels[kLanes * 4];
+    for (std::size_t lane = 0; lane < kLanes; ++lane)
+      std::memcpy(&texels[lane * 4], row[lane], sizeof(float) * 4);
+    hn::LoadInterleaved4(d, texels, depth[0], depth[1], depth[2], depth[3]);
+  }
+}
+
+// shadow_visibility(map, p, n) for an orthographic map in the lanes of `live`; the other lanes'
+// results are not used. The 4 x 4 footprint's depths are read a lane at a time, a row of four
+// texels with one load where the footprint lies within the map.
+HWY_INLINE BatchV OrthographicShadow(const ShadowMap& map, const Vec3V& p, const Vec3V& n,
+                                     BatchMask live) {
+  const BatchTag d;
+  const hn::RebindToSigned<BatchTag> di;
+  const glm::mat4& t = map.world_to_map;
+  // glm's mat4 x vec4: (m0 x + m1 y) + (m2 z + m3 w), w = 1.
+  BatchV m[3];
+  for (int c = 0; c < 3; ++c) {
+    m[c] = hn::Add(hn::Add(hn::Mul(hn::Set(d, t[0][c]), p.x), hn::Mul(hn::Set(d, t[1][c]), p.y)),
+                   hn::Add(hn::Mul(hn::Set(d, t[2][c]), p.z), hn::Set(d, t[3][c] * 1.0f)));
+  }
+  const MapSlopes& slopes = map.slopes;
+  const BatchV det = Dot(n, Set3(slopes.ray));
+  const BatchV max_slope = hn::Set(d, kMaxSlopeTexels * slopes.texel_depth);
+  const BatchV min_slope = hn::Neg(max_slope);
+  // The slopes where det != 0 (NaN included), std::clamp'ed; 0 elsewhere.
+  const BatchMask has_det = hn::Not(hn::Eq(det, hn::Zero(d)));
+  const BatchV inv_det = hn::Div(hn::Set(d, 1.0f), det);
+  const auto clamp = [&](BatchV v) {
+    return hn::IfThenElse(hn::Lt(v, min_slope), min_slope,
+                          hn::IfThenElse(hn::Lt(max_slope, v), max_slope, v));
+  };
+  const BatchV slope_x =
+      hn::IfThenElseZero(has_det, clamp(hn::Mul(Dot(n, Set3(slopes.slope_x)), inv_det)));
+  const BatchV slope_y =
+      hn::IfThenElseZero(has_det, clamp(hn::Mul(Dot(n, Set3(slopes.slope_y)), inv_det)));
+  const BatchV bias =
+      hn::Add(hn::Set(d, slopes.texel_depth * kConstantBiasTexels),
+              hn::Mul(hn::Set(d, kSlopeBiasScale), hn::Add(hn::Abs(slope_x), hn::Abs(slope_y))));
+  const BatchV z = hn::Sub(m[2], bias);
+  const BatchV one = hn::Set(d, 1.0f);
+  live = hn::And(live, hn::Lt(z, one));  // beyond the far plane (or not finite): lit
+  const BatchV x0 = hn::Floor(m[0]), y0 = hn::Floor(m[1]);
+  const float size_f = static_cast<float>(map.size);
+  const BatchV size = hn::Set(d, size_f);
+  const BatchV low = hn::Set(d, 1.0f - size_f), high = hn::Set(d, 2.0f * size_f);
+  live = hn::And(live, hn::And(hn::And(hn::Ge(x0, low), hn::Lt(x0, high)),
+                               hn::And(hn::Ge(y0, low), hn::Lt(y0, high))));
+  if (hn::AllFalse(d, live)) return one;
+  const BatchV ax = hn::Sub(m[0], x0), ay = hn::Sub(m[1], y0);
+  const BatchV wx[4] = {hn::Sub(one, ax), one, one, ax};
+  const BatchV wy[4] = {hn::Sub(one, ay), one, one, ay};
+  const BatchV first =
+      hn::Sub(hn::Sub(z, hn::Mul(slope_x, hn::Add(one, ax))), hn::Mul(slope_y, hn::Add(one, ay)));
+  // The footprint's first texel (x0 - 1, y0 - 1), exact in floats (|x0| < 2^24); lanes not live
+  // read texel (0, 0)'s footprint instead.
+  const BatchV ix = hn::IfThenElseZero(live, hn::Sub(x0, one));
+  const BatchV iy = hn::IfThenElseZero(live, hn::Sub(y0, one));
+  const BatchV four = hn::Set(d, 4.0f);
+  const BatchMask inside =
+      hn::And(hn::And(hn::Ge(ix, hn::Zero(d)), hn::Ge(iy, hn::Zero(d))),
+              hn::And(hn::Le(hn::Add(ix, four), size), hn::Le(hn::Add(iy, four), size)));
+  // rows[j][lane]: where lane's texels (ix + i, iy + j), i = 0..3, lie: in the map itself, or
+  // copied to `clamped` where the footprint leaves the map (clamped into it; those compares are
+  // not made).
+  constexpr int kMaxLanes = 8;
+  alignas(64) std::int32_t first_x[kMaxLanes], first_y[kMaxLanes];
+  hn::Store(hn::ConvertTo(di, ix), di, first_x);
+  hn::Store(hn::ConvertTo(di, iy), di, first_y);
+  const float* rows[4][kMaxLanes];
+  float clamped[kMaxLanes][4][4];
+  const int lanes = static_cast<int>(hn::Lanes(d));
+  const std::ptrdiff_t stride = map.size;
+  for (int lane = 0; lane < lanes; ++lane) {
+    const int x = first_x[lane], y = first_y[lane];
+    if (x >= 0 && y >= 0 && x + 4 <= map.size && y + 4 <= map.size) {
+      const float* texel = map.depth + y * stride + x;
+      for (int j = 0; j < 4; ++j) rows[j][lane] = texel + j * stride;
+    } else {
+      for (int j = 0; j < 4; ++j) {
+        const std::ptrdiff_t row = std::clamp(y + j, 0, map.size - 1) * stride;
+        for (int i = 0; i < 4; ++i) {
+          clamped[lane][j][i] = map.depth[row + std::clamp(x + i, 0, map.size - 1)];
+        }
+        rows[j][lane] = clamped[lane][j];
+      }
+    }
+  }
+  const bool all_inside = hn::AllTrue(d, hn::Or(inside, hn::Not(live)));
+  BatchMask all_see = live, any_sees = hn::Not(live);
+  BatchV lit = hn::Zero(d);
+  for (int j = 0; j < 4; ++j) {
+    const BatchV y = hn::Add(iy, hn::Set(d, static_cast<float>(j)));
+    const BatchMask row_in = hn::And(hn::Ge(y, hn::Zero(d)), hn::Lt(y, size));
+    const BatchV row_start = hn::Add(first, hn::Mul(slope_y, hn::Set(d, static_cast<float>(j))));
+    BatchV depth[4];
+    FootprintRow(rows[j], depth);
+    BatchV row = hn::Zero(d);
+    for (int i = 0; i < 4; ++i) {
+      BatchMask sees =
+          hn::Le(hn::Add(row_start, hn::Mul(slope_x, hn::Set(d, static_cast<float>(i)))), depth[i]);
+      if (!all_inside) {
+        const BatchV x = hn::Add(ix, hn::Set(d, static_cast<float>(i)));
+        const BatchMask in_map =
+            hn::Or(inside, hn::And(row_in, hn::And(hn::Ge(x, hn::Zero(d)), hn::Lt(x, size))));
+        sees = hn::Or(sees, hn::Not(in_map));
+      }
+      row = hn::IfThenElse(sees, hn::Add(row, wx[i]), row);
+      all_see = hn::And(all_see, sees);
+      any_sees = hn::Or(any_sees, sees);
+    }
+    lit = hn::Add(lit, hn::Mul(row, wy[j]));
+  }
+  const BatchV partly = hn::IfThenElseZero(any_sees, hn::Mul(lit, hn::Set(d, 1.0f / 9.0f)));
+  return hn::IfThenElse(hn::Or(all_see, hn::Not(live)), one, partly);
+}
+
+// shadow_visibility(maps, p, n) in the lanes of `wanted`, 1 in the others: each lane's cascade
+// picked as shadow_visibility picks it, each cascade a lane picks looked up for its lanes. Out of
+// line (and of each file's own), so that the kernels' loops keep their registers for the draws
+// without shadows.
+static HWY_NOINLINE BatchV ShadowVisibility(const ShadowMaps& maps, const Vec3V& p, const Vec3V& n,
+                                            BatchMask wanted) {
+  const BatchTag d;
+  BatchV visibility = hn::Set(d, 1.0f);
+  if (hn::AllFalse(d, wanted)) return visibility;
+  if (maps.count == 1) {
+    return hn::IfThenElse(wanted, OrthographicShadow(maps.maps[0], p, n, wanted), visibility);
+  }
+  const Vec3V eye = Set3(maps.eye);
+  const BatchV depth =
+      Dot({hn::Sub(p.x, eye.x), hn::Sub(p.y, eye.y), hn::Sub(p.z, eye.z)}, Set3(maps.forward));
+  // The while loop's i: the number of leading cascades whose far depth the point is beyond.
+  BatchMask beyond = wanted;
+  BatchMask in_cascade[kMaxShadowCascades];
+  for (int i = 0; i < maps.count; ++i) {
+    if (i + 1 < maps.count) {
+      const BatchMask next = hn::And(beyond, hn::Gt(depth, hn::Set(d, maps.far_depth[i])));
+      in_cascade[i] = hn::AndNot(next, beyond);
+      beyond = next;
+    } else {
+      in_cascade[i] = beyond;
+    }
+  }
+  for (int i = 0; i < maps.count; ++i) {
+    if (hn::AllFalse(d, in_cascade[i])) continue;
+    visibility = hn::IfThenElse(in_cascade[i],
+                                OrthographicShadow(maps.maps[i], p, n, in_cascade[i]), visibility);
+  }
+  return visibility;
+}
+
+}  // namespace facet::shading::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#endif  // FACET_SHADING_SHADOW_BATCH_INL_H_

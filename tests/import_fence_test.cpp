@@ -102,6 +102,22 @@ TEST(ImportFence, EndlessLoopStopsAtTheTimeLimit) {
   EXPECT_LT(seconds, 10.0);  // the child would hang for ever: it was stopped
 }
 
+// A reader asleep for good (as one forked while another thread held its allocator's lock) is
+// started again, and after three such starts reported, long before the time limit.
+TEST(ImportFence, AReaderAsleepForGoodIsStartedAgainThenReported) {
+  REQUIRE_INSTALLED(kBox);
+  const ScopedFault fault("stall");
+  ImportOptions options = quiet();
+  options.import_time_limit_seconds = 60.0;
+  const auto start = Clock::now();
+  const std::string message = import_error(kBox, options);
+  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  expect_one_line_naming(message, kBox);
+  EXPECT_NE(message.find("assimp's fenced reader stalled 3 times"), std::string::npos) << message;
+  EXPECT_GE(seconds, 3 * 2.0);  // three starts, each still for 2 s
+  EXPECT_LT(seconds, 20.0);
+}
+
 TEST(ImportFence, HugeAllocationStopsAtTheMemoryLimit) {
   REQUIRE_INSTALLED(kBox);
   const ScopedFault fault("memory");

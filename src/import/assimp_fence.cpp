@@ -54,7 +54,7 @@ class Fd {
   int fd_;
 };
 
-enum class Fault { none, crash, abort, hang, memory };
+enum class Fault { none, crash, abort, hang, memory, stall };
 
 Fault test_fault() {
   const char* value = std::getenv("FACET_FENCE_TEST_FAULT");
@@ -63,6 +63,7 @@ Fault test_fault() {
          : fault == "abort"  ? Fault::abort
          : fault == "hang"   ? Fault::hang
          : fault == "memory" ? Fault::memory
+         : fault == "stall"  ? Fault::stall
                              : Fault::none;
 }
 
@@ -114,6 +115,8 @@ void make_fault(Fault fault, const Limits& limits) {
     }
     case Fault::hang:
       for (volatile std::uint64_t spin = 0;;) spin = spin + 1;
+    case Fault::stall:  // asleep for good, as on a lock no thread of the child will release
+      for (;;) ::pause();
     case Fault::memory: {
       const std::uint64_t size = std::max<std::uint64_t>(limits.budget, 1) * 2;
       auto* volatile block = new char[static_cast<std::size_t>(size)];
@@ -168,9 +171,38 @@ void make_fault(Fault fault, const Limits& limits) {
   ::_exit(0);
 }
 
-// Waits for the child to end, at most `seconds` (<= 0: for ever). True with its status when it
-// ended (status -1 when it could not be collected: SIGCHLD ignored); false on time out.
-bool wait_for(pid_t pid, double seconds, int& status) {
+// A child that sleeps and has used no more processor time for this long is stalled: a read
+// never sleeps (a disk wait is another state), but a child forked while another thread of the
+// parent held a lock its allocator needs (one without fork handlers, as AddressSanitizer's)
+// waits for it for ever.
+constexpr double kStallSeconds = 2.0;
+
+// The child's state letter and processor time in clock ticks (/proc/PID/stat), or false.
+bool child_progress(pid_t pid, char& state, unsigned long long& ticks) {
+  char path[64];
+  std::snprintf(path, sizeof path, "/proc/%d/stat", static_cast<int>(pid));
+  std::FILE* stat = std::fopen(path, "r");
+  if (!stat) return false;
+  char text[1024];
+  const std::size_t got = std::fread(text, 1, sizeof text - 1, stat);
+  std::fclose(stat);
+  text[got] = '\0';
+  // "pid (comm) state ppid ... utime stime": comm may hold spaces and parentheses.
+  const char* after = std::strrchr(text, ')');
+  unsigned long long user = 0, system = 0;
+  if (!after || std::sscanf(after + 1, " %c %*d %*d %*d %*d %*d %*u %*u %*u %*u %*u %llu %llu",
+                            &state, &user, &system) != 3) {
+    return false;
+  }
+  ticks = user + system;
+  return true;
+}
+
+enum class Outcome { ended, timed_out, stalled };
+
+// Waits for the child to end, at most `seconds` (<= 0: for ever), watching that it makes
+// progress. ended: with its status (-1 when it could not be collected: SIGCHLD ignored).
+Outcome wait_for(pid_t pid, double seconds, int& status) {
   using Clock = std::chrono::steady_clock;
   const bool limited = seconds > 0.0;
   const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
@@ -190,23 +222,40 @@ bool wait_for(pid_t pid, double seconds, int& status) {
       return true;
     }
   };
+  // Progress is looked at every slice; the child stalls once asleep with the same processor
+  // time for kStallSeconds.
+  constexpr int kSliceMs = 250;
+  unsigned long long last_ticks = ~0ull;
+  auto still_since = Clock::now();
+  auto stalled = [&] {
+    char state = 0;
+    unsigned long long ticks = 0;
+    if (!child_progress(pid, state, ticks) || state != 'S' || ticks != last_ticks) {
+      last_ticks = ticks;
+      still_since = Clock::now();
+      return false;
+    }
+    return std::chrono::duration<double>(Clock::now() - still_since).count() >= kStallSeconds;
+  };
 #ifdef SYS_pidfd_open
   const Fd pidfd(static_cast<int>(::syscall(SYS_pidfd_open, pid, 0)));
   if (pidfd.get() >= 0) {
     pollfd ready{pidfd.get(), POLLIN, 0};
     for (;;) {
-      const long long wait_ms = limited ? remaining_ms() : -1;
-      const int got = ::poll(&ready, 1, static_cast<int>(std::min<long long>(wait_ms, 1 << 30)));
-      if (got > 0) return collect(0);
-      if (got == 0 && limited) return false;
+      const long long wait_ms = limited ? std::min<long long>(remaining_ms(), kSliceMs) : kSliceMs;
+      const int got = ::poll(&ready, 1, static_cast<int>(wait_ms));
+      if (got > 0) return collect(0) ? Outcome::ended : Outcome::timed_out;
       if (got < 0 && errno != EINTR) break;  // fall back to polling waitpid
+      if (limited && remaining_ms() == 0) return Outcome::timed_out;
+      if (stalled()) return Outcome::stalled;
     }
   }
 #endif
   for (auto pause = std::chrono::milliseconds(1);;
        pause = std::min(pause * 2, decltype(pause)(20))) {
-    if (collect(WNOHANG)) return true;
-    if (limited && remaining_ms() == 0) return false;
+    if (collect(WNOHANG)) return Outcome::ended;
+    if (limited && remaining_ms() == 0) return Outcome::timed_out;
+    if (stalled()) return Outcome::stalled;
     std::this_thread::sleep_for(pause);
   }
 }
@@ -273,34 +322,48 @@ void run_fenced(const std::string& path, const ImportOptions& options,
   int log_fd = ::memfd_create("facet-assimp-log", MFD_CLOEXEC);
   if (log_fd < 0) log_fd = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
   const Fd log(log_fd);
-  // Non-blocking: a child another thread forks meanwhile may hold a copy of the write end.
-  int done_pipe[2];
-  if (::pipe2(done_pipe, O_CLOEXEC | O_NONBLOCK) != 0)
-    throw Error(path +
-                ": cannot import: cannot start assimp's fenced reader: " + std::strerror(errno));
-  const Fd done_read(done_pipe[0]);
-  Fd done_write(done_pipe[1]);
-  const pid_t parent = ::getpid();
-  const pid_t pid = ::fork();
-  if (pid < 0) {
-    throw Error(path +
-                ": cannot import: cannot start assimp's fenced reader: " + std::strerror(errno));
-  }
-  if (pid == 0) run_child(parent, limits, log.get(), done_write.get(), fault, probe);
-  done_write.reset();
-  int status = 0;
-  if (!wait_for(pid, limits.seconds, status)) {
-    ::kill(pid, SIGKILL);
-    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  // A stalled child (wait_for) is started again: the lock it waited on is another thread's
+  // for an instant.
+  constexpr int kStarts = 3;
+  for (int start = 1;; ++start) {
+    // Non-blocking: a child another thread forks meanwhile may hold a copy of the write end.
+    int done_pipe[2];
+    if (::pipe2(done_pipe, O_CLOEXEC | O_NONBLOCK) != 0)
+      throw Error(path +
+                  ": cannot import: cannot start assimp's fenced reader: " + std::strerror(errno));
+    const Fd done_read(done_pipe[0]);
+    Fd done_write(done_pipe[1]);
+    const pid_t parent = ::getpid();
+    const pid_t pid = ::fork();
+    if (pid < 0) {
+      throw Error(path +
+                  ": cannot import: cannot start assimp's fenced reader: " + std::strerror(errno));
     }
-    throw Error(path + ": cannot import: assimp took longer than " + seconds_text(limits.seconds) +
-                " s reading it and was stopped (the limit: --import-timeout, "
-                "ImportOptions::import_time_limit_seconds)");
+    if (pid == 0) run_child(parent, limits, log.get(), done_write.get(), fault, probe);
+    done_write.reset();
+    int status = 0;
+    const Outcome outcome = wait_for(pid, limits.seconds, status);
+    if (outcome != Outcome::ended) {
+      ::kill(pid, SIGKILL);
+      while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+      }
+    }
+    if (outcome == Outcome::stalled && start < kStarts) continue;
+    if (outcome == Outcome::stalled) {
+      throw Error(path + ": cannot import: assimp's fenced reader stalled " +
+                  std::to_string(kStarts) + " times (asleep, using no processor time)");
+    }
+    if (outcome == Outcome::timed_out) {
+      throw Error(path + ": cannot import: assimp took longer than " +
+                  seconds_text(limits.seconds) +
+                  " s reading it and was stopped (the limit: --import-timeout, "
+                  "ImportOptions::import_time_limit_seconds)");
+    }
+    char done = 0;
+    const bool finished = ::read(done_read.get(), &done, 1) == 1;
+    if (finished && (status == -1 || (WIFEXITED(status) && WEXITSTATUS(status) == 0))) return;
+    throw Error(path + ": cannot import: " + what_happened(status, limits, log.get()));
   }
-  char done = 0;
-  const bool finished = ::read(done_read.get(), &done, 1) == 1;
-  if (finished && (status == -1 || (WIFEXITED(status) && WEXITSTATUS(status) == 0))) return;
-  throw Error(path + ": cannot import: " + what_happened(status, limits, log.get()));
 }
 
 }  // namespace facet::io

@@ -11,18 +11,15 @@
 #include "scenes/bench_scenes.hpp"
 
 // Sanitizer runtimes replace operator new themselves (and check that what they allocate is
-// freed by their own delete); counting is a Release-build test, so it steps aside there.
+// freed by their own delete): sanitizer builds leave this file out (tests/CMakeLists.txt).
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-#define FACET_COUNTS_ALLOCATIONS 0
-#else
-#define FACET_COUNTS_ALLOCATIONS 1
+#error "allocation_test.cpp counts allocations: leave it out of sanitizer builds"
 #endif
 
 namespace {
 std::atomic<long> g_allocations{0};
 }
 
-#if FACET_COUNTS_ALLOCATIONS
 // The replaced operator new takes its memory from malloc, so its delete hands it to free: they
 // match. GCC 12 at -O1 inlines them into gtest's `new TestClass` and warns of a mismatch.
 #pragma GCC diagnostic ignored "-Wmismatched-new-delete"
@@ -33,7 +30,6 @@ void* operator new(std::size_t size) {
 }
 void operator delete(void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-#endif
 
 namespace facet::test {
 namespace {
@@ -49,7 +45,6 @@ long allocations_in_frames(bench::BenchScene& scene, Renderer& renderer, Framebu
 }
 
 TEST(Allocations, SteadyStateFramesAllocateNothing) {
-  if (!FACET_COUNTS_ALLOCATIONS) GTEST_SKIP() << "allocations are not counted in sanitizer builds";
   // The islands draw their scene's shared meshes (the renderer remembers them).
   for (const char* name : {"overdraw", "million", "islands"}) {
     auto scene = bench::make_bench_scene(name);
@@ -64,7 +59,6 @@ TEST(Allocations, SteadyStateFramesAllocateNothing) {
 
 // With shadows, the maps' targets and the passes' draw lists are kept from frame to frame too.
 TEST(Allocations, SteadyStateFramesWithShadowsAllocateNothing) {
-  if (!FACET_COUNTS_ALLOCATIONS) GTEST_SKIP() << "allocations are not counted in sanitizer builds";
   for (const char* name : {"shapes", "islands"}) {
     auto scene = bench::make_bench_scene(name);
     RenderSettings settings;
@@ -81,7 +75,6 @@ TEST(Allocations, SteadyStateFramesWithShadowsAllocateNothing) {
 
 // A render texture's frames, its mip chains and depth texture refreshed in place, likewise.
 TEST(Allocations, SteadyStateFramesIntoARenderTextureAllocateNothing) {
-  if (!FACET_COUNTS_ALLOCATIONS) GTEST_SKIP() << "allocations are not counted in sanitizer builds";
   auto scene = bench::make_bench_scene("shapes");
   RenderSettings settings;
   settings.threads = 2;
@@ -100,7 +93,6 @@ TEST(Allocations, SteadyStateFramesIntoARenderTextureAllocateNothing) {
 }
 
 TEST(Allocations, TheCounterSeesAllocations) {
-  if (!FACET_COUNTS_ALLOCATIONS) GTEST_SKIP() << "allocations are not counted in sanitizer builds";
   long before = g_allocations.load();
   void* p = ::operator new(16);  // a new-expression could be elided; this call cannot
   ::operator delete(p);

@@ -43,9 +43,9 @@ class RenderTexture {
   const Framebuffer& framebuffer() const { return framebuffer_; }
   // The color image, as a texture for materials (TextureMap) and environments; null for a
   // depth-only target.
-  const std::shared_ptr<const Texture>& texture() const { return color_; }
+  std::shared_ptr<const Texture> texture() const { return color_texture_; }
   // The depth image as a texture; null unless RenderTextureOptions::depth.
-  const std::shared_ptr<const Texture>& depth_texture() const { return depth_; }
+  std::shared_ptr<const Texture> depth_texture() const { return depth_texture_; }
   // Whether texture is one of this target's textures.
   bool owns(const Texture* texture) const;
 
@@ -56,9 +56,7 @@ class RenderTexture {
  private:
   RenderTextureOptions options_;
   Framebuffer framebuffer_;
-  std::shared_ptr<Texture> color_texture_, depth_texture_;
-  // The same textures, as materials hold them.
-  std::shared_ptr<const Texture> color_, depth_;
+  std::shared_ptr<Texture> color_texture_, depth_texture_;  // rewritten by update()
 };
 
 }  // namespace facet

@@ -20,18 +20,16 @@ RenderTexture::RenderTexture(int width, int height, const RenderTextureOptions& 
     color_texture_ = Texture::render_target(
         width, height, srgb ? Texture::Format::rgba8 : Texture::Format::rgba32f, srgb,
         options.mipmaps, "render texture");
-    color_ = color_texture_;
   }
   if (options.depth) {
     depth_texture_ = Texture::render_target(width, height, Texture::Format::rgba32f, false,
                                             options.mipmaps, "render texture depth");
-    depth_ = depth_texture_;
   }
   update();
 }
 
 bool RenderTexture::owns(const Texture* texture) const {
-  return texture != nullptr && (texture == color_.get() || texture == depth_.get());
+  return texture != nullptr && (texture == color_texture_.get() || texture == depth_texture_.get());
 }
 
 void RenderTexture::update() {

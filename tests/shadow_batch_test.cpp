@@ -3,7 +3,7 @@
 // lookup (shadow_batch-inl.h), give fragment()'s and vertex()'s bits on every SIMD target, for
 // random points and normals against random depth maps of a sun with one or three cascades:
 // points inside a map, partly over its edges, outside it and beyond its far plane; and the batch
-// forms decline what they leave to the scalar models (a spot light's perspective map).
+// forms decline what they leave to the scalar models.
 #include <gtest/gtest.h>
 #include <hwy/targets.h>
 
@@ -313,9 +313,9 @@ TEST(ShadowBatch, GouraudVerticesGiveVertexsBitsOnEveryTarget) {
   expect_vertexs_bits<shading::ConstantColorGouraudShading>();
 }
 
-// A spot light's map is perspective: its draws keep the scalar models; so do the Lambert draws
-// without positions (the frame had no shadows when they were recorded).
-TEST(ShadowBatch, DeclinesPerspectiveMapsAndUnpositionedLambert) {
+// The Lambert draws without positions keep the scalar model (the frame had no shadows when they
+// were recorded); a spot light's perspective map keeps the Gouraud models' scalar vertex().
+TEST(ShadowBatch, DeclinesPerspectiveMapsAtVerticesAndUnpositionedLambert) {
   std::mt19937 rng(5);
   Sun sun;
   make_sun(rng, 1, 16, sun);
@@ -327,11 +327,9 @@ TEST(ShadowBatch, DeclinesPerspectiveMapsAndUnpositionedLambert) {
   EXPECT_TRUE(shading::GouraudShading::batch_vertices(draw.uniforms));
   EXPECT_FALSE(shading::UnpositionedLambertShading::batch_shades(draw.uniforms));
   sun.maps.maps[0].perspective = true;
-  EXPECT_FALSE(shading::LambertShading::batch_shades(draw.uniforms));
-  EXPECT_FALSE(shading::BlinnPhongShading::batch_shades(draw.uniforms));
+  EXPECT_TRUE(shading::LambertShading::batch_shades(draw.uniforms));
   EXPECT_FALSE(shading::GouraudShading::batch_vertices(draw.uniforms));
   draw.lights[0].shadow = nullptr;  // unshadowed, as before
-  EXPECT_TRUE(shading::LambertShading::batch_shades(draw.uniforms));
   EXPECT_TRUE(shading::UnpositionedLambertShading::batch_shades(draw.uniforms));
 }
 

@@ -18,6 +18,7 @@
 #include "core/portable_math.hpp"
 #include "shading/batch_math-inl.h"
 #include "shading/lighting.hpp"
+#include "shading/light_batch-inl.h"
 #include "shading/shadow_batch-inl.h"
 #include "shading/surface.hpp"
 
@@ -48,28 +49,22 @@ HWY_INLINE Albedo LoadAlbedo(const ShadeInput& in, int j, const Albedo* constant
   return a;
 }
 
-// diffuse_light() of models.hpp for directional lights: ambient + sum of radiance x max(0, N.L),
-// the radiance after the light's shadow at `position` where N.L > 0 (active: the batch's lanes).
+// diffuse_light() of models.hpp: ambient + sum of radiance x max(0, N.L), the radiance after the
+// light's shadow at `position` where N.L > 0 (active: the batch's lanes).
 HWY_INLINE Vec3V DiffuseLight(const DrawUniforms& u, const Vec3V& normal, const Vec3V& position,
                               BatchMask active) {
   const FloatTag d;
-  Vec3V light{hn::Set(d, u.frame->ambient.x), hn::Set(d, u.frame->ambient.y),
-              hn::Set(d, u.frame->ambient.z)};
+  Vec3V light = Set3(u.frame->ambient);
   for (int i = 0; i < u.frame->light_count; ++i) {
     const LightData& l = u.frame->lights[i];
-    const Vec3V to_light{hn::Set(d, l.to_light.x), hn::Set(d, l.to_light.y),
-                         hn::Set(d, l.to_light.z)};
-    const FloatV n_dot_l = Dot(normal, to_light);
+    IncidentV in = Incident(l, position);
+    const FloatV n_dot_l = Dot(normal, in.direction);
     const auto facing_mask = hn::Lt(hn::Zero(d), n_dot_l);
     const FloatV facing = hn::IfThenElse(facing_mask, n_dot_l, hn::Zero(d));
-    Vec3V radiance = Set3(l.radiance);
-    if (l.shadow) {  // radiance x 1 elsewhere: the same bits
-      radiance = Scale(radiance,
-                       ShadowVisibility(*l.shadow, position, normal, hn::And(facing_mask, active)));
-    }
-    light.x = hn::Add(light.x, hn::Mul(radiance.x, facing));
-    light.y = hn::Add(light.y, hn::Mul(radiance.y, facing));
-    light.z = hn::Add(light.z, hn::Mul(radiance.z, facing));
+    in.radiance = ReceivedRadiance(l, in, position, normal, hn::And(facing_mask, active));
+    light.x = hn::Add(light.x, hn::Mul(in.radiance.x, facing));
+    light.y = hn::Add(light.y, hn::Mul(in.radiance.y, facing));
+    light.z = hn::Add(light.z, hn::Mul(in.radiance.z, facing));
   }
   return light;
 }
@@ -98,11 +93,12 @@ HWY_INLINE void Fogged(const Fog& fog, const ViewDepth& depth, const ShadeInput&
   }
 }
 
-// PhongShadingT::fragment()'s light loop for directional lights: albedo x ambient, plus for
-// each light facing the surface radiance x (albedo N.L + specular x highlight), the radiance
-// after the light's shadow at `position` (active: the batch's lanes).
+// PhongShadingT::fragment()'s light loop: albedo x ambient, plus for each light facing the
+// surface radiance x (albedo N.L + specular x highlight), the radiance after the light's shadow
+// at `position` (active: the batch's lanes).
 HWY_INLINE Vec3V SpecularLight(const DrawUniforms& u, bool blinn, const Vec3V& n, const Vec3V& view,
-                               const Vec3V& position, const Albedo& albedo, BatchMask active) {
+                               const Vec3V& position, const Albedo& albedo, const Vec3V& specular,
+                               BatchMask active) {
   const FloatTag d;
   const Material& m = *u.material;
   Vec3V color{hn::Mul(albedo.c[0], hn::Set(d, u.frame->ambient.x)),
@@ -110,7 +106,8 @@ HWY_INLINE Vec3V SpecularLight(const DrawUniforms& u, bool blinn, const Vec3V& n
               hn::Mul(albedo.c[2], hn::Set(d, u.frame->ambient.z))};
   for (int i = 0; i < u.frame->light_count; ++i) {
     const LightData& l = u.frame->lights[i];
-    const Vec3V to_light = Set3(l.to_light);
+    IncidentV in = Incident(l, position);
+    const Vec3V& to_light = in.direction;
     const FloatV n_dot_l = Dot(n, to_light);
     FloatV along;  // blinn_phong_specular / phong_specular, before the power
     if (blinn) {
@@ -123,16 +120,13 @@ HWY_INLINE Vec3V SpecularLight(const DrawUniforms& u, bool blinn, const Vec3V& n
                                  ? hn::Set(d, 1.0f)
                                  : PortablePow(StdMax(along, hn::Zero(d)), m.shininess);
     const auto lit = hn::Not(hn::Le(n_dot_l, hn::Zero(d)));  // the scalar loop's continue
-    Vec3V radiance = Set3(l.radiance);
-    if (l.shadow) {  // radiance x 1 elsewhere: the same bits
-      radiance = Scale(radiance, ShadowVisibility(*l.shadow, position, n, hn::And(lit, active)));
-    }
+    in.radiance = ReceivedRadiance(l, in, position, n, hn::And(lit, active));
     const FloatV* a = albedo.c;
-    const FloatV r[3] = {radiance.x, radiance.y, radiance.z};
+    const FloatV r[3] = {in.radiance.x, in.radiance.y, in.radiance.z};
+    const FloatV s[3] = {specular.x, specular.y, specular.z};
     FloatV* out[3] = {&color.x, &color.y, &color.z};
     for (int c = 0; c < 3; ++c) {
-      const FloatV term =
-          hn::Add(hn::Mul(a[c], n_dot_l), hn::Mul(hn::Set(d, m.specular_color[c]), highlight));
+      const FloatV term = hn::Add(hn::Mul(a[c], n_dot_l), hn::Mul(s[c], highlight));
       *out[c] = hn::IfThenElse(lit, hn::Add(*out[c], hn::Mul(r[c], term)), *out[c]);
     }
   }
@@ -215,9 +209,11 @@ void ShadeBatch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, f
   const FloatV emissive[3] = {hn::Set(d, m.emissive.x), hn::Set(d, m.emissive.y),
                               hn::Set(d, m.emissive.z)};
   // Lambert needs no view, nor its square root and division; nor its position, unless a
-  // shadow is looked up there.
+  // light's direction or shadow depends on it.
   const bool needs_view = model != BatchModel::lambert;
-  const bool needs_position = needs_view || any_shadowed_light(u);
+  const bool needs_position =
+      needs_view || any_shadowed_light(u) || !only_directional_lights(u);
+  const Vec3V specular = Set3(m.specular_color);
   const Vec3V eye{hn::Set(d, u.frame->eye.x), hn::Set(d, u.frame->eye.y),
                   hn::Set(d, u.frame->eye.z)};
   const Albedo base{{hn::Set(d, u.material->base_color.r), hn::Set(d, u.material->base_color.g),
@@ -254,7 +250,7 @@ void ShadeBatch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, f
       const Vec3V light = model == BatchModel::lambert
                               ? DiffuseLight(u, n, position, active)
                               : SpecularLight(u, model == BatchModel::blinn_phong, n, view,
-                                              position, albedo, active);
+                                              position, albedo, specular, active);
       if (model == BatchModel::lambert) {
         color[0] = hn::Mul(albedo.c[0], light.x);  // diffuse_light(): albedo x light
         color[1] = hn::Mul(albedo.c[1], light.y);
@@ -286,11 +282,7 @@ bool batch_shades(BatchModel model, const DrawUniforms& u) {
     if (m.normal_map || m.specular_map) return false;
     if (m.reflectivity > 0.0f && u.frame->lighting->environment.reflections) return false;
   }
-  // Unlit models use no light, and the Gouraud models' lights were applied at the vertices.
-  // Directional lights have orthographic shadow maps (pipeline/shadow/shadow_fit.hpp).
-  const bool lit_per_pixel = model == BatchModel::lambert || model == BatchModel::phong ||
-                             model == BatchModel::blinn_phong;
-  return !lit_per_pixel || (only_directional_lights(u) && only_orthographic_shadows(u));
+  return true;
 }
 
 ShadeBatchKernel shade_batch_kernel(SimdTarget target) {

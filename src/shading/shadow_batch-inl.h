@@ -165,6 +165,31 @@ HWY_INLINE BatchV OrthographicShadow(const ShadowMap& map, const Vec3V& p, const
   return hn::IfThenElse(hn::Or(all_see, hn::Not(live)), one, partly);
 }
 
+// shadow_visibility(map, p, n) for a perspective map (a spot light's), a lane at a time.
+HWY_INLINE BatchV PerspectiveShadow(const ShadowMap& map, const Vec3V& p, const Vec3V& n,
+                                    BatchMask live) {
+  const BatchTag d;
+  constexpr int kMaxLanes = 8;
+  alignas(64) float px[kMaxLanes], py[kMaxLanes], pz[kMaxLanes];
+  alignas(64) float nx[kMaxLanes], ny[kMaxLanes], nz[kMaxLanes], out[kMaxLanes];
+  alignas(64) std::int32_t wanted[kMaxLanes];
+  hn::Store(p.x, d, px), hn::Store(p.y, d, py), hn::Store(p.z, d, pz);
+  hn::Store(n.x, d, nx), hn::Store(n.y, d, ny), hn::Store(n.z, d, nz);
+  const hn::RebindToSigned<BatchTag> di;
+  hn::Store(hn::VecFromMask(di, hn::RebindMask(di, live)), di, wanted);
+  const int lanes = static_cast<int>(hn::Lanes(d));
+  for (int lane = 0; lane < lanes; ++lane) {
+    out[lane] = wanted[lane] ? shadow_visibility(map, {px[lane], py[lane], pz[lane]},
+                                                 {nx[lane], ny[lane], nz[lane]})
+                             : 1.0f;
+  }
+  return hn::Load(d, out);
+}
+
+HWY_INLINE BatchV MapShadow(const ShadowMap& map, const Vec3V& p, const Vec3V& n, BatchMask live) {
+  return map.perspective ? PerspectiveShadow(map, p, n, live) : OrthographicShadow(map, p, n, live);
+}
+
 // shadow_visibility(maps, p, n) in the lanes of `wanted`, 1 in the others: each lane's cascade
 // picked as shadow_visibility picks it, each cascade a lane picks looked up for its lanes. Out of
 // line (and of each file's own), so that the kernels' loops keep their registers for the draws
@@ -175,7 +200,7 @@ static HWY_NOINLINE BatchV ShadowVisibility(const ShadowMaps& maps, const Vec3V&
   BatchV visibility = hn::Set(d, 1.0f);
   if (hn::AllFalse(d, wanted)) return visibility;
   if (maps.count == 1) {
-    return hn::IfThenElse(wanted, OrthographicShadow(maps.maps[0], p, n, wanted), visibility);
+    return hn::IfThenElse(wanted, MapShadow(maps.maps[0], p, n, wanted), visibility);
   }
   const Vec3V eye = Set3(maps.eye);
   const BatchV depth =
@@ -195,7 +220,7 @@ static HWY_NOINLINE BatchV ShadowVisibility(const ShadowMaps& maps, const Vec3V&
   for (int i = 0; i < maps.count; ++i) {
     if (hn::AllFalse(d, in_cascade[i])) continue;
     visibility = hn::IfThenElse(in_cascade[i],
-                                OrthographicShadow(maps.maps[i], p, n, in_cascade[i]), visibility);
+                                MapShadow(maps.maps[i], p, n, in_cascade[i]), visibility);
   }
   return visibility;
 }

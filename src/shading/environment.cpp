@@ -40,4 +40,10 @@ glm::vec3 environment_radiance(const Environment& env, glm::vec3 d, float lod) {
   return glm::vec3(env.image->sample(sampler, uv, lod)) * env.intensity;
 }
 
+glm::vec3 mix_reflection(const Environment& environment, float reflectivity, glm::vec3 color,
+                         glm::vec3 view, glm::vec3 normal) {
+  const glm::vec3 mirror = glm::reflect(-view, normal);
+  return glm::mix(color, environment_radiance(environment, mirror), reflectivity);
+}
+
 }  // namespace facet::shading

@@ -19,4 +19,9 @@ glm::vec2 sphere_map_uv(glm::vec3 direction);
 glm::vec3 environment_radiance(const Environment& environment, glm::vec3 direction,
                                float lod = 0.0f);
 
+// A surface of the given reflectivity (0..1) mirroring the environment: its color mixed with the
+// radiance from the mirror direction of `view` (unit, toward the eye) about unit `normal`.
+glm::vec3 mix_reflection(const Environment& environment, float reflectivity, glm::vec3 color,
+                         glm::vec3 view, glm::vec3 normal);
+
 }  // namespace facet::shading

@@ -74,4 +74,26 @@ SpecularIntegral specular_integral(float n_dot_v, float roughness) {
   return {-1.04f * a004 + r.z, 1.04f * a004 + r.w};
 }
 
+glm::vec3 environment_light(const IrradianceHarmonics& light, const Environment& environment,
+                            const PbrSurface& surface, glm::vec3 f0, glm::vec3 n, glm::vec3 v) {
+  const glm::vec3 diffuse =
+      surface.albedo * (1.0f - surface.metallic) * irradiance(light, n) * (1.0f / kPi);
+  const glm::vec3 mirror = glm::reflect(-v, n);
+  const float spread = surface.roughness * surface.roughness;
+  const glm::vec3 seen =
+      glm::mix(environment_radiance(environment, mirror, surface.roughness * 8.0f),
+               irradiance(light, mirror) * (1.0f / kPi), spread);
+  const SpecularIntegral brdf = specular_integral(glm::dot(n, v), surface.roughness);
+  return diffuse + seen * (f0 * brdf.scale + brdf.bias);
+}
+
+glm::vec3 environment_reflection(const Environment& environment, const PbrSurface& surface,
+                                 glm::vec3 f0, glm::vec3 n, glm::vec3 v) {
+  const glm::vec3 mirror = glm::reflect(-v, n);
+  const glm::vec3 fresnel = fresnel_schlick(f0, glm::dot(n, v));
+  const float blur = surface.roughness * 8.0f;
+  return environment_radiance(environment, mirror, blur) * fresnel *
+         (1.0f - surface.roughness * 0.7f);
+}
+
 }  // namespace facet::shading

@@ -12,6 +12,7 @@
 #include <glm/vec3.hpp>
 
 #include "facet/light.hpp"
+#include "shading/brdf.hpp"
 
 namespace facet::shading {
 
@@ -31,5 +32,18 @@ struct SpecularIntegral {
   float scale, bias;
 };
 SpecularIntegral specular_integral(float n_dot_v, float roughness);
+
+// The light a physically based surface (PbrSurface, brdf.hpp; f0 its reflectance at normal
+// incidence) takes from the environment at unit normal n seen from unit direction v: the
+// irradiance through the diffuse albedo, and the split sum's specular from the mirror
+// direction's radiance blurred by roughness, moving toward the irradiance around that direction
+// (a cosine lobe, the widest GGX lobe's shape) as the surface roughens.
+glm::vec3 environment_light(const IrradianceHarmonics& light, const Environment& environment,
+                            const PbrSurface& surface, glm::vec3 f0, glm::vec3 n, glm::vec3 v);
+
+// Without image-based lighting, what reflections add to a physically based surface's ambient
+// light: the mirror direction's radiance, blurred by roughness (a mip level), through Fresnel.
+glm::vec3 environment_reflection(const Environment& environment, const PbrSurface& surface,
+                                 glm::vec3 f0, glm::vec3 n, glm::vec3 v);
 
 }  // namespace facet::shading

@@ -53,9 +53,9 @@ HWY_INLINE IncidentV Incident(const LightData& light, const Vec3V& p) {
   if (light.type == LightType::spot) {
     const BatchV cos_angle = Dot(Negate(direction), Set3(light.spot_direction));
     const float cone = std::max(light.cos_inner - light.cos_outer, 1e-4f);
-    const BatchV t = StdClamp(
-        hn::Div(hn::Sub(cos_angle, hn::Set(d, light.cos_outer)), hn::Set(d, cone)), hn::Zero(d),
-        one);
+    const BatchV t =
+        StdClamp(hn::Div(hn::Sub(cos_angle, hn::Set(d, light.cos_outer)), hn::Set(d, cone)),
+                 hn::Zero(d), one);
     attenuation = hn::Mul(attenuation, hn::Mul(t, t));
   }
   return {direction, Scale(Set3(light.radiance), attenuation)};

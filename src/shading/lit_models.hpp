@@ -24,8 +24,7 @@ inline glm::vec3 reflect_environment(glm::vec3 color, const SurfacePoint& s,
                                      const DrawUniforms& u) {
   float r = u.material->reflectivity;
   if (r <= 0.0f || !u.frame->lighting->environment.reflections) return color;
-  glm::vec3 mirror = glm::reflect(-s.view, s.normal);
-  return glm::mix(color, environment_radiance(u.frame->lighting->environment, mirror), r);
+  return mix_reflection(u.frame->lighting->environment, r, color, s.view, s.normal);
 }
 
 // Phong (kBlinn = false) or Blinn-Phong (true), per pixel: ambient + diffuse + specular.
@@ -140,31 +139,12 @@ struct ConstantColorGouraudShading : GouraudLight<kConstantGouraudDiffuseSlot, f
   }
 };
 
-// The light a PBR surface takes from the environment (environment_light.hpp): the irradiance
-// through the diffuse albedo, and the split sum's specular from the mirror direction's radiance
-// blurred by roughness, moving toward the irradiance around that direction (a cosine lobe, the
-// widest GGX lobe's shape) as the surface roughens.
-inline glm::vec3 environment_light(const PbrSurface& surface, glm::vec3 f0, const SurfacePoint& s,
-                                   const DrawUniforms& u) {
-  const IrradianceHarmonics& light = *u.frame->environment_light;
-  const Environment& environment = u.frame->lighting->environment;
-  const glm::vec3 diffuse =
-      surface.albedo * (1.0f - surface.metallic) * irradiance(light, s.normal) * (1.0f / kPi);
-  const glm::vec3 mirror = glm::reflect(-s.view, s.normal);
-  const float spread = surface.roughness * surface.roughness;
-  const glm::vec3 seen =
-      glm::mix(environment_radiance(environment, mirror, surface.roughness * 8.0f),
-               irradiance(light, mirror) * (1.0f / kPi), spread);
-  const SpecularIntegral brdf = specular_integral(glm::dot(s.normal, s.view), surface.roughness);
-  return diffuse + seen * (f0 * brdf.scale + brdf.bias);
-}
-
 // Physically based: Cook-Torrance (GGX, Smith, Schlick), metallic-roughness, occlusion,
 // emission, and the environment's light (image-based lighting) or, when reflections are on,
 // its mirror image.
 // Lights are scaled by pi so a white Lambertian surface under a unit light looks as bright as
 // in the Lambert model (the "punctual light" convention of glTF viewers).
-struct PbrShading : LightsBackFaces {
+struct PbrShading : BatchForm<BatchModel::pbr>, LightsBackFaces {
   static constexpr int kVaryings = kSurfaceVaryingsWithTangent;
   static constexpr int kNormalSlot = shading::kNormalSlot;
   static constexpr int kBaseColorTexcoord = kTexcoordSlot;
@@ -197,15 +177,12 @@ struct PbrShading : LightsBackFaces {
     glm::vec3 f0 = glm::mix(glm::vec3(0.04f), surface.albedo, surface.metallic);
     glm::vec3 diffuse_albedo = surface.albedo * (1.0f - surface.metallic);
     glm::vec3 ambient = u.frame->ambient * (diffuse_albedo + f0 * 0.5f);
+    const Environment& environment = u.frame->lighting->environment;
     if (u.frame->environment_light) {
-      ambient = environment_light(surface, f0, s, u);
-    } else if (u.frame->lighting->environment.reflections) {
-      // Split-sum-free approximation: the mirror direction, blurred by roughness (mip level).
-      glm::vec3 mirror = glm::reflect(-s.view, s.normal);
-      glm::vec3 fresnel = fresnel_schlick(f0, glm::dot(s.normal, s.view));
-      float blur = surface.roughness * 8.0f;
-      ambient += environment_radiance(u.frame->lighting->environment, mirror, blur) * fresnel *
-                 (1.0f - surface.roughness * 0.7f);
+      ambient = environment_light(*u.frame->environment_light, environment, surface, f0, s.normal,
+                                  s.view);
+    } else if (environment.reflections) {
+      ambient += environment_reflection(environment, surface, f0, s.normal, s.view);
     }
     color += ambient * occlusion;
     return {color + emission(f, u), s.albedo.a};

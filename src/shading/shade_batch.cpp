@@ -17,8 +17,11 @@
 
 #include "core/portable_math.hpp"
 #include "shading/batch_math-inl.h"
-#include "shading/lighting.hpp"
+#include "shading/brdf.hpp"
+#include "shading/environment.hpp"
+#include "shading/environment_light.hpp"
 #include "shading/light_batch-inl.h"
+#include "shading/lighting.hpp"
 #include "shading/shadow_batch-inl.h"
 #include "shading/surface.hpp"
 
@@ -48,6 +51,78 @@ HWY_INLINE Albedo LoadAlbedo(const ShadeInput& in, int j, const Albedo* constant
   }
   return a;
 }
+
+// A map's texels for pixels j.. (ShadeInput::map_texel), a vector per channel.
+HWY_INLINE void LoadTexel(const float (*texel)[4], int j, FloatV t[4]) {
+  hn::LoadInterleaved4(FloatTag(), &texel[j][0], t[0], t[1], t[2], t[3]);
+}
+
+// emission(): the emissive factor, times the emissive map's texel where it is read (the raster
+// loop samples it only for a non-zero factor).
+HWY_INLINE Vec3V Emission(const Material& m, const ShadeInput& in, int j) {
+  Vec3V e = Set3(m.emissive);
+  if (in.map_texel[kEmissiveMap] != nullptr) {
+    FloatV t[4];
+    LoadTexel(in.map_texel[kEmissiveMap], j, t);
+    e = {hn::Mul(e.x, t[0]), hn::Mul(e.y, t[1]), hn::Mul(e.z, t[2])};
+  }
+  return e;
+}
+
+// glm::cross(a, b).
+HWY_INLINE Vec3V Cross(const Vec3V& a, const Vec3V& b) {
+  return {hn::Sub(hn::Mul(a.y, b.z), hn::Mul(b.y, a.z)),
+          hn::Sub(hn::Mul(a.z, b.x), hn::Mul(b.z, a.x)),
+          hn::Sub(hn::Mul(a.x, b.y), hn::Mul(b.x, a.y))};
+}
+
+// surface_point()'s normal mapping of unit normal n: the map's tangent-space normal through the
+// tangent frame (the interpolated tangent made orthogonal to n), where the pixel has a tangent
+// and the mapped normal is not zero.
+HWY_INLINE Vec3V MappedNormal(const Material& m, const ShadeInput& in, int j, const Vec3V& n) {
+  const FloatTag d;
+  const Vec3V tangent = Load3(in.v, kTangentSlot, j);
+  const FloatV handedness = hn::Load(d, in.v[kTangentSlot + 3] + j);
+  const auto has_tangent = hn::Gt(Dot(tangent, tangent), hn::Zero(d));
+  const FloatV along = Dot(n, tangent);
+  const Vec3V t = SafeNormalize({hn::Sub(tangent.x, hn::Mul(n.x, along)),
+                                 hn::Sub(tangent.y, hn::Mul(n.y, along)),
+                                 hn::Sub(tangent.z, hn::Mul(n.z, along))});
+  const FloatV one = hn::Set(d, 1.0f), two = hn::Set(d, 2.0f);
+  const Vec3V b =
+      Scale(Cross(n, t), hn::IfThenElse(hn::Lt(handedness, hn::Zero(d)), hn::Neg(one), one));
+  FloatV texel[4];
+  LoadTexel(in.map_texel[kNormalMap], j, texel);
+  const FloatV scale = hn::Set(d, m.normal_scale);
+  const FloatV tx = hn::Mul(hn::Sub(hn::Mul(texel[0], two), one), scale);
+  const FloatV ty = hn::Mul(hn::Sub(hn::Mul(texel[1], two), one), scale);
+  const FloatV tz = hn::Sub(hn::Mul(texel[2], two), one);
+  const Vec3V mapped =
+      SafeNormalize({hn::Add(hn::Add(hn::Mul(t.x, tx), hn::Mul(b.x, ty)), hn::Mul(n.x, tz)),
+                     hn::Add(hn::Add(hn::Mul(t.y, tx), hn::Mul(b.y, ty)), hn::Mul(n.y, tz)),
+                     hn::Add(hn::Add(hn::Mul(t.z, tx), hn::Mul(b.z, ty)), hn::Mul(n.z, tz))});
+  const auto nonzero = hn::Or(hn::Or(hn::Ne(mapped.x, hn::Zero(d)), hn::Ne(mapped.y, hn::Zero(d))),
+                              hn::Ne(mapped.z, hn::Zero(d)));
+  const auto use = hn::And(has_tangent, nonzero);
+  return {hn::IfThenElse(use, mapped.x, n.x), hn::IfThenElse(use, mapped.y, n.y),
+          hn::IfThenElse(use, mapped.z, n.z)};
+}
+
+// The lanes of a Vec3V as glm vectors, for the steps done a lane at a time (environment
+// lookups: a texture read per lane).
+struct Lanes3 {
+  alignas(64) float x[8], y[8], z[8];
+  explicit Lanes3(const Vec3V& v) {
+    const FloatTag d;
+    hn::Store(v.x, d, x), hn::Store(v.y, d, y), hn::Store(v.z, d, z);
+  }
+  glm::vec3 operator[](int lane) const { return {x[lane], y[lane], z[lane]}; }
+  void set(int lane, glm::vec3 v) { x[lane] = v.x, y[lane] = v.y, z[lane] = v.z; }
+  Vec3V load() const {
+    const FloatTag d;
+    return {hn::Load(d, x), hn::Load(d, y), hn::Load(d, z)};
+  }
+};
 
 // diffuse_light() of models.hpp: ambient + sum of radiance x max(0, N.L), the radiance after the
 // light's shadow at `position` where N.L > 0 (active: the batch's lanes).
@@ -133,6 +208,132 @@ HWY_INLINE Vec3V SpecularLight(const DrawUniforms& u, bool blinn, const Vec3V& n
   return color;
 }
 
+// cook_torrance() of brdf.hpp for unit n, v and l: the diffuse and specular parts of the BRDF,
+// zero where n.l or n.v is not positive.
+HWY_INLINE Vec3V CookTorrance(const Vec3V& albedo, FloatV metallic, FloatV roughness,
+                              const Vec3V& f0, const Vec3V& n, const Vec3V& v, const Vec3V& l) {
+  const FloatTag d;
+  const FloatV zero = hn::Zero(d), one = hn::Set(d, 1.0f);
+  const FloatV n_dot_l = Dot(n, l), n_dot_v = Dot(n, v);
+  const auto above = hn::Not(hn::Or(hn::Le(n_dot_l, zero), hn::Le(n_dot_v, zero)));
+  const Vec3V h = Normalize({hn::Add(v.x, l.x), hn::Add(v.y, l.y), hn::Add(v.z, l.z)});
+  const FloatV n_dot_h = StdMax(Dot(n, h), zero);
+  const FloatV r = StdClamp(roughness, hn::Set(d, 0.04f), one);
+  // fresnel_schlick(f0, x) per channel: f0 + (1 - f0) k^5, k = 1 - clamp(x, 0, 1).
+  const auto fresnel_k5 = [&](FloatV x) {
+    const FloatV k = hn::Sub(one, StdClamp(x, zero, one));
+    return hn::Mul(hn::Mul(hn::Mul(k, k), hn::Mul(k, k)), k);
+  };
+  const auto fresnel = [&](const FloatV k5, int c) {
+    const FloatV f0c = c == 0 ? f0.x : c == 1 ? f0.y : f0.z;
+    return hn::Add(f0c, hn::Mul(hn::Sub(one, f0c), k5));
+  };
+  // distribution_ggx: a2 / (pi d d), d = n.h^2 (a2 - 1) + 1, a = r^2.
+  const FloatV a = hn::Mul(r, r);
+  const FloatV a2 = hn::Mul(a, a);
+  const FloatV dd = hn::Add(hn::Mul(hn::Mul(n_dot_h, n_dot_h), hn::Sub(a2, one)), one);
+  const FloatV distribution = hn::Div(a2, hn::Mul(hn::Mul(hn::Set(d, kPi), dd), dd));
+  // geometry_smith: g1(n.v) g1(n.l), g1(x) = x / (x (1 - k) + k), k = (r + 1)^2 / 8.
+  const FloatV r1 = hn::Add(r, one);
+  const FloatV k = hn::Div(hn::Mul(r1, r1), hn::Set(d, 8.0f));
+  const FloatV one_minus_k = hn::Sub(one, k);
+  const auto g1 = [&](FloatV x) { return hn::Div(x, hn::Add(hn::Mul(x, one_minus_k), k)); };
+  const FloatV geometry = hn::Mul(g1(n_dot_v), g1(n_dot_l));
+  const FloatV specular_scale = hn::Div(hn::Mul(distribution, geometry),
+                                        hn::Mul(hn::Mul(hn::Set(d, 4.0f), n_dot_v), n_dot_l));
+  const FloatV k5_h = fresnel_k5(Dot(v, h)), k5_l = fresnel_k5(n_dot_l), k5_v = fresnel_k5(n_dot_v);
+  const FloatV diffuse_share = hn::Sub(one, metallic);
+  const FloatV albedo_c[3] = {albedo.x, albedo.y, albedo.z};
+  FloatV out[3];
+  for (int c = 0; c < 3; ++c) {
+    const FloatV specular = hn::Mul(fresnel(k5_h, c), specular_scale);
+    const FloatV enter = hn::Sub(one, fresnel(k5_l, c));
+    const FloatV leave = hn::Sub(one, fresnel(k5_v, c));
+    const FloatV diffuse = hn::Div(
+        hn::Mul(hn::Mul(hn::Mul(enter, leave), diffuse_share), albedo_c[c]), hn::Set(d, kPi));
+    out[c] = hn::IfThenElseZero(above, hn::Add(diffuse, specular));
+  }
+  return {out[0], out[1], out[2]};
+}
+
+// PbrShading::fragment() for pixels j..: the lights through Cook-Torrance, the ambient or
+// environment light through the occlusion; emission is the caller's.
+HWY_INLINE Vec3V PbrLight(const DrawUniforms& u, const ShadeInput& in, int j, const Vec3V& n,
+                          const Vec3V& view, const Vec3V& position, const Albedo& albedo_rgba,
+                          BatchMask active) {
+  const FloatTag d;
+  const Material& m = *u.material;
+  const FloatV one = hn::Set(d, 1.0f);
+  const Vec3V albedo{albedo_rgba.c[0], albedo_rgba.c[1], albedo_rgba.c[2]};
+  FloatV metallic = hn::Set(d, m.metallic), roughness = hn::Set(d, m.roughness);
+  if (in.map_texel[kMetallicRoughnessMap] != nullptr) {
+    FloatV t[4];  // glTF packing: roughness in green, metallic in blue
+    LoadTexel(in.map_texel[kMetallicRoughnessMap], j, t);
+    roughness = hn::Mul(roughness, t[1]);
+    metallic = hn::Mul(metallic, t[2]);
+  }
+  FloatV occlusion = one;
+  if (in.map_texel[kOcclusionMap] != nullptr) {
+    FloatV t[4];
+    LoadTexel(in.map_texel[kOcclusionMap], j, t);
+    occlusion = hn::Add(one, hn::Mul(hn::Set(d, m.occlusion_strength), hn::Sub(t[0], one)));
+  }
+  // f0 = mix(0.04, albedo, metallic).
+  const FloatV dielectric = hn::Mul(hn::Set(d, 0.04f), hn::Sub(one, metallic));
+  const Vec3V f0{hn::Add(dielectric, hn::Mul(albedo.x, metallic)),
+                 hn::Add(dielectric, hn::Mul(albedo.y, metallic)),
+                 hn::Add(dielectric, hn::Mul(albedo.z, metallic))};
+  Vec3V color{hn::Zero(d), hn::Zero(d), hn::Zero(d)};
+  const FloatV pi = hn::Set(d, kPi);
+  for (int i = 0; i < u.frame->light_count; ++i) {
+    const LightData& l = u.frame->lights[i];
+    IncidentV incoming = Incident(l, position);
+    const FloatV n_dot_l = Dot(n, incoming.direction);
+    const auto lit = hn::Not(hn::Le(n_dot_l, hn::Zero(d)));  // the scalar loop's continue
+    incoming.radiance = ReceivedRadiance(l, incoming, position, n, hn::And(lit, active));
+    const Vec3V brdf = CookTorrance(albedo, metallic, roughness, f0, n, view, incoming.direction);
+    const FloatV scale = hn::Mul(n_dot_l, pi);
+    color.x = hn::IfThenElse(
+        lit, hn::Add(color.x, hn::Mul(hn::Mul(brdf.x, incoming.radiance.x), scale)), color.x);
+    color.y = hn::IfThenElse(
+        lit, hn::Add(color.y, hn::Mul(hn::Mul(brdf.y, incoming.radiance.y), scale)), color.y);
+    color.z = hn::IfThenElse(
+        lit, hn::Add(color.z, hn::Mul(hn::Mul(brdf.z, incoming.radiance.z), scale)), color.z);
+  }
+  // ambient x (diffuse albedo + f0 / 2), or the environment's light.
+  const FloatV diffuse_share = hn::Sub(one, metallic);
+  const FloatV half = hn::Set(d, 0.5f);
+  Vec3V ambient{hn::Mul(hn::Set(d, u.frame->ambient.x),
+                        hn::Add(hn::Mul(albedo.x, diffuse_share), hn::Mul(f0.x, half))),
+                hn::Mul(hn::Set(d, u.frame->ambient.y),
+                        hn::Add(hn::Mul(albedo.y, diffuse_share), hn::Mul(f0.y, half))),
+                hn::Mul(hn::Set(d, u.frame->ambient.z),
+                        hn::Add(hn::Mul(albedo.z, diffuse_share), hn::Mul(f0.z, half)))};
+  const Environment& environment = u.frame->lighting->environment;
+  if (u.frame->environment_light != nullptr || environment.reflections) {
+    Lanes3 lanes_ambient(ambient);
+    const Lanes3 lanes_albedo(albedo), lanes_f0(f0), lanes_n(n), lanes_view(view);
+    alignas(64) float lanes_metallic[8], lanes_roughness[8];
+    hn::Store(metallic, d, lanes_metallic), hn::Store(roughness, d, lanes_roughness);
+    const int count = std::min(static_cast<int>(hn::Lanes(d)), in.count - j);
+    for (int lane = 0; lane < count; ++lane) {
+      const PbrSurface surface{lanes_albedo[lane], lanes_metallic[lane], lanes_roughness[lane]};
+      if (u.frame->environment_light != nullptr) {
+        lanes_ambient.set(lane, environment_light(*u.frame->environment_light, environment, surface,
+                                                  lanes_f0[lane], lanes_n[lane], lanes_view[lane]));
+      } else {
+        lanes_ambient.set(
+            lane, lanes_ambient[lane] + environment_reflection(environment, surface, lanes_f0[lane],
+                                                               lanes_n[lane], lanes_view[lane]));
+      }
+    }
+    ambient = lanes_ambient.load();
+  }
+  return {hn::Add(color.x, hn::Mul(ambient.x, occlusion)),
+          hn::Add(color.y, hn::Mul(ambient.y, occlusion)),
+          hn::Add(color.z, hn::Mul(ambient.z, occlusion))};
+}
+
 // NormalsShading::fragment(): display_value(safe_normalize(n) * 0.5 + 0.5), then fog, if any,
 // on the decoded colors in SIMD again.
 void ShadeNormals(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
@@ -199,21 +400,18 @@ void ShadeBatch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, f
   if (model == BatchModel::normals) return ShadeNormals(u, in, rgba);
   const bool fogged = in.fog != nullptr && in.fog->mode != FogMode::none;
   if (model == BatchModel::constant_unlit && in.base_texel != nullptr && !fogged &&
-      ShadeConstantUnlitAsRgba(u, in, rgba)) {
+      in.map_texel[kEmissiveMap] == nullptr && ShadeConstantUnlitAsRgba(u, in, rgba)) {
     return;
   }
   const FloatTag d;
   const int lanes = static_cast<int>(hn::Lanes(d));
   const Material& m = *u.material;
-  // emission(): the emissive factor (batch_shades() leaves out emissive maps).
-  const FloatV emissive[3] = {hn::Set(d, m.emissive.x), hn::Set(d, m.emissive.y),
-                              hn::Set(d, m.emissive.z)};
   // Lambert needs no view, nor its square root and division; nor its position, unless a
   // light's direction or shadow depends on it.
   const bool needs_view = model != BatchModel::lambert;
-  const bool needs_position =
-      needs_view || any_shadowed_light(u) || !only_directional_lights(u);
-  const Vec3V specular = Set3(m.specular_color);
+  const bool needs_position = needs_view || any_shadowed_light(u) || !only_directional_lights(u);
+  const bool reflects = (model == BatchModel::phong || model == BatchModel::blinn_phong) &&
+                        m.reflectivity > 0.0f && u.frame->lighting->environment.reflections;
   const Vec3V eye{hn::Set(d, u.frame->eye.x), hn::Set(d, u.frame->eye.y),
                   hn::Set(d, u.frame->eye.z)};
   const Albedo base{{hn::Set(d, u.material->base_color.r), hn::Set(d, u.material->base_color.g),
@@ -222,6 +420,8 @@ void ShadeBatch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, f
       model == BatchModel::constant_unlit || model == BatchModel::constant_gouraud;
   for (int j = 0; j < in.count; j += lanes) {
     const Albedo albedo = LoadAlbedo(in, j, constant_color ? &base : nullptr);
+    const Vec3V emission = Emission(m, in, j);
+    const FloatV emissive[3] = {emission.x, emission.y, emission.z};
     FloatV color[4];
     if (model == BatchModel::unlit || model == BatchModel::constant_unlit) {
       for (int c = 0; c < 3; ++c) color[c] = hn::Add(albedo.c[c], emissive[c]);
@@ -245,17 +445,39 @@ void ShadeBatch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, f
         view = SafeNormalize(
             {hn::Sub(eye.x, position.x), hn::Sub(eye.y, position.y), hn::Sub(eye.z, position.z)});
       }
-      const Vec3V n = SafeNormalize(Load3(in.v, kNormalSlot, j));
+      Vec3V n = SafeNormalize(Load3(in.v, kNormalSlot, j));
+      if (in.map_texel[kNormalMap] != nullptr) n = MappedNormal(m, in, j, n);
       const auto active = hn::FirstN(d, static_cast<std::size_t>(in.count - j));
-      const Vec3V light = model == BatchModel::lambert
-                              ? DiffuseLight(u, n, position, active)
-                              : SpecularLight(u, model == BatchModel::blinn_phong, n, view,
-                                              position, albedo, specular, active);
       if (model == BatchModel::lambert) {
+        const Vec3V light = DiffuseLight(u, n, position, active);
         color[0] = hn::Mul(albedo.c[0], light.x);  // diffuse_light(): albedo x light
         color[1] = hn::Mul(albedo.c[1], light.y);
         color[2] = hn::Mul(albedo.c[2], light.z);
+      } else if (model == BatchModel::pbr) {
+        const Vec3V light = PbrLight(u, in, j, n, view, position, albedo, active);
+        color[0] = light.x, color[1] = light.y, color[2] = light.z;
       } else {
+        // specular_color(): the factor times the specular map's texel, if any.
+        Vec3V specular = Set3(m.specular_color);
+        if (in.map_texel[kSpecularMap] != nullptr) {
+          FloatV t[4];
+          LoadTexel(in.map_texel[kSpecularMap], j, t);
+          specular = {hn::Mul(specular.x, t[0]), hn::Mul(specular.y, t[1]),
+                      hn::Mul(specular.z, t[2])};
+        }
+        Vec3V light = SpecularLight(u, model == BatchModel::blinn_phong, n, view, position, albedo,
+                                    specular, active);
+        if (reflects) {  // reflect_environment(), a lane at a time
+          Lanes3 lanes_light(light);
+          const Lanes3 lanes_view(view), lanes_n(n);
+          const int count = std::min(lanes, in.count - j);
+          for (int lane = 0; lane < count; ++lane) {
+            lanes_light.set(lane,
+                            mix_reflection(u.frame->lighting->environment, m.reflectivity,
+                                           lanes_light[lane], lanes_view[lane], lanes_n[lane]));
+          }
+          light = lanes_light.load();
+        }
         color[0] = light.x, color[1] = light.y, color[2] = light.z;  // albedo already in
       }
       for (int c = 0; c < 3; ++c) color[c] = hn::Add(color[c], emissive[c]);
@@ -274,16 +496,7 @@ namespace facet::shading {
 
 HWY_EXPORT(ShadeBatch);
 
-bool batch_shades(BatchModel model, const DrawUniforms& u) {
-  if (model == BatchModel::normals) return true;  // no light, no material
-  const Material& m = *u.material;
-  if (m.emissive != glm::vec3(0.0f) && m.emissive_map) return false;
-  if (model == BatchModel::phong || model == BatchModel::blinn_phong) {
-    if (m.normal_map || m.specular_map) return false;
-    if (m.reflectivity > 0.0f && u.frame->lighting->environment.reflections) return false;
-  }
-  return true;
-}
+bool batch_shades(BatchModel, const DrawUniforms&) { return true; }
 
 ShadeBatchKernel shade_batch_kernel(SimdTarget target) {
   return HWY_DISPATCH_TABLE(ShadeBatch)[target];

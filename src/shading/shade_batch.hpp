@@ -18,7 +18,7 @@ inline constexpr int kShadeBatch = 64;
 
 // constant_unlit: unlit with the material's base color instead of an interpolated color;
 // gouraud and constant_gouraud: the Gouraud models (lit_models.hpp), whose pixels combine the
-// light interpolated from their vertices.
+// light interpolated from their vertices; pbr: physically based (metallic-roughness).
 enum class BatchModel {
   unlit,
   constant_unlit,
@@ -27,8 +27,50 @@ enum class BatchModel {
   blinn_phong,
   normals,
   gouraud,
-  constant_gouraud
+  constant_gouraud,
+  pbr
 };
+
+// The material's maps besides the base color map, which the raster loop samples ahead for a
+// batch of pixels (texel_batch.hpp) for the models that read them (batch_maps).
+enum MaterialMap { kEmissiveMap, kNormalMap, kSpecularMap, kMetallicRoughnessMap, kOcclusionMap };
+inline constexpr int kMaterialMaps = 5;
+inline constexpr unsigned map_bit(MaterialMap map) { return 1u << map; }
+
+inline const TextureMap& material_map(const Material& m, MaterialMap map) {
+  switch (map) {
+    case kEmissiveMap:
+      return m.emissive_map;
+    case kNormalMap:
+      return m.normal_map;
+    case kSpecularMap:
+      return m.specular_map;
+    case kMetallicRoughnessMap:
+      return m.metallic_roughness_map;
+    default:
+      return m.occlusion_map;
+  }
+}
+
+// Which maps (map_bit) a model reads: every model its emission's, but the normals view and the
+// constant-color Gouraud model, which has no texture coordinate (pipeline/record/
+// pipeline_table.cpp takes it for draws without maps); Phong and Blinn-Phong their normal and
+// specular maps; PBR its normal, metallic-roughness and occlusion maps.
+inline constexpr unsigned batch_maps(BatchModel model) {
+  switch (model) {
+    case BatchModel::normals:
+    case BatchModel::constant_gouraud:
+      return 0;
+    case BatchModel::phong:
+    case BatchModel::blinn_phong:
+      return map_bit(kEmissiveMap) | map_bit(kNormalMap) | map_bit(kSpecularMap);
+    case BatchModel::pbr:
+      return map_bit(kEmissiveMap) | map_bit(kNormalMap) | map_bit(kMetallicRoughnessMap) |
+             map_bit(kOcclusionMap);
+    default:
+      return map_bit(kEmissiveMap);
+  }
+}
 
 // Where the Gouraud models keep their interpolated diffuse light (the specular light follows):
 // after the surface layout's texture coordinate and color, or first for one constant color.
@@ -50,6 +92,9 @@ struct ShadeInput {
   // Where pixel n's color goes: rgba[(n / 8) * rgba_row_stride + n % 8]. 8 for a packed array;
   // a whole 8x8 block (count 64) may go straight into a tile's rows with the tile's stride.
   int rgba_row_stride = 8;
+  // Each MaterialMap's texel per pixel, where the material has the map and the model reads it
+  // (batch_maps); else null.
+  const float (*map_texel[kMaterialMaps])[4] = {};
 };
 
 // Whether shade_batch can shade this draw with this model: no emissive map; for the models lit

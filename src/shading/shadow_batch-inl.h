@@ -219,8 +219,8 @@ static HWY_NOINLINE BatchV ShadowVisibility(const ShadowMaps& maps, const Vec3V&
   }
   for (int i = 0; i < maps.count; ++i) {
     if (hn::AllFalse(d, in_cascade[i])) continue;
-    visibility = hn::IfThenElse(in_cascade[i],
-                                MapShadow(maps.maps[i], p, n, in_cascade[i]), visibility);
+    visibility =
+        hn::IfThenElse(in_cascade[i], MapShadow(maps.maps[i], p, n, in_cascade[i]), visibility);
   }
   return visibility;
 }

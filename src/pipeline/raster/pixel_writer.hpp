@@ -151,10 +151,22 @@ constexpr int base_color_texcoord() {
 }
 
 // Models with fragment_batch are shaded a batch of pixels at a time with SIMD when their
-// batch_shades accepts the draw (shading/shade_batch.hpp).
+// batch_shades accepts the draw (shading/shade_batch.hpp). The built-in models have no
+// fragment(): their batch form is all there is, for every draw and every batch size.
 template <class Shading>
 constexpr bool batch_shaded() {
   return requires { &Shading::fragment_batch; };
+}
+template <class Shading>
+constexpr bool batch_only() {
+  return batch_shaded<Shading>() && !requires { &Shading::fragment; };
+}
+
+// The material maps besides the base color map a batch model reads (shading::batch_maps).
+template <class Shading>
+constexpr unsigned material_maps() {
+  if constexpr (requires { Shading::kMapsRead; }) return Shading::kMapsRead;
+  return 0;
 }
 
 // Covered pixels that passed the depth test, packed, waiting to be shaded: a block's, a small
@@ -265,13 +277,13 @@ class PixelWriter {
   int shade(PackedPixels& pixels) {
     if (pixels.count == 0) return 0;
     if (batches()) pixels.pad(Shading::kVaryings);
-    const Texels texels = sample_base_map(pixels.count, pixels.v, pixels.w);
     int written = 0;
     if constexpr (batch_shaded<Shading>()) {
-      if (batch_ && pixels.count >= kMinBatch) {
+      if (batch_ && (batch_only<Shading>() || pixels.count >= kMinBatch)) {
         alignas(64) float colors[PackedPixels::kCapacity][4];
-        Shading::fragment_batch(
-            uniforms_, {pixels.count, pixels.w, pixels.z, pixels.v, texels, batch_fog()}, colors);
+        shading::ShadeInput in{pixels.count, pixels.w, pixels.z, pixels.v, nullptr, batch_fog()};
+        sample_maps(in, pixels.v, pixels.w);
+        Shading::fragment_batch(uniforms_, in, colors);
         for (int n = 0; n < pixels.count; ++n) {
           const float* c = colors[n];
           written += store<kBatchFogs>(pixels.x[n], pixels.y[n], pixels.z[n], pixels.w[n],
@@ -280,6 +292,15 @@ class PixelWriter {
         return written;
       }
     }
+    if constexpr (!batch_only<Shading>()) written = shade_one_at_a_time(pixels);
+    return written;
+  }
+
+  // shade() for the models and draws without a batch form: fragment() per pixel, the base color
+  // map sampled ahead all the same.
+  int shade_one_at_a_time(PackedPixels& pixels) {
+    const Texels texels = sample_base_map(pixels.count, pixels.v, pixels.w);
+    int written = 0;
     for (int n = 0; n < pixels.count; ++n) {
       fragment.w = pixels.w[n];
       for (int k = 0; k < Shading::kVaryings; ++k) fragment.v[k] = pixels.v[k][n];
@@ -311,9 +332,9 @@ class PixelWriter {
                      float (*colors)[4]) {
     if constexpr (kWaits) {
       pixels.pad(Shading::kVaryings);
-      const Texels texels = sample_base_map(pixels.count, pixels.v, pixels.w, slopes);
-      Shading::fragment_batch(uniforms_,
-                              {pixels.count, pixels.w, pixels.z, pixels.v, texels, &fog_}, colors);
+      shading::ShadeInput in{pixels.count, pixels.w, pixels.z, pixels.v, nullptr, &fog_};
+      sample_maps(in, pixels.v, pixels.w, slopes);
+      Shading::fragment_batch(uniforms_, in, colors);
     }
   }
 
@@ -324,10 +345,10 @@ class PixelWriter {
   void shade_full_block(const BlockFragments& block, int block_x, int block_y) {
     if constexpr (kFullBlocks) {
       static_assert(kBlockSize == 8, "ShadeInput::rgba_row_stride counts rows of 8 pixels");
-      const Texels texels = sample_base_map(kBlockPixels, block.v, block.w);
       const std::ptrdiff_t first = index(block_x, block_y);
-      shading::ShadeInput in{kBlockPixels, block.w, block.z, block.v, texels, &fog_};
+      shading::ShadeInput in{kBlockPixels, block.w, block.z, block.v, nullptr, &fog_};
       in.rgba_row_stride = tile_.stride;
+      sample_maps(in, block.v, block.w);
       Shading::fragment_batch(uniforms_, in, reinterpret_cast<float(*)[4]>(&tile_.color[first]));
       for (int row = 0; row < kBlockSize; ++row) {
         const std::ptrdiff_t pixel = first + static_cast<std::ptrdiff_t>(row) * tile_.stride;
@@ -341,14 +362,19 @@ class PixelWriter {
   }
 
   // Whether shade() does anything in batches; if not, raster loops may skip packing and call
-  // write() per pixel.
-  bool batches() const { return base_map_ != nullptr || batch_; }
+  // write() per pixel. Always for the models without fragment().
+  bool batches() const { return batch_only<Shading>() || base_map_ != nullptr || batch_; }
 
   // Shades `fragment` (w and varyings filled in by the caller) for pixel (x, y) of the frame
-  // at depth z and writes it. False if the alpha test discarded it.
+  // at depth z and writes it. False if the alpha test discarded it. Only for the models with
+  // fragment() (the others' batches() is always true).
   bool write(int x, int y, float z) {
-    fragment.z = z;
-    return store(x, y, z, fragment.w, Shading::fragment(fragment, uniforms_));
+    if constexpr (batch_only<Shading>()) {
+      return false;
+    } else {
+      fragment.z = z;
+      return store(x, y, z, fragment.w, Shading::fragment(fragment, uniforms_));
+    }
   }
 
   // Writes the shaded color of pixel (x, y) of the frame, at depth z and clip w, with the
@@ -435,10 +461,49 @@ class PixelWriter {
         fog_(uniforms_.frame->lighting->fog),
         alpha_cutoff_(uniforms_.material->alpha_cutoff),
         edge_scales_(edge_scales) {
+    const Material& material = *uniforms_.material;
     if constexpr (kTexcoordSlot >= 0) {
-      if (uniforms_.material->base_color_map) base_map_ = &uniforms_.material->base_color_map;
+      if (material.base_color_map) base_map_ = &material.base_color_map;
     }
-    if constexpr (batch_shaded<Shading>()) batch_ = tile.frame->draws[draw].batch_shaded;
+    if constexpr (batch_only<Shading>()) {
+      batch_ = true;
+    } else if constexpr (batch_shaded<Shading>()) {
+      batch_ = tile.frame->draws[draw].batch_shaded;
+    }
+    if constexpr (kMaps != 0) {
+      for (int k = 0; k < shading::kMaterialMaps; ++k) {
+        const auto map = static_cast<shading::MaterialMap>(k);
+        // Without an emissive factor the emissive map is not read (emission() is zero).
+        const bool read = (kMaps & shading::map_bit(map)) != 0 &&
+                          (map != shading::kEmissiveMap || material.emissive != glm::vec3(0.0f));
+        const TextureMap& texture_map = shading::material_map(material, map);
+        if (read && texture_map) maps_[k] = &texture_map;
+      }
+    }
+  }
+
+  // Every map the model reads and the draw has, sampled for in.count pixels whose varyings and
+  // clip w are v[k][n] and w[n], into `in` (base_texel, map_texel).
+  void sample_maps(shading::ShadeInput& in, const float (*v)[kBlockPixels], const float* w,
+                   const float (*slopes)[kBlockPixels] = nullptr) {
+    in.base_texel = sample_base_map(in.count, v, w, slopes);
+    if constexpr (kMaps != 0) {
+      for (int k = 0; k < shading::kMaterialMaps; ++k) {
+        if (maps_[k] == nullptr) continue;
+        shading::TexelBatch& texels = map_texels_[k];
+        texels.count = in.count;
+        texels.u = v[kTexcoordSlot];
+        texels.v = v[kTexcoordSlot + 1];
+        texels.w = w;
+        texels.slopes = slopes;
+        if (slopes == nullptr) {
+          texels.planes = fragment.planes + kTexcoordSlot;
+          texels.inv_w = &t_->inv_w;
+        }
+        shading::sample_batch(uniforms_.frame->kernels->sample_batch, *maps_[k], texels);
+        in.map_texel[k] = texels.rgba;
+      }
+    }
   }
 
   // The base color map sampled for `count` pixels whose varyings and clip w are v[k][n] and
@@ -479,6 +544,13 @@ class PixelWriter {
   const TextureMap* base_map_ = nullptr;  // the map sampled ahead, if any
   bool batch_ = false;                    // shade() uses Shading::fragment_batch
   shading::TexelBatch texels_;
+  // The other maps the model reads (material_maps) that the draw has, and their texels.
+  static constexpr unsigned kMaps = material_maps<Shading>();
+  static_assert(kMaps == 0 || kTexcoordSlot >= 0, "the maps are read at the base map's coordinate");
+  const TextureMap* maps_[shading::kMaterialMaps] = {};
+  using MapTexels =
+      std::conditional_t<kMaps != 0, shading::TexelBatch[shading::kMaterialMaps], std::monostate>;
+  [[no_unique_address]] MapTexels map_texels_;
 };
 
 }  // namespace facet::pipeline

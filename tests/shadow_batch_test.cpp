@@ -186,8 +186,38 @@ void make_draw(std::mt19937& rng, const Sun& sun, Draw& d) {
 
 constexpr int kRounds = 30;
 
-// Compares Shading::fragment_batch with fragment() on shadowed draws over random batches, on
-// every SIMD target, with one and three cascades.
+// Pixel n of varyings v shaded as the draw without shadows, each shadowed light's radiance
+// scaled by the scalar shadow_visibility at the pixel: what the batch kernel gives the shadowed
+// draw if its lookup gives shadow_visibility's bits (received_radiance is radiance x visibility).
+template <class Shading>
+glm::vec4 unshadowed_with_scalar_visibility(const Draw& shadowed, const float (*v)[kShadeBatch],
+                                            int n) {
+  Draw d = shadowed;
+  d.uniforms.material = &d.material;
+  d.uniforms.frame = &d.frame;
+  d.frame.kernels = &d.kernels;
+  d.frame.lighting = &d.lighting;
+  d.frame.lights = d.lights;
+  alignas(64) float one[shading::kMaxVaryings][kShadeBatch] = {};
+  for (int k = 0; k < shading::kMaxVaryings; ++k) one[k][0] = v[k][n];
+  const glm::vec3 p(v[shading::kPositionSlot][n], v[shading::kPositionSlot + 1][n],
+                    v[shading::kPositionSlot + 2][n]);
+  const glm::vec3 normal = shading::safe_normalize(
+      {v[shading::kNormalSlot][n], v[shading::kNormalSlot + 1][n], v[shading::kNormalSlot + 2][n]});
+  for (shading::LightData& light : d.lights) {
+    if (light.shadow == nullptr) continue;
+    light.radiance = light.radiance * shading::shadow_visibility(*light.shadow, p, normal);
+    light.shadow = nullptr;
+  }
+  alignas(64) float w[kShadeBatch] = {1.0f}, z[kShadeBatch] = {};
+  alignas(64) float rgba[kShadeBatch][4];
+  Shading::fragment_batch(d.uniforms, {1, w, z, one, nullptr, &d.lighting.fog}, rgba);
+  return {rgba[0][0], rgba[0][1], rgba[0][2], rgba[0][3]};
+}
+
+// Compares Shading::fragment_batch on shadowed draws with the same draws unshadowed but for the
+// scalar shadow_visibility (unshadowed_with_scalar_visibility) over random batches, on every
+// SIMD target, with one and three cascades.
 template <class Shading>
 void expect_fragments_bits() {
   const std::vector<std::int64_t> targets = simd_targets();
@@ -217,16 +247,12 @@ void expect_fragments_bits() {
       split_cascades(rng, points, sun);
       Draw draw;
       make_draw(rng, sun, draw);
-      EXPECT_TRUE(Shading::batch_shades(draw.uniforms));
       const int count = round % 4 == 0 ? kShadeBatch : 1 + static_cast<int>(rng() % kShadeBatch);
       alignas(64) float rgba[kShadeBatch][4];
       const shading::ShadeInput input{count, in_w, in_z, v, nullptr, &draw.lighting.fog};
       Shading::fragment_batch(draw.uniforms, input, rgba);
       for (int n = 0; n < count; ++n) {
-        shading::Fragment f;
-        f.w = in_w[n], f.z = in_z[n];
-        for (int k = 0; k < shading::kMaxVaryings; ++k) f.v[k] = v[k][n];
-        const glm::vec4 expected = Shading::fragment(f, draw.uniforms);
+        const glm::vec4 expected = unshadowed_with_scalar_visibility<Shading>(draw, v, n);
         ASSERT_EQ(std::memcmp(&expected, rgba[n], sizeof expected), 0)
             << hwy::TargetName(target) << ", round " << round << ", pixel " << n << ": ("
             << rgba[n][0] << ", " << rgba[n][1] << ", " << rgba[n][2] << "), fragment() gives ("
@@ -313,24 +339,17 @@ TEST(ShadowBatch, GouraudVerticesGiveVertexsBitsOnEveryTarget) {
   expect_vertexs_bits<shading::ConstantColorGouraudShading>();
 }
 
-// The Lambert draws without positions keep the scalar model (the frame had no shadows when they
-// were recorded); a spot light's perspective map keeps the Gouraud models' scalar vertex().
-TEST(ShadowBatch, DeclinesPerspectiveMapsAtVerticesAndUnpositionedLambert) {
+// A spot light's perspective map keeps the Gouraud models' scalar vertex().
+TEST(ShadowBatch, GouraudDeclinesPerspectiveMapsAtVertices) {
   std::mt19937 rng(5);
   Sun sun;
   make_sun(rng, 1, 16, sun);
   Draw draw;
   make_draw(rng, sun, draw);
   draw.frame.light_count = 1;
-  EXPECT_TRUE(shading::LambertShading::batch_shades(draw.uniforms));
-  EXPECT_TRUE(shading::PhongShading::batch_shades(draw.uniforms));
   EXPECT_TRUE(shading::GouraudShading::batch_vertices(draw.uniforms));
-  EXPECT_FALSE(shading::UnpositionedLambertShading::batch_shades(draw.uniforms));
   sun.maps.maps[0].perspective = true;
-  EXPECT_TRUE(shading::LambertShading::batch_shades(draw.uniforms));
   EXPECT_FALSE(shading::GouraudShading::batch_vertices(draw.uniforms));
-  draw.lights[0].shadow = nullptr;  // unshadowed, as before
-  EXPECT_TRUE(shading::UnpositionedLambertShading::batch_shades(draw.uniforms));
 }
 
 }  // namespace

@@ -31,7 +31,6 @@ inline ShadingKernels shading_kernels(SimdTarget target) {
 template <BatchModel kModel>
 struct BatchForm {
   static constexpr unsigned kMapsRead = batch_maps(kModel);
-  static bool batch_shades(const DrawUniforms& u) { return shading::batch_shades(kModel, u); }
   static void fragment_batch(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
     u.frame->kernels->shade_batch(kModel, u, in, rgba);
   }

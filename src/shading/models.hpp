@@ -100,11 +100,6 @@ struct UnlitShading : BatchForm<BatchModel::unlit>, SurfaceVertexBatch<kUnlitVar
   static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
     surface_vertex<kVaryings>(in, u, out);
   }
-  static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
-    glm::vec4 color = load4(f.v + kColorSlot);
-    if (u.material->base_color_map) color *= base_color_texel(f, u);
-    return color + glm::vec4(emission(f, u), 0.0f);
-  }
 };
 
 // Unlit for a draw whose color is the material's alone (no vertex colors:
@@ -117,11 +112,6 @@ struct ConstantColorUnlitShading : BatchForm<BatchModel::constant_unlit> {
   static_assert(kTexcoordSlot + 2 <= kVaryings);
   static void vertex(const VertexInput& in, const DrawUniforms&, float* out) {
     store(out + kTexcoordSlot, in.texcoord);
-  }
-  static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
-    glm::vec4 color = u.material->base_color;
-    if (u.material->base_color_map) color *= base_color_texel(f, u);
-    return color + glm::vec4(emission(f, u), 0.0f);
   }
 };
 
@@ -167,16 +157,6 @@ struct LambertShadingT
   static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
     surface_vertex<kVaryings>(in, u, out);
   }
-  // The batch form reads the position where a light casts shadows: without it, fragment().
-  static bool batch_shades(const DrawUniforms& u) {
-    return (kPositioned || !any_shadowed_light(u)) &&
-           BatchForm<BatchModel::lambert>::batch_shades(u);
-  }
-  static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
-    SurfacePoint s = surface_point<false, kPositioned>(f, u);
-    glm::vec3 color = diffuse_light(glm::vec3(s.albedo), s.normal, s.position, u);
-    return {color + emission(f, u), s.albedo.a};
-  }
 };
 using LambertShading = LambertShadingT<true>;
 using UnpositionedLambertShading = LambertShadingT<false>;
@@ -206,9 +186,6 @@ struct NormalsShading : BatchForm<BatchModel::normals>, DisplayReferred {
   static constexpr int kNormalSlot = 0;
   static void vertex(const VertexInput& in, const DrawUniforms&, float* out) {
     store(out, in.normal);
-  }
-  static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
-    return display_value(safe_normalize(load3(f.v)) * 0.5f + 0.5f, u);
   }
 };
 

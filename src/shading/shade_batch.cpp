@@ -496,8 +496,6 @@ namespace facet::shading {
 
 HWY_EXPORT(ShadeBatch);
 
-bool batch_shades(BatchModel, const DrawUniforms&) { return true; }
-
 ShadeBatchKernel shade_batch_kernel(SimdTarget target) {
   return HWY_DISPATCH_TABLE(ShadeBatch)[target];
 }

@@ -97,11 +97,6 @@ struct ShadeInput {
   const float (*map_texel[kMaterialMaps])[4] = {};
 };
 
-// Whether shade_batch can shade this draw with this model: no emissive map; for the models lit
-// per pixel every light directional (shadowed or not); for Phong and Blinn-Phong also no normal
-// or specular map and no reflections.
-bool batch_shades(BatchModel model, const DrawUniforms& u);
-
 // Linear RGBA of every pixel, as the model's fragment() gives it (then fogged, if in.fog).
 // rgba holds kShadeBatch colors (with in.rgba_row_stride 8): those from in.count up to the
 // next multiple of 8 are written too, as scratch.

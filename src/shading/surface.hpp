@@ -136,27 +136,4 @@ struct LightsBackFaces {
   static constexpr bool kLightsBackFaces = true;
 };
 
-struct SurfacePoint {
-  glm::vec3 position;
-  glm::vec3 normal;  // unit, normal map applied; reversed on a two-sided back face (setup)
-  glm::vec3 view;    // unit, toward the eye
-  glm::vec4 albedo;  // color x base color map
-};
-
-// The lit models' common start. kWithTangent: the layout holds tangents (normal mapping).
-// kPositioned false: the layout holds no position (kUnpositionedSurfaceVaryings), for draws lit
-// from one side by directional lights only; position and view are then zero and the normal is
-// not turned toward the viewer.
-template <bool kWithTangent, bool kPositioned = true>
-SurfacePoint surface_point(const Fragment& f, const DrawUniforms& u);
-
-// Emissive light of the material (factor x map). Most materials emit nothing: that test (a
-// runtime branch on a constant of the draw: BENCHMARKS.md, "Per-draw constants") is inline, the
-// rest out of line.
-glm::vec3 mapped_emission(const Fragment& f, const DrawUniforms& u);
-inline glm::vec3 emission(const Fragment& f, const DrawUniforms& u) {
-  if (u.material->emissive == glm::vec3(0.0f)) return glm::vec3(0.0f);
-  return mapped_emission(f, u);
-}
-
 }  // namespace facet::shading

@@ -38,7 +38,11 @@ DrawPipeline make_pipeline() {
   if constexpr (requires { &Shading::triangle; }) p.triangle = &Shading::triangle;
   p.lights_back_faces = lights_back_faces<Shading>();
   p.raster = &raster_triangle<Shading, kAlpha>;
-  if constexpr (batch_shaded<Shading>()) p.batch_shades = &Shading::batch_shades;
+  if constexpr (requires { &Shading::batch_shades; }) {
+    p.batch_shades = &Shading::batch_shades;
+  } else if constexpr (batch_shaded<Shading>()) {
+    p.batch_shades = [](const shading::DrawUniforms&) { return true; };  // every draw
+  }
   if constexpr (requires { &Shading::vertex_batch; }) {
     p.vertex_batch = &Shading::vertex_batch;
     p.batches_vertices = &Shading::batch_vertices;

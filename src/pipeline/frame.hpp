@@ -20,6 +20,7 @@
 #include "facet/mesh.hpp"
 #include "facet/renderer.hpp"
 #include "pipeline/setup/fixed_point.hpp"
+#include "shading/shade_batch.hpp"
 #include "shading/uniforms.hpp"
 #include "shading/varyings.hpp"
 #include "shading/vertex_batch.hpp"
@@ -91,6 +92,8 @@ struct DrawPipeline {
   RasterTriangleFn raster = nullptr;
   // The model's batch form takes this draw (shading/shade_batch.hpp); null: no batch form.
   bool (*batch_shades)(const shading::DrawUniforms&) = nullptr;
+  // The material maps besides the base color map the batch form reads (shading::batch_maps).
+  unsigned material_maps = 0;
   // The model's vertex() for a run of vertices (shading/vertex_batch.hpp), and whether it
   // takes this draw; null: none.
   void (*vertex_batch)(const shading::DrawUniforms&, const shading::VertexBatchInput&,
@@ -122,7 +125,9 @@ struct DrawRecord {
   Material material;
   shading::DrawUniforms uniforms;
   DrawPipeline pipeline;
-  bool batch_shaded = false;    // pipeline.batch_shades(uniforms), once per frame (frame_run.cpp)
+  bool batch_shaded = false;  // pipeline.batch_shades(uniforms), once per frame (frame_run.cpp)
+  // The maps the raster loop samples ahead for the batch form (shading::maps_to_sample), likewise.
+  const TextureMap* maps[shading::kMaterialMaps] = {};
   bool batch_vertices = false;  // pipeline.batches_vertices(uniforms), likewise
   // Its vertex stage writes ClipVertex (vertex.hpp's keeps_clip_vertices); also decided once
   // per frame.

@@ -164,6 +164,7 @@ void Renderer::Impl::run(Framebuffer& target) {
     // Whether the batch form takes the draw depends on its lights and material: decided here
     // once, not for every triangle.
     draw.batch_shaded = draw.pipeline.batch_shades && draw.pipeline.batch_shades(draw.uniforms);
+    shading::maps_to_sample(draw.pipeline.material_maps, draw.material, draw.maps);
     draw.batch_vertices =
         draw.pipeline.batches_vertices && draw.pipeline.batches_vertices(draw.uniforms);
     draw.clip_vertices = pipeline::keeps_clip_vertices(draw, guard);

@@ -22,12 +22,11 @@ inline ShadingKernels shading_kernels(SimdTarget target) {
           gouraud_vertex_batch_kernel(target)};
 }
 
-// What a shading model provides to be shaded a batch at a time (models.hpp; the raster loop,
-// pipeline/raster/raster.hpp, looks for these two): whether it can take this draw, and the batch
-// form of fragment(), which also applies in.fog. The built-in models get them from here. The
-// raster loop is compiled per model; the one batch kernel takes the model and fog at run time,
-// constants of the draw that every vector of it tests the same way (BENCHMARKS.md, "Per-draw
-// constants").
+// How the built-in models are shaded (models.hpp; the raster loop, pipeline/raster/raster.hpp,
+// looks for these): the maps they read, and fragment_batch, which shades a batch of pixels and
+// applies in.fog. The raster loop is compiled per model; the one batch kernel takes the model and
+// fog at run time, constants of the draw that every vector of it tests the same way
+// (BENCHMARKS.md, "Per-draw constants").
 template <BatchModel kModel>
 struct BatchForm {
   static constexpr unsigned kMapsRead = batch_maps(kModel);

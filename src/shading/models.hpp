@@ -8,17 +8,21 @@
 //   vertex(in, uniforms, out)        per vertex: writes kVaryings floats
 //   face(normal, centre, uniforms, v[3])  optional, per triangle before clipping: may rewrite
 //                                    the three vertices' varyings (flat shading)
-//   fragment(fragment, uniforms) -> linear RGBA
-//   kDisplayReferred  optional (inherit DisplayReferred): fragment() returns display values
+//   and how its pixels are shaded, one of:
+//   fragment(fragment, uniforms) -> linear RGBA   per pixel (the debug views and the extra
+//                   outputs, a few operations each)
+//   fragment_batch(uniforms, input, rgba), kMapsRead   a batch of pixels at once with SIMD, fog
+//                   included, the material's maps sampled ahead (shade_batch.hpp's BatchForm:
+//                   the built-in models lit or colored by their material); a model with both
+//                   (bench/scenes' glmark2 shaders) also gives batch_shades(uniforms), the draws
+//                   its batch form takes
+//   kDisplayReferred  optional (inherit DisplayReferred): the colors are display values
 //                   (display_value()); frames of such draws alone skip the sRGB encode
 //                   (pipeline/renderer.cpp)
-//   kBaseColorTexcoord  optional: the slot of the texture coordinate the base color map is
-//                   read at, through base_color_texel(); the raster loop then samples the map
-//                   for a batch of pixels at once (SIMD) before calling fragment()
-//   batch_shades(uniforms), fragment_batch(uniforms, input, rgba)  optional: the SIMD form
-//                   of fragment() (same bits, fog included), which the raster loop uses for
-//                   the draws batch_shades accepts (shade_batch.hpp's BatchForm)
-// Lit models with textures are in lit_models.hpp. Per-draw options (is there a base color
+//   kBaseColorTexcoord  optional: the slot of the texture coordinate the base color map (and
+//                   the other maps) are read at; the raster loop then samples the maps for a
+//                   batch of pixels at once (SIMD), for fragment() through base_color_texel()
+// Lit models with specular light are in lit_models.hpp. Per-draw options (is there a base color
 // map? which fog?) are plain branches on per-draw constants: always predicted the same way,
 // where template flags for each would multiply the raster loops.
 #pragma once

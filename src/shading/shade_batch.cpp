@@ -1,9 +1,10 @@
-// Batch shading of the unlit, Lambert, Phong and Blinn-Phong models and the normals view (see
-// shade_batch.hpp). Highway compiles this file once per SIMD target (foreach_target.h re-includes
-// it); the frame fetches the chosen target's kernel (pipeline/kernels.hpp). Every step repeats
-// models.hpp, lit_models.hpp, brdf.hpp and surface.cpp with the same IEEE operations in the same
-// order (glm's dot is (x*x' + y*y') + z*z'; std::max(0, d) keeps 0 for NaN; no fused multiply-add),
-// so each target gives fragment()'s bits; shade_batch_test checks it.
+// The built-in shading models, a batch of pixels at a time (see shade_batch.hpp). Highway compiles
+// this file once per SIMD target (foreach_target.h re-includes it); the frame fetches the chosen
+// target's kernel (pipeline/kernels.hpp). Every target computes the same IEEE operations in the
+// same order (no fused multiply-add; std::max and std::min as compare-and-select; pow and exp as
+// portable_math.hpp's polynomials), so each gives the same bits; shade_batch_test checks it. Where
+// a pixel reads a texture by a direction (the environment's reflections and light), that step
+// goes a lane at a time through the scalar lookups of environment.cpp and environment_light.cpp.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "shading/shade_batch.cpp"
 #include "shading/shade_batch.hpp"
@@ -57,8 +58,8 @@ HWY_INLINE void LoadTexel(const float (*texel)[4], int j, FloatV t[4]) {
   hn::LoadInterleaved4(FloatTag(), &texel[j][0], t[0], t[1], t[2], t[3]);
 }
 
-// emission(): the emissive factor, times the emissive map's texel where it is read (the raster
-// loop samples it only for a non-zero factor).
+// The material's emission: the emissive factor, times the emissive map's texel where it is read
+// (the raster loop samples it only for a non-zero factor).
 HWY_INLINE Vec3V Emission(const Material& m, const ShadeInput& in, int j) {
   Vec3V e = Set3(m.emissive);
   if (in.map_texel[kEmissiveMap] != nullptr) {
@@ -76,9 +77,10 @@ HWY_INLINE Vec3V Cross(const Vec3V& a, const Vec3V& b) {
           hn::Sub(hn::Mul(a.x, b.y), hn::Mul(b.x, a.y))};
 }
 
-// surface_point()'s normal mapping of unit normal n: the map's tangent-space normal through the
-// tangent frame (the interpolated tangent made orthogonal to n), where the pixel has a tangent
-// and the mapped normal is not zero.
+// Normal mapping of unit normal n: the map's tangent-space normal (scaled in x and y by the
+// material's normal scale) through the tangent frame, the interpolated tangent made orthogonal to
+// n (Gram-Schmidt) and n x tangent signed by the handedness; where the pixel has a tangent and
+// the mapped normal is not zero.
 HWY_INLINE Vec3V MappedNormal(const Material& m, const ShadeInput& in, int j, const Vec3V& n) {
   const FloatTag d;
   const Vec3V tangent = Load3(in.v, kTangentSlot, j);
@@ -124,8 +126,8 @@ struct Lanes3 {
   }
 };
 
-// diffuse_light() of models.hpp: ambient + sum of radiance x max(0, N.L), the radiance after the
-// light's shadow at `position` where N.L > 0 (active: the batch's lanes).
+// Lambert's light: ambient + sum of radiance x max(0, N.L), the radiance after the light's shadow
+// at `position` where N.L > 0 (active: the batch's lanes).
 HWY_INLINE Vec3V DiffuseLight(const DrawUniforms& u, const Vec3V& normal, const Vec3V& position,
                               BatchMask active) {
   const FloatTag d;
@@ -168,9 +170,10 @@ HWY_INLINE void Fogged(const Fog& fog, const ViewDepth& depth, const ShadeInput&
   }
 }
 
-// PhongShadingT::fragment()'s light loop: albedo x ambient, plus for each light facing the
-// surface radiance x (albedo N.L + specular x highlight), the radiance after the light's shadow
-// at `position` (active: the batch's lanes).
+// Phong's and Blinn-Phong's light: albedo x ambient, plus for each light facing the surface
+// radiance x (albedo N.L + specular x highlight), the radiance after the light's shadow at
+// `position` (active: the batch's lanes). The highlight is max(0, R.V)^shininess with R the
+// light's mirror direction (Phong), or max(0, N.H)^shininess with H the half vector (Blinn).
 HWY_INLINE Vec3V SpecularLight(const DrawUniforms& u, bool blinn, const Vec3V& n, const Vec3V& view,
                                const Vec3V& position, const Albedo& albedo, const Vec3V& specular,
                                BatchMask active) {
@@ -208,8 +211,12 @@ HWY_INLINE Vec3V SpecularLight(const DrawUniforms& u, bool blinn, const Vec3V& n
   return color;
 }
 
-// cook_torrance() of brdf.hpp for unit n, v and l: the diffuse and specular parts of the BRDF,
-// zero where n.l or n.v is not positive.
+// The Cook-Torrance BRDF f(l, v) for unit n, v and l ("Real Shading in Unreal Engine 4", Karis
+// 2013: GGX distribution, Smith-Schlick geometry, Schlick Fresnel), zero where n.l or n.v is not
+// positive. Roughness is clamped to [0.04, 1] so highlights stay finite. Light enters the surface
+// once through Fresnel on the way in (at n.l) and once on the way out (at n.v); only what passes
+// both is diffused, so specular plus diffuse never exceeds what arrives even at grazing angles
+// (the white furnace test checks this); metals have no diffuse part.
 HWY_INLINE Vec3V CookTorrance(const Vec3V& albedo, FloatV metallic, FloatV roughness,
                               const Vec3V& f0, const Vec3V& n, const Vec3V& v, const Vec3V& l) {
   const FloatTag d;
@@ -256,8 +263,11 @@ HWY_INLINE Vec3V CookTorrance(const Vec3V& albedo, FloatV metallic, FloatV rough
   return {out[0], out[1], out[2]};
 }
 
-// PbrShading::fragment() for pixels j..: the lights through Cook-Torrance, the ambient or
-// environment light through the occlusion; emission is the caller's.
+// The PBR model's light for pixels j..: each light through Cook-Torrance (times pi, the glTF
+// "punctual light" convention, so a white surface under a unit light is as bright as in Lambert),
+// then the ambient light or the environment's (environment_light.hpp) through the occlusion map;
+// emission is the caller's. The metallic-roughness map holds roughness in green, metallic in
+// blue (glTF's packing).
 HWY_INLINE Vec3V PbrLight(const DrawUniforms& u, const ShadeInput& in, int j, const Vec3V& n,
                           const Vec3V& view, const Vec3V& position, const Albedo& albedo_rgba,
                           BatchMask active) {
@@ -267,7 +277,7 @@ HWY_INLINE Vec3V PbrLight(const DrawUniforms& u, const ShadeInput& in, int j, co
   const Vec3V albedo{albedo_rgba.c[0], albedo_rgba.c[1], albedo_rgba.c[2]};
   FloatV metallic = hn::Set(d, m.metallic), roughness = hn::Set(d, m.roughness);
   if (in.map_texel[kMetallicRoughnessMap] != nullptr) {
-    FloatV t[4];  // glTF packing: roughness in green, metallic in blue
+    FloatV t[4];
     LoadTexel(in.map_texel[kMetallicRoughnessMap], j, t);
     roughness = hn::Mul(roughness, t[1]);
     metallic = hn::Mul(metallic, t[2]);
@@ -334,8 +344,8 @@ HWY_INLINE Vec3V PbrLight(const DrawUniforms& u, const ShadeInput& in, int j, co
           hn::Add(color.z, hn::Mul(ambient.z, occlusion))};
 }
 
-// NormalsShading::fragment(): display_value(safe_normalize(n) * 0.5 + 0.5), then fog, if any,
-// on the decoded colors in SIMD again.
+// The normals view: display_value(safe_normalize(n) * 0.5 + 0.5) (models.hpp), then fog, if
+// any, on the decoded colors in SIMD again.
 void ShadeNormals(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
   const FloatTag d;
   const int lanes = static_cast<int>(hn::Lanes(d));

@@ -1,11 +1,8 @@
-// The built-in unlit, Lambert, Phong, Blinn-Phong and Gouraud models and the normals view
-// evaluated for a batch of pixels at once, with SIMD (shade_batch.cpp, compiled for every target
-// Highway supports): the raster loop (pipeline/raster/raster.hpp) packs the covered pixels of a
-// triangle (or of several small ones), then shades them together instead of calling the model's
-// fragment() per pixel. Same operations as their fragment() (models.hpp, lit_models.hpp) lane by
-// lane, so the same bits, shadows of directional lights included (shadow_batch-inl.h); draws
-// the batch code does not cover (point or spot lights for the models lit per pixel, emissive,
-// normal or specular maps, reflections) keep fragment().
+// The built-in unlit, Lambert, Phong, Blinn-Phong, PBR and Gouraud models and the normals view:
+// one SIMD kernel (shade_batch.cpp, compiled for every target Highway supports) that shades a
+// batch of pixels at once, and the models' only implementation. The raster loop
+// (pipeline/raster/raster.hpp) packs the covered pixels of a triangle (or of several small
+// ones), samples the material's maps for them (texel_batch.hpp), then shades them together.
 #pragma once
 
 #include "core/simd_target.hpp"
@@ -72,6 +69,20 @@ inline constexpr unsigned batch_maps(BatchModel model) {
   }
 }
 
+// The maps of material m that a model reading `maps_read` (batch_maps) samples: out[k] is map k,
+// or null where the model does not read it or the material has none; the emissive map only
+// with an emissive factor (without, emission is zero).
+inline void maps_to_sample(unsigned maps_read, const Material& m,
+                           const TextureMap* out[kMaterialMaps]) {
+  for (int k = 0; k < kMaterialMaps; ++k) {
+    const auto map = static_cast<MaterialMap>(k);
+    const TextureMap& texture_map = material_map(m, map);
+    const bool read = (maps_read & map_bit(map)) != 0 && texture_map &&
+                      (map != kEmissiveMap || m.emissive != glm::vec3(0.0f));
+    out[k] = read ? &texture_map : nullptr;
+  }
+}
+
 // Where the Gouraud models keep their interpolated diffuse light (the specular light follows):
 // after the surface layout's texture coordinate and color, or first for one constant color.
 inline constexpr int kGouraudDiffuseSlot = 6;
@@ -97,7 +108,7 @@ struct ShadeInput {
   const float (*map_texel[kMaterialMaps])[4] = {};
 };
 
-// Linear RGBA of every pixel, as the model's fragment() gives it (then fogged, if in.fog).
+// Linear RGBA of every pixel, shaded by `model` (then fogged, if in.fog).
 // rgba holds kShadeBatch colors (with in.rgba_row_stride 8): those from in.count up to the
 // next multiple of 8 are written too, as scratch.
 using ShadeBatchKernel = void (*)(BatchModel model, const DrawUniforms& u, const ShadeInput& in,

@@ -241,9 +241,9 @@ void blend_into(glm::vec4& out, const glm::vec4& color) {
   }
 }
 
-// Fewer packed pixels than this are shaded one at a time with fragment() even when the model
-// has a batch form: the batch call's fixed cost outweighs its SIMD for them, while batches of
-// a few pixels more already gain from it.
+// For a model with both forms (fragment() and fragment_batch), fewer packed pixels than this are
+// shaded one at a time with fragment(): the batch call's fixed cost outweighs its SIMD for
+// them, while batches of a few pixels more already gain from it.
 inline constexpr int kMinBatch = 4;
 
 // Shades one covered pixel that passed the depth test and writes it with the draw's blending:
@@ -273,8 +273,8 @@ class PixelWriter {
   PixelWriter(TileContext& tile, std::uint32_t draw) : PixelWriter(tile, draw, nullptr, {}) {}
 
   // Shades the packed pixels and writes them; returns how many were written (the alpha test
-  // may discard some). The base color map is sampled for all of them at once, and models
-  // with a batch form are shaded all at once (from kMinBatch pixels on), both with SIMD.
+  // may discard some). The material's maps are sampled for all of them at once, and models
+  // with a batch form are shaded all at once, both with SIMD.
   int shade(PackedPixels& pixels) {
     if (pixels.count == 0) return 0;
     if (batches()) pixels.pad(Shading::kVaryings);
@@ -458,6 +458,7 @@ class PixelWriter {
               EdgeScalesOrNone edge_scales)
       : tile_(tile),
         t_(t),
+        draw_(draw),
         uniforms_(tile.frame->draws[draw].uniforms),
         fog_(uniforms_.frame->lighting->fog),
         alpha_cutoff_(uniforms_.material->alpha_cutoff),
@@ -471,16 +472,6 @@ class PixelWriter {
     } else if constexpr (batch_shaded<Shading>()) {
       batch_ = tile.frame->draws[draw].batch_shaded;
     }
-    if constexpr (kMaps != 0) {
-      for (int k = 0; k < shading::kMaterialMaps; ++k) {
-        const auto map = static_cast<shading::MaterialMap>(k);
-        // Without an emissive factor the emissive map is not read (emission() is zero).
-        const bool read = (kMaps & shading::map_bit(map)) != 0 &&
-                          (map != shading::kEmissiveMap || material.emissive != glm::vec3(0.0f));
-        const TextureMap& texture_map = shading::material_map(material, map);
-        if (read && texture_map) maps_[k] = &texture_map;
-      }
-    }
   }
 
   // Every map the model reads and the draw has, sampled for in.count pixels whose varyings and
@@ -489,8 +480,9 @@ class PixelWriter {
                    const float (*slopes)[kBlockPixels] = nullptr) {
     in.base_texel = sample_base_map(in.count, v, w, slopes);
     if constexpr (kMaps != 0) {
+      const TextureMap* const* maps = tile_.frame->draws[draw_].maps;
       for (int k = 0; k < shading::kMaterialMaps; ++k) {
-        if (maps_[k] == nullptr) continue;
+        if (maps[k] == nullptr) continue;
         shading::TexelBatch& texels = map_texels_[k];
         texels.count = in.count;
         texels.u = v[kTexcoordSlot];
@@ -501,7 +493,7 @@ class PixelWriter {
           texels.planes = fragment.planes + kTexcoordSlot;
           texels.inv_w = &t_->inv_w;
         }
-        shading::sample_batch(uniforms_.frame->kernels->sample_batch, *maps_[k], texels);
+        shading::sample_batch(uniforms_.frame->kernels->sample_batch, *maps[k], texels);
         in.map_texel[k] = texels.rgba;
       }
     }
@@ -537,6 +529,7 @@ class PixelWriter {
   const Fog* batch_fog() const { return kBatchFogs ? &fog_ : nullptr; }
   TileContext& tile_;
   const SetupTriangle* t_;  // null for the pixels of several triangles
+  std::uint32_t draw_;
   const shading::DrawUniforms& uniforms_;
   const Fog& fog_;
   float alpha_cutoff_;
@@ -545,10 +538,9 @@ class PixelWriter {
   const TextureMap* base_map_ = nullptr;  // the map sampled ahead, if any
   bool batch_ = false;                    // shade() uses Shading::fragment_batch
   shading::TexelBatch texels_;
-  // The other maps the model reads (material_maps) that the draw has, and their texels.
+  // The texels of the other maps the model reads that the draw has (DrawRecord::maps).
   static constexpr unsigned kMaps = material_maps<Shading>();
   static_assert(kMaps == 0 || kTexcoordSlot >= 0, "the maps are read at the base map's coordinate");
-  const TextureMap* maps_[shading::kMaterialMaps] = {};
   using MapTexels =
       std::conditional_t<kMaps != 0, shading::TexelBatch[shading::kMaterialMaps], std::monostate>;
   [[no_unique_address]] MapTexels map_texels_;

@@ -43,6 +43,7 @@ DrawPipeline make_pipeline() {
   } else if constexpr (batch_shaded<Shading>()) {
     p.batch_shades = [](const shading::DrawUniforms&) { return true; };  // every draw
   }
+  p.material_maps = material_maps<Shading>();
   if constexpr (requires { &Shading::vertex_batch; }) {
     p.vertex_batch = &Shading::vertex_batch;
     p.batches_vertices = &Shading::batch_vertices;

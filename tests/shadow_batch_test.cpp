@@ -16,7 +16,9 @@
 #include <vector>
 
 #include "core/simd_target.hpp"
+#include "facet/light.hpp"
 #include "shading/kernels.hpp"
+#include "shading/lighting.hpp"
 #include "shading/lit_models.hpp"
 #include "shading/models.hpp"
 #include "shading/shadow_map.hpp"
@@ -36,7 +38,8 @@ using shading::ShadowMaps;
 // `position` along `travel`.
 struct Caster {
   glm::vec3 travel{0.0f};
-  glm::vec3 position{0.0f};  // a spot light's
+  glm::vec3 position{0.0f};   // a spot light's
+  float cone_degrees = 0.0f;  // a spot light's view: half its field of view
   std::vector<float> depth[shading::kMaxShadowCascades];
   ShadowMaps maps;
 };
@@ -92,7 +95,9 @@ void make_spot(std::mt19937& rng, int size, Caster& spot) {
   spot.travel = glm::normalize(glm::vec3(any(rng), 0.0f, any(rng)) - spot.position);
   const glm::mat4 view =
       glm::lookAt(spot.position, spot.position + spot.travel, up_for(spot.travel));
-  const glm::mat4 projection = glm::perspective(glm::radians(cone(rng)), 1.0f, 0.5f, 30.0f);
+  spot.cone_degrees = 0.5f * cone(rng);
+  const glm::mat4 projection =
+      glm::perspective(glm::radians(2.0f * spot.cone_degrees), 1.0f, 0.5f, 30.0f);
   fill_depths(rng, size, spot.depth[0]);
   spot.maps.count = 1;
   spot.maps.maps[0] = shading::make_shadow_map(window_to_map(size) * projection * view,
@@ -297,13 +302,20 @@ template <class Model>
 void expect_vertexs_bits() {
   std::mt19937 rng(20261203);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-  Seen seen;
+  Seen seen, seen_spot;
   int compared = 0;
   for (std::int64_t target : simd_targets()) {
     ForcedTarget forced(target);
-    for (int round = 0; round < kRounds; ++round) {
+    for (int round = 0; round < 2 * kRounds; ++round) {
+      // A sun of one or three cascades, or a spot light, the first light of the draw.
+      const bool spot = round % 2 == 1;
+      const int r = round / 2;
       Caster sun;
-      make_sun(rng, round % 2 == 0 ? 1 : 3, round % 3 == 0 ? 16 : 40, sun);
+      if (spot) {
+        make_spot(rng, r % 2 == 0 ? 16 : 40, sun);
+      } else {
+        make_sun(rng, r % 2 == 0 ? 1 : 3, r % 3 == 0 ? 16 : 40, sun);
+      }
       Draw draw;
       const int count = 1 + static_cast<int>(rng() % shading::kVertexBatch);
       // World positions through a model transform: object positions from the random points.
@@ -319,6 +331,13 @@ void expect_vertexs_bits() {
       }
       split_cascades(rng, points, sun);
       make_draw(rng, sun, draw);
+      if (spot) {
+        const float outer = sun.cone_degrees * (0.8f + 0.4f * unit(rng));
+        draw.lights[0] = shading::prepare_light(Light::spot(
+            sun.position, sun.travel, outer * unit(rng), outer, glm::vec3(1.0f, 0.9f, 0.8f),
+            1.0f + unit(rng) * 4.0f, rng() % 2 ? 0.0f : 2.0f + unit(rng) * 2.0f));
+        draw.lights[0].shadow = &sun.maps;
+      }
       ASSERT_TRUE(Model::batch_vertices(draw.uniforms));
       shading::VertexBatchInput in;
       in.count = count;
@@ -341,13 +360,22 @@ void expect_vertexs_bits() {
               << k << ": " << out[k][n] << ", vertex() gives " << expected[k];
         }
         const glm::vec3 world(draw.uniforms.model * glm::vec4(positions[n], 1.0f));
-        seen.add(sun.maps, world, vertex.normal);
+        if (!spot) {
+          seen.add(sun.maps, world, vertex.normal);
+        } else if (glm::dot(vertex.normal, shading::incident(draw.lights[0], world).direction) >
+                       0.0f &&
+                   shading::incident(draw.lights[0], world).radiance != glm::vec3(0.0f)) {
+          seen_spot.add(sun.maps, world, vertex.normal);  // the spot's shadow is seen
+        }
         ++compared;
       }
     }
   }
   EXPECT_GT(compared, 500 * static_cast<int>(simd_targets().size()));
   seen.expect_each_kind();
+  EXPECT_GT(seen_spot.lit, 50);
+  EXPECT_GT(seen_spot.shadowed, 50);
+  EXPECT_GT(seen_spot.partly, 50);
 }
 
 TEST(ShadowBatch, GouraudVerticesGiveVertexsBitsOnEveryTarget) {
@@ -403,8 +431,8 @@ TEST(ShadowBatch, LookupGivesShadowVisibilitysBitsOnEveryTarget) {
 }
 
 // The Lambert draws without positions keep the scalar model (the frame had no shadows when they
-// were recorded); a spot light's perspective map keeps the Gouraud models' scalar vertex().
-TEST(ShadowBatch, DeclinesPerspectiveMapsAtVerticesAndUnpositionedLambert) {
+// were recorded); the others take shadowed draws, perspective maps included.
+TEST(ShadowBatch, DeclinesShadowsOnlyForUnpositionedLambert) {
   std::mt19937 rng(5);
   Caster sun;
   make_sun(rng, 1, 16, sun);
@@ -417,7 +445,7 @@ TEST(ShadowBatch, DeclinesPerspectiveMapsAtVerticesAndUnpositionedLambert) {
   EXPECT_FALSE(shading::UnpositionedLambertShading::batch_shades(draw.uniforms));
   sun.maps.maps[0].perspective = true;
   EXPECT_TRUE(shading::LambertShading::batch_shades(draw.uniforms));
-  EXPECT_FALSE(shading::GouraudShading::batch_vertices(draw.uniforms));
+  EXPECT_TRUE(shading::GouraudShading::batch_vertices(draw.uniforms));
   draw.lights[0].shadow = nullptr;  // unshadowed, as before
   EXPECT_TRUE(shading::UnpositionedLambertShading::batch_shades(draw.uniforms));
 }

@@ -1,8 +1,8 @@
 // The SIMD vertex form of the Gouraud models (shading/vertex_batch.cpp) gives vertex()'s bits on
-// every SIMD target: lit by zero to three directional lights, from any side, with and without
-// texture coordinates, vertex colors and a highlight, for every run length; and it declines
-// point and spot lights. The batch form of the unlit and Lambert models (surface_vertex_batch)
-// gives their vertex()'s bits too.
+// every SIMD target: lit by zero to three directional, point and spot lights (with and without
+// a range), from any side, inside and outside spot cones, with and without texture
+// coordinates, vertex colors and a highlight, for every run length. The batch form of the unlit and
+// Lambert models (surface_vertex_batch) gives their vertex()'s bits too.
 #include "shading/vertex_batch.hpp"
 
 #include <gtest/gtest.h>
@@ -12,7 +12,9 @@
 #include <vector>
 
 #include "core/simd_target.hpp"
+#include "facet/light.hpp"
 #include "shading/kernels.hpp"
+#include "shading/lighting.hpp"
 #include "shading/lit_models.hpp"
 #include "shading/models.hpp"
 #include "support/forced_target.hpp"
@@ -46,8 +48,27 @@ void randomize(std::mt19937& rng, Draw& d) {
   d.material.use_vertex_colors = rng() % 2 == 0;
   d.frame.light_count = static_cast<int>(rng() % 4);
   for (int i = 0; i < d.frame.light_count; ++i) {
-    d.lights[i].to_light = glm::normalize(glm::vec3(any(rng), any(rng), any(rng)) + 0.01f);
-    d.lights[i].radiance = {unit(rng) * 3.0f, unit(rng) * 3.0f, unit(rng) * 3.0f};
+    // Directional, point or spot, among the vertices (the world positions reach about 25 from
+    // the origin), with and without a range, the spot cones narrow to wide.
+    const glm::vec3 color(unit(rng), unit(rng), unit(rng));
+    const glm::vec3 position = glm::vec3(any(rng), any(rng), any(rng)) * 12.0f;
+    const glm::vec3 direction = glm::vec3(any(rng), any(rng), any(rng)) + 0.01f;
+    const float intensity = 1.0f + unit(rng) * 100.0f;
+    const float range = rng() % 2 ? 0.0f : 5.0f + unit(rng) * 30.0f;
+    const float outer = 5.0f + unit(rng) * 85.0f, inner = outer * unit(rng);
+    switch (rng() % 3) {
+      case 0:
+        d.lights[i] =
+            shading::prepare_light(Light::directional(direction, color, unit(rng) * 3.0f));
+        break;
+      case 1:
+        d.lights[i] = shading::prepare_light(Light::point(position, color, intensity, range));
+        break;
+      default:
+        d.lights[i] = shading::prepare_light(
+            Light::spot(position, direction, inner, outer, color, intensity, range));
+        break;
+    }
   }
   d.frame.lights = d.lights;
   d.material.specular_color = {unit(rng), unit(rng), unit(rng)};
@@ -60,6 +81,8 @@ void expect_vertex_batch_gives_vertexs_bits() {
   std::mt19937 rng(20261122);
   std::uniform_real_distribution<float> any(-3.0f, 3.0f), unit(0.0f, 1.0f);
   int compared = 0;
+  // Vertices a point or spot light reaches (inside its range and cone) and does not.
+  int reached = 0, unreached = 0;
   for (std::int64_t target : simd_targets()) {
     ForcedTarget forced(target);
     for (int round = 0; round < 60; ++round) {
@@ -103,10 +126,18 @@ void expect_vertex_batch_gives_vertexs_bits() {
               << k << ": " << out[k][n] << ", vertex() gives " << expected[k];
         }
         ++compared;
+        const glm::vec3 world(draw.uniforms.model * glm::vec4(positions[n], 1.0f));
+        for (int i = 0; i < draw.frame.light_count; ++i) {
+          if (draw.lights[i].type == LightType::directional) continue;
+          const glm::vec3 radiance = shading::incident(draw.lights[i], world).radiance;
+          ++(radiance == glm::vec3(0.0f) ? unreached : reached);
+        }
       }
     }
   }
   EXPECT_GT(compared, 1000);
+  EXPECT_GT(reached, 500);
+  EXPECT_GT(unreached, 500);
 }
 
 TEST(VertexBatch, GouraudGivesVertexsBitsOnEveryTarget) {
@@ -123,17 +154,15 @@ TEST(VertexBatch, SurfaceModelsGiveVertexsBits) {
   expect_vertex_batch_gives_vertexs_bits<shading::UnpositionedLambertShading>();
 }
 
-TEST(VertexBatch, GouraudDeclinesPointAndSpotLights) {
+TEST(VertexBatch, GouraudTakesEveryLight) {
   Draw draw;
   std::mt19937 rng(3);
   randomize(rng, draw);
-  draw.frame.light_count = 2;
-  draw.lights[0].type = draw.lights[1].type = LightType::directional;
-  EXPECT_TRUE(GouraudShading::batch_vertices(draw.uniforms));
+  draw.frame.light_count = 3;
+  draw.lights[0].type = LightType::directional;
   draw.lights[1].type = LightType::point;
-  EXPECT_FALSE(GouraudShading::batch_vertices(draw.uniforms));
-  draw.lights[1].type = LightType::spot;
-  EXPECT_FALSE(GouraudShading::batch_vertices(draw.uniforms));
+  draw.lights[2].type = LightType::spot;
+  EXPECT_TRUE(GouraudShading::batch_vertices(draw.uniforms));
 }
 
 }  // namespace

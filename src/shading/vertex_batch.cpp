@@ -13,6 +13,7 @@
 #include <cstring>
 
 #include "shading/batch_math-inl.h"
+#include "shading/light_batch-inl.h"
 #include "shading/lighting.hpp"
 #include "shading/shadow_batch-inl.h"
 #include "shading/surface.hpp"
@@ -21,13 +22,48 @@ HWY_BEFORE_NAMESPACE();
 namespace facet::shading::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
+// light_vertex() for a vector of vertices: the diffuse and specular light at world positions
+// p with unit normals n, the shadows looked up in the lanes of `active` only.
+HWY_INLINE void LightVertices(const DrawUniforms& u, const Vec3V& p, const Vec3V& n,
+                              BatchMask active, BatchV diffuse[3], BatchV specular[3]) {
+  const BatchTag d;
+  const Material& material = *u.material;
+  const Vec3V eye = Set3(u.frame->eye);
+  const Vec3V view = SafeNormalize({hn::Sub(eye.x, p.x), hn::Sub(eye.y, p.y), hn::Sub(eye.z, p.z)});
+  for (int c = 0; c < 3; ++c) {
+    diffuse[c] = hn::Set(d, u.frame->ambient[c]);
+    specular[c] = hn::Zero(d);
+  }
+  for (int i = 0; i < u.frame->light_count; ++i) {
+    const LightData& light = u.frame->lights[i];
+    const IncidentV in = Incident(light, p);
+    const BatchV n_dot_l = Dot(n, in.direction);
+    const BatchMask lit = hn::Not(hn::Le(n_dot_l, hn::Zero(d)));  // the scalar loop's continue
+    const Vec3V received = ReceivedRadiance(light, in, p, n, hn::And(lit, active));
+    // blinn_phong_specular(): the half vector, then the power.
+    const Vec3V half = Normalize({hn::Add(in.direction.x, view.x), hn::Add(in.direction.y, view.y),
+                                  hn::Add(in.direction.z, view.z)});
+    const BatchV highlight =
+        material.shininess == 0.0f
+            ? hn::Set(d, 1.0f)
+            : PortablePow(StdMax(Dot(n, half), hn::Zero(d)), material.shininess);
+    const BatchV radiance[3] = {received.x, received.y, received.z};
+    for (int c = 0; c < 3; ++c) {
+      diffuse[c] =
+          hn::IfThenElse(lit, hn::Add(diffuse[c], hn::Mul(radiance[c], n_dot_l)), diffuse[c]);
+      // (radiance x specular color) x highlight, as light_vertex's vec3 products.
+      const BatchV tint = hn::Mul(radiance[c], hn::Set(d, material.specular_color[c]));
+      specular[c] =
+          hn::IfThenElse(lit, hn::Add(specular[c], hn::Mul(tint, highlight)), specular[c]);
+    }
+  }
+}
+
 void GouraudVertexBatch(const DrawUniforms& u, const VertexBatchInput& in, GouraudLayout layout,
                         float (*out)[kVertexBatch]) {
   const BatchTag d;
   const int lanes = static_cast<int>(hn::Lanes(d));
   const glm::mat4& m = u.model;
-  const Material& material = *u.material;
-  const Vec3V eye = Set3(u.frame->eye);
   for (int j = 0; j < in.count; j += lanes) {
     // glm::vec3(u.model * glm::vec4(position, 1)), the positions a vector of each axis (the
     // last few zero-padded: computed, then ignored).
@@ -44,51 +80,11 @@ void GouraudVertexBatch(const DrawUniforms& u, const VertexBatchInput& in, Goura
       world[c] = hn::Add(hn::Add(hn::Mul(hn::Set(d, m[0][c]), x), hn::Mul(hn::Set(d, m[1][c]), y)),
                          hn::Add(hn::Mul(hn::Set(d, m[2][c]), z), hn::Set(d, m[3][c] * 1.0f)));
     }
-    // light_vertex().
     const Vec3V normal{hn::Load(d, in.normal[0] + j), hn::Load(d, in.normal[1] + j),
                        hn::Load(d, in.normal[2] + j)};
-    const Vec3V view = SafeNormalize(
-        {hn::Sub(eye.x, world[0]), hn::Sub(eye.y, world[1]), hn::Sub(eye.z, world[2])});
-    BatchV diffuse[3] = {hn::Set(d, u.frame->ambient.x), hn::Set(d, u.frame->ambient.y),
-                         hn::Set(d, u.frame->ambient.z)};
-    BatchV specular[3] = {hn::Zero(d), hn::Zero(d), hn::Zero(d)};
-    for (int i = 0; i < u.frame->light_count; ++i) {
-      const LightData& l = u.frame->lights[i];  // directional: incident() is to_light and radiance
-      const Vec3V to_light = Set3(l.to_light);
-      const BatchV n_dot_l = Dot(normal, to_light);
-      const auto lit = hn::Not(hn::Le(n_dot_l, hn::Zero(d)));  // the scalar loop's continue
-      // blinn_phong_specular(): the half vector, then the power.
-      const Vec3V half = Normalize(
-          {hn::Add(to_light.x, view.x), hn::Add(to_light.y, view.y), hn::Add(to_light.z, view.z)});
-      const BatchV highlight =
-          material.shininess == 0.0f
-              ? hn::Set(d, 1.0f)
-              : PortablePow(StdMax(Dot(normal, half), hn::Zero(d)), material.shininess);
-      // received_radiance(): the radiance after the light's shadow at the vertex.
-      BatchV visibility = hn::Set(d, 1.0f);
-      if (l.shadow) {
-        const auto active = hn::FirstN(d, static_cast<std::size_t>(in.count - j));
-        visibility = ShadowVisibility(*l.shadow, {world[0], world[1], world[2]}, normal,
-                                      hn::And(lit, active));
-      }
-      for (int c = 0; c < 3; ++c) {
-        const BatchV radiance = hn::Set(d, l.radiance[c]);
-        if (l.shadow) {  // (radiance x visibility) x specular color x highlight
-          const BatchV received = hn::Mul(radiance, visibility);
-          diffuse[c] =
-              hn::IfThenElse(lit, hn::Add(diffuse[c], hn::Mul(received, n_dot_l)), diffuse[c]);
-          const BatchV tint = hn::Mul(received, hn::Set(d, material.specular_color[c]));
-          specular[c] =
-              hn::IfThenElse(lit, hn::Add(specular[c], hn::Mul(tint, highlight)), specular[c]);
-          continue;
-        }
-        diffuse[c] =
-            hn::IfThenElse(lit, hn::Add(diffuse[c], hn::Mul(radiance, n_dot_l)), diffuse[c]);
-        const BatchV tint = hn::Set(d, l.radiance[c] * material.specular_color[c]);
-        specular[c] =
-            hn::IfThenElse(lit, hn::Add(specular[c], hn::Mul(tint, highlight)), specular[c]);
-      }
-    }
+    BatchV diffuse[3], specular[3];
+    LightVertices(u, {world[0], world[1], world[2]}, normal,
+                  hn::FirstN(d, static_cast<std::size_t>(in.count - j)), diffuse, specular);
     for (int c = 0; c < 3; ++c) {
       hn::Store(diffuse[c], d, out[layout.diffuse + c] + j);
       hn::Store(specular[c], d, out[layout.diffuse + 3 + c] + j);
@@ -115,9 +111,7 @@ namespace facet::shading {
 
 HWY_EXPORT(GouraudVertexBatch);
 
-bool gouraud_batches_vertices(const DrawUniforms& u) {
-  return only_directional_lights(u) && only_orthographic_shadows(u);
-}
+bool gouraud_batches_vertices(const DrawUniforms&) { return true; }
 
 GouraudVertexBatchKernel gouraud_vertex_batch_kernel(SimdTarget target) {
   return HWY_DISPATCH_TABLE(GouraudVertexBatch)[target];

@@ -1,10 +1,10 @@
-// Shadowed draws on the SIMD batch paths: the batch kernels of the models lit per pixel
-// (shade_batch.cpp) and the Gouraud models' vertex batch (vertex_batch.cpp), with their shadow
-// lookup (shadow_batch-inl.h), give fragment()'s and vertex()'s bits on every SIMD target, for
-// random points and normals against random depth maps of a sun with one or three cascades:
-// points inside a map, partly over its edges, outside it and beyond its far plane; the lookup
-// itself gives shadow_visibility's bits for a spot light's perspective map too, behind the light
-// included; and the batch forms decline what they leave to the scalar models.
+// Shadowed draws on the SIMD batch paths, on every SIMD target: the batch kernels of the models
+// lit per pixel (shade_batch.cpp) give fragment()'s bits, and the Gouraud models' vertex batch
+// (vertex_batch.cpp) the portable target's, with their shadow lookup (shadow_batch-inl.h), for
+// random points and normals against random depth maps of a sun with one or three cascades and of
+// a spot light: points inside a map, partly over its edges, outside it, beyond its far plane and
+// behind the light; the lookup itself gives shadow_visibility's bits; and the batch forms decline
+// what they leave to the scalar models.
 #include <gtest/gtest.h>
 #include <hwy/targets.h>
 
@@ -297,88 +297,93 @@ TEST(ShadowBatch, PhongAndBlinnPhongGiveFragmentsBitsOnEveryTarget) {
   expect_fragments_bits<shading::BlinnPhongShading>();
 }
 
-// The Gouraud models look the shadow up per vertex: their vertex batch against vertex().
+// The Gouraud models look the shadow up per vertex: their vertex batch on every target against
+// the portable target's.
 template <class Model>
 void expect_vertexs_bits() {
+  const std::vector<std::int64_t> targets = simd_targets();
+  const std::int64_t portable = portable_simd_target();
+  ASSERT_NE(portable, 0);
   std::mt19937 rng(20261203);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   Seen seen, seen_spot;
   int compared = 0;
-  for (std::int64_t target : simd_targets()) {
-    ForcedTarget forced(target);
-    for (int round = 0; round < 2 * kRounds; ++round) {
-      // A sun of one or three cascades, or a spot light, the first light of the draw.
-      const bool spot = round % 2 == 1;
-      const int r = round / 2;
-      Caster sun;
-      if (spot) {
-        make_spot(rng, r % 2 == 0 ? 16 : 40, sun);
-      } else {
-        make_sun(rng, r % 2 == 0 ? 1 : 3, r % 3 == 0 ? 16 : 40, sun);
-      }
-      Draw draw;
-      const int count = 1 + static_cast<int>(rng() % shading::kVertexBatch);
-      // World positions through a model transform: object positions from the random points.
-      draw.uniforms.model = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, -0.25f, 1.0f));
-      const glm::mat4 to_object = glm::inverse(draw.uniforms.model);
-      std::vector<glm::vec3> positions(count), points(count);
-      alignas(64) float normal[3][shading::kVertexBatch] = {};
-      for (int n = 0; n < count; ++n) {
-        points[n] = random_point(rng, sun, static_cast<int>(rng() % sun.maps.count));
-        positions[n] = glm::vec3(to_object * glm::vec4(points[n], 1.0f));
-        const glm::vec3 nv = shading::safe_normalize(random_normal(rng, sun));  // unit, or none
-        for (int c = 0; c < 3; ++c) normal[c][n] = nv[c];
-      }
-      split_cascades(rng, points, sun);
-      make_draw(rng, sun, draw);
-      if (spot) {
-        const float outer = sun.cone_degrees * (0.8f + 0.4f * unit(rng));
-        draw.lights[0] = shading::prepare_light(Light::spot(
-            sun.position, sun.travel, outer * unit(rng), outer, glm::vec3(1.0f, 0.9f, 0.8f),
-            1.0f + unit(rng) * 4.0f, rng() % 2 ? 0.0f : 2.0f + unit(rng) * 2.0f));
-        draw.lights[0].shadow = &sun.maps;
-      }
-      ASSERT_TRUE(Model::batch_vertices(draw.uniforms));
-      shading::VertexBatchInput in;
-      in.count = count;
-      in.positions = positions.data();
-      for (int c = 0; c < 3; ++c) in.normal[c] = normal[c];
-      alignas(64) float out[shading::kMaxVaryings][shading::kVertexBatch];
+  for (int round = 0; round < 6 * kRounds; ++round) {
+    // A sun of one or three cascades, or a spot light, the first light of the draw.
+    const bool spot = round % 2 == 1;
+    const int r = round / 2;
+    Caster sun;
+    if (spot) {
+      make_spot(rng, r % 2 == 0 ? 16 : 40, sun);
+    } else {
+      make_sun(rng, r % 2 == 0 ? 1 : 3, r % 3 == 0 ? 16 : 40, sun);
+    }
+    Draw draw;
+    const int count = 1 + static_cast<int>(rng() % shading::kVertexBatch);
+    // World positions through a model transform: object positions from the random points.
+    draw.uniforms.model = glm::translate(glm::mat4(1.0f), glm::vec3(0.5f, -0.25f, 1.0f));
+    const glm::mat4 to_object = glm::inverse(draw.uniforms.model);
+    std::vector<glm::vec3> positions(count), points(count);
+    alignas(64) float normal[3][shading::kVertexBatch] = {};
+    for (int n = 0; n < count; ++n) {
+      points[n] = random_point(rng, sun, static_cast<int>(rng() % sun.maps.count));
+      positions[n] = glm::vec3(to_object * glm::vec4(points[n], 1.0f));
+      const glm::vec3 nv = shading::safe_normalize(random_normal(rng, sun));  // unit, or none
+      for (int c = 0; c < 3; ++c) normal[c][n] = nv[c];
+    }
+    split_cascades(rng, points, sun);
+    make_draw(rng, sun, draw);
+    if (spot) {
+      const float outer = sun.cone_degrees * (0.8f + 0.4f * unit(rng));
+      draw.lights[0] = shading::prepare_light(Light::spot(
+          sun.position, sun.travel, outer * unit(rng), outer, glm::vec3(1.0f, 0.9f, 0.8f),
+          1.0f + unit(rng) * 4.0f, rng() % 2 ? 0.0f : 2.0f + unit(rng) * 2.0f));
+      draw.lights[0].shadow = &sun.maps;
+    }
+    shading::VertexBatchInput in;
+    in.count = count;
+    in.positions = positions.data();
+    for (int c = 0; c < 3; ++c) in.normal[c] = normal[c];
+    alignas(64) float expected[shading::kMaxVaryings][shading::kVertexBatch];
+    alignas(64) float out[shading::kMaxVaryings][shading::kVertexBatch];
+    {
+      ForcedTarget forced(portable);
+      draw.kernels = shading::shading_kernels(chosen_simd_target());
+      Model::vertex_batch(draw.uniforms, in, expected);
+    }
+    for (std::int64_t target : targets) {
+      ForcedTarget forced(target);
+      draw.kernels = shading::shading_kernels(chosen_simd_target());
       Model::vertex_batch(draw.uniforms, in, out);
       for (int n = 0; n < count; ++n) {
-        shading::VertexInput vertex;
-        vertex.position = positions[n];
-        vertex.normal = {normal[0][n], normal[1][n], normal[2][n]};
-        vertex.color = glm::vec4(1.0f);
-        vertex.texcoord = glm::vec2(0.0f);
-        vertex.tangent = glm::vec4(0.0f);
-        float expected[Model::kVaryings];
-        Model::vertex(vertex, draw.uniforms, expected);
         for (int k = 0; k < Model::kVaryings; ++k) {
-          ASSERT_EQ(std::memcmp(&expected[k], &out[k][n], sizeof(float)), 0)
+          ASSERT_EQ(std::memcmp(&expected[k][n], &out[k][n], sizeof(float)), 0)
               << hwy::TargetName(target) << ", round " << round << ", vertex " << n << ", varying "
-              << k << ": " << out[k][n] << ", vertex() gives " << expected[k];
-        }
-        const glm::vec3 world(draw.uniforms.model * glm::vec4(positions[n], 1.0f));
-        if (!spot) {
-          seen.add(sun.maps, world, vertex.normal);
-        } else if (glm::dot(vertex.normal, shading::incident(draw.lights[0], world).direction) >
-                       0.0f &&
-                   shading::incident(draw.lights[0], world).radiance != glm::vec3(0.0f)) {
-          seen_spot.add(sun.maps, world, vertex.normal);  // the spot's shadow is seen
+              << k << ": " << out[k][n] << ", " << hwy::TargetName(portable) << " gives "
+              << expected[k][n];
         }
         ++compared;
       }
     }
+    for (int n = 0; n < count; ++n) {
+      const glm::vec3 world(draw.uniforms.model * glm::vec4(positions[n], 1.0f));
+      const glm::vec3 nv(normal[0][n], normal[1][n], normal[2][n]);
+      if (!spot) {
+        seen.add(sun.maps, world, nv);
+      } else if (glm::dot(nv, shading::incident(draw.lights[0], world).direction) > 0.0f &&
+                 shading::incident(draw.lights[0], world).radiance != glm::vec3(0.0f)) {
+        seen_spot.add(sun.maps, world, nv);  // the spot's shadow is seen
+      }
+    }
   }
-  EXPECT_GT(compared, 500 * static_cast<int>(simd_targets().size()));
+  EXPECT_GT(compared, 500 * static_cast<int>(targets.size()));
   seen.expect_each_kind();
   EXPECT_GT(seen_spot.lit, 50);
   EXPECT_GT(seen_spot.shadowed, 50);
   EXPECT_GT(seen_spot.partly, 50);
 }
 
-TEST(ShadowBatch, GouraudVerticesGiveVertexsBitsOnEveryTarget) {
+TEST(ShadowBatch, GouraudVerticesGivePortableBitsOnEveryTarget) {
   expect_vertexs_bits<shading::GouraudShading>();
   expect_vertexs_bits<shading::ConstantColorGouraudShading>();
 }
@@ -431,7 +436,7 @@ TEST(ShadowBatch, LookupGivesShadowVisibilitysBitsOnEveryTarget) {
 }
 
 // The Lambert draws without positions keep the scalar model (the frame had no shadows when they
-// were recorded); the others take shadowed draws, perspective maps included.
+// were recorded); the other models' batch forms take shadowed draws, perspective maps included.
 TEST(ShadowBatch, DeclinesShadowsOnlyForUnpositionedLambert) {
   std::mt19937 rng(5);
   Caster sun;
@@ -441,11 +446,9 @@ TEST(ShadowBatch, DeclinesShadowsOnlyForUnpositionedLambert) {
   draw.frame.light_count = 1;
   EXPECT_TRUE(shading::LambertShading::batch_shades(draw.uniforms));
   EXPECT_TRUE(shading::PhongShading::batch_shades(draw.uniforms));
-  EXPECT_TRUE(shading::GouraudShading::batch_vertices(draw.uniforms));
   EXPECT_FALSE(shading::UnpositionedLambertShading::batch_shades(draw.uniforms));
   sun.maps.maps[0].perspective = true;
   EXPECT_TRUE(shading::LambertShading::batch_shades(draw.uniforms));
-  EXPECT_TRUE(shading::GouraudShading::batch_vertices(draw.uniforms));
   draw.lights[0].shadow = nullptr;  // unshadowed, as before
   EXPECT_TRUE(shading::UnpositionedLambertShading::batch_shades(draw.uniforms));
 }

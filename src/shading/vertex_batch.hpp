@@ -34,7 +34,8 @@ struct GouraudLayout {
   bool with_surface;
 };
 
-// out[k][n]: varying k of vertex n, as the Gouraud model of that layout's vertex() writes it.
+// out[k][n]: varying k of vertex n in that layout, n < count (the light is stored a vector at a
+// time: some entries past count are written too).
 using GouraudVertexBatchKernel = void (*)(const DrawUniforms& u, const VertexBatchInput& in,
                                           GouraudLayout layout, float (*out)[kVertexBatch]);
 GouraudVertexBatchKernel gouraud_vertex_batch_kernel(SimdTarget target);

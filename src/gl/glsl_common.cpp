@@ -121,7 +121,7 @@ vec3 cook_torrance(vec3 albedo, float metallic, float roughness_in, vec3 n, vec3
   return diffuse + specular;
 }
 
-// ---- Gouraud: Blinn-Phong at a vertex (lit_models.hpp's GouraudLight::light_vertex). ----
+// ---- Gouraud: Blinn-Phong at a vertex (shading/vertex_batch.cpp's LightVertices). ----
 uniform vec3 u_specular_color;
 uniform float u_shininess;
 

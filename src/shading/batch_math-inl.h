@@ -52,6 +52,13 @@ HWY_INLINE Vec3V Scale(const Vec3V& v, BatchV s) {
 
 HWY_INLINE Vec3V Negate(const Vec3V& v) { return {hn::Neg(v.x), hn::Neg(v.y), hn::Neg(v.z)}; }
 
+// glm::cross(a, b).
+HWY_INLINE Vec3V Cross(const Vec3V& a, const Vec3V& b) {
+  return {hn::Sub(hn::Mul(a.y, b.z), hn::Mul(b.y, a.z)),
+          hn::Sub(hn::Mul(a.z, b.x), hn::Mul(b.z, a.x)),
+          hn::Sub(hn::Mul(a.x, b.y), hn::Mul(b.x, a.y))};
+}
+
 // glm::reflect(i, n): i - (n * dot(n, i)) * 2.
 HWY_INLINE Vec3V Reflect(const Vec3V& i, const Vec3V& n) {
   const BatchV n_dot_i = Dot(n, i);

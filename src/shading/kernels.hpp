@@ -15,11 +15,12 @@ struct ShadingKernels {
   ShadeBatchKernel shade_batch = nullptr;
   SampleBatchKernel sample_batch = nullptr;
   GouraudVertexBatchKernel gouraud_vertex_batch = nullptr;
+  GouraudLightBatchKernel gouraud_light_batch = nullptr;
 };
 
 inline ShadingKernels shading_kernels(SimdTarget target) {
   return {target, shade_batch_kernel(target), sample_batch_kernel(target),
-          gouraud_vertex_batch_kernel(target)};
+          gouraud_vertex_batch_kernel(target), gouraud_light_batch_kernel(target)};
 }
 
 // How the built-in models are shaded (models.hpp; the raster loop, pipeline/raster/raster.hpp,

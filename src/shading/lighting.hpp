@@ -48,18 +48,4 @@ inline glm::vec3 received_radiance(const LightData& light, const IncidentLight& 
   return in.radiance * shadow_visibility(*light.shadow, p, n);
 }
 
-// Whether every shadow map of the frame's lights is orthographic (a directional light's): those
-// the batch kernels look up (shadow_batch-inl.h); a spot light's perspective maps keep the scalar
-// models.
-inline bool only_orthographic_shadows(const DrawUniforms& u) {
-  for (int i = 0; i < u.frame->light_count; ++i) {
-    const ShadowMaps* maps = u.frame->lights[i].shadow;
-    if (maps == nullptr) continue;
-    for (int k = 0; k < maps->count; ++k) {
-      if (maps->maps[k].perspective) return false;
-    }
-  }
-  return true;
-}
-
 }  // namespace facet::shading

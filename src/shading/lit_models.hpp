@@ -26,42 +26,39 @@ using BlinnPhongShading = PhongShadingT<true>;
 
 // Gouraud: Blinn-Phong evaluated at the vertices, shadows included (a shadow is sampled at
 // each vertex, not per pixel); the pixel interpolates diffuse and specular light. GouraudLight is
-// the lighting both layouts share: the diffuse light at slots kDiffuse..kDiffuse+2, the specular
-// light at the next three, after the surface layout's texture coordinate and color if kWithSurface.
+// what both layouts share: the lighting, by the SIMD kernels of vertex_batch.hpp alone, writing
+// the diffuse light at slots kDiffuse..kDiffuse+2 and the specular light at the next three, after
+// the surface layout's texture coordinate and color if kWithSurface.
 template <int kDiffuse, bool kWithSurface>
 struct GouraudLight {
   static constexpr int kDiffuseSlot = kDiffuse;
   static constexpr int kSpecularSlot = kDiffuse + 3;
-  static constexpr int kNormalSlot = -1;  // lit in vertex(); see face_without_normals()
+  static constexpr int kNormalSlot = -1;  // lit per vertex; see face_without_normals()
   static constexpr GouraudLayout kLayout{kDiffuse, kWithSurface};
-  static void light_vertex(glm::vec3 position, glm::vec3 normal, const DrawUniforms& u,
-                           float* out) {
-    glm::vec3 view = safe_normalize(u.frame->eye - position);
-    glm::vec3 diffuse = u.frame->ambient, specular(0.0f);
-    for (int i = 0; i < u.frame->light_count; ++i) {
-      const LightData& light = u.frame->lights[i];
-      IncidentLight in = incident(light, position);
-      float n_dot_l = glm::dot(normal, in.direction);
-      if (n_dot_l <= 0.0f) continue;
-      in.radiance = received_radiance(light, in, position, normal);
-      diffuse += in.radiance * n_dot_l;
-      specular += in.radiance * u.material->specular_color *
-                  blinn_phong_specular(normal, view, in.direction, u.material->shininess);
-    }
-    store(out + kDiffuseSlot, diffuse);
-    store(out + kSpecularSlot, specular);
-  }
-  // vertex() for a run of vertices at once, with SIMD (vertex_batch.hpp), for draws lit by
-  // directional lights only.
-  static bool batch_vertices(const DrawUniforms& u) { return gouraud_batches_vertices(u); }
+  // The vertex stage lights every draw's vertices a run at a time.
+  static bool batch_vertices(const DrawUniforms&) { return true; }
   static void vertex_batch(const DrawUniforms& u, const VertexBatchInput& in,
                            float (*out)[kVertexBatch]) {
     u.frame->kernels->gouraud_vertex_batch(u, in, kLayout, out);
   }
-  // A mesh without normals is lit per triangle with its face normal at its centre.
+  // vertex(), every model's one-vertex form (models.hpp): the batch of one. (The vertex stage
+  // itself takes the batch form for every draw.)
+  static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
+    alignas(64) float normal[3][kVertexBatch] = {{in.normal.x}, {in.normal.y}, {in.normal.z}};
+    alignas(64) float varyings[kSpecularSlot + 3][kVertexBatch];
+    vertex_batch(u, {1, &in.position, {normal[0], normal[1], normal[2]}, &in.texcoord, &in.color},
+                 varyings);
+    for (int k = 0; k < kSpecularSlot + 3; ++k) out[k] = varyings[k][0];
+  }
+  // A mesh without normals is lit per triangle with its face normal at its centre: the light of
+  // that one point at its three corners.
   static void face_without_normals(glm::vec3 normal, glm::vec3 centre, const DrawUniforms& u,
                                    float* v[3]) {
-    for (int i = 0; i < 3; ++i) light_vertex(centre, normal, u, v[i]);  // writes the light
+    alignas(64) float light[6][kVertexBatch];
+    u.frame->kernels->gouraud_light_batch(u, {1, &centre, &normal}, light);
+    for (int i = 0; i < 3; ++i) {
+      for (int k = 0; k < 6; ++k) v[i][kDiffuseSlot + k] = light[k][0];
+    }
   }
 };
 
@@ -70,13 +67,7 @@ struct GouraudLight {
 struct GouraudShading : GouraudLight<kGouraudDiffuseSlot, true>, BatchForm<BatchModel::gouraud> {
   static constexpr int kVaryings = 12;
   static constexpr int kBaseColorTexcoord = kTexcoordSlot;
-  static_assert(kColorSlot + 4 <= kDiffuseSlot);
-  static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
-    glm::vec3 position = glm::vec3(u.model * glm::vec4(in.position, 1.0f));
-    light_vertex(position, in.normal, u, out);
-    store(out + kTexcoordSlot, in.texcoord);
-    store(out + kColorSlot, material_color(in, u));
-  }
+  static_assert(kColorSlot + 4 <= kDiffuseSlot && kSpecularSlot + 3 == kVaryings);
 };
 
 // Gouraud for a draw whose surface color is one constant: no base color or emissive map, no
@@ -86,9 +77,7 @@ struct GouraudShading : GouraudLight<kGouraudDiffuseSlot, true>, BatchForm<Batch
 struct ConstantColorGouraudShading : GouraudLight<kConstantGouraudDiffuseSlot, false>,
                                      BatchForm<BatchModel::constant_gouraud> {
   static constexpr int kVaryings = 6;
-  static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
-    light_vertex(glm::vec3(u.model * glm::vec4(in.position, 1.0f)), in.normal, u, out);
-  }
+  static_assert(kSpecularSlot + 3 == kVaryings);
 };
 
 // Physically based: Cook-Torrance (GGX, Smith, Schlick), metallic-roughness, occlusion,

@@ -70,13 +70,6 @@ HWY_INLINE Vec3V Emission(const Material& m, const ShadeInput& in, int j) {
   return e;
 }
 
-// glm::cross(a, b).
-HWY_INLINE Vec3V Cross(const Vec3V& a, const Vec3V& b) {
-  return {hn::Sub(hn::Mul(a.y, b.z), hn::Mul(b.y, a.z)),
-          hn::Sub(hn::Mul(a.z, b.x), hn::Mul(b.z, a.x)),
-          hn::Sub(hn::Mul(a.x, b.y), hn::Mul(b.x, a.y))};
-}
-
 // Normal mapping of unit normal n: the map's tangent-space normal (scaled in x and y by the
 // material's normal scale) through the tangent frame, the interpolated tangent made orthogonal to
 // n (Gram-Schmidt) and n x tangent signed by the handedness; where the pixel has a tangent and

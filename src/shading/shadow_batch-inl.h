@@ -1,9 +1,10 @@
 // The shadow lookup of shadow_map.hpp (shadow_visibility of a light's ShadowMaps) for a vector of
 // surface points at once, for the batch kernels of the models lit per pixel (shade_batch.cpp) and
-// per vertex (vertex_batch.cpp), which take directional lights only, so orthographic maps only.
-// Included inside each file's HWY_NAMESPACE after batch_math-inl.h, the Highway "-inl.h" way.
-// Each step repeats shadow_visibility with the same IEEE operations in the same order (no fused
-// multiply-add), so each lane gets the scalar lookup's bits; shadow_batch_test checks it.
+// per vertex (vertex_batch.cpp): a directional light's orthographic maps and a spot light's
+// perspective map, whose slopes are found per lane. Included inside each file's HWY_NAMESPACE
+// after batch_math-inl.h, the Highway "-inl.h" way. Each step repeats shadow_visibility with the
+// same IEEE operations in the same order (no fused multiply-add), so each lane gets the scalar
+// lookup's bits; shadow_batch_test checks it.
 #if defined(FACET_SHADING_SHADOW_BATCH_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef FACET_SHADING_SHADOW_BATCH_INL_H_
 #undef FACET_SHADING_SHADOW_BATCH_INL_H_
@@ -55,23 +56,46 @@ HWY_INLINE void FootprintRow(const float* const* row, BatchV depth[4]) {
   }
 }
 
-// shadow_visibility(map, p, n) for an orthographic map in the lanes of `live`; the other lanes'
-// results are not used. The 4 x 4 footprint's depths are read a lane at a time, a row of four
-// texels with one load where the footprint lies within the map.
-HWY_INLINE BatchV OrthographicShadow(const ShadowMap& map, const Vec3V& p, const Vec3V& n,
-                                     BatchMask live) {
+// MapSlopes, lane by lane: map_slopes() of each lane's derivatives.
+struct MapSlopesV {
+  Vec3V ray, slope_x, slope_y;
+  BatchV texel_depth;
+};
+
+HWY_INLINE MapSlopesV SetSlopes(const MapSlopes& m) {
+  return {Set3(m.ray), Set3(m.slope_x), Set3(m.slope_y), hn::Set(BatchTag(), m.texel_depth)};
+}
+
+// map_slopes(grad_x, grad_y, grad_z); glm::length is sqrt(dot(v, v)).
+HWY_INLINE MapSlopesV MapSlopesOf(const Vec3V& grad_x, const Vec3V& grad_y, const Vec3V& grad_z) {
+  MapSlopesV m;
+  m.ray = Cross(grad_x, grad_y);
+  m.slope_x = Cross(grad_z, grad_y);
+  m.slope_y = Cross(grad_x, grad_z);
+  m.texel_depth = hn::Div(hn::Abs(Dot(grad_z, m.ray)),
+                          hn::Mul(hn::Sqrt(Dot(m.ray, m.ray)), hn::Sqrt(Dot(grad_x, grad_x))));
+  return m;
+}
+
+// Row c of map.world_to_map times (p, 1): glm's mat4 x vec4, (m0 x + m1 y) + (m2 z + m3 w).
+HWY_INLINE BatchV MapRow(const ShadowMap& map, int c, const Vec3V& p) {
+  const BatchTag d;
+  const glm::mat4& t = map.world_to_map;
+  return hn::Add(hn::Add(hn::Mul(hn::Set(d, t[0][c]), p.x), hn::Mul(hn::Set(d, t[1][c]), p.y)),
+                 hn::Add(hn::Mul(hn::Set(d, t[2][c]), p.z), hn::Set(d, t[3][c] * 1.0f)));
+}
+
+// shadow_visibility(map, p, n) in the lanes of `live` once the point's map coordinates m (x, y
+// divided by w, and z) and the map's slopes there are known: the receiver-plane bias and the
+// filtered compares, the same for both kinds of map. The other lanes give 1 (their results are
+// not used). The 4 x 4 footprint's depths are read a lane at a time, a row of four texels with
+// one load where the footprint lies within the map.
+HWY_INLINE BatchV FilteredShadow(const ShadowMap& map, const BatchV m[3], const MapSlopesV& slopes,
+                                 const Vec3V& n, BatchMask live) {
   const BatchTag d;
   const hn::RebindToSigned<BatchTag> di;
-  const glm::mat4& t = map.world_to_map;
-  // glm's mat4 x vec4: (m0 x + m1 y) + (m2 z + m3 w), w = 1.
-  BatchV m[3];
-  for (int c = 0; c < 3; ++c) {
-    m[c] = hn::Add(hn::Add(hn::Mul(hn::Set(d, t[0][c]), p.x), hn::Mul(hn::Set(d, t[1][c]), p.y)),
-                   hn::Add(hn::Mul(hn::Set(d, t[2][c]), p.z), hn::Set(d, t[3][c] * 1.0f)));
-  }
-  const MapSlopes& slopes = map.slopes;
-  const BatchV det = Dot(n, Set3(slopes.ray));
-  const BatchV max_slope = hn::Set(d, kMaxSlopeTexels * slopes.texel_depth);
+  const BatchV det = Dot(n, slopes.ray);
+  const BatchV max_slope = hn::Mul(hn::Set(d, kMaxSlopeTexels), slopes.texel_depth);
   const BatchV min_slope = hn::Neg(max_slope);
   // The slopes where det != 0 (NaN included), std::clamp'ed; 0 elsewhere.
   const BatchMask has_det = hn::Not(hn::Eq(det, hn::Zero(d)));
@@ -81,11 +105,11 @@ HWY_INLINE BatchV OrthographicShadow(const ShadowMap& map, const Vec3V& p, const
                           hn::IfThenElse(hn::Lt(max_slope, v), max_slope, v));
   };
   const BatchV slope_x =
-      hn::IfThenElseZero(has_det, clamp(hn::Mul(Dot(n, Set3(slopes.slope_x)), inv_det)));
+      hn::IfThenElseZero(has_det, clamp(hn::Mul(Dot(n, slopes.slope_x), inv_det)));
   const BatchV slope_y =
-      hn::IfThenElseZero(has_det, clamp(hn::Mul(Dot(n, Set3(slopes.slope_y)), inv_det)));
+      hn::IfThenElseZero(has_det, clamp(hn::Mul(Dot(n, slopes.slope_y), inv_det)));
   const BatchV bias =
-      hn::Add(hn::Set(d, slopes.texel_depth * kConstantBiasTexels),
+      hn::Add(hn::Mul(slopes.texel_depth, hn::Set(d, kConstantBiasTexels)),
               hn::Mul(hn::Set(d, kSlopeBiasScale), hn::Add(hn::Abs(slope_x), hn::Abs(slope_y))));
   const BatchV z = hn::Sub(m[2], bias);
   const BatchV one = hn::Set(d, 1.0f);
@@ -165,25 +189,37 @@ HWY_INLINE BatchV OrthographicShadow(const ShadowMap& map, const Vec3V& p, const
   return hn::IfThenElse(hn::Or(all_see, hn::Not(live)), one, partly);
 }
 
-// shadow_visibility(map, p, n) for a perspective map (a spot light's), a lane at a time.
+// shadow_visibility(map, p, n) for an orthographic map (a directional light's): its slopes are
+// the map's, the same everywhere.
+HWY_INLINE BatchV OrthographicShadow(const ShadowMap& map, const Vec3V& p, const Vec3V& n,
+                                     BatchMask live) {
+  const BatchV m[3] = {MapRow(map, 0, p), MapRow(map, 1, p), MapRow(map, 2, p)};
+  return FilteredShadow(map, m, SetSlopes(map.slopes), n, live);
+}
+
+// shadow_visibility(map, p, n) for a perspective map (a spot light's): x, y and z divided by w,
+// lit behind the light (w not positive), and the slopes from each lane's derivatives, the
+// matrix's rows less m_k times its w row, over w (the quotient rule).
 HWY_INLINE BatchV PerspectiveShadow(const ShadowMap& map, const Vec3V& p, const Vec3V& n,
                                     BatchMask live) {
   const BatchTag d;
-  constexpr int kMaxLanes = 8;
-  alignas(64) float px[kMaxLanes], py[kMaxLanes], pz[kMaxLanes];
-  alignas(64) float nx[kMaxLanes], ny[kMaxLanes], nz[kMaxLanes], out[kMaxLanes];
-  alignas(64) std::int32_t wanted[kMaxLanes];
-  hn::Store(p.x, d, px), hn::Store(p.y, d, py), hn::Store(p.z, d, pz);
-  hn::Store(n.x, d, nx), hn::Store(n.y, d, ny), hn::Store(n.z, d, nz);
-  const hn::RebindToSigned<BatchTag> di;
-  hn::Store(hn::VecFromMask(di, hn::RebindMask(di, live)), di, wanted);
-  const int lanes = static_cast<int>(hn::Lanes(d));
-  for (int lane = 0; lane < lanes; ++lane) {
-    out[lane] = wanted[lane] ? shadow_visibility(map, {px[lane], py[lane], pz[lane]},
-                                                 {nx[lane], ny[lane], nz[lane]})
-                             : 1.0f;
+  const BatchV w = MapRow(map, 3, p);
+  live = hn::And(live, hn::Gt(w, hn::Zero(d)));  // !(h.w > 0): behind the light
+  if (hn::AllFalse(d, live)) return hn::Set(d, 1.0f);
+  const BatchV inv_w = hn::Div(hn::Set(d, 1.0f), w);
+  const BatchV m[3] = {hn::Mul(MapRow(map, 0, p), inv_w), hn::Mul(MapRow(map, 1, p), inv_w),
+                       hn::Mul(MapRow(map, 2, p), inv_w)};
+  const glm::mat4& t = map.world_to_map;
+  Vec3V grad[3];
+  for (int k = 0; k < 3; ++k) {
+    // (t[i][k] - m_k * t[i][3]) * inv_w for each axis i.
+    BatchV axis[3];
+    for (int i = 0; i < 3; ++i) {
+      axis[i] = hn::Mul(hn::Sub(hn::Set(d, t[i][k]), hn::Mul(m[k], hn::Set(d, t[i][3]))), inv_w);
+    }
+    grad[k] = {axis[0], axis[1], axis[2]};
   }
-  return hn::Load(d, out);
+  return FilteredShadow(map, m, MapSlopesOf(grad[0], grad[1], grad[2]), n, live);
 }
 
 HWY_INLINE BatchV MapShadow(const ShadowMap& map, const Vec3V& p, const Vec3V& n, BatchMask live) {

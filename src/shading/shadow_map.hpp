@@ -2,8 +2,8 @@
 // passes (pipeline/shadow/shadow_passes.cpp) before the color pass, and the filtered lookup that
 // says how much of a light reaches a surface point (shadow_visibility), read per pixel by the lit
 // models (models.hpp, lit_models.hpp) through LightData::shadow. The batch kernels repeat the
-// lookup for orthographic maps, a vector of points at once, bit for bit (shadow_batch-inl.h):
-// a change here is a change there.
+// lookup, a vector of points at once, bit for bit (shadow_batch-inl.h): a change here is a change
+// there.
 #pragma once
 
 #include <algorithm>

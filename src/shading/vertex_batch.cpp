@@ -1,8 +1,8 @@
-// Batch vertex lighting of the Gouraud model (see vertex_batch.hpp). Highway compiles this file
+// Batch vertex lighting of the Gouraud models (see vertex_batch.hpp). Highway compiles this file
 // once per SIMD target (foreach_target.h re-includes it); the frame fetches the chosen target's
-// kernel (pipeline/kernels.hpp). Each step repeats the Gouraud models' vertex() with the same IEEE
-// operations in the same order (glm's mat4 x vec4 is (m0 x + m1 y) + (m2 z + m3 w); no fused
-// multiply-add), so every target gives its bits; vertex_batch_test checks it.
+// kernels (pipeline/kernels.hpp). Each step is written once, lane by lane, with the same IEEE
+// operations in the same order on every target (glm's mat4 x vec4 is (m0 x + m1 y) + (m2 z + m3 w);
+// no fused multiply-add), so every target gives the same bits; vertex_batch_test checks it.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "shading/vertex_batch.cpp"
 #include "shading/vertex_batch.hpp"
@@ -13,7 +13,7 @@
 #include <cstring>
 
 #include "shading/batch_math-inl.h"
-#include "shading/lighting.hpp"
+#include "shading/light_batch-inl.h"
 #include "shading/shadow_batch-inl.h"
 #include "shading/surface.hpp"
 
@@ -21,78 +21,99 @@ HWY_BEFORE_NAMESPACE();
 namespace facet::shading::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
+// The light at a vector of world positions p of unit normals n: the ambient light, then for
+// each light that the side of the normal faces (n . l > 0), its radiance after its shadow
+// (looked up in the lanes of `active` only) times n . l as diffuse light, and times the
+// material's specular color and the Blinn-Phong highlight (blinn_phong_specular of brdf.hpp) as
+// specular light.
+HWY_INLINE void LightVertices(const DrawUniforms& u, const Vec3V& p, const Vec3V& n,
+                              BatchMask active, BatchV diffuse[3], BatchV specular[3]) {
+  const BatchTag d;
+  const Material& material = *u.material;
+  const Vec3V eye = Set3(u.frame->eye);
+  const Vec3V view = SafeNormalize({hn::Sub(eye.x, p.x), hn::Sub(eye.y, p.y), hn::Sub(eye.z, p.z)});
+  for (int c = 0; c < 3; ++c) {
+    diffuse[c] = hn::Set(d, u.frame->ambient[c]);
+    specular[c] = hn::Zero(d);
+  }
+  for (int i = 0; i < u.frame->light_count; ++i) {
+    const LightData& light = u.frame->lights[i];
+    const IncidentV in = Incident(light, p);
+    const BatchV n_dot_l = Dot(n, in.direction);
+    const BatchMask lit = hn::Not(hn::Le(n_dot_l, hn::Zero(d)));  // NaN lights nothing either
+    const Vec3V received = ReceivedRadiance(light, in, p, n, hn::And(lit, active));
+    // The half vector, normalized, then the power (x^0 = 1).
+    const Vec3V half = Normalize({hn::Add(in.direction.x, view.x), hn::Add(in.direction.y, view.y),
+                                  hn::Add(in.direction.z, view.z)});
+    const BatchV highlight =
+        material.shininess == 0.0f
+            ? hn::Set(d, 1.0f)
+            : PortablePow(StdMax(Dot(n, half), hn::Zero(d)), material.shininess);
+    const BatchV radiance[3] = {received.x, received.y, received.z};
+    for (int c = 0; c < 3; ++c) {
+      diffuse[c] =
+          hn::IfThenElse(lit, hn::Add(diffuse[c], hn::Mul(radiance[c], n_dot_l)), diffuse[c]);
+      // (radiance x specular color) x highlight.
+      const BatchV tint = hn::Mul(radiance[c], hn::Set(d, material.specular_color[c]));
+      specular[c] =
+          hn::IfThenElse(lit, hn::Add(specular[c], hn::Mul(tint, highlight)), specular[c]);
+    }
+  }
+}
+
+// The vectors v[j], v[j + 1], ... of count, a vector of each axis; the lanes past count zero
+// (computed, then ignored).
+HWY_INLINE Vec3V LoadVec3s(const glm::vec3* v, int j, int count) {
+  const BatchTag d;
+  constexpr std::size_t kLanes = hn::MaxLanes(d);
+  Vec3V out;
+  if (j + static_cast<int>(hn::Lanes(d)) <= count) {
+    hn::LoadInterleaved3(d, &v[j].x, out.x, out.y, out.z);
+  } else {
+    alignas(64) float padded[3 * kLanes] = {};
+    std::memcpy(padded, &v[j], (count - j) * sizeof(glm::vec3));
+    hn::LoadInterleaved3(d, padded, out.x, out.y, out.z);
+  }
+  return out;
+}
+
+// Lights the vector of points from j on and stores the light at out[first..first + 5] + j.
+HWY_INLINE void LightAndStore(const DrawUniforms& u, const Vec3V& p, const Vec3V& n, int j,
+                              int count, int first, float (*out)[kVertexBatch]) {
+  const BatchTag d;
+  BatchV diffuse[3], specular[3];
+  LightVertices(u, p, n, hn::FirstN(d, static_cast<std::size_t>(count - j)), diffuse, specular);
+  for (int c = 0; c < 3; ++c) {
+    hn::Store(diffuse[c], d, out[first + c] + j);
+    hn::Store(specular[c], d, out[first + 3 + c] + j);
+  }
+}
+
+void GouraudLightBatch(const DrawUniforms& u, const WorldPoints& in, float (*out)[kVertexBatch]) {
+  const int lanes = static_cast<int>(hn::Lanes(BatchTag()));
+  for (int j = 0; j < in.count; j += lanes) {
+    LightAndStore(u, LoadVec3s(in.positions, j, in.count), LoadVec3s(in.normals, j, in.count), j,
+                  in.count, 0, out);
+  }
+}
+
 void GouraudVertexBatch(const DrawUniforms& u, const VertexBatchInput& in, GouraudLayout layout,
                         float (*out)[kVertexBatch]) {
   const BatchTag d;
   const int lanes = static_cast<int>(hn::Lanes(d));
   const glm::mat4& m = u.model;
-  const Material& material = *u.material;
-  const Vec3V eye = Set3(u.frame->eye);
   for (int j = 0; j < in.count; j += lanes) {
-    // glm::vec3(u.model * glm::vec4(position, 1)), the positions a vector of each axis (the
-    // last few zero-padded: computed, then ignored).
-    BatchV x, y, z;
-    if (j + lanes <= in.count) {
-      hn::LoadInterleaved3(d, &in.positions[j].x, x, y, z);
-    } else {
-      alignas(64) float padded[3 * kVertexBatch] = {};
-      std::memcpy(padded, &in.positions[j], (in.count - j) * sizeof(glm::vec3));
-      hn::LoadInterleaved3(d, padded, x, y, z);
-    }
+    // glm::vec3(u.model * glm::vec4(position, 1)).
+    const Vec3V object = LoadVec3s(in.positions, j, in.count);
     BatchV world[3];
     for (int c = 0; c < 3; ++c) {
-      world[c] = hn::Add(hn::Add(hn::Mul(hn::Set(d, m[0][c]), x), hn::Mul(hn::Set(d, m[1][c]), y)),
-                         hn::Add(hn::Mul(hn::Set(d, m[2][c]), z), hn::Set(d, m[3][c] * 1.0f)));
+      world[c] = hn::Add(
+          hn::Add(hn::Mul(hn::Set(d, m[0][c]), object.x), hn::Mul(hn::Set(d, m[1][c]), object.y)),
+          hn::Add(hn::Mul(hn::Set(d, m[2][c]), object.z), hn::Set(d, m[3][c] * 1.0f)));
     }
-    // light_vertex().
     const Vec3V normal{hn::Load(d, in.normal[0] + j), hn::Load(d, in.normal[1] + j),
                        hn::Load(d, in.normal[2] + j)};
-    const Vec3V view = SafeNormalize(
-        {hn::Sub(eye.x, world[0]), hn::Sub(eye.y, world[1]), hn::Sub(eye.z, world[2])});
-    BatchV diffuse[3] = {hn::Set(d, u.frame->ambient.x), hn::Set(d, u.frame->ambient.y),
-                         hn::Set(d, u.frame->ambient.z)};
-    BatchV specular[3] = {hn::Zero(d), hn::Zero(d), hn::Zero(d)};
-    for (int i = 0; i < u.frame->light_count; ++i) {
-      const LightData& l = u.frame->lights[i];  // directional: incident() is to_light and radiance
-      const Vec3V to_light = Set3(l.to_light);
-      const BatchV n_dot_l = Dot(normal, to_light);
-      const auto lit = hn::Not(hn::Le(n_dot_l, hn::Zero(d)));  // the scalar loop's continue
-      // blinn_phong_specular(): the half vector, then the power.
-      const Vec3V half = Normalize(
-          {hn::Add(to_light.x, view.x), hn::Add(to_light.y, view.y), hn::Add(to_light.z, view.z)});
-      const BatchV highlight =
-          material.shininess == 0.0f
-              ? hn::Set(d, 1.0f)
-              : PortablePow(StdMax(Dot(normal, half), hn::Zero(d)), material.shininess);
-      // received_radiance(): the radiance after the light's shadow at the vertex.
-      BatchV visibility = hn::Set(d, 1.0f);
-      if (l.shadow) {
-        const auto active = hn::FirstN(d, static_cast<std::size_t>(in.count - j));
-        visibility = ShadowVisibility(*l.shadow, {world[0], world[1], world[2]}, normal,
-                                      hn::And(lit, active));
-      }
-      for (int c = 0; c < 3; ++c) {
-        const BatchV radiance = hn::Set(d, l.radiance[c]);
-        if (l.shadow) {  // (radiance x visibility) x specular color x highlight
-          const BatchV received = hn::Mul(radiance, visibility);
-          diffuse[c] =
-              hn::IfThenElse(lit, hn::Add(diffuse[c], hn::Mul(received, n_dot_l)), diffuse[c]);
-          const BatchV tint = hn::Mul(received, hn::Set(d, material.specular_color[c]));
-          specular[c] =
-              hn::IfThenElse(lit, hn::Add(specular[c], hn::Mul(tint, highlight)), specular[c]);
-          continue;
-        }
-        diffuse[c] =
-            hn::IfThenElse(lit, hn::Add(diffuse[c], hn::Mul(radiance, n_dot_l)), diffuse[c]);
-        const BatchV tint = hn::Set(d, l.radiance[c] * material.specular_color[c]);
-        specular[c] =
-            hn::IfThenElse(lit, hn::Add(specular[c], hn::Mul(tint, highlight)), specular[c]);
-      }
-    }
-    for (int c = 0; c < 3; ++c) {
-      hn::Store(diffuse[c], d, out[layout.diffuse + c] + j);
-      hn::Store(specular[c], d, out[layout.diffuse + 3 + c] + j);
-    }
+    LightAndStore(u, {world[0], world[1], world[2]}, normal, j, in.count, layout.diffuse, out);
   }
   if (!layout.with_surface) return;
   // The texture coordinate and material_color(): copies and one product, per vertex.
@@ -114,13 +135,14 @@ HWY_AFTER_NAMESPACE();
 namespace facet::shading {
 
 HWY_EXPORT(GouraudVertexBatch);
-
-bool gouraud_batches_vertices(const DrawUniforms& u) {
-  return only_directional_lights(u) && only_orthographic_shadows(u);
-}
+HWY_EXPORT(GouraudLightBatch);
 
 GouraudVertexBatchKernel gouraud_vertex_batch_kernel(SimdTarget target) {
   return HWY_DISPATCH_TABLE(GouraudVertexBatch)[target];
+}
+
+GouraudLightBatchKernel gouraud_light_batch_kernel(SimdTarget target) {
+  return HWY_DISPATCH_TABLE(GouraudLightBatch)[target];
 }
 
 }  // namespace facet::shading

@@ -1,10 +1,11 @@
-// The Gouraud model's vertex() for a run of vertices at once, with SIMD (vertex_batch.cpp,
-// compiled for every target Highway supports): the vertex stage (pipeline/geometry/vertex.cpp)
-// hands it the vertices of one vertex pass instead of calling vertex() for each. Its lighting (a
-// world position, a view direction, a normalized half vector and a power per light) is most of the
-// geometry stage's time in Gouraud-lit scenes. Same operations as GouraudShading::vertex()
-// (lit_models.hpp) lane by lane, so the same bits, shadows of directional lights included
-// (shadow_batch-inl.h); draws with point or spot lights keep vertex().
+// The Gouraud models' lighting, with SIMD, a run of vertices at once (vertex_batch.cpp, compiled
+// for every target Highway supports): the vertex stage (pipeline/geometry/vertex.cpp) hands it the
+// vertices of one vertex pass, and the models' vertex() and face_without_normals()
+// (lit_models.hpp) hand it one vertex or one triangle's centre. Its lighting (a world position, a
+// view direction, each light's incident light and shadow, a normalized half vector and a power)
+// is most of the geometry stage's time in Gouraud-lit scenes. Directional, point and spot lights,
+// shadowed or not (light_batch-inl.h, shadow_batch-inl.h); the same bits on every target,
+// vertex_batch_test checks it.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -25,9 +26,6 @@ struct VertexBatchInput {
   const glm::vec4* colors = nullptr;     // count of them, or null: white
 };
 
-// Whether gouraud_vertex_batch can light this draw: every light directional (shadowed or not).
-bool gouraud_batches_vertices(const DrawUniforms& u);
-
 // Where the Gouraud models (lit_models.hpp) keep their varyings: the diffuse light at slots
 // diffuse..diffuse+2, the specular light at diffuse+3..diffuse+5, and, when with_surface, the
 // texture coordinate and material_color() at kTexcoordSlot and kColorSlot (surface.hpp).
@@ -36,9 +34,24 @@ struct GouraudLayout {
   bool with_surface;
 };
 
-// out[k][n]: varying k of vertex n, as the Gouraud model of that layout's vertex() writes it.
+// out[k][n]: varying k of vertex n in that layout, n < count (the light is stored a vector at a
+// time: some entries past count are written too).
 using GouraudVertexBatchKernel = void (*)(const DrawUniforms& u, const VertexBatchInput& in,
                                           GouraudLayout layout, float (*out)[kVertexBatch]);
 GouraudVertexBatchKernel gouraud_vertex_batch_kernel(SimdTarget target);
+
+// Points already in world space, with their unit world normals: count of each, at most
+// kVertexBatch.
+struct WorldPoints {
+  int count = 0;
+  const glm::vec3* positions = nullptr;
+  const glm::vec3* normals = nullptr;
+};
+
+// out[k][n]: the diffuse light (k = 0..2) and the specular light (k = 3..5) at point n, as the
+// vertex batch lights its vertices once it has their world positions.
+using GouraudLightBatchKernel = void (*)(const DrawUniforms& u, const WorldPoints& in,
+                                         float (*out)[kVertexBatch]);
+GouraudLightBatchKernel gouraud_light_batch_kernel(SimdTarget target);
 
 }  // namespace facet::shading

@@ -373,6 +373,9 @@ TEST(ShadeBatch, LambertAddsEachLightFacingTheSurfaceToTheAmbient) {
   EXPECT_EQ(lambert({sun(-up)}), 0.125f);                // from below: ambient alone
   EXPECT_EQ(lambert({sun(up), sun(up, 2.0f)}), 1.625f);  // 0.5 x (0.25 + 1 + 2)
   EXPECT_EQ(lambert({lamp({0, 2, 0}, 4.0f)}), 0.625f);   // 4 / 2^2
+  shading::LightData ranged = lamp({0, 2, 0}, 4.0f);
+  ranged.inv_range_squared = 1.0f / (1.5f * 1.5f);
+  EXPECT_EQ(lambert({ranged}), 0.125f);  // beyond its range
   shading::LightData spot = lamp({0, 2, 0}, 4.0f);
   spot.type = LightType::spot;
   spot.spot_direction = -up;

@@ -18,11 +18,11 @@
 #include "core/simd_target.hpp"
 #include "facet/light.hpp"
 #include "shading/kernels.hpp"
-#include "shading/lighting.hpp"
 #include "shading/lit_models.hpp"
 #include "shading/models.hpp"
 #include "shading/shadow_map.hpp"
 #include "support/forced_target.hpp"
+#include "support/light_reference.hpp"
 #include "support/shadow_batch_probe.hpp"
 
 namespace facet::test {
@@ -176,7 +176,7 @@ void split_cascades(std::mt19937& rng, const std::vector<glm::vec3>& points, Cas
 struct Seen {
   int lit = 0, shadowed = 0, partly = 0, partly_at_edge = 0;
   void add(const ShadowMaps& maps, glm::vec3 p, glm::vec3 n) {
-    const float v = shading::shadow_visibility(maps, p, shading::safe_normalize(n));
+    const float v = shadow_visibility(maps, p, shading::safe_normalize(n));
     if (v == 1.0f) ++lit;
     if (v == 0.0f) ++shadowed;
     if (v <= 0.0f || v >= 1.0f) return;
@@ -253,7 +253,7 @@ glm::vec4 unshadowed_with_scalar_visibility(const Draw& shadowed, const float (*
       {v[shading::kNormalSlot][n], v[shading::kNormalSlot + 1][n], v[shading::kNormalSlot + 2][n]});
   for (shading::LightData& light : d.lights) {
     if (light.shadow == nullptr) continue;
-    light.radiance = light.radiance * shading::shadow_visibility(*light.shadow, p, normal);
+    light.radiance = light.radiance * shadow_visibility(*light.shadow, p, normal);
     light.shadow = nullptr;
   }
   alignas(64) float w[kShadeBatch] = {1.0f}, z[kShadeBatch] = {};
@@ -304,7 +304,7 @@ void expect_fragments_bits() {
             << hwy::TargetName(target) << ", round " << round << ", pixel " << n << ": ("
             << rgba[n][0] << ", " << rgba[n][1] << ", " << rgba[n][2] << "), fragment() gives ("
             << expected.r << ", " << expected.g << ", " << expected.b << "), visibility "
-            << shading::shadow_visibility(sun.maps, points[n], shading::safe_normalize(normals[n]));
+            << shadow_visibility(sun.maps, points[n], shading::safe_normalize(normals[n]));
         seen.add(sun.maps, points[n], normals[n]);
         ++compared;
       }
@@ -396,8 +396,8 @@ void expect_vertexs_bits() {
       const glm::vec3 nv(normal[0][n], normal[1][n], normal[2][n]);
       if (!spot) {
         seen.add(sun.maps, world, nv);
-      } else if (glm::dot(nv, shading::incident(draw.lights[0], world).direction) > 0.0f &&
-                 shading::incident(draw.lights[0], world).radiance != glm::vec3(0.0f)) {
+      } else if (glm::dot(nv, incident(draw.lights[0], world).direction) > 0.0f &&
+                 incident(draw.lights[0], world).radiance != glm::vec3(0.0f)) {
         seen_spot.add(sun.maps, world, nv);  // the spot's shadow is seen
       }
     }
@@ -444,7 +444,7 @@ TEST(ShadowBatch, LookupGivesShadowVisibilitysBitsOnEveryTarget) {
       shadow_visibility_batch(chosen_simd_target(), light.maps, points.data(), normals.data(),
                               count, visibility.data());
       for (int n = 0; n < count; ++n) {
-        const float expected = shading::shadow_visibility(light.maps, points[n], normals[n]);
+        const float expected = shadow_visibility(light.maps, points[n], normals[n]);
         ASSERT_EQ(std::memcmp(&expected, &visibility[n], sizeof expected), 0)
             << hwy::TargetName(target) << ", round " << round << ", point " << n << ": "
             << visibility[n] << ", shadow_visibility gives " << expected;

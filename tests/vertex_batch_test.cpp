@@ -17,10 +17,10 @@
 #include "core/simd_target.hpp"
 #include "facet/light.hpp"
 #include "shading/kernels.hpp"
-#include "shading/lighting.hpp"
 #include "shading/lit_models.hpp"
 #include "shading/models.hpp"
 #include "support/forced_target.hpp"
+#include "support/light_reference.hpp"
 
 namespace facet::test {
 namespace {
@@ -192,8 +192,7 @@ void expect_every_target_gives_portable_bits() {
       const glm::vec3 world(draw.uniforms.model * glm::vec4(run.positions[n], 1.0f));
       for (int i = 0; i < draw.frame.light_count; ++i) {
         if (draw.lights[i].type == LightType::directional) continue;
-        ++(shading::incident(draw.lights[i], world).radiance == glm::vec3(0.0f) ? unreached
-                                                                                : reached);
+        ++(incident(draw.lights[i], world).radiance == glm::vec3(0.0f) ? unreached : reached);
       }
     }
   }

@@ -81,7 +81,7 @@ std::shared_ptr<const Texture> normal_map_from_heights(const Texture& heights, f
 float roughness_from_shininess(float exponent) {
   // Walter et al. 2007, "Microfacet Models for Refraction", eq. 33: the Blinn-Phong exponent n
   // matches a microfacet distribution of width alpha = sqrt(2 / (n + 2)); facet's GGX takes
-  // alpha = roughness^2 (brdf.hpp), so roughness = alpha^(1/2).
+  // alpha = roughness^2 (shading/shade_batch.cpp), so roughness = alpha^(1/2).
   const float alpha = std::sqrt(2.0f / (std::max(exponent, 0.0f) + 2.0f));
   return std::sqrt(alpha);
 }

@@ -60,8 +60,8 @@ inline constexpr float kBumpDepthTexels = 13.0f;
 std::shared_ptr<const Texture> normal_map_from_heights(const Texture& heights, float strength,
                                                        const Sampler& sampler);
 
-// The perceptual roughness (brdf.hpp's, alpha = roughness^2) that matches a Phong/Blinn-Phong
-// shininess exponent: alpha = sqrt(2 / (n + 2)) (Walter et al. 2007), so
+// The perceptual roughness (shading/shade_batch.cpp's, alpha = roughness^2) that matches a
+// Phong/Blinn-Phong shininess exponent: alpha = sqrt(2 / (n + 2)) (Walter et al. 2007), so
 // roughness = (2 / (n + 2))^(1/4).
 float roughness_from_shininess(float exponent);
 

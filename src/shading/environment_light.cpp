@@ -88,9 +88,8 @@ glm::vec3 environment_light(const IrradianceHarmonics& light, const Environment&
 }
 
 glm::vec3 environment_reflection(const Environment& environment, const PbrSurface& surface,
-                                 glm::vec3 f0, glm::vec3 n, glm::vec3 v) {
+                                 glm::vec3 fresnel, glm::vec3 n, glm::vec3 v) {
   const glm::vec3 mirror = glm::reflect(-v, n);
-  const glm::vec3 fresnel = fresnel_schlick(f0, glm::dot(n, v));
   const float blur = surface.roughness * 8.0f;
   return environment_radiance(environment, mirror, blur) * fresnel *
          (1.0f - surface.roughness * 0.7f);

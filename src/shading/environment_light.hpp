@@ -42,8 +42,9 @@ glm::vec3 environment_light(const IrradianceHarmonics& light, const Environment&
                             const PbrSurface& surface, glm::vec3 f0, glm::vec3 n, glm::vec3 v);
 
 // Without image-based lighting, what reflections add to a physically based surface's ambient
-// light: the mirror direction's radiance, blurred by roughness (a mip level), through Fresnel.
+// light: the mirror direction's radiance, blurred by roughness (a mip level), through `fresnel`
+// (the surface's Fresnel reflectance at n . v).
 glm::vec3 environment_reflection(const Environment& environment, const PbrSurface& surface,
-                                 glm::vec3 f0, glm::vec3 n, glm::vec3 v);
+                                 glm::vec3 fresnel, glm::vec3 n, glm::vec3 v);
 
 }  // namespace facet::shading

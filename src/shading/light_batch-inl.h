@@ -1,8 +1,9 @@
-// The light arriving at a vector of surface points at once (incident() and received_radiance() of
-// lighting.hpp, lane by lane), for the batch kernels of the models lit per pixel (shade_batch.cpp)
-// and per vertex (vertex_batch.cpp): directional, point and spot lights, after their shadows.
-// Included inside each file's HWY_NAMESPACE after batch_math-inl.h and shadow_batch-inl.h, the
-// Highway "-inl.h" way. The same IEEE operations in the same order as the scalar functions.
+// The light arriving at a vector of surface points at once, for the batch kernels of the models
+// lit per pixel (shade_batch.cpp) and per vertex (vertex_batch.cpp): directional, point and spot
+// lights, after their shadows. Included inside each file's HWY_NAMESPACE after batch_math-inl.h
+// and shadow_batch-inl.h, the Highway "-inl.h" way. Every target computes the same IEEE
+// operations in the same order; tests check the lanes against the light written out one point at
+// a time (tests/support/light_reference.hpp).
 #if defined(FACET_SHADING_LIGHT_BATCH_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef FACET_SHADING_LIGHT_BATCH_INL_H_
 #undef FACET_SHADING_LIGHT_BATCH_INL_H_
@@ -61,8 +62,8 @@ HWY_INLINE IncidentV Incident(const LightData& light, const Vec3V& p) {
   return {direction, Scale(Set3(light.radiance), attenuation)};
 }
 
-// received_radiance(light, in, p, n) in the lanes of `wanted` (facing the light; the others'
-// results are not used): the radiance after the light's shadow, if it casts one.
+// The radiance of `in` at points p of unit normals n in the lanes of `wanted` (facing the light;
+// the others' results are not used): the radiance after the light's shadow, if it casts one.
 HWY_INLINE Vec3V ReceivedRadiance(const LightData& light, const IncidentV& in, const Vec3V& p,
                                   const Vec3V& n, BatchMask wanted) {
   if (!light.shadow) return in.radiance;

@@ -40,24 +40,6 @@
 
 namespace facet::shading {
 
-// Diffuse + ambient from every light (the classic teaching setup), each after its shadow unless
-// kShadowed is false.
-template <bool kShadowed = true>
-glm::vec3 diffuse_light(glm::vec3 albedo, glm::vec3 normal, glm::vec3 position,
-                        const DrawUniforms& u) {
-  glm::vec3 light = u.frame->ambient;
-  for (int i = 0; i < u.frame->light_count; ++i) {
-    const LightData& l = u.frame->lights[i];
-    IncidentLight in = incident(l, position);
-    const float n_dot_l = std::max(0.0f, glm::dot(normal, in.direction));
-    if (kShadowed && l.shadow && n_dot_l > 0.0f) {
-      in.radiance = received_radiance(l, in, position, normal);
-    }
-    light += in.radiance * n_dot_l;
-  }
-  return albedo * light;
-}
-
 // A display value (already what the screen should show, as an 8-bit code: debug views show
 // data, not light) as the tile stores it. Usually the code decoded to linear, which resolve's
 // sRGB encode gives back exactly (the table is exact and much cheaper than pow()). In a frame
@@ -139,8 +121,12 @@ struct FlatShading {
   }
   static void face(glm::vec3 normal, glm::vec3 centre, const DrawUniforms& u, float* v[3]) {
     glm::vec4 average = (load4(v[0]) + load4(v[1]) + load4(v[2])) / 3.0f;
-    // No shadows: one lookup at the centre would darken or light whole triangles at once.
-    glm::vec4 lit{diffuse_light<false>(glm::vec3(average), normal, centre, u), average.a};
+    // The diffuse light at the centre, by the Gouraud models' kernel (vertex_batch.hpp), without
+    // shadows: one lookup at the centre would darken or light whole triangles at once.
+    alignas(64) float light[6][kVertexBatch];
+    u.frame->kernels->gouraud_light_batch(u, {1, &centre, &normal, false}, light);
+    const glm::vec3 diffuse(light[0][0], light[1][0], light[2][0]);
+    glm::vec4 lit{glm::vec3(average) * diffuse, average.a};
     for (int i = 0; i < 3; ++i) store(v[i], lit);
   }
   static glm::vec4 fragment(const Fragment& f, const DrawUniforms&) { return load4(f.v); }

@@ -204,6 +204,18 @@ HWY_INLINE Vec3V SpecularLight(const DrawUniforms& u, bool blinn, const Vec3V& n
   return color;
 }
 
+// Schlick's Fresnel approximation, the reflectance f0 at normal incidence rising to 1 at grazing:
+// f0 + (1 - f0) k^5 with k = 1 - clamp(cos, 0, 1). SchlickK5 gives k^5, Schlick the channel's.
+HWY_INLINE FloatV SchlickK5(FloatV cos) {
+  const FloatTag d;
+  const FloatV one = hn::Set(d, 1.0f);
+  const FloatV k = hn::Sub(one, StdClamp(cos, hn::Zero(d), one));
+  return hn::Mul(hn::Mul(hn::Mul(k, k), hn::Mul(k, k)), k);
+}
+HWY_INLINE FloatV Schlick(FloatV f0, FloatV k5) {
+  return hn::Add(f0, hn::Mul(hn::Sub(hn::Set(FloatTag(), 1.0f), f0), k5));
+}
+
 // The Cook-Torrance BRDF f(l, v) for unit n, v and l ("Real Shading in Unreal Engine 4", Karis
 // 2013: GGX distribution, Smith-Schlick geometry, Schlick Fresnel), zero where n.l or n.v is not
 // positive. Roughness is clamped to [0.04, 1] so highlights stay finite. Light enters the surface
@@ -219,14 +231,8 @@ HWY_INLINE Vec3V CookTorrance(const Vec3V& albedo, FloatV metallic, FloatV rough
   const Vec3V h = Normalize({hn::Add(v.x, l.x), hn::Add(v.y, l.y), hn::Add(v.z, l.z)});
   const FloatV n_dot_h = StdMax(Dot(n, h), zero);
   const FloatV r = StdClamp(roughness, hn::Set(d, 0.04f), one);
-  // fresnel_schlick(f0, x) per channel: f0 + (1 - f0) k^5, k = 1 - clamp(x, 0, 1).
-  const auto fresnel_k5 = [&](FloatV x) {
-    const FloatV k = hn::Sub(one, StdClamp(x, zero, one));
-    return hn::Mul(hn::Mul(hn::Mul(k, k), hn::Mul(k, k)), k);
-  };
   const auto fresnel = [&](const FloatV k5, int c) {
-    const FloatV f0c = c == 0 ? f0.x : c == 1 ? f0.y : f0.z;
-    return hn::Add(f0c, hn::Mul(hn::Sub(one, f0c), k5));
+    return Schlick(c == 0 ? f0.x : c == 1 ? f0.y : f0.z, k5);
   };
   // distribution_ggx: a2 / (pi d d), d = n.h^2 (a2 - 1) + 1, a = r^2.
   const FloatV a = hn::Mul(r, r);
@@ -241,7 +247,7 @@ HWY_INLINE Vec3V CookTorrance(const Vec3V& albedo, FloatV metallic, FloatV rough
   const FloatV geometry = hn::Mul(g1(n_dot_v), g1(n_dot_l));
   const FloatV specular_scale = hn::Div(hn::Mul(distribution, geometry),
                                         hn::Mul(hn::Mul(hn::Set(d, 4.0f), n_dot_v), n_dot_l));
-  const FloatV k5_h = fresnel_k5(Dot(v, h)), k5_l = fresnel_k5(n_dot_l), k5_v = fresnel_k5(n_dot_v);
+  const FloatV k5_h = SchlickK5(Dot(v, h)), k5_l = SchlickK5(n_dot_l), k5_v = SchlickK5(n_dot_v);
   const FloatV diffuse_share = hn::Sub(one, metallic);
   const FloatV albedo_c[3] = {albedo.x, albedo.y, albedo.z};
   FloatV out[3];
@@ -314,6 +320,8 @@ HWY_INLINE Vec3V PbrLight(const DrawUniforms& u, const ShadeInput& in, int j, co
                         hn::Add(hn::Mul(albedo.z, diffuse_share), hn::Mul(f0.z, half)))};
   const Environment& environment = u.frame->lighting->environment;
   if (u.frame->environment_light != nullptr || environment.reflections) {
+    const FloatV k5 = SchlickK5(Dot(n, view));
+    const Lanes3 lanes_fresnel(Vec3V{Schlick(f0.x, k5), Schlick(f0.y, k5), Schlick(f0.z, k5)});
     Lanes3 lanes_ambient(ambient);
     const Lanes3 lanes_albedo(albedo), lanes_f0(f0), lanes_n(n), lanes_view(view);
     alignas(64) float lanes_metallic[8], lanes_roughness[8];
@@ -325,9 +333,9 @@ HWY_INLINE Vec3V PbrLight(const DrawUniforms& u, const ShadeInput& in, int j, co
         lanes_ambient.set(lane, environment_light(*u.frame->environment_light, environment, surface,
                                                   lanes_f0[lane], lanes_n[lane], lanes_view[lane]));
       } else {
-        lanes_ambient.set(
-            lane, lanes_ambient[lane] + environment_reflection(environment, surface, lanes_f0[lane],
-                                                               lanes_n[lane], lanes_view[lane]));
+        lanes_ambient.set(lane, lanes_ambient[lane] + environment_reflection(
+                                                          environment, surface, lanes_fresnel[lane],
+                                                          lanes_n[lane], lanes_view[lane]));
       }
     }
     ambient = lanes_ambient.load();
@@ -440,7 +448,7 @@ void ShadeBatch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, f
       }
       color[3] = albedo.c[3];
     } else {
-      // surface_point(): view and normal (setup reversed the normal of a two-sided back face).
+      // The surface point: view and normal (setup reversed the normal of a two-sided back face).
       Vec3V view{hn::Zero(d), hn::Zero(d), hn::Zero(d)};
       Vec3V position = view;
       if (needs_position) position = Load3(in.v, kPositionSlot, j);
@@ -453,7 +461,7 @@ void ShadeBatch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, f
       const auto active = hn::FirstN(d, static_cast<std::size_t>(in.count - j));
       if (model == BatchModel::lambert) {
         const Vec3V light = DiffuseLight(u, n, position, active);
-        color[0] = hn::Mul(albedo.c[0], light.x);  // diffuse_light(): albedo x light
+        color[0] = hn::Mul(albedo.c[0], light.x);  // albedo x light
         color[1] = hn::Mul(albedo.c[1], light.y);
         color[2] = hn::Mul(albedo.c[2], light.z);
       } else if (model == BatchModel::pbr) {

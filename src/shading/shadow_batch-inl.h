@@ -1,10 +1,16 @@
-// The shadow lookup of shadow_map.hpp (shadow_visibility of a light's ShadowMaps) for a vector of
-// surface points at once, for the batch kernels of the models lit per pixel (shade_batch.cpp) and
-// per vertex (vertex_batch.cpp): a directional light's orthographic maps and a spot light's
-// perspective map, whose slopes are found per lane. Included inside each file's HWY_NAMESPACE
-// after batch_math-inl.h, the Highway "-inl.h" way. Each step repeats shadow_visibility with the
-// same IEEE operations in the same order (no fused multiply-add), so each lane gets the scalar
-// lookup's bits; shadow_batch_test checks it.
+// The shadow lookup: the share of a light reaching each of a vector of surface points (its
+// ShadowMaps, shadow_map.hpp), for the batch kernels of the models lit per pixel (shade_batch.cpp)
+// and per vertex (vertex_batch.cpp): a directional light's orthographic maps and a spot light's
+// perspective map, whose slopes are found per lane. Percentage-closer filtering over a 4 x 4
+// texel footprint, the separable tent weights (1 - fx, 1, 1, fx) of a 3 x 3 grid of bilinear
+// compares, so the result moves smoothly as the point moves. Each compare is against the
+// receiver's own plane extended to that texel's centre (receiver-plane depth bias: MapSlopes), so
+// a plane never shadows itself however far the footprint reaches, plus the bias of
+// shadow_map.hpp. Outside the map, behind a spot light or beyond the map's far plane, lit.
+// Included inside each file's HWY_NAMESPACE after batch_math-inl.h, the Highway "-inl.h" way.
+// Every target computes the same IEEE operations in the same order (no fused multiply-add);
+// shadow_batch_test checks each lane against the lookup written out one point at a time
+// (tests/support/light_reference.hpp).
 #if defined(FACET_SHADING_SHADOW_BATCH_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef FACET_SHADING_SHADOW_BATCH_INL_H_
 #undef FACET_SHADING_SHADOW_BATCH_INL_H_
@@ -85,11 +91,11 @@ HWY_INLINE BatchV MapRow(const ShadowMap& map, int c, const Vec3V& p) {
                  hn::Add(hn::Mul(hn::Set(d, t[2][c]), p.z), hn::Set(d, t[3][c] * 1.0f)));
 }
 
-// shadow_visibility(map, p, n) in the lanes of `live` once the point's map coordinates m (x, y
-// divided by w, and z) and the map's slopes there are known: the receiver-plane bias and the
-// filtered compares, the same for both kinds of map. The other lanes give 1 (their results are
-// not used). The 4 x 4 footprint's depths are read a lane at a time, a row of four texels with
-// one load where the footprint lies within the map.
+// The share of the light reaching the points in the lanes of `live`, of unit normals n, once
+// their map coordinates m (x, y divided by w, and z) and the map's slopes there are known: the
+// receiver-plane bias and the filtered compares, the same for both kinds of map. The other lanes
+// give 1 (their results are not used). The 4 x 4 footprint's depths are read a lane at a time, a
+// row of four texels with one load where the footprint lies within the map.
 HWY_INLINE BatchV FilteredShadow(const ShadowMap& map, const BatchV m[3], const MapSlopesV& slopes,
                                  const Vec3V& n, BatchMask live) {
   const BatchTag d;
@@ -189,7 +195,7 @@ HWY_INLINE BatchV FilteredShadow(const ShadowMap& map, const BatchV m[3], const 
   return hn::IfThenElse(hn::Or(all_see, hn::Not(live)), one, partly);
 }
 
-// shadow_visibility(map, p, n) for an orthographic map (a directional light's): its slopes are
+// The lookup in an orthographic map (a directional light's) at points p: its slopes are
 // the map's, the same everywhere.
 HWY_INLINE BatchV OrthographicShadow(const ShadowMap& map, const Vec3V& p, const Vec3V& n,
                                      BatchMask live) {
@@ -197,7 +203,7 @@ HWY_INLINE BatchV OrthographicShadow(const ShadowMap& map, const Vec3V& p, const
   return FilteredShadow(map, m, SetSlopes(map.slopes), n, live);
 }
 
-// shadow_visibility(map, p, n) for a perspective map (a spot light's): x, y and z divided by w,
+// The lookup in a perspective map (a spot light's) at points p: x, y and z divided by w,
 // lit behind the light (w not positive), and the slopes from each lane's derivatives, the
 // matrix's rows less m_k times its w row, over w (the quotient rule).
 HWY_INLINE BatchV PerspectiveShadow(const ShadowMap& map, const Vec3V& p, const Vec3V& n,
@@ -226,8 +232,9 @@ HWY_INLINE BatchV MapShadow(const ShadowMap& map, const Vec3V& p, const Vec3V& n
   return map.perspective ? PerspectiveShadow(map, p, n, live) : OrthographicShadow(map, p, n, live);
 }
 
-// shadow_visibility(maps, p, n) in the lanes of `wanted`, 1 in the others: each lane's cascade
-// picked as shadow_visibility picks it, each cascade a lane picks looked up for its lanes. Out of
+// The share of the light reaching points p of unit normals n in the lanes of `wanted`, 1 in the
+// others: each lane's cascade is the first whose far depth its view depth does not pass (the
+// last if it passes them all), each cascade a lane picks looked up for its lanes. Out of
 // line (and of each file's own), so that the kernels' loops keep their registers for the draws
 // without shadows.
 static HWY_NOINLINE BatchV ShadowVisibility(const ShadowMaps& maps, const Vec3V& p, const Vec3V& n,

@@ -1,9 +1,7 @@
 // Shadow maps as the lit models read them: a light's depth maps, written by the frame's shadow
-// passes (pipeline/shadow/shadow_passes.cpp) before the color pass, and the filtered lookup that
-// says how much of a light reaches a surface point (shadow_visibility), read per pixel by the lit
-// models (models.hpp, lit_models.hpp) through LightData::shadow. The batch kernels repeat the
-// lookup, a vector of points at once, bit for bit (shadow_batch-inl.h): a change here is a change
-// there.
+// passes (pipeline/shadow/shadow_passes.cpp) before the color pass, and read through
+// LightData::shadow by the filtered lookup of shadow_batch-inl.h, which says how much of the
+// light reaches a surface point.
 #pragma once
 
 #include <algorithm>
@@ -74,74 +72,6 @@ inline constexpr float kMaxSlopeTexels = 10.0f;
 inline constexpr float kConstantBiasTexels = 1.0f;
 inline constexpr float kSlopeBiasScale = 0.5f;
 
-// The share of the light reaching world position p whose unit normal is n: percentage-closer
-// filtering over a 4 x 4 texel footprint, the separable tent weights (1 - fx, 1, 1, fx) of a
-// 3 x 3 grid of bilinear compares, so the result moves smoothly as p moves. Each compare is
-// against the receiver's own plane extended to that texel's centre (receiver-plane depth bias:
-// MapSlopes), so a plane never shadows itself however far the footprint reaches, plus the bias
-// above. Outside the map, lit.
-inline float shadow_visibility(const ShadowMap& map, glm::vec3 p, glm::vec3 n) {
-  const glm::vec4 h = map.world_to_map * glm::vec4(p, 1.0f);
-  glm::vec3 m(h);
-  MapSlopes local;
-  const MapSlopes* slopes = &map.slopes;
-  if (map.perspective) {
-    if (!(h.w > 0.0f)) return 1.0f;  // behind the light
-    const float inv_w = 1.0f / h.w;
-    m *= inv_w;
-    // The derivatives here: row k of the matrix less m_k times its w row, over w (the quotient
-    // rule).
-    const glm::mat4& t = map.world_to_map;
-    const glm::vec3 w_row(t[0][3], t[1][3], t[2][3]);
-    local = map_slopes((glm::vec3(t[0][0], t[1][0], t[2][0]) - m.x * w_row) * inv_w,
-                       (glm::vec3(t[0][1], t[1][1], t[2][1]) - m.y * w_row) * inv_w,
-                       (glm::vec3(t[0][2], t[1][2], t[2][2]) - m.z * w_row) * inv_w);
-    slopes = &local;
-  }
-  const float det = glm::dot(n, slopes->ray);
-  const float max_slope = kMaxSlopeTexels * slopes->texel_depth;
-  float slope_x = 0.0f, slope_y = 0.0f;
-  if (det != 0.0f) {
-    const float inv_det = 1.0f / det;
-    slope_x = std::clamp(glm::dot(n, slopes->slope_x) * inv_det, -max_slope, max_slope);
-    slope_y = std::clamp(glm::dot(n, slopes->slope_y) * inv_det, -max_slope, max_slope);
-  }
-  const float bias = slopes->texel_depth * kConstantBiasTexels +
-                     kSlopeBiasScale * (std::abs(slope_x) + std::abs(slope_y));
-  const float z = m.z - bias;
-  if (!(z < 1.0f)) return 1.0f;  // beyond the map's far plane (or not finite): nothing behind
-  const float x0 = std::floor(m.x), y0 = std::floor(m.y);
-  const float size = static_cast<float>(map.size);
-  // Texel indices as floats first: a point far outside the map must not overflow an int.
-  if (!(x0 >= 1.0f - size && x0 < 2.0f * size && y0 >= 1.0f - size && y0 < 2.0f * size)) {
-    return 1.0f;
-  }
-  const float ax = m.x - x0, ay = m.y - y0;
-  const float wx[4] = {1.0f - ax, 1.0f, 1.0f, ax};
-  const float wy[4] = {1.0f - ay, 1.0f, 1.0f, ay};
-  // The receiver's depth at the footprint's first texel centre, (x0 - 1, y0 - 1), less the bias.
-  const float first = z - slope_x * (1.0f + ax) - slope_y * (1.0f + ay);
-  const int ix = static_cast<int>(x0) - 1, iy = static_cast<int>(y0) - 1;
-  const bool inside = ix >= 0 && iy >= 0 && ix + 4 <= map.size && iy + 4 <= map.size;
-  float lit = 0.0f;
-  int seen = 0;  // compares that see the light: all 16 give exactly 1, none exactly 0
-  for (int j = 0; j < 4; ++j) {
-    const int y = iy + j;
-    const float row_start = first + slope_y * static_cast<float>(j);
-    const std::ptrdiff_t row_index = static_cast<std::ptrdiff_t>(y) * map.size + ix;
-    float row = 0.0f;
-    for (int i = 0; i < 4; ++i) {
-      const bool in_map = inside || (ix + i >= 0 && ix + i < map.size && y >= 0 && y < map.size);
-      const bool sees =
-          !in_map || row_start + slope_x * static_cast<float>(i) <= map.depth[row_index + i];
-      if (sees) row += wx[i], ++seen;
-    }
-    lit += row * wy[j];
-  }
-  if (seen == 16) return 1.0f;
-  return seen == 0 ? 0.0f : lit * (1.0f / 9.0f);
-}
-
 // A light's maps: one, or for a sun over a deep view a cascade of them, each fitted to a slice
 // of the view's depths, nearest first, so texels near the camera are small.
 inline constexpr int kMaxShadowCascades = 4;
@@ -152,13 +82,5 @@ struct ShadowMaps {
   float far_depth[kMaxShadowCascades] = {};
   glm::vec3 eye{0.0f}, forward{0.0f, 0.0f, -1.0f};  // the view depth is (p - eye) . forward
 };
-
-// The share of the light reaching p (normal n) from the map that serves p's view depth.
-inline float shadow_visibility(const ShadowMaps& maps, glm::vec3 p, glm::vec3 n) {
-  const float depth = glm::dot(p - maps.eye, maps.forward);
-  int i = 0;
-  while (i + 1 < maps.count && depth > maps.far_depth[i]) ++i;
-  return shadow_visibility(maps.maps[i], p, n);
-}
 
 }  // namespace facet::shading

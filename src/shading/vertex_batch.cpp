@@ -24,8 +24,8 @@ namespace hn = hwy::HWY_NAMESPACE;
 // The light at a vector of world positions p of unit normals n: the ambient light, then for
 // each light that the side of the normal faces (n . l > 0), its radiance after its shadow
 // (looked up in the lanes of `active` only) times n . l as diffuse light, and times the
-// material's specular color and the Blinn-Phong highlight (blinn_phong_specular of brdf.hpp) as
-// specular light.
+// material's specular color and the Blinn-Phong highlight (max(0, n . h)^shininess, h the half
+// vector) as specular light.
 HWY_INLINE void LightVertices(const DrawUniforms& u, const Vec3V& p, const Vec3V& n,
                               BatchMask active, BatchV diffuse[3], BatchV specular[3]) {
   const BatchTag d;
@@ -77,12 +77,16 @@ HWY_INLINE Vec3V LoadVec3s(const glm::vec3* v, int j, int count) {
   return out;
 }
 
-// Lights the vector of points from j on and stores the light at out[first..first + 5] + j.
+// Lights the vector of points from j on and stores the light at out[first..first + 5] + j;
+// without the lights' shadows unless `shadows`.
 HWY_INLINE void LightAndStore(const DrawUniforms& u, const Vec3V& p, const Vec3V& n, int j,
-                              int count, int first, float (*out)[kVertexBatch]) {
+                              int count, int first, float (*out)[kVertexBatch],
+                              bool shadows = true) {
   const BatchTag d;
   BatchV diffuse[3], specular[3];
-  LightVertices(u, p, n, hn::FirstN(d, static_cast<std::size_t>(count - j)), diffuse, specular);
+  const BatchMask active = shadows ? hn::FirstN(d, static_cast<std::size_t>(count - j))
+                                   : hn::FirstN(d, 0);  // no lane looks a shadow up
+  LightVertices(u, p, n, active, diffuse, specular);
   for (int c = 0; c < 3; ++c) {
     hn::Store(diffuse[c], d, out[first + c] + j);
     hn::Store(specular[c], d, out[first + 3 + c] + j);
@@ -93,7 +97,7 @@ void GouraudLightBatch(const DrawUniforms& u, const WorldPoints& in, float (*out
   const int lanes = static_cast<int>(hn::Lanes(BatchTag()));
   for (int j = 0; j < in.count; j += lanes) {
     LightAndStore(u, LoadVec3s(in.positions, j, in.count), LoadVec3s(in.normals, j, in.count), j,
-                  in.count, 0, out);
+                  in.count, 0, out, in.shadows);
   }
 }
 

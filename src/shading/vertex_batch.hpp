@@ -41,11 +41,12 @@ using GouraudVertexBatchKernel = void (*)(const DrawUniforms& u, const VertexBat
 GouraudVertexBatchKernel gouraud_vertex_batch_kernel(SimdTarget target);
 
 // Points already in world space, with their unit world normals: count of each, at most
-// kVertexBatch.
+// kVertexBatch; lit with the lights' shadows or without (flat shading's triangles).
 struct WorldPoints {
   int count = 0;
   const glm::vec3* positions = nullptr;
   const glm::vec3* normals = nullptr;
+  bool shadows = true;
 };
 
 // out[k][n]: the diffuse light (k = 0..2) and the specular light (k = 3..5) at point n, as the

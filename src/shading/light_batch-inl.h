@@ -34,10 +34,10 @@ struct IncidentV {
   Vec3V radiance;
 };
 
-// incident(light, p): a directional light's constants; a point or spot light's direction,
-// inverse-square falloff windowed by its range, and a spot light's cone.
-HWY_INLINE IncidentV Incident(const LightData& light, const Vec3V& p) {
-  if (light.type == LightType::directional) return {Set3(light.to_light), Set3(light.radiance)};
+// A point or spot light's direction and radiance at p: inverse-square falloff windowed to reach
+// zero at the light's range (glTF KHR_lights_punctual), and a spot light's cone. Out of line, so
+// that the loops lit by directional lights alone keep their registers.
+static HWY_NOINLINE IncidentV PositionalIncident(const LightData& light, const Vec3V& p) {
   const BatchTag d;
   const BatchV one = hn::Set(d, 1.0f);
   const Vec3V to_light{hn::Sub(hn::Set(d, light.position.x), p.x),
@@ -60,6 +60,13 @@ HWY_INLINE IncidentV Incident(const LightData& light, const Vec3V& p) {
     attenuation = hn::Mul(attenuation, hn::Mul(t, t));
   }
   return {direction, Scale(Set3(light.radiance), attenuation)};
+}
+
+// The light's unit direction and radiance at points p: a directional light's are the same
+// everywhere.
+HWY_INLINE IncidentV Incident(const LightData& light, const Vec3V& p) {
+  if (light.type == LightType::directional) return {Set3(light.to_light), Set3(light.radiance)};
+  return PositionalIncident(light, p);
 }
 
 // The radiance of `in` at points p of unit normals n in the lanes of `wanted` (facing the light;

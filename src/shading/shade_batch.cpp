@@ -58,16 +58,14 @@ HWY_INLINE void LoadTexel(const float (*texel)[4], int j, FloatV t[4]) {
   hn::LoadInterleaved4(FloatTag(), &texel[j][0], t[0], t[1], t[2], t[3]);
 }
 
-// The material's emission: the emissive factor, times the emissive map's texel where it is read
-// (the raster loop samples it only for a non-zero factor).
-HWY_INLINE Vec3V Emission(const Material& m, const ShadeInput& in, int j) {
-  Vec3V e = Set3(m.emissive);
-  if (in.map_texel[kEmissiveMap] != nullptr) {
-    FloatV t[4];
-    LoadTexel(in.map_texel[kEmissiveMap], j, t);
-    e = {hn::Mul(e.x, t[0]), hn::Mul(e.y, t[1]), hn::Mul(e.z, t[2])};
-  }
-  return e;
+// The material's emission at pixels j..: the emissive factor (`factor`, the material's, set
+// once per batch), times the emissive map's texel where it is read (the raster loop samples it
+// only for a non-zero factor).
+HWY_INLINE Vec3V Emission(const Vec3V& factor, const ShadeInput& in, int j) {
+  if (in.map_texel[kEmissiveMap] == nullptr) return factor;
+  FloatV t[4];
+  LoadTexel(in.map_texel[kEmissiveMap], j, t);
+  return {hn::Mul(factor.x, t[0]), hn::Mul(factor.y, t[1]), hn::Mul(factor.z, t[2])};
 }
 
 // Normal mapping of unit normal n: the map's tangent-space normal (scaled in x and y by the
@@ -202,6 +200,22 @@ HWY_INLINE Vec3V SpecularLight(const DrawUniforms& u, bool blinn, const Vec3V& n
     }
   }
   return color;
+}
+
+// Phong's mirror reflection of the environment: the color mixed with the environment's radiance
+// from the mirror direction by the material's reflectivity, a lane at a time (a texture read per
+// lane: environment.cpp's mix_reflection), for the first `count` lanes. Out of line: it would
+// take the inlined loop's registers.
+static HWY_NOINLINE Vec3V Reflected(const DrawUniforms& u, const Vec3V& color, const Vec3V& view,
+                                    const Vec3V& n, int count) {
+  Lanes3 lanes_color(color);
+  const Lanes3 lanes_view(view), lanes_n(n);
+  count = std::min(count, static_cast<int>(hn::Lanes(FloatTag())));
+  for (int lane = 0; lane < count; ++lane) {
+    lanes_color.set(lane, mix_reflection(u.frame->lighting->environment, u.material->reflectivity,
+                                         lanes_color[lane], lanes_view[lane], lanes_n[lane]));
+  }
+  return lanes_color.load();
 }
 
 // Schlick's Fresnel approximation, the reflectance f0 at normal incidence rising to 1 at grazing:
@@ -407,44 +421,49 @@ bool ShadeConstantUnlitAsRgba(const DrawUniforms& u, const ShadeInput& in, float
   return true;
 }
 
-void ShadeBatch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
-  if (model == BatchModel::normals) return ShadeNormals(u, in, rgba);
+// The loop of one model (not the normals view), compiled per model: each holds only its own
+// steps, and the maps it reads (batch_maps) are the only ones it tests for.
+template <BatchModel kModel>
+void ShadeModel(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
+  constexpr bool kUnlit = kModel == BatchModel::unlit || kModel == BatchModel::constant_unlit;
+  constexpr bool kGouraud = kModel == BatchModel::gouraud || kModel == BatchModel::constant_gouraud;
+  constexpr bool kConstantColor =
+      kModel == BatchModel::constant_unlit || kModel == BatchModel::constant_gouraud;
+  constexpr bool kPhong = kModel == BatchModel::phong || kModel == BatchModel::blinn_phong;
+  constexpr unsigned kMaps = batch_maps(kModel);
   const bool fogged = in.fog != nullptr && in.fog->mode != FogMode::none;
-  if (model == BatchModel::constant_unlit && in.base_texel != nullptr && !fogged &&
-      in.map_texel[kEmissiveMap] == nullptr && ShadeConstantUnlitAsRgba(u, in, rgba)) {
-    return;
-  }
   const FloatTag d;
   const int lanes = static_cast<int>(hn::Lanes(d));
   const Material& m = *u.material;
   // Lambert needs no view, nor its square root and division; nor its position, unless a
   // light's direction or shadow depends on it.
-  const bool needs_view = model != BatchModel::lambert;
-  const bool needs_position = needs_view || any_shadowed_light(u) || !only_directional_lights(u);
-  const bool reflects = (model == BatchModel::phong || model == BatchModel::blinn_phong) &&
-                        m.reflectivity > 0.0f && u.frame->lighting->environment.reflections;
-  const Vec3V eye{hn::Set(d, u.frame->eye.x), hn::Set(d, u.frame->eye.y),
-                  hn::Set(d, u.frame->eye.z)};
-  const Albedo base{{hn::Set(d, u.material->base_color.r), hn::Set(d, u.material->base_color.g),
-                     hn::Set(d, u.material->base_color.b), hn::Set(d, u.material->base_color.a)}};
-  const bool constant_color =
-      model == BatchModel::constant_unlit || model == BatchModel::constant_gouraud;
+  constexpr bool kNeedsView = kModel != BatchModel::lambert;
+  const bool needs_position = kNeedsView || any_shadowed_light(u) || !only_directional_lights(u);
+  const bool reflects =
+      kPhong && m.reflectivity > 0.0f && u.frame->lighting->environment.reflections;
+  const Vec3V eye = Set3(u.frame->eye);
+  const Albedo base{{hn::Set(d, m.base_color.r), hn::Set(d, m.base_color.g),
+                     hn::Set(d, m.base_color.b), hn::Set(d, m.base_color.a)}};
+  const Vec3V emissive_factor = Set3(m.emissive);
   for (int j = 0; j < in.count; j += lanes) {
-    const Albedo albedo = LoadAlbedo(in, j, constant_color ? &base : nullptr);
-    const Vec3V emission = Emission(m, in, j);
-    const FloatV emissive[3] = {emission.x, emission.y, emission.z};
+    const Albedo albedo = LoadAlbedo(in, j, kConstantColor ? &base : nullptr);
+    Vec3V emission = emissive_factor;
+    if constexpr ((kMaps & map_bit(kEmissiveMap)) != 0) emission = Emission(emission, in, j);
     FloatV color[4];
-    if (model == BatchModel::unlit || model == BatchModel::constant_unlit) {
-      for (int c = 0; c < 3; ++c) color[c] = hn::Add(albedo.c[c], emissive[c]);
+    if constexpr (kUnlit) {
+      color[0] = hn::Add(albedo.c[0], emission.x);
+      color[1] = hn::Add(albedo.c[1], emission.y);
+      color[2] = hn::Add(albedo.c[2], emission.z);
       color[3] = hn::Add(albedo.c[3], hn::Zero(d));
-    } else if (model == BatchModel::gouraud || model == BatchModel::constant_gouraud) {
-      // GouraudLight::lit(): albedo x diffuse light + specular light, then emission.
-      const int diffuse =
-          model == BatchModel::gouraud ? kGouraudDiffuseSlot : kConstantGouraudDiffuseSlot;
+    } else if constexpr (kGouraud) {
+      // Albedo x the interpolated diffuse light + the specular light, then emission.
+      constexpr int kDiffuse =
+          kModel == BatchModel::gouraud ? kGouraudDiffuseSlot : kConstantGouraudDiffuseSlot;
+      const FloatV e[3] = {emission.x, emission.y, emission.z};
       for (int c = 0; c < 3; ++c) {
-        const FloatV lit = hn::Add(hn::Mul(albedo.c[c], hn::Load(d, in.v[diffuse + c] + j)),
-                                   hn::Load(d, in.v[diffuse + 3 + c] + j));
-        color[c] = hn::Add(lit, emissive[c]);
+        const FloatV lit = hn::Add(hn::Mul(albedo.c[c], hn::Load(d, in.v[kDiffuse + c] + j)),
+                                   hn::Load(d, in.v[kDiffuse + 3 + c] + j));
+        color[c] = hn::Add(lit, e[c]);
       }
       color[3] = albedo.c[3];
     } else {
@@ -452,23 +471,24 @@ void ShadeBatch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, f
       Vec3V view{hn::Zero(d), hn::Zero(d), hn::Zero(d)};
       Vec3V position = view;
       if (needs_position) position = Load3(in.v, kPositionSlot, j);
-      if (needs_view) {
+      if constexpr (kNeedsView) {
         view = SafeNormalize(
             {hn::Sub(eye.x, position.x), hn::Sub(eye.y, position.y), hn::Sub(eye.z, position.z)});
       }
       Vec3V n = SafeNormalize(Load3(in.v, kNormalSlot, j));
-      if (in.map_texel[kNormalMap] != nullptr) n = MappedNormal(m, in, j, n);
+      if constexpr ((kMaps & map_bit(kNormalMap)) != 0) {
+        if (in.map_texel[kNormalMap] != nullptr) n = MappedNormal(m, in, j, n);
+      }
       const auto active = hn::FirstN(d, static_cast<std::size_t>(in.count - j));
-      if (model == BatchModel::lambert) {
-        const Vec3V light = DiffuseLight(u, n, position, active);
-        color[0] = hn::Mul(albedo.c[0], light.x);  // albedo x light
-        color[1] = hn::Mul(albedo.c[1], light.y);
-        color[2] = hn::Mul(albedo.c[2], light.z);
-      } else if (model == BatchModel::pbr) {
-        const Vec3V light = PbrLight(u, in, j, n, view, position, albedo, active);
-        color[0] = light.x, color[1] = light.y, color[2] = light.z;
+      Vec3V light;
+      if constexpr (kModel == BatchModel::lambert) {
+        light = DiffuseLight(u, n, position, active);
+        light = {hn::Mul(albedo.c[0], light.x), hn::Mul(albedo.c[1], light.y),
+                 hn::Mul(albedo.c[2], light.z)};  // albedo x light
+      } else if constexpr (kModel == BatchModel::pbr) {
+        light = PbrLight(u, in, j, n, view, position, albedo, active);
       } else {
-        // specular_color(): the factor times the specular map's texel, if any.
+        // The specular color: the factor times the specular map's texel, if any.
         Vec3V specular = Set3(m.specular_color);
         if (in.map_texel[kSpecularMap] != nullptr) {
           FloatV t[4];
@@ -476,26 +496,44 @@ void ShadeBatch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, f
           specular = {hn::Mul(specular.x, t[0]), hn::Mul(specular.y, t[1]),
                       hn::Mul(specular.z, t[2])};
         }
-        Vec3V light = SpecularLight(u, model == BatchModel::blinn_phong, n, view, position, albedo,
-                                    specular, active);
-        if (reflects) {  // reflect_environment(), a lane at a time
-          Lanes3 lanes_light(light);
-          const Lanes3 lanes_view(view), lanes_n(n);
-          const int count = std::min(lanes, in.count - j);
-          for (int lane = 0; lane < count; ++lane) {
-            lanes_light.set(lane,
-                            mix_reflection(u.frame->lighting->environment, m.reflectivity,
-                                           lanes_light[lane], lanes_view[lane], lanes_n[lane]));
-          }
-          light = lanes_light.load();
-        }
-        color[0] = light.x, color[1] = light.y, color[2] = light.z;  // albedo already in
+        light = SpecularLight(u, kModel == BatchModel::blinn_phong, n, view, position, albedo,
+                              specular, active);  // albedo already in
+        if (reflects) light = Reflected(u, light, view, n, in.count - j);
       }
-      for (int c = 0; c < 3; ++c) color[c] = hn::Add(color[c], emissive[c]);
+      color[0] = hn::Add(light.x, emission.x);
+      color[1] = hn::Add(light.y, emission.y);
+      color[2] = hn::Add(light.z, emission.z);
       color[3] = albedo.c[3];
     }
     if (fogged) Fogged(*in.fog, u.frame->view_depth, in, j, color);
     StoreColors(color, ColorAt(rgba, in.rgba_row_stride, j));
+  }
+}
+
+void ShadeBatch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
+  switch (model) {
+    case BatchModel::normals:
+      return ShadeNormals(u, in, rgba);
+    case BatchModel::unlit:
+      return ShadeModel<BatchModel::unlit>(u, in, rgba);
+    case BatchModel::constant_unlit:
+      if (in.base_texel != nullptr && (in.fog == nullptr || in.fog->mode == FogMode::none) &&
+          in.map_texel[kEmissiveMap] == nullptr && ShadeConstantUnlitAsRgba(u, in, rgba)) {
+        return;
+      }
+      return ShadeModel<BatchModel::constant_unlit>(u, in, rgba);
+    case BatchModel::lambert:
+      return ShadeModel<BatchModel::lambert>(u, in, rgba);
+    case BatchModel::phong:
+      return ShadeModel<BatchModel::phong>(u, in, rgba);
+    case BatchModel::blinn_phong:
+      return ShadeModel<BatchModel::blinn_phong>(u, in, rgba);
+    case BatchModel::gouraud:
+      return ShadeModel<BatchModel::gouraud>(u, in, rgba);
+    case BatchModel::constant_gouraud:
+      return ShadeModel<BatchModel::constant_gouraud>(u, in, rgba);
+    case BatchModel::pbr:
+      return ShadeModel<BatchModel::pbr>(u, in, rgba);
   }
 }
 

@@ -183,6 +183,13 @@ struct PackedPixels {
   alignas(64) float w[kCapacity];
   alignas(64) float v[kMaxVaryings][kCapacity];
 
+  // Zeroes the 7 positions after count, which interpolate_pixels may read (and ignore) past the
+  // pixels it interpolates.
+  void pad_positions() {
+    std::fill_n(x + count, 7, std::int16_t{0});
+    std::fill_n(y + count, 7, std::int16_t{0});
+  }
+
   // Zeroes the entries from count up to the next multiple of 8 (position, depth, w and the
   // first `varyings` varyings), which the SIMD code reads (and ignores).
   void pad(int varyings) {

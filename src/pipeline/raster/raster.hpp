@@ -122,6 +122,9 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
   in.depth_stride = tile.stride;
   alignas(64) BlockFragments block;
   PackedPixels pixels;
+  // Pixels waiting in `pixels` for the next shade(): at most this many, so that interpolating a
+  // block's pixels after them, in whole vectors of up to 8, stays within the arrays.
+  constexpr int kPendingPixels = PackedPixels::kCapacity - 7;
   for (int by = by0; by <= by1; ++by) {
     const int block_y = tile.y0 + by * kBlockSize;
     in.y_begin = std::max(y0, block_y) - block_y;
@@ -165,17 +168,27 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
         out.shade_full_block(block, block_x, block_y);
         written = kBlockPixels;
       } else if (out.batches()) {
-        pixels.count = 0;
+        // The block's pixels join those of the triangle's earlier blocks, shaded together when
+        // the next block's might not fit (or at the end): one batch of many pixels instead of a
+        // batch per block, a few pixels each along the edges. The triangle covers each pixel
+        // once, so the order of its writes does not matter.
+        const int covered = std::popcount(block.mask);
+        if (pixels.count + covered > kPendingPixels) {
+          out.shade(pixels);
+          pixels.count = 0;
+        }
+        const int first = pixels.count;
         for (std::uint64_t m = block.mask; m != 0; m &= m - 1) {
           const int i = std::countr_zero(m);
           const int n = pixels.count++;
           pixels.x[n] = static_cast<std::int16_t>(block_x + i % kBlockSize);
           pixels.y[n] = static_cast<std::int16_t>(block_y + i / kBlockSize);
         }
-        pixels.pad(0);  // interpolate_pixels reads whole vectors of positions
-        tile.kernels.interpolate_pixels(t, out.fragment.planes, Shading::kVaryings, 0, pixels.count,
-                                        pixels.x, pixels.y, pixels.z, pixels.w, pixels.v);
-        written = out.shade(pixels);
+        pixels.pad_positions();  // interpolate_pixels reads whole vectors of positions
+        tile.kernels.interpolate_pixels(t, out.fragment.planes, Shading::kVaryings, first,
+                                        covered, pixels.x, pixels.y, pixels.z, pixels.w, pixels.v);
+        // Opaque draws (the only ones whose bound tightens) write every pixel they shade.
+        written = covered;
       } else {
         for (std::uint64_t m = block.mask; m != 0; m &= m - 1) {
           const int i = std::countr_zero(m);
@@ -201,6 +214,7 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
       }
     }
   }
+  if (pixels.count > 0) out.shade(pixels);
   tile.pixels_shaded += out.shaded;
 }
 

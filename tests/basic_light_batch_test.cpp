@@ -1,6 +1,7 @@
 // glmark2's per-vertex light (build, gouraud) is shaded in batches: whole blocks straight into
 // the tile, partly covered ones packed, small triangles' pixels waiting to be shaded together.
-// It draws exactly what the same model draws one pixel at a time with fragment().
+// It draws exactly what the same light draws one pixel at a time with a fragment() (the
+// interpolated colour shown as an 8-bit code, the formula of the batch kernel).
 #include <gtest/gtest.h>
 
 #include "facet/procedural.hpp"
@@ -13,7 +14,8 @@ namespace {
 
 using bench::glmark2::BasicLightShading;
 
-// The same model without a batch form: fragment() per pixel.
+// The same model without a batch form: fragment() per pixel, the interpolated colour shown as
+// glmark2 stores it (glmark2_shading.hpp).
 struct PerPixelBasicLight : shading::DisplayReferred {
   static constexpr int kVaryings = BasicLightShading::kVaryings;
   static constexpr int kNormalSlot = BasicLightShading::kNormalSlot;
@@ -21,7 +23,7 @@ struct PerPixelBasicLight : shading::DisplayReferred {
     BasicLightShading::vertex(in, u, out);
   }
   static glm::vec4 fragment(const shading::Fragment& f, const shading::DrawUniforms& u) {
-    return BasicLightShading::fragment(f, u);
+    return shading::display_value(shading::load3(f.v), u);
   }
 };
 

@@ -2,8 +2,8 @@
 // every target gives the portable target's bits, for one- and two-sided draws with and without
 // each material map, emission, fog (at a perspective or an orthographic camera's view depth),
 // reflections and the environment's light, under zero to three lights of every kind; and the
-// colors are the models' on cases worked out by hand. glmark2's shaders (bench/scenes/
-// glmark2_batch.cpp), which keep a fragment(), give its bits.
+// colors are the models' on cases worked out by hand. So too for glmark2's shaders (bench/scenes/
+// glmark2_batch.cpp), whose batch kernel is likewise their only implementation.
 #include "shading/shade_batch.hpp"
 
 #include <gtest/gtest.h>
@@ -143,9 +143,13 @@ template <class Shading>
 shading::ShadeInput shade_input(const Inputs& in, int count, const Draw& draw) {
   const float(*texel)[4] = draw.material.base_color_map ? in.texel : nullptr;
   shading::ShadeInput input{count, in.w, in.z, in.v, texel, &draw.lighting.fog};
+  constexpr unsigned kMapsRead = [] {
+    if constexpr (requires { Shading::kMapsRead; }) return Shading::kMapsRead;
+    return 0u;  // glmark2's shaders: the base color map alone
+  }();
   for (int k = 0; k < shading::kMaterialMaps; ++k) {
     const auto map = static_cast<shading::MaterialMap>(k);
-    const bool read = (Shading::kMapsRead & shading::map_bit(map)) != 0 &&
+    const bool read = (kMapsRead & shading::map_bit(map)) != 0 &&
                       material_map(draw.material, map) &&
                       (map != shading::kEmissiveMap || draw.material.emissive != glm::vec3(0.0f));
     if (read) input.map_texel[k] = in.map_texel[k];
@@ -163,9 +167,11 @@ std::int64_t portable_target(const std::vector<std::int64_t>& targets) {
 
 // Shades random batches with Shading::fragment_batch on every SIMD target and expects the
 // portable target's bits from each; draws `takes` declines are skipped (for models chosen only
-// for some draws: pipeline/record/pipeline_table.cpp).
+// for some draws: pipeline/record/pipeline_table.cpp), and `adapt` makes each random draw one
+// the model is drawn with (for models whose draws are all of a kind).
 template <class Shading>
-void expect_every_target_alike(bool (*takes)(const Draw&) = nullptr) {
+void expect_every_target_alike(bool (*takes)(const Draw&) = nullptr,
+                               void (*adapt)(Draw&) = nullptr) {
   const std::vector<std::int64_t> targets = simd_targets();
   ASSERT_GE(targets.size(), 2u);
   const std::int64_t portable = portable_target(targets);
@@ -176,6 +182,7 @@ void expect_every_target_alike(bool (*takes)(const Draw&) = nullptr) {
     fill(rng, in);
     Draw draw;
     randomize(rng, draw);
+    if (adapt) adapt(draw);
     if (takes && !takes(draw)) continue;
     // Every fourth round a whole block into rows 13 colors apart, as into a tile.
     const bool rows = round % 4 == 1;
@@ -208,69 +215,6 @@ void expect_every_target_alike(bool (*takes)(const Draw&) = nullptr) {
     }
   }
   EXPECT_GT(compared, 20 * kShadeBatch / 2 * static_cast<int>(targets.size() - 1));
-}
-
-template <class Shading>
-glm::vec4 scalar_fragment(const Inputs& in, const float (*texel)[4], int n,
-                          const shading::DrawUniforms& u) {
-  shading::Fragment f;
-  f.w = in.w[n];
-  f.z = in.z[n];
-  for (int k = 0; k < shading::kMaxVaryings; ++k) f.v[k] = in.v[k][n];
-  if (texel != nullptr) {
-    f.base_texel = {texel[n][0], texel[n][1], texel[n][2], texel[n][3]};
-    f.base_texel_ready = true;
-  }
-  glm::vec4 color = Shading::fragment(f, u);
-  shading::apply_fog(color, u.frame->view_depth(f.w, f.z), u.frame->lighting->fog);
-  return color;
-}
-
-// For the models that keep a fragment() (glmark2's shaders): compares Shading::fragment_batch
-// with fragment() (then apply_fog) over random batches, on every SIMD target; draws its
-// batch_shades declines are skipped (enough must remain), and so are those `takes` declines.
-template <class Shading>
-void expect_fragments_bits(bool (*takes)(const Draw&) = nullptr) {
-  const std::vector<std::int64_t> targets = simd_targets();
-  ASSERT_GE(targets.size(), 2u);
-  std::mt19937 rng(20261122);
-  int compared = 0;
-  for (std::int64_t target : targets) {
-    ForcedTarget forced(target);
-    for (int round = 0; round < 40; ++round) {
-      Inputs in;
-      fill(rng, in);
-      Draw draw;
-      randomize(rng, draw);
-      for (int k = 0; k < shading::kMaterialMaps; ++k) {
-        map_of(draw.material, static_cast<shading::MaterialMap>(k)) = {};  // theirs are their own
-      }
-      // A texture present: the models multiply by the texel only when the material has a map.
-      const bool textured = round % 2 == 0;
-      if (textured) draw.material.base_color_map.texture = missing_texture();
-      const float(*texel)[4] = textured ? in.texel : nullptr;
-      if (!Shading::batch_shades(draw.uniforms) || (takes && !takes(draw))) continue;
-      // Every fourth round a whole block into rows 13 colors apart, as into a tile.
-      const bool rows = round % 4 == 1;
-      const int count = rows ? kShadeBatch : 1 + static_cast<int>(rng() % kShadeBatch);
-      const int stride = rows ? 13 : 8;
-      alignas(64) float rgba[8 * 13][4];
-      shading::ShadeInput input{count, in.w, in.z, in.v, texel, &draw.lighting.fog};
-      input.rgba_row_stride = stride;
-      Shading::fragment_batch(draw.uniforms, input, rgba);
-      for (int n = 0; n < count; ++n) {
-        const glm::vec4 expected = scalar_fragment<Shading>(in, texel, n, draw.uniforms);
-        const float* color = rgba[(n / 8) * stride + n % 8];
-        ASSERT_EQ(std::memcmp(&expected, color, sizeof expected), 0)
-            << hwy::TargetName(target) << ", round " << round << ", pixel " << n << ": ("
-            << color[0] << ", " << color[1] << ", " << color[2] << ", " << color[3]
-            << "), fragment() gives (" << expected.r << ", " << expected.g << ", " << expected.b
-            << ", " << expected.a << ")";
-        ++compared;
-      }
-    }
-  }
-  EXPECT_GT(compared, 100 * static_cast<int>(simd_targets().size()));
 }
 
 TEST(ShadeBatch, LambertIsAlikeOnEveryTarget) {
@@ -532,17 +476,170 @@ TEST(ShadeBatch, PbrWhiteFurnaceNeverReflectsMoreThanArrives) {
   }
 }
 
-// glmark2's shaders (scene/glmark2_batch.cpp): they decline fog, and the textured ones need
-// their map.
-TEST(ShadeBatch, Glmark2ShadersGiveFragmentsBitsOnEveryTarget) {
+// glmark2's shaders (bench/scenes/glmark2_batch.cpp) are drawn without fog, and the textured ones
+// with their map (the scenes check both): random draws made so.
+void glmark2_draw(Draw& d) {
+  d.lighting.fog.mode = FogMode::none;
+  d.material.base_color_map.texture = missing_texture();
+}
+
+TEST(ShadeBatch, Glmark2ShadersAreAlikeOnEveryTarget) {
   using namespace bench::glmark2;
-  expect_fragments_bits<BasicLightShading>();
-  expect_fragments_bits<BasicLightTextureShading>();
-  expect_fragments_bits<BlinnPhongInfShading>();
-  expect_fragments_bits<PhongShading>();
-  expect_fragments_bits<CelShading>();
-  expect_fragments_bits<BumpPolyShading>();
-  expect_fragments_bits<BumpNormalsShading>();
+  expect_every_target_alike<BasicLightShading>(nullptr, glmark2_draw);
+  expect_every_target_alike<BasicLightTextureShading>(nullptr, glmark2_draw);
+  expect_every_target_alike<BlinnPhongInfShading>(nullptr, glmark2_draw);
+  expect_every_target_alike<PhongShading>(nullptr, glmark2_draw);
+  expect_every_target_alike<CelShading>(nullptr, glmark2_draw);
+  expect_every_target_alike<BumpPolyShading>(nullptr, glmark2_draw);
+  expect_every_target_alike<BumpNormalsShading>(nullptr, glmark2_draw);
+}
+
+// A glmark2 draw of material colour `diffuse` in a display-referred frame (its colors are the
+// 8-bit code / 255), no fog, the identity normal matrix.
+void glmark2_plain_draw(Draw& d, glm::vec4 diffuse) {
+  plain_draw(d, {});
+  d.material.base_color = diffuse;
+  d.frame.display_referred = true;
+  d.uniforms.normal_matrix = glm::mat3(1.0f);
+}
+
+// Pixel 0 shaded by Shading with `varyings` (and base colour texel `texel`, when the draw has
+// the map): the 8-bit codes it shows.
+template <class Shading>
+glm::vec3 glmark2_codes(const Draw& draw, std::initializer_list<float> varyings,
+                        glm::vec4 texel = glm::vec4(0.0f)) {
+  Inputs in;
+  int k = 0;
+  for (float v : varyings) in.v[k++][0] = v;
+  for (int c = 0; c < 4; ++c) in.texel[0][c] = texel[c];
+  alignas(64) float rgba[kShadeBatch][4];
+  Shading::fragment_batch(draw.uniforms, shade_input<Shading>(in, 1, draw), rgba);
+  EXPECT_EQ(rgba[0][3], 1.0f);
+  return glm::vec3(rgba[0][0], rgba[0][1], rgba[0][2]) * 255.0f;
+}
+
+// The codes are those of `rgb` clamped to [0, 1], rounded to the nearest (within half a code:
+// the hand-worked values are not rounded as the kernel's floats are, and some lie on a half).
+void expect_codes(glm::vec3 codes, glm::vec3 rgb, const char* what) {
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_NEAR(codes[c], 255.0f * std::clamp(rgb[c], 0.0f, 1.0f), 0.501f)
+        << what << ", channel " << c;
+  }
+}
+
+template <class Shading>
+glm::vec3 glmark2_vertex_light(const Draw& draw, glm::vec3 normal) {
+  shading::VertexInput vertex{};
+  vertex.normal = normal;
+  float out[Shading::kVaryings] = {};
+  Shading::vertex(vertex, draw.uniforms, out);
+  return {out[0], out[1], out[2]};
+}
+
+TEST(ShadeBatch, Glmark2BasicLightShowsDiffuseTimesNDotL) {
+  using namespace bench::glmark2;
+  const glm::vec3 l(2.0f / 3.0f, 2.0f / 3.0f, 1.0f / 3.0f), z(0, 0, 1);
+  Draw white;
+  glmark2_plain_draw(white, glm::vec4(1.0f));
+  const auto basic = [&](const Draw& draw, glm::vec3 n) {
+    const glm::vec3 light = glmark2_vertex_light<BasicLightShading>(draw, n);
+    return glmark2_codes<BasicLightShading>(draw, {light.x, light.y, light.z});
+  };
+  expect_codes(basic(white, z), glm::vec3(1.0f / 3.0f), "white, head-on");  // 85
+  expect_codes(basic(white, l), glm::vec3(1.0f), "white, at the light");
+  expect_codes(basic(white, -l), glm::vec3(0.0f), "white, turned away: black");
+  Draw blue;
+  glmark2_plain_draw(blue, {0, 0, 1, 1});
+  expect_codes(basic(blue, z), {0.0f, 0.0f, 1.0f / 3.0f}, "blue, head-on");
+  // The texture's: the same light times the texel.
+  Draw crate;
+  glmark2_plain_draw(crate, glm::vec4(1.0f));
+  crate.material.base_color_map.texture = missing_texture();
+  const glm::vec3 light = glmark2_vertex_light<BasicLightTextureShading>(crate, z);
+  expect_codes(glmark2_codes<BasicLightTextureShading>(crate, {light.x, light.y, light.z, 0, 0},
+                                                       {0.6f, 0.45f, 0.15f, 1.0f}),
+               {0.2f, 0.15f, 0.05f}, "texel x 1/3");
+}
+
+TEST(ShadeBatch, Glmark2BlinnPhongLightsAtTheHalfVector) {
+  using namespace bench::glmark2;
+  const glm::vec3 l(2.0f / 3.0f, 2.0f / 3.0f, 1.0f / 3.0f);
+  const glm::vec3 h = glm::vec3(1, 1, 2) / std::sqrt(6.0f);  // normalize(L + (0, 0, 1))
+  const float l_dot_h = 2.0f / std::sqrt(6.0f);              // 0.816: ^100 is 2e-9, no highlight
+  Draw draw;
+  glmark2_plain_draw(draw, glm::vec4(1.0f));  // blinn-phong-inf's colours are its own
+  const auto blinn = [&](glm::vec3 n) {
+    return glmark2_codes<BlinnPhongInfShading>(draw, {n.x, n.y, n.z});
+  };
+  // rgb = 0.1 + 0.8 max(N.L, 0) (0, 0, 1) + 0.8 max(N.H, 0)^100; N normalized first.
+  expect_codes(blinn(2.0f * l), {0.1f, 0.1f, 0.9f}, "N = L");
+  expect_codes(blinn(h), {0.9f, 0.9f, 0.9f + 0.8f * l_dot_h}, "N = H: the highlight");
+  expect_codes(blinn({0, 0, 1}), {0.1f, 0.1f, 0.1f + 0.8f / 3.0f}, "head-on");
+  expect_codes(blinn(-l), glm::vec3(0.1f), "turned away: the ambient alone");
+  // bump: white, specular 0.16: rgb = 0.1 + 0.8 max(N.L, 0) + 0.16 max(N.H, 0)^100.
+  const auto bump_poly = [&](glm::vec3 n) {
+    return glmark2_codes<BumpPolyShading>(draw, {n.x, n.y, n.z});
+  };
+  expect_codes(bump_poly(l), glm::vec3(0.9f), "bump-poly, N = L");
+  expect_codes(bump_poly(h), glm::vec3(0.1f + 0.8f * l_dot_h + 0.16f), "bump-poly, N = H");
+  expect_codes(bump_poly({0, 0, 1}), glm::vec3(0.1f + 0.8f / 3.0f), "bump-poly, head-on");
+  // bump-normals: N = normalize(NormalMatrix (texel * 2 - 1)), the map's object-space normal.
+  Draw bump;
+  glmark2_plain_draw(bump, glm::vec4(1.0f));
+  bump.material.base_color_map.texture = missing_texture();
+  const auto bump_normals = [&](glm::vec3 n) {
+    return glmark2_codes<BumpNormalsShading>(bump, {0, 0}, glm::vec4(n * 0.5f + 0.5f, 1.0f));
+  };
+  expect_codes(bump_normals({0, 0, 1}), glm::vec3(0.1f + 0.8f / 3.0f), "bump-normals, head-on");
+  expect_codes(bump_normals(h), glm::vec3(0.1f + 0.8f * l_dot_h + 0.16f), "bump-normals, N = H");
+  // Turned by the normal matrix, x -> y -> z -> x: the map's +Z is +X in the eye.
+  bump.uniforms.normal_matrix =
+      glm::mat3(glm::vec3(0, 1, 0), glm::vec3(0, 0, 1), glm::vec3(1, 0, 0));
+  expect_codes(bump_normals({0, 0, 1}), glm::vec3(0.1f + 0.8f * 2.0f / 3.0f),
+               "bump-normals, turned");
+}
+
+TEST(ShadeBatch, Glmark2PhongPeaksWhereTheLampMirrorsIntoTheEye) {
+  using namespace bench::glmark2;
+  // A pixel at eye (0, 0, -2), the lamp at (0, 1, 0): Ld = (0, 1, 2) / sqrt 5, E = (0, 0, 1).
+  const glm::vec3 ld = glm::vec3(0, 1, 2) / std::sqrt(5.0f), e(0, 0, 1);
+  const float n_dot_ld = 2.0f / std::sqrt(5.0f);  // head-on; R.E too, whose ^100 is 1e-5
+  Draw draw;
+  glmark2_plain_draw(draw, {0, 0, 1, 1});
+  const auto phong = [&](glm::vec3 n) {
+    return glmark2_codes<PhongShading>(draw, {n.x, n.y, n.z, 0.0f, 0.0f, -2.0f});
+  };
+  // rgb = 0.8 max(R.E, 0)^100 + 0.02 + 0.8 max(N.Ld, 0) x MaterialDiffuse.
+  expect_codes(phong(e), {0.02f, 0.02f, 0.02f + 0.8f * n_dot_ld}, "head-on");
+  const float half = std::sqrt((1.0f + n_dot_ld) / 2.0f);  // N.Ld for N halfway to the lamp
+  expect_codes(phong(e + ld), {0.82f, 0.82f, 0.82f + 0.8f * half}, "the mirror: R = E");
+  expect_codes(phong({0, -1, 0}), glm::vec3(0.02f), "turned from the lamp: the ambient");
+  draw.material.base_color = {1.0f, 0.5f, 0.0f, 1.0f};
+  expect_codes(phong(e), {0.02f + 0.8f * n_dot_ld, 0.02f + 0.4f * n_dot_ld, 0.02f},
+               "orange, head-on");
+}
+
+TEST(ShadeBatch, Glmark2CelHasTwoGreensAnOutlineAndAHighlight) {
+  using namespace bench::glmark2;
+  // A pixel at eye P = (0, 0, -2): v = (4, 3, 1) - P = (4, 3, 3), |v| = sqrt 34,
+  // att = sqrt 27 / sqrt 34 = 0.89, L = v / sqrt 34, V = (0, 0, 1).
+  const glm::vec3 l = glm::vec3(4, 3, 3) / std::sqrt(34.0f), v(0, 0, 1);
+  Draw draw;
+  glmark2_plain_draw(draw, {0, 0, 1, 1});  // cel ignores the material
+  const auto cel = [&](glm::vec3 n, float z = -2.0f) {
+    return glmark2_codes<CelShading>(draw, {n.x, n.y, n.z, 0.0f, 0.0f, z});
+  };
+  // Head-on: d = 3 / sqrt 34 = 0.51, att d = 0.46 >= 0.1: the lit green; V.N = 1 is past
+  // mix(0.1, 0.4, d); R.V = d, att d^10 = 0.001: no highlight.
+  expect_codes(cel(v), {0.0f, 0.6f, 0.0f}, "lit");
+  // Turned from the light (d = -0.12): the dark green, still facing the viewer.
+  expect_codes(cel({-1, 0, 1}), {0.0f, 0.3f, 0.0f}, "unlit");
+  // 60 deep the light is too weak: att = sqrt 27 / |(4, 3, 61)| = 0.085, att d < 0.1.
+  expect_codes(cel(v, -60.0f), {0.0f, 0.3f, 0.0f}, "far: too weak a light");
+  // Edge-on to the viewer (V.N = 0 < mix(0.1, 0.4, d)): the outline.
+  expect_codes(cel({1, 0, 0}), glm::vec3(0.0f), "outline");
+  // Halfway between L and V: R = V, att x 1 > 0.5: 0.7 + 0.3 x the lit green.
+  expect_codes(cel(l + v), {0.7f, 0.7f + 0.3f * 0.6f, 0.7f}, "highlight");
 }
 
 }  // namespace

@@ -1,8 +1,9 @@
-// glmark2's shaders a batch at a time (see glmark2_batch.hpp). Highway compiles this file once per
-// SIMD target; the frame fetches the chosen target's kernel (pipeline/kernels.hpp). Each step
-// repeats glmark2_shading.hpp lane by lane: glm's dot is (x*x' + y*y') + z*z', normalize is v * (1
-// / sqrt(dot)), length is sqrt(dot), reflect is I - (N * dot(N, I)) * 2, mat3 x v is (m0 x + m1 y)
-// + m2 z; std::max(a, b) keeps a unless a < b.
+// glmark2's shaders a batch at a time (see glmark2_batch.hpp), each the formula its model's comment
+// gives (glmark2_shading.hpp). Highway compiles this file once per SIMD target; the frame fetches
+// the chosen target's kernel (pipeline/kernels.hpp). The operations and their order are fixed, the
+// same on every target: dot is (x*x' + y*y') + z*z', normalize is v * (1 / sqrt(dot)), length is
+// sqrt(dot), reflect(I, N) is I - (N * dot(N, I)) * 2, mat3 x v is (m0 x + m1 y) + m2 z, and
+// max(a, b) keeps a unless a < b.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "scenes/glmark2_batch.cpp"
 #include "scenes/glmark2_batch.hpp"
@@ -21,20 +22,21 @@ using namespace shading::HWY_NAMESPACE;  // batch_math-inl.h
 using shading::DrawUniforms;
 using shading::ShadeInput;
 
-// pow100(): x^64 x^32 x^4 by repeated squaring, ((x32 x32) x32) x4.
+// x^100 for x in [0, 1] by repeated squaring: x^64 x^32 x^4, as ((x32 x32) x32) x4.
 HWY_INLINE BatchV Pow100(BatchV x) {
   const BatchV x2 = hn::Mul(x, x), x4 = hn::Mul(x2, x2), x8 = hn::Mul(x4, x4);
   const BatchV x16 = hn::Mul(x8, x8), x32 = hn::Mul(x16, x16);
   return hn::Mul(hn::Mul(hn::Mul(x32, x32), x32), x4);
 }
 
-// pow10(): x^8 x^2 with x^8 = ((x2 x2) x2) x2.
+// x^10: x^8 x^2 with x^8 = ((x2 x2) x2) x2.
 HWY_INLINE BatchV Pow10(BatchV x) {
   const BatchV x2 = hn::Mul(x, x);
   return hn::Mul(hn::Mul(hn::Mul(hn::Mul(x2, x2), x2), x2), x2);
 }
 
-// bump_light(): white Blinn-Phong with the light and half vector of the default light.
+// bump's light: white Blinn-Phong with the light and half vector of the default light,
+// 0.1 + 0.8 max(N.L, 0) + 0.16 max(N.H, 0)^100.
 HWY_INLINE Vec3V BumpLight(const Vec3V& n) {
   const BatchTag d;
   const BatchV diffuse =
@@ -50,8 +52,8 @@ void ShadeGlmark2Batch(BatchShader shader, const DrawUniforms& u, const ShadeInp
   using Shader = BatchShader;
   const BatchTag d;
   const int lanes = static_cast<int>(hn::Lanes(d));
-  // Every shader ends in unorm8_output() (glmark2_shading.hpp), a display value: its codes are
-  // stored per vector, then decoded once for the batch.
+  // Every shader's colour is shown as glmark2's RGBA8 buffer stores it, an 8-bit code per
+  // channel: the codes are stored per vector, then decoded once for the batch.
   alignas(64) std::int32_t codes[3][shading::kShadeBatch];
   for (int j = 0; j < in.count; j += lanes) {
     switch (shader) {

@@ -1,6 +1,6 @@
-// The glmark2 shading models (glmark2_shading.hpp) a batch of pixels at a time with SIMD
-// (glmark2_batch.cpp, compiled for every target Highway supports): the same formulas with the
-// same IEEE operations in the same order, so the same bits as their fragment().
+// The glmark2 shading models' pixels (glmark2_shading.hpp), a batch at a time with SIMD
+// (glmark2_batch.cpp, compiled for every target Highway supports): their only implementation,
+// the same bits on every target.
 #pragma once
 
 #include "shading/kernels.hpp"
@@ -17,23 +17,20 @@ enum class BatchShader {
   bump_normals
 };
 
-// Linear RGBA of every pixel of `in`, as the shader's fragment() gives it. glmark2's shaders
-// have no fog: the models decline fogged draws (BatchForm below). rgba holds kShadeBatch
-// colors, as for shading::ShadeBatchKernel. The kernel for `target`: the frame's
-// (FrameUniforms::kernels), as for the library's own kernels.
+// Linear RGBA of every pixel of `in`, shaded by the formula of `shader`'s model
+// (glmark2_shading.hpp), shown as an 8-bit code. No fog: glmark2 has none, and the scenes
+// draw none (in.fog is not read). The textured shaders read in.base_texel, which must be
+// there: their draws have the map (the scenes check it). rgba holds kShadeBatch colors, as for
+// shading::ShadeBatchKernel. The kernel for `target`: the frame's (FrameUniforms::kernels), as
+// for the library's own kernels.
 using Glmark2BatchKernel = void (*)(BatchShader shader, const shading::DrawUniforms& u,
                                     const shading::ShadeInput& in, float (*rgba)[4]);
 Glmark2BatchKernel glmark2_batch_kernel(SimdTarget target);
 
-// The batch hooks of a glmark2 model (see shading/kernels.hpp's BatchForm).
+// How a glmark2 model is shaded (see shading/kernels.hpp's BatchForm): by its kernel alone, for
+// every draw and every batch size.
 template <BatchShader kShader>
 struct BatchForm {
-  static bool batch_shades(const shading::DrawUniforms& u) {
-    constexpr bool kTextured =
-        kShader == BatchShader::basic_light_texture || kShader == BatchShader::bump_normals;
-    return u.frame->lighting->fog.mode == FogMode::none &&
-           (!kTextured || u.material->base_color_map);  // the texel comes sampled ahead
-  }
   static void fragment_batch(const shading::DrawUniforms& u, const shading::ShadeInput& in,
                              float (*rgba)[4]) {
     glmark2_batch_kernel(u.frame->kernels->target)(kShader, u, in, rgba);

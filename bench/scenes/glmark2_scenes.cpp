@@ -13,6 +13,7 @@
 #include <string>
 #include <utility>
 
+#include "facet/error.hpp"
 #include "facet/texture.hpp"
 #include "pipeline/record/custom_draw.hpp"
 #include "pipeline/record/pipeline_table.hpp"
@@ -71,6 +72,8 @@ class Glmark2Scene : public BenchScene {
         material_(std::move(material)),
         pipeline_(pipeline) {
     lighting_.lights.clear();  // the shading models carry glmark2's lights themselves
+    // glmark2 has no fog, and the shading models' kernel applies none (glmark2_batch.hpp).
+    if (lighting_.fog.mode != FogMode::none) throw Error("glmark2 scenes: the shaders have no fog");
   }
 
   void record(Renderer& renderer, double t, float aspect) override {
@@ -112,15 +115,29 @@ TextureMap texture_map(const std::string& file, Filter filter) {
   return map;
 }
 
+// The pipeline of glmark2 shading model Shading for `material`. The textured models read the
+// material's base colour map, which their kernel has no way to do without (glmark2_batch.hpp).
+template <class Shading>
+pipeline::DrawPipeline glmark2_pipeline(const Material& material) {
+  if constexpr (pipeline::base_color_texcoord<Shading>() >= 0) {
+    if (!material.base_color_map) {
+      throw Error("glmark2 scenes: a textured shader's material has no base colour map");
+    }
+  }
+  return pipeline::make_pipeline<Shading>();
+}
+
 const glm::vec4 kWhite{1.0f, 1.0f, 1.0f, 1.0f};
 const glm::vec4 kBlue{0.0f, 0.0f, 1.0f, 1.0f};
 
 // §2.1 build and §2.3 gouraud: per-vertex light on the fitted model.
 std::unique_ptr<BenchScene> basic_light_scene(const std::string& file, glm::vec4 diffuse) {
   Glmark2Model model = load_3ds(kModels + file);
+  Material material = material_with(diffuse);
+  const pipeline::DrawPipeline pipeline = glmark2_pipeline<glmark2::BasicLightShading>(material);
   return std::make_unique<Glmark2Scene>(glmark2_mesh(model, {.normals = true, .deindex = kDeindex}),
-                                        fit_view(model, 2.0f), Rotation::y, material_with(diffuse),
-                                        pipeline::make_pipeline<glmark2::BasicLightShading>());
+                                        fit_view(model, 2.0f), Rotation::y, std::move(material),
+                                        pipeline);
 }
 
 // §2.2: the crate, turning about all three axes, 2.5 + r away.
@@ -128,19 +145,22 @@ std::unique_ptr<BenchScene> texture_scene(Filter filter) {
   Glmark2Model model = load_3ds(kModels + "cube.3ds");
   Material material = material_with(kWhite);
   material.base_color_map = texture_map("crate-base.png", filter);
+  const pipeline::DrawPipeline pipeline =
+      glmark2_pipeline<glmark2::BasicLightTextureShading>(material);
   return std::make_unique<Glmark2Scene>(
       glmark2_mesh(model, {.normals = true, .texcoords = true, .deindex = kDeindex}),
-      fit_view(model, 2.5f), Rotation::xyz, std::move(material),
-      pipeline::make_pipeline<glmark2::BasicLightTextureShading>());
+      fit_view(model, 2.5f), Rotation::xyz, std::move(material), pipeline);
 }
 
 // §2.3: the cat with a per-pixel shading model.
 template <class Shading>
 std::unique_ptr<BenchScene> shading_scene() {
   Glmark2Model model = load_3ds(kModels + "cat.3ds");
+  Material material = material_with(kBlue);
+  const pipeline::DrawPipeline pipeline = glmark2_pipeline<Shading>(material);
   return std::make_unique<Glmark2Scene>(glmark2_mesh(model, {.normals = true, .deindex = kDeindex}),
-                                        fit_view(model, 2.0f), Rotation::y, material_with(kBlue),
-                                        pipeline::make_pipeline<Shading>());
+                                        fit_view(model, 2.0f), Rotation::y, std::move(material),
+                                        pipeline);
 }
 
 // §2.4: the low-poly asteroid lit by its object-space normal map (NEAREST, no mips).
@@ -148,17 +168,19 @@ std::unique_ptr<BenchScene> bump_normals_scene() {
   Glmark2Model model = load_3ds(kModels + "asteroid-low.3ds");
   Material material = material_with(kWhite);
   material.base_color_map = texture_map("asteroid-normal-map.png", Filter::nearest);
+  const pipeline::DrawPipeline pipeline = glmark2_pipeline<glmark2::BumpNormalsShading>(material);
   return std::make_unique<Glmark2Scene>(
       glmark2_mesh(model, {.texcoords = true, .deindex = kDeindex}), canvas_view(), Rotation::y,
-      std::move(material), pipeline::make_pipeline<glmark2::BumpNormalsShading>());
+      std::move(material), pipeline);
 }
 
 // §2.5: the high-poly asteroid with its generated normals.
 std::unique_ptr<BenchScene> bump_high_poly_scene() {
   Glmark2Model model = load_3ds(kModels + "asteroid-high.3ds");
+  Material material = material_with(kWhite);
+  const pipeline::DrawPipeline pipeline = glmark2_pipeline<glmark2::BumpPolyShading>(material);
   return std::make_unique<Glmark2Scene>(glmark2_mesh(model, {.normals = true, .deindex = kDeindex}),
-                                        canvas_view(), Rotation::y, material_with(kWhite),
-                                        pipeline::make_pipeline<glmark2::BumpPolyShading>());
+                                        canvas_view(), Rotation::y, std::move(material), pipeline);
 }
 
 }  // namespace

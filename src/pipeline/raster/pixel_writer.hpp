@@ -152,8 +152,8 @@ constexpr int base_color_texcoord() {
 
 // Models with fragment_batch are shaded a batch of pixels at a time with SIMD (shading/
 // shade_batch.hpp): the built-in models have no fragment(), their batch form is all there is,
-// for every draw and every batch size; models with both (bench/scenes' glmark2 shaders) use the
-// batch form for the draws their batch_shades accepts.
+// for every draw and every batch size, and so are bench/scenes' glmark2 shaders; models with
+// both use the batch form for the draws their batch_shades accepts.
 template <class Shading>
 constexpr bool batch_shaded() {
   return requires { &Shading::fragment_batch; };

@@ -90,15 +90,12 @@ struct DrawPipeline {
   using TriangleFn = void (*)(std::uint32_t index, float* [3]);
   TriangleFn triangle = nullptr;
   RasterTriangleFn raster = nullptr;
-  // The model's batch form takes this draw (shading/shade_batch.hpp); null: no batch form.
-  bool (*batch_shades)(const shading::DrawUniforms&) = nullptr;
   // The material maps besides the base color map the batch form reads (shading::batch_maps).
   unsigned material_maps = 0;
-  // The model's vertex() for a run of vertices (shading/vertex_batch.hpp), and whether it
-  // takes this draw; null: none.
+  // The model's vertex() for a run of vertices (shading/vertex_batch.hpp), which the vertex
+  // stage takes for every draw of the model; null: none.
   void (*vertex_batch)(const shading::DrawUniforms&, const shading::VertexBatchInput&,
                        float (*)[shading::kVertexBatch]) = nullptr;
-  bool (*batches_vertices)(const shading::DrawUniforms&) = nullptr;
   // The model lights the back of a two-sided material (CullMode::none) as a front: setup
   // reverses the normal's planes (normal_slot) of the draw's back-facing triangles, so the
   // normal is the side seen, as the triangle's facing says, not as the interpolated normal
@@ -125,10 +122,9 @@ struct DrawRecord {
   Material material;
   shading::DrawUniforms uniforms;
   DrawPipeline pipeline;
-  bool batch_shaded = false;  // pipeline.batch_shades(uniforms), once per frame (frame_run.cpp)
-  // The maps the raster loop samples ahead for the batch form (shading::maps_to_sample), likewise.
+  // The maps the raster loop samples ahead for the batch form (shading::maps_to_sample), once
+  // per frame (frame_run.cpp).
   const TextureMap* maps[shading::kMaterialMaps] = {};
-  bool batch_vertices = false;  // pipeline.batches_vertices(uniforms), likewise
   // Its vertex stage writes ClipVertex (vertex.hpp's keeps_clip_vertices); also decided once
   // per frame.
   bool clip_vertices = true;

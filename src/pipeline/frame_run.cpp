@@ -161,12 +161,9 @@ void Renderer::Impl::run(Framebuffer& target) {
   for (pipeline::DrawRecord& draw : frame.draws) {
     draw.uniforms.material = &draw.material;
     draw.uniforms.frame = &uniforms;
-    // Whether the batch form takes the draw depends on its lights and material: decided here
-    // once, not for every triangle.
-    draw.batch_shaded = draw.pipeline.batch_shades && draw.pipeline.batch_shades(draw.uniforms);
+    // Which maps the batch form samples depends on the material: decided here once, not for
+    // every triangle.
     shading::maps_to_sample(draw.pipeline.material_maps, draw.material, draw.maps);
-    draw.batch_vertices =
-        draw.pipeline.batches_vertices && draw.pipeline.batches_vertices(draw.uniforms);
     draw.clip_vertices = pipeline::keeps_clip_vertices(draw, guard);
   }
   order_draws();

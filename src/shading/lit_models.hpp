@@ -36,7 +36,6 @@ struct GouraudLight {
   static constexpr int kNormalSlot = -1;  // lit per vertex; see face_without_normals()
   static constexpr GouraudLayout kLayout{kDiffuse, kWithSurface};
   // The vertex stage lights every draw's vertices a run at a time.
-  static bool batch_vertices(const DrawUniforms&) { return true; }
   static void vertex_batch(const DrawUniforms& u, const VertexBatchInput& in,
                            float (*out)[kVertexBatch]) {
     u.frame->kernels->gouraud_vertex_batch(u, in, kLayout, out);

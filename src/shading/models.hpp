@@ -12,10 +12,9 @@
 //   fragment(fragment, uniforms) -> linear RGBA   per pixel (the debug views and the extra
 //                   outputs, a few operations each)
 //   fragment_batch(uniforms, input, rgba), kMapsRead   a batch of pixels at once with SIMD, fog
-//                   included, the material's maps sampled ahead (shade_batch.hpp's BatchForm:
-//                   the built-in models lit or colored by their material); a model with both
-//                   (bench/scenes' glmark2 shaders) also gives batch_shades(uniforms), the draws
-//                   its batch form takes
+//                   included, the material's maps sampled ahead, for every draw (shade_batch.hpp's
+//                   BatchForm: the built-in models lit or colored by their material; the glmark2
+//                   shaders of bench/scenes)
 //   kDisplayReferred  optional (inherit DisplayReferred): the colors are display values
 //                   (display_value()); frames of such draws alone skip the sRGB encode
 //                   (pipeline/renderer.cpp)
@@ -71,7 +70,6 @@ struct DisplayReferred {
 // surface_vertex<kCount>(): copies and products, so the vertex stage takes it for every draw.
 template <int kCount>
 struct SurfaceVertexBatch {
-  static bool batch_vertices(const DrawUniforms&) { return true; }
   static void vertex_batch(const DrawUniforms& u, const VertexBatchInput& in,
                            float (*out)[kVertexBatch]) {
     surface_vertex_batch<kCount>(u, in, out);

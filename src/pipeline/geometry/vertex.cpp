@@ -23,7 +23,8 @@ void transform_range(const DrawRecord& draw, const Kernels& kernels,
   glm::mat3 model3(u.model);
   const int varyings = draw.pipeline.varyings;
   float* over_w = out.over_w.empty() ? nullptr : out.over_w.data();
-  const bool batch = draw.batch_vertices;  // in a local: the stores below may alias the draw
+  // In a local: the stores below may alias the draw.
+  const bool batch = draw.pipeline.vertex_batch != nullptr;
   VertexPass pass;
   static_assert(shading::kVertexBatch == kVertexPass);
   alignas(64) float batch_varyings[kMaxVaryings][shading::kVertexBatch];
@@ -84,8 +85,8 @@ void transform_range(const DrawRecord& draw, const Kernels& kernels,
 
 bool keeps_clip_vertices(const DrawRecord& draw, const ClipBounds& guard) {
   // Cheapest tests first: the bounds are looked at only where nothing else asks for them.
-  return !draw.batch_vertices || has_triangle_hooks(draw) || draw.pipeline.draws_edges ||
-         draw.mesh->topology == Topology::lines || !draw.bounds ||
+  return draw.pipeline.vertex_batch == nullptr || has_triangle_hooks(draw) ||
+         draw.pipeline.draws_edges || draw.mesh->topology == Topology::lines || !draw.bounds ||
          !box_inside_clip_bounds(*draw.bounds, draw.uniforms.model_view_projection, guard);
 }
 

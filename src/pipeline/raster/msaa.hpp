@@ -152,8 +152,7 @@ void raster_triangle_msaa(TileContext& tile, const SetupTriangle& t) {
   float sample_z[kMaxSamples];
   const SampleSteps steps(t, samples, sample_z);
   if constexpr (Writer::kWaits) {
-    if (steps.fits_32_bits && box_may_wait(x1 - x0 + 1, y1 - y0 + 1) &&
-        tile.frame->draws[t.draw].batch_shaded) {
+    if (steps.fits_32_bits && box_may_wait(x1 - x0 + 1, y1 - y0 + 1)) {
       add_waiting<Shading, kAlpha>(tile, t, x0, y0, x1, y1, &steps, sample_z);
       return;
     }

@@ -151,16 +151,16 @@ constexpr int base_color_texcoord() {
 }
 
 // Models with fragment_batch are shaded a batch of pixels at a time with SIMD (shading/
-// shade_batch.hpp): the built-in models have no fragment(), their batch form is all there is,
-// for every draw and every batch size, and so are bench/scenes' glmark2 shaders; models with
-// both use the batch form for the draws their batch_shades accepts.
+// shade_batch.hpp), for every draw and every batch size: the built-in models and the glmark2
+// shaders, whose batch form is all there is. The others (the debug views, the extra outputs)
+// have fragment(), called per pixel.
 template <class Shading>
 constexpr bool batch_shaded() {
-  return requires { &Shading::fragment_batch; };
-}
-template <class Shading>
-constexpr bool batch_only() {
-  return batch_shaded<Shading>() && !requires { &Shading::fragment; };
+  constexpr bool kBatch = requires { &Shading::fragment_batch; };
+  static_assert(
+      kBatch != requires { &Shading::fragment; },
+      "a shading model has fragment() or fragment_batch(), one of them");
+  return kBatch;
 }
 
 // The material maps besides the base color map a batch model reads (shading::batch_maps).
@@ -248,11 +248,6 @@ void blend_into(glm::vec4& out, const glm::vec4& color) {
   }
 }
 
-// For a model with both forms (fragment() and fragment_batch), fewer packed pixels than this are
-// shaded one at a time with fragment(): the batch call's fixed cost outweighs its SIMD for
-// them, while batches of a few pixels more already gain from it.
-inline constexpr int kMinBatch = 4;
-
 // Shades one covered pixel that passed the depth test and writes it with the draw's blending:
 // the part of the raster loop that is the same for every path (raster.hpp, small_triangles.hpp).
 template <class Shading, AlphaMode kAlpha>
@@ -285,27 +280,25 @@ class PixelWriter {
   int shade(PackedPixels& pixels) {
     if (pixels.count == 0) return 0;
     if (batches()) pixels.pad(Shading::kVaryings);
-    int written = 0;
     if constexpr (batch_shaded<Shading>()) {
-      if (batch_ && (batch_only<Shading>() || pixels.count >= kMinBatch)) {
-        alignas(64) float colors[PackedPixels::kCapacity][4];
-        shading::ShadeInput in{pixels.count, pixels.w, pixels.z, pixels.v, nullptr, batch_fog()};
-        sample_maps(in, pixels.v, pixels.w);
-        Shading::fragment_batch(uniforms_, in, colors);
-        for (int n = 0; n < pixels.count; ++n) {
-          const float* c = colors[n];
-          written += store<kBatchFogs>(pixels.x[n], pixels.y[n], pixels.z[n], pixels.w[n],
-                                       glm::vec4(c[0], c[1], c[2], c[3]));
-        }
-        return written;
+      alignas(64) float colors[PackedPixels::kCapacity][4];
+      shading::ShadeInput in{pixels.count, pixels.w, pixels.z, pixels.v, nullptr, batch_fog()};
+      sample_maps(in, pixels.v, pixels.w);
+      Shading::fragment_batch(uniforms_, in, colors);
+      int written = 0;
+      for (int n = 0; n < pixels.count; ++n) {
+        const float* c = colors[n];
+        written += store<kBatchFogs>(pixels.x[n], pixels.y[n], pixels.z[n], pixels.w[n],
+                                     glm::vec4(c[0], c[1], c[2], c[3]));
       }
+      return written;
+    } else {
+      return shade_one_at_a_time(pixels);
     }
-    if constexpr (!batch_only<Shading>()) written = shade_one_at_a_time(pixels);
-    return written;
   }
 
-  // shade() for the models and draws without a batch form: fragment() per pixel, the base color
-  // map sampled ahead all the same.
+  // shade() for the models without a batch form: fragment() per pixel, the base color map
+  // sampled ahead all the same.
   int shade_one_at_a_time(PackedPixels& pixels) {
     const Texels texels = sample_base_map(pixels.count, pixels.v, pixels.w);
     int written = 0;
@@ -321,16 +314,15 @@ class PixelWriter {
     return written;
   }
 
-  // Whether shade_full_block() can take this draw's blocks: opaque, depth-writing, batch-
-  // shaded, no wire overlay (all known here but the draw's lights and material:
-  // DrawRecord::batch_shaded).
+  // Whether shade_full_block() takes this draw's whole blocks: opaque, depth-writing, batch-
+  // shaded, no wire overlay.
   static constexpr bool kFullBlocks = batch_shaded<Shading>() && kAlpha == AlphaMode::opaque &&
                                       kDepthWrite && !edge_overlay<Shading>();
-  bool full_blocks() const { return kFullBlocks && batch_; }
+  bool full_blocks() const { return kFullBlocks; }
 
   // Whether the draw's small triangles may wait to be shaded with the next ones
   // (WaitingPixels): as for whole blocks, and depth-tested (a waiting pixel is tested again
-  // when written). Again only when the draw is batch-shaded.
+  // when written).
   static constexpr bool kWaits = kFullBlocks && depth_tested<Shading>();
 
   // The waiting pixels of several triangles of the draw, whose plane slopes for the base
@@ -371,13 +363,13 @@ class PixelWriter {
 
   // Whether shade() does anything in batches; if not, raster loops may skip packing and call
   // write() per pixel. Always for the models without fragment().
-  bool batches() const { return batch_only<Shading>() || base_map_ != nullptr || batch_; }
+  bool batches() const { return batch_shaded<Shading>() || base_map_ != nullptr; }
 
   // Shades `fragment` (w and varyings filled in by the caller) for pixel (x, y) of the frame
   // at depth z and writes it. False if the alpha test discarded it. Only for the models with
   // fragment() (the others' batches() is always true).
   bool write(int x, int y, float z) {
-    if constexpr (batch_only<Shading>()) {
+    if constexpr (batch_shaded<Shading>()) {
       return false;
     } else {
       fragment.z = z;
@@ -474,11 +466,6 @@ class PixelWriter {
     if constexpr (kTexcoordSlot >= 0) {
       if (material.base_color_map) base_map_ = &material.base_color_map;
     }
-    if constexpr (batch_only<Shading>()) {
-      batch_ = true;
-    } else if constexpr (batch_shaded<Shading>()) {
-      batch_ = tile.frame->draws[draw].batch_shaded;
-    }
   }
 
   // Every map the model reads and the draw has, sampled for in.count pixels whose varyings and
@@ -543,7 +530,6 @@ class PixelWriter {
   // Only the wire overlay reads it (an empty struct otherwise, and never computed).
   [[no_unique_address]] EdgeScalesOrNone edge_scales_;
   const TextureMap* base_map_ = nullptr;  // the map sampled ahead, if any
-  bool batch_ = false;                    // shade() uses Shading::fragment_batch
   shading::TexelBatch texels_;
   // The texels of the other maps the model reads that the draw has (DrawRecord::maps).
   static constexpr unsigned kMaps = material_maps<Shading>();

@@ -82,7 +82,7 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
   if (x0 > x1 || y0 > y1) return;
   const int box = (x1 - x0 + 1) * (y1 - y0 + 1);
   if constexpr (PixelWriter<Shading, kAlpha>::kWaits) {
-    if (box_may_wait(x1 - x0 + 1, y1 - y0 + 1) && tile.frame->draws[t.draw].batch_shaded) {
+    if (box_may_wait(x1 - x0 + 1, y1 - y0 + 1)) {
       add_waiting<Shading, kAlpha>(tile, t, x0, y0, x1, y1);
       return;
     }
@@ -185,8 +185,8 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
           pixels.y[n] = static_cast<std::int16_t>(block_y + i / kBlockSize);
         }
         pixels.pad_positions();  // interpolate_pixels reads whole vectors of positions
-        tile.kernels.interpolate_pixels(t, out.fragment.planes, Shading::kVaryings, first,
-                                        covered, pixels.x, pixels.y, pixels.z, pixels.w, pixels.v);
+        tile.kernels.interpolate_pixels(t, out.fragment.planes, Shading::kVaryings, first, covered,
+                                        pixels.x, pixels.y, pixels.z, pixels.w, pixels.v);
         // Opaque draws (the only ones whose bound tightens) write every pixel they shade.
         written = covered;
       } else {

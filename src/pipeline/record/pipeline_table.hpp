@@ -38,16 +38,8 @@ DrawPipeline make_pipeline() {
   if constexpr (requires { &Shading::triangle; }) p.triangle = &Shading::triangle;
   p.lights_back_faces = lights_back_faces<Shading>();
   p.raster = &raster_triangle<Shading, kAlpha>;
-  if constexpr (requires { &Shading::batch_shades; }) {
-    p.batch_shades = &Shading::batch_shades;
-  } else if constexpr (batch_shaded<Shading>()) {
-    p.batch_shades = [](const shading::DrawUniforms&) { return true; };  // every draw
-  }
   p.material_maps = material_maps<Shading>();
-  if constexpr (requires { &Shading::vertex_batch; }) {
-    p.vertex_batch = &Shading::vertex_batch;
-    p.batches_vertices = &Shading::batch_vertices;
-  }
+  if constexpr (requires { &Shading::vertex_batch; }) p.vertex_batch = &Shading::vertex_batch;
   p.depth_tested = depth_tested<Shading>();
   p.occludes = p.depth_tested && kAlpha == AlphaMode::opaque && !additive<Shading>();
   p.display_referred = display_referred<Shading>() && !additive<Shading>() &&

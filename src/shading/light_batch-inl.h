@@ -37,7 +37,7 @@ struct IncidentV {
 // A point or spot light's direction and radiance at p: inverse-square falloff windowed to reach
 // zero at the light's range (glTF KHR_lights_punctual), and a spot light's cone. Out of line, so
 // that the loops lit by directional lights alone keep their registers.
-static HWY_NOINLINE IncidentV PositionalIncident(const LightData& light, const Vec3V& p) {
+HWY_INLINE IncidentV PositionalIncident(const LightData& light, const Vec3V& p) {
   const BatchTag d;
   const BatchV one = hn::Set(d, 1.0f);
   const Vec3V to_light{hn::Sub(hn::Set(d, light.position.x), p.x),

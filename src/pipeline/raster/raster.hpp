@@ -172,18 +172,24 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
         // the next block's might not fit (or at the end): one batch of many pixels instead of a
         // batch per block, a few pixels each along the edges. The triangle covers each pixel
         // once, so the order of its writes does not matter.
-        const int covered = std::popcount(block.mask);
-        if (pixels.count + covered > kPendingPixels) {
-          out.shade(pixels);
-          pixels.count = 0;
-        }
-        const int first = pixels.count;
+        int first = pixels.count, end = first;
         for (std::uint64_t m = block.mask; m != 0; m &= m - 1) {
           const int i = std::countr_zero(m);
-          const int n = pixels.count++;
-          pixels.x[n] = static_cast<std::int16_t>(block_x + i % kBlockSize);
-          pixels.y[n] = static_cast<std::int16_t>(block_y + i / kBlockSize);
+          pixels.x[end] = static_cast<std::int16_t>(block_x + i % kBlockSize);
+          pixels.y[end] = static_cast<std::int16_t>(block_y + i / kBlockSize);
+          ++end;
         }
+        const int covered = end - first;
+        if (end > kPendingPixels && first > 0) {  // shade those before, then move these up
+          std::int16_t x[kBlockPixels], y[kBlockPixels];
+          std::copy_n(pixels.x + first, covered, x);
+          std::copy_n(pixels.y + first, covered, y);
+          out.shade(pixels);
+          std::copy_n(x, covered, pixels.x);
+          std::copy_n(y, covered, pixels.y);
+          first = 0;
+        }
+        pixels.count = first + covered;
         pixels.pad_positions();  // interpolate_pixels reads whole vectors of positions
         tile.kernels.interpolate_pixels(t, out.fragment.planes, Shading::kVaryings, first, covered,
                                         pixels.x, pixels.y, pixels.z, pixels.w, pixels.v);

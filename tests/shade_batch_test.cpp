@@ -157,14 +157,6 @@ shading::ShadeInput shade_input(const Inputs& in, int count, const Draw& draw) {
   return input;
 }
 
-// The portable target (EMU128 or SCALAR), which the others must match.
-std::int64_t portable_target(const std::vector<std::int64_t>& targets) {
-  for (std::int64_t target : targets) {
-    if (target == HWY_EMU128 || target == HWY_SCALAR) return target;
-  }
-  return targets.back();
-}
-
 // Shades random batches with Shading::fragment_batch on every SIMD target and expects the
 // portable target's bits from each; draws `takes` declines are skipped (for models chosen only
 // for some draws: pipeline/record/pipeline_table.cpp), and `adapt` makes each random draw one
@@ -174,7 +166,8 @@ void expect_every_target_alike(bool (*takes)(const Draw&) = nullptr,
                                void (*adapt)(Draw&) = nullptr) {
   const std::vector<std::int64_t> targets = simd_targets();
   ASSERT_GE(targets.size(), 2u);
-  const std::int64_t portable = portable_target(targets);
+  const std::int64_t portable = portable_simd_target();
+  ASSERT_NE(portable, 0);
   std::mt19937 rng(20261122);
   int compared = 0;
   for (int round = 0; round < 60; ++round) {

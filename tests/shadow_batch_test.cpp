@@ -370,27 +370,13 @@ void expect_vertexs_bits() {
     in.count = count;
     in.positions = positions.data();
     for (int c = 0; c < 3; ++c) in.normal[c] = normal[c];
-    alignas(64) float expected[shading::kMaxVaryings][shading::kVertexBatch];
-    alignas(64) float out[shading::kMaxVaryings][shading::kVertexBatch];
-    {
-      ForcedTarget forced(portable);
-      draw.kernels = shading::shading_kernels(chosen_simd_target());
-      Model::vertex_batch(draw.uniforms, in, expected);
-    }
-    for (std::int64_t target : targets) {
-      ForcedTarget forced(target);
-      draw.kernels = shading::shading_kernels(chosen_simd_target());
-      Model::vertex_batch(draw.uniforms, in, out);
-      for (int n = 0; n < count; ++n) {
-        for (int k = 0; k < Model::kVaryings; ++k) {
-          ASSERT_EQ(std::memcmp(&expected[k][n], &out[k][n], sizeof(float)), 0)
-              << hwy::TargetName(target) << ", round " << round << ", vertex " << n << ", varying "
-              << k << ": " << out[k][n] << ", " << hwy::TargetName(portable) << " gives "
-              << expected[k][n];
-        }
-        ++compared;
-      }
-    }
+    compared += expect_rows_alike_on_every_target<shading::kVertexBatch>(
+        Model::kVaryings, count,
+        [&](float(*out)[shading::kVertexBatch]) {
+          draw.kernels = shading::shading_kernels(chosen_simd_target());
+          Model::vertex_batch(draw.uniforms, in, out);
+        },
+        "round " + std::to_string(round));
     for (int n = 0; n < count; ++n) {
       const glm::vec3 world(draw.uniforms.model * glm::vec4(positions[n], 1.0f));
       const glm::vec3 nv(normal[0][n], normal[1][n], normal[2][n]);

@@ -93,8 +93,12 @@ TEST(ToneMapRow, FollowsTheCurvesWithTheSameBitsOnEveryTarget) {
         const glm::vec4& got = first[i];
         EXPECT_EQ(std::memcmp(&got.a, &in.a, sizeof(float)), 0) << "alpha unchanged";
         if (depth[i] == 1.0f) {  // the clear color: scaled, not mapped
-          if (!std::isnan(in.r)) EXPECT_EQ(got.r, in.r * scale);
-          if (!std::isnan(in.b)) EXPECT_EQ(got.b, in.b * scale);
+          if (!std::isnan(in.r)) {
+            EXPECT_EQ(got.r, in.r * scale);
+          }
+          if (!std::isnan(in.b)) {
+            EXPECT_EQ(got.b, in.b * scale);
+          }
           continue;
         }
         // What the kernel takes: scaled, NaN and negatives as 0, at most 65504.
@@ -126,7 +130,9 @@ TEST(ToneMapRow, PbrNeutralKeepsColorsBelowTheKneeAndRollsOffAbove) {
     const float got = map_row(ToneMapping::pbr_neutral, {{v, v, v, 1.0f}}, {0}, 1)[0].r;
     EXPECT_GE(got, last) << v;
     EXPECT_LT(got, 1.0f) << v;
-    if (v > 30.0f) EXPECT_GT(got, 0.99f) << v;
+    if (v > 30.0f) {
+      EXPECT_GT(got, 0.99f) << v;
+    }
     last = got;
   }
 }

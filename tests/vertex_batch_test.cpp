@@ -168,26 +168,13 @@ void expect_every_target_gives_portable_bits() {
     randomize(rng, draw);
     VertexRun run;
     run.randomize(rng, round);
-    alignas(64) Varyings expected, out;
-    {
-      ForcedTarget forced(portable);
-      draw.kernels = shading::shading_kernels(chosen_simd_target());
-      Model::vertex_batch(draw.uniforms, run.input(), expected);
-    }
-    for (std::int64_t target : targets) {
-      ForcedTarget forced(target);
-      draw.kernels = shading::shading_kernels(chosen_simd_target());
-      Model::vertex_batch(draw.uniforms, run.input(), out);
-      for (int n = 0; n < run.count; ++n) {
-        for (int k = 0; k < Model::kVaryings; ++k) {
-          ASSERT_EQ(std::memcmp(&expected[k][n], &out[k][n], sizeof(float)), 0)
-              << hwy::TargetName(target) << ", round " << round << ", vertex " << n << ", varying "
-              << k << ": " << out[k][n] << ", " << hwy::TargetName(portable) << " gives "
-              << expected[k][n];
-        }
-        ++compared;
-      }
-    }
+    compared += expect_rows_alike_on_every_target<shading::kVertexBatch>(
+        Model::kVaryings, run.count,
+        [&](float(*out)[shading::kVertexBatch]) {
+          draw.kernels = shading::shading_kernels(chosen_simd_target());
+          Model::vertex_batch(draw.uniforms, run.input(), out);
+        },
+        "round " + std::to_string(round));
     for (int n = 0; n < run.count; ++n) {
       const glm::vec3 world(draw.uniforms.model * glm::vec4(run.positions[n], 1.0f));
       for (int i = 0; i < draw.frame.light_count; ++i) {

@@ -476,44 +476,39 @@ class PixelWriter {
     if constexpr (kMaps != 0) {
       const TextureMap* const* maps = tile_.frame->draws[draw_].maps;
       for (int k = 0; k < shading::kMaterialMaps; ++k) {
-        if (maps[k] == nullptr) continue;
-        shading::TexelBatch& texels = map_texels_[k];
-        texels.count = in.count;
-        texels.u = v[kTexcoordSlot];
-        texels.v = v[kTexcoordSlot + 1];
-        texels.w = w;
-        texels.slopes = slopes;
-        if (slopes == nullptr) {
-          texels.planes = fragment.planes + kTexcoordSlot;
-          texels.inv_w = &t_->inv_w;
+        if (maps[k] != nullptr) {
+          in.map_texel[k] = sample(*maps[k], map_texels_[k], in.count, v, w, slopes);
         }
-        shading::sample_batch(uniforms_.frame->kernels->sample_batch, *maps[k], texels);
-        in.map_texel[k] = texels.rgba;
       }
     }
   }
 
-  // The base color map sampled for `count` pixels whose varyings and clip w are v[k][n] and
-  // w[n] (PackedPixels and BlockFragments alike): their texels, or null when the model reads
-  // no map or the draw has none. The pixels are of this writer's triangle, or of several whose
-  // plane slopes are `slopes` (TexelBatch).
+  // `map` sampled into `texels` for `count` pixels whose varyings and clip w are v[k][n] and
+  // w[n], at the texture coordinate of slot kTexcoordSlot: their texels. The pixels are of this
+  // writer's triangle, or of several whose plane slopes are `slopes` (TexelBatch).
   using Texels = const float (*)[4];
+  Texels sample(const TextureMap& map, shading::TexelBatch& texels, int count,
+                const float (*v)[kBlockPixels], const float* w,
+                const float (*slopes)[kBlockPixels]) {
+    texels.count = count;
+    texels.u = v[kTexcoordSlot];
+    texels.v = v[kTexcoordSlot + 1];
+    texels.w = w;
+    texels.slopes = slopes;
+    if (slopes == nullptr) {
+      texels.planes = fragment.planes + kTexcoordSlot;
+      texels.inv_w = &t_->inv_w;
+    }
+    shading::sample_batch(uniforms_.frame->kernels->sample_batch, map, texels);
+    return texels.rgba;
+  }
+
+  // The base color map sampled for `count` pixels (PackedPixels and BlockFragments alike; see
+  // sample()): their texels, or null when the model reads no map or the draw has none.
   Texels sample_base_map(int count, const float (*v)[kBlockPixels], const float* w,
                          const float (*slopes)[kBlockPixels] = nullptr) {
     if constexpr (kTexcoordSlot >= 0) {
-      if (base_map_) {
-        texels_.count = count;
-        texels_.u = v[kTexcoordSlot];
-        texels_.v = v[kTexcoordSlot + 1];
-        texels_.w = w;
-        texels_.slopes = slopes;
-        if (slopes == nullptr) {
-          texels_.planes = fragment.planes + kTexcoordSlot;
-          texels_.inv_w = &t_->inv_w;
-        }
-        shading::sample_batch(uniforms_.frame->kernels->sample_batch, *base_map_, texels_);
-        return texels_.rgba;
-      }
+      if (base_map_) return sample(*base_map_, texels_, count, v, w, slopes);
     }
     return nullptr;
   }

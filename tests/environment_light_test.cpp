@@ -13,7 +13,7 @@
 #include "facet/procedural.hpp"
 #include "facet/renderer.hpp"
 #include "facet/texture.hpp"
-#include "shading/brdf.hpp"
+#include "shading/pbr_surface.hpp"
 #include "support/render_helpers.hpp"
 
 namespace facet::test {

@@ -137,8 +137,8 @@ void randomize(std::mt19937& rng, Draw& d) {
 }
 
 // The raster loop's input for `count` pixels of `in`: the base color texel where the draw has
-// the map, and each other map's where the draw has it, the model reads it (batch_maps) and, for
-// the emissive map, the material emits.
+// the map, and each other map's where the raster loop samples it (maps_to_sample: the draw has
+// it, the model reads it and, for the emissive map, the material emits).
 template <class Shading>
 shading::ShadeInput shade_input(const Inputs& in, int count, const Draw& draw) {
   const float(*texel)[4] = draw.material.base_color_map ? in.texel : nullptr;
@@ -147,12 +147,10 @@ shading::ShadeInput shade_input(const Inputs& in, int count, const Draw& draw) {
     if constexpr (requires { Shading::kMapsRead; }) return Shading::kMapsRead;
     return 0u;  // glmark2's shaders: the base color map alone
   }();
+  const TextureMap* sampled[shading::kMaterialMaps];
+  shading::maps_to_sample(kMapsRead, draw.material, sampled);
   for (int k = 0; k < shading::kMaterialMaps; ++k) {
-    const auto map = static_cast<shading::MaterialMap>(k);
-    const bool read = (kMapsRead & shading::map_bit(map)) != 0 &&
-                      material_map(draw.material, map) &&
-                      (map != shading::kEmissiveMap || draw.material.emissive != glm::vec3(0.0f));
-    if (read) input.map_texel[k] = in.map_texel[k];
+    if (sampled[k] != nullptr) input.map_texel[k] = in.map_texel[k];
   }
   return input;
 }
@@ -194,6 +192,7 @@ void expect_every_target_alike(bool (*takes)(const Draw&) = nullptr,
       ForcedTarget forced(target);
       draw.kernels = shading::shading_kernels(chosen_simd_target());
       alignas(64) float rgba[8 * 13][4];
+      std::fill_n(&rgba[0][0], 8 * 13 * 4, std::numeric_limits<float>::quiet_NaN());
       Shading::fragment_batch(draw.uniforms, input, rgba);
       for (int n = 0; n < count; ++n) {
         const float* want = expected[(n / 8) * stride + n % 8];
@@ -344,10 +343,10 @@ TEST(ShadeBatch, PhongAndBlinnPhongPeakAtTheMirrorDirection) {
 
 TEST(ShadeBatch, NormalMapTurnsTheNormalWithinTheTangentFrame) {
   // A surface facing +Z lit from +X: dark unless its normal map turns it to +X.
-  const auto phong = [](glm::vec3 texel, glm::vec3 tangent) {
+  const auto phong = [](glm::vec3 texel, glm::vec3 tangent, glm::vec3 to_light = {1, 0, 0}) {
     Inputs in;
     Draw draw;
-    plain_draw(draw, {sun({1, 0, 0})});
+    plain_draw(draw, {sun(to_light)});
     draw.material.normal_map.texture = missing_texture();
     draw.material.normal_scale = 1.0f;
     place(in, draw, {0, 0, 1}, tangent);
@@ -356,7 +355,52 @@ TEST(ShadeBatch, NormalMapTurnsTheNormalWithinTheTangentFrame) {
   };
   EXPECT_EQ(phong({0.5f, 0.5f, 1.0f}, {1, 0, 0}), 0.125f);  // the normal itself: ambient only
   EXPECT_EQ(phong({1.0f, 0.5f, 0.5f}, {1, 0, 0}), 0.625f);  // along the tangent, at the light
-  EXPECT_EQ(phong({1.0f, 0.5f, 0.5f}, {0, 0, 0}), 0.125f);  // no tangent: the map is not used
+  // Without a tangent the map is not used: lit from +Z, a map turning the normal to -Z (which
+  // the frame of a zero tangent would keep) leaves it lit.
+  EXPECT_EQ(phong({0.5f, 0.5f, 0.0f}, {0, 0, 0}, {0, 0, 1}), 0.625f);
+  EXPECT_EQ(phong({0.5f, 0.5f, 0.0f}, {1, 0, 0}, {0, 0, 1}), 0.125f);  // with one, turned away
+}
+
+TEST(ShadeBatch, SpecularMapScalesTheHighlight) {
+  Inputs in;
+  Draw draw;
+  const glm::vec3 l = glm::normalize(glm::vec3(1, 0, 1));
+  plain_draw(draw, {sun(l)});
+  draw.material.base_color = {0, 0, 0, 1};  // specular light alone
+  draw.material.specular_color = glm::vec3(1.0f);
+  draw.material.specular_map.texture = missing_texture();
+  draw.frame.ambient = glm::vec3(0.0f);
+  place(in, draw, {0, 0, 1}, glm::vec3(0.0f), glm::vec3(-10, 0, 10));  // the view mirrors l
+  const float texel[3] = {0.5f, 0.25f, 0.0f};
+  for (int c = 0; c < 3; ++c) in.map_texel[shading::kSpecularMap][0][c] = texel[c];
+  const glm::vec4 color = shade_pixel<shading::PhongShading>(in, draw);
+  EXPECT_NEAR(color.r, 0.5f, 1e-5f);
+  EXPECT_NEAR(color.g, 0.25f, 1e-5f);
+  EXPECT_EQ(color.b, 0.0f);
+}
+
+TEST(ShadeBatch, PbrOcclusionAndMetallicRoughnessMapsScaleTheirFactors) {
+  // No light: the ambient light alone, ambient x (albedo (1 - metallic) + f0 / 2) x occlusion.
+  const auto pbr = [](float occlusion_texel, float metallic_texel) {
+    Inputs in;
+    Draw draw;
+    plain_draw(draw, {});
+    draw.material.base_color = glm::vec4(1.0f);
+    draw.material.metallic = 1.0f;
+    draw.material.occlusion_strength = 1.0f;
+    draw.material.occlusion_map.texture = missing_texture();
+    draw.material.metallic_roughness_map.texture = missing_texture();
+    draw.frame.ambient = glm::vec3(1.0f);
+    place(in, draw, {0, 0, 1});
+    in.map_texel[shading::kOcclusionMap][0][0] = occlusion_texel;
+    in.map_texel[shading::kMetallicRoughnessMap][0][1] = 1.0f;  // roughness
+    in.map_texel[shading::kMetallicRoughnessMap][0][2] = metallic_texel;
+    return shade_pixel<shading::PbrShading>(in, draw).r;
+  };
+  EXPECT_EQ(pbr(1.0f, 1.0f), 0.5f);            // a metal: f0 = albedo, halved
+  EXPECT_NEAR(pbr(1.0f, 0.0f), 1.02f, 1e-6f);  // a dielectric: 1 + 0.04 / 2
+  EXPECT_EQ(pbr(0.5f, 1.0f), 0.25f);           // half occluded
+  EXPECT_EQ(pbr(0.0f, 0.0f), 0.0f);            // wholly occluded
 }
 
 TEST(ShadeBatch, EmissiveMapScalesTheEmission) {

@@ -1,10 +1,10 @@
-// Shadowed draws on the SIMD batch paths, on every SIMD target: the batch kernels of the models
-// lit per pixel (shade_batch.cpp) give fragment()'s bits, and the Gouraud models' vertex batch
-// (vertex_batch.cpp) the portable target's, with their shadow lookup (shadow_batch-inl.h), for
-// random points and normals against random depth maps of a sun with one or three cascades and of
-// a spot light: points inside a map, partly over its edges, outside it, beyond its far plane and
-// behind the light; the lookup itself gives shadow_visibility's bits; and the batch forms decline
-// what they leave to the scalar models.
+// Shadowed draws on every SIMD target, for random points and normals against random depth maps
+// of a sun with one or three cascades and of a spot light (points inside a map, partly over its
+// edges, outside it, beyond its far plane and behind the light): the shadow lookup
+// (shadow_batch-inl.h) gives the one-point definition's bits (tests/support/light_reference.hpp);
+// the models lit per pixel (shade_batch.cpp) shade a shadowed pixel as the unshadowed one under
+// the light scaled by that visibility; and the Gouraud models' vertex batch (vertex_batch.cpp)
+// gives the portable target's bits.
 #include <gtest/gtest.h>
 #include <hwy/targets.h>
 
@@ -18,6 +18,7 @@
 #include "core/simd_target.hpp"
 #include "facet/light.hpp"
 #include "shading/kernels.hpp"
+#include "shading/lighting.hpp"
 #include "shading/lit_models.hpp"
 #include "shading/models.hpp"
 #include "shading/shadow_map.hpp"
@@ -266,7 +267,7 @@ glm::vec4 unshadowed_with_scalar_visibility(const Draw& shadowed, const float (*
 // scalar shadow_visibility (unshadowed_with_scalar_visibility) over random batches, on every
 // SIMD target, with one and three cascades.
 template <class Shading>
-void expect_fragments_bits() {
+void expect_shadowed_pixels_bits() {
   const std::vector<std::int64_t> targets = simd_targets();
   ASSERT_GE(targets.size(), 2u);
   std::mt19937 rng(20261202);
@@ -302,7 +303,7 @@ void expect_fragments_bits() {
         const glm::vec4 expected = unshadowed_with_scalar_visibility<Shading>(draw, v, n);
         ASSERT_EQ(std::memcmp(&expected, rgba[n], sizeof expected), 0)
             << hwy::TargetName(target) << ", round " << round << ", pixel " << n << ": ("
-            << rgba[n][0] << ", " << rgba[n][1] << ", " << rgba[n][2] << "), fragment() gives ("
+            << rgba[n][0] << ", " << rgba[n][1] << ", " << rgba[n][2] << "), expected ("
             << expected.r << ", " << expected.g << ", " << expected.b << "), visibility "
             << shadow_visibility(sun.maps, points[n], shading::safe_normalize(normals[n]));
         seen.add(sun.maps, points[n], normals[n]);
@@ -314,13 +315,13 @@ void expect_fragments_bits() {
   seen.expect_each_kind();
 }
 
-TEST(ShadowBatch, LambertGivesFragmentsBitsOnEveryTarget) {
-  expect_fragments_bits<shading::LambertShading>();
+TEST(ShadowBatch, LambertShadesShadowedPixelsOnEveryTarget) {
+  expect_shadowed_pixels_bits<shading::LambertShading>();
 }
 
-TEST(ShadowBatch, PhongAndBlinnPhongGiveFragmentsBitsOnEveryTarget) {
-  expect_fragments_bits<shading::PhongShading>();
-  expect_fragments_bits<shading::BlinnPhongShading>();
+TEST(ShadowBatch, PhongAndBlinnPhongShadeShadowedPixelsOnEveryTarget) {
+  expect_shadowed_pixels_bits<shading::PhongShading>();
+  expect_shadowed_pixels_bits<shading::BlinnPhongShading>();
 }
 
 // The Gouraud models look the shadow up per vertex: their vertex batch on every target against

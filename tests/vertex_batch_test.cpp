@@ -17,6 +17,7 @@
 #include "core/simd_target.hpp"
 #include "facet/light.hpp"
 #include "shading/kernels.hpp"
+#include "shading/lighting.hpp"
 #include "shading/lit_models.hpp"
 #include "shading/models.hpp"
 #include "support/forced_target.hpp"

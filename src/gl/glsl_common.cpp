@@ -13,7 +13,7 @@ const float kPi = 3.14159265358979;
 // has no line continuation.) ----
 #define VARYINGS { vec2 texcoord; vec4 color; vec3 normal; vec3 position; vec4 tangent; vec3 diffuse; vec3 specular; }
 
-// ---- Lights (shading/lighting.hpp): prepared on the CPU exactly as facet prepares them. ----
+// ---- Lights (shading/light_batch-inl.h): prepared on the CPU exactly as facet prepares them. ----
 #define MAX_LIGHTS 32
 const int kDirectional = 0, kPoint = 1, kSpot = 2;
 uniform int u_light_count;
@@ -60,7 +60,7 @@ IncidentLight incident(int i, vec3 p) {
   return IncidentLight(direction, u_light_radiance[i] * attenuation);
 }
 
-// Diffuse + ambient from every light (models.hpp's diffuse_light).
+// Diffuse + ambient from every light (shade_batch.cpp's DiffuseLight).
 vec3 diffuse_light(vec3 albedo, vec3 normal, vec3 position) {
   vec3 light = u_ambient;
   for (int i = 0; i < u_light_count; ++i) {
@@ -70,7 +70,7 @@ vec3 diffuse_light(vec3 albedo, vec3 normal, vec3 position) {
   return albedo * light;
 }
 
-// ---- Reflectance (shading/brdf.hpp). ----
+// ---- Reflectance (shading/shade_batch.cpp). ----
 float phong_specular(vec3 n, vec3 v, vec3 l, float shininess) {
   vec3 r = reflect(-l, n);
   return pow(max(dot(r, v), 0.0), shininess);
@@ -103,7 +103,7 @@ float geometry_smith(float n_dot_v, float n_dot_l, float roughness) {
 }
 
 // Cook-Torrance f(l, v); the diffuse part weighted by Fresnel going in and coming out, as
-// facet's cook_torrance_parts (energy stays below one at grazing angles).
+// facet's CookTorrance (energy stays below one at grazing angles).
 vec3 cook_torrance(vec3 albedo, float metallic, float roughness_in, vec3 n, vec3 v, vec3 l) {
   float n_dot_l = dot(n, l), n_dot_v = dot(n, v);
   if (n_dot_l <= 0.0 || n_dot_v <= 0.0) return vec3(0.0);

@@ -1,4 +1,4 @@
-// GLSL fragment stage: facet's shading models (shading/models.hpp, shading/lit_models.hpp),
+// GLSL fragment stage: facet's shading models (the SIMD kernel of shading/shade_batch.cpp),
 // one per MODEL_* define, then the alpha mask and fog as facet's raster loop applies them
 // (pipeline/raster/pixel_writer.hpp). Colors are linear; the sRGB encode comes after readback.
 #include "gl/glsl_sources.hpp"
@@ -80,7 +80,7 @@ vec3 emission() {
   return e;
 }
 
-// The lit models' common start (surface.cpp's surface_point).
+// The lit models' common start (shade_batch.cpp: view, normal, normal map, albedo).
 struct SurfacePoint {
   vec3 position;
   vec3 normal;  // unit, normal map applied, reversed on a two-sided back face
@@ -135,7 +135,7 @@ vec4 phong(bool blinn) {
 }
 
 // Cook-Torrance; lights scaled by pi so a white Lambertian surface under a unit light is as
-// bright as under the Lambert model (lit_models.hpp's PbrShading).
+// bright as under the Lambert model (shade_batch.cpp's PbrLight).
 vec4 pbr() {
   SurfacePoint s = surface_point();
   vec3 albedo = s.albedo.rgb;

@@ -2,11 +2,12 @@
 // written again in GLSL, operation for operation where GLSL allows. Program (gl_program.hpp)
 // puts "#version 330 core", the draw's #defines and kCommonGlsl in front of a stage.
 //
-//   kCommonGlsl     lights (lighting.hpp), BRDFs (brdf.hpp), environment (environment.cpp),
+//   kCommonGlsl     lights (light_batch-inl.h), BRDFs (shade_batch.cpp), environment
+//                   (environment.cpp),
 //                   shared by every stage: Gouraud lights vertices, flat shading lights faces
 //   kVertexGlsl     the vertex stage: world position, normal, tangent, material color
 //   kGeometryGlsl   per triangle: face normals, flat color, which side of the surface is seen
-//   kFragmentGlsl   the shading models (models.hpp, lit_models.hpp), alpha mask, fog (fog.cpp)
+//   kFragmentGlsl   the shading models (shade_batch.cpp), alpha mask, fog (fog.cpp)
 //   kSkyVertexGlsl, kSkyFragmentGlsl   the background (pipeline/output/sky_row.cpp)
 #pragma once
 

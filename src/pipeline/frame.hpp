@@ -90,8 +90,8 @@ struct DrawPipeline {
   using TriangleFn = void (*)(std::uint32_t index, float* [3]);
   TriangleFn triangle = nullptr;
   RasterTriangleFn raster = nullptr;
-  // The material maps besides the base color map the batch form reads (shading::batch_maps).
-  unsigned material_maps = 0;
+  // The material maps besides the base color map the batch form reads (shading::maps_read).
+  unsigned maps_read = 0;
   // The model's vertex() for a run of vertices (shading/vertex_batch.hpp), which the vertex
   // stage takes for every draw of the model; null: none.
   void (*vertex_batch)(const shading::DrawUniforms&, const shading::VertexBatchInput&,

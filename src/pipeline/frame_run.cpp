@@ -163,7 +163,7 @@ void Renderer::Impl::run(Framebuffer& target) {
     draw.uniforms.frame = &uniforms;
     // Which maps the batch form samples depends on the material: decided here once, not for
     // every triangle.
-    shading::maps_to_sample(draw.pipeline.material_maps, draw.material, draw.maps);
+    shading::maps_to_sample(draw.pipeline.maps_read, draw.material, draw.maps);
     draw.clip_vertices = pipeline::keeps_clip_vertices(draw, guard);
   }
   order_draws();

@@ -1,7 +1,8 @@
-// Per-target vector helpers shared by the SIMD batch shaders (shade_batch.cpp and
-// bench/scenes/glmark2_batch.cpp): included inside each file's HWY_NAMESPACE, once per target, the
-// Highway "-inl.h" way (the guard below toggles with HWY_TARGET_TOGGLE). Each helper repeats
-// a scalar glm or models.hpp step with the same IEEE operations in the same order.
+// Per-target vector helpers shared by the SIMD shading kernels (shade_batch.cpp, vertex_batch.cpp,
+// light_batch-inl.h, shadow_batch-inl.h and bench/scenes/glmark2_batch.cpp): included inside each
+// file's HWY_NAMESPACE, once per target, the Highway "-inl.h" way (the guard below toggles with
+// HWY_TARGET_TOGGLE). Each helper is glm's operation (dot, cross, normalize, reflect) or
+// std::min/max, lane by lane, with the same IEEE operations in the same order.
 #if defined(FACET_SHADING_BATCH_MATH_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef FACET_SHADING_BATCH_MATH_INL_H_
 #undef FACET_SHADING_BATCH_MATH_INL_H_

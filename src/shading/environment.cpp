@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "facet/texture.hpp"
-#include "shading/brdf.hpp"  // kPi
+#include "shading/pbr_surface.hpp"  // kPi
 
 namespace facet::shading {
 namespace {

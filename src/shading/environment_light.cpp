@@ -6,8 +6,8 @@
 #include <glm/glm.hpp>
 
 #include "facet/texture.hpp"
-#include "shading/brdf.hpp"  // kPi
 #include "shading/environment.hpp"
+#include "shading/pbr_surface.hpp"  // kPi
 
 namespace facet::shading {
 namespace {

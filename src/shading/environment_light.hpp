@@ -12,7 +12,7 @@
 #include <glm/vec3.hpp>
 
 #include "facet/light.hpp"
-#include "shading/brdf.hpp"
+#include "shading/pbr_surface.hpp"
 
 namespace facet::shading {
 
@@ -33,7 +33,7 @@ struct SpecularIntegral {
 };
 SpecularIntegral specular_integral(float n_dot_v, float roughness);
 
-// The light a physically based surface (PbrSurface, brdf.hpp; f0 its reflectance at normal
+// The light a physically based surface (PbrSurface, pbr_surface.hpp; f0 its reflectance at normal
 // incidence) takes from the environment at unit normal n seen from unit direction v: the
 // irradiance through the diffuse albedo, and the split sum's specular from the mirror
 // direction's radiance blurred by roughness, moving toward the irradiance around that direction

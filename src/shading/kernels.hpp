@@ -30,7 +30,7 @@ inline ShadingKernels shading_kernels(SimdTarget target) {
 // (BENCHMARKS.md, "Per-draw constants").
 template <BatchModel kModel>
 struct BatchForm {
-  static constexpr unsigned kMapsRead = batch_maps(kModel);
+  static constexpr unsigned kMapsRead = maps_read(kModel);
   static void fragment_batch(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
     u.frame->kernels->shade_batch(kModel, u, in, rgba);
   }

@@ -2,8 +2,7 @@
 // lit per pixel (shade_batch.cpp) and per vertex (vertex_batch.cpp): directional, point and spot
 // lights, after their shadows. Included inside each file's HWY_NAMESPACE after batch_math-inl.h
 // and shadow_batch-inl.h, the Highway "-inl.h" way. Every target computes the same IEEE
-// operations in the same order; tests check the lanes against the light written out one point at
-// a time (tests/support/light_reference.hpp).
+// operations in the same order; the kernels' tests check the light on cases worked out by hand.
 #if defined(FACET_SHADING_LIGHT_BATCH_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef FACET_SHADING_LIGHT_BATCH_INL_H_
 #undef FACET_SHADING_LIGHT_BATCH_INL_H_
@@ -35,8 +34,7 @@ struct IncidentV {
 };
 
 // A point or spot light's direction and radiance at p: inverse-square falloff windowed to reach
-// zero at the light's range (glTF KHR_lights_punctual), and a spot light's cone. Out of line, so
-// that the loops lit by directional lights alone keep their registers.
+// zero at the light's range (glTF KHR_lights_punctual), and a spot light's cone.
 HWY_INLINE IncidentV PositionalIncident(const LightData& light, const Vec3V& p) {
   const BatchTag d;
   const BatchV one = hn::Set(d, 1.0f);

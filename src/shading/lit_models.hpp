@@ -2,9 +2,6 @@
 // based (Cook-Torrance, metallic-roughness). See models.hpp for what a model provides.
 #pragma once
 
-#include "shading/brdf.hpp"
-#include "shading/environment.hpp"
-#include "shading/environment_light.hpp"
 #include "shading/kernels.hpp"
 #include "shading/models.hpp"
 

@@ -12,7 +12,7 @@
 //   fragment(fragment, uniforms) -> linear RGBA   per pixel (the debug views and the extra
 //                   outputs, a few operations each)
 //   fragment_batch(uniforms, input, rgba), kMapsRead   a batch of pixels at once with SIMD, fog
-//                   included, the material's maps sampled ahead, for every draw (shade_batch.hpp's
+//                   included, the material's maps sampled ahead, for every draw (kernels.hpp's
 //                   BatchForm: the built-in models lit or colored by their material; the glmark2
 //                   shaders of bench/scenes)
 //   kDisplayReferred  optional (inherit DisplayReferred): the colors are display values
@@ -33,7 +33,6 @@
 #include "core/color.hpp"
 #include "shading/fragment.hpp"
 #include "shading/kernels.hpp"
-#include "shading/lighting.hpp"
 #include "shading/surface.hpp"
 #include "shading/uniforms.hpp"
 
@@ -61,7 +60,7 @@ inline glm::vec4 display_value(glm::vec3 shown, const DrawUniforms& u) {
   return {display_channel(shown.x, referred), display_channel(shown.y, referred),
           display_channel(shown.z, referred), 1.0f};
 }
-// The mark of models whose fragment() returns display_value()s (kDisplayReferred above).
+// The mark of models whose colors are display_value()s (kDisplayReferred above).
 struct DisplayReferred {
   static constexpr bool kDisplayReferred = true;
 };

@@ -14,15 +14,13 @@
 
 #include <algorithm>
 #include <cstring>
-#include <limits>
 
 #include "core/portable_math.hpp"
 #include "shading/batch_math-inl.h"
-#include "shading/brdf.hpp"
 #include "shading/environment.hpp"
 #include "shading/environment_light.hpp"
 #include "shading/light_batch-inl.h"
-#include "shading/lighting.hpp"
+#include "shading/pbr_surface.hpp"
 #include "shading/shadow_batch-inl.h"
 #include "shading/surface.hpp"
 
@@ -178,7 +176,7 @@ HWY_INLINE Vec3V SpecularLight(const DrawUniforms& u, bool blinn, const Vec3V& n
     IncidentV in = Incident(l, position);
     const Vec3V& to_light = in.direction;
     const FloatV n_dot_l = Dot(n, to_light);
-    FloatV along;  // blinn_phong_specular / phong_specular, before the power
+    FloatV along;  // N.H (Blinn) or R.V (Phong), before the power
     if (blinn) {
       along = Dot(n, Normalize({hn::Add(to_light.x, view.x), hn::Add(to_light.y, view.y),
                                 hn::Add(to_light.z, view.z)}));
@@ -188,7 +186,7 @@ HWY_INLINE Vec3V SpecularLight(const DrawUniforms& u, bool blinn, const Vec3V& n
     const FloatV highlight = m.shininess == 0.0f
                                  ? hn::Set(d, 1.0f)
                                  : PortablePow(StdMax(along, hn::Zero(d)), m.shininess);
-    const auto lit = hn::Not(hn::Le(n_dot_l, hn::Zero(d)));  // the scalar loop's continue
+    const auto lit = hn::Not(hn::Le(n_dot_l, hn::Zero(d)));  // facing the light (not NaN)
     in.radiance = ReceivedRadiance(l, in, position, n, hn::And(lit, active));
     const FloatV* a = albedo.c;
     const FloatV r[3] = {in.radiance.x, in.radiance.y, in.radiance.z};
@@ -248,12 +246,12 @@ HWY_INLINE Vec3V CookTorrance(const Vec3V& albedo, FloatV metallic, FloatV rough
   const auto fresnel = [&](const FloatV k5, int c) {
     return Schlick(c == 0 ? f0.x : c == 1 ? f0.y : f0.z, k5);
   };
-  // distribution_ggx: a2 / (pi d d), d = n.h^2 (a2 - 1) + 1, a = r^2.
+  // The GGX distribution: a2 / (pi d d), d = n.h^2 (a2 - 1) + 1, a = r^2.
   const FloatV a = hn::Mul(r, r);
   const FloatV a2 = hn::Mul(a, a);
   const FloatV dd = hn::Add(hn::Mul(hn::Mul(n_dot_h, n_dot_h), hn::Sub(a2, one)), one);
   const FloatV distribution = hn::Div(a2, hn::Mul(hn::Mul(hn::Set(d, kPi), dd), dd));
-  // geometry_smith: g1(n.v) g1(n.l), g1(x) = x / (x (1 - k) + k), k = (r + 1)^2 / 8.
+  // Smith-Schlick geometry: g1(n.v) g1(n.l), g1(x) = x / (x (1 - k) + k), k = (r + 1)^2 / 8.
   const FloatV r1 = hn::Add(r, one);
   const FloatV k = hn::Div(hn::Mul(r1, r1), hn::Set(d, 8.0f));
   const FloatV one_minus_k = hn::Sub(one, k);
@@ -312,7 +310,7 @@ HWY_INLINE Vec3V PbrLight(const DrawUniforms& u, const ShadeInput& in, int j, co
     const LightData& l = u.frame->lights[i];
     IncidentV incoming = Incident(l, position);
     const FloatV n_dot_l = Dot(n, incoming.direction);
-    const auto lit = hn::Not(hn::Le(n_dot_l, hn::Zero(d)));  // the scalar loop's continue
+    const auto lit = hn::Not(hn::Le(n_dot_l, hn::Zero(d)));  // facing the light (not NaN)
     incoming.radiance = ReceivedRadiance(l, incoming, position, n, hn::And(lit, active));
     const Vec3V brdf = CookTorrance(albedo, metallic, roughness, f0, n, view, incoming.direction);
     const FloatV scale = hn::Mul(n_dot_l, pi);
@@ -422,7 +420,7 @@ bool ShadeConstantUnlitAsRgba(const DrawUniforms& u, const ShadeInput& in, float
 }
 
 // The loop of one model (not the normals view), compiled per model: each holds only its own
-// steps, and the maps it reads (batch_maps) are the only ones it tests for.
+// steps, and the maps it reads (maps_read) are the only ones it tests for.
 template <BatchModel kModel>
 void ShadeModel(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
   constexpr bool kUnlit = kModel == BatchModel::unlit || kModel == BatchModel::constant_unlit;
@@ -430,7 +428,7 @@ void ShadeModel(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
   constexpr bool kConstantColor =
       kModel == BatchModel::constant_unlit || kModel == BatchModel::constant_gouraud;
   constexpr bool kPhong = kModel == BatchModel::phong || kModel == BatchModel::blinn_phong;
-  constexpr unsigned kMaps = batch_maps(kModel);
+  constexpr unsigned kMapsRead = maps_read(kModel);
   const bool fogged = in.fog != nullptr && in.fog->mode != FogMode::none;
   const FloatTag d;
   const int lanes = static_cast<int>(hn::Lanes(d));
@@ -448,7 +446,7 @@ void ShadeModel(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
   for (int j = 0; j < in.count; j += lanes) {
     const Albedo albedo = LoadAlbedo(in, j, kConstantColor ? &base : nullptr);
     Vec3V emission = emissive_factor;
-    if constexpr ((kMaps & map_bit(kEmissiveMap)) != 0) emission = Emission(emission, in, j);
+    if constexpr ((kMapsRead & map_bit(kEmissiveMap)) != 0) emission = Emission(emission, in, j);
     FloatV color[4];
     if constexpr (kUnlit) {
       color[0] = hn::Add(albedo.c[0], emission.x);
@@ -476,7 +474,7 @@ void ShadeModel(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
             {hn::Sub(eye.x, position.x), hn::Sub(eye.y, position.y), hn::Sub(eye.z, position.z)});
       }
       Vec3V n = SafeNormalize(Load3(in.v, kNormalSlot, j));
-      if constexpr ((kMaps & map_bit(kNormalMap)) != 0) {
+      if constexpr ((kMapsRead & map_bit(kNormalMap)) != 0) {
         if (in.map_texel[kNormalMap] != nullptr) n = MappedNormal(m, in, j, n);
       }
       const auto active = hn::FirstN(d, static_cast<std::size_t>(in.count - j));

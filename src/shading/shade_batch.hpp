@@ -29,7 +29,7 @@ enum class BatchModel {
 };
 
 // The material's maps besides the base color map, which the raster loop samples ahead for a
-// batch of pixels (texel_batch.hpp) for the models that read them (batch_maps).
+// batch of pixels (texel_batch.hpp) for the models that read them (maps_read).
 enum MaterialMap { kEmissiveMap, kNormalMap, kSpecularMap, kMetallicRoughnessMap, kOcclusionMap };
 inline constexpr int kMaterialMaps = 5;
 inline constexpr unsigned map_bit(MaterialMap map) { return 1u << map; }
@@ -53,7 +53,7 @@ inline const TextureMap& material_map(const Material& m, MaterialMap map) {
 // constant-color Gouraud model, which has no texture coordinate (pipeline/record/
 // pipeline_table.cpp takes it for draws without maps); Phong and Blinn-Phong their normal and
 // specular maps; PBR its normal, metallic-roughness and occlusion maps.
-inline constexpr unsigned batch_maps(BatchModel model) {
+inline constexpr unsigned maps_read(BatchModel model) {
   switch (model) {
     case BatchModel::normals:
     case BatchModel::constant_gouraud:
@@ -69,8 +69,8 @@ inline constexpr unsigned batch_maps(BatchModel model) {
   }
 }
 
-// The maps of material m that a model reading `maps_read` (batch_maps) samples: out[k] is map k,
-// or null where the model does not read it or the material has none; the emissive map only
+// The maps of material m that a model reading the maps `maps_read` (maps_read()) samples: out[k] is
+// map k, or null where the model does not read it or the material has none; the emissive map only
 // with an emissive factor (without, emission is zero).
 inline void maps_to_sample(unsigned maps_read, const Material& m,
                            const TextureMap* out[kMaterialMaps]) {
@@ -104,7 +104,7 @@ struct ShadeInput {
   // a whole 8x8 block (count 64) may go straight into a tile's rows with the tile's stride.
   int rgba_row_stride = 8;
   // Each MaterialMap's texel per pixel, where the material has the map and the model reads it
-  // (batch_maps); else null.
+  // (maps_read); else null.
   const float (*map_texel[kMaterialMaps])[4] = {};
 };
 

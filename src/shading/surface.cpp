@@ -1,4 +1,4 @@
-// Surface helpers for the lit shading models (see surface.hpp).
+// Texture map sampling at a fragment (see surface.hpp).
 #include "shading/surface.hpp"
 
 #include "facet/texture.hpp"

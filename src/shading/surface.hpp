@@ -1,5 +1,5 @@
-// The varying layout shared by the lit shading models, and the per-pixel surface they light:
-// position, (normal-mapped) normal, view direction and albedo with its texture applied.
+// The varying layout shared by the lit shading models, what their vertices write into it, and
+// texture map sampling at a fragment (for the models with fragment()).
 //
 //   slot  0-1  texture coordinate   6-8  world normal
 //         2-5  color (material x    9-11  world position

@@ -81,9 +81,9 @@ struct DrawUniforms {
   std::uint32_t instance_id = 0;  // what the instance ids output shows (Renderer::set_instance_id)
 };
 
-// Whether every light (Light or LightData) is directional: what the batch forms of the models
-// lit per pixel (shade_batch.hpp) and per vertex (vertex_batch.hpp) take, through the frame's
-// lights in the draw's uniforms, and the Lambert form without the position (pipeline_for).
+// Whether every light (Light or LightData) is directional: then no light's direction depends on
+// where the surface is (the Lambert form without the position, pipeline_for, and the batch
+// kernel's reading of positions).
 template <class Lights>
 bool all_directional(const Lights& lights) {
   return std::all_of(std::begin(lights), std::end(lights),
@@ -93,8 +93,8 @@ inline bool only_directional_lights(const DrawUniforms& u) {
   return all_directional(
       std::span(u.frame->lights, static_cast<std::size_t>(u.frame->light_count)));
 }
-// Whether a light of the frame has a shadow map: then the batch forms of the models lit per
-// pixel read the pixels' positions, and the Lambert form without them is not taken.
+// Whether a light of the frame has a shadow map: then the models lit per pixel read the pixels'
+// positions, and the Lambert form without them is not taken.
 inline bool any_shadowed_light(const DrawUniforms& u) {
   const std::span lights(u.frame->lights, static_cast<std::size_t>(u.frame->light_count));
   return std::any_of(lights.begin(), lights.end(),

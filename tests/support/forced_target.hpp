@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 #include <hwy/targets.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -56,6 +58,7 @@ int expect_rows_alike_on_every_target(int rows, int count, Fill&& fill,
   for (std::int64_t target : simd_targets()) {
     if (target == portable) continue;
     ForcedTarget forced(target);
+    std::fill_n(&out[0][0], 32 * kEntries, std::numeric_limits<float>::quiet_NaN());
     fill(out);
     for (int n = 0; n < count; ++n) {
       for (int k = 0; k < rows; ++k) {

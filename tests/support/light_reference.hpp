@@ -1,7 +1,8 @@
-// The scalar definitions the SIMD light and shadow kernels (src/shading/light_batch-inl.h,
-// shadow_batch-inl.h) are tested against bit for bit: the light arriving at a point (incident)
-// and the filtered shadow lookup (shadow_visibility), written out one point at a time, as
-// plainly as the formulas read. Tests only: the renderer has the SIMD kernels alone.
+// The light and shadow kernels' definitions written out one point at a time, as plainly as the
+// formulas read, for tests: the light arriving at a point (incident), which tests use to tell
+// which points a light reaches, and the filtered shadow lookup (shadow_visibility), which
+// shadow_batch_test compares the SIMD lookup (src/shading/shadow_batch-inl.h) with bit for bit.
+// The renderer has the SIMD kernels alone.
 #pragma once
 
 #include <algorithm>

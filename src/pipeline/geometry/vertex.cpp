@@ -33,7 +33,7 @@ void transform_range(const DrawRecord& draw, const Kernels& kernels,
     const std::size_t count = std::min(kVertexPass, end - first);
     // First, several vertices at a time, all that needs no shading model.
     kernels.vertex_pass(pass_input, first, count, pass);
-    // Then the shading model: all of them at once if it has a batch form for this draw.
+    // Then the shading model: all of them at once if it has a batch form.
     if (batch) {
       draw.pipeline.vertex_batch(u,
                                  {static_cast<int>(count),

@@ -117,7 +117,7 @@ constexpr bool writes_data() {
   return false;
 }
 
-// Models whose fragment() returns display values (shading/models.hpp's DisplayReferred).
+// Models whose colors are display values (shading/models.hpp's DisplayReferred).
 template <class Shading>
 constexpr bool display_referred() {
   if constexpr (requires { Shading::kDisplayReferred; }) return Shading::kDisplayReferred;
@@ -141,9 +141,9 @@ constexpr bool edge_overlay() {
 }
 inline constexpr float kOverlayHalfWidth = 0.5f;
 
-// The varying slot of the texture coordinate a model reads its base color map at (through
-// shading::base_color_texel), or -1: such models have the map sampled ahead, a batch of pixels
-// at a time (shading/texel_batch.hpp).
+// The varying slot of the texture coordinate a model reads its material's maps at, or -1: such
+// models have the maps sampled ahead, a batch of pixels at a time (shading/texel_batch.hpp);
+// fragment() reads the base color map's texel through shading::base_color_texel.
 template <class Shading>
 constexpr int base_color_texcoord() {
   if constexpr (requires { Shading::kBaseColorTexcoord; }) return Shading::kBaseColorTexcoord;
@@ -163,21 +163,23 @@ constexpr bool batch_shaded() {
   return kBatch;
 }
 
-// The material maps besides the base color map a batch model reads (shading::batch_maps).
+// The material maps besides the base color map a batch model reads (shading::maps_read).
 template <class Shading>
-constexpr unsigned material_maps() {
+constexpr unsigned maps_read() {
   if constexpr (requires { Shading::kMapsRead; }) return Shading::kMapsRead;
   return 0;
 }
 
-// Covered pixels that passed the depth test, packed, waiting to be shaded: a block's, a small
-// triangle's or several small triangles' of one draw (WaitingPixels) at most.
+// Covered pixels that passed the depth test, packed, waiting to be shaded: those of a triangle's
+// partly covered blocks (raster.hpp), a small triangle's or several small triangles' of one draw
+// (WaitingPixels) at most.
 struct PackedPixels {
   static constexpr int kCapacity = kBlockPixels;
   int count = 0;
-  // Positions have room for as many again: a small triangle's pixels may be found past a full
-  // batch before they move to the front of the next (WaitingPixels); and for the whole vectors
-  // the search stores past the last it finds. Depths, like w, come from interpolate_pixels.
+  // Positions have room for as many again: a block's or a small triangle's pixels may be found
+  // past a full batch before they move to the front of the next (raster.hpp, WaitingPixels); and
+  // for the whole vectors the search stores past the last it finds. Depths, like w, come from
+  // interpolate_pixels.
   std::int16_t x[2 * kCapacity + kBoxSearchSlack], y[2 * kCapacity + kBoxSearchSlack];
   alignas(64) float z[kCapacity];
   alignas(64) float w[kCapacity];
@@ -368,13 +370,9 @@ class PixelWriter {
   // Shades `fragment` (w and varyings filled in by the caller) for pixel (x, y) of the frame
   // at depth z and writes it. False if the alpha test discarded it. Only for the models with
   // fragment() (the others' batches() is always true).
-  bool write(int x, int y, float z) {
-    if constexpr (batch_shaded<Shading>()) {
-      return false;
-    } else {
-      fragment.z = z;
-      return store(x, y, z, fragment.w, Shading::fragment(fragment, uniforms_));
-    }
+  bool write(int x, int y, float z) requires(!batch_shaded<Shading>()) {
+    fragment.z = z;
+    return store(x, y, z, fragment.w, Shading::fragment(fragment, uniforms_));
   }
 
   // Writes the shaded color of pixel (x, y) of the frame, at depth z and clip w, with the
@@ -473,7 +471,7 @@ class PixelWriter {
   void sample_maps(shading::ShadeInput& in, const float (*v)[kBlockPixels], const float* w,
                    const float (*slopes)[kBlockPixels] = nullptr) {
     in.base_texel = sample_base_map(in.count, v, w, slopes);
-    if constexpr (kMaps != 0) {
+    if constexpr (kMapsRead != 0) {
       const TextureMap* const* maps = tile_.frame->draws[draw_].maps;
       for (int k = 0; k < shading::kMaterialMaps; ++k) {
         if (maps[k] != nullptr) {
@@ -527,10 +525,11 @@ class PixelWriter {
   const TextureMap* base_map_ = nullptr;  // the map sampled ahead, if any
   shading::TexelBatch texels_;
   // The texels of the other maps the model reads that the draw has (DrawRecord::maps).
-  static constexpr unsigned kMaps = material_maps<Shading>();
-  static_assert(kMaps == 0 || kTexcoordSlot >= 0, "the maps are read at the base map's coordinate");
-  using MapTexels =
-      std::conditional_t<kMaps != 0, shading::TexelBatch[shading::kMaterialMaps], std::monostate>;
+  static constexpr unsigned kMapsRead = maps_read<Shading>();
+  static_assert(kMapsRead == 0 || kTexcoordSlot >= 0,
+                "the maps are read at the base map's coordinate");
+  using MapTexels = std::conditional_t<kMapsRead != 0, shading::TexelBatch[shading::kMaterialMaps],
+                                       std::monostate>;
   [[no_unique_address]] MapTexels map_texels_;
 };
 

@@ -67,10 +67,11 @@ inline std::uint64_t block_pixels_mask(int width, int height) {
 //      (tile.block_max_depth, a per-block bound on the depth buffer: hierarchical depth);
 //   3. cover_block finds the covered pixels that pass the depth test, with their depth and
 //      varyings, SIMD across a block row;
-//   4. those pixels are shaded and written (PixelWriter::shade): the base color map sampled
-//      and models with a batch form (fragment_batch) evaluated for all of them at once with
-//      SIMD, other models one pixel at a time; whole covered blocks of opaque batch-shaded
-//      draws go straight into the tile (shade_full_block).
+//   4. those pixels join the triangle's others waiting to be shaded, up to a batch, then are
+//      shaded and written (PixelWriter::shade): the material's maps sampled and models with a
+//      batch form (fragment_batch) evaluated for all of them at once with SIMD, other models
+//      one pixel at a time; whole covered blocks of opaque batch-shaded draws go straight into
+//      the tile (shade_full_block).
 template <class Shading, AlphaMode kAlpha = AlphaMode::opaque>
 void raster_triangle(TileContext& tile, const SetupTriangle& t) {
   if (tile.samples > 1) {  // multisampled tiles (msaa.hpp; their small triangles wait too)
@@ -122,9 +123,12 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
   in.depth_stride = tile.stride;
   alignas(64) BlockFragments block;
   PackedPixels pixels;
-  // Pixels waiting in `pixels` for the next shade(): at most this many, so that interpolating a
-  // block's pixels after them, in whole vectors of up to 8, stays within the arrays.
+  // A block's pixels join those waiting in `pixels` for the next shade() while they end at most
+  // here, so that interpolating them after the others, in whole vectors of up to 8, stays
+  // within the arrays; else those are shaded first and the block's start the next batch.
   constexpr int kPendingPixels = PackedPixels::kCapacity - 7;
+  static_assert(PackedPixels::kCapacity + kBlockPixels <= std::size(PackedPixels{}.x),
+                "a block's positions are packed after a whole batch before they move up");
   for (int by = by0; by <= by1; ++by) {
     const int block_y = tile.y0 + by * kBlockSize;
     in.y_begin = std::max(y0, block_y) - block_y;
@@ -195,7 +199,7 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
                                         pixels.x, pixels.y, pixels.z, pixels.w, pixels.v);
         // Opaque draws (the only ones whose bound tightens) write every pixel they shade.
         written = covered;
-      } else {
+      } else if constexpr (!batch_shaded<Shading>()) {  // batch models always batch
         for (std::uint64_t m = block.mask; m != 0; m &= m - 1) {
           const int i = std::countr_zero(m);
           out.fragment.w = block.w[i];

@@ -38,7 +38,7 @@ DrawPipeline make_pipeline() {
   if constexpr (requires { &Shading::triangle; }) p.triangle = &Shading::triangle;
   p.lights_back_faces = lights_back_faces<Shading>();
   p.raster = &raster_triangle<Shading, kAlpha>;
-  p.material_maps = material_maps<Shading>();
+  p.maps_read = maps_read<Shading>();
   if constexpr (requires { &Shading::vertex_batch; }) p.vertex_batch = &Shading::vertex_batch;
   p.depth_tested = depth_tested<Shading>();
   p.occludes = p.depth_tested && kAlpha == AlphaMode::opaque && !additive<Shading>();

@@ -1,4 +1,4 @@
-// The physically based model's constants and surface, shared by its SIMD kernel (shade_batch.cpp,
+// The physically based model's constant and surface, shared by its SIMD kernel (shade_batch.cpp,
 // where the Cook-Torrance BRDF is) and the environment's light (environment_light.cpp).
 #pragma once
 

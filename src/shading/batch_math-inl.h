@@ -169,6 +169,27 @@ HWY_INLINE BatchV PortablePow(BatchV x, float s) {
   return PortableExp2(hn::Mul(hn::Set(BatchTag(), s), PortableLog2(x)));
 }
 
+// A map's texels for pixels j.. (ShadeInput::map_texel), a vector per channel.
+HWY_INLINE void LoadTexel(const float (*texel)[4], int j, BatchV t[4]) {
+  hn::LoadInterleaved4(BatchTag(), &texel[j][0], t[0], t[1], t[2], t[3]);
+}
+
+// The lanes of a Vec3V as glm vectors, for the steps done a lane at a time (environment
+// lookups: a texture read per lane).
+struct Lanes3 {
+  alignas(64) float x[8], y[8], z[8];
+  explicit Lanes3(const Vec3V& v) {
+    const BatchTag d;
+    hn::Store(v.x, d, x), hn::Store(v.y, d, y), hn::Store(v.z, d, z);
+  }
+  glm::vec3 operator[](int lane) const { return {x[lane], y[lane], z[lane]}; }
+  void set(int lane, glm::vec3 v) { x[lane] = v.x, y[lane] = v.y, z[lane] = v.z; }
+  Vec3V load() const {
+    const BatchTag d;
+    return {hn::Load(d, x), hn::Load(d, y), hn::Load(d, z)};
+  }
+};
+
 // Where pixel n's color goes (ShadeInput::rgba_row_stride): a vector of 8 lanes or fewer
 // starting at a multiple of its width stays within one row of 8.
 HWY_INLINE float (*ColorAt(float (*rgba)[4], int row_stride, int n))[4] {

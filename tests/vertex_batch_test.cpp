@@ -123,8 +123,8 @@ struct VertexRun {
 
 using Varyings = float[shading::kMaxVaryings][kVertexBatch];
 
-// Compares Model::vertex_batch with Model::vertex() for random draws and vertices on every
-// target.
+// Compares Model::vertex_batch with surface_vertex() (surface.hpp, the one-vertex form Phong
+// and PBR take) for random draws and vertices on every target.
 template <class Model>
 void expect_vertex_batch_gives_vertexs_bits() {
   std::mt19937 rng(20261122);
@@ -140,7 +140,7 @@ void expect_vertex_batch_gives_vertexs_bits() {
       Model::vertex_batch(draw.uniforms, run.input(), out);
       for (int n = 0; n < run.count; ++n) {
         float expected[Model::kVaryings];
-        Model::vertex(run.vertex(n), draw.uniforms, expected);
+        shading::surface_vertex<Model::kVaryings>(run.vertex(n), draw.uniforms, expected);
         for (int k = 0; k < Model::kVaryings; ++k) {
           ASSERT_EQ(std::memcmp(&expected[k], &out[k][n], sizeof(float)), 0)
               << hwy::TargetName(target) << ", round " << round << ", vertex " << n << ", varying "
@@ -198,11 +198,6 @@ TEST(VertexBatch, ConstantColorGouraudGivesPortableBitsOnEveryTarget) {
 }
 
 // vertex() lights one vertex as a run lights it wherever it is in the run.
-TEST(VertexBatch, GouraudVertexIsTheBatchOfOne) {
-  expect_vertex_batch_gives_vertexs_bits<GouraudShading>();
-  expect_vertex_batch_gives_vertexs_bits<shading::ConstantColorGouraudShading>();
-}
-
 TEST(VertexBatch, SurfaceModelsGiveVertexsBits) {
   expect_vertex_batch_gives_vertexs_bits<shading::UnlitShading>();
   expect_vertex_batch_gives_vertexs_bits<shading::LambertShading>();
@@ -302,7 +297,7 @@ TEST(VertexBatch, GouraudGivesHandWorkedLight) {
       draw.frame.light_count = 1;
       const float want[6] = {c.diffuse.x,  c.diffuse.y,  c.diffuse.z,
                              c.specular.x, c.specular.y, c.specular.z};
-      // A run of 11 such vertices, the one vertex, and a face.
+      // A run of 11 such vertices, and a face.
       VertexRun run;
       run.count = 11;
       run.positions.assign(11, glm::vec3(0.0f));
@@ -311,8 +306,7 @@ TEST(VertexBatch, GouraudGivesHandWorkedLight) {
       }
       alignas(64) Varyings out;
       Model::vertex_batch(draw.uniforms, run.input(), out);
-      float one[Model::kVaryings], corner[3][Model::kVaryings];
-      Model::vertex(run.vertex(0), draw.uniforms, one);
+      float corner[3][Model::kVaryings];
       float* corners[3] = {corner[0], corner[1], corner[2]};
       Model::face_without_normals(c.normal, glm::vec3(0.0f), draw.uniforms, corners);
       for (int k = 0; k < 6; ++k) {
@@ -320,8 +314,6 @@ TEST(VertexBatch, GouraudGivesHandWorkedLight) {
           EXPECT_EQ(out[Model::kDiffuseSlot + k][n], want[k])
               << hwy::TargetName(target) << ", " << c.what << ", varying " << k;
         }
-        EXPECT_EQ(one[Model::kDiffuseSlot + k], want[k])
-            << hwy::TargetName(target) << ", " << c.what << ", vertex(), varying " << k;
         EXPECT_EQ(corner[2][Model::kDiffuseSlot + k], want[k])
             << hwy::TargetName(target) << ", " << c.what << ", face, varying " << k;
       }

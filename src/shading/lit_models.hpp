@@ -37,15 +37,6 @@ struct GouraudLight {
                            float (*out)[kVertexBatch]) {
     u.frame->kernels->gouraud_vertex_batch(u, in, kLayout, out);
   }
-  // vertex(), every model's one-vertex form (models.hpp): the batch of one. (The vertex stage
-  // itself takes the batch form for every draw.)
-  static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
-    alignas(64) float normal[3][kVertexBatch] = {{in.normal.x}, {in.normal.y}, {in.normal.z}};
-    alignas(64) float varyings[kSpecularSlot + 3][kVertexBatch];
-    vertex_batch(u, {1, &in.position, {normal[0], normal[1], normal[2]}, &in.texcoord, &in.color},
-                 varyings);
-    for (int k = 0; k < kSpecularSlot + 3; ++k) out[k] = varyings[k][0];
-  }
   // A mesh without normals is lit per triangle with its face normal at its centre: the light of
   // that one point at its three corners.
   static void face_without_normals(glm::vec3 normal, glm::vec3 centre, const DrawUniforms& u,

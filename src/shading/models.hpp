@@ -5,7 +5,8 @@
 //   kVaryings       floats it passes from vertex to fragment (interpolated perspective-correct)
 //   kNormalSlot     index of a world normal in its varyings (or -1): filled with the face
 //                   normal when the mesh has no normals
-//   vertex(in, uniforms, out)        per vertex: writes kVaryings floats
+//   vertex(in, uniforms, out)        per vertex: writes kVaryings floats; or vertex_batch
+//                   (vertex_batch.hpp), which takes every vertex of the model's draws
 //   face(normal, centre, uniforms, v[3])  optional, per triangle before clipping: may rewrite
 //                                    the three vertices' varyings (flat shading)
 //   and how its pixels are shaded, one of:
@@ -80,9 +81,6 @@ struct UnlitShading : BatchForm<BatchModel::unlit>, SurfaceVertexBatch<kUnlitVar
   static constexpr int kVaryings = kUnlitVaryings;
   static constexpr int kNormalSlot = -1;
   static constexpr int kBaseColorTexcoord = kTexcoordSlot;
-  static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
-    surface_vertex<kVaryings>(in, u, out);
-  }
 };
 
 // Unlit for a draw whose color is the material's alone (no vertex colors:
@@ -141,9 +139,6 @@ struct LambertShadingT
   static constexpr int kVaryings = kPositioned ? kSurfaceVaryings : kUnpositionedSurfaceVaryings;
   static constexpr int kNormalSlot = shading::kNormalSlot;
   static constexpr int kBaseColorTexcoord = kTexcoordSlot;
-  static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
-    surface_vertex<kVaryings>(in, u, out);
-  }
 };
 using LambertShading = LambertShadingT<true>;
 using UnpositionedLambertShading = LambertShadingT<false>;

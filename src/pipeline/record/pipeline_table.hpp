@@ -30,7 +30,12 @@ DrawPipeline make_pipeline() {
   DrawPipeline p;
   p.varyings = Shading::kVaryings;
   p.normal_slot = Shading::kNormalSlot;
-  p.vertex = &Shading::vertex;
+  // Every vertex through the batch form where the model has one (vertex.cpp), else vertex().
+  if constexpr (requires { &Shading::vertex_batch; }) {
+    p.vertex_batch = &Shading::vertex_batch;
+  } else {
+    p.vertex = &Shading::vertex;
+  }
   if constexpr (requires { &Shading::face; }) p.face = &Shading::face;
   if constexpr (requires { &Shading::face_without_normals; }) {
     p.face_without_normals = &Shading::face_without_normals;
@@ -39,7 +44,6 @@ DrawPipeline make_pipeline() {
   p.lights_back_faces = lights_back_faces<Shading>();
   p.raster = &raster_triangle<Shading, kAlpha>;
   p.maps_read = maps_read<Shading>();
-  if constexpr (requires { &Shading::vertex_batch; }) p.vertex_batch = &Shading::vertex_batch;
   p.depth_tested = depth_tested<Shading>();
   p.occludes = p.depth_tested && kAlpha == AlphaMode::opaque && !additive<Shading>();
   p.display_referred = display_referred<Shading>() && !additive<Shading>() &&

@@ -61,6 +61,17 @@ std::string import_error(const fs::path& model, const ImportOptions& options) {
   return "";
 }
 
+// import_error and how long it took, in seconds.
+struct TimedError {
+  std::string message;
+  double seconds;
+};
+TimedError timed_import_error(const fs::path& model, const ImportOptions& options) {
+  const auto start = Clock::now();
+  std::string message = import_error(model, options);
+  return {std::move(message), std::chrono::duration<double>(Clock::now() - start).count()};
+}
+
 void expect_one_line_naming(const std::string& message, const fs::path& model) {
   EXPECT_EQ(message.find('\n'), std::string::npos) << message;
   EXPECT_EQ(message.rfind(model.string() + ": cannot import: ", 0), 0u) << message;
@@ -91,9 +102,7 @@ TEST(ImportFence, EndlessLoopStopsAtTheTimeLimit) {
   const ScopedFault fault("hang");
   ImportOptions options = quiet();
   options.import_time_limit_seconds = 0.5;
-  const auto start = Clock::now();
-  const std::string message = import_error(kBox, options);
-  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  const auto [message, seconds] = timed_import_error(kBox, options);
   expect_one_line_naming(message, kBox);
   EXPECT_NE(message.find("assimp took longer than 0.5 s reading it and was stopped"),
             std::string::npos)
@@ -109,9 +118,7 @@ TEST(ImportFence, AReaderAsleepForGoodIsStartedAgainThenReported) {
   const ScopedFault fault("stall");
   ImportOptions options = quiet();
   options.import_time_limit_seconds = 60.0;
-  const auto start = Clock::now();
-  const std::string message = import_error(kBox, options);
-  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  const auto [message, seconds] = timed_import_error(kBox, options);
   expect_one_line_naming(message, kBox);
   EXPECT_NE(message.find("assimp's fenced reader stalled 3 times"), std::string::npos) << message;
   EXPECT_GE(seconds, 3 * 2.0);  // three starts, each still for 2 s

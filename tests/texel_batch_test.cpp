@@ -1,6 +1,9 @@
-// The SIMD batch sampler (shading/texel_batch.cpp) gives sample_map's bits on every SIMD target,
-// for every filter, wrap mode, texture shape and transform, for pixels of one triangle and of
-// several (each with its own plane slopes).
+// The SIMD samplers give the scalar reference sampler's bits (support/texture_reference.hpp) on
+// every SIMD target, for every filter, wrap mode, texture shape and storage (8-bit with and
+// without the linear copy, float): the batch sampler of the shading stage
+// (shading/texel_batch.cpp) for every transform, for pixels of one triangle and of several (each
+// with its own plane slopes); and the lookups at given levels of detail (Texture::sample,
+// core/texture_sampler.cpp).
 #include "shading/texel_batch.hpp"
 
 #include <gtest/gtest.h>
@@ -11,10 +14,12 @@
 #include <limits>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "core/simd_target.hpp"
-#include "shading/surface.hpp"
+#include "core/texture_sampler.hpp"
 #include "support/forced_target.hpp"
+#include "support/texture_reference.hpp"
 
 namespace facet::test {
 namespace {
@@ -23,6 +28,13 @@ std::shared_ptr<const Texture> random_texture(std::mt19937& rng, int width, int 
   std::vector<std::uint8_t> rgba(static_cast<std::size_t>(width) * height * 4);
   for (auto& byte : rgba) byte = static_cast<std::uint8_t>(rng());
   return Texture::from_rgba8(width, height, std::move(rgba), true);
+}
+
+// A texture coordinate: mostly within a few repeats of the texture, one in four up to where
+// texel coordinates reach 2^23 (where a repeat's remainder is hardest to get right).
+float any_coordinate(std::mt19937& rng) {
+  std::uniform_real_distribution<float> near(-3.0f, 3.0f), far(-9000.0f, 9000.0f);
+  return rng() % 4 == 0 ? far(rng) : near(rng);
 }
 
 // A batch of random texture coordinates (some far outside [0, 1], some not finite) with the
@@ -36,13 +48,13 @@ struct Case {
   float slopes[shading::TexelBatch::kSlopes][shading::kTexelBatch] = {};
 };
 Case random_case(std::mt19937& rng, int count) {
-  std::uniform_real_distribution<float> coordinate(-3.0f, 3.0f), slope(-0.05f, 0.05f),
+  std::uniform_real_distribution<float> slope(-0.05f, 0.05f),
       depth(0.2f, 60.0f);
   Case c;
   c.batch.count = count;
   for (int j = 0; j < count; ++j) {
-    c.u[j] = coordinate(rng);
-    c.v[j] = coordinate(rng);
+    c.u[j] = any_coordinate(rng);
+    c.v[j] = any_coordinate(rng);
     c.w[j] = depth(rng);
   }
   if (count > 2) {
@@ -64,34 +76,39 @@ Case random_case(std::mt19937& rng, int count) {
   return c;
 }
 
-// What sample_map gives for pixel j of the batch (its derivatives as Fragment computes them,
-// from its triangle's planes).
-glm::vec4 scalar_sample(const TextureMap& map, const Case& c, int j) {
-  shading::Fragment f;
-  f.v[0] = c.batch.u[j];
-  f.v[1] = c.batch.v[j];
-  f.w = c.batch.w[j];
-  shading::Plane planes[2] = {c.planes[0], c.planes[1]};
-  shading::Plane inv_w = c.inv_w;
-  if (c.batch.slopes != nullptr) {
-    using S = shading::TexelBatch;
-    planes[0].dx = c.slopes[S::u_dx][j], planes[0].dy = c.slopes[S::u_dy][j];
-    planes[1].dx = c.slopes[S::v_dx][j], planes[1].dy = c.slopes[S::v_dy][j];
-    inv_w.dx = c.slopes[S::inv_w_dx][j], inv_w.dy = c.slopes[S::inv_w_dy][j];
-  }
-  f.planes = planes;
-  f.inv_w = &inv_w;
-  return shading::sample_map(map, f, 0);
+// What the reference gives for pixel j of the batch: its derivatives as Fragment::ddx/ddy
+// compute them, (V_x - value * W_x) * w, from its triangle's planes or its own slopes.
+glm::vec4 reference_pixel(const TextureMap& map, const shading::TexelBatch& batch, int j) {
+  using S = shading::TexelBatch;
+  const float u = batch.u[j], v = batch.v[j], w = batch.w[j];
+  float s[S::kSlopes];
+  for (int k = 0; k < S::kSlopes; ++k) s[k] = batch.slope(k, j);
+  const glm::vec2 dx{(s[S::u_dx] - u * s[S::inv_w_dx]) * w, (s[S::v_dx] - v * s[S::inv_w_dx]) * w};
+  const glm::vec2 dy{(s[S::u_dy] - u * s[S::inv_w_dy]) * w, (s[S::v_dy] - v * s[S::inv_w_dy]) * w};
+  return reference_sample_map(map, {u, v}, dx, dy);
 }
 
-TEST(TexelBatch, GivesSampleMapsBitsOnEveryTarget) {
+// Textures of every shape and storage: power-of-two sides and not, one texel, more levels
+// than a vector of the level table holds, float texels (HDR), and 8-bit ones too large for
+// the linear copy.
+std::vector<std::shared_ptr<const Texture>> sample_textures(std::mt19937& rng) {
+  std::vector<float> hdr(40 * 24 * 4);
+  std::uniform_real_distribution<float> radiance(0.0f, 8.0f);
+  for (float& value : hdr) value = radiance(rng);
+  return {random_texture(rng, 64, 32),  random_texture(rng, 24, 40), random_texture(rng, 1, 1),
+          random_texture(rng, 3, 5),
+          random_texture(rng, 1024, 2),  // 11 levels: more than one vector of the level table
+          Texture::from_rgba32f(40, 24, std::move(hdr)),
+          random_texture(rng, 1030, 1020)};  // over 2^20 texels: no linear copy
+}
+
+TEST(TexelBatch, GivesTheReferencesBitsOnEveryTarget) {
   const std::vector<std::int64_t> targets = simd_targets();
   ASSERT_GE(targets.size(), 2u);
   std::mt19937 rng(20261122);
-  const std::shared_ptr<const Texture> textures[] = {
-      random_texture(rng, 64, 32), random_texture(rng, 24, 40), random_texture(rng, 1, 1),
-      random_texture(rng, 1024, 2),  // 11 levels: more than one vector of the level table
-      Texture::from_rgba32f(8, 8, std::vector<float>(8 * 8 * 4, 0.25f))};
+  const auto textures = sample_textures(rng);
+  ASSERT_EQ(textures.back()->linear_levels().texels, nullptr);
+  ASSERT_NE(textures.front()->linear_levels().texels, nullptr);
   const glm::mat3 transforms[] = {
       glm::mat3(1.0f), glm::mat3(2.0f, 0.5f, 0.0f, -0.25f, 3.0f, 0.0f, 0.1f, 0.7f, 1.0f)};
   int compared = 0;
@@ -110,10 +127,9 @@ TEST(TexelBatch, GivesSampleMapsBitsOnEveryTarget) {
               if (rng() % 2 == 0) c.batch.slopes = c.slopes;  // pixels of several triangles
               c.batch.planes = c.planes;
               c.batch.inv_w = &c.inv_w;
-              shading::sample_batch(shading::sample_batch_kernel(chosen_simd_target()), map,
-                                    c.batch);
+              shading::sample_batch_kernel(chosen_simd_target())(map, c.batch);
               for (int j = 0; j < c.batch.count; ++j) {
-                const glm::vec4 expected = scalar_sample(map, c, j);
+                const glm::vec4 expected = reference_pixel(map, c.batch, j);
                 const float* texel = c.batch.rgba[j];
                 const glm::vec4 got{texel[0], texel[1], texel[2], texel[3]};
                 ASSERT_EQ(std::memcmp(&expected, &got, sizeof got), 0)
@@ -131,6 +147,57 @@ TEST(TexelBatch, GivesSampleMapsBitsOnEveryTarget) {
     }
   }
   EXPECT_GT(compared, 1000);
+}
+
+TEST(TextureSampler, GivesTheReferencesBitsOnEveryTarget) {
+  std::mt19937 rng(20261203);
+  const auto textures = sample_textures(rng);
+  std::uniform_real_distribution<float> level(-2.0f, 14.0f);
+  constexpr int kCount = 150;  // more than one call's worth of pixels
+  int compared = 0;
+  for (std::int64_t target : simd_targets()) {
+    ForcedTarget forced(target);
+    for (const auto& texture : textures) {
+      for (Filter filter : {Filter::nearest, Filter::bilinear, Filter::trilinear}) {
+        for (Wrap wrap_u : {Wrap::repeat, Wrap::clamp_to_edge, Wrap::mirrored_repeat}) {
+          for (Wrap wrap_v : {Wrap::repeat, Wrap::clamp_to_edge, Wrap::mirrored_repeat}) {
+            const Sampler sampler{filter, wrap_u, wrap_v};
+            std::vector<float> u(kCount), v(kCount), lod(kCount);
+            for (int i = 0; i < kCount; ++i) {
+              u[i] = any_coordinate(rng), v[i] = any_coordinate(rng), lod[i] = level(rng);
+            }
+            u[0] = std::numeric_limits<float>::quiet_NaN();
+            v[1] = -1e30f;
+            lod[2] = std::numeric_limits<float>::quiet_NaN();
+            lod[3] = std::numeric_limits<float>::infinity();
+            const int count = 1 + static_cast<int>(rng() % kCount);
+            std::vector<float> rgba(4 * kCount, -1.0f);
+            sample_at_kernel(chosen_simd_target())(*texture, sampler, u.data(), v.data(),
+                                                   lod.data(), count,
+                                                   reinterpret_cast<float(*)[4]>(rgba.data()));
+            for (int i = 0; i < kCount; ++i) {
+              const glm::vec4 expected = i < count
+                                             ? reference_sample(*texture, sampler, {u[i], v[i]}, lod[i])
+                                             : glm::vec4(-1.0f);  // past count: untouched
+              const glm::vec4 got{rgba[4 * i], rgba[4 * i + 1], rgba[4 * i + 2], rgba[4 * i + 3]};
+              ASSERT_EQ(std::memcmp(&expected, &got, sizeof got), 0)
+                  << hwy::TargetName(target) << ", " << texture->width() << "x"
+                  << texture->height() << ", filter " << static_cast<int>(filter) << ", wrap "
+                  << static_cast<int>(wrap_u) << "/" << static_cast<int>(wrap_v) << ", lookup "
+                  << i << " at (" << u[i] << ", " << v[i] << ") lod " << lod[i];
+              ++compared;
+            }
+            {  // the public form, one lookup
+              const glm::vec4 one = texture->sample(sampler, {u[5], v[5]}, lod[5]);
+              const glm::vec4 expected = reference_sample(*texture, sampler, {u[5], v[5]}, lod[5]);
+              ASSERT_EQ(std::memcmp(&expected, &one, sizeof one), 0);
+            }
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(compared, 10000);
 }
 
 }  // namespace

@@ -63,17 +63,11 @@ class Texture {
   // the given level of detail (0 = base level; only trilinear uses it).
   glm::vec4 sample(const Sampler& sampler, glm::vec2 uv, float lod = 0.0f) const;
 
-  // Level of detail from the screen-space derivatives of uv (per pixel): log2 of the larger
-  // footprint edge in texels of the base level (OpenGL 4.6 8.14.1 without anisotropy), to
-  // within a thousandth of a level. Not clamped (-inf for zero derivatives); sample() clamps
-  // to the levels that exist.
-  float lod(glm::vec2 duv_dx, glm::vec2 duv_dy) const;
-
   // Every level as linear float RGBA in one array, level l starting at float offsets[l]: what
-  // the SIMD batch sampler reads. offsets holds zeros after the last level up to a multiple of
-  // kLevelOffsetsPadding entries, so SIMD code may load it a whole vector at a time. texels is
-  // null when the texture keeps no such copy (rgba32f textures, and rgba8 ones over 2^20
-  // texels); sample() works for every texture.
+  // the sampler reads where it exists. offsets holds zeros after the last level up to a multiple
+  // of kLevelOffsetsPadding entries, so SIMD code may load it a whole vector at a time. texels
+  // is null when the texture keeps no such copy (rgba32f textures, and rgba8 ones over 2^20
+  // texels): the sampler then reads the levels themselves.
   static constexpr std::size_t kLevelOffsetsPadding = 16;
   struct LinearLevels {
     const float* texels = nullptr;
@@ -99,7 +93,7 @@ class Texture {
   Format format_ = Format::rgba8;
   bool srgb_ = false;
   std::string name_;
-  // The rgba8 levels decoded once to linear float RGBA, which sample() reads: one 16-byte load
+  // The rgba8 levels decoded once to linear float RGBA, which the sampler reads: one 16-byte load
   // a texel instead of four table lookups. All levels in one array (level l from float
   // linear_offsets_[l]), so that SIMD gathers index them with 32 bits. Empty for rgba32f
   // textures (levels_ already are) and for very large rgba8 ones (memory; see

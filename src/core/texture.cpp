@@ -1,10 +1,6 @@
-// Textures: construction with the mipmap chain, texel fetch and filtered sampling.
-// Written once at load (from_rgba8 / from_rgba32f), then read by the shading stage for every
-// textured pixel through sample(), so sample() allocates nothing and calls nothing virtual.
-//
-// Orientation: texture coordinates follow OpenGL, v = 0 is the BOTTOM row of the image
-// (stored row height - 1) and v = 1 the top, while Level rows are stored top first as image
-// files are. The flip happens in one place, flip() below.
+// Textures: construction with the mipmap chain and texel fetch. Written once at load
+// (from_rgba8 / from_rgba32f), then read by the shading stage for every textured pixel through
+// the SIMD sampler (texture_sample-inl.h), which sample() calls for one lookup.
 #include "facet/texture.hpp"
 
 #include <algorithm>
@@ -14,7 +10,9 @@
 #include <string>
 
 #include "core/color.hpp"
-#include "core/portable_math.hpp"
+#include "core/simd_target.hpp"
+#include "core/texel_decode.hpp"
+#include "core/texture_sampler.hpp"
 #include "facet/error.hpp"
 
 namespace facet {
@@ -26,24 +24,6 @@ constexpr int kMaxTextureSize = 16384;
 // (Texture::linear_): 16 bytes a texel, so at most 16 MiB plus a third for the mip chain.
 // Larger ones decode through the tables below on every fetch (the same values, more work).
 constexpr std::size_t kMaxLinearTexels = std::size_t{1} << 20;
-
-// 8-bit code -> linear float, for sRGB-encoded color (IEC 61966-2-1) and for plain unorm
-// data (code / 255). Looked up once per sample() call, then indexed per channel.
-struct DecodeTables {
-  std::array<float, 256> srgb;
-  std::array<float, 256> unorm;
-  DecodeTables() {
-    for (int i = 0; i < 256; ++i) {
-      srgb[i] = shading::decode_srgb8(static_cast<std::uint8_t>(i));
-      unorm[i] = static_cast<float>(i) / 255.0f;
-    }
-  }
-};
-
-const DecodeTables& decode_tables() {
-  static const DecodeTables kTables;  // built on first use: no static-initialisation order issue
-  return kTables;
-}
 
 std::string label(const std::string& name) { return name.empty() ? "texture" : name; }
 
@@ -84,8 +64,8 @@ struct Rgba8Reader {
 
   Rgba8Reader(const Texture::Level& level, bool srgb)
       : texels(level.rgba8.data()), width(level.width), height(level.height) {
-    const DecodeTables& tables = decode_tables();
-    color = srgb ? tables.srgb.data() : tables.unorm.data();
+    const TexelDecode& tables = texel_decode();
+    color = tables.color(srgb);
     alpha = tables.unorm.data();
   }
   Texel operator()(int x, int row) const {
@@ -103,133 +83,6 @@ struct FloatReader {
     return load_texel(texels + (static_cast<std::size_t>(row) * width + x) * 4);
   }
 };
-
-// A texel-space coordinate made safe to convert to int: NaN and huge values are clamped
-// (to 2^23: beyond it floats are whole numbers anyway, and +1 still fits in an int).
-inline float sanitize(float x) {
-  constexpr float kLimit = 8388608.0f;
-  return x > -kLimit ? std::min(x, kLimit) : -kLimit;  // the comparison is false for NaN
-}
-
-// Floor of a sanitized coordinate, without a libm call: truncate, then step down if negative.
-inline int floor_to_int(float x) {
-  const int t = static_cast<int>(x);
-  return static_cast<float>(t) > x ? t - 1 : t;
-}
-
-// i mod size, always in [0, size). Power-of-two sizes (most textures) take a mask instead of
-// a division: with two's complement, i & (size - 1) is the positive remainder even for i < 0.
-inline int positive_mod(int i, int size) {
-  if ((size & (size - 1)) == 0) return i & (size - 1);
-  const int m = i % size;
-  return m < 0 ? m + size : m;
-}
-
-// Integer texel coordinate -> a coordinate inside [0, size), OpenGL 4.6 §8.14.2 (table 8.20).
-// The mode is a template parameter: sample() picks the instance once per call, so the texel
-// loops have no mode switch.
-template <Wrap kMode>
-inline int wrap(int i, int size) {
-  if constexpr (kMode == Wrap::clamp_to_edge) {
-    return std::clamp(i, 0, size - 1);
-  } else if constexpr (kMode == Wrap::mirrored_repeat) {
-    // Period 2 * size: forwards in [0, size), backwards in [size, 2 * size).
-    const int m = positive_mod(i, 2 * size);
-    return m < size ? m : 2 * size - 1 - m;
-  } else {
-    return positive_mod(i, size);
-  }
-}
-
-// The wrapped pair (i, i + 1) of a bilinear footprint. For repeat the second follows from the
-// first without another division.
-struct TexelPair {
-  int first, second;
-};
-template <Wrap kMode>
-inline TexelPair wrap_pair(int i, int size) {
-  if constexpr (kMode == Wrap::repeat) {
-    const int first = positive_mod(i, size);
-    return {first, first + 1 == size ? 0 : first + 1};
-  } else {
-    return {wrap<kMode>(i, size), wrap<kMode>(i + 1, size)};
-  }
-}
-
-// Wrapped texel coordinate along v (counted from the bottom) -> stored row (top first).
-inline int flip(int j, int height) { return height - 1 - j; }
-
-template <Wrap kU, Wrap kV, class Reader>
-inline Texel sample_nearest(const Reader& read, glm::vec2 uv) {
-  const int w = read.width, h = read.height;
-  const int i = floor_to_int(sanitize(uv.x * static_cast<float>(w)));
-  const int j = floor_to_int(sanitize(uv.y * static_cast<float>(h)));
-  return read(wrap<kU>(i, w), flip(wrap<kV>(j, h), h));
-}
-
-// Bilinear filter, OpenGL 4.6 §8.14.2: texel centres sit at integer + 0.5, so the four texels
-// around uv * size - 0.5 are blended by the fractional part of that position.
-template <Wrap kU, Wrap kV, class Reader>
-inline Texel sample_bilinear(const Reader& read, glm::vec2 uv) {
-  const int w = read.width, h = read.height;
-  const float x = sanitize(uv.x * static_cast<float>(w) - 0.5f);
-  const float y = sanitize(uv.y * static_cast<float>(h) - 0.5f);
-  const int i0 = floor_to_int(x), j0 = floor_to_int(y);
-  const float a = x - static_cast<float>(i0), b = y - static_cast<float>(j0);  // in [0, 1)
-  const TexelPair xs = wrap_pair<kU>(i0, w), ys = wrap_pair<kV>(j0, h);
-  const int x0 = xs.first, x1 = xs.second, r0 = flip(ys.first, h), r1 = flip(ys.second, h);
-  const Texel bottom = read(x0, r0) * (1.0f - a) + read(x1, r0) * a;
-  const Texel top = read(x0, r1) * (1.0f - a) + read(x1, r1) * a;
-  return bottom * (1.0f - b) + top * b;
-}
-
-// The filter switch of Texture::sample(), for one storage format and pair of wrap modes.
-// reader(l) gives the Reader of level l.
-template <Wrap kU, Wrap kV, class MakeReader>
-Texel sample_levels(const MakeReader& reader, int level_count, Filter filter, glm::vec2 uv,
-                    float lod) {
-  switch (filter) {
-    case Filter::nearest:
-      return sample_nearest<kU, kV>(reader(0), uv);
-    case Filter::bilinear:
-      return sample_bilinear<kU, kV>(reader(0), uv);
-    case Filter::trilinear:
-    default: {
-      // Negative lod is magnification (the base level); NaN also lands on level 0.
-      const float top = static_cast<float>(level_count - 1);
-      const float l = lod > 0.0f ? std::min(lod, top) : 0.0f;
-      const int l0 = static_cast<int>(l);
-      const float f = l - static_cast<float>(l0);
-      const Texel a = sample_bilinear<kU, kV>(reader(l0), uv);
-      if (f <= 0.0f) return a;  // also the last level, where l == top
-      const Texel b = sample_bilinear<kU, kV>(reader(l0 + 1), uv);
-      return a * (1.0f - f) + b * f;
-    }
-  }
-}
-
-// Picks the sample_levels instance for the sampler's wrap modes.
-template <class MakeReader>
-Texel sample_wrapped(const MakeReader& reader, int level_count, const Sampler& s, glm::vec2 uv,
-                     float lod) {
-  constexpr Wrap kR = Wrap::repeat, kC = Wrap::clamp_to_edge, kM = Wrap::mirrored_repeat;
-  const Filter f = s.filter;
-  switch (s.wrap_u) {
-    case Wrap::clamp_to_edge:
-      if (s.wrap_v == kC) return sample_levels<kC, kC>(reader, level_count, f, uv, lod);
-      if (s.wrap_v == kM) return sample_levels<kC, kM>(reader, level_count, f, uv, lod);
-      return sample_levels<kC, kR>(reader, level_count, f, uv, lod);
-    case Wrap::mirrored_repeat:
-      if (s.wrap_v == kC) return sample_levels<kM, kC>(reader, level_count, f, uv, lod);
-      if (s.wrap_v == kM) return sample_levels<kM, kM>(reader, level_count, f, uv, lod);
-      return sample_levels<kM, kR>(reader, level_count, f, uv, lod);
-    case Wrap::repeat:
-    default:
-      if (s.wrap_v == kC) return sample_levels<kR, kC>(reader, level_count, f, uv, lod);
-      if (s.wrap_v == kM) return sample_levels<kR, kM>(reader, level_count, f, uv, lod);
-      return sample_levels<kR, kR>(reader, level_count, f, uv, lod);
-  }
-}
 
 // --- mipmap construction ----------------------------------------------------------------
 
@@ -306,6 +159,18 @@ void build_mip_chain(std::vector<Texture::Level>& levels, bool srgb) {
 }
 
 }  // namespace
+
+const TexelDecode& texel_decode() {
+  static const TexelDecode kTables = [] {
+    TexelDecode tables;
+    for (int i = 0; i < 256; ++i) {
+      tables.srgb[i] = shading::decode_srgb8(static_cast<std::uint8_t>(i));
+      tables.unorm[i] = static_cast<float>(i) / 255.0f;
+    }
+    return tables;
+  }();
+  return kTables;
+}
 
 std::shared_ptr<Texture> Texture::from_rgba8(int width, int height, std::vector<std::uint8_t> rgba,
                                              bool srgb, std::string name) {
@@ -395,34 +260,9 @@ glm::vec4 Texture::texel(int level, int x, int y) const {
 }
 
 glm::vec4 Texture::sample(const Sampler& sampler, glm::vec2 uv, float lod) const {
-  const int count = level_count();
-  if (format_ == Format::rgba32f) {
-    const auto reader = [this](int l) {
-      const Level& level = levels_[l];
-      return FloatReader{level.rgba32f.data(), level.width, level.height};
-    };
-    return to_vec4(sample_wrapped(reader, count, sampler, uv, lod));
-  }
-  if (!linear_.empty()) {
-    const auto reader = [this](int l) {
-      return FloatReader{linear_.data() + linear_offsets_[l], levels_[l].width, levels_[l].height};
-    };
-    return to_vec4(sample_wrapped(reader, count, sampler, uv, lod));
-  }
-  const auto reader = [this](int l) { return Rgba8Reader(levels_[l], srgb_); };
-  return to_vec4(sample_wrapped(reader, count, sampler, uv, lod));
-}
-
-// OpenGL 4.6 §8.14.1, equation 8.4 without anisotropy: rho is the longer of the two
-// screen-pixel footprint edges measured in base-level texels, lod = log2(rho). Computed from
-// squared lengths (0.5 * log2(rho^2)) to save the square roots, with lod_log2 (within a
-// thousandth of a level; the same bits on every CPU and in the SIMD batch sampler). Not
-// clamped: sample() does.
-float Texture::lod(glm::vec2 duv_dx, glm::vec2 duv_dy) const {
-  const glm::vec2 size(static_cast<float>(width()), static_cast<float>(height()));
-  const glm::vec2 dx = duv_dx * size, dy = duv_dy * size;
-  const float rho2 = std::max(dx.x * dx.x + dx.y * dx.y, dy.x * dy.x + dy.y * dy.y);
-  return 0.5f * shading::lod_log2(rho2);
+  float rgba[1][4];
+  sample_at_kernel(chosen_simd_target())(*this, sampler, &uv.x, &uv.y, &lod, 1, rgba);
+  return {rgba[0][0], rgba[0][1], rgba[0][2], rgba[0][3]};
 }
 
 std::shared_ptr<const Texture> missing_texture() {

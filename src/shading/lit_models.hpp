@@ -50,7 +50,7 @@ struct GouraudLight {
 };
 
 // Gouraud with a texture or vertex colors. Layout: texture coordinate and color as in the
-// surface layout (so sample_map works), then diffuse light (6-8) and specular light (9-11).
+// surface layout (the maps are read there), then diffuse light (6-8) and specular light (9-11).
 struct GouraudShading : GouraudLight<kGouraudDiffuseSlot, true>, BatchForm<BatchModel::gouraud> {
   static constexpr int kVaryings = 12;
   static constexpr int kBaseColorTexcoord = kTexcoordSlot;

@@ -32,7 +32,7 @@ struct OutputModel {
   static float alpha(const Fragment& f, const DrawUniforms& u) {
     if constexpr (!kMasked) return 1.0f;
     float a = f.v[kColorSlot + 3];
-    if (u.material->base_color_map) a *= base_color_texel(f, u).a;
+    if (u.material->base_color_map) a *= base_color_texel(f).a;
     return a;
   }
 };
@@ -122,7 +122,7 @@ struct AlbedoOutput : SamplesBaseColorAhead {
   }
   static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
     glm::vec4 color = load4(f.v + kColorSlot);
-    if (u.material->base_color_map) color *= base_color_texel(f, u);
+    if (u.material->base_color_map) color *= base_color_texel(f);
     return color;
   }
 };

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <glm/glm.hpp>
 
@@ -108,26 +109,11 @@ void surface_vertex_batch(const DrawUniforms& u, const VertexBatchInput& in,
   }
 }
 
-// The texture coordinate through a map's transform, spelled out ((m00 u + m10 v) + m20) so
-// that the SIMD batch sampler (texel_batch.cpp) can repeat it lane by lane.
-inline glm::vec2 transform_texcoord(const glm::mat3& m, glm::vec2 uv) {
-  return {m[0][0] * uv.x + m[1][0] * uv.y + m[2][0], m[0][1] * uv.x + m[1][1] * uv.y + m[2][1]};
-}
-
-// Samples a texture map at texture coordinate uv, whose screen-space derivatives are duv_dx
-// and duv_dy (the level of detail, for trilinear filtering).
-glm::vec4 sample_map_at(const TextureMap& map, glm::vec2 uv, glm::vec2 duv_dx, glm::vec2 duv_dy);
-
-// Samples a texture map at the fragment's texture coordinate (varyings slot, slot + 1), with
-// the level of detail from the coordinate's exact screen-space derivatives.
-glm::vec4 sample_map(const TextureMap& map, const Fragment& f, int slot = kTexcoordSlot);
-
-// The material's base color map at the fragment: sampled ahead by the raster loop for a whole
-// batch of pixels (SIMD, texel_batch.hpp) when the model declares kBaseColorTexcoord, else
-// here. Both give the same bits.
-inline glm::vec4 base_color_texel(const Fragment& f, const DrawUniforms& u,
-                                  int slot = kTexcoordSlot) {
-  return f.base_texel_ready ? f.base_texel : sample_map(u.material->base_color_map, f, slot);
+// The material's base color map at the fragment, sampled ahead by the raster loop for a whole
+// batch of pixels (texel_batch.hpp): a model that reads it declares kBaseColorTexcoord.
+inline glm::vec4 base_color_texel(const Fragment& f) {
+  assert(f.base_texel_ready);
+  return f.base_texel;
 }
 
 // The mark of models whose normal is the side of the surface seen: the back faces of two-sided

@@ -1,9 +1,8 @@
 // Texture sampling for a batch of pixels at once: the raster loop (pipeline/raster/raster.hpp)
 // packs the texture coordinates of up to 64 pixels (of one triangle, or of several small triangles
-// of one draw) and samples the base color map for all of them with SIMD (texel_batch.cpp, compiled
-// for every target Highway supports), instead of one sample_map() call per pixel. Same operations
-// as sample_map_at() lane by lane, so the same bits; textures the SIMD path does not handle take
-// sample_map_at() per pixel.
+// of one draw) and samples each map the model reads for all of them with SIMD (texel_batch.cpp,
+// compiled for every target Highway supports): the map's transform, each pixel's level of detail
+// from exact derivatives of its triangle's planes, then the texture's filtering.
 #pragma once
 
 #include <cstdint>
@@ -55,11 +54,8 @@ struct TexelBatch {
   alignas(64) float rgba[kTexelBatch][4];
 };
 
-// Samples map at every pixel of the batch.
-// The SIMD kernel, for textures whose levels are one linear float array and whose repeating
-// wraps are on power-of-two sides; sample_batch takes the others a pixel at a time.
+// Samples map at every pixel of the batch, any texture, filter and wrap modes.
 using SampleBatchKernel = void (*)(const TextureMap& map, TexelBatch& batch);
 SampleBatchKernel sample_batch_kernel(SimdTarget target);
-void sample_batch(SampleBatchKernel kernel, const TextureMap& map, TexelBatch& batch);
 
 }  // namespace facet::shading

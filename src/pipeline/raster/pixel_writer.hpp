@@ -497,7 +497,7 @@ class PixelWriter {
       texels.planes = fragment.planes + kTexcoordSlot;
       texels.inv_w = &t_->inv_w;
     }
-    shading::sample_batch(uniforms_.frame->kernels->sample_batch, map, texels);
+    uniforms_.frame->kernels->sample_batch(map, texels);
     return texels.rgba;
   }
 

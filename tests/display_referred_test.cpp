@@ -15,13 +15,13 @@
 #include <string>
 #include <vector>
 
-#include "core/color.hpp"
 #include "facet/framebuffer.hpp"
 #include "facet/procedural.hpp"
 #include "facet/renderer.hpp"
 #include "facet/teapot.hpp"
 #include "scenes/bench_scenes.hpp"
 #include "support/required_package.hpp"
+#include "support/srgb_reference.hpp"
 
 namespace facet::test {
 namespace {
@@ -65,7 +65,7 @@ std::vector<std::uint8_t> render_float_encoded(const Record& record,
     if (i % 4 == 3 || display) {
       bytes[i] = static_cast<std::uint8_t>((v > 0.0f ? std::min(v, 1.0f) : 0.0f) * 255.0f + 0.5f);
     } else {
-      bytes[i] = shading::encode_srgb8(v);
+      bytes[i] = encode_srgb8(v);
     }
   }
   return bytes;

@@ -1,8 +1,8 @@
-// The SIMD sRGB encode of resolve (pipeline/output/srgb_row.cpp) gives encode_srgb8's codes on
-// every SIMD target: at and around every code's threshold and the edges of its table's runs, at the
-// ends and beyond them, for NaN and infinities, with and without exposure, and for rows of
-// every length up to past a chunk.
-#include "pipeline/output/srgb_row.hpp"
+// The library's sRGB encode (core/srgb_row.cpp) gives the reference's codes
+// (support/srgb_reference.hpp) on every SIMD target: at and around every code's threshold and the
+// edges of its table's runs, at the ends and beyond them, for NaN and infinities, with and without
+// exposure, and for rows of every length up to past a chunk.
+#include "core/srgb_row.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,13 +16,14 @@
 #include "core/color.hpp"
 #include "core/simd_target.hpp"
 #include "support/forced_target.hpp"
+#include "support/srgb_reference.hpp"
 
 namespace facet::test {
 namespace {
 
-// What resolve wrote a channel at a time before the row encoder: the reference.
+// The reference, a channel at a time: color scaled and encoded, alpha clamped and rounded.
 void encode_scalar(const glm::vec4& c, float scale, std::uint8_t* out) {
-  for (int k = 0; k < 3; ++k) out[k] = shading::encode_srgb8(c[k] * scale);
+  for (int k = 0; k < 3; ++k) out[k] = encode_srgb8(c[k] * scale);
   const float a = c.a > 0.0f ? std::min(c.a, 1.0f) : 0.0f;
   out[3] = static_cast<std::uint8_t>(a * 255.0f + 0.5f);
 }
@@ -80,8 +81,8 @@ TEST(SrgbRow, GivesTheScalarCodesOnEveryTarget) {
               for (int c = 0; c < 4; ++c) row[i][c] = values[(start + 4 * i + c + shift) % n];
             }
             std::vector<std::uint8_t> simd(4 * count), scalar(4 * count);
-            pipeline::encode_srgb_row_kernel(chosen_simd_target())(row.data(), count, scale,
-                                                                   simd.data());
+            shading::encode_srgb_row_kernel(chosen_simd_target())(row.data(), count, scale,
+                                                                  simd.data());
             for (int i = 0; i < count; ++i) encode_scalar(row[i], scale, &scalar[4 * i]);
             for (int i = 0; i < 4 * count; ++i) {
               ASSERT_EQ(simd[i], scalar[i])
@@ -160,7 +161,7 @@ TEST(Unorm8Row, RoundsEveryChannelAsAlphaOnEveryTarget) {
         codes[i] = glm::vec4(shown, shown, shown, shown);
       }
       std::vector<std::uint8_t> out(4 * 64);
-      pipeline::round_unorm8_row_kernel(chosen_simd_target())(codes.data(), 64, out.data());
+      shading::round_unorm8_row_kernel(chosen_simd_target())(codes.data(), 64, out.data());
       for (int i = 0; i < 4 * 64; ++i) {
         ASSERT_EQ(out[i], first + i / 4) << hwy::TargetName(target) << ", code " << first + i / 4;
       }
@@ -168,7 +169,7 @@ TEST(Unorm8Row, RoundsEveryChannelAsAlphaOnEveryTarget) {
     for (int count : {1, 3, 16, 65}) {
       for (std::size_t start = 0; start + 4 * count <= values.size(); start += 4 * count) {
         std::vector<std::uint8_t> out(4 * count);
-        pipeline::round_unorm8_row_kernel(chosen_simd_target())(
+        shading::round_unorm8_row_kernel(chosen_simd_target())(
             reinterpret_cast<const glm::vec4*>(&values[start]), count, out.data());
         for (int i = 0; i < 4 * count; ++i) {
           const float v = values[start + i];

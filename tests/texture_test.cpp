@@ -21,6 +21,7 @@
 #include "facet/framebuffer.hpp"
 #include "facet/image_io.hpp"
 #include "support/render_helpers.hpp"
+#include "support/srgb_reference.hpp"
 #include "support/texture_reference.hpp"
 
 namespace facet {
@@ -211,12 +212,12 @@ TEST(Texture, BoxFilterWorksInLinearSpace) {
   auto t = Texture::from_rgba8(2, 2, rgba, true);
   const auto& level1 = t->level(1).rgba8;
   EXPECT_EQ(level1[0], 188);
-  EXPECT_EQ(level1[0], shading::encode_srgb8(0.5f));
+  EXPECT_EQ(level1[0], test::encode_srgb8(0.5f));
   EXPECT_EQ(level1[3], 128);  // alpha is linear: 127.5 rounded
   EXPECT_NEAR(t->texel(1, 0, 0).r, 0.5f, 0.003f);
 }
 
-// The mip builder's sRGB level against the plain decode / average / encode_srgb8.
+// The mip builder's sRGB level against the plain decode / average / reference encode.
 TEST(Texture, SrgbMipLevelMatchesAScalarReference) {
   std::mt19937 random(7);
   std::vector<std::uint8_t> rgba(std::size_t{64} * 64 * 4);
@@ -232,7 +233,7 @@ TEST(Texture, SrgbMipLevelMatchesAScalarReference) {
             sum += shading::decode_srgb8(rgba[((2 * y + dy) * 64 + 2 * x + dx) * 4 + c]);
           }
         }
-        ASSERT_EQ(level1[(y * 32 + x) * 4 + c], shading::encode_srgb8(sum * 0.25f)) << x << y;
+        ASSERT_EQ(level1[(y * 32 + x) * 4 + c], test::encode_srgb8(sum * 0.25f)) << x << y;
       }
     }
   }
@@ -334,7 +335,7 @@ TEST(Sampler, SrgbTexelsAreDecodedWhenSampled) {
 TEST(Texture, SrgbRoundTripIsExactForAllCodes) {
   for (int i = 0; i < 256; ++i) {
     const auto code = static_cast<std::uint8_t>(i);
-    EXPECT_EQ(shading::encode_srgb8(shading::decode_srgb8(code)), code) << i;
+    EXPECT_EQ(test::encode_srgb8(shading::decode_srgb8(code)), code) << i;
   }
 }
 
@@ -455,8 +456,9 @@ TEST(Texture, UnreadableFilesThrowNamingThePath) {
 namespace facet::shading {
 namespace {
 
-// The table sRGB encoder against the definition: round(linear_to_srgb(x) * 255) for a dense
-// sweep of inputs, including each code's exact threshold and its float neighbours.
+// The tables' sRGB encode (the tests' reference, support/srgb_reference.hpp, which srgb_row_test
+// holds the library's row kernel to) against the definition: round(linear_to_srgb(x) * 255) for
+// a dense sweep of inputs, and every code's decoded value back to the code.
 TEST(SrgbEncode, MatchesTheDefinitionEverywhere) {
   auto reference = [](float x) {
     return static_cast<int>(std::lround(linear_to_srgb(std::clamp(x, 0.0f, 1.0f)) * 255.0f));
@@ -464,13 +466,13 @@ TEST(SrgbEncode, MatchesTheDefinitionEverywhere) {
   int mismatches = 0;
   for (int i = 0; i <= 1000000; ++i) {
     float x = static_cast<float>(i) / 1000000.0f;
-    if (encode_srgb8(x) != reference(x)) ++mismatches;
+    if (test::encode_srgb8(x) != reference(x)) ++mismatches;
   }
   EXPECT_LE(mismatches, 2) << "only values within float rounding of a code boundary may differ";
-  EXPECT_EQ(encode_srgb8(-1.0f), 0);
-  EXPECT_EQ(encode_srgb8(2.0f), 255);
-  EXPECT_EQ(encode_srgb8(std::numeric_limits<float>::quiet_NaN()), 0);
-  for (int code = 0; code < 256; ++code) EXPECT_EQ(encode_srgb8(decode_srgb8(code)), code);
+  EXPECT_EQ(test::encode_srgb8(-1.0f), 0);
+  EXPECT_EQ(test::encode_srgb8(2.0f), 255);
+  EXPECT_EQ(test::encode_srgb8(std::numeric_limits<float>::quiet_NaN()), 0);
+  for (int code = 0; code < 256; ++code) EXPECT_EQ(test::encode_srgb8(decode_srgb8(code)), code);
 }
 
 }  // namespace

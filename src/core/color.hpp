@@ -1,9 +1,8 @@
-// Color-space helpers: sRGB <-> linear conversion (IEC 61966-2-1). The 8-bit encode and decode
-// run once per pixel at resolve, so they are table lookups inlined here.
+// Color-space helpers: sRGB <-> linear conversion (IEC 61966-2-1), the 8-bit decode and the
+// tables of the 8-bit encode (core/srgb_row.hpp encodes with them, a row at a time).
 #pragma once
 
 #include <array>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 
@@ -25,8 +24,8 @@ inline float linear_to_srgb(float c) {
 // run of 2^16 consecutive floats (a 128th of an octave) holds at most one threshold
 // (srgb_row_test's SrgbTables test checks it), so a run's entry holds both the code at its
 // start and where in the run the next code begins: one lookup and one comparison, still exact.
-// Below 2^-14 (run 0, which holds no threshold) every value is code 0. Resolve's row encoder
-// (pipeline/output/srgb_row.cpp) does the same a row at a time.
+// Below 2^-14 (run 0, which holds no threshold) every value is code 0. The row encoder
+// (core/srgb_row.cpp) is the one that reads these tables.
 struct SrgbTables {
   std::array<float, 257> thresholds;  // [256] is a sentinel above every input
   std::array<float, 256> decode;
@@ -50,25 +49,13 @@ struct SrgbTables {
 extern const SrgbTables kSrgbTables;
 inline const SrgbTables& srgb_tables() { return kSrgbTables; }
 
-// Encodes linear [0, 1] (clamped; NaN -> 0) to an 8-bit sRGB code, exactly.
-inline std::uint8_t encode_srgb8(const SrgbTables& t, float linear) {
-  if (!(linear > 0.0f)) return 0;  // also catches NaN
-  if (linear >= 1.0f) return 255;
-  const std::uint32_t bits = std::bit_cast<std::uint32_t>(linear);
-  const std::uint32_t above = bits > SrgbTables::kRunBase ? bits - SrgbTables::kRunBase : 0;
-  const std::uint32_t entry = t.run_code[above >> SrgbTables::kRunBits];
-  const bool next = (above & SrgbTables::kRunMask) >= (entry & SrgbTables::kRunOffsetMask);
-  return static_cast<std::uint8_t>((entry >> SrgbTables::kRunCodeShift) + next);
-}
-inline std::uint8_t encode_srgb8(float linear) { return encode_srgb8(srgb_tables(), linear); }
-
 // A value in [0, 1] (clamped; NaN -> 0, where std::clamp would pass NaN on and NaN to an
-// integer is undefined) rounded to an 8-bit code: alpha, and values that are not light.
-inline std::uint8_t unorm8_of_unit(float unit) {  // unit already in [0, 1]
-  return static_cast<std::uint8_t>(unit * 255.0f + 0.5f);
-}
+// integer is undefined) rounded to an 8-bit code: values that are not light, one at a time
+// (the display values of shading/models.hpp and pipeline/output/debug_view.cpp). Rows of them
+// go through round_unorm8_row_kernel (core/srgb_row.hpp), which rounds the same way.
 inline std::uint8_t encode_unorm8(float v) {
-  return unorm8_of_unit(v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f);
+  const float unit = v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;
+  return static_cast<std::uint8_t>(unit * 255.0f + 0.5f);
 }
 
 // 1 / 255: an 8-bit code c as the value c * kInverse255 in [0, 1], which encode_unorm8 turns

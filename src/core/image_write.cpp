@@ -11,8 +11,9 @@
 #include <memory>
 #include <vector>
 
-#include "core/color.hpp"
 #include "core/png_encode.hpp"
+#include "core/simd_target.hpp"
+#include "core/srgb_row.hpp"
 #include "facet/error.hpp"
 #include "facet/image_io.hpp"
 
@@ -28,14 +29,18 @@ std::string lower_extension(const std::string& path) {
   return ext;
 }
 
-// The framebuffer as 8-bit sRGB RGBA rows.
+// The framebuffer as 8-bit sRGB RGBA rows: a float one encoded a row at a time by the encode
+// kernel (core/srgb_row.hpp), each row first copied into glm::vec4s, the kernel's input.
 std::vector<std::uint8_t> to_rgba8(const Framebuffer& fb) {
   if (fb.format() == ColorFormat::rgba8_srgb) return fb.rgba8();
-  const auto& f = fb.rgba32f();
+  const std::vector<float>& f = fb.rgba32f();
   std::vector<std::uint8_t> out(f.size());
-  for (std::size_t i = 0; i < f.size(); i += 4) {
-    for (int c = 0; c < 3; ++c) out[i + c] = shading::encode_srgb8(f[i + c]);
-    out[i + 3] = shading::encode_unorm8(f[i + 3]);
+  const shading::EncodeSrgbRowKernel encode = shading::encode_srgb_row_kernel(chosen_simd_target());
+  const auto width = static_cast<std::size_t>(fb.width());
+  std::vector<glm::vec4> row(width);
+  for (std::size_t first = 0; first < f.size(); first += 4 * width) {
+    std::memcpy(row.data(), &f[first], sizeof(glm::vec4) * width);
+    encode(row.data(), fb.width(), 1.0f, &out[first]);
   }
   return out;
 }

@@ -11,6 +11,7 @@
 
 #include "core/color.hpp"
 #include "core/simd_target.hpp"
+#include "core/srgb_row.hpp"
 #include "core/texel_decode.hpp"
 #include "core/texture_sampler.hpp"
 #include "facet/error.hpp"
@@ -94,16 +95,36 @@ glm::vec4 linear_texel(const Texture::Level& level, bool srgb, int x, int y) {
   return to_vec4(Rgba8Reader(level, srgb)(x, y));
 }
 
-void store_texel(Texture::Level& level, bool srgb, int x, int y, glm::vec4 c) {
-  const std::size_t i = (static_cast<std::size_t>(y) * level.width + x) * 4;
-  if (!level.rgba32f.empty()) {
-    for (int k = 0; k < 4; ++k) level.rgba32f[i + k] = c[k];
-    return;
+// Stores linear texels into a level: as they are in a float level; in an 8-bit one through the
+// row kernels (core/srgb_row.hpp) of the target chosen when the writer is made, the color
+// channels sRGB-encoded or rounded as alpha always is.
+class LevelWriter {
+ public:
+  explicit LevelWriter(bool srgb) {
+    const SimdTarget target = chosen_simd_target();
+    if (srgb) {
+      encode_srgb_ = shading::encode_srgb_row_kernel(target);
+    } else {
+      round_unorm8_ = shading::round_unorm8_row_kernel(target);
+    }
   }
-  for (int k = 0; k < 3; ++k)
-    level.rgba8[i + k] = srgb ? shading::encode_srgb8(c[k]) : shading::encode_unorm8(c[k]);
-  level.rgba8[i + 3] = shading::encode_unorm8(c[3]);
-}
+
+  // Texels x to x + count - 1 of row y.
+  void store(Texture::Level& level, int x, int y, const glm::vec4* linear, int count) const {
+    const std::size_t i = (static_cast<std::size_t>(y) * level.width + x) * 4;
+    if (!level.rgba32f.empty()) {
+      std::memcpy(&level.rgba32f[i], linear, sizeof(glm::vec4) * count);
+    } else if (encode_srgb_ != nullptr) {
+      encode_srgb_(linear, count, 1.0f, &level.rgba8[i]);
+    } else {
+      round_unorm8_(linear, count, &level.rgba8[i]);
+    }
+  }
+
+ private:
+  shading::EncodeSrgbRowKernel encode_srgb_ = nullptr;
+  shading::RoundUnorm8RowKernel round_unorm8_ = nullptr;
+};
 
 // Storage for the level after src: each side halved (rounded down, at least 1).
 Texture::Level next_level_storage(const Texture::Level& src) {
@@ -121,18 +142,28 @@ Texture::Level next_level_storage(const Texture::Level& src) {
 
 // Fills dst, the level after src (next_level_storage): each texel the average, in linear space,
 // of the 2x2 source texels it covers, or of fewer where a side is already 1. (On odd sizes the
-// last source row/column is dropped, as a plain 2x2 box filter does.)
+// last source row/column is dropped, as a plain 2x2 box filter does.) The averages are stored
+// up to kChunkTexels of a row at a time, from a buffer on the stack: a render texture refreshes
+// its chain every frame, and steady-state frames allocate nothing.
 template <class Reader>
-void downsample(const Texture::Level& src, bool srgb, const Reader& read, Texture::Level& dst) {
+void downsample(const Texture::Level& src, const Reader& read, const LevelWriter& write,
+                Texture::Level& dst) {
+  constexpr int kChunkTexels = 64;
+  glm::vec4 averages[kChunkTexels];
   const int nx = src.width > 1 ? 2 : 1, ny = src.height > 1 ? 2 : 1;
   const float weight = 1.0f / static_cast<float>(nx * ny);
   for (int y = 0; y < dst.height; ++y) {
-    for (int x = 0; x < dst.width; ++x) {
-      glm::vec4 sum(0.0f);
-      for (int dy = 0; dy < ny; ++dy) {
-        for (int dx = 0; dx < nx; ++dx) sum += to_vec4(read(2 * x + dx, 2 * y + dy));
+    for (int first = 0; first < dst.width; first += kChunkTexels) {
+      const int count = std::min(kChunkTexels, dst.width - first);
+      for (int i = 0; i < count; ++i) {
+        const int x = first + i;
+        glm::vec4 sum(0.0f);
+        for (int dy = 0; dy < ny; ++dy) {
+          for (int dx = 0; dx < nx; ++dx) sum += to_vec4(read(2 * x + dx, 2 * y + dy));
+        }
+        averages[i] = sum * weight;
       }
-      store_texel(dst, srgb, x, y, sum * weight);
+      write.store(dst, first, y, averages, count);
     }
   }
 }
@@ -140,12 +171,13 @@ void downsample(const Texture::Level& src, bool srgb, const Reader& read, Textur
 // Filters each level from the previous (stored) one, as glGenerateMipmap does: one pass per
 // level, into the levels' existing storage.
 void filter_mip_chain(std::vector<Texture::Level>& levels, bool srgb) {
+  const LevelWriter write(srgb);
   for (std::size_t l = 1; l < levels.size(); ++l) {
     const Texture::Level& last = levels[l - 1];
     if (last.rgba32f.empty()) {
-      downsample(last, srgb, Rgba8Reader(last, srgb), levels[l]);
+      downsample(last, Rgba8Reader(last, srgb), write, levels[l]);
     } else {
-      downsample(last, false, FloatReader{last.rgba32f.data(), last.width, last.height}, levels[l]);
+      downsample(last, FloatReader{last.rgba32f.data(), last.width, last.height}, write, levels[l]);
     }
   }
 }

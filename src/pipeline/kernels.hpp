@@ -5,11 +5,11 @@
 #pragma once
 
 #include "core/simd_target.hpp"
+#include "core/srgb_row.hpp"
 #include "pipeline/geometry/cull_batch.hpp"
 #include "pipeline/geometry/vertex_pass.hpp"
 #include "pipeline/geometry/vertex_rows.hpp"
 #include "pipeline/output/sky_row.hpp"
-#include "pipeline/output/srgb_row.hpp"
 #include "pipeline/output/tone_map_row.hpp"
 #include "pipeline/raster/block_raster.hpp"
 #include "pipeline/setup/setup_batch.hpp"
@@ -25,18 +25,24 @@ struct Kernels {
   SetupBatchKernel setup = nullptr;
   RasterKernels raster{};
   SkyRowKernel sky_row = nullptr;
-  EncodeSrgbRowKernel encode_srgb_row = nullptr;
-  RoundUnorm8RowKernel round_unorm8_row = nullptr;
+  shading::EncodeSrgbRowKernel encode_srgb_row = nullptr;
+  shading::RoundUnorm8RowKernel round_unorm8_row = nullptr;
   ToneMapRowKernel tone_map_row = nullptr;
   shading::ShadingKernels shading;
 };
 
 inline Kernels kernels_for(SimdTarget target) {
-  return {
-      vertex_pass_kernel(target),  store_projected_kernel(target),  store_over_w_kernel(target),
-      cull_kernel(target),         setup_batch_kernel(target),      raster_kernels(target),
-      sky_row_kernel(target),      encode_srgb_row_kernel(target),  round_unorm8_row_kernel(target),
-      tone_map_row_kernel(target), shading::shading_kernels(target)};
+  return {vertex_pass_kernel(target),
+          store_projected_kernel(target),
+          store_over_w_kernel(target),
+          cull_kernel(target),
+          setup_batch_kernel(target),
+          raster_kernels(target),
+          sky_row_kernel(target),
+          shading::encode_srgb_row_kernel(target),
+          shading::round_unorm8_row_kernel(target),
+          tone_map_row_kernel(target),
+          shading::shading_kernels(target)};
 }
 
 }  // namespace facet::pipeline

@@ -33,12 +33,11 @@ void store_row(const Kernels& kernels, Framebuffer& target, std::size_t first_pi
 
 }  // namespace
 
-glm::vec4 display_value_of(const glm::vec4& linear) {
-  const shading::SrgbTables& tables = shading::srgb_tables();
+glm::vec4 display_value_of(const Kernels& kernels, const glm::vec4& linear) {
+  std::uint8_t codes[4];
+  kernels.encode_srgb_row(&linear, 1, 1.0f, codes);
   glm::vec4 shown = linear;
-  for (int c = 0; c < 3; ++c) {
-    shown[c] = static_cast<float>(shading::encode_srgb8(tables, linear[c])) * shading::kInverse255;
-  }
+  for (int c = 0; c < 3; ++c) shown[c] = static_cast<float>(codes[c]) * shading::kInverse255;
   return shown;
 }
 

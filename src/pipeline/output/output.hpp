@@ -51,8 +51,8 @@ void clear_tile(TileContext& tile, const Background& background, bool color_hidd
 // behind a scene then costs nothing.
 void fill_background(TileContext& tile, const Background& background);
 // A linear color as the display value a display-referred tile holds for it: its sRGB codes
-// / 255 (alpha is never encoded).
-glm::vec4 display_value_of(const glm::vec4& linear);
+// (the frame's encode kernel) / 255; alpha is never encoded.
+glm::vec4 display_value_of(const Kernels& kernels, const glm::vec4& linear);
 // Writes the tile to the framebuffer; colors are scaled by the exposure and tone mapped first
 // (tone_map_row.hpp). A multisampled tile's samples are averaged in linear light, each
 // mapped first (the depth image takes sample 0's depth). In a display-referred frame the tile

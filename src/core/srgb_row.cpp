@@ -1,8 +1,8 @@
-// Stage: output, sRGB encoding a row at a time (see srgb_row.hpp). Highway compiles this file once
-// per SIMD target; the frame fetches the chosen target's kernel (pipeline/kernels.hpp).
+// 8-bit encoding a row at a time (see srgb_row.hpp). Highway compiles this file once per SIMD
+// target; callers fetch the chosen target's kernel (encode_srgb_row_kernel below).
 #undef HWY_TARGET_INCLUDE
-#define HWY_TARGET_INCLUDE "pipeline/output/srgb_row.cpp"
-#include "pipeline/output/srgb_row.hpp"
+#define HWY_TARGET_INCLUDE "core/srgb_row.cpp"
+#include "core/srgb_row.hpp"
 
 #include <hwy/foreach_target.h>  // must come before highway.h
 #include <hwy/highway.h>
@@ -12,7 +12,7 @@
 #include "core/color.hpp"
 
 HWY_BEFORE_NAMESPACE();
-namespace facet::pipeline::HWY_NAMESPACE {
+namespace facet::shading::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
 using FloatTag = hn::ScalableTag<float>;
@@ -29,8 +29,8 @@ void EncodeSrgbRow(const glm::vec4* colors, int count, float scale, std::uint8_t
   const hn::RebindToUnsigned<IntTag> du;
   const hn::Rebind<std::uint8_t, FloatTag> du8;
   const int lanes = static_cast<int>(hn::Lanes(df));
-  using Tables = shading::SrgbTables;
-  const Tables& tables = shading::srgb_tables();
+  using Tables = SrgbTables;
+  const Tables& tables = srgb_tables();
   // Each channel's factor, (scale, scale, scale, 1) over and over: the exposure scales red,
   // green and blue, not alpha. A vector starting at float j reads it from j % 4 on, which
   // covers targets with fewer than four lanes.
@@ -38,7 +38,7 @@ void EncodeSrgbRow(const glm::vec4* colors, int count, float scale, std::uint8_t
   for (int j = 0; j < kChunk + 4; ++j) factor[j] = j % 4 == 3 ? 1.0f : scale;
   // Per channel: the bits of its value clamped to [0, 1] (NaN to 0) above those of the first
   // run (color.hpp; 0 below it), and its run. Per color channel, the run's entry; per alpha
-  // channel, its 8-bit rounding (shading::encode_unorm8).
+  // channel, its 8-bit rounding (encode_unorm8).
   alignas(64) std::int32_t above[4 * kChunk + kMaxFloatLanes];
   alignas(64) std::int32_t run[4 * kChunk + kMaxFloatLanes];
   alignas(64) std::int32_t entry[4 * kChunk + kMaxFloatLanes];
@@ -71,7 +71,7 @@ void EncodeSrgbRow(const glm::vec4* colors, int count, float scale, std::uint8_t
       const auto bits_above = hn::Max(hn::Sub(hn::BitCast(di, c), run_base), hn::Zero(di));
       hn::Store(bits_above, di, above + j);
       hn::Store(hn::ShiftRight<Tables::kRunBits>(bits_above), di, run + j);
-      // A multiplication then an addition, not fused: unorm8_of_unit exactly.
+      // A multiplication then an addition, not fused: encode_unorm8 exactly.
       hn::Store(hn::ConvertTo(di, hn::Add(hn::Mul(c, codes), half)), di, entry + j);
     }
     // 2. The color channels' runs looked up, one at a time (scalar loads: faster than gathers
@@ -98,7 +98,7 @@ void EncodeSrgbRow(const glm::vec4* colors, int count, float scale, std::uint8_t
   }
 }
 
-// Every channel as EncodeSrgbRow rounds alpha (shading::encode_unorm8), lane by lane.
+// Every channel as EncodeSrgbRow rounds alpha (encode_unorm8), lane by lane.
 void RoundUnorm8Row(const glm::vec4* colors, int count, std::uint8_t* rgba) {
   const FloatTag df;
   const IntTag di;
@@ -109,7 +109,7 @@ void RoundUnorm8Row(const glm::vec4* colors, int count, std::uint8_t* rgba) {
   const auto round = [&](const float* from, std::uint8_t* to) {
     const auto x = hn::LoadU(df, from);
     const auto c = hn::Min(hn::IfThenElseZero(hn::Gt(x, zero), x), one);
-    // A multiplication then an addition, not fused: shading::encode_unorm8 exactly.
+    // A multiplication then an addition, not fused: encode_unorm8 exactly.
     const auto code = hn::ConvertTo(di, hn::Add(hn::Mul(c, codes), half));
     hn::StoreU(hn::DemoteTo(du8, code), du8, to);
   };
@@ -126,11 +126,11 @@ void RoundUnorm8Row(const glm::vec4* colors, int count, std::uint8_t* rgba) {
   std::copy_n(padded_out, floats - j, rgba + j);
 }
 
-}  // namespace facet::pipeline::HWY_NAMESPACE
+}  // namespace facet::shading::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
 
 #if HWY_ONCE
-namespace facet::pipeline {
+namespace facet::shading {
 
 HWY_EXPORT(EncodeSrgbRow);
 HWY_EXPORT(RoundUnorm8Row);
@@ -143,5 +143,5 @@ RoundUnorm8RowKernel round_unorm8_row_kernel(SimdTarget target) {
   return HWY_DISPATCH_TABLE(RoundUnorm8Row)[target];
 }
 
-}  // namespace facet::pipeline
+}  // namespace facet::shading
 #endif  // HWY_ONCE

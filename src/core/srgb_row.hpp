@@ -1,0 +1,32 @@
+// Linear colors to 8-bit codes a row at a time: the library's one sRGB encoder and its one
+// rounding of display values, written once with Highway (srgb_row.cpp, compiled for every
+// target). Resolve encodes each tile row here (the frame's kernels, pipeline/kernels.hpp); the
+// texture mip builder, float images written as 8-bit and display_value_of fetch the kernel for
+// chosen_simd_target() once per call. SIMD lanes scale, clamp and find each channel's run of
+// the encoding table (core/color.hpp), each run's entry is loaded one at a time (scalar loads:
+// faster than gathers on the CPUs this runs on), then SIMD lanes finish the codes: exact, with
+// no pow per channel.
+#pragma once
+
+#include <cstdint>
+#include <glm/vec4.hpp>
+
+#include "core/simd_target.hpp"
+
+namespace facet::shading {
+
+// rgba[4 i + c] for the count colors: red, green and blue times scale (the exposure) encoded
+// to 8-bit sRGB, each v as the largest code whose SrgbTables threshold is at most v (v clamped
+// to [0, 1], NaN as 0; color.hpp); alpha (not scaled) clamped to [0, 1] and rounded to 8 bits
+// as encode_unorm8 rounds. The same bytes on every target.
+using EncodeSrgbRowKernel = void (*)(const glm::vec4* colors, int count, float scale,
+                                     std::uint8_t* rgba);
+EncodeSrgbRowKernel encode_srgb_row_kernel(SimdTarget target);
+
+// rgba[4 i + c] for the count colors, every channel clamped to [0, 1] (NaN to 0) and rounded
+// to 8 bits as the encode kernel rounds alpha: unorm texture levels, and the resolve of
+// display values (pipeline/output/output.hpp).
+using RoundUnorm8RowKernel = void (*)(const glm::vec4* colors, int count, std::uint8_t* rgba);
+RoundUnorm8RowKernel round_unorm8_row_kernel(SimdTarget target);
+
+}  // namespace facet::shading

@@ -19,7 +19,6 @@
 #include "core/simd_target.hpp"
 #include "scenes/glmark2_shading.hpp"
 #include "shading/environment_light.hpp"
-#include "shading/fog.hpp"
 #include "shading/kernels.hpp"
 #include "shading/lit_models.hpp"
 #include "shading/models.hpp"
@@ -441,6 +440,56 @@ void pbr_lit(float metallic, float roughness, glm::vec3 l, const std::vector<glm
     shading::PbrShading::fragment_batch(draw.uniforms,
                                         shade_input<shading::PbrShading>(in, count, draw), rgba);
     for (int n = 0; n < count; ++n) red[first + n] = rgba[n][0];
+  }
+}
+
+// The fog, on every target: linear fog keeps all of the color before its start, half halfway,
+// none past its end; exponential fog keeps e^(-density depth) (a polynomial: to within 1e-6),
+// at the view depth of a perspective camera (w) and of an orthographic one (near + z (far -
+// near)). Alpha is never fogged.
+TEST(ShadeBatch, FogMixesTheColorTowardTheFogColorWithDepth) {
+  for (std::int64_t target : simd_targets()) {
+    ForcedTarget forced(target);
+    Draw draw;
+    plain_draw(draw, {});
+    Inputs in;
+    const glm::vec3 fog_color{0.2f, 0.4f, 0.6f};
+    const glm::vec4 color{1.0f, 0.0f, 0.5f, 0.25f};
+    const float depths[] = {1.0f, 2.0f, 6.0f, 10.0f, 30.0f};
+    auto fogged = [&](FogMode mode, shading::ViewDepth view_depth) {
+      draw.lighting.fog = {mode, fog_color, 2.0f, 10.0f, 0.1f};
+      draw.frame.view_depth = view_depth;
+      alignas(64) float rgba[kShadeBatch][4];
+      for (int n = 0; n < 5; ++n) {
+        in.w[n] = view_depth.from_w != 0.0f ? depths[n] : 1.0f;
+        in.z[n] = view_depth.from_z != 0.0f ? (depths[n] - 1.0f) / 49.0f : 0.5f;
+        for (int c = 0; c < 4; ++c) rgba[n][c] = color[c];
+      }
+      const shading::ShadeInput input{5, in.w, in.z, in.v, nullptr, &draw.lighting.fog};
+      draw.kernels.fog_batch(draw.uniforms, input, rgba);
+      std::vector<glm::vec4> out;
+      for (int n = 0; n < 5; ++n) out.emplace_back(rgba[n][0], rgba[n][1], rgba[n][2], rgba[n][3]);
+      return out;
+    };
+    const shading::ViewDepth perspective{}, orthographic{0.0f, 49.0f, 1.0f};
+    for (const shading::ViewDepth& view_depth : {perspective, orthographic}) {
+      const std::vector<glm::vec4> linear = fogged(FogMode::linear, view_depth);
+      const float linear_keep[] = {1.0f, 1.0f, 0.5f, 0.0f, 0.0f};
+      const std::vector<glm::vec4> exponential = fogged(FogMode::exponential, view_depth);
+      for (int n = 0; n < 5; ++n) {
+        const float exp_keep = std::exp(-0.1f * depths[n]);
+        for (int c = 0; c < 3; ++c) {
+          EXPECT_NEAR(linear[n][c], glm::mix(fog_color[c], color[c], linear_keep[n]), 1e-6f)
+              << hwy::TargetName(target) << ", depth " << depths[n];
+          EXPECT_NEAR(exponential[n][c], glm::mix(fog_color[c], color[c], exp_keep), 1e-6f)
+              << hwy::TargetName(target) << ", depth " << depths[n];
+        }
+        EXPECT_EQ(linear[n].a, color.a);
+        EXPECT_EQ(exponential[n].a, color.a);
+      }
+      const std::vector<glm::vec4> none = fogged(FogMode::none, view_depth);
+      for (int n = 0; n < 5; ++n) EXPECT_EQ(none[n], color);
+    }
   }
 }
 

@@ -44,7 +44,7 @@ uniform TextureMap u_emissive_map;
 // exact derivatives per pixel instead (docs/gl_twin.md).
 #define SAMPLE_MAP(map) texture(map.texture, (map.transform * vec3(in_v.texcoord, 1.0)).xy)
 
-// Fog (facet/light.hpp's Fog, shading/fog.cpp).
+// Fog (facet/light.hpp's Fog, shading/shade_batch.cpp).
 uniform int u_fog_mode;  // 0 none, 1 linear, 2 exponential
 uniform vec3 u_fog_color;
 uniform float u_fog_start, u_fog_end, u_fog_density;

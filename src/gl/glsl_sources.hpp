@@ -7,7 +7,7 @@
 //                   shared by every stage: Gouraud lights vertices, flat shading lights faces
 //   kVertexGlsl     the vertex stage: world position, normal, tangent, material color
 //   kGeometryGlsl   per triangle: face normals, flat color, which side of the surface is seen
-//   kFragmentGlsl   the shading models (shade_batch.cpp), alpha mask, fog (fog.cpp)
+//   kFragmentGlsl   the shading models and fog (shade_batch.cpp), alpha mask
 //   kSkyVertexGlsl, kSkyFragmentGlsl   the background (pipeline/output/sky_row.cpp)
 #pragma once
 

@@ -13,13 +13,14 @@ namespace facet::shading {
 struct ShadingKernels {
   SimdTarget target = 0;  // for kernels outside the library (bench/scenes) to fetch theirs
   ShadeBatchKernel shade_batch = nullptr;
+  FogBatchKernel fog_batch = nullptr;
   SampleBatchKernel sample_batch = nullptr;
   GouraudVertexBatchKernel gouraud_vertex_batch = nullptr;
   GouraudLightBatchKernel gouraud_light_batch = nullptr;
 };
 
 inline ShadingKernels shading_kernels(SimdTarget target) {
-  return {target, shade_batch_kernel(target), sample_batch_kernel(target),
+  return {target, shade_batch_kernel(target), fog_batch_kernel(target), sample_batch_kernel(target),
           gouraud_vertex_batch_kernel(target), gouraud_light_batch_kernel(target)};
 }
 

@@ -115,8 +115,9 @@ HWY_INLINE Vec3V DiffuseLight(const DrawUniforms& u, const Vec3V& normal, const 
   return light;
 }
 
-// apply_fog() of fog.hpp at the ViewDepth (uniforms.hpp) of pixels j.. of `in`: the fraction
-// kept (fog_keep), clamped, then mixed with the fog color.
+// Distance fog at the ViewDepth (uniforms.hpp) of pixels j.. of `in`: the fraction of the color
+// kept, (end - depth) / (end - start) or e^(-density depth) (portable_math.hpp's polynomial:
+// the same bits on every CPU), clamped to [0, 1], then mixed with the fog color.
 HWY_INLINE void Fogged(const Fog& fog, const ViewDepth& depth, const ShadeInput& in, int j,
                        FloatV color[3]) {
   const FloatTag d;
@@ -196,6 +197,22 @@ static HWY_NOINLINE Vec3V Reflected(const DrawUniforms& u, const Vec3V& color, c
   return lanes_color.load();
 }
 
+// Fogs the colors already in rgba (ColorAt) in place, if in.fog.
+void FogBatch(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
+  if (in.fog == nullptr || in.fog->mode == FogMode::none) return;
+  const FloatTag d;
+  const int lanes = static_cast<int>(hn::Lanes(d));
+  for (int j = 0; j < in.count; j += lanes) {
+    alignas(64) float padded[8][4] = {};  // rgba past the batch's count may be unset
+    const int active = std::min(lanes, in.count - j);
+    std::memcpy(padded, ColorAt(rgba, in.rgba_row_stride, j), sizeof(float) * 4 * active);
+    FloatV color[4];
+    hn::LoadInterleaved4(d, &padded[0][0], color[0], color[1], color[2], color[3]);
+    Fogged(*in.fog, u.frame->view_depth, in, j, color);
+    StoreColors(color, ColorAt(rgba, in.rgba_row_stride, j));
+  }
+}
+
 // The normals view: display_value(safe_normalize(n) * 0.5 + 0.5) (models.hpp), then fog, if
 // any, on the decoded colors in SIMD again.
 void ShadeNormals(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
@@ -223,16 +240,7 @@ void ShadeNormals(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4])
     }
     DecodeDisplayCodes(codes, in.count, u.frame->display_referred, in.rgba_row_stride, rgba);
   }
-  if (in.fog == nullptr || in.fog->mode == FogMode::none) return;
-  for (int j = 0; j < in.count; j += lanes) {
-    alignas(64) float padded[8][4] = {};  // rgba past the batch's count may be unset
-    const int active = std::min(lanes, in.count - j);
-    std::memcpy(padded, ColorAt(rgba, in.rgba_row_stride, j), sizeof(float) * 4 * active);
-    FloatV color[4];
-    hn::LoadInterleaved4(d, &padded[0][0], color[0], color[1], color[2], color[3]);
-    Fogged(*in.fog, u.frame->view_depth, in, j, color);
-    StoreColors(color, ColorAt(rgba, in.rgba_row_stride, j));
-  }
+  FogBatch(u, in, rgba);
 }
 
 // The constant-color unlit model with a base color map and no fog: each pixel's color is the
@@ -382,10 +390,13 @@ HWY_AFTER_NAMESPACE();
 namespace facet::shading {
 
 HWY_EXPORT(ShadeBatch);
+HWY_EXPORT(FogBatch);
 
 ShadeBatchKernel shade_batch_kernel(SimdTarget target) {
   return HWY_DISPATCH_TABLE(ShadeBatch)[target];
 }
+
+FogBatchKernel fog_batch_kernel(SimdTarget target) { return HWY_DISPATCH_TABLE(FogBatch)[target]; }
 
 }  // namespace facet::shading
 #endif  // HWY_ONCE

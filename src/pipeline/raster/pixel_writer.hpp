@@ -18,7 +18,6 @@
 #include "pipeline/raster/block_raster.hpp"
 #include "pipeline/setup/fixed_point.hpp"
 #include "pipeline/setup/sample_positions.hpp"
-#include "shading/fog.hpp"
 #include "shading/fragment.hpp"
 #include "shading/kernels.hpp"
 #include "shading/shade_batch.hpp"
@@ -363,6 +362,16 @@ class PixelWriter {
     }
   }
 
+  // The color of a pixel of clip w and depth z in the fog, through the shading kernels' fog: the
+  // colors of the models shaded a pixel at a time (fragment()) and the wire overlay's wire color.
+  glm::vec4 fogged(float w, float z, const glm::vec4& color) const {
+    alignas(64) float ws[8] = {w}, zs[8] = {z};
+    alignas(64) float rgba[8][4] = {{color.r, color.g, color.b, color.a}};
+    const shading::ShadeInput in{1, ws, zs, nullptr, nullptr, &fog_};
+    uniforms_.frame->kernels->fog_batch(uniforms_, in, rgba);
+    return {rgba[0][0], rgba[0][1], rgba[0][2], rgba[0][3]};
+  }
+
   // Whether shade() does anything in batches; if not, raster loops may skip packing and call
   // write() per pixel. Always for the models without fragment().
   bool batches() const { return batch_shaded<Shading>() || base_map_ != nullptr; }
@@ -395,7 +404,9 @@ class PixelWriter {
         color = uniforms_.material->wire_color;
       }
     }
-    if constexpr (!kFogged) shading::apply_fog(color, uniforms_.frame->view_depth(w, z), fog_);
+    if constexpr (!kFogged) {
+      if (fog_.mode != FogMode::none) color = fogged(w, z, color);
+    }
     const std::ptrdiff_t pixel = index(x, y);
     if (tile_.samples > 1) {
       store_samples(pixel, z, color);

@@ -127,7 +127,7 @@ TEST(Msaa, SharedEdgesCoverEverySampleExactlyOnce) {
       for (double phase : {0.0, 0.377}) {
         expect_every_sample_once(fan(c[0], c[1], 24, phase), samples,
                                  "fan at " + std::to_string(c[0]) + "," + std::to_string(c[1]));
-        // Edges over 1024 pixels long: too long for the SIMD search's 32 bits, walked in 64.
+        // Edges over 1024 pixels long: too long for the 32-bit search, searched in doubles.
         expect_every_sample_once(
             fan(c[0], c[1], 24, phase, 3000.0), samples,
             "wide fan at " + std::to_string(c[0]) + "," + std::to_string(c[1]));

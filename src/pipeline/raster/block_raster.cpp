@@ -218,7 +218,8 @@ int FindBoxSamples(const SampleBoxSearch& in, std::int16_t* xs, std::int16_t* ys
     for (int row = 0; row < in.height; ++row) {
       hn::Vec<decltype(di)> edge[3];
       for (int i = 0; i < 3; ++i) {
-        edge[i] = hn::Add(hn::Set(di, in.e_first[i] + row * t.b[i] * 16), along_row[i]);
+        const auto first = static_cast<std::int32_t>(in.e_first[i]) + row * t.b[i] * 16;
+        edge[i] = hn::Add(hn::Set(di, first), along_row[i]);
       }
       const int y = in.y0 + row;
       const float z_row = evaluate_row(t.z, t.ref_y, static_cast<float>(y) + 0.5f);
@@ -228,7 +229,8 @@ int FindBoxSamples(const SampleBoxSearch& in, std::int16_t* xs, std::int16_t* ys
       for (int s = 0; s < in.samples; ++s) {
         auto outside = hn::Zero(di);
         for (int i = 0; i < 3; ++i) {
-          outside = hn::Or(outside, hn::Add(edge[i], hn::Set(di, in.step[i][s])));
+          outside = hn::Or(
+              outside, hn::Add(edge[i], hn::Set(di, static_cast<std::int32_t>(in.step[i][s]))));
         }
         auto covered = hn::RebindMask(df, hn::AndNot(hn::Lt(outside, hn::Zero(di)), in_box));
         if (in.depth_test) {
@@ -248,6 +250,69 @@ int FindBoxSamples(const SampleBoxSearch& in, std::int16_t* xs, std::int16_t* ys
   return count;
 }
 
+// FindBoxSamples for the triangles whose edge coefficients need more than 32 bits: the edge
+// functions in doubles, exact for the integers they hold (below 2^53: the guard band bounds
+// them near 2^47), one double lane per pixel; the depths in floats as in FindBoxSamples, each
+// compared in double (exact for floats, so the same order). Positions and masks are stored
+// for the pixels found only.
+int FindBoxSamplesWide(const SampleBoxSearch& in, std::int16_t* xs, std::int16_t* ys,
+                       std::uint16_t* masks) {
+  const hn::CappedTag<double, kBlockSize> dd;
+  const hn::Rebind<float, decltype(dd)> df;  // as many float lanes
+  const int lanes = static_cast<int>(hn::Lanes(dd));
+  const SetupTriangle& t = *in.triangle;
+  const auto zero = hn::Zero(dd);
+  alignas(64) double bits_of[kBlockSize];
+  int count = 0;
+  for (int x = 0; x < in.width; x += lanes) {
+    const auto column = hn::Iota(dd, static_cast<double>(x));
+    const auto in_box = hn::Lt(column, hn::Set(dd, static_cast<double>(in.width)));
+    hn::Vec<decltype(dd)> along_row[3];
+    for (int i = 0; i < 3; ++i) {
+      along_row[i] = hn::Mul(hn::Set(dd, static_cast<double>(std::int64_t{t.a[i]} * 16)), column);
+    }
+    // evaluate_in_row's dx * (px - ref_x), the same for every row.
+    const auto frame_x = hn::Iota(df, static_cast<float>(in.x0 + x));
+    const auto z_along_row = hn::Mul(
+        hn::Set(df, t.z.dx), hn::Sub(hn::Add(frame_x, hn::Set(df, 0.5f)), hn::Set(df, t.ref_x)));
+    for (int row = 0; row < in.height; ++row) {
+      hn::Vec<decltype(dd)> edge[3];
+      for (int i = 0; i < 3; ++i) {
+        const std::int64_t first = in.e_first[i] + std::int64_t{row} * t.b[i] * 16;
+        edge[i] = hn::Add(hn::Set(dd, static_cast<double>(first)), along_row[i]);
+      }
+      const int y = in.y0 + row;
+      const float z_row = evaluate_row(t.z, t.ref_y, static_cast<float>(y) + 0.5f);
+      const auto z = hn::Add(hn::Set(df, z_row), z_along_row);
+      const float* depth = in.depth + static_cast<std::ptrdiff_t>(row) * in.depth_stride + x;
+      auto bits = zero;
+      for (int s = 0; s < in.samples; ++s) {
+        auto covered = in_box;
+        for (int i = 0; i < 3; ++i) {
+          const auto value = hn::Add(edge[i], hn::Set(dd, static_cast<double>(in.step[i][s])));
+          covered = hn::And(covered, hn::Not(hn::Lt(value, zero)));
+        }
+        if (in.depth_test) {
+          const auto sample_z = hn::Add(z, hn::Set(df, in.sample_z[s]));
+          const auto stored = hn::LoadU(df, depth + s * in.plane);
+          covered = hn::And(covered, hn::Lt(hn::PromoteTo(dd, sample_z), hn::PromoteTo(dd, stored)));
+        }
+        bits = hn::Add(bits, hn::IfThenElseZero(covered, hn::Set(dd, static_cast<double>(1 << s))));
+      }
+      if (hn::AllFalse(dd, hn::Ne(bits, zero))) continue;
+      hn::Store(bits, dd, bits_of);
+      for (int k = 0; k < lanes; ++k) {
+        if (bits_of[k] == 0.0) continue;
+        xs[count] = static_cast<std::int16_t>(in.x0 + x + k);
+        ys[count] = static_cast<std::int16_t>(y);
+        masks[count] = static_cast<std::uint16_t>(bits_of[k]);
+        ++count;
+      }
+    }
+  }
+  return count;
+}
+
 const char* TargetName() { return hwy::TargetName(HWY_TARGET); }
 
 }  // namespace facet::pipeline::HWY_NAMESPACE
@@ -261,12 +326,14 @@ HWY_EXPORT(TargetName);
 HWY_EXPORT(InterpolatePixels);
 HWY_EXPORT(FindBoxPixels);
 HWY_EXPORT(FindBoxSamples);
+HWY_EXPORT(FindBoxSamplesWide);
 
 const char* simd_target_name() { return HWY_DISPATCH_TABLE(TargetName)[chosen_simd_target()](); }
 
 RasterKernels raster_kernels(SimdTarget index) {
   return {HWY_DISPATCH_TABLE(CoverBlock)[index], HWY_DISPATCH_TABLE(InterpolatePixels)[index],
-          HWY_DISPATCH_TABLE(FindBoxPixels)[index], HWY_DISPATCH_TABLE(FindBoxSamples)[index]};
+          HWY_DISPATCH_TABLE(FindBoxPixels)[index], HWY_DISPATCH_TABLE(FindBoxSamples)[index],
+          HWY_DISPATCH_TABLE(FindBoxSamplesWide)[index]};
 }
 
 }  // namespace facet::pipeline

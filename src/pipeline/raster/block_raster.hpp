@@ -65,16 +65,17 @@ inline constexpr int kBoxSearchSlack = 16;
 // A box search under MSAA (raster/msaa.hpp): the pixels of the box of `width` x `height` pixels
 // at frame pixel (x0, y0), at most kBlockPixels, whose samples triangle t covers and pass the
 // depth test. Edge values are counted in sixteenths of a pixel, the grid the sample positions lie
-// on: floor(E / 16) at the box's first pixel centre is e_first (clamped to +-2^30), a pixel
+// on: floor(E / 16) at the box's first pixel centre is e_first (clamped to +-2^30 for 32 bits), a pixel
 // step adds 16 * a, sample s adds step[i][s] (a * offset x + b * offset y). Exact in 32 bits
-// when |a| + |b| < 2^18 for every edge (msaa.hpp checks; others take the scalar walk): the
-// steps across a box of 64 pixels stay within 2^28, so a clamped e_first keeps every sign.
+// when |a| + |b| < 2^18 for every edge (SampleSteps::fits_32_bits; the others take the search
+// in doubles, unclamped): the steps across a box of 64 pixels stay within 2^28, so a clamped
+// e_first keeps every sign.
 struct SampleBoxSearch {
   const SetupTriangle* triangle;
   int x0, y0, width, height;
   int samples;
-  std::int32_t e_first[3];
-  std::int32_t step[3][16];
+  std::int64_t e_first[3];
+  std::int64_t step[3][16];
   const float* sample_z;  // the depth step of each sample (TileContext::sample_z)
   bool depth_test;
   const float* depth;  // plane 0's depth at the box's first pixel; kDepthSlack readable after
@@ -117,12 +118,17 @@ struct RasterKernels {
                          const float* depth, int depth_stride, bool depth_test, std::int16_t* x,
                          std::int16_t* y);
   // The MSAA box search (SampleBoxSearch): the pixels with a covered sample that passes the
-  // depth test (the same samples, and the same sample depths, z at the centre as evaluate_row
-  // and evaluate_in_row give it plus sample_z[s], as msaa.hpp's scalar walk): positions to x[n],
-  // y[n], sample bits to masks[n], from n = 0; returns how many. Like find_box_pixels it stores
-  // whole vectors, up to kBoxSearchSlack entries past the last found.
+  // depth test (the samples of the 64-bit edge functions, and the sample depths z at the centre
+  // as evaluate_row and evaluate_in_row give it plus sample_z[s]): positions to x[n], y[n],
+  // sample bits to masks[n], from n = 0; returns how many. For triangles whose coefficients
+  // allow 32 bits (SampleSteps::fits_32_bits); like find_box_pixels it stores whole vectors, up
+  // to kBoxSearchSlack entries past the last found.
   int (*find_box_samples)(const SampleBoxSearch& search, std::int16_t* x, std::int16_t* y,
                           std::uint16_t* masks);
+  // The same search for the other triangles, with the edge functions in doubles; it stores the
+  // pixels found only.
+  int (*find_box_samples_wide)(const SampleBoxSearch& search, std::int16_t* x, std::int16_t* y,
+                               std::uint16_t* masks);
 };
 RasterKernels raster_kernels(SimdTarget target);
 

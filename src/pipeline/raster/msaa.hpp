@@ -51,66 +51,23 @@ inline EdgeCover classify_samples(const SetupTriangle& t, const SampleSteps& ste
 
 // The pixels of [left, right] x [top, bottom] (frame pixels, at most PackedPixels::kCapacity):
 // the samples each covers that pass the depth test go to tile.sample_mask, and the pixels with
-// any are shaded and written. The search runs with SIMD (find_box_samples) for triangles whose
-// edge coefficients allow 32 bits, one pixel at a time in 64 bits for the others.
+// any are shaded and written. The search runs with SIMD across box rows, in 32 bits for
+// triangles whose edge coefficients allow it (find_box_samples), in doubles for the others
+// (find_box_samples_wide).
 template <class Shading, AlphaMode kAlpha>
 void shade_covered_samples(TileContext& tile, const SetupTriangle& t, const SampleSteps& steps,
                            PixelWriter<Shading, kAlpha>& out, PackedPixels& pixels, int left,
                            int top, int right, int bottom) {
   constexpr bool kDepthTest = depth_tested<Shading>();
-  const int samples = tile.samples;
-  const unsigned all = (1u << samples) - 1;
-  const std::ptrdiff_t plane = tile.sample_plane;
-  if (steps.fits_32_bits) {  // SIMD across box rows, the same samples and depths as below
-    const SampleBoxSearch search =
-        sample_box_search<kDepthTest>(tile, t, steps, tile.sample_z, left, top, right, bottom);
-    std::uint16_t masks[PackedPixels::kCapacity + kBoxSearchSlack];
-    pixels.count = tile.kernels.find_box_samples(search, pixels.x, pixels.y, masks);
-    for (int n = 0; n < pixels.count; ++n) {
-      tile.sample_mask[static_cast<std::ptrdiff_t>(pixels.y[n] - tile.y0) * tile.stride +
-                       (pixels.x[n] - tile.x0)] = masks[n];
-    }
-  } else {
-    pixels.count = 0;
-    for (int y = top; y <= bottom; ++y) {
-      std::int64_t e[3];
-      for (int i = 0; i < 3; ++i) e[i] = edge_at_centre(t, i, left, y);
-      const float z_row = evaluate_row(t.z, t.ref_y, static_cast<float>(y) + 0.5f);
-      for (int x = left; x <= right; ++x) {
-        // Most pixels of a box lie wholly outside an edge or inside all three: the steps'
-        // extremes tell, and only the others test their samples one by one.
-        const std::int64_t reach_in =
-            (e[0] + steps.edge_min[0]) | (e[1] + steps.edge_min[1]) | (e[2] + steps.edge_min[2]);
-        unsigned mask = 0;
-        if (reach_in >= 0) {
-          mask = all;
-        } else if (!((e[0] + steps.edge_max[0]) < 0 || (e[1] + steps.edge_max[1]) < 0 ||
-                     (e[2] + steps.edge_max[2]) < 0)) {
-          for (int s = 0; s < samples; ++s) {
-            const std::int64_t outside =
-                (e[0] + steps.edge[0][s]) | (e[1] + steps.edge[1][s]) | (e[2] + steps.edge[2][s]);
-            mask |= static_cast<unsigned>(outside >= 0) << s;
-          }
-        }
-        for (int i = 0; i < 3; ++i) e[i] += std::int64_t{t.a[i]} * kSubpixelScale;
-        if (mask == 0) continue;
-        const std::ptrdiff_t pixel =
-            static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride + (x - tile.x0);
-        if constexpr (kDepthTest) {
-          const float z = evaluate_in_row(z_row, t.z, t.ref_x, static_cast<float>(x) + 0.5f);
-          for (unsigned m = mask; m != 0; m &= m - 1) {
-            const int s = std::countr_zero(m);
-            if (!(z + tile.sample_z[s] < tile.depth[s * plane + pixel]))  // NaN fails
-              mask &= ~(1u << s);
-          }
-          if (mask == 0) continue;
-        }
-        tile.sample_mask[pixel] = static_cast<std::uint16_t>(mask);
-        const int n = pixels.count++;
-        pixels.x[n] = static_cast<std::int16_t>(x);
-        pixels.y[n] = static_cast<std::int16_t>(y);
-      }
-    }
+  const SampleBoxSearch search =
+      sample_box_search<kDepthTest>(tile, t, steps, tile.sample_z, left, top, right, bottom);
+  std::uint16_t masks[PackedPixels::kCapacity + kBoxSearchSlack];
+  const auto find =
+      steps.fits_32_bits ? tile.kernels.find_box_samples : tile.kernels.find_box_samples_wide;
+  pixels.count = find(search, pixels.x, pixels.y, masks);
+  for (int n = 0; n < pixels.count; ++n) {
+    tile.sample_mask[static_cast<std::ptrdiff_t>(pixels.y[n] - tile.y0) * tile.stride +
+                     (pixels.x[n] - tile.x0)] = masks[n];
   }
   if (pixels.count == 0) return;
   pixels.pad(0);  // interpolate_pixels reads whole vectors of positions

@@ -53,7 +53,8 @@ struct SampleSteps {
 
 // The search of the pixels of [left, right] x [top, bottom] (frame pixels, at most kBlockPixels)
 // for the samples triangle t covers that pass the depth test against the tile, its depth steps
-// being sample_z (SampleSteps). Only when steps.fits_32_bits.
+// being sample_z (SampleSteps): for find_box_samples when steps.fits_32_bits, else for
+// find_box_samples_wide.
 template <bool kDepthTest>
 SampleBoxSearch sample_box_search(const TileContext& tile, const SetupTriangle& t,
                                   const SampleSteps& steps, const float* sample_z, int left,
@@ -66,11 +67,9 @@ SampleBoxSearch sample_box_search(const TileContext& tile, const SetupTriangle& 
   constexpr std::int64_t kClamp = std::int64_t{1} << 30;
   for (int i = 0; i < 3; ++i) {
     // floor(E / 16): the first centre lies on the sixteenths' grid, like every sample.
-    search.e_first[i] = static_cast<std::int32_t>(
-        std::clamp(edge_at_centre(t, i, left, top) >> 4, -kClamp, kClamp));
-    for (int s = 0; s < tile.samples; ++s) {
-      search.step[i][s] = static_cast<std::int32_t>(steps.edge[i][s] / kSampleUnit);
-    }
+    const std::int64_t e_first = edge_at_centre(t, i, left, top) >> 4;
+    search.e_first[i] = steps.fits_32_bits ? std::clamp(e_first, -kClamp, kClamp) : e_first;
+    for (int s = 0; s < tile.samples; ++s) search.step[i][s] = steps.edge[i][s] / kSampleUnit;
   }
   search.sample_z = sample_z;
   search.depth_test = kDepthTest;

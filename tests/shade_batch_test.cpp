@@ -1,9 +1,11 @@
 // The SIMD batch kernel of the built-in models (shade_batch.cpp), their only implementation:
 // every target gives the portable target's bits, for one- and two-sided draws with and without
 // each material map, emission, fog (at a perspective or an orthographic camera's view depth),
-// reflections and the environment's light, under zero to three lights of every kind; and the
-// colors are the models' on cases worked out by hand. So too for glmark2's shaders (bench/scenes/
-// glmark2_batch.cpp), whose batch kernel is likewise their only implementation.
+// reflections and the environment's light, under zero to three lights of every kind; the colors
+// are the models' on cases worked out by hand; and the sky reflected by Phong and PBR surfaces
+// (and lighting them) is its scalar definition's (support/sky_reference.hpp) on every target.
+// So too for glmark2's shaders (bench/scenes/glmark2_batch.cpp), whose batch kernel is likewise
+// their only implementation.
 #include "shading/shade_batch.hpp"
 
 #include <gtest/gtest.h>

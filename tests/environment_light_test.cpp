@@ -1,20 +1,25 @@
 // Image-based lighting (Environment::image_based_lighting, shading/environment_light.hpp): the
 // irradiance of environments whose exact irradiance is known, the split sum's BRDF integral at
-// its ends, and a PBR sphere lit by nothing but a uniform environment, whose diffuse light must
-// be the albedo times the environment's radiance.
+// its ends, a PBR sphere lit by nothing but a uniform environment, whose diffuse light must be
+// the albedo times the environment's radiance, and the harmonics of the procedural sky (its
+// radiance in SIMD lanes) against the sky's scalar definition.
 #include "shading/environment_light.hpp"
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <glm/gtc/matrix_transform.hpp>
 #include <memory>
 #include <vector>
 
+#include "core/simd_target.hpp"
 #include "facet/procedural.hpp"
 #include "facet/renderer.hpp"
 #include "facet/texture.hpp"
 #include "shading/pbr_surface.hpp"
+#include "support/forced_target.hpp"
 #include "support/render_helpers.hpp"
+#include "support/sky_reference.hpp"
 
 namespace facet::test {
 namespace {
@@ -116,6 +121,47 @@ TEST(EnvironmentLight, APbrSphereInUniformLightHasItsAlbedoTimesTheRadiance) {
     EXPECT_LT(constant_ambient.rgba32f()[p], 0.2f) << "lit by Lighting::ambient alone";
   }
   EXPECT_GT(covered, 300);
+}
+
+// The harmonics of the sky, as project_environment defines them, one direction at a time with
+// the sky's scalar definition: the same grid of 64 x 32 directions, solid angles and sums.
+shading::IrradianceHarmonics reference_sky_harmonics(const Environment& sky) {
+  constexpr int kColumns = 64, kRows = 32;
+  shading::IrradianceHarmonics sums{};
+  const float cell = (2.0f * kPi / kColumns) * (kPi / kRows);
+  for (int row = 0; row < kRows; ++row) {
+    const float polar = (static_cast<float>(row) + 0.5f) * kPi / kRows;
+    const float solid_angle = cell * std::sin(polar);
+    for (int column = 0; column < kColumns; ++column) {
+      const float azimuth = (static_cast<float>(column) + 0.5f) * 2.0f * kPi / kColumns;
+      const glm::vec3 d{std::sin(polar) * std::cos(azimuth), std::cos(polar),
+                        std::sin(polar) * std::sin(azimuth)};
+      const glm::vec3 radiance = sky_radiance(sky, d) * solid_angle;
+      const float y[9] = {0.282095f,
+                          0.488603f * d.y,
+                          0.488603f * d.z,
+                          0.488603f * d.x,
+                          1.092548f * d.x * d.y,
+                          1.092548f * d.y * d.z,
+                          0.315392f * (3.0f * d.z * d.z - 1.0f),
+                          1.092548f * d.x * d.z,
+                          0.546274f * (d.x * d.x - d.y * d.y)};
+      for (int k = 0; k < 9; ++k) sums[k] += radiance * y[k];
+    }
+  }
+  return sums;
+}
+
+TEST(EnvironmentLight, TheSkysHarmonicsAreThoseOfItsDefinitionOnEveryTarget) {
+  Environment sky;
+  sky.intensity = 1.3f;
+  sky.ground = {0.1f, 0.4f, 0.2f};
+  const shading::IrradianceHarmonics want = reference_sky_harmonics(sky);
+  for (std::int64_t target : simd_targets()) {
+    ForcedTarget forced(target);
+    const shading::IrradianceHarmonics sh = project_environment(sky);
+    EXPECT_EQ(std::memcmp(sh.data(), want.data(), sizeof want), 0) << hwy::TargetName(target);
+  }
 }
 
 }  // namespace

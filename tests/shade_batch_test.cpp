@@ -1,9 +1,11 @@
 // The SIMD batch kernel of the built-in models (shade_batch.cpp), their only implementation:
 // every target gives the portable target's bits, for one- and two-sided draws with and without
 // each material map, emission, fog (at a perspective or an orthographic camera's view depth),
-// reflections and the environment's light, under zero to three lights of every kind; and the
-// colors are the models' on cases worked out by hand. So too for glmark2's shaders (bench/scenes/
-// glmark2_batch.cpp), whose batch kernel is likewise their only implementation.
+// reflections and the environment's light, under zero to three lights of every kind; the colors
+// are the models' on cases worked out by hand; and the sky reflected by Phong and PBR surfaces
+// (and lighting them) is its scalar definition's (support/sky_reference.hpp) on every target.
+// So too for glmark2's shaders (bench/scenes/glmark2_batch.cpp), whose batch kernel is likewise
+// their only implementation.
 #include "shading/shade_batch.hpp"
 
 #include <gtest/gtest.h>
@@ -23,6 +25,7 @@
 #include "shading/lit_models.hpp"
 #include "shading/models.hpp"
 #include "support/forced_target.hpp"
+#include "support/sky_reference.hpp"
 
 namespace facet::test {
 namespace {
@@ -726,6 +729,104 @@ TEST(ShadeBatch, Glmark2CelHasTwoGreensAnOutlineAndAHighlight) {
   expect_codes(cel({1, 0, 0}), glm::vec3(0.0f), "outline");
   // Halfway between L and V: R = V, att x 1 > 0.5: 0.7 + 0.3 x the lit green.
   expect_codes(cel(l + v), {0.7f, 0.7f + 0.3f * 0.6f, 0.7f}, "highlight");
+}
+
+// The sky seen in reflections, in SIMD lanes (shading/sky_gradient-inl.h), against its definition
+// (support/sky_reference.hpp): random surfaces lit by nothing but the ambient light and a random
+// sky environment, shaded by Shading on every target, each pixel's color compared bit for bit with
+// expected(draw, its albedo, unit normal and unit view direction, computed with glm).
+using SkyExpectation = glm::vec3 (*)(const Draw&, glm::vec3 albedo, glm::vec3 n, glm::vec3 view);
+
+template <class Shading>
+void expect_sky_reference_on_every_target(bool image_based_lighting, SkyExpectation expected) {
+  std::mt19937 rng(20261203);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f), any(-1.0f, 1.0f);
+  int compared = 0;
+  for (int round = 0; round < 12; ++round) {
+    Inputs in;
+    fill(rng, in);
+    for (int n = 0; n < kShadeBatch; ++n) {
+      for (int c = 0; c < 4; ++c) in.v[shading::kColorSlot + c][n] = unit(rng);
+    }
+    in.v[shading::kNormalSlot][0] = 0.5f;  // fill() zeroes one normal; reflections need one
+    Draw draw;
+    plain_draw(draw, {});
+    draw.frame.eye = {any(rng) * 5.0f, any(rng) * 5.0f, any(rng) * 5.0f};
+    draw.frame.ambient = {unit(rng) * 0.2f, unit(rng) * 0.2f, unit(rng) * 0.2f};
+    draw.material.reflectivity = 0.05f + unit(rng) * 0.95f;
+    draw.material.metallic = unit(rng);
+    draw.material.roughness = unit(rng);
+    Environment& sky = draw.lighting.environment;
+    sky.reflections = true;
+    sky.intensity = 0.5f + unit(rng) * 2.0f;
+    sky.sky_zenith = {unit(rng), unit(rng), unit(rng)};
+    sky.sky_horizon = {unit(rng), unit(rng), unit(rng)};
+    sky.ground = {unit(rng), unit(rng), unit(rng)};
+    if (image_based_lighting) {
+      draw.environment_light = shading::project_environment(sky);
+      draw.frame.environment_light = &draw.environment_light;
+    }
+    const shading::ShadeInput input = shade_input<Shading>(in, kShadeBatch, draw);
+    for (std::int64_t target : simd_targets()) {
+      ForcedTarget forced(target);
+      draw.kernels = shading::shading_kernels(chosen_simd_target());
+      alignas(64) float rgba[kShadeBatch][4];
+      Shading::fragment_batch(draw.uniforms, input, rgba);
+      for (int n = 0; n < kShadeBatch; ++n) {
+        glm::vec3 albedo, normal, position;
+        for (int c = 0; c < 3; ++c) {
+          albedo[c] = in.v[shading::kColorSlot + c][n];
+          normal[c] = in.v[shading::kNormalSlot + c][n];
+          position[c] = in.v[shading::kPositionSlot + c][n];
+        }
+        const glm::vec3 want = expected(draw, albedo, glm::normalize(normal),
+                                        glm::normalize(draw.frame.eye - position));
+        ASSERT_EQ(std::memcmp(&want, rgba[n], sizeof want), 0)
+            << hwy::TargetName(target) << ", round " << round << ", pixel " << n << ": ("
+            << rgba[n][0] << ", " << rgba[n][1] << ", " << rgba[n][2] << "), the reference ("
+            << want.r << ", " << want.g << ", " << want.b << ")";
+        ++compared;
+      }
+    }
+  }
+  EXPECT_GE(compared, 12 * kShadeBatch * 2);
+}
+
+// The PBR model's reflectance at normal incidence: mix(0.04, albedo, metallic).
+glm::vec3 pbr_f0(const Material& m, glm::vec3 albedo) {
+  return glm::vec3(0.04f * (1.0f - m.metallic)) + albedo * m.metallic;
+}
+
+TEST(ShadeBatch, PhongReflectsTheSkysDefinitionOnEveryTarget) {
+  expect_sky_reference_on_every_target<shading::PhongShading>(
+      false, [](const Draw& d, glm::vec3 albedo, glm::vec3 n, glm::vec3 v) {
+        const glm::vec3 sky = sky_radiance(d.lighting.environment, glm::reflect(-v, n));
+        return glm::mix(albedo * d.frame.ambient, sky, d.material.reflectivity);
+      });
+}
+
+TEST(ShadeBatch, PbrReflectsTheSkysDefinitionOnEveryTarget) {
+  // Reflections: the ambient light plus the mirror direction's sky through Fresnel, dimmed by
+  // roughness.
+  expect_sky_reference_on_every_target<shading::PbrShading>(
+      false, [](const Draw& d, glm::vec3 albedo, glm::vec3 n, glm::vec3 v) {
+        const Material& m = d.material;
+        const glm::vec3 f0 = pbr_f0(m, albedo);
+        const glm::vec3 ambient = d.frame.ambient * (albedo * (1.0f - m.metallic) + f0 * 0.5f);
+        const float k = 1.0f - std::clamp(glm::dot(n, v), 0.0f, 1.0f);
+        const glm::vec3 fresnel = f0 + (1.0f - f0) * (k * k * (k * k) * k);
+        const glm::vec3 sky = sky_radiance(d.lighting.environment, glm::reflect(-v, n));
+        return ambient + sky * fresnel * (1.0f - m.roughness * 0.7f);
+      });
+  // Image-based light: the split sum from the mirror direction's sky.
+  expect_sky_reference_on_every_target<shading::PbrShading>(
+      true, [](const Draw& d, glm::vec3 albedo, glm::vec3 n, glm::vec3 v) {
+        const Material& m = d.material;
+        const glm::vec3 mirror = glm::reflect(-v, n);
+        return shading::environment_light(*d.frame.environment_light,
+                                          {albedo, m.metallic, m.roughness}, pbr_f0(m, albedo), n,
+                                          v, mirror, sky_radiance(d.lighting.environment, mirror));
+      });
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
-// The SIMD sky-gradient background (pipeline/output/sky_row.cpp) gives the scalar background's bits
-// on every SIMD target, above and below the horizon, in rows all of sky and rows partly covered,
-// and leaves covered pixels alone.
+// The SIMD background (pipeline/output/sky_row.cpp) gives the bits of the sky's scalar definition
+// (support/sky_reference.hpp) on every SIMD target, above and below the horizon, in rows all of
+// sky and rows partly covered, and leaves covered pixels alone; with an image environment, the
+// image's radiance along the scalar view direction of each pixel.
 #include "pipeline/output/sky_row.hpp"
 
 #include <gtest/gtest.h>
@@ -10,18 +11,23 @@
 
 #include "core/simd_target.hpp"
 #include "facet/camera.hpp"
+#include "facet/texture.hpp"
+#include "shading/environment.hpp"
 #include "support/forced_target.hpp"
+#include "support/sky_reference.hpp"
 
 namespace facet::test {
 namespace {
 
-TEST(SkyRow, GivesTheScalarBackgroundsBitsOnEveryTarget) {
+// Random rows of random views of `environment` through the row kernel on every target, each
+// pixel the sky showed compared with expected(view, x, y).
+void expect_rows_alike_on_every_target(const Environment& environment,
+                                       glm::vec3 (*expected)(const pipeline::SkyView&,
+                                                             const Environment&, int, int)) {
   constexpr int kWidth = 203, kHeight = 117;
   constexpr float kClear = 1.0f;
   std::mt19937 rng(20261122);
   std::uniform_real_distribution<float> any(-1.0f, 1.0f);
-  Environment sky;
-  sky.intensity = 1.7f;
   int compared = 0;
   for (std::int64_t target : simd_targets()) {
     ForcedTarget forced(target);
@@ -43,14 +49,13 @@ TEST(SkyRow, GivesTheScalarBackgroundsBitsOnEveryTarget) {
       }
       const glm::vec4 untouched{-1.0f, -2.0f, -3.0f, -4.0f};
       std::vector<glm::vec4> row(count, untouched);
-      pipeline::sky_row_kernel(chosen_simd_target())(view, sky, x0, y, count, depth.data(), kClear,
-                                                     row.data());
+      pipeline::sky_row_kernel(chosen_simd_target())(view, environment, x0, y, count, depth.data(),
+                                                     kClear, row.data());
       for (int i = 0; i < count; ++i) {
-        const glm::vec4 expected =
-            depth[i] == kClear
-                ? glm::vec4(pipeline::background_radiance(view, sky, x0 + i, y), 1.0f)
-                : untouched;
-        ASSERT_EQ(std::memcmp(&expected, &row[i], sizeof expected), 0)
+        const glm::vec4 want = depth[i] == kClear
+                                   ? glm::vec4(expected(view, environment, x0 + i, y), 1.0f)
+                                   : untouched;
+        ASSERT_EQ(std::memcmp(&want, &row[i], sizeof want), 0)
             << hwy::TargetName(target) << ", round " << round << ", pixel (" << x0 + i << ", " << y
             << ")";
         ++compared;
@@ -58,6 +63,33 @@ TEST(SkyRow, GivesTheScalarBackgroundsBitsOnEveryTarget) {
     }
   }
   EXPECT_GT(compared, 500);
+}
+
+TEST(SkyRow, GivesTheSkysDefinitionBitsOnEveryTarget) {
+  Environment sky;
+  sky.intensity = 1.7f;
+  expect_rows_alike_on_every_target(sky, background_sky);
+}
+
+TEST(SkyRow, ReadsAnImageAlongEachPixelsViewDirectionOnEveryTarget) {
+  // An equirectangular image of distinct texels, and the same as a sphere map.
+  constexpr int kSide = 16;
+  std::vector<float> rgba(kSide * kSide * 4);
+  for (int i = 0; i < kSide * kSide; ++i) {
+    rgba[i * 4] = static_cast<float>(i % kSide) / kSide;
+    rgba[i * 4 + 1] = static_cast<float>(i / kSide) / kSide;
+    rgba[i * 4 + 2] = static_cast<float>(i % 7) / 7.0f;
+    rgba[i * 4 + 3] = 1.0f;
+  }
+  Environment environment;
+  environment.image = Texture::from_rgba32f(kSide, kSide, std::move(rgba), "texels");
+  environment.intensity = 1.3f;
+  const auto image = [](const pipeline::SkyView& view, const Environment& env, int x, int y) {
+    return shading::image_radiance(env, background_direction(view, x, y));
+  };
+  expect_rows_alike_on_every_target(environment, image);
+  environment.projection = EnvironmentProjection::sphere_map;
+  expect_rows_alike_on_every_target(environment, image);
 }
 
 }  // namespace

@@ -139,7 +139,7 @@ void gouraud_light(vec3 position, vec3 normal, out vec3 diffuse, out vec3 specul
   }
 }
 
-// ---- Environment (shading/environment.cpp): sky gradient or an image. ----
+// ---- Environment (shading/sky_gradient-inl.h, environment.cpp): sky gradient or an image. ----
 uniform bool u_env_has_image;
 uniform bool u_env_sphere_map;  // else equirectangular
 uniform float u_env_intensity;

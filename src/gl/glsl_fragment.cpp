@@ -266,7 +266,7 @@ uniform vec2 u_viewport;  // width, height in pixels
 out vec4 out_color;
 
 // The pixel centre's point on the far plane, seen from the eye (sky_row.cpp's
-// background_radiance). GL counts rows from the bottom, facet from the top: the same NDC.
+// FillSkyRow). GL counts rows from the bottom, facet from the top: the same NDC.
 void main() {
   vec2 ndc = gl_FragCoord.xy / u_viewport * 2.0 - 1.0;
   vec4 far = u_inverse_view_projection * vec4(ndc, 1.0, 1.0);

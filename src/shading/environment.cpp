@@ -8,15 +8,6 @@
 #include "shading/pbr_surface.hpp"  // kPi
 
 namespace facet::shading {
-namespace {
-
-glm::vec3 sky_gradient(const Environment& env, glm::vec3 d) {
-  // Square roots widen the bright band at the horizon, as a real sky looks.
-  if (d.y >= 0.0f) return glm::mix(env.sky_horizon, env.sky_zenith, std::sqrt(d.y));
-  return glm::mix(env.sky_horizon, env.ground, std::sqrt(std::min(-d.y * 4.0f, 1.0f)));
-}
-
-}  // namespace
 
 glm::vec2 equirectangular_uv(glm::vec3 d) {
   float u = 0.5f + std::atan2(d.x, -d.z) / (2.0f * kPi);
@@ -30,20 +21,13 @@ glm::vec2 sphere_map_uv(glm::vec3 d) {
   return {d.x / m + 0.5f, d.y / m + 0.5f};
 }
 
-glm::vec3 environment_radiance(const Environment& env, glm::vec3 d, float lod) {
-  if (!env.image) return sky_gradient(env, d) * env.intensity;
+glm::vec3 image_radiance(const Environment& env, glm::vec3 d, float lod) {
   Sampler sampler;
   sampler.wrap_v = Wrap::clamp_to_edge;
   glm::vec2 uv = env.projection == EnvironmentProjection::equirectangular ? equirectangular_uv(d)
                                                                           : sphere_map_uv(d);
   if (env.projection == EnvironmentProjection::sphere_map) sampler.wrap_u = Wrap::clamp_to_edge;
   return glm::vec3(env.image->sample(sampler, uv, lod)) * env.intensity;
-}
-
-glm::vec3 mix_reflection(const Environment& environment, float reflectivity, glm::vec3 color,
-                         glm::vec3 view, glm::vec3 normal) {
-  const glm::vec3 mirror = glm::reflect(-view, normal);
-  return glm::mix(color, environment_radiance(environment, mirror), reflectivity);
 }
 
 }  // namespace facet::shading

@@ -5,9 +5,11 @@
 #include <cmath>
 #include <glm/glm.hpp>
 
+#include "core/simd_target.hpp"
 #include "facet/texture.hpp"
 #include "shading/environment.hpp"
 #include "shading/pbr_surface.hpp"  // kPi
+#include "shading/sky_batch.hpp"
 
 namespace facet::shading {
 namespace {
@@ -41,16 +43,29 @@ IrradianceHarmonics project_environment(const Environment& environment) {
   IrradianceHarmonics sums{};
   const float lod = grid_lod(environment);
   const float cell = (2.0f * kPi / kColumns) * (kPi / kRows);
+  const SkyBatchKernel sky = environment.image ? nullptr : sky_batch_kernel(chosen_simd_target());
   for (int row = 0; row < kRows; ++row) {
     const float polar = (static_cast<float>(row) + 0.5f) * kPi / kRows;  // from straight up
     const float solid_angle = cell * std::sin(polar);
+    std::array<glm::vec3, kColumns> directions, radiance;
+    std::array<float, kColumns> up;
     for (int column = 0; column < kColumns; ++column) {
       const float azimuth = (static_cast<float>(column) + 0.5f) * 2.0f * kPi / kColumns;
-      const glm::vec3 d{std::sin(polar) * std::cos(azimuth), std::cos(polar),
-                        std::sin(polar) * std::sin(azimuth)};
-      const glm::vec3 radiance = environment_radiance(environment, d, lod) * solid_angle;
-      const std::array<float, 9> y = basis(d);
-      for (int k = 0; k < 9; ++k) sums[k] += radiance * y[k];
+      directions[column] = {std::sin(polar) * std::cos(azimuth), std::cos(polar),
+                            std::sin(polar) * std::sin(azimuth)};
+      up[column] = directions[column].y;
+    }
+    if (sky != nullptr) {
+      sky(environment, up.data(), kColumns, radiance.data());
+    } else {
+      for (int column = 0; column < kColumns; ++column) {
+        radiance[column] = image_radiance(environment, directions[column], lod);
+      }
+    }
+    for (int column = 0; column < kColumns; ++column) {
+      const glm::vec3 weighted = radiance[column] * solid_angle;
+      const std::array<float, 9> y = basis(directions[column]);
+      for (int k = 0; k < 9; ++k) sums[k] += weighted * y[k];
     }
   }
   return sums;
@@ -74,25 +89,15 @@ SpecularIntegral specular_integral(float n_dot_v, float roughness) {
   return {-1.04f * a004 + r.z, 1.04f * a004 + r.w};
 }
 
-glm::vec3 environment_light(const IrradianceHarmonics& light, const Environment& environment,
-                            const PbrSurface& surface, glm::vec3 f0, glm::vec3 n, glm::vec3 v) {
+glm::vec3 environment_light(const IrradianceHarmonics& light, const PbrSurface& surface,
+                            glm::vec3 f0, glm::vec3 n, glm::vec3 v, glm::vec3 mirror,
+                            glm::vec3 seen) {
   const glm::vec3 diffuse =
       surface.albedo * (1.0f - surface.metallic) * irradiance(light, n) * (1.0f / kPi);
-  const glm::vec3 mirror = glm::reflect(-v, n);
   const float spread = surface.roughness * surface.roughness;
-  const glm::vec3 seen =
-      glm::mix(environment_radiance(environment, mirror, surface.roughness * 8.0f),
-               irradiance(light, mirror) * (1.0f / kPi), spread);
+  const glm::vec3 blurred = glm::mix(seen, irradiance(light, mirror) * (1.0f / kPi), spread);
   const SpecularIntegral brdf = specular_integral(glm::dot(n, v), surface.roughness);
-  return diffuse + seen * (f0 * brdf.scale + brdf.bias);
-}
-
-glm::vec3 environment_reflection(const Environment& environment, const PbrSurface& surface,
-                                 glm::vec3 fresnel, glm::vec3 n, glm::vec3 v) {
-  const glm::vec3 mirror = glm::reflect(-v, n);
-  const float blur = surface.roughness * 8.0f;
-  return environment_radiance(environment, mirror, blur) * fresnel *
-         (1.0f - surface.roughness * 0.7f);
+  return diffuse + blurred * (f0 * brdf.scale + brdf.bias);
 }
 
 }  // namespace facet::shading

@@ -20,8 +20,8 @@ namespace facet::shading {
 // order (0,0), (1,-1), (1,0), (1,1), (2,-2), (2,-1), (2,0), (2,1), (2,2).
 using IrradianceHarmonics = std::array<glm::vec3, 9>;
 
-// Projects the environment (its image at a coarse mip level, or the sky gradient), integrating
-// over a 64 x 32 grid of directions weighted by their solid angles.
+// Projects the environment (its image at a coarse mip level, or the sky gradient with SIMD:
+// sky_batch.hpp), integrating over a 64 x 32 grid of directions weighted by their solid angles.
 IrradianceHarmonics project_environment(const Environment& environment);
 
 // The irradiance on a surface of unit normal n: pi times the radiance of a uniform environment.
@@ -35,16 +35,12 @@ SpecularIntegral specular_integral(float n_dot_v, float roughness);
 
 // The light a physically based surface (PbrSurface, pbr_surface.hpp; f0 its reflectance at normal
 // incidence) takes from the environment at unit normal n seen from unit direction v: the
-// irradiance through the diffuse albedo, and the split sum's specular from the mirror
-// direction's radiance blurred by roughness, moving toward the irradiance around that direction
+// irradiance through the diffuse albedo, and the split sum's specular from `seen`, the radiance
+// along the mirror direction `mirror` (glm::reflect(-v, n)) blurred by roughness (the shading
+// kernel's lookup: environment_batch-inl.h), moving toward the irradiance around that direction
 // (a cosine lobe, the widest GGX lobe's shape) as the surface roughens.
-glm::vec3 environment_light(const IrradianceHarmonics& light, const Environment& environment,
-                            const PbrSurface& surface, glm::vec3 f0, glm::vec3 n, glm::vec3 v);
-
-// Without image-based lighting, what reflections add to a physically based surface's ambient
-// light: the mirror direction's radiance, blurred by roughness (a mip level), through `fresnel`
-// (the surface's Fresnel reflectance at n . v).
-glm::vec3 environment_reflection(const Environment& environment, const PbrSurface& surface,
-                                 glm::vec3 fresnel, glm::vec3 n, glm::vec3 v);
+glm::vec3 environment_light(const IrradianceHarmonics& light, const PbrSurface& surface,
+                            glm::vec3 f0, glm::vec3 n, glm::vec3 v, glm::vec3 mirror,
+                            glm::vec3 seen);
 
 }  // namespace facet::shading

@@ -14,6 +14,7 @@
 #include <algorithm>
 
 #include "shading/batch_math-inl.h"
+#include "shading/environment_batch-inl.h"
 #include "shading/environment_light.hpp"
 #include "shading/light_batch-inl.h"
 #include "shading/pbr_surface.hpp"
@@ -84,9 +85,9 @@ HWY_INLINE Vec3V CookTorrance(const Vec3V& albedo, BatchV metallic, BatchV rough
 
 // The PBR model's light for pixels j..: each light through Cook-Torrance (times pi, the glTF
 // "punctual light" convention, so a white surface under a unit light is as bright as in Lambert),
-// then the ambient light or the environment's (environment_light.hpp) through the occlusion map;
-// emission is the caller's. The metallic-roughness map holds roughness in green, metallic in
-// blue (glTF's packing).
+// then the ambient light (plus the environment's reflections, if it has them) or the environment's
+// light (environment_light.hpp), through the occlusion map; emission is the caller's. The
+// metallic-roughness map holds roughness in green, metallic in blue (glTF's packing).
 HWY_INLINE Vec3V PbrLight(const DrawUniforms& u, const ShadeInput& in, int j, const Vec3V& n,
                           const Vec3V& view, const Vec3V& position, const Vec3V& albedo,
                           BatchMask active) {
@@ -139,25 +140,34 @@ HWY_INLINE Vec3V PbrLight(const DrawUniforms& u, const ShadeInput& in, int j, co
                         hn::Add(hn::Mul(albedo.z, diffuse_share), hn::Mul(f0.z, half)))};
   const Environment& environment = u.frame->lighting->environment;
   if (u.frame->environment_light != nullptr || environment.reflections) {
-    const BatchV k5 = SchlickK5(Dot(n, view));
-    const Lanes3 lanes_fresnel(Vec3V{Schlick(f0.x, k5), Schlick(f0.y, k5), Schlick(f0.z, k5)});
-    Lanes3 lanes_ambient(ambient);
-    const Lanes3 lanes_albedo(albedo), lanes_f0(f0), lanes_n(n), lanes_view(view);
-    alignas(64) float lanes_metallic[8], lanes_roughness[8];
-    hn::Store(metallic, d, lanes_metallic), hn::Store(roughness, d, lanes_roughness);
+    // The environment seen in the mirror direction glm::reflect(-view, n), blurred by roughness.
+    const Vec3V mirror = Reflect(Negate(view), n);
     const int count = std::min(static_cast<int>(hn::Lanes(d)), in.count - j);
-    for (int lane = 0; lane < count; ++lane) {
-      const PbrSurface surface{lanes_albedo[lane], lanes_metallic[lane], lanes_roughness[lane]};
-      if (u.frame->environment_light != nullptr) {
-        lanes_ambient.set(lane, environment_light(*u.frame->environment_light, environment, surface,
-                                                  lanes_f0[lane], lanes_n[lane], lanes_view[lane]));
-      } else {
-        lanes_ambient.set(lane, lanes_ambient[lane] + environment_reflection(
-                                                          environment, surface, lanes_fresnel[lane],
-                                                          lanes_n[lane], lanes_view[lane]));
+    const Vec3V seen =
+        EnvironmentRadiance(environment, mirror, hn::Mul(roughness, hn::Set(d, 8.0f)), count);
+    if (u.frame->environment_light != nullptr) {
+      // The image-based light replaces the ambient, a lane at a time (environment_light.hpp).
+      Lanes3 lanes_ambient(ambient);
+      const Lanes3 lanes_albedo(albedo), lanes_f0(f0), lanes_n(n), lanes_view(view),
+          lanes_mirror(mirror), lanes_seen(seen);
+      alignas(64) float lanes_metallic[8], lanes_roughness[8];
+      hn::Store(metallic, d, lanes_metallic), hn::Store(roughness, d, lanes_roughness);
+      for (int lane = 0; lane < count; ++lane) {
+        const PbrSurface surface{lanes_albedo[lane], lanes_metallic[lane], lanes_roughness[lane]};
+        lanes_ambient.set(lane, environment_light(*u.frame->environment_light, surface,
+                                                  lanes_f0[lane], lanes_n[lane], lanes_view[lane],
+                                                  lanes_mirror[lane], lanes_seen[lane]));
       }
+      ambient = lanes_ambient.load();
+    } else {
+      // Reflections add the mirror direction's radiance through the Fresnel reflectance at n . v,
+      // dimmed as the surface roughens: radiance x fresnel x (1 - 0.7 roughness).
+      const BatchV k5 = SchlickK5(Dot(n, view));
+      const BatchV dim = hn::Sub(one, hn::Mul(roughness, hn::Set(d, 0.7f)));
+      ambient = {hn::Add(ambient.x, hn::Mul(hn::Mul(seen.x, Schlick(f0.x, k5)), dim)),
+                 hn::Add(ambient.y, hn::Mul(hn::Mul(seen.y, Schlick(f0.y, k5)), dim)),
+                 hn::Add(ambient.z, hn::Mul(hn::Mul(seen.z, Schlick(f0.z, k5)), dim))};
     }
-    ambient = lanes_ambient.load();
   }
   return {hn::Add(color.x, hn::Mul(ambient.x, occlusion)),
           hn::Add(color.y, hn::Mul(ambient.y, occlusion)),

@@ -2,9 +2,10 @@
 // this file once per SIMD target (foreach_target.h re-includes it); the frame fetches the chosen
 // target's kernel (pipeline/kernels.hpp). Every target computes the same IEEE operations in the
 // same order (no fused multiply-add; std::max and std::min as compare-and-select; pow and exp as
-// portable_math.hpp's polynomials), so each gives the same bits; shade_batch_test checks it. Where
-// a pixel reads a texture by a direction (the environment's reflections and light), that step
-// goes a lane at a time through the scalar lookups of environment.cpp and environment_light.cpp.
+// portable_math.hpp's polynomials), so each gives the same bits; shade_batch_test checks it. The
+// environment's reflections and light see the procedural sky with SIMD; an image environment is
+// read a lane at a time (environment_batch-inl.h), and the image-based light's harmonics and
+// split sum go a lane at a time through environment_light.cpp.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "shading/shade_batch.cpp"
 #include "shading/shade_batch.hpp"
@@ -17,7 +18,7 @@
 
 #include "core/portable_math.hpp"
 #include "shading/batch_math-inl.h"
-#include "shading/environment.hpp"
+#include "shading/environment_batch-inl.h"
 #include "shading/environment_light.hpp"
 #include "shading/light_batch-inl.h"
 #include "shading/pbr_batch-inl.h"
@@ -182,19 +183,19 @@ HWY_INLINE Vec3V SpecularLight(const DrawUniforms& u, bool blinn, const Vec3V& n
 }
 
 // Phong's mirror reflection of the environment: the color mixed with the environment's radiance
-// from the mirror direction by the material's reflectivity, a lane at a time (a texture read per
-// lane: environment.cpp's mix_reflection), for the first `count` lanes. Out of line: it would
-// take the inlined loop's registers.
+// from the mirror direction of the view about n by the material's reflectivity (glm::mix(color,
+// radiance, reflectivity) of glm::reflect(-view, n)'s radiance), for the first `count` lanes. Out
+// of line: it would take the inlined loop's registers.
 static HWY_NOINLINE Vec3V Reflected(const DrawUniforms& u, const Vec3V& color, const Vec3V& view,
                                     const Vec3V& n, int count) {
-  Lanes3 lanes_color(color);
-  const Lanes3 lanes_view(view), lanes_n(n);
-  count = std::min(count, static_cast<int>(hn::Lanes(FloatTag())));
-  for (int lane = 0; lane < count; ++lane) {
-    lanes_color.set(lane, mix_reflection(u.frame->lighting->environment, u.material->reflectivity,
-                                         lanes_color[lane], lanes_view[lane], lanes_n[lane]));
-  }
-  return lanes_color.load();
+  const FloatTag d;
+  const Vec3V radiance = EnvironmentRadiance(u.frame->lighting->environment,
+                                             Reflect(Negate(view), n), hn::Zero(d), count);
+  const float reflectivity = u.material->reflectivity;
+  const FloatV kept = hn::Set(d, 1.0f - reflectivity), taken = hn::Set(d, reflectivity);
+  return {hn::Add(hn::Mul(color.x, kept), hn::Mul(radiance.x, taken)),
+          hn::Add(hn::Mul(color.y, kept), hn::Mul(radiance.y, taken)),
+          hn::Add(hn::Mul(color.z, kept), hn::Mul(radiance.z, taken))};
 }
 
 // Fogs the colors already in rgba (ColorAt) in place, if in.fog.

@@ -6,7 +6,6 @@
 
 #include "core/color.hpp"
 #include "pipeline/kernels.hpp"
-#include "shading/environment.hpp"
 
 namespace facet::pipeline {
 namespace {
@@ -68,22 +67,17 @@ void fill_background(TileContext& tile, const Background& background) {
   const Environment& environment = *background.environment;
   const SkyView view{background.inverse_view_projection, background.eye, background.width,
                      background.height};
+  const SkyRowKernel sky_row = tile.frame->kernels->sky_row;
   for (int y = 0; y < tile.y1 - tile.y0; ++y) {
-    glm::vec4* row = tile.color + static_cast<std::ptrdiff_t>(y) * tile.stride;
-    const float* depth = tile.depth + static_cast<std::ptrdiff_t>(y) * tile.stride;
-    if (!environment.image) {  // the sky gradient, a row at a time with SIMD
-      tile.frame->kernels->sky_row(view, environment, tile.x0, tile.y0 + y, tile.x1 - tile.x0,
-                                   depth, kClearDepth, row);
-      continue;
-    }
-    for (int x = 0; x < tile.x1 - tile.x0; ++x) {
-      if (depth[x] != kClearDepth) continue;  // drawn over
-      row[x] = glm::vec4(background_radiance(view, environment, tile.x0 + x, tile.y0 + y), 1.0f);
-    }
+    sky_row(view, environment, tile.x0, tile.y0 + y, tile.x1 - tile.x0,
+            tile.depth + static_cast<std::ptrdiff_t>(y) * tile.stride, kClearDepth,
+            tile.color + static_cast<std::ptrdiff_t>(y) * tile.stride);
   }
   if (tile.samples == 1) return;
   // The other samples of pixels whose samples differ (plane 0 is done above): the environment
-  // seen through the pixel centre, into those still at the clear depth.
+  // seen through the pixel centre (the row kernel for that one pixel), into those still at the
+  // clear depth.
+  const float clear = kClearDepth;
   for (int y = 0; y < tile.y1 - tile.y0; ++y) {
     for (int x = 0; x < tile.x1 - tile.x0; ++x) {
       const std::ptrdiff_t pixel = static_cast<std::ptrdiff_t>(y) * tile.stride + x;
@@ -94,7 +88,7 @@ void fill_background(TileContext& tile, const Background& background) {
         const std::ptrdiff_t i = s * tile.sample_plane + pixel;
         if (tile.depth[i] != kClearDepth) continue;
         if (!computed) {
-          sky = glm::vec4(background_radiance(view, environment, tile.x0 + x, tile.y0 + y), 1.0f);
+          sky_row(view, environment, tile.x0 + x, tile.y0 + y, 1, &clear, kClearDepth, &sky);
           computed = true;
         }
         tile.color[i] = sky;

@@ -1,7 +1,8 @@
-// Stage: output, the sky gradient a row at a time (see sky_row.hpp). Highway compiles this file
-// once per SIMD target; the frame fetches the chosen target's kernel (pipeline/kernels.hpp). Each
-// step repeats background_radiance's scalar operations in order: glm's mat4 x vec4 is (m0 x + m1 y)
-// + (m2 z + m3 w), normalize is v * (1 / sqrt(dot)), mix is a (1 - t) + b t; no fused multiply-add.
+// Stage: output, the environment behind the scene a row at a time (see sky_row.hpp). Highway
+// compiles this file once per SIMD target; the frame fetches the chosen target's kernel
+// (pipeline/kernels.hpp). The view directions follow glm's operation order, as the scalar
+// statement in tests/support/sky_reference.hpp does: glm's mat4 x vec4 is (m0 x + m1 y) +
+// (m2 z + m3 w), normalize is v * (1 / sqrt(dot)); no fused multiply-add.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "pipeline/output/sky_row.cpp"
 #include "pipeline/output/sky_row.hpp"
@@ -10,6 +11,7 @@
 #include <hwy/highway.h>
 
 #include "shading/environment.hpp"
+#include "shading/sky_gradient-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace facet::pipeline::HWY_NAMESPACE {
@@ -33,9 +35,6 @@ void FillSkyRow(const SkyView& view, const Environment& env, int x0, int y, int 
     constant[c] = m[2][c] * 1.0f + m[3][c] * 1.0f;
   }
   const FloatV one = hn::Set(d, 1.0f);
-  auto mix = [&](const glm::vec3& a, const glm::vec3& b, FloatV t, int c) HWY_ATTR {
-    return hn::Add(hn::Mul(hn::Set(d, a[c]), hn::Sub(one, t)), hn::Mul(hn::Set(d, b[c]), t));
-  };
   alignas(32) float rgb[3][8];
   // Highway's Iota builds its lanes in memory: once, not in the loop. Whole numbers below 2^24
   // add exactly, so x0 + i + lane is the same float either way.
@@ -65,21 +64,21 @@ void FillSkyRow(const SkyView& view, const Environment& env, int x0, int y, int 
     for (int c = 0; c < 3; ++c) dir[c] = hn::Sub(hn::Div(far[c], far[3]), hn::Set(d, view.eye[c]));
     const FloatV length_squared =
         hn::Add(hn::Add(hn::Mul(dir[0], dir[0]), hn::Mul(dir[1], dir[1])), hn::Mul(dir[2], dir[2]));
-    const FloatV up = hn::Mul(dir[1], hn::Div(one, hn::Sqrt(length_squared)));
-    // The gradient: toward the zenith above the horizon, toward the ground below (four times
-    // as steeply: t = -4 up).
-    // Each lane takes the square root of its own side's argument only: one square root, not
-    // one per side.
-    const auto above = hn::Ge(up, hn::Zero(d));
-    const FloatV below_t = hn::Mul(hn::Neg(up), hn::Set(d, 4.0f));
-    const FloatV t =
-        hn::Sqrt(hn::IfThenElse(above, up, hn::IfThenElse(hn::Lt(one, below_t), one, below_t)));
+    const FloatV inverse_length = hn::Div(one, hn::Sqrt(length_squared));
     FloatV color[3];
-    for (int c = 0; c < 3; ++c) {
-      color[c] = hn::Mul(hn::IfThenElse(above, mix(env.sky_horizon, env.sky_zenith, t, c),
-                                        mix(env.sky_horizon, env.ground, t, c)),
-                         hn::Set(d, env.intensity));
+    if (env.image) {  // unit directions, then the image a pixel at a time
+      alignas(32) float unit[3][8];
+      for (int c = 0; c < 3; ++c) hn::Store(hn::Mul(dir[c], inverse_length), d, unit[c]);
+      const int active = std::min(lanes, count - i);
+      for (int k = 0; k < active; ++k) {
+        if (depth[i + k] != clear_depth) continue;  // drawn over
+        const glm::vec3 radiance =
+            shading::image_radiance(env, {unit[0][k], unit[1][k], unit[2][k]});
+        colors[i + k] = glm::vec4(radiance, 1.0f);
+      }
+      continue;
     }
+    shading::HWY_NAMESPACE::SkyRadiance(d, env, hn::Mul(dir[1], inverse_length), color);
     if (all_sky) {  // most of the sky: whole vectors of it, stored as (r, g, b, 1) colors
       hn::StoreInterleaved4(color[0], color[1], color[2], one, d, &colors[i].r);
       continue;
@@ -104,15 +103,6 @@ HWY_AFTER_NAMESPACE();
 namespace facet::pipeline {
 
 HWY_EXPORT(FillSkyRow);
-
-glm::vec3 background_radiance(const SkyView& view, const Environment& environment, int x, int y) {
-  const float ndc_x = (static_cast<float>(x) + 0.5f) / static_cast<float>(view.width) * 2.0f - 1.0f;
-  const float ndc_y =
-      1.0f - (static_cast<float>(y) + 0.5f) / static_cast<float>(view.height) * 2.0f;
-  const glm::vec4 far = view.inverse_view_projection * glm::vec4(ndc_x, ndc_y, 1.0f, 1.0f);
-  const glm::vec3 direction = glm::normalize(glm::vec3(far) / far.w - view.eye);
-  return shading::environment_radiance(environment, direction);
-}
 
 SkyRowKernel sky_row_kernel(SimdTarget target) { return HWY_DISPATCH_TABLE(FillSkyRow)[target]; }
 

@@ -1,7 +1,7 @@
 // Stage: output, the SIMD part of the background. fill_background (output.cpp) draws the
-// environment into the pixels nothing covered; for the procedural sky gradient (an environment
-// without an image) it does a tile row at a time here, with SIMD (sky_row.cpp, compiled for
-// every target Highway supports), computing what the scalar path computes, bit for bit.
+// environment into the pixels nothing covered a tile row at a time here (sky_row.cpp, compiled
+// for every target Highway supports): the procedural sky gradient (shading/sky_gradient-inl.h)
+// with SIMD, or the view directions with SIMD and an image's texel a pixel at a time.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -18,12 +18,9 @@ struct SkyView {
   int width, height;  // framebuffer size
 };
 
-// The environment's radiance through pixel (x, y) of the frame, scalar: unproject the pixel
-// centre's point on the far plane, look along it from the eye.
-glm::vec3 background_radiance(const SkyView& view, const Environment& environment, int x, int y);
-
-// For pixels (x0 + i, y), i in [0, count), whose depth[i] equals clear_depth: colors[i] =
-// (background_radiance(...), 1) of a sky-gradient environment (no image).
+// For pixels (x0 + i, y), i in [0, count), whose depth[i] equals clear_depth: colors[i] = (the
+// environment's radiance, 1) through the pixel's centre, seen from the eye along the direction to
+// the centre's point on the far plane (unprojected); an image environment at its level 0.
 using SkyRowKernel = void (*)(const SkyView& view, const Environment& environment, int x0, int y,
                               int count, const float* depth, float clear_depth, glm::vec4* colors);
 SkyRowKernel sky_row_kernel(SimdTarget target);

@@ -15,6 +15,7 @@
 #include "shading/environment.hpp"
 #include "support/forced_target.hpp"
 #include "support/sky_reference.hpp"
+#include "support/texture_reference.hpp"
 
 namespace facet::test {
 namespace {
@@ -49,8 +50,9 @@ void expect_rows_alike_on_every_target(const Environment& environment,
       }
       const glm::vec4 untouched{-1.0f, -2.0f, -3.0f, -4.0f};
       std::vector<glm::vec4> row(count, untouched);
-      pipeline::sky_row_kernel(chosen_simd_target())(view, environment, x0, y, count, depth.data(),
-                                                     kClear, row.data());
+      const SimdTarget chosen = chosen_simd_target();
+      pipeline::sky_row_kernel(chosen)(view, environment, sample_at_kernel(chosen), x0, y, count,
+                                       depth.data(), kClear, row.data());
       for (int i = 0; i < count; ++i) {
         const glm::vec4 want = depth[i] == kClear
                                    ? glm::vec4(expected(view, environment, x0 + i, y), 1.0f)
@@ -84,8 +86,15 @@ TEST(SkyRow, ReadsAnImageAlongEachPixelsViewDirectionOnEveryTarget) {
   Environment environment;
   environment.image = Texture::from_rgba32f(kSide, kSide, std::move(rgba), "texels");
   environment.intensity = 1.3f;
+  // The image at the direction's texture coordinates, clamped at the poles (and at the sphere
+  // map's rim), at its base level.
   const auto image = [](const pipeline::SkyView& view, const Environment& env, int x, int y) {
-    return shading::image_radiance(env, background_direction(view, x, y));
+    const glm::vec3 d = background_direction(view, x, y);
+    const bool sphere = env.projection == EnvironmentProjection::sphere_map;
+    const Sampler sampler{Filter::trilinear, sphere ? Wrap::clamp_to_edge : Wrap::repeat,
+                          Wrap::clamp_to_edge};
+    const glm::vec2 uv = sphere ? shading::sphere_map_uv(d) : shading::equirectangular_uv(d);
+    return glm::vec3(reference_sample(*env.image, sampler, uv, 0.0f)) * env.intensity;
   };
   expect_rows_alike_on_every_target(environment, image);
   environment.projection = EnvironmentProjection::sphere_map;

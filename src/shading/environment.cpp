@@ -21,13 +21,26 @@ glm::vec2 sphere_map_uv(glm::vec3 d) {
   return {d.x / m + 0.5f, d.y / m + 0.5f};
 }
 
-glm::vec3 image_radiance(const Environment& env, glm::vec3 d, float lod) {
+void image_radiance(SampleAtKernel sample_at, const Environment& env, const glm::vec3* directions,
+                    const float* lod, int count, glm::vec3* radiance) {
   Sampler sampler;
   sampler.wrap_v = Wrap::clamp_to_edge;
-  glm::vec2 uv = env.projection == EnvironmentProjection::equirectangular ? equirectangular_uv(d)
-                                                                          : sphere_map_uv(d);
-  if (env.projection == EnvironmentProjection::sphere_map) sampler.wrap_u = Wrap::clamp_to_edge;
-  return glm::vec3(env.image->sample(sampler, uv, lod)) * env.intensity;
+  const bool sphere_map = env.projection == EnvironmentProjection::sphere_map;
+  if (sphere_map) sampler.wrap_u = Wrap::clamp_to_edge;
+  constexpr int kChunk = 64;
+  float u[kChunk], v[kChunk], rgba[kChunk][4];
+  for (int first = 0; first < count; first += kChunk) {
+    const int n = std::min(kChunk, count - first);
+    for (int i = 0; i < n; ++i) {
+      const glm::vec3 d = directions[first + i];
+      const glm::vec2 uv = sphere_map ? sphere_map_uv(d) : equirectangular_uv(d);
+      u[i] = uv.x, v[i] = uv.y;
+    }
+    sample_at(*env.image, sampler, u, v, lod + first, n, rgba);
+    for (int i = 0; i < n; ++i) {
+      radiance[first + i] = glm::vec3(rgba[i][0], rgba[i][1], rgba[i][2]) * env.intensity;
+    }
+  }
 }
 
 }  // namespace facet::shading

@@ -4,6 +4,7 @@
 
 #include <glm/glm.hpp>
 
+#include "core/texture_sampler.hpp"
 #include "facet/light.hpp"
 
 namespace facet::shading {
@@ -14,9 +15,12 @@ glm::vec2 equirectangular_uv(glm::vec3 direction);
 // ... and in a sphere map (a mirrored ball photographed from +Z).
 glm::vec2 sphere_map_uv(glm::vec3 direction);
 
-// Linear radiance arriving from `direction` (unit, world space) out of an image environment
-// (environment.image set); lod blurs it (rough reflections). The procedural sky (no image) is
-// computed on vectors of directions: sky_gradient-inl.h.
-glm::vec3 image_radiance(const Environment& environment, glm::vec3 direction, float lod = 0.0f);
+// Linear radiance arriving out of an image environment (environment.image set) along `count`
+// unit world directions: radiance[i] along directions[i], blurred to mip level lod[i] (rough
+// reflections), sampled with `sample_at` (the frame's texture lookups). The procedural sky (no
+// image) is computed on vectors of directions: sky_gradient-inl.h.
+void image_radiance(SampleAtKernel sample_at, const Environment& environment,
+                    const glm::vec3* directions, const float* lod, int count,
+                    glm::vec3* radiance);
 
 }  // namespace facet::shading

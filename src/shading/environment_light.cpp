@@ -43,7 +43,11 @@ IrradianceHarmonics project_environment(const Environment& environment) {
   IrradianceHarmonics sums{};
   const float lod = grid_lod(environment);
   const float cell = (2.0f * kPi / kColumns) * (kPi / kRows);
-  const SkyBatchKernel sky = environment.image ? nullptr : sky_batch_kernel(chosen_simd_target());
+  const SimdTarget target = chosen_simd_target();
+  const SkyBatchKernel sky = environment.image ? nullptr : sky_batch_kernel(target);
+  const SampleAtKernel sample_at = sample_at_kernel(target);
+  std::array<float, kColumns> lods;
+  lods.fill(lod);
   for (int row = 0; row < kRows; ++row) {
     const float polar = (static_cast<float>(row) + 0.5f) * kPi / kRows;  // from straight up
     const float solid_angle = cell * std::sin(polar);
@@ -58,9 +62,8 @@ IrradianceHarmonics project_environment(const Environment& environment) {
     if (sky != nullptr) {
       sky(environment, up.data(), kColumns, radiance.data());
     } else {
-      for (int column = 0; column < kColumns; ++column) {
-        radiance[column] = image_radiance(environment, directions[column], lod);
-      }
+      image_radiance(sample_at, environment, directions.data(), lods.data(), kColumns,
+                     radiance.data());
     }
     for (int column = 0; column < kColumns; ++column) {
       const glm::vec3 weighted = radiance[column] * solid_angle;

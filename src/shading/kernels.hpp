@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/simd_target.hpp"
+#include "core/texture_sampler.hpp"
 #include "shading/shade_batch.hpp"
 #include "shading/texel_batch.hpp"
 #include "shading/vertex_batch.hpp"
@@ -15,12 +16,14 @@ struct ShadingKernels {
   ShadeBatchKernel shade_batch = nullptr;
   FogBatchKernel fog_batch = nullptr;
   SampleBatchKernel sample_batch = nullptr;
+  SampleAtKernel sample_at = nullptr;  // texture lookups by direction (environment images)
   GouraudVertexBatchKernel gouraud_vertex_batch = nullptr;
   GouraudLightBatchKernel gouraud_light_batch = nullptr;
 };
 
 inline ShadingKernels shading_kernels(SimdTarget target) {
   return {target, shade_batch_kernel(target), fog_batch_kernel(target), sample_batch_kernel(target),
+          sample_at_kernel(target),
           gouraud_vertex_batch_kernel(target), gouraud_light_batch_kernel(target)};
 }
 

@@ -189,7 +189,8 @@ HWY_INLINE Vec3V SpecularLight(const DrawUniforms& u, bool blinn, const Vec3V& n
 static HWY_NOINLINE Vec3V Reflected(const DrawUniforms& u, const Vec3V& color, const Vec3V& view,
                                     const Vec3V& n, int count) {
   const FloatTag d;
-  const Vec3V radiance = EnvironmentRadiance(u.frame->lighting->environment,
+  const Vec3V radiance = EnvironmentRadiance(u.frame->kernels->sample_at,
+                                             u.frame->lighting->environment,
                                              Reflect(Negate(view), n), hn::Zero(d), count);
   const float reflectivity = u.material->reflectivity;
   const FloatV kept = hn::Set(d, 1.0f - reflectivity), taken = hn::Set(d, reflectivity);

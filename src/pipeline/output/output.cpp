@@ -68,8 +68,9 @@ void fill_background(TileContext& tile, const Background& background) {
   const SkyView view{background.inverse_view_projection, background.eye, background.width,
                      background.height};
   const SkyRowKernel sky_row = tile.frame->kernels->sky_row;
+  const SampleAtKernel sample_at = tile.frame->kernels->shading.sample_at;
   for (int y = 0; y < tile.y1 - tile.y0; ++y) {
-    sky_row(view, environment, tile.x0, tile.y0 + y, tile.x1 - tile.x0,
+    sky_row(view, environment, sample_at, tile.x0, tile.y0 + y, tile.x1 - tile.x0,
             tile.depth + static_cast<std::ptrdiff_t>(y) * tile.stride, kClearDepth,
             tile.color + static_cast<std::ptrdiff_t>(y) * tile.stride);
   }
@@ -88,7 +89,8 @@ void fill_background(TileContext& tile, const Background& background) {
         const std::ptrdiff_t i = s * tile.sample_plane + pixel;
         if (tile.depth[i] != kClearDepth) continue;
         if (!computed) {
-          sky_row(view, environment, tile.x0 + x, tile.y0 + y, 1, &clear, kClearDepth, &sky);
+          sky_row(view, environment, sample_at, tile.x0 + x, tile.y0 + y, 1, &clear, kClearDepth,
+                  &sky);
           computed = true;
         }
         tile.color[i] = sky;

@@ -20,8 +20,8 @@ namespace hn = hwy::HWY_NAMESPACE;
 using FloatTag = hn::CappedTag<float, 8>;
 using FloatV = hn::Vec<FloatTag>;
 
-void FillSkyRow(const SkyView& view, const Environment& env, int x0, int y, int count,
-                const float* depth, float clear_depth, glm::vec4* colors) {
+void FillSkyRow(const SkyView& view, const Environment& env, SampleAtKernel sample_at, int x0,
+                int y, int count, const float* depth, float clear_depth, glm::vec4* colors) {
   const FloatTag d;
   const int lanes = static_cast<int>(hn::Lanes(d));
   const glm::mat4& m = view.inverse_view_projection;
@@ -66,16 +66,20 @@ void FillSkyRow(const SkyView& view, const Environment& env, int x0, int y, int 
         hn::Add(hn::Add(hn::Mul(dir[0], dir[0]), hn::Mul(dir[1], dir[1])), hn::Mul(dir[2], dir[2]));
     const FloatV inverse_length = hn::Div(one, hn::Sqrt(length_squared));
     FloatV color[3];
-    if (env.image) {  // unit directions, then the image a pixel at a time
+    if (env.image) {  // unit directions, then the image's texels for the pixels it shows in
       alignas(32) float unit[3][8];
       for (int c = 0; c < 3; ++c) hn::Store(hn::Mul(dir[c], inverse_length), d, unit[c]);
       const int active = std::min(lanes, count - i);
+      glm::vec3 directions[8], radiance[8];
+      int shown[8], showing = 0;
       for (int k = 0; k < active; ++k) {
         if (depth[i + k] != clear_depth) continue;  // drawn over
-        const glm::vec3 radiance =
-            shading::image_radiance(env, {unit[0][k], unit[1][k], unit[2][k]});
-        colors[i + k] = glm::vec4(radiance, 1.0f);
+        directions[showing] = {unit[0][k], unit[1][k], unit[2][k]};
+        shown[showing++] = i + k;
       }
+      static constexpr float kBaseLevel[8] = {};
+      shading::image_radiance(sample_at, env, directions, kBaseLevel, showing, radiance);
+      for (int n = 0; n < showing; ++n) colors[shown[n]] = glm::vec4(radiance[n], 1.0f);
       continue;
     }
     shading::HWY_NAMESPACE::SkyRadiance(d, env, hn::Mul(dir[1], inverse_length), color);

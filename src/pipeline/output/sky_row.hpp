@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include "core/simd_target.hpp"
+#include "core/texture_sampler.hpp"
 #include "facet/light.hpp"
 
 namespace facet::pipeline {
@@ -20,9 +21,11 @@ struct SkyView {
 
 // For pixels (x0 + i, y), i in [0, count), whose depth[i] equals clear_depth: colors[i] = (the
 // environment's radiance, 1) through the pixel's centre, seen from the eye along the direction to
-// the centre's point on the far plane (unprojected); an image environment at its level 0.
-using SkyRowKernel = void (*)(const SkyView& view, const Environment& environment, int x0, int y,
-                              int count, const float* depth, float clear_depth, glm::vec4* colors);
+// the centre's point on the far plane (unprojected); an image environment at its level 0, read
+// with sample_at (the frame's texture lookups).
+using SkyRowKernel = void (*)(const SkyView& view, const Environment& environment,
+                              SampleAtKernel sample_at, int x0, int y, int count,
+                              const float* depth, float clear_depth, glm::vec4* colors);
 SkyRowKernel sky_row_kernel(SimdTarget target);
 
 }  // namespace facet::pipeline

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cassert>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -286,33 +287,59 @@ class PixelWriter {
       shading::ShadeInput in{pixels.count, pixels.w, pixels.z, pixels.v, nullptr, batch_fog()};
       sample_maps(in, pixels.v, pixels.w);
       Shading::fragment_batch(uniforms_, in, colors);
-      int written = 0;
-      for (int n = 0; n < pixels.count; ++n) {
-        const float* c = colors[n];
-        written += store<kBatchFogs>(pixels.x[n], pixels.y[n], pixels.z[n], pixels.w[n],
-                                     glm::vec4(c[0], c[1], c[2], c[3]));
-      }
-      return written;
+      return store_all(pixels, colors, kBatchFogs);
     } else {
       return shade_one_at_a_time(pixels);
     }
   }
 
   // shade() for the models without a batch form: fragment() per pixel, the base color map
-  // sampled ahead all the same.
+  // sampled ahead and the fog applied to all of them at once all the same.
   int shade_one_at_a_time(PackedPixels& pixels) {
     const Texels texels = sample_base_map(pixels.count, pixels.v, pixels.w);
-    int written = 0;
+    alignas(64) float colors[PackedPixels::kCapacity][4];
     for (int n = 0; n < pixels.count; ++n) {
       fragment.w = pixels.w[n];
+      fragment.z = pixels.z[n];
       for (int k = 0; k < Shading::kVaryings; ++k) fragment.v[k] = pixels.v[k][n];
       if (texels != nullptr) {
         fragment.base_texel = {texels[n][0], texels[n][1], texels[n][2], texels[n][3]};
         fragment.base_texel_ready = true;
       }
-      written += write(pixels.x[n], pixels.y[n], pixels.z[n]);
+      const glm::vec4 color = Shading::fragment(fragment, uniforms_);
+      for (int c = 0; c < 4; ++c) colors[n][c] = color[c];
+    }
+    return store_all(pixels, colors, false);
+  }
+
+  // Writes the packed pixels' colors (store()), fogging them first unless `fogged`, and the
+  // wire overlay's wire color too; returns how many were written.
+  int store_all(const PackedPixels& pixels, float (*colors)[4], bool fogged) {
+    if (!fogged) fog(pixels, colors);
+    alignas(64) float wires[PackedPixels::kCapacity][4];
+    if constexpr (edge_overlay<Shading>()) {
+      const glm::vec4& wire = uniforms_.material->wire_color;
+      for (int n = 0; n < pixels.count; ++n) {
+        for (int c = 0; c < 4; ++c) wires[n][c] = wire[c];
+      }
+      fog(pixels, wires);
+    }
+    int written = 0;
+    for (int n = 0; n < pixels.count; ++n) {
+      const float* c = colors[n];
+      const float* w = wires[n];
+      written += store(pixels.x[n], pixels.y[n], pixels.z[n], glm::vec4(c[0], c[1], c[2], c[3]),
+                       glm::vec4(w[0], w[1], w[2], w[3]));
     }
     return written;
+  }
+
+  // The fog of the frame on the colors of the packed pixels, in place, with the shading
+  // kernel's fog.
+  void fog(const PackedPixels& pixels, float (*rgba)[4]) const {
+    if (fog_.mode == FogMode::none) return;
+    const shading::ShadeInput in{pixels.count, pixels.w, pixels.z, nullptr, nullptr, &fog_};
+    uniforms_.frame->kernels->fog_batch(uniforms_, in, rgba);
   }
 
   // Whether shade_full_block() takes this draw's whole blocks: opaque, depth-writing, batch-
@@ -362,33 +389,27 @@ class PixelWriter {
     }
   }
 
-  // The color of a pixel of clip w and depth z in the fog, through the shading kernels' fog: the
-  // colors of the models shaded a pixel at a time (fragment()) and the wire overlay's wire color.
-  glm::vec4 fogged(float w, float z, const glm::vec4& color) const {
-    alignas(64) float ws[8] = {w}, zs[8] = {z};
-    alignas(64) float rgba[8][4] = {{color.r, color.g, color.b, color.a}};
-    const shading::ShadeInput in{1, ws, zs, nullptr, nullptr, &fog_};
-    uniforms_.frame->kernels->fog_batch(uniforms_, in, rgba);
-    return {rgba[0][0], rgba[0][1], rgba[0][2], rgba[0][3]};
-  }
-
   // Whether shade() does anything in batches; if not, raster loops may skip packing and call
-  // write() per pixel. Always for the models without fragment().
-  bool batches() const { return batch_shaded<Shading>() || base_map_ != nullptr; }
+  // write() per pixel. Always for the models without fragment(), and under fog (fogged a
+  // batch at a time).
+  bool batches() const {
+    return batch_shaded<Shading>() || base_map_ != nullptr || fog_.mode != FogMode::none;
+  }
 
   // Shades `fragment` (w and varyings filled in by the caller) for pixel (x, y) of the frame
   // at depth z and writes it. False if the alpha test discarded it. Only for the models with
-  // fragment() (the others' batches() is always true).
+  // fragment() and without fog (the others' batches() is always true).
   bool write(int x, int y, float z) requires(!batch_shaded<Shading>()) {
+    assert(fog_.mode == FogMode::none);
     fragment.z = z;
-    return store(x, y, z, fragment.w, Shading::fragment(fragment, uniforms_));
+    return store(x, y, z, Shading::fragment(fragment, uniforms_), uniforms_.material->wire_color);
   }
 
-  // Writes the shaded color of pixel (x, y) of the frame, at depth z and clip w, with the
-  // draw's alpha test, overlay, fog and blending.
-  // kFogged: the color has had its fog already (shade_batch applies it).
-  template <bool kFogged = false>
-  bool store(int x, int y, float z, float w, glm::vec4 color) {
+  // Writes the shaded (and fogged) color of pixel (x, y) of the frame at depth z, with the
+  // draw's alpha test, wire overlay (`wire`, the wire's color fogged likewise, where the pixel is
+  // near an edge; only models with the overlay read it) and blending.
+  bool store(int x, int y, float z, glm::vec4 color,
+             const glm::vec4& wire = glm::vec4(0.0f)) {
     if constexpr (kAlpha == AlphaMode::mask) {
       if (tile_.samples > 1) {
         // Alpha to coverage: the cut-out's edge falls across the samples.
@@ -400,12 +421,7 @@ class PixelWriter {
       }
     }
     if constexpr (edge_overlay<Shading>()) {
-      if (distance_to_edges(*t_, edge_scales_, x, y) < kOverlayHalfWidth) {
-        color = uniforms_.material->wire_color;
-      }
-    }
-    if constexpr (!kFogged) {
-      if (fog_.mode != FogMode::none) color = fogged(w, z, color);
+      if (distance_to_edges(*t_, edge_scales_, x, y) < kOverlayHalfWidth) color = wire;
     }
     const std::ptrdiff_t pixel = index(x, y);
     if (tile_.samples > 1) {
@@ -522,7 +538,8 @@ class PixelWriter {
     return nullptr;
   }
 
-  // The batch shader fogs, except under the wire overlay, whose wire color store() fogs.
+  // The batch shader fogs, except under the wire overlay, whose colors store_all() fogs with
+  // its wire color.
   static constexpr bool kBatchFogs = !edge_overlay<Shading>();
   const Fog* batch_fog() const { return kBatchFogs ? &fog_ : nullptr; }
   TileContext& tile_;

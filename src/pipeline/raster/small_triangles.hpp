@@ -151,7 +151,7 @@ void write_waiting(TileContext& tile) {
       const float* depth = tile.depth + tile_index(tile, x, y);
       if (!(pixels.z[n] < *depth)) continue;  // a pixel before it is nearer
       const float* c = colors[n];
-      out.template store<true>(x, y, pixels.z[n], pixels.w[n], glm::vec4(c[0], c[1], c[2], c[3]));
+      out.store(x, y, pixels.z[n], glm::vec4(c[0], c[1], c[2], c[3]));
     }
   } else {
     const int samples = tile.samples;
@@ -175,7 +175,7 @@ void write_waiting(TileContext& tile) {
         if (mask == 0) continue;
         tile.sample_mask[pixel] = static_cast<std::uint16_t>(mask);
         const float* c = colors[n];
-        out.template store<true>(x, y, pixels.z[n], pixels.w[n], glm::vec4(c[0], c[1], c[2], c[3]));
+        out.store(x, y, pixels.z[n], glm::vec4(c[0], c[1], c[2], c[3]));
       }
     }
   }

@@ -48,8 +48,7 @@ struct Case {
   float slopes[shading::TexelBatch::kSlopes][shading::kTexelBatch] = {};
 };
 Case random_case(std::mt19937& rng, int count) {
-  std::uniform_real_distribution<float> slope(-0.05f, 0.05f),
-      depth(0.2f, 60.0f);
+  std::uniform_real_distribution<float> slope(-0.05f, 0.05f), depth(0.2f, 60.0f);
   Case c;
   c.batch.count = count;
   for (int j = 0; j < count; ++j) {
@@ -95,7 +94,9 @@ std::vector<std::shared_ptr<const Texture>> sample_textures(std::mt19937& rng) {
   std::vector<float> hdr(40 * 24 * 4);
   std::uniform_real_distribution<float> radiance(0.0f, 8.0f);
   for (float& value : hdr) value = radiance(rng);
-  return {random_texture(rng, 64, 32),  random_texture(rng, 24, 40), random_texture(rng, 1, 1),
+  return {random_texture(rng, 64, 32),
+          random_texture(rng, 24, 40),
+          random_texture(rng, 1, 1),
           random_texture(rng, 3, 5),
           random_texture(rng, 1024, 2),  // 11 levels: more than one vector of the level table
           Texture::from_rgba32f(40, 24, std::move(hdr)),
@@ -176,15 +177,15 @@ TEST(TextureSampler, GivesTheReferencesBitsOnEveryTarget) {
                                                    lod.data(), count,
                                                    reinterpret_cast<float(*)[4]>(rgba.data()));
             for (int i = 0; i < kCount; ++i) {
-              const glm::vec4 expected = i < count
-                                             ? reference_sample(*texture, sampler, {u[i], v[i]}, lod[i])
-                                             : glm::vec4(-1.0f);  // past count: untouched
+              const glm::vec4 expected =
+                  i < count ? reference_sample(*texture, sampler, {u[i], v[i]}, lod[i])
+                            : glm::vec4(-1.0f);  // past count: untouched
               const glm::vec4 got{rgba[4 * i], rgba[4 * i + 1], rgba[4 * i + 2], rgba[4 * i + 3]};
               ASSERT_EQ(std::memcmp(&expected, &got, sizeof got), 0)
-                  << hwy::TargetName(target) << ", " << texture->width() << "x"
-                  << texture->height() << ", filter " << static_cast<int>(filter) << ", wrap "
-                  << static_cast<int>(wrap_u) << "/" << static_cast<int>(wrap_v) << ", lookup "
-                  << i << " at (" << u[i] << ", " << v[i] << ") lod " << lod[i];
+                  << hwy::TargetName(target) << ", " << texture->width() << "x" << texture->height()
+                  << ", filter " << static_cast<int>(filter) << ", wrap "
+                  << static_cast<int>(wrap_u) << "/" << static_cast<int>(wrap_v) << ", lookup " << i
+                  << " at (" << u[i] << ", " << v[i] << ") lod " << lod[i];
               ++compared;
             }
             {  // the public form, one lookup

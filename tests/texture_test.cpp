@@ -258,7 +258,8 @@ TEST(Sampler, LodFromDerivatives) {
   EXPECT_NEAR(lod({4.0f / 8, 0}, {0, 1.0f / 4}), 2.0f, kEps);
   EXPECT_NEAR(lod({1.0f / 8, 0}, {0, 4.0f / 4}), 2.0f, kEps);   // the larger edge wins
   EXPECT_NEAR(lod({0.5f / 8, 0}, {0, 0.5f / 4}), -1.0f, kEps);  // magnification
-  // Length, not max; to within the thousandth of a level that the level of detail promises off powers of 2.
+  // Length, not max; to within the thousandth of a level that the level of detail promises off
+  // powers of 2.
   EXPECT_NEAR(lod({3.0f / 8, 4.0f / 4}, {0, 0}), std::log2(5.0f), 1e-3f);
 }
 

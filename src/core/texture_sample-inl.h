@@ -259,8 +259,7 @@ HWY_INLINE Texel Lerp(Texel a, Texel b, float f) { return a * (1.0f - f) + b * f
 // The bilinear blend of lane k's footprint at `level`.
 template <class Fetch>
 HWY_INLINE Texel Blend(const Fetch& fetch, int level, const StoredFootprints& fp, int k) {
-  const Texel bottom =
-      Lerp(fetch(level, fp.texel[0][k]), fetch(level, fp.texel[1][k]), fp.a[k]);
+  const Texel bottom = Lerp(fetch(level, fp.texel[0][k]), fetch(level, fp.texel[1][k]), fp.a[k]);
   const Texel top = Lerp(fetch(level, fp.texel[2][k]), fetch(level, fp.texel[3][k]), fp.a[k]);
   return Lerp(bottom, top, fp.b[k]);
 }
@@ -331,8 +330,8 @@ HWY_INLINE void BlendPixels(const Fetch& fetch, const Source& src, const StoredF
   for (; k < count; ++k) {
     Texel texel = Blend(fetch, level[k], near, k);
     if (fraction[k] > 0.0f) {
-      texel = Lerp(texel, Blend(fetch, std::min(level[k] + 1, src.levels - 1), far, k),
-                   fraction[k]);
+      texel =
+          Lerp(texel, Blend(fetch, std::min(level[k] + 1, src.levels - 1), far, k), fraction[k]);
     }
     std::memcpy(rgba[k], &texel, sizeof texel);
   }

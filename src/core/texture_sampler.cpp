@@ -32,9 +32,12 @@ void SampleAt(const Texture& texture, const Sampler& sampler, const float* u, co
     std::fill(std::copy_n(v + first, n, vs), vs + whole, 0.0f);
     if (sampler.filter == Filter::trilinear) {
       std::fill(std::copy_n(lod + first, n, lods), lods + whole, 0.0f);
-      for (int j = 0; j < n; j += lanes) StoreLevel(hn::Load(df, lods + j), top, level, fraction, j);
+      for (int j = 0; j < n; j += lanes)
+        StoreLevel(hn::Load(df, lods + j), top, level, fraction, j);
     }
-    auto coords = [&](int j) HWY_ATTR { return std::pair{hn::Load(df, us + j), hn::Load(df, vs + j)}; };
+    auto coords = [&](int j) HWY_ATTR {
+      return std::pair{hn::Load(df, us + j), hn::Load(df, vs + j)};
+    };
     SamplePixels(src, sampler.filter, coords, level, fraction, n, rgba + first);
   }
 }

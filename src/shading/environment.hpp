@@ -20,7 +20,6 @@ glm::vec2 sphere_map_uv(glm::vec3 direction);
 // reflections), sampled with `sample_at` (the frame's texture lookups). The procedural sky (no
 // image) is computed on vectors of directions: sky_gradient-inl.h.
 void image_radiance(SampleAtKernel sample_at, const Environment& environment,
-                    const glm::vec3* directions, const float* lod, int count,
-                    glm::vec3* radiance);
+                    const glm::vec3* directions, const float* lod, int count, glm::vec3* radiance);
 
 }  // namespace facet::shading

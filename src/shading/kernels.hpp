@@ -22,9 +22,13 @@ struct ShadingKernels {
 };
 
 inline ShadingKernels shading_kernels(SimdTarget target) {
-  return {target, shade_batch_kernel(target), fog_batch_kernel(target), sample_batch_kernel(target),
+  return {target,
+          shade_batch_kernel(target),
+          fog_batch_kernel(target),
+          sample_batch_kernel(target),
           sample_at_kernel(target),
-          gouraud_vertex_batch_kernel(target), gouraud_light_batch_kernel(target)};
+          gouraud_vertex_batch_kernel(target),
+          gouraud_light_batch_kernel(target)};
 }
 
 // How the built-in models are shaded (models.hpp; the raster loop, pipeline/raster/raster.hpp,

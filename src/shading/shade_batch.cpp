@@ -189,9 +189,9 @@ HWY_INLINE Vec3V SpecularLight(const DrawUniforms& u, bool blinn, const Vec3V& n
 static HWY_NOINLINE Vec3V Reflected(const DrawUniforms& u, const Vec3V& color, const Vec3V& view,
                                     const Vec3V& n, int count) {
   const FloatTag d;
-  const Vec3V radiance = EnvironmentRadiance(u.frame->kernels->sample_at,
-                                             u.frame->lighting->environment,
-                                             Reflect(Negate(view), n), hn::Zero(d), count);
+  const Vec3V radiance =
+      EnvironmentRadiance(u.frame->kernels->sample_at, u.frame->lighting->environment,
+                          Reflect(Negate(view), n), hn::Zero(d), count);
   const float reflectivity = u.material->reflectivity;
   const FloatV kept = hn::Set(d, 1.0f - reflectivity), taken = hn::Set(d, reflectivity);
   return {hn::Add(hn::Mul(color.x, kept), hn::Mul(radiance.x, taken)),

@@ -99,7 +99,7 @@ struct ShadeInput {
   const float* z = nullptr;
   const float (*v)[kShadeBatch] = nullptr;
   const float (*base_texel)[4] = nullptr;  // the base color map's texel per pixel, or null
-  const Fog* fog = nullptr;  // fog to apply to the colors, or null
+  const Fog* fog = nullptr;                // fog to apply to the colors, or null
   // Where pixel n's color goes: rgba[(n / 8) * rgba_row_stride + n % 8]. 8 for a packed array;
   // a whole 8x8 block (count 64) may go straight into a tile's rows with the tile's stride.
   int rgba_row_stride = 8;

@@ -65,8 +65,9 @@ HWY_INLINE FloatV LinearPart(const glm::mat3& m, int row, FloatV du, FloatV dv) 
 // The level of detail (OpenGL 4.6 §8.14.1, equation 8.4, without anisotropy): the exact
 // derivatives through the map's linear part, measured in base-level texels; log2 of the longer
 // footprint edge, from squared lengths as half the log2 (lod_log2: within a thousandth of a
-// level, the same bits on every CPU). For the W vectors of pixels from pixel j on. Each step is done for all W before the next, so that the
-// CPU overlaps the vectors' chains of some 40 dependent operations.
+// level, the same bits on every CPU). For the W vectors of pixels from pixel j on. Each step is
+// done for all W before the next, so that the CPU overlaps the vectors' chains of some 40 dependent
+// operations.
 template <int W>
 HWY_INLINE void LevelsOfDetail(const Texture& texture, const glm::mat3& m, const TexelBatch& batch,
                                const Slopes& triangle, int j, FloatV* lod) {

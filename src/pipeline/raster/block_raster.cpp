@@ -229,8 +229,8 @@ int FindBoxSamples(const SampleBoxSearch& in, std::int16_t* xs, std::int16_t* ys
       for (int s = 0; s < in.samples; ++s) {
         auto outside = hn::Zero(di);
         for (int i = 0; i < 3; ++i) {
-          outside = hn::Or(
-              outside, hn::Add(edge[i], hn::Set(di, static_cast<std::int32_t>(in.step[i][s]))));
+          outside = hn::Or(outside,
+                           hn::Add(edge[i], hn::Set(di, static_cast<std::int32_t>(in.step[i][s]))));
         }
         auto covered = hn::RebindMask(df, hn::AndNot(hn::Lt(outside, hn::Zero(di)), in_box));
         if (in.depth_test) {
@@ -295,7 +295,8 @@ int FindBoxSamplesWide(const SampleBoxSearch& in, std::int16_t* xs, std::int16_t
         if (in.depth_test) {
           const auto sample_z = hn::Add(z, hn::Set(df, in.sample_z[s]));
           const auto stored = hn::LoadU(df, depth + s * in.plane);
-          covered = hn::And(covered, hn::Lt(hn::PromoteTo(dd, sample_z), hn::PromoteTo(dd, stored)));
+          covered =
+              hn::And(covered, hn::Lt(hn::PromoteTo(dd, sample_z), hn::PromoteTo(dd, stored)));
         }
         bits = hn::Add(bits, hn::IfThenElseZero(covered, hn::Set(dd, static_cast<double>(1 << s))));
       }

@@ -65,8 +65,8 @@ inline constexpr int kBoxSearchSlack = 16;
 // A box search under MSAA (raster/msaa.hpp): the pixels of the box of `width` x `height` pixels
 // at frame pixel (x0, y0), at most kBlockPixels, whose samples triangle t covers and pass the
 // depth test. Edge values are counted in sixteenths of a pixel, the grid the sample positions lie
-// on: floor(E / 16) at the box's first pixel centre is e_first (clamped to +-2^30 for 32 bits), a pixel
-// step adds 16 * a, sample s adds step[i][s] (a * offset x + b * offset y). Exact in 32 bits
+// on: floor(E / 16) at the box's first pixel centre is e_first (clamped to +-2^30 for 32 bits), a
+// pixel step adds 16 * a, sample s adds step[i][s] (a * offset x + b * offset y). Exact in 32 bits
 // when |a| + |b| < 2^18 for every edge (SampleSteps::fits_32_bits; the others take the search
 // in doubles, unclamped): the steps across a box of 64 pixels stay within 2^28, so a clamped
 // e_first keeps every sign.

@@ -408,8 +408,7 @@ class PixelWriter {
   // Writes the shaded (and fogged) color of pixel (x, y) of the frame at depth z, with the
   // draw's alpha test, wire overlay (`wire`, the wire's color fogged likewise, where the pixel is
   // near an edge; only models with the overlay read it) and blending.
-  bool store(int x, int y, float z, glm::vec4 color,
-             const glm::vec4& wire = glm::vec4(0.0f)) {
+  bool store(int x, int y, float z, glm::vec4 color, const glm::vec4& wire = glm::vec4(0.0f)) {
     if constexpr (kAlpha == AlphaMode::mask) {
       if (tile_.samples > 1) {
         // Alpha to coverage: the cut-out's edge falls across the samples.

@@ -316,20 +316,24 @@ class PixelWriter {
   // wire overlay's wire color too; returns how many were written.
   int store_all(const PackedPixels& pixels, float (*colors)[4], bool fogged) {
     if (!fogged) fog(pixels, colors);
-    alignas(64) float wires[PackedPixels::kCapacity][4];
+    int written = 0;
     if constexpr (edge_overlay<Shading>()) {
+      alignas(64) float wires[PackedPixels::kCapacity][4];
       const glm::vec4& wire = uniforms_.material->wire_color;
       for (int n = 0; n < pixels.count; ++n) {
         for (int c = 0; c < 4; ++c) wires[n][c] = wire[c];
       }
       fog(pixels, wires);
-    }
-    int written = 0;
-    for (int n = 0; n < pixels.count; ++n) {
-      const float* c = colors[n];
-      const float* w = wires[n];
-      written += store(pixels.x[n], pixels.y[n], pixels.z[n], glm::vec4(c[0], c[1], c[2], c[3]),
-                       glm::vec4(w[0], w[1], w[2], w[3]));
+      for (int n = 0; n < pixels.count; ++n) {
+        const float *c = colors[n], *w = wires[n];
+        written += store(pixels.x[n], pixels.y[n], pixels.z[n], glm::vec4(c[0], c[1], c[2], c[3]),
+                         glm::vec4(w[0], w[1], w[2], w[3]));
+      }
+    } else {
+      for (int n = 0; n < pixels.count; ++n) {
+        const float* c = colors[n];
+        written += store(pixels.x[n], pixels.y[n], pixels.z[n], glm::vec4(c[0], c[1], c[2], c[3]));
+      }
     }
     return written;
   }
@@ -407,7 +411,8 @@ class PixelWriter {
 
   // Writes the shaded (and fogged) color of pixel (x, y) of the frame at depth z, with the
   // draw's alpha test, wire overlay (`wire`, the wire's color fogged likewise, where the pixel is
-  // near an edge; only models with the overlay read it) and blending.
+  // near an edge; only models with the overlay read it, and every caller for them passes it) and
+  // blending.
   bool store(int x, int y, float z, glm::vec4 color, const glm::vec4& wire = glm::vec4(0.0f)) {
     if constexpr (kAlpha == AlphaMode::mask) {
       if (tile_.samples > 1) {

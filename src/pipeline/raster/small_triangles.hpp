@@ -142,6 +142,7 @@ void write_waiting(TileContext& tile) {
   for (int n = pixels.count; n % 8 != 0; ++n) {  // read by the SIMD sampler, then ignored
     for (auto& slope : waiting.slopes) slope[n] = 0.0f;
   }
+  static_assert(!edge_overlay<Shading>(), "waiting pixels are stored without the wire overlay");
   PixelWriter<Shading, kAlpha> out(tile, waiting.draw);
   alignas(64) float colors[PackedPixels::kCapacity][4];
   out.shade_waiting(pixels, waiting.slopes, colors);

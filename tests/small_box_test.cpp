@@ -13,42 +13,17 @@
 #include <vector>
 
 #include "core/simd_target.hpp"
-#include "pipeline/geometry/primitive_sink.hpp"
 #include "pipeline/raster/block_raster.hpp"
 #include "pipeline/setup/setup.hpp"
-#include "pipeline/setup/setup_batch.hpp"
 #include "support/forced_target.hpp"
+#include "support/setup_triangle.hpp"
 
 namespace facet::test {
 namespace {
 
 using pipeline::SetupTriangle;
 
-constexpr int kWidth = 1920, kHeight = 1080;
-
-// The triangle through three screen vertices (fixed point) as setup gives it to raster, or
-// false when setup drops it.
-bool set_up(const pipeline::ScreenVertex s[3], SetupTriangle& out) {
-  pipeline::Frame frame;
-  frame.width = kWidth, frame.height = kHeight, frame.tile_size = 64;
-  frame.tiles_x = kWidth / 64 + 1, frame.tiles_y = kHeight / 64 + 1;
-  frame.triangles.resize(1);
-  pipeline::GeometryChunk chunk;
-  chunk.triangles = {0, 1, 0};
-  pipeline::PrimitiveSink sink(frame, chunk, 0);
-  pipeline::ProjectedVertex projected[3] = {};
-  for (int i = 0; i < 3; ++i) projected[i].screen = s[i];
-  const float no_varyings[pipeline::kOverWSlack] = {};
-  const std::uint32_t index[3][1 + pipeline::kSetupBatchSlack] = {{0}, {1}, {2}};
-  const std::uint32_t front[1 + pipeline::kSetupBatchSlack] = {
-      pipeline::signed_area(s[0], s[1], s[2]) < 0 ? 1u : 0u};
-  const pipeline::SetupBatch batch{1, {index[0], index[1], index[2]}, front};
-  if (pipeline::setup_batch_kernel(chosen_simd_target())(
-          batch, {sink, kWidth, kHeight, 0, projected, no_varyings, 0}))
-    return false;
-  out = frame.triangles[0];
-  return true;
-}
+constexpr int kWidth = kSetupWidth, kHeight = kSetupHeight;
 
 struct Found {
   int x, y;
@@ -107,7 +82,7 @@ TEST(SmallBoxes, FindExactlyThePixelsTheEdgeFunctionsCover) {
         v.inv_w = 1.0f;
       }
       SetupTriangle t;
-      if (!set_up(s, t)) continue;
+      if (!set_up_triangle(s, t)) continue;
       // A box of at most 64 pixels: the triangle's own (cut down), or one around its centre.
       std::uniform_int_distribution<int> side(1, 16);
       int width = side(rng), height = std::min(side(rng), 64 / width);

@@ -16,7 +16,7 @@ struct ShadingKernels {
   ShadeBatchKernel shade_batch = nullptr;
   FogBatchKernel fog_batch = nullptr;
   SampleBatchKernel sample_batch = nullptr;
-  SampleAtKernel sample_at = nullptr;  // texture lookups by direction (environment images)
+  SampleAtKernel sample_at = nullptr;  // lookups at given levels of detail (environment images)
   GouraudVertexBatchKernel gouraud_vertex_batch = nullptr;
   GouraudLightBatchKernel gouraud_light_batch = nullptr;
 };

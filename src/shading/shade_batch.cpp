@@ -3,9 +3,9 @@
 // target's kernel (pipeline/kernels.hpp). Every target computes the same IEEE operations in the
 // same order (no fused multiply-add; std::max and std::min as compare-and-select; pow and exp as
 // portable_math.hpp's polynomials), so each gives the same bits; shade_batch_test checks it. The
-// environment's reflections and light see the procedural sky with SIMD; an image environment is
-// read a lane at a time (environment_batch-inl.h), and the image-based light's harmonics and
-// split sum go a lane at a time through environment_light.cpp.
+// environment's reflections and light see the procedural sky with SIMD and an image through the
+// texture lookups for all lanes at once (environment_batch-inl.h); the image-based light's
+// harmonics and split sum go a lane at a time through environment_light.cpp.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "shading/shade_batch.cpp"
 #include "shading/shade_batch.hpp"

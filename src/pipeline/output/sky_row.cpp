@@ -10,6 +10,8 @@
 #include <hwy/foreach_target.h>  // must come before highway.h
 #include <hwy/highway.h>
 
+#include <algorithm>
+
 #include "shading/environment.hpp"
 #include "shading/sky_gradient-inl.h"
 

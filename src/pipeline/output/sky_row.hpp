@@ -1,7 +1,8 @@
 // Stage: output, the SIMD part of the background. fill_background (output.cpp) draws the
 // environment into the pixels nothing covered a tile row at a time here (sky_row.cpp, compiled
 // for every target Highway supports): the procedural sky gradient (shading/sky_gradient-inl.h)
-// with SIMD, or the view directions with SIMD and an image's texel a pixel at a time.
+// with SIMD, or the view directions with SIMD and then the image's texels through the texture
+// lookups.
 #pragma once
 
 #include <glm/glm.hpp>

@@ -12,7 +12,7 @@
 #include "core/color.hpp"
 #include "core/simd_target.hpp"
 #include "core/srgb_row.hpp"
-#include "core/texel_decode.hpp"
+#include "core/texel.hpp"
 #include "core/texture_sampler.hpp"
 #include "facet/error.hpp"
 
@@ -43,20 +43,10 @@ void check_size(int width, int height, std::size_t values, std::size_t expected_
   }
 }
 
-// One linear RGBA texel in a 128-bit vector, one lane per channel (GCC/Clang vector extension:
-// SSE on x86, NEON on ARM). Lane-wise +, -, * round exactly as the scalar glm::vec4 operations
-// they replace (no fused multiply-add: -ffp-contract=off), so results are the same bits.
-using Texel = float __attribute__((vector_size(16)));
-
-inline Texel load_texel(const float* p) {
-  Texel t;
-  std::memcpy(&t, p, sizeof t);
-  return t;
-}
 inline glm::vec4 to_vec4(Texel t) { return {t[0], t[1], t[2], t[3]}; }
 
-// Readers of linear RGBA texels of one level, one type per storage format, so the sampling
-// functions below are compiled once per format and fetch texels without a format branch.
+// Readers of linear RGBA texels of one level, one type per storage format, so the mipmap
+// filter below is compiled once per format and fetches texels without a format branch.
 struct Rgba8Reader {
   const std::uint8_t* texels;
   int width, height;
@@ -70,8 +60,7 @@ struct Rgba8Reader {
     alpha = tables.unorm.data();
   }
   Texel operator()(int x, int row) const {
-    const std::uint8_t* p = texels + (static_cast<std::size_t>(row) * width + x) * 4;
-    return Texel{color[p[0]], color[p[1]], color[p[2]], alpha[p[3]]};
+    return decode_rgba8(texels + (static_cast<std::size_t>(row) * width + x) * 4, color, alpha);
   }
 };
 

@@ -21,7 +21,7 @@
 #include <cstdint>
 #include <cstring>
 
-#include "core/texel_decode.hpp"
+#include "core/texel.hpp"
 #include "facet/texture.hpp"
 
 HWY_BEFORE_NAMESPACE();
@@ -219,28 +219,18 @@ struct StoredFootprints {
   }
 };
 
-// One texel, one lane per channel: GCC's vector extension (SSE on x86, on every target,
-// including Highway's SCALAR which has no four-lane vectors).
-using Texel = float __attribute__((vector_size(16)));
-
-HWY_INLINE Texel LoadTexel(const float* p) {
-  Texel t;
-  std::memcpy(&t, p, sizeof t);
-  return t;
-}
-
 // The texel at offset `offset` of level `level`, linear RGBA, from each kind of storage: the
 // linear copy (offsets count from its start), float levels, and 8-bit levels decoded by table.
 struct LinearCopy {
   const float* texels;
   HWY_INLINE Texel operator()(int /*level*/, std::int32_t offset) const {
-    return LoadTexel(texels + offset);
+    return load_texel(texels + offset);
   }
 };
 struct FloatLevels {
   const Texture* texture;
   HWY_INLINE Texel operator()(int level, std::int32_t offset) const {
-    return LoadTexel(texture->level(level).rgba32f.data() + offset);
+    return load_texel(texture->level(level).rgba32f.data() + offset);
   }
 };
 struct Rgba8Levels {
@@ -248,8 +238,7 @@ struct Rgba8Levels {
   const float* color;  // decode table for r, g, b: sRGB or unorm
   const float* alpha;  // for alpha: always unorm
   HWY_INLINE Texel operator()(int level, std::int32_t offset) const {
-    const std::uint8_t* p = texture->level(level).rgba8.data() + offset;
-    return Texel{color[p[0]], color[p[1]], color[p[2]], alpha[p[3]]};
+    return decode_rgba8(texture->level(level).rgba8.data() + offset, color, alpha);
   }
 };
 

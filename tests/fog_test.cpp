@@ -65,7 +65,9 @@ TEST(Fog, FadesEveryModelTowardTheFogColorOnceByDistance) {
           wires += a.g == 0.9f;
         }
       }
-      if (model == ShadingModel::wire_overlay) EXPECT_GT(wires, 10) << samples;
+      if (model == ShadingModel::wire_overlay) {
+        EXPECT_GT(wires, 10) << samples;
+      }
     }
   }
 }

@@ -39,7 +39,7 @@ HWY_INLINE Vec3V EnvironmentRadiance(SampleAtKernel sample_at, const Environment
   alignas(64) float lanes_lod[8];
   hn::Store(lod, d, lanes_lod);
   count = std::min(count, static_cast<int>(hn::Lanes(d)));
-  glm::vec3 directions[8], radiance[8];
+  glm::vec3 directions[8] = {}, radiance[8];
   for (int lane = 0; lane < count; ++lane) directions[lane] = lanes[lane];
   image_radiance(sample_at, environment, directions, lanes_lod, count, radiance);
   for (int lane = 0; lane < count; ++lane) lanes.set(lane, radiance[lane]);

@@ -240,9 +240,23 @@ std::shared_ptr<const Texture> detailed_texture() {
   return Texture::from_rgba8(kSize, kSize, std::move(rgba), true, "detailed");
 }
 
+// One float a texel (as a depth image is kept), the same detail at every scale.
+std::shared_ptr<const Texture> gray_texture() {
+  constexpr int kSize = 64;
+  std::vector<float> values(kSize * kSize);
+  for (int y = 0; y < kSize; ++y) {
+    for (int x = 0; x < kSize; ++x) {
+      const bool check = ((x / 8) + (y / 8)) % 2 == 0;
+      values[y * kSize + x] = (check ? 0.9f : 0.1f) + ((x % 4) < 2 ? 0.05f : 0.0f) + y / 1000.0f;
+    }
+  }
+  return Texture::from_r32f(kSize, kSize, std::move(values), "gray");
+}
+
 // A ground plane seen at a grazing angle (every mip level in view), textured with uv running
 // past [0, 1] so that the wrap modes show.
-Views textured_plane(Filter filter, Wrap wrap) {
+Views textured_plane(Filter filter, Wrap wrap,
+                     std::shared_ptr<const Texture> texture = detailed_texture()) {
   Views v;
   Mesh plane;
   const float r = 6.0f;
@@ -252,7 +266,7 @@ Views textured_plane(Filter filter, Wrap wrap) {
   plane.indices = {0, 1, 2, 0, 2, 3};
   Material m;
   m.shading = ShadingModel::unlit;
-  m.base_color_map.texture = detailed_texture();
+  m.base_color_map.texture = std::move(texture);
   m.base_color_map.sampler = {filter, wrap, wrap};
   v.scene.add_object(std::move(plane), m);
   const float aspect = static_cast<float>(kWidth) / kHeight;
@@ -350,6 +364,12 @@ INSTANTIATE_TEST_SUITE_P(
                       SamplerBound{Filter::trilinear, Wrap::mirrored_repeat, "trilinear_mirror",
                                    47}),
     [](const auto& param) { return std::string(param.param.name); });
+
+// A one-float texture (what a depth render texture holds) reads as gray in both.
+TEST(GlTwin, OneFloatTextureMatchesFacet) {
+  expect_twins(
+      {"sampler_one_float", textured_plane(Filter::trilinear, Wrap::repeat, gray_texture()), 50});
+}
 
 // Cut-out, "over" and additive blending: the shapes in turn masked, blended and added, with a
 // texture whose alpha varies.

@@ -111,7 +111,8 @@ TEST(RenderTexture, DepthTextureHoldsTheWindowDepth) {
   render_shapes_into(target);
   ASSERT_NE(target.depth_texture(), nullptr);
   const Texture& depth = *target.depth_texture();
-  EXPECT_EQ(depth.format(), Texture::Format::rgba32f);
+  EXPECT_EQ(depth.format(), Texture::Format::r32f);  // one float a texel
+  EXPECT_EQ(depth.level(0).r32f.size(), static_cast<std::size_t>(kWidth) * kHeight);
   int drawn = 0;
   for (int y = 0; y < kHeight; ++y) {
     for (int x = 0; x < kWidth; ++x) {

@@ -239,6 +239,25 @@ TEST(Texture, SrgbMipLevelMatchesAScalarReference) {
   }
 }
 
+// One float a texel (depth images): read as (v, v, v, 1), its levels the averages, its data
+// length checked.
+TEST(Texture, OneFloatTexturesReadAsGrayAndFilterWithoutQuantizing) {
+  const auto t = Texture::from_r32f(2, 2, {0.1f, 0.2f, 0.3f, 0.4f}, "depth");
+  EXPECT_EQ(t->format(), Texture::Format::r32f);
+  EXPECT_EQ(t->texel(0, 1, 0), glm::vec4(0.2f, 0.2f, 0.2f, 1.0f));
+  EXPECT_EQ(t->level_count(), 2);
+  EXPECT_NEAR(t->texel(1, 0, 0).r, 0.25f, kEps);
+  EXPECT_EQ(t->texel(1, 0, 0).a, 1.0f);
+  EXPECT_EQ(t->sample(make_sampler(Filter::nearest), {0.75f, 0.25f}),
+            glm::vec4(0.4f, 0.4f, 0.4f, 1.0f));
+  try {
+    Texture::from_r32f(2, 2, {0.1f, 0.2f, 0.3f}, "depth");
+    FAIL() << "a short image was accepted";
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(), "depth: texture data has 3 values, 2x2 needs 4");
+  }
+}
+
 TEST(Texture, FloatTexturesFilterWithoutQuantizing) {
   std::vector<float> rgba = {0.1f, 2.0f, 0, 1, 0.2f, 4.0f, 0, 1,
                              0.3f, 6.0f, 0, 1, 0.4f, 8.0f, 0, 1};

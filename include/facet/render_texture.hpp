@@ -21,7 +21,8 @@ struct RenderTextureOptions {
   // level alone.
   bool mipmaps = false;
   // Also depth_texture(): the window depth of each pixel (0 at the near plane, 1 at the far
-  // and where nothing was drawn) in red, green and blue, alpha 1; linear float.
+  // and where nothing was drawn), read as red, green and blue with alpha 1; stored as one float
+  // a texel (Texture::Format::r32f).
   bool depth = false;
   // False: depth alone (with depth true), as a shadow map is made: no color is cleared,
   // shaded or resolved, and texture() is null.

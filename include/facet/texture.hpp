@@ -1,6 +1,6 @@
 // Texture: an image with its mipmap chain, and how it is sampled (filter, wrap modes).
-// Texels are stored as 8-bit RGBA (sRGB-encoded or linear) or 32-bit float RGBA (HDR);
-// sampling always returns linear RGBA.
+// Texels are stored as 8-bit RGBA (sRGB-encoded or linear), 32-bit float RGBA (HDR) or one
+// 32-bit float (depth images); sampling always returns linear RGBA.
 #pragma once
 
 #include <cstddef>
@@ -29,7 +29,11 @@ struct Sampler {
 
 class Texture {
  public:
-  enum class Format { rgba8, rgba32f };
+  enum class Format {
+    rgba8,
+    rgba32f,
+    r32f,  // one float a texel (a depth image), read as (v, v, v, 1)
+  };
 
   // One level of the mipmap chain; level 0 is the full image. Rows top first.
   struct Level {
@@ -37,6 +41,7 @@ class Texture {
     int height = 0;
     std::vector<std::uint8_t> rgba8;  // Format::rgba8
     std::vector<float> rgba32f;       // Format::rgba32f
+    std::vector<float> r32f;          // Format::r32f
   };
 
   // Builds the texture and its full mipmap chain (box filter in linear space, down to 1x1).
@@ -46,6 +51,8 @@ class Texture {
                                              bool srgb, std::string name = {});
   static std::shared_ptr<Texture> from_rgba32f(int width, int height, std::vector<float> rgba,
                                                std::string name = {});
+  static std::shared_ptr<Texture> from_r32f(int width, int height, std::vector<float> values,
+                                            std::string name = {});
 
   int width() const { return levels_[0].width; }
   int height() const { return levels_[0].height; }

@@ -22,7 +22,7 @@ RenderTexture::RenderTexture(int width, int height, const RenderTextureOptions& 
         options.mipmaps, "render texture");
   }
   if (options.depth) {
-    depth_texture_ = Texture::render_target(width, height, Texture::Format::rgba32f, false,
+    depth_texture_ = Texture::render_target(width, height, Texture::Format::r32f, false,
                                             options.mipmaps, "render texture depth");
   }
   update();
@@ -45,11 +45,7 @@ void RenderTexture::update() {
   }
   if (!depth_texture_) return;
   const std::vector<float>& depth = framebuffer_.depth();
-  float* texels = depth_texture_->base_level().rgba32f.data();
-  for (std::size_t i = 0; i < depth.size(); ++i) {
-    std::fill_n(texels + 4 * i, 3, depth[i]);
-    texels[4 * i + 3] = 1.0f;
-  }
+  std::copy(depth.begin(), depth.end(), depth_texture_->base_level().r32f.begin());
   depth_texture_->refresh_from_base_level();
 }
 

@@ -38,8 +38,8 @@ void check_size(int width, int height, std::size_t values, std::size_t expected_
   const std::size_t expected = static_cast<std::size_t>(width) * height * expected_per_texel;
   if (values != expected) {
     throw Error(label(name) + ": texture data has " + std::to_string(values) + " values, " +
-                std::to_string(width) + "x" + std::to_string(height) + " RGBA needs " +
-                std::to_string(expected));
+                std::to_string(width) + "x" + std::to_string(height) +
+                (expected_per_texel == 1 ? " needs " : " RGBA needs ") + std::to_string(expected));
   }
 }
 
@@ -76,8 +76,21 @@ struct FloatReader {
 
 // --- mipmap construction ----------------------------------------------------------------
 
+// One float a texel (r32f levels), read as (v, v, v, 1).
+struct R32fReader {
+  const float* texels;
+  int width, height;
+
+  Texel operator()(int x, int row) const {
+    const float v = texels[static_cast<std::size_t>(row) * width + x];
+    return Texel{v, v, v, 1.0f};
+  }
+};
+
 // Linear RGBA of one texel, whatever the format (texel(); not the hot path).
 glm::vec4 linear_texel(const Texture::Level& level, bool srgb, int x, int y) {
+  if (!level.r32f.empty())
+    return to_vec4(R32fReader{level.r32f.data(), level.width, level.height}(x, y));
   if (!level.rgba32f.empty()) {
     return to_vec4(FloatReader{level.rgba32f.data(), level.width, level.height}(x, y));
   }
@@ -98,10 +111,12 @@ class LevelWriter {
     }
   }
 
-  // Texels x to x + count - 1 of row y.
+  // Texels x to x + count - 1 of row y (of an r32f level, their red channel).
   void store(Texture::Level& level, int x, int y, const glm::vec4* linear, int count) const {
-    const std::size_t i = (static_cast<std::size_t>(y) * level.width + x) * 4;
-    if (!level.rgba32f.empty()) {
+    const std::size_t first = static_cast<std::size_t>(y) * level.width + x, i = first * 4;
+    if (!level.r32f.empty()) {
+      for (int k = 0; k < count; ++k) level.r32f[first + k] = linear[k].r;
+    } else if (!level.rgba32f.empty()) {
       std::memcpy(&level.rgba32f[i], linear, sizeof(glm::vec4) * count);
     } else if (encode_srgb_ != nullptr) {
       encode_srgb_(linear, count, 1.0f, &level.rgba8[i]);
@@ -120,11 +135,13 @@ Texture::Level next_level_storage(const Texture::Level& src) {
   Texture::Level dst;
   dst.width = std::max(1, src.width / 2);
   dst.height = std::max(1, src.height / 2);
-  const std::size_t values = static_cast<std::size_t>(dst.width) * dst.height * 4;
-  if (src.rgba32f.empty()) {
-    dst.rgba8.resize(values);
+  const std::size_t texels = static_cast<std::size_t>(dst.width) * dst.height;
+  if (!src.r32f.empty()) {
+    dst.r32f.resize(texels);
+  } else if (!src.rgba32f.empty()) {
+    dst.rgba32f.resize(texels * 4);
   } else {
-    dst.rgba32f.resize(values);
+    dst.rgba8.resize(texels * 4);
   }
   return dst;
 }
@@ -163,10 +180,12 @@ void filter_mip_chain(std::vector<Texture::Level>& levels, bool srgb) {
   const LevelWriter write(srgb);
   for (std::size_t l = 1; l < levels.size(); ++l) {
     const Texture::Level& last = levels[l - 1];
-    if (last.rgba32f.empty()) {
-      downsample(last, Rgba8Reader(last, srgb), write, levels[l]);
-    } else {
+    if (!last.r32f.empty()) {
+      downsample(last, R32fReader{last.r32f.data(), last.width, last.height}, write, levels[l]);
+    } else if (!last.rgba32f.empty()) {
       downsample(last, FloatReader{last.rgba32f.data(), last.width, last.height}, write, levels[l]);
+    } else {
+      downsample(last, Rgba8Reader(last, srgb), write, levels[l]);
     }
   }
 }
@@ -200,7 +219,7 @@ std::shared_ptr<Texture> Texture::from_rgba8(int width, int height, std::vector<
   texture->format_ = Format::rgba8;
   texture->srgb_ = srgb;
   texture->name_ = std::move(name);
-  texture->levels_.push_back(Level{width, height, std::move(rgba), {}});
+  texture->levels_.push_back(Level{width, height, std::move(rgba), {}, {}});
   build_mip_chain(texture->levels_, srgb);
   if (static_cast<std::size_t>(width) * height <= kMaxLinearTexels) texture->keep_linear_copy();
   return texture;
@@ -235,16 +254,18 @@ void Texture::decode_linear_copy() {
 
 std::shared_ptr<Texture> Texture::render_target(int width, int height, Format format, bool srgb,
                                                 bool mipmaps, std::string name) {
-  const std::size_t values = static_cast<std::size_t>(width) * height * 4;
+  const std::size_t texels = static_cast<std::size_t>(width) * height;
   std::shared_ptr<Texture> texture(new Texture());
   texture->format_ = format;
   texture->srgb_ = format == Format::rgba8 && srgb;
   texture->name_ = std::move(name);
-  Level base{width, height, {}, {}};
+  Level base{width, height, {}, {}, {}};
   if (format == Format::rgba8) {
-    base.rgba8.resize(values);
+    base.rgba8.resize(texels * 4);
+  } else if (format == Format::rgba32f) {
+    base.rgba32f.resize(texels * 4);
   } else {
-    base.rgba32f.resize(values);
+    base.r32f.resize(texels);
   }
   texture->levels_.push_back(std::move(base));
   if (mipmaps) build_mip_chain(texture->levels_, texture->srgb_);
@@ -265,7 +286,18 @@ std::shared_ptr<Texture> Texture::from_rgba32f(int width, int height, std::vecto
   std::shared_ptr<Texture> texture(new Texture());
   texture->format_ = Format::rgba32f;
   texture->name_ = std::move(name);
-  texture->levels_.push_back(Level{width, height, {}, std::move(rgba)});
+  texture->levels_.push_back(Level{width, height, {}, std::move(rgba), {}});
+  build_mip_chain(texture->levels_, false);
+  return texture;
+}
+
+std::shared_ptr<Texture> Texture::from_r32f(int width, int height, std::vector<float> values,
+                                            std::string name) {
+  check_size(width, height, values.size(), 1, name);
+  std::shared_ptr<Texture> texture(new Texture());
+  texture->format_ = Format::r32f;
+  texture->name_ = std::move(name);
+  texture->levels_.push_back(Level{width, height, {}, {}, std::move(values)});
   build_mip_chain(texture->levels_, false);
   return texture;
 }

@@ -220,7 +220,8 @@ struct StoredFootprints {
 };
 
 // The texel at offset `offset` of level `level`, linear RGBA, from each kind of storage: the
-// linear copy (offsets count from its start), float levels, and 8-bit levels decoded by table.
+// linear copy (offsets count from its start), float RGBA levels, one-float levels, and 8-bit
+// levels decoded by table.
 struct LinearCopy {
   const float* texels;
   HWY_INLINE Texel operator()(int /*level*/, std::int32_t offset) const {
@@ -231,6 +232,13 @@ struct FloatLevels {
   const Texture* texture;
   HWY_INLINE Texel operator()(int level, std::int32_t offset) const {
     return load_texel(texture->level(level).rgba32f.data() + offset);
+  }
+};
+struct R32fLevels {  // one float a texel: offsets count four a texel, as for RGBA
+  const Texture* texture;
+  HWY_INLINE Texel operator()(int level, std::int32_t offset) const {
+    const float v = texture->level(level).r32f[static_cast<std::size_t>(offset >> 2)];
+    return Texel{v, v, v, 1.0f};
   }
 };
 struct Rgba8Levels {
@@ -367,6 +375,8 @@ HWY_INLINE void SamplePixels(const Source& src, Filter filter, const Coords& coo
     };
     if (src.texture->format() == Texture::Format::rgba32f) {
       store(FloatLevels{src.texture});
+    } else if (src.texture->format() == Texture::Format::r32f) {
+      store(R32fLevels{src.texture});
     } else {
       const TexelDecode& decode = texel_decode();
       store(Rgba8Levels{src.texture, decode.color(src.texture->srgb()), decode.unorm.data()});
@@ -398,6 +408,8 @@ HWY_INLINE void SamplePixels(const Source& src, Filter filter, const Coords& coo
     BlendPixels(LinearCopy{src.texels}, src, near, far, level, fraction, k, count, rgba);
   } else if (src.texture->format() == Texture::Format::rgba32f) {
     BlendPixels(FloatLevels{src.texture}, src, near, far, level, fraction, 0, count, rgba);
+  } else if (src.texture->format() == Texture::Format::r32f) {
+    BlendPixels(R32fLevels{src.texture}, src, near, far, level, fraction, 0, count, rgba);
   } else {
     const TexelDecode& decode = texel_decode();
     BlendPixels(Rgba8Levels{src.texture, decode.color(src.texture->srgb()), decode.unorm.data()},

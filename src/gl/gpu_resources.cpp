@@ -145,12 +145,29 @@ GLuint GpuResources::texture(const std::shared_ptr<const Texture>& texture) {
   glBindTexture(GL_TEXTURE_2D, id);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   const bool floats = texture->format() == Texture::Format::rgba32f;
+  const bool one_float = texture->format() == Texture::Format::r32f;
   // sRGB textures are decoded to linear before filtering, as facet samples them.
-  const GLint internal = floats ? GL_RGBA32F : texture->srgb() ? GL_SRGB8_ALPHA8 : GL_RGBA8;
+  const GLint internal = one_float         ? GL_R32F
+                         : floats          ? GL_RGBA32F
+                         : texture->srgb() ? GL_SRGB8_ALPHA8
+                                           : GL_RGBA8;
+  if (one_float) {  // read as (v, v, v, 1), as facet reads it
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_G, GL_RED);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_B, GL_RED);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_A, GL_ONE);
+  }
   for (int l = 0; l < texture->level_count(); ++l) {
     const Texture::Level& level = texture->level(l);
-    const std::size_t row = static_cast<std::size_t>(level.width) * 4;
-    if (floats) {
+    const std::size_t row = static_cast<std::size_t>(level.width) * (one_float ? 1 : 4);
+    if (one_float) {
+      std::vector<float> flipped(row * level.height);
+      for (int y = 0; y < level.height; ++y) {
+        std::copy_n(level.r32f.data() + (level.height - 1 - y) * row, row,
+                    flipped.data() + y * row);
+      }
+      glTexImage2D(GL_TEXTURE_2D, l, internal, level.width, level.height, 0, GL_RED, GL_FLOAT,
+                   flipped.data());
+    } else if (floats) {
       std::vector<float> flipped(row * level.height);
       for (int y = 0; y < level.height; ++y) {
         std::copy_n(level.rgba32f.data() + (level.height - 1 - y) * row, row,

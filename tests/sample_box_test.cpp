@@ -101,7 +101,6 @@ std::vector<Found> found(const SetupTriangle& t, const pipeline::SampleSteps& st
 
 TEST(SampleBoxes, FindExactlyTheSamplesTheEdgeFunctionsCover) {
   std::mt19937 rng(20261203);
-  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   int tried = 0, with_pixels = 0, wide = 0, partly_in_front = 0;
   for (std::int64_t target : simd_targets()) {
     ForcedTarget forced(target);
@@ -109,17 +108,9 @@ TEST(SampleBoxes, FindExactlyTheSamplesTheEdgeFunctionsCover) {
       const int samples = 2 << (n % 4);  // 2, 4, 8, 16
       // Small triangles (a few pixels), and big ones (edges up to the guard band).
       const float size = n % 3 == 0 ? 12.0f : (n % 3 == 1 ? 900.0f : 12000.0f);
-      const float cx = 100.0f + unit(rng) * (kSetupWidth - 200),
-                  cy = 100.0f + unit(rng) * (kSetupHeight - 200);
-      pipeline::ScreenVertex s[3];
-      for (auto& v : s) {
-        v.x = pipeline::snap(cx + (unit(rng) - 0.5f) * size);
-        v.y = pipeline::snap(cy + (unit(rng) - 0.5f) * size);
-        v.z = unit(rng);
-        v.inv_w = 1.0f;
-      }
+      float cx, cy;
       SetupTriangle t;
-      if (!set_up_triangle(s, t)) continue;
+      if (!random_triangle(rng, size, cx, cy, t)) continue;
       std::uniform_int_distribution<int> side(1, 16);
       const int width = side(rng), height = std::min(side(rng), 64 / width);
       const int x0 = static_cast<int>(cx) - width / 2, y0 = static_cast<int>(cy) - height / 2;

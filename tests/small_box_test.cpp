@@ -23,8 +23,6 @@ namespace {
 
 using pipeline::SetupTriangle;
 
-constexpr int kWidth = kSetupWidth, kHeight = kSetupHeight;
-
 struct Found {
   int x, y;
   float z;
@@ -72,17 +70,9 @@ TEST(SmallBoxes, FindExactlyThePixelsTheEdgeFunctionsCover) {
     for (int n = 0; n < 3000; ++n) {
       // Half small triangles (a few pixels), half big ones (up to the guard band).
       const float size = n % 2 == 0 ? 12.0f : 12000.0f;
-      const float cx = 100.0f + unit(rng) * (kWidth - 200),
-                  cy = 100.0f + unit(rng) * (kHeight - 200);
-      pipeline::ScreenVertex s[3];
-      for (auto& v : s) {
-        v.x = pipeline::snap(cx + (unit(rng) - 0.5f) * size);
-        v.y = pipeline::snap(cy + (unit(rng) - 0.5f) * size);
-        v.z = unit(rng);
-        v.inv_w = 1.0f;
-      }
+      float cx, cy;
       SetupTriangle t;
-      if (!set_up_triangle(s, t)) continue;
+      if (!random_triangle(rng, size, cx, cy, t)) continue;
       // A box of at most 64 pixels: the triangle's own (cut down), or one around its centre.
       std::uniform_int_distribution<int> side(1, 16);
       int width = side(rng), height = std::min(side(rng), 64 / width);

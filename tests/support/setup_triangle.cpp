@@ -29,4 +29,19 @@ bool set_up_triangle(const pipeline::ScreenVertex s[3], pipeline::SetupTriangle&
   return true;
 }
 
+bool random_triangle(std::mt19937& rng, float size, float& cx, float& cy,
+                     pipeline::SetupTriangle& out) {
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  cx = 100.0f + unit(rng) * (kSetupWidth - 200);
+  cy = 100.0f + unit(rng) * (kSetupHeight - 200);
+  pipeline::ScreenVertex s[3];
+  for (auto& v : s) {
+    v.x = pipeline::snap(cx + (unit(rng) - 0.5f) * size);
+    v.y = pipeline::snap(cy + (unit(rng) - 0.5f) * size);
+    v.z = unit(rng);
+    v.inv_w = 1.0f;
+  }
+  return set_up_triangle(s, out);
+}
+
 }  // namespace facet::test

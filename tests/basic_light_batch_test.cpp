@@ -7,6 +7,7 @@
 #include "facet/procedural.hpp"
 #include "pipeline/record/pipeline_table.hpp"
 #include "scenes/glmark2_shading.hpp"
+#include "support/display_reference.hpp"
 #include "support/render_helpers.hpp"
 
 namespace facet::test {
@@ -23,7 +24,7 @@ struct PerPixelBasicLight : shading::DisplayReferred {
     BasicLightShading::vertex(in, u, out);
   }
   static glm::vec4 fragment(const shading::Fragment& f, const shading::DrawUniforms& u) {
-    return shading::display_value(shading::load3(f.v), u);
+    return reference_display_value(shading::load3(f.v), u);
   }
 };
 

@@ -24,6 +24,7 @@
 #include "shading/kernels.hpp"
 #include "shading/lit_models.hpp"
 #include "shading/models.hpp"
+#include "support/display_reference.hpp"
 #include "support/forced_target.hpp"
 #include "support/sky_reference.hpp"
 
@@ -132,7 +133,7 @@ void randomize(std::mt19937& rng, Draw& d) {
     d.environment_light = shading::project_environment(d.lighting.environment);
     d.frame.environment_light = &d.environment_light;
   }
-  // Display values decoded to linear, or kept as code / 255 (models.hpp's display_value).
+  // Display values decoded to linear, or kept as code / 255 (models.hpp).
   d.frame.display_referred = rng() % 2 == 0;
   // An orthographic camera's fog depth, from z (uniforms.hpp's ViewDepth), every third draw.
   if (rng() % 3 == 0) d.frame.view_depth = {0.0f, unit(rng) * 60.0f, unit(rng)};
@@ -209,6 +210,57 @@ void expect_every_target_alike(bool (*takes)(const Draw&) = nullptr,
     }
   }
   EXPECT_GT(compared, 20 * kShadeBatch / 2 * static_cast<int>(targets.size() - 1));
+}
+
+// The depth and texture-coordinate views show, on every target, the values their definitions
+// give (models.hpp), written out per pixel: 1 - (depth - near) / (far - near) clamped, and the
+// coordinates' fractional parts, as display values (support/display_reference.hpp) in every
+// kind of frame, for coordinates far outside [0, 1] and NaN too.
+TEST(ShadeBatch, DebugViewsShowTheirDefinitionsOnEveryTarget) {
+  std::mt19937 rng(20261203);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f), wide(-3e7f, 3e7f);
+  int compared = 0;
+  for (std::int64_t target : simd_targets()) {
+    ForcedTarget forced(target);
+    for (int round = 0; round < 40; ++round) {
+      Inputs in;
+      fill(rng, in);
+      for (int n = 0; n < kShadeBatch; ++n) {
+        if (n % 3 == 0) in.v[0][n] = wide(rng), in.v[1][n] = wide(rng);
+      }
+      in.v[0][1] = std::numeric_limits<float>::quiet_NaN();
+      in.v[1][2] = std::numeric_limits<float>::infinity();
+      Draw draw;
+      randomize(rng, draw);
+      draw.lighting.fog.mode = FogMode::none;
+      draw.frame.display_exact = round % 3 == 0;
+      draw.frame.depth_view_near = unit(rng) * 10.0f;
+      draw.frame.depth_view_far = draw.frame.depth_view_near + unit(rng) * 40.0f;
+      const int count = 1 + static_cast<int>(rng() % kShadeBatch);
+      alignas(64) float depth_view[kShadeBatch][4], texcoords_view[kShadeBatch][4];
+      shading::DepthShading::fragment_batch(
+          draw.uniforms, shade_input<shading::DepthShading>(in, count, draw), depth_view);
+      shading::TexcoordShading::fragment_batch(
+          draw.uniforms, shade_input<shading::TexcoordShading>(in, count, draw), texcoords_view);
+      const shading::FrameUniforms& f = draw.frame;
+      for (int n = 0; n < count; ++n) {
+        const float t = (f.view_depth(in.w[n], in.z[n]) - f.depth_view_near) /
+                        std::max(f.depth_view_far - f.depth_view_near, 1e-30f);
+        const glm::vec4 depth =
+            reference_display_value(glm::vec3(std::clamp(1.0f - t, 0.0f, 1.0f)), draw.uniforms);
+        const float u = in.v[0][n], v = in.v[1][n];
+        const glm::vec4 texcoords =
+            reference_display_value({u - std::floor(u), v - std::floor(v), 0.0f}, draw.uniforms);
+        ASSERT_EQ(std::memcmp(&depth, depth_view[n], sizeof depth), 0)
+            << hwy::TargetName(target) << ", round " << round << ", pixel " << n;
+        ASSERT_EQ(std::memcmp(&texcoords, texcoords_view[n], sizeof texcoords), 0)
+            << hwy::TargetName(target) << ", round " << round << ", pixel " << n << " at (" << u
+            << ", " << v << ")";
+        ++compared;
+      }
+    }
+  }
+  EXPECT_GT(compared, 1000);
 }
 
 TEST(ShadeBatch, LambertIsAlikeOnEveryTarget) {

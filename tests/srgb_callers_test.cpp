@@ -27,12 +27,6 @@
 namespace facet::test {
 namespace {
 
-// Alpha, and unorm color: clamped to [0, 1] (NaN to 0), rounded.
-std::uint8_t round_unorm8(float v) {
-  const float c = v > 0.0f ? std::min(v, 1.0f) : 0.0f;
-  return static_cast<std::uint8_t>(c * 255.0f + 0.5f);
-}
-
 // Values around the codes and outside [0, 1], NaN and infinities among them, then random ones.
 std::vector<float> probe_values(int count) {
   constexpr float kInf = std::numeric_limits<float>::infinity();
@@ -70,7 +64,7 @@ void expect_level_is_the_reference(const Texture& texture, int to, const char* t
         }
         const float average = sum * 0.25f;
         const std::uint8_t expected =
-            texture.srgb() && c < 3 ? encode_srgb8(average) : round_unorm8(average);
+            texture.srgb() && c < 3 ? encode_srgb8(average) : encode_unorm8(average);
         ASSERT_EQ(dst.rgba8[(y * dst.width + x) * 4 + c], expected)
             << target << ", " << (texture.srgb() ? "sRGB" : "unorm") << " level " << to
             << ", texel " << x << "," << y << ", channel " << c;
@@ -124,7 +118,7 @@ TEST(SrgbCallers, FloatImagesAreWrittenAsTheReferenceEncodes) {
   frame.rgba32f() = values;
   std::vector<std::uint8_t> expected(values.size());
   for (std::size_t i = 0; i < values.size(); ++i) {
-    expected[i] = i % 4 == 3 ? round_unorm8(values[i]) : encode_srgb8(values[i]);
+    expected[i] = i % 4 == 3 ? encode_unorm8(values[i]) : encode_srgb8(values[i]);
   }
   const auto dir = fresh_test_dir("facet_srgb_callers_", "float_image");
   for (std::int64_t target : simd_targets()) {

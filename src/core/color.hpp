@@ -49,17 +49,8 @@ struct SrgbTables {
 extern const SrgbTables kSrgbTables;
 inline const SrgbTables& srgb_tables() { return kSrgbTables; }
 
-// A value in [0, 1] (clamped; NaN -> 0, where std::clamp would pass NaN on and NaN to an
-// integer is undefined) rounded to an 8-bit code: values that are not light, one at a time
-// (the display values of shading/models.hpp and pipeline/output/debug_view.cpp). Rows of them
-// go through round_unorm8_row_kernel (core/srgb_row.hpp), which rounds the same way.
-inline std::uint8_t encode_unorm8(float v) {
-  const float unit = v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;
-  return static_cast<std::uint8_t>(unit * 255.0f + 0.5f);
-}
-
-// 1 / 255: an 8-bit code c as the value c * kInverse255 in [0, 1], which encode_unorm8 turns
-// back into c.
+// 1 / 255: an 8-bit code c as the value c * kInverse255 in [0, 1], which the 8-bit rounding
+// (core/srgb_row.hpp's round_unorm8_row_kernel) turns back into c.
 inline constexpr float kInverse255 = 1.0f / 255.0f;
 
 // Decodes an 8-bit sRGB code to linear.

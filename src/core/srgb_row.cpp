@@ -38,7 +38,7 @@ void EncodeSrgbRow(const glm::vec4* colors, int count, float scale, std::uint8_t
   for (int j = 0; j < kChunk + 4; ++j) factor[j] = j % 4 == 3 ? 1.0f : scale;
   // Per channel: the bits of its value clamped to [0, 1] (NaN to 0) above those of the first
   // run (color.hpp; 0 below it), and its run. Per color channel, the run's entry; per alpha
-  // channel, its 8-bit rounding (encode_unorm8).
+  // channel, its 8-bit rounding (v * 255 + 0.5, truncated).
   alignas(64) std::int32_t above[4 * kChunk + kMaxFloatLanes];
   alignas(64) std::int32_t run[4 * kChunk + kMaxFloatLanes];
   alignas(64) std::int32_t entry[4 * kChunk + kMaxFloatLanes];
@@ -71,7 +71,7 @@ void EncodeSrgbRow(const glm::vec4* colors, int count, float scale, std::uint8_t
       const auto bits_above = hn::Max(hn::Sub(hn::BitCast(di, c), run_base), hn::Zero(di));
       hn::Store(bits_above, di, above + j);
       hn::Store(hn::ShiftRight<Tables::kRunBits>(bits_above), di, run + j);
-      // A multiplication then an addition, not fused: encode_unorm8 exactly.
+      // A multiplication then an addition, not fused.
       hn::Store(hn::ConvertTo(di, hn::Add(hn::Mul(c, codes), half)), di, entry + j);
     }
     // 2. The color channels' runs looked up, one at a time (scalar loads: faster than gathers
@@ -98,7 +98,7 @@ void EncodeSrgbRow(const glm::vec4* colors, int count, float scale, std::uint8_t
   }
 }
 
-// Every channel as EncodeSrgbRow rounds alpha (encode_unorm8), lane by lane.
+// Every channel as EncodeSrgbRow rounds alpha, lane by lane.
 void RoundUnorm8Row(const glm::vec4* colors, int count, std::uint8_t* rgba) {
   const FloatTag df;
   const IntTag di;
@@ -109,7 +109,7 @@ void RoundUnorm8Row(const glm::vec4* colors, int count, std::uint8_t* rgba) {
   const auto round = [&](const float* from, std::uint8_t* to) {
     const auto x = hn::LoadU(df, from);
     const auto c = hn::Min(hn::IfThenElseZero(hn::Gt(x, zero), x), one);
-    // A multiplication then an addition, not fused: encode_unorm8 exactly.
+    // A multiplication then an addition, not fused, as alpha's.
     const auto code = hn::ConvertTo(di, hn::Add(hn::Mul(c, codes), half));
     hn::StoreU(hn::DemoteTo(du8, code), du8, to);
   };

@@ -17,8 +17,8 @@ namespace facet::shading {
 
 // rgba[4 i + c] for the count colors: red, green and blue times scale (the exposure) encoded
 // to 8-bit sRGB, each v as the largest code whose SrgbTables threshold is at most v (v clamped
-// to [0, 1], NaN as 0; color.hpp); alpha (not scaled) clamped to [0, 1] and rounded to 8 bits
-// as encode_unorm8 rounds. The same bytes on every target.
+// to [0, 1], NaN as 0; color.hpp); alpha (not scaled) clamped to [0, 1] (NaN as 0) and rounded
+// to 8 bits, v * 255 + 0.5 truncated. The same bytes on every target.
 using EncodeSrgbRowKernel = void (*)(const glm::vec4* colors, int count, float scale,
                                      std::uint8_t* rgba);
 EncodeSrgbRowKernel encode_srgb_row_kernel(SimdTarget target);

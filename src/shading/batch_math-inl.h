@@ -204,7 +204,7 @@ HWY_INLINE void StoreColors(const BatchV color[4], float (*rgba)[4]) {
   hn::StoreInterleaved4(color[0], color[1], color[2], color[3], BatchTag(), &rgba[0][0]);
 }
 
-// Display values (models.hpp's display_channel; glmark2's output too): a value clamped to
+// Display values (models.hpp; the debug views' and glmark2's output): a value clamped to
 // [0, 1] (NaN to 0), times 255, plus a half, truncated to its 8-bit code, which
 // DecodeDisplayCodes turns into the color the tile stores.
 using DisplayCodes = std::int32_t (*)[kShadeBatch];
@@ -220,7 +220,7 @@ HWY_INLINE void StoreDisplayCodes(const Vec3V& rgb, int j, DisplayCodes codes) {
   }
 }
 
-// Pixel n's color (ColorAt) = its codes as display values (models.hpp's display_channel),
+// Pixel n's color (ColorAt) = its codes as display values (models.hpp),
 // alpha 1, for n < count. Decoded, the sRGB table is read one channel at a time after the SIMD loop
 // (scalar loads, not gathers, as in resolve); in display-referred frames, code / 255 with SIMD.
 HWY_INLINE void DecodeDisplayCodes(DisplayCodes codes, int count, bool referred, int row_stride,

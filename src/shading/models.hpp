@@ -10,14 +10,14 @@
 //   face(normal, centre, uniforms, v[3])  optional, per triangle before clipping: may rewrite
 //                                    the three vertices' varyings (flat shading)
 //   and how its pixels are shaded, one of:
-//   fragment(fragment, uniforms) -> linear RGBA   per pixel (the debug views and the extra
-//                   outputs, a few operations each)
+//   fragment(fragment, uniforms) -> linear RGBA   per pixel (the extra outputs and debug
+//                   counters, a few operations each)
 //   fragment_batch(uniforms, input, rgba), kMapsRead   a batch of pixels at once with SIMD, fog
 //                   included, the material's maps sampled ahead, for every draw (kernels.hpp's
-//                   BatchForm: the built-in models lit or colored by their material; the glmark2
-//                   shaders of bench/scenes)
+//                   BatchForm: the built-in models and the debug views; the glmark2 shaders of
+//                   bench/scenes)
 //   kDisplayReferred  optional (inherit DisplayReferred): the colors are display values
-//                   (display_value()); frames of such draws alone skip the sRGB encode
+//                   (below); frames of such draws alone skip the sRGB encode
 //                   (pipeline/renderer.cpp)
 //   kBaseColorTexcoord  optional: the slot of the texture coordinate the base color map (and
 //                   the other maps) are read at; the raster loop then samples the maps for a
@@ -39,29 +39,14 @@
 
 namespace facet::shading {
 
-// A display value (already what the screen should show, as an 8-bit code: debug views show
-// data, not light) as the tile stores it. Usually the code decoded to linear, which resolve's
-// sRGB encode gives back exactly (the table is exact and much cheaper than pow()). In a frame
-// whose every color is a display value (DrawUniforms::display_referred, pipeline/frame_run.cpp)
-// the code / 255 itself, which resolve turns back into the code without the sRGB tables. In a
-// float target (display_exact) the value itself, clamped to [0, 1]: floats are not rounded to
-// codes, and are not decoded either, so a normal's 0 is stored as 0.5.
-// NaN shows as 0 (as batch_math-inl.h's StoreDisplayCodes has it).
-inline float display_channel(float v, bool referred) {
-  const std::uint8_t code = encode_unorm8(v);
-  return referred ? static_cast<float>(code) * kInverse255 : decode_srgb8(code);
-}
-inline float exact_display_channel(float v) { return v > 0.0f ? std::min(v, 1.0f) : 0.0f; }
-inline glm::vec4 display_value(glm::vec3 shown, const DrawUniforms& u) {
-  if (u.frame->display_exact) {
-    return {exact_display_channel(shown.x), exact_display_channel(shown.y),
-            exact_display_channel(shown.z), 1.0f};
-  }
-  const bool referred = u.frame->display_referred;
-  return {display_channel(shown.x, referred), display_channel(shown.y, referred),
-          display_channel(shown.z, referred), 1.0f};
-}
-// The mark of models whose colors are display_value()s (kDisplayReferred above).
+// Display values: what the screen should show, as an 8-bit code (debug views show data, not
+// light), stored by the tile as the code decoded to linear (which resolve's sRGB encode gives
+// back exactly); in a frame whose every color is a display value (DrawUniforms::display_referred,
+// pipeline/frame_run.cpp) as code / 255, which resolve turns back into the code without the sRGB
+// tables; in a float target (display_exact) as the value itself clamped to [0, 1], neither
+// rounded nor decoded, so a normal's 0 is stored as 0.5. NaN shows as 0. The debug views are
+// their SIMD kernel alone (shade_batch.cpp's ShadeDisplay).
+// The mark of models whose colors are display values (kDisplayReferred above).
 struct DisplayReferred {
   static constexpr bool kDisplayReferred = true;
 };
@@ -150,16 +135,10 @@ struct WireOverlayShading : LambertShading {
 
 // Debug view: linear view depth over the frame's own range (FrameUniforms::depth_view_near and
 // depth_view_far), near -> white, far -> black.
-struct DepthShading : DisplayReferred {
+struct DepthShading : BatchForm<BatchModel::depth_view>, DisplayReferred {
   static constexpr int kVaryings = 0;
   static constexpr int kNormalSlot = -1;
   static void vertex(const VertexInput&, const DrawUniforms&, float*) {}
-  static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
-    const float depth = u.frame->view_depth(f.w, f.z);
-    const float near = u.frame->depth_view_near, far = u.frame->depth_view_far;
-    float t = (depth - near) / std::max(far - near, 1e-30f);
-    return display_value(glm::vec3(std::clamp(1.0f - t, 0.0f, 1.0f)), u);
-  }
 };
 
 // Debug view: world-space normal, renormalized per pixel, shown as n * 0.5 + 0.5.
@@ -172,14 +151,11 @@ struct NormalsShading : BatchForm<BatchModel::normals>, DisplayReferred {
 };
 
 // Debug view: texture coordinates as red (u) and green (v), fractional part.
-struct TexcoordShading : DisplayReferred {
+struct TexcoordShading : BatchForm<BatchModel::texcoords_view>, DisplayReferred {
   static constexpr int kVaryings = 2;
   static constexpr int kNormalSlot = -1;
   static void vertex(const VertexInput& in, const DrawUniforms&, float* out) {
     store(out, in.texcoord);
-  }
-  static glm::vec4 fragment(const Fragment& f, const DrawUniforms& u) {
-    return display_value({f.v[0] - std::floor(f.v[0]), f.v[1] - std::floor(f.v[1]), 0.0f}, u);
   }
 };
 

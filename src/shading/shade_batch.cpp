@@ -215,17 +215,46 @@ void FogBatch(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
   }
 }
 
-// The normals view: display_value(safe_normalize(n) * 0.5 + 0.5) (models.hpp), then fog, if
-// any, on the decoded colors in SIMD again.
-void ShadeNormals(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
+// The debug views' display values (not light: an 8-bit code per channel, models.hpp's
+// DisplayReferred) of pixels j..: the normal, renormalized, as n * 0.5 + 0.5; the view depth over
+// the frame's range (FrameUniforms::depth_view_near, depth_view_far), near white, far black; the
+// texture coordinates' fractional parts as red and green.
+template <BatchModel kView>
+HWY_INLINE Vec3V DisplayShown(const DrawUniforms& u, const ShadeInput& in, int j) {
+  const FloatTag d;
+  const FloatV half = hn::Set(d, 0.5f);
+  if constexpr (kView == BatchModel::normals) {
+    const Vec3V n = SafeNormalize(Load3(in.v, 0, j));
+    return {hn::Add(hn::Mul(n.x, half), half), hn::Add(hn::Mul(n.y, half), half),
+            hn::Add(hn::Mul(n.z, half), half)};
+  } else if constexpr (kView == BatchModel::depth_view) {
+    const ViewDepth& depth = u.frame->view_depth;
+    const FloatV view = hn::Add(hn::Add(hn::Mul(hn::Set(d, depth.from_w), hn::Load(d, in.w + j)),
+                                        hn::Mul(hn::Set(d, depth.from_z), hn::Load(d, in.z + j))),
+                                hn::Set(d, depth.offset));
+    const float near = u.frame->depth_view_near, far = u.frame->depth_view_far;
+    const FloatV t =
+        hn::Div(hn::Sub(view, hn::Set(d, near)), hn::Set(d, std::max(far - near, 1e-30f)));
+    const FloatV shown = hn::Sub(hn::Set(d, 1.0f), t);  // clamped to [0, 1] as it is shown
+    return {shown, shown, shown};
+  } else {
+    const FloatV u_value = hn::Load(d, in.v[0] + j), v_value = hn::Load(d, in.v[1] + j);
+    return {hn::Sub(u_value, hn::Floor(u_value)), hn::Sub(v_value, hn::Floor(v_value)),
+            hn::Zero(d)};
+  }
+}
+
+// A debug view (DisplayShown): its display values as the tile stores them (models.hpp's
+// DisplayReferred: the code decoded, or code / 255 in display-referred frames, or the value
+// clamped to [0, 1] in float targets), then fog, if any, on the stored colors in SIMD again.
+template <BatchModel kView>
+void ShadeDisplay(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
   const FloatTag d;
   const int lanes = static_cast<int>(hn::Lanes(d));
-  const FloatV half = hn::Set(d, 0.5f);
   if (u.frame->display_exact) {  // a float target: the values themselves, clamped to [0, 1]
     for (int j = 0; j < in.count; j += lanes) {
-      const Vec3V n = SafeNormalize(Load3(in.v, 0, j));
-      FloatV color[4] = {hn::Add(hn::Mul(n.x, half), half), hn::Add(hn::Mul(n.y, half), half),
-                         hn::Add(hn::Mul(n.z, half), half), hn::Set(d, 1.0f)};
+      const Vec3V shown = DisplayShown<kView>(u, in, j);
+      FloatV color[4] = {shown.x, shown.y, shown.z, hn::Set(d, 1.0f)};
       for (int c = 0; c < 3; ++c) {
         color[c] =
             StdMin(hn::IfThenElseZero(hn::Gt(color[c], hn::Zero(d)), color[c]), hn::Set(d, 1.0f));
@@ -234,12 +263,8 @@ void ShadeNormals(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4])
     }
   } else {
     alignas(64) std::int32_t codes[3][kShadeBatch];
-    for (int j = 0; j < in.count; j += lanes) {
-      const Vec3V n = SafeNormalize(Load3(in.v, 0, j));
-      StoreDisplayCodes({hn::Add(hn::Mul(n.x, half), half), hn::Add(hn::Mul(n.y, half), half),
-                         hn::Add(hn::Mul(n.z, half), half)},
-                        j, codes);
-    }
+    for (int j = 0; j < in.count; j += lanes)
+      StoreDisplayCodes(DisplayShown<kView>(u, in, j), j, codes);
     DecodeDisplayCodes(codes, in.count, u.frame->display_referred, in.rgba_row_stride, rgba);
   }
   FogBatch(u, in, rgba);
@@ -361,7 +386,11 @@ void ShadeModel(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
 void ShadeBatch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
   switch (model) {
     case BatchModel::normals:
-      return ShadeNormals(u, in, rgba);
+      return ShadeDisplay<BatchModel::normals>(u, in, rgba);
+    case BatchModel::depth_view:
+      return ShadeDisplay<BatchModel::depth_view>(u, in, rgba);
+    case BatchModel::texcoords_view:
+      return ShadeDisplay<BatchModel::texcoords_view>(u, in, rgba);
     case BatchModel::unlit:
       return ShadeModel<BatchModel::unlit>(u, in, rgba);
     case BatchModel::constant_unlit:

@@ -23,6 +23,8 @@ enum class BatchModel {
   phong,
   blinn_phong,
   normals,
+  depth_view,
+  texcoords_view,
   gouraud,
   constant_gouraud,
   pbr
@@ -56,6 +58,8 @@ inline const TextureMap& material_map(const Material& m, MaterialMap map) {
 inline constexpr unsigned maps_read(BatchModel model) {
   switch (model) {
     case BatchModel::normals:
+    case BatchModel::depth_view:
+    case BatchModel::texcoords_view:
     case BatchModel::constant_gouraud:
       return 0;
     case BatchModel::phong:

@@ -58,7 +58,7 @@ struct FrameUniforms {
   glm::mat4 view{1.0f};       // the camera's view matrix (what the extra outputs measure in)
   bool orthographic = false;  // the camera's projection is parallel
   ViewDepth view_depth;
-  // Display values (models.hpp's display_value) are stored as code / 255, not decoded to
+  // Display values (models.hpp) are stored as code / 255, not decoded to
   // linear: in frames whose every color is one (8-bit targets), and in every float target.
   bool display_referred = false;
   // The target holds floats: the debug views' display values are stored as they are (the

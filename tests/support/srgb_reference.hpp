@@ -1,7 +1,8 @@
-// The 8-bit sRGB encode written out one value at a time from its tables (core/color.hpp), for
-// tests: srgb_row_test compares the row kernel (core/srgb_row.cpp) with it on every target, and
-// texture_test holds it to the definition, round(linear_to_srgb(v) * 255). The library encodes
-// through the row kernel alone.
+// The 8-bit encodes written out one value at a time, for tests: the sRGB encode from its tables
+// (core/color.hpp) and the plain rounding of alpha and display values. srgb_row_test compares
+// the row kernels (core/srgb_row.cpp) with them on every target, and texture_test holds the
+// sRGB one to the definition, round(linear_to_srgb(v) * 255). The library encodes through the
+// row kernels alone.
 #pragma once
 
 #include <bit>
@@ -25,6 +26,13 @@ inline std::uint8_t encode_srgb8(const shading::SrgbTables& t, float linear) {
 }
 inline std::uint8_t encode_srgb8(float linear) {
   return encode_srgb8(shading::srgb_tables(), linear);
+}
+
+// A value clamped to [0, 1] (NaN -> 0) and rounded to an 8-bit code: v * 255 + 0.5, truncated,
+// a multiplication then an addition (not fused).
+inline std::uint8_t encode_unorm8(float v) {
+  const float unit = v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;
+  return static_cast<std::uint8_t>(unit * 255.0f + 0.5f);
 }
 
 }  // namespace facet::test

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/color.hpp"
+#include "pipeline/kernels.hpp"
 #include "pipeline/record/pipeline_table.hpp"
 #include "shading/models.hpp"
 
@@ -30,54 +31,61 @@ glm::vec3 heat(float count, float base) {
   return glm::mix(kRamp[i], kRamp[i + 1], position - static_cast<float>(i));
 }
 
-// Writes an sRGB display value (not light: no exposure) to one pixel of the target.
-void store_display(Framebuffer& target, std::size_t pixel, glm::vec3 shown) {
+// Writes sRGB display values (not light: no exposure), one a pixel, to `count` pixels of the
+// target from `first` on: 8-bit codes through the row kernel's rounding, or decoded floats.
+void store_display(const TileContext& tile, Framebuffer& target, std::size_t first,
+                   const glm::vec4* shown, int count) {
   if (target.format() == ColorFormat::rgba8_srgb) {
-    std::uint8_t* out = target.rgba8().data() + pixel * 4;
-    for (int c = 0; c < 3; ++c) out[c] = shading::encode_unorm8(shown[c]);
-    out[3] = 255;
-  } else {
-    float* out = target.rgba32f().data() + pixel * 4;
-    for (int c = 0; c < 3; ++c) out[c] = shading::srgb_to_linear(std::clamp(shown[c], 0.0f, 1.0f));
+    tile.frame->kernels->round_unorm8_row(shown, count, target.rgba8().data() + first * 4);
+    return;
+  }
+  float* out = target.rgba32f().data() + first * 4;
+  for (int i = 0; i < count; ++i, out += 4) {
+    for (int c = 0; c < 3; ++c)
+      out[c] = shading::srgb_to_linear(std::clamp(shown[i][c], 0.0f, 1.0f));
     out[3] = 1.0f;
   }
 }
 
-// Mixes a display value halfway into a resolved pixel (in the stored encoding: it is a tint).
-void tint_display(Framebuffer& target, std::size_t pixel, glm::vec3 tint, float amount) {
-  if (target.format() == ColorFormat::rgba8_srgb) {
-    std::uint8_t* out = target.rgba8().data() + pixel * 4;
-    for (int c = 0; c < 3; ++c) {
-      out[c] = shading::encode_unorm8(glm::mix(out[c] / 255.0f, tint[c], amount));
-    }
-  } else {
-    float* out = target.rgba32f().data() + pixel * 4;
-    for (int c = 0; c < 3; ++c) out[c] = glm::mix(out[c], shading::srgb_to_linear(tint[c]), amount);
-  }
-}
-
 void resolve_overdraw(const TileContext& tile, Framebuffer& target) {
+  glm::vec4 shown[kMaxTileSize];
+  const int width = tile.x1 - tile.x0;
   for (int y = tile.y0; y < tile.y1; ++y) {
     const glm::vec4* counts = tile.color + static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride;
-    std::size_t row = static_cast<std::size_t>(y) * target.width();
-    for (int x = tile.x0; x < tile.x1; ++x) {
-      store_display(target, row + x, heat(counts[x - tile.x0].r, 2.0f));
-    }
-    if (target.has_depth())
-      std::fill_n(target.depth().data() + row + tile.x0, tile.x1 - tile.x0, 1.0f);
+    const std::size_t row = static_cast<std::size_t>(y) * target.width();
+    for (int x = 0; x < width; ++x) shown[x] = glm::vec4(heat(counts[x].r, 2.0f), 1.0f);
+    store_display(tile, target, row + tile.x0, shown, width);
+    if (target.has_depth()) std::fill_n(target.depth().data() + row + tile.x0, width, 1.0f);
   }
 }
 
-// The shaded tile, tinted by its bin size, with a dark outline so the tile grid shows.
+// The shaded tile, tinted by its bin size, with a dark outline so the tile grid shows: each
+// pixel's stored value mixed toward the tint (in the stored encoding: it is a tint), 8-bit codes
+// rounded again by the row kernel.
 void resolve_tile_bins(const TileContext& tile, std::size_t bin_size, float scale,
                        Framebuffer& target) {
   resolve_tile(tile, Resolve{scale}, target);
   const glm::vec3 tint = heat(static_cast<float>(bin_size), 10.0f);
+  const int width = tile.x1 - tile.x0;
+  glm::vec4 mixed[kMaxTileSize];
   for (int y = tile.y0; y < tile.y1; ++y) {
-    std::size_t row = static_cast<std::size_t>(y) * target.width();
-    for (int x = tile.x0; x < tile.x1; ++x) {
-      bool outline = x == tile.x0 || y == tile.y0;
-      tint_display(target, row + x, outline ? glm::vec3(0.0f) : tint, outline ? 0.7f : 0.5f);
+    const std::size_t first = static_cast<std::size_t>(y) * target.width() + tile.x0;
+    for (int x = 0; x < width; ++x) {
+      const bool outline = x == 0 || y == tile.y0;
+      const glm::vec3 toward = outline ? glm::vec3(0.0f) : tint;
+      const float amount = outline ? 0.7f : 0.5f;
+      if (target.format() == ColorFormat::rgba8_srgb) {
+        const std::uint8_t* stored = target.rgba8().data() + (first + x) * 4;
+        for (int c = 0; c < 3; ++c) mixed[x][c] = glm::mix(stored[c] / 255.0f, toward[c], amount);
+        mixed[x][3] = static_cast<float>(stored[3]) * shading::kInverse255;  // kept as it is
+      } else {
+        float* out = target.rgba32f().data() + (first + x) * 4;
+        for (int c = 0; c < 3; ++c)
+          out[c] = glm::mix(out[c], shading::srgb_to_linear(toward[c]), amount);
+      }
+    }
+    if (target.format() == ColorFormat::rgba8_srgb) {
+      tile.frame->kernels->round_unorm8_row(mixed, width, target.rgba8().data() + first * 4);
     }
   }
 }

@@ -13,7 +13,9 @@
 #include "core/simd_target.hpp"
 #include "pipeline/geometry/clip.hpp"
 #include "pipeline/geometry/vertex_pass.hpp"
+#include "pipeline/reference.hpp"
 #include "pipeline/setup/setup.hpp"
+#include "support/forced_target.hpp"
 
 namespace facet::test {
 namespace {
@@ -102,7 +104,7 @@ TEST(GeometrySimd, VertexPassMatchesTheScalarCodeOnEveryTarget) {
                                          ? 0u
                                          : pipeline::kNotFinite);
         ASSERT_EQ(pass.codes[j] & ~kScalarScreen, codes) << where;
-        if (pass.codes[j] & kScalarScreen) continue;  // vertex.cpp calls to_screen for these
+        if (pass.codes[j] & kScalarScreen) continue;  // beyond the integers: never read
         const pipeline::ScreenVertex s = pipeline::to_screen(clip, width, height);
         ASSERT_EQ(pass.sx[j], s.x) << where;
         ASSERT_EQ(pass.sy[j], s.y) << where;
@@ -112,6 +114,43 @@ TEST(GeometrySimd, VertexPassMatchesTheScalarCodeOnEveryTarget) {
     }
   }
   hwy::SetSupportedTargetsForTest(0);
+}
+
+// The projection of clipped vertices and line ends (project_to_screen) is to_screen's on every
+// target: positions across and just inside the guard band (as clipping leaves them, up to the
+// largest frame), through snapping ties, in runs of every length.
+TEST(GeometrySimd, ProjectionOfClippedVerticesMatchesTheDefinitionOnEveryTarget) {
+  std::mt19937 rng(20261203);
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f), depth(0.05f, 40.0f);
+  int compared = 0;
+  for (std::int64_t target : simd_targets()) {
+    ForcedTarget forced(target);
+    for (const auto [width, height] : {std::pair{641, 479}, std::pair{8192, 8192}}) {
+      const pipeline::ClipBounds guard = pipeline::guard_band_bounds(width, height);
+      for (int count = 1; count <= 40; ++count) {
+        std::vector<glm::vec4> clip(count);
+        for (glm::vec4& c : clip) {
+          const float w = depth(rng);
+          // Mostly inside the guard band, some on its planes exactly.
+          c = {unit(rng) * guard.gx * w, unit(rng) * guard.gy * w, unit(rng) * w, w};
+          if (rng() % 8 == 0) c.x = (rng() % 2 ? guard.gx : -guard.gx) * w;
+          if (rng() % 8 == 0) c.y = (rng() % 2 ? guard.gy : -guard.gy) * w;
+        }
+        std::vector<pipeline::ScreenVertex> out(count);
+        pipeline::project_to_screen_kernel(chosen_simd_target())(clip.data(), count, width, height,
+                                                                 out.data());
+        for (int i = 0; i < count; ++i) {
+          const pipeline::ScreenVertex s = pipeline::to_screen(clip[i], width, height);
+          ASSERT_EQ(out[i].x, s.x) << hwy::TargetName(target) << " " << width << ", vertex " << i;
+          ASSERT_EQ(out[i].y, s.y) << hwy::TargetName(target) << " " << width << ", vertex " << i;
+          ASSERT_TRUE(same_bits(out[i].z, s.z)) << hwy::TargetName(target);
+          ASSERT_TRUE(same_bits(out[i].inv_w, s.inv_w)) << hwy::TargetName(target);
+          ++compared;
+        }
+      }
+    }
+  }
+  EXPECT_GT(compared, 1000);
 }
 
 }  // namespace

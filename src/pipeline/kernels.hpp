@@ -19,6 +19,7 @@ namespace facet::pipeline {
 
 struct Kernels {
   VertexPassKernel vertex_pass = nullptr;
+  ProjectToScreenKernel project_to_screen = nullptr;
   StoreProjectedKernel store_projected = nullptr;
   StoreOverWKernel store_over_w = nullptr;
   CullKernel cull = nullptr;
@@ -33,6 +34,7 @@ struct Kernels {
 
 inline Kernels kernels_for(SimdTarget target) {
   return {vertex_pass_kernel(target),
+          project_to_screen_kernel(target),
           store_projected_kernel(target),
           store_over_w_kernel(target),
           cull_kernel(target),

@@ -13,8 +13,23 @@
 #include "facet/light.hpp"
 #include "facet/material.hpp"
 #include "facet/mesh.hpp"
+#include "pipeline/frame.hpp"
+#include "pipeline/setup/fixed_point.hpp"
 
 namespace facet::pipeline {
+
+// The perspective divide and viewport transform of a clip position to a screen vertex, snapped
+// to fixed point (setup/fixed_point.hpp's snap): what the vertex stage's kernels compute
+// (geometry/vertex_pass.hpp), written out.
+inline ScreenVertex to_screen(const glm::vec4& clip, int width, int height) {
+  float inv_w = 1.0f / clip.w;
+  float ndc_x = clip.x * inv_w;
+  float ndc_y = clip.y * inv_w;
+  float ndc_z = clip.z * inv_w;
+  float sx = (ndc_x * 0.5f + 0.5f) * static_cast<float>(width);
+  float sy = (0.5f - ndc_y * 0.5f) * static_cast<float>(height);
+  return {snap(sx), snap(sy), ndc_z * 0.5f + 0.5f, inv_w};
+}
 
 struct ReferenceImage {
   int width = 0;

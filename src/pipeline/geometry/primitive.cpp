@@ -68,7 +68,10 @@ struct Assembler {
     glm::vec4 p = a, q = b;
     unsigned planes = outcode(p, guard) | outcode(q, guard);
     if (planes && !clip_segment(p, q, planes, guard)) return;
-    setup_line(out, width, height, p, q, color);
+    const glm::vec4 ends[2] = {p, q};
+    ScreenVertex screen[2];
+    kernels.project_to_screen(ends, 2, width, height, screen);
+    setup_line(out, width, height, screen[0], screen[1], color);
   }
 
   // A triangle culling (cull_batch.hpp) kept.
@@ -98,8 +101,12 @@ struct Assembler {
   // space, inside the guard band, with the setup kernel; returns how many triangles it dropped.
   int set_up_fan(const ClipVertex* v, int count, bool front_facing) {
     const int n = draw.pipeline.varyings;
+    glm::vec4 clip[kMaxClipVertices];
+    ScreenVertex screen[kMaxClipVertices];
+    for (int i = 0; i < count; ++i) clip[i] = v[i].clip;
+    kernels.project_to_screen(clip, count, width, height, screen);
     for (int i = 0; i < count; ++i) {
-      fan_vertices[i].screen = to_screen(v[i].clip, width, height);
+      fan_vertices[i].screen = screen[i];
       for (int k = 0; k < n; ++k)
         fan_over_w[i * n + k] = v[i].varyings[k] * fan_vertices[i].screen.inv_w;
     }

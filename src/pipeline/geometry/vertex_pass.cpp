@@ -20,6 +20,7 @@ namespace hn = hwy::HWY_NAMESPACE;
 using FloatTag = hn::ScalableTag<float>;
 using IntTag = hn::RebindToSigned<FloatTag>;
 using Vec = hn::Vec<FloatTag>;
+constexpr int kMaxLanes = HWY_MAX_BYTES / sizeof(float);
 
 // Vectors of x, y and z of `valid` vec3s from p, zero-padded to a whole vector.
 HWY_INLINE void Load3(FloatTag d, const glm::vec3* p, std::size_t valid, Vec& x, Vec& y, Vec& z) {
@@ -54,16 +55,30 @@ HWY_INLINE hn::Vec<IntTag> Outside(FloatTag d, Vec value, std::uint32_t bits) {
   return hn::IfThenElseZero(hn::RebindMask(di, fails), hn::Set(di, static_cast<int>(bits)));
 }
 
-// snap(): lrint(pixels * 256). For |v| <= 2^22, (v + 1.5 * 2^23) lands in [2^23, 2^24), where
-// floats are the integers, so the addition rounds v to an integer, to nearest even (1.5 * 2^23
-// is even), exactly as lrint does; subtracting it back is exact. Returns the lanes it could not
-// do (beyond 2^22, or NaN), for the scalar code.
+// snap() (setup/fixed_point.hpp): pixels * 256 rounded to the nearest integer, ties to even, as
+// lrint in the default rounding mode. Returns the lanes outside the 32-bit integers (or NaN),
+// which only vertices far beyond the guard band reach.
 HWY_INLINE hn::Mask<FloatTag> Snap(FloatTag d, Vec pixels, std::int32_t* out) {
   const auto v = hn::Mul(pixels, hn::Set(d, static_cast<float>(kSubpixelScale)));
-  const auto magic = hn::Set(d, 12582912.0f);
-  const auto rounded = hn::Sub(hn::Add(v, magic), magic);
-  hn::Store(hn::ConvertTo(IntTag(), rounded), IntTag(), out);
-  return hn::Not(hn::Le(hn::Abs(v), hn::Set(d, 4194304.0f)));
+  hn::Store(hn::ConvertTo(IntTag(), hn::Round(v)), IntTag(), out);
+  return hn::Not(hn::Lt(hn::Abs(v), hn::Set(d, 2147483520.0f)));  // the largest float below 2^31
+}
+
+// to_screen() (setup/setup.hpp) of clip positions (x, y, z, w): the perspective divide and the
+// viewport transform, the snapped screen position to sx, sy, the window depth and 1/w to depth,
+// inv_w. Returns Snap's lanes outside the integers.
+HWY_INLINE hn::Mask<FloatTag> ToScreen(FloatTag d, Vec x, Vec y, Vec z, Vec w, Vec width,
+                                       Vec height, std::int32_t* sx, std::int32_t* sy, float* depth,
+                                       float* inv_w_out) {
+  const auto half = hn::Set(d, 0.5f);
+  const auto inv_w = hn::Div(hn::Set(d, 1.0f), w);
+  const auto ndc_x = hn::Mul(x, inv_w), ndc_y = hn::Mul(y, inv_w), ndc_z = hn::Mul(z, inv_w);
+  const auto screen_x = hn::Mul(hn::Add(hn::Mul(ndc_x, half), half), width);
+  const auto screen_y = hn::Mul(hn::Sub(half, hn::Mul(ndc_y, half)), height);
+  const auto outside = hn::Or(Snap(d, screen_x, sx), Snap(d, screen_y, sy));
+  hn::Store(hn::Add(hn::Mul(ndc_z, half), half), d, depth);
+  hn::Store(inv_w, d, inv_w_out);
+  return outside;
 }
 
 void RunVertexPass(const VertexPassInput& in, std::size_t first, std::size_t count,
@@ -72,7 +87,7 @@ void RunVertexPass(const VertexPassInput& in, std::size_t first, std::size_t cou
   const IntTag di;
   const std::size_t lanes = hn::Lanes(d);
   const glm::mat4& mvp = in.model_view_projection;
-  const auto zero = hn::Zero(d), half = hn::Set(d, 0.5f);
+  const auto zero = hn::Zero(d);
   const auto width = hn::Set(d, static_cast<float>(in.width));
   const auto height = hn::Set(d, static_cast<float>(in.height));
   for (std::size_t j = 0; j < count; j += lanes) {
@@ -117,17 +132,30 @@ void RunVertexPass(const VertexPassInput& in, std::size_t first, std::size_t cou
     codes = hn::Or(codes, hn::IfThenZeroElse(hn::RebindMask(di, finite),
                                              hn::Set(di, static_cast<int>(kNotFinite))));
 
-    // to_screen().
-    const auto inv_w = hn::Div(hn::Set(d, 1.0f), w);
-    const auto ndc_x = hn::Mul(x, inv_w), ndc_y = hn::Mul(y, inv_w), ndc_z = hn::Mul(z, inv_w);
-    const auto sx = hn::Mul(hn::Add(hn::Mul(ndc_x, half), half), width);
-    const auto sy = hn::Mul(hn::Sub(half, hn::Mul(ndc_y, half)), height);
-    const auto scalar = hn::Or(Snap(d, sx, out.sx + j), Snap(d, sy, out.sy + j));
-    codes = hn::Or(codes, hn::IfThenElseZero(hn::RebindMask(di, scalar),
+    const auto outside = ToScreen(d, x, y, z, w, width, height, out.sx + j, out.sy + j,
+                                  out.depth + j, out.inv_w + j);
+    codes = hn::Or(codes, hn::IfThenElseZero(hn::RebindMask(di, outside),
                                              hn::Set(di, static_cast<int>(kScalarScreen))));
-    hn::Store(hn::Add(hn::Mul(ndc_z, half), half), d, out.depth + j);
-    hn::Store(inv_w, d, out.inv_w + j);
     hn::Store(codes, di, reinterpret_cast<std::int32_t*>(out.codes) + j);
+  }
+}
+
+// to_screen() of `count` clip positions: the vertices of clipped triangles and of lines.
+void ProjectToScreen(const glm::vec4* clip, int count, int width, int height, ScreenVertex* out) {
+  const FloatTag d;
+  const int lanes = static_cast<int>(hn::Lanes(d));
+  const auto width_v = hn::Set(d, static_cast<float>(width));
+  const auto height_v = hn::Set(d, static_cast<float>(height));
+  alignas(64) float padded[4 * kMaxLanes];
+  alignas(64) std::int32_t sx[kMaxLanes], sy[kMaxLanes];
+  alignas(64) float depth[kMaxLanes], inv_w[kMaxLanes];
+  for (int j = 0; j < count; j += lanes) {
+    const int valid = std::min(lanes, count - j);
+    std::fill(std::copy_n(&clip[j].x, 4 * valid, padded), padded + 4 * lanes, 1.0f);
+    Vec x, y, z, w;
+    hn::LoadInterleaved4(d, padded, x, y, z, w);
+    ToScreen(d, x, y, z, w, width_v, height_v, sx, sy, depth, inv_w);
+    for (int k = 0; k < valid; ++k) out[j + k] = {sx[k], sy[k], depth[k], inv_w[k]};
   }
 }
 
@@ -138,9 +166,14 @@ HWY_AFTER_NAMESPACE();
 namespace facet::pipeline {
 
 HWY_EXPORT(RunVertexPass);
+HWY_EXPORT(ProjectToScreen);
 
 VertexPassKernel vertex_pass_kernel(SimdTarget target) {
   return HWY_DISPATCH_TABLE(RunVertexPass)[target];
+}
+
+ProjectToScreenKernel project_to_screen_kernel(SimdTarget target) {
+  return HWY_DISPATCH_TABLE(ProjectToScreen)[target];
 }
 
 }  // namespace facet::pipeline

@@ -26,10 +26,10 @@ struct VertexPassInput {
   ClipBounds frustum, guard;
 };
 
-// ProjectedVertex::codes bit set by the pass when the lane's screen position is outside what
-// its rounding trick handles: only vertices beyond the guard band, whose screen position
-// nothing reads (their triangles are clipped, and the clipped vertices projected anew), so it
-// is left as the target computed it. Stored positions without the bit are to_screen's.
+// ProjectedVertex::codes bit set by the pass when the lane's screen position is outside the
+// 32-bit integers: only vertices far beyond the guard band, whose screen position nothing reads
+// (their triangles are clipped, and the clipped vertices projected anew), so it is left as the
+// target computed it. Stored positions without the bit are to_screen's.
 inline constexpr std::uint32_t kScalarScreen = 1u << 17;
 
 // Results for vertices [first, first + count), structure of arrays indexed by vertex - first.
@@ -48,5 +48,11 @@ struct VertexPass {
 using VertexPassKernel = void (*)(const VertexPassInput& in, std::size_t first, std::size_t count,
                                   VertexPass& out);
 VertexPassKernel vertex_pass_kernel(SimdTarget target);
+
+// out[i] = to_screen(clip[i], width, height) for i < count: what the pass computes for a mesh's
+// vertices, for the vertices clipping makes and the ends of lines.
+using ProjectToScreenKernel = void (*)(const glm::vec4* clip, int count, int width, int height,
+                                       ScreenVertex* out);
+ProjectToScreenKernel project_to_screen_kernel(SimdTarget target);
 
 }  // namespace facet::pipeline

@@ -12,10 +12,8 @@ Plane make_plane(const float x[3], const float y[3], const float value[3]) {
   return PlaneSolver(x, y).plane(value);
 }
 
-bool setup_line(PrimitiveSink& out, int width, int height, const glm::vec4& a, const glm::vec4& b,
-                const glm::vec4& color) {
-  ScreenVertex s0 = to_screen(a, width, height);
-  ScreenVertex s1 = to_screen(b, width, height);
+bool setup_line(PrimitiveSink& out, int width, int height, const ScreenVertex& s0,
+                const ScreenVertex& s1, const glm::vec4& color) {
   if (s0.x == s1.x && s0.y == s1.y) return false;
   SetupLine l;
   l.x0 = s0.x, l.y0 = s0.y, l.x1 = s1.x, l.y1 = s1.y;

@@ -15,17 +15,6 @@
 
 namespace facet::pipeline {
 
-// Perspective divide and viewport transform. Inline: the vertex stage runs it once per vertex.
-inline ScreenVertex to_screen(const glm::vec4& clip, int width, int height) {
-  float inv_w = 1.0f / clip.w;
-  float ndc_x = clip.x * inv_w;
-  float ndc_y = clip.y * inv_w;
-  float ndc_z = clip.z * inv_w;
-  float sx = (ndc_x * 0.5f + 0.5f) * static_cast<float>(width);
-  float sy = (0.5f - ndc_y * 0.5f) * static_cast<float>(height);
-  return {snap(sx), snap(sy), ndc_z * 0.5f + 0.5f, inv_w};
-}
-
 // Signed doubled area in fixed-point units. With y down, front faces (counter-clockwise in
 // OpenGL's y-up NDC) have negative area.
 inline std::int64_t signed_area(const ScreenVertex& v0, const ScreenVertex& v1,
@@ -129,9 +118,10 @@ inline constexpr int kProbedBoxSide = 4;
 // batch kernel's probe then computes in 32 bits (setup_batch.cpp).
 inline constexpr std::int32_t kProbedSpan = 1 << 14;
 
-// Sets up one clipped segment; returns true if it touches the framebuffer.
-bool setup_line(PrimitiveSink& out, int width, int height, const glm::vec4& a, const glm::vec4& b,
-                const glm::vec4& color);
+// Sets up one clipped segment between screen vertices s0 and s1 (the vertex stage's projection,
+// ProjectToScreenKernel); returns true if it touches the framebuffer.
+bool setup_line(PrimitiveSink& out, int width, int height, const ScreenVertex& s0,
+                const ScreenVertex& s1, const glm::vec4& color);
 
 // The pixels a point covers along one axis: those whose centre lies in the half-open span
 // [centre - half, centre + half) (fixed point), as [first, last]; first > last when none.

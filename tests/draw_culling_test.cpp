@@ -8,6 +8,7 @@
 #include <limits>
 #include <random>
 
+#include "pipeline/reference.hpp"
 #include "support/render_helpers.hpp"
 
 namespace facet::test {

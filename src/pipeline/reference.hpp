@@ -14,9 +14,24 @@
 #include "facet/material.hpp"
 #include "facet/mesh.hpp"
 #include "pipeline/frame.hpp"
+#include "pipeline/geometry/clip.hpp"
 #include "pipeline/setup/fixed_point.hpp"
 
 namespace facet::pipeline {
+
+// Bit set of the planes a clip-space position is outside of (a NaN coordinate fails every
+// comparison, so it counts as outside): what the vertex pass computes for every vertex
+// (geometry/vertex_pass.hpp), the same tests as clip.cpp's distance() >= 0, written out.
+inline unsigned outcode(const glm::vec4& c, const ClipBounds& b) {
+  unsigned code = 0;
+  if (!(c.z + c.w >= 0.0f)) code |= kClipNear;
+  if (!(c.w - c.z >= 0.0f)) code |= kClipFar;
+  if (!(c.x + b.gx * c.w >= 0.0f)) code |= kClipLeft;
+  if (!(b.gx * c.w - c.x >= 0.0f)) code |= kClipRight;
+  if (!(c.y + b.gy * c.w >= 0.0f)) code |= kClipBottom;
+  if (!(b.gy * c.w - c.y >= 0.0f)) code |= kClipTop;
+  return code;
+}
 
 // The perspective divide and viewport transform of a clip position to a screen vertex, snapped
 // to fixed point (setup/fixed_point.hpp's snap): what the vertex stage's kernels compute

@@ -37,20 +37,6 @@ struct ClipBounds {
 
 ClipBounds guard_band_bounds(int width, int height);
 
-// Bit set of the planes a clip-space position is outside of. The same tests as clip.cpp's
-// distance() >= 0, written out and inline: this runs for every vertex. A NaN coordinate fails
-// every comparison, so it counts as outside.
-inline unsigned outcode(const glm::vec4& c, const ClipBounds& b) {
-  unsigned code = 0;
-  if (!(c.z + c.w >= 0.0f)) code |= kClipNear;
-  if (!(c.w - c.z >= 0.0f)) code |= kClipFar;
-  if (!(c.x + b.gx * c.w >= 0.0f)) code |= kClipLeft;
-  if (!(b.gx * c.w - c.x >= 0.0f)) code |= kClipRight;
-  if (!(c.y + b.gy * c.w >= 0.0f)) code |= kClipBottom;
-  if (!(b.gy * c.w - c.y >= 0.0f)) code |= kClipTop;
-  return code;
-}
-
 // Clips the polygon against each plane in `planes`; interpolates `varyings` floats.
 // Leaves count < 3 when nothing remains.
 void clip_polygon(ClipPolygon& polygon, unsigned planes, const ClipBounds& bounds, int varyings);

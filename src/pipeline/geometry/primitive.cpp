@@ -64,9 +64,13 @@ struct Assembler {
     return glm::vec3(draw.uniforms.model * glm::vec4((p[i0] + p[i1] + p[i2]) / 3.0f, 1.0f));
   }
 
-  void edge(const glm::vec4& a, const glm::vec4& b, const glm::vec4& color) {
-    glm::vec4 p = a, q = b;
-    unsigned planes = outcode(p, guard) | outcode(q, guard);
+  // The segment between vertices i0 and i1, clipped to the guard band (the planes the vertex
+  // pass found either end outside of), projected and set up.
+  void edge(std::uint32_t i0, std::uint32_t i1, const glm::vec4& color) {
+    glm::vec4 p = vertices.clip[i0].clip, q = vertices.clip[i1].clip;
+    const unsigned planes =
+        (vertices.projected[i0].codes | vertices.projected[i1].codes) >> kGuardCodeShift &
+        kFrustumCodes;
     if (planes && !clip_segment(p, q, planes, guard)) return;
     const glm::vec4 ends[2] = {p, q};
     ScreenVertex screen[2];
@@ -129,9 +133,8 @@ struct Assembler {
     const bool front_facing = a.front_facing;
     const DrawPipeline& pipe = draw.pipeline;
     if (pipe.draws_edges) {
-      const ClipVertex* in[3] = {&vertices.clip[i0], &vertices.clip[i1], &vertices.clip[i2]};
-      for (int i = 0; i < 3; ++i)
-        edge(in[i]->clip, in[(i + 1) % 3]->clip, draw.material.wire_color);
+      const std::uint32_t corner[3] = {i0, i1, i2};
+      for (int i = 0; i < 3; ++i) edge(corner[i], corner[(i + 1) % 3], draw.material.wire_color);
     }
     if (!pipe.fills_triangles) return;
 
@@ -200,7 +203,7 @@ struct Assembler {
       ++counts.culled;
       return;
     }
-    edge(vertices.clip[i0].clip, vertices.clip[i1].clip, draw.material.base_color);
+    edge(i0, i1, draw.material.base_color);
   }
 
   // A point is kept whole or dropped by its centre: one outside the frustum (or not finite) is

@@ -64,7 +64,7 @@ HWY_INLINE hn::Mask<FloatTag> Snap(FloatTag d, Vec pixels, std::int32_t* out) {
   return hn::Not(hn::Lt(hn::Abs(v), hn::Set(d, 2147483520.0f)));  // the largest float below 2^31
 }
 
-// to_screen() (setup/setup.hpp) of clip positions (x, y, z, w): the perspective divide and the
+// to_screen() (its definition: pipeline/reference.hpp) of clip positions (x, y, z, w): the perspective divide and the
 // viewport transform, the snapped screen position to sx, sy, the window depth and 1/w to depth,
 // inv_w. Returns Snap's lanes outside the integers.
 HWY_INLINE hn::Mask<FloatTag> ToScreen(FloatTag d, Vec x, Vec y, Vec z, Vec w, Vec width,

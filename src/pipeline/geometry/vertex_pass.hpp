@@ -33,9 +33,9 @@ struct VertexPassInput {
 inline constexpr std::uint32_t kScalarScreen = 1u << 17;
 
 // Results for vertices [first, first + count), structure of arrays indexed by vertex - first.
-// Each value is computed with the scalar code's operations in its order (glm's for the
-// matrices, outcode() and to_screen() for the rest), lane by lane, so it is bit-identical on
-// every target.
+// Each value is computed with the same operations in the same order on every target (glm's for
+// the matrices; outcode() and to_screen() for the rest, whose definitions are written out in
+// pipeline/reference.hpp for the tests), so it is bit-identical on every target.
 struct VertexPass {
   alignas(64) float x[kVertexPass], y[kVertexPass], z[kVertexPass], w[kVertexPass];  // clip
   alignas(64) float nx[kVertexPass], ny[kVertexPass], nz[kVertexPass];  // unit world normal

@@ -118,7 +118,7 @@ TEST(GeometrySimd, VertexPassMatchesTheScalarCodeOnEveryTarget) {
 
 // The projection of clipped vertices and line ends (project_to_screen) is to_screen's on every
 // target: positions across and just inside the guard band (as clipping leaves them, up to the
-// largest frame), through snapping ties, in runs of every length.
+// largest frame) and some beyond it, in runs of every length.
 TEST(GeometrySimd, ProjectionOfClippedVerticesMatchesTheDefinitionOnEveryTarget) {
   std::mt19937 rng(20261203);
   std::uniform_real_distribution<float> unit(-1.0f, 1.0f), depth(0.05f, 40.0f);
@@ -135,6 +135,7 @@ TEST(GeometrySimd, ProjectionOfClippedVerticesMatchesTheDefinitionOnEveryTarget)
           c = {unit(rng) * guard.gx * w, unit(rng) * guard.gy * w, unit(rng) * w, w};
           if (rng() % 8 == 0) c.x = (rng() % 2 ? guard.gx : -guard.gx) * w;
           if (rng() % 8 == 0) c.y = (rng() % 2 ? guard.gy : -guard.gy) * w;
+          if (rng() % 16 == 0) c.x *= 3.0f;  // beyond the band: past 2^22 sub-pixels at 8192
         }
         std::vector<pipeline::ScreenVertex> out(count);
         pipeline::project_to_screen_kernel(chosen_simd_target())(clip.data(), count, width, height,

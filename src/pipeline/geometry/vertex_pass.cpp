@@ -56,17 +56,24 @@ HWY_INLINE hn::Vec<IntTag> Outside(FloatTag d, Vec value, std::uint32_t bits) {
 }
 
 // snap() (setup/fixed_point.hpp): pixels * 256 rounded to the nearest integer, ties to even, as
-// lrint in the default rounding mode. Returns the lanes outside the 32-bit integers (or NaN),
-// which only vertices far beyond the guard band reach.
+// lrint in the default rounding mode. For |v| <= 2^22, (v + 1.5 * 2^23) lands in [2^23, 2^24),
+// where floats are the integers, so the addition rounds v so (1.5 * 2^23 is even) and
+// subtracting it back is exact: cheaper than Round, which takes the rare lanes beyond (near
+// the guard band of the largest frames). Returns the lanes outside the 32-bit integers (or
+// NaN), which only vertices far beyond the guard band reach.
 HWY_INLINE hn::Mask<FloatTag> Snap(FloatTag d, Vec pixels, std::int32_t* out) {
   const auto v = hn::Mul(pixels, hn::Set(d, static_cast<float>(kSubpixelScale)));
-  hn::Store(hn::ConvertTo(IntTag(), hn::Round(v)), IntTag(), out);
+  const auto magic = hn::Set(d, 12582912.0f);
+  auto rounded = hn::Sub(hn::Add(v, magic), magic);
+  const auto beyond = hn::Not(hn::Le(hn::Abs(v), hn::Set(d, 4194304.0f)));
+  if (!hn::AllFalse(d, beyond)) rounded = hn::IfThenElse(beyond, hn::Round(v), rounded);
+  hn::Store(hn::ConvertTo(IntTag(), rounded), IntTag(), out);
   return hn::Not(hn::Lt(hn::Abs(v), hn::Set(d, 2147483520.0f)));  // the largest float below 2^31
 }
 
-// to_screen() (its definition: pipeline/reference.hpp) of clip positions (x, y, z, w): the perspective divide and the
-// viewport transform, the snapped screen position to sx, sy, the window depth and 1/w to depth,
-// inv_w. Returns Snap's lanes outside the integers.
+// to_screen() (its definition: pipeline/reference.hpp) of clip positions (x, y, z, w): the
+// perspective divide and the viewport transform, the snapped screen position to sx, sy, the window
+// depth and 1/w to depth, inv_w. Returns Snap's lanes outside the integers.
 HWY_INLINE hn::Mask<FloatTag> ToScreen(FloatTag d, Vec x, Vec y, Vec z, Vec w, Vec width,
                                        Vec height, std::int32_t* sx, std::int32_t* sy, float* depth,
                                        float* inv_w_out) {

@@ -4,11 +4,13 @@
 
 #include <atomic>
 #include <cstdlib>
+#include <filesystem>
 #include <new>
 
 #include "facet/render_texture.hpp"
 #include "facet/scene.hpp"
 #include "scenes/bench_scenes.hpp"
+#include "support/required_package.hpp"
 
 // Sanitizer runtimes replace operator new themselves (and check that what they allocate is
 // freed by their own delete): sanitizer builds leave this file out (tests/CMakeLists.txt).
@@ -38,7 +40,7 @@ long allocations_in_frames(bench::BenchScene& scene, Renderer& renderer, Framebu
                            int frames) {
   long before = g_allocations.load();
   for (int i = 0; i < frames; ++i) {
-    scene.record(renderer, 0.01 * i, static_cast<float>(fb.width()) / fb.height());
+    scene.record(renderer, 0.01 * i, fb.width(), fb.height());
     renderer.finish(fb);
   }
   return g_allocations.load() - before;
@@ -83,13 +85,26 @@ TEST(Allocations, SteadyStateFramesIntoARenderTextureAllocateNothing) {
   auto frames = [&](int count) {
     const long before = g_allocations.load();
     for (int i = 0; i < count; ++i) {
-      scene->record(renderer, 0.01 * i, 160.0f / 90.0f);
+      scene->record(renderer, 0.01 * i, 160, 90);
       renderer.finish(target);
     }
     return g_allocations.load() - before;
   };
   frames(5);
   EXPECT_EQ(frames(30), 0);
+}
+
+// glmark2's shadow renders the light's depth map before each frame: the map is kept too.
+TEST(Allocations, SteadyStateShadowBenchFramesAllocateNothing) {
+  FACET_REQUIRE_PACKAGE(std::filesystem::is_directory("/usr/share/glmark2/models"),
+                        "/usr/share/glmark2 missing (Debian package glmark2-data)");
+  auto scene = bench::make_bench_scene("shadow");
+  RenderSettings settings;
+  settings.threads = 2;
+  Renderer renderer(settings);
+  Framebuffer fb(320, 180);
+  allocations_in_frames(*scene, renderer, fb, 5);
+  EXPECT_EQ(allocations_in_frames(*scene, renderer, fb, 30), 0);
 }
 
 TEST(Allocations, TheCounterSeesAllocations) {

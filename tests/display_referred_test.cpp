@@ -124,7 +124,7 @@ TEST(DisplayReferred, Glmark2ScenesGiveTheEncodedBytes) {
     const auto scene = bench::make_glmark2_scene(name);
     ASSERT_NE(scene, nullptr) << name;
     const Record record = [&](Renderer& renderer) {
-      scene->record(renderer, 0.7, static_cast<float>(kWidth) / kHeight);
+      scene->record(renderer, 0.7, kWidth, kHeight);
     };
     EXPECT_TRUE(expect_same_bytes(record, with_clear(scene->clear_color()), name))
         << name << " did not take the display-referred path";

@@ -84,12 +84,11 @@ SceneResult run_scene(const std::string& name, bench::BenchScene& scene, const B
   Renderer renderer(bench_settings(o, scene, size));
   // Color only, as glmark2's frames are: both depth-test, neither reads the depth back.
   Framebuffer framebuffer(size.width, size.height, ColorFormat::rgba8_srgb, DepthImage::none);
-  const float aspect = static_cast<float>(size.width) / size.height;
   std::vector<double> geometry, binning, raster, resolve;
   std::vector<double> total = time_frames(
       o,
       [&](double t) {
-        scene.record(renderer, t, aspect);
+        scene.record(renderer, t, size.width, size.height);
         renderer.finish(framebuffer);
       },
       [&] {

@@ -35,9 +35,10 @@ std::shared_ptr<const Mesh> load_first_mesh(const std::string& path) {
 // checks each once, as a GPU driver checks the vertex buffers glmark2 draws from.
 class SceneBench : public BenchScene {
  public:
-  void record(Renderer& renderer, double t, float aspect) override {
+  void record(Renderer& renderer, double t, int width, int height) override {
     Camera camera;
-    const Scene* frame = scene_at(t, aspect, camera);
+    const Scene* frame =
+        scene_at(t, static_cast<float>(width) / static_cast<float>(height), camera);
     renderer.begin_frame(camera, frame->lighting);
     draw_scene(renderer, *frame);
   }

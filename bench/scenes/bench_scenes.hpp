@@ -18,9 +18,10 @@ namespace facet::bench {
 class BenchScene {
  public:
   virtual ~BenchScene() = default;
-  // Records the frame at time t seconds (animations follow the clock) for a target of the
-  // given aspect: begin_frame + draws. The renderer's finish() is the caller's.
-  virtual void record(Renderer& renderer, double t, float aspect) = 0;
+  // Records the frame at time t seconds (animations follow the clock) for a width x height
+  // target: begin_frame + draws (and any frames of the scene's own render targets before them).
+  // The renderer's finish() of that last frame is the caller's.
+  virtual void record(Renderer& renderer, double t, int width, int height) = 0;
   // The same frame as a Scene seen by `camera`, for renderers that draw whole scenes (the
   // OpenGL twin: facet bench --backend gl); nullptr for a scene that records its own draws with
   // shading only facet has (the glmark2 equivalents). The scene lives as long as this object.

@@ -11,6 +11,8 @@
 #include <hwy/foreach_target.h>  // must come before highway.h
 #include <hwy/highway.h>
 
+#include <algorithm>
+
 #include "core/color.hpp"
 #include "scenes/glmark2_shading.hpp"
 #include "shading/batch_math-inl.h"
@@ -47,6 +49,35 @@ HWY_INLINE Vec3V BumpLight(const Vec3V& n) {
   return {gray, gray, gray};
 }
 
+// shadow's ground (ShadowGroundShading), the whole batch: s = ShadowCoord / ShadowCoord.w per
+// pixel, the light's depth at every s.xy in one lookup of the frame's sampler (NEAREST and
+// clamped, as the map's sampler says), then grey 0.15 where that depth is nearer than
+// s.z + bias, else 0.3.
+HWY_INLINE void ShadowGround(const DrawUniforms& u, const ShadeInput& in, DisplayCodes codes) {
+  const BatchTag d;
+  const int lanes = static_cast<int>(hn::Lanes(d));
+  alignas(64) float s[3][shading::kShadeBatch], lod[shading::kShadeBatch] = {};
+  alignas(64) float texel[shading::kShadeBatch][4];
+  for (int j = 0; j < in.count; j += lanes) {
+    const BatchV inverse_w = hn::Div(hn::Set(d, 1.0f), hn::Load(d, in.v[3] + j));
+    for (int c = 0; c < 3; ++c) {
+      hn::Store(hn::Mul(hn::Load(d, in.v[c] + j), inverse_w), d, s[c] + j);
+    }
+  }
+  const TextureMap& map = u.material->base_color_map;
+  u.frame->kernels->sample_at(*map.texture, map.sampler, s[0], s[1], lod, in.count, texel);
+  const int padded = (in.count + lanes - 1) / lanes * lanes;
+  std::fill(&texel[0][0] + 4 * in.count, &texel[0][0] + 4 * padded, 0.0f);  // scratch lanes
+  for (int j = 0; j < in.count; j += lanes) {
+    BatchV t[4];
+    hn::LoadInterleaved4(d, &texel[j][0], t[0], t[1], t[2], t[3]);
+    const BatchV s_z = hn::Add(hn::Load(d, s[2] + j), hn::Set(d, ShadowGroundShading::kDepthBias));
+    const auto shadowed = hn::And(hn::Gt(hn::Load(d, in.v[3] + j), hn::Zero(d)), hn::Lt(t[0], s_z));
+    const BatchV gray = hn::IfThenElse(shadowed, hn::Set(d, 0.15f), hn::Set(d, 0.3f));
+    StoreDisplayCodes({gray, gray, gray}, j, codes);
+  }
+}
+
 void ShadeGlmark2Batch(BatchShader shader, const DrawUniforms& u, const ShadeInput& in,
                        float (*rgba)[4]) {
   using Shader = BatchShader;
@@ -55,7 +86,8 @@ void ShadeGlmark2Batch(BatchShader shader, const DrawUniforms& u, const ShadeInp
   // Every shader's colour is shown as glmark2's RGBA8 buffer stores it, an 8-bit code per
   // channel: the codes are stored per vector, then decoded once for the batch.
   alignas(64) std::int32_t codes[3][shading::kShadeBatch];
-  for (int j = 0; j < in.count; j += lanes) {
+  if (shader == Shader::shadow_ground) ShadowGround(u, in, codes);  // its lookups all at once
+  for (int j = 0; shader != Shader::shadow_ground && j < in.count; j += lanes) {
     switch (shader) {
       case Shader::basic_light: {
         const Vec3V light = Load3(in.v, 0, j);
@@ -151,6 +183,8 @@ void ShadeGlmark2Batch(BatchShader shader, const DrawUniforms& u, const ShadeInp
         StoreDisplayCodes(BumpLight(Normalize({turned[0], turned[1], turned[2]})), j, codes);
         break;
       }
+      case Shader::shadow_ground:  // shaded above
+        break;
     }
   }
   DecodeDisplayCodes(codes, in.count, u.frame->display_referred, in.rgba_row_stride, rgba);

@@ -1,12 +1,11 @@
-// The glmark2-equivalent benchmark scenes: glmark2 2023.01's benchmarks 1-9 of
+// The glmark2-equivalent benchmark scenes: glmark2 2023.01's benchmarks 1-10 of
 // GLMARK2_SCENES.md (shared bench folder) with the same models, textures, projection, model
 // transforms, animation and shading formulas, so that facet's frame time is measured on the
 // same work as glmark2 on llvmpipe. tests/glmark2_equivalence_test.cpp checks frame 0 against
 // glmark2's own frames.
 //
-// Not here yet: `shadow` and `refract` (§2.6, §2.7). Both render to a texture every frame
-// (a 2W x 2H depth map; refract also a colour target and its mip chain), and facet has no
-// render-to-texture yet. They come once it does.
+// Not here yet: `refract` (§2.7), which also needs a colour target's mip chain every frame.
+#include <algorithm>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <memory>
@@ -14,6 +13,7 @@
 #include <utility>
 
 #include "facet/error.hpp"
+#include "facet/render_texture.hpp"
 #include "facet/texture.hpp"
 #include "pipeline/record/custom_draw.hpp"
 #include "pipeline/record/pipeline_table.hpp"
@@ -61,6 +61,13 @@ View fit_view(const Glmark2Model& model, float distance_offset) {
 // The canvas default projection (bump): perspective(60°, W/H, 1, 1024), model at z = -3.5.
 View canvas_view() { return {60.0f, 1.0f, 1024.0f, glm::vec3(0.0f, 0.0f, -3.5f)}; }
 
+// The camera at the origin looking down -Z, the identity view: world space == glmark2's eye
+// space, and the projection is gluPerspective (§1.3), as glmark2's.
+Camera eye_camera(const View& view, float aspect) {
+  return Camera::look_at({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, view.fov_y_degrees, aspect,
+                         view.near_plane, view.far_plane);
+}
+
 // One glmark2 benchmark: one mesh, one draw per frame with the scene's own shading model.
 class Glmark2Scene : public BenchScene {
  public:
@@ -76,12 +83,9 @@ class Glmark2Scene : public BenchScene {
     if (lighting_.fog.mode != FogMode::none) throw Error("glmark2 scenes: the shaders have no fog");
   }
 
-  void record(Renderer& renderer, double t, float aspect) override {
-    // The camera at the origin looking down -Z is the identity view: world space == glmark2's
-    // eye space, and the projection is gluPerspective (§1.3), as glmark2's.
-    renderer.begin_frame(Camera::look_at({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, view_.fov_y_degrees,
-                                         aspect, view_.near_plane, view_.far_plane),
-                         lighting_);
+  void record(Renderer& renderer, double t, int width, int height) override {
+    const float aspect = static_cast<float>(width) / static_cast<float>(height);
+    renderer.begin_frame(eye_camera(view_, aspect), lighting_);
     const float theta = static_cast<float>(glm::radians(kDegreesPerSecond * t));
     // Right-multiplied, as libmatrix does: the rightmost rotation touches the vertex first.
     glm::mat4 model_view = glm::translate(glm::mat4(1.0f), view_.translation);
@@ -183,13 +187,107 @@ std::unique_ptr<BenchScene> bump_high_poly_scene() {
                                         canvas_view(), Rotation::y, std::move(material), pipeline);
 }
 
+// §2.6 shadow, per frame: the horse's depth seen from the light (0, 3, 2) into a 2W x 2H
+// depth-only target, then the ground quad shaded by that depth map (ShadowGroundShading) and the
+// horse lit from the light's direction.
+class ShadowScene : public BenchScene {
+ public:
+  ShadowScene(Mesh horse, const View& view)
+      : horse_(std::make_shared<const Mesh>(std::move(horse))),
+        ground_(ground_quad()),
+        view_(view),
+        horse_material_(material_with(kWhite)) {
+    lighting_.lights.clear();  // the shading models carry glmark2's light themselves
+    if (lighting_.fog.mode != FogMode::none) throw Error("glmark2 scenes: the shaders have no fog");
+    ground_material_.base_color_map.sampler = {Filter::nearest, Wrap::clamp_to_edge,
+                                               Wrap::clamp_to_edge};
+    horse_pipeline_ = pipeline::make_pipeline<glmark2::ShadowHorseShading>();
+    ground_pipeline_ = pipeline::make_pipeline<glmark2::ShadowGroundShading>();
+  }
+
+  void record(Renderer& renderer, double t, int width, int height) override {
+    const float aspect = static_cast<float>(width) / static_cast<float>(height);
+    ensure_depth_map(width, height);
+    const float theta = static_cast<float>(glm::radians(kDegreesPerSecond * t));
+    const glm::mat4 turn = glm::rotate(glm::mat4(1.0f), theta, {0, 1, 0});
+    // 1. The light's view: P . lookAt((0, 3, 2) -> 0, up y) . Ry(θ), the horse not moved away.
+    renderer.begin_frame(
+        Camera::look_at(glmark2::kShadowLightPosition, {0, 0, 0}, {0, 1, 0}, view_.fov_y_degrees,
+                        aspect, view_.near_plane, view_.far_plane),
+        lighting_);
+    pipeline::draw_with_pipeline(renderer, horse_, horse_material_, turn, horse_pipeline_);
+    renderer.finish(*depth_map_);
+    // 2. The ground: MV_g = T(0, -0.8, P[2][3] - 0.5) . Rx(-85°) . S(2), P[2][3] = 2 f n / (n - f).
+    renderer.begin_frame(eye_camera(view_, aspect), lighting_);
+    const float p23 =
+        2.0f * view_.far_plane * view_.near_plane / (view_.near_plane - view_.far_plane);
+    glm::mat4 ground = glm::translate(glm::mat4(1.0f), {0.0f, -0.8f, p23 - 0.5f});
+    ground = glm::rotate(ground, glm::radians(-85.0f), {1, 0, 0});
+    ground = glm::scale(ground, glm::vec3(2.0f));
+    pipeline::draw_with_pipeline(renderer, ground_, ground_material_, ground, ground_pipeline_);
+    // 3. The horse: T . Ry(θ).
+    pipeline::draw_with_pipeline(renderer, horse_, horse_material_,
+                                 glm::translate(glm::mat4(1.0f), view_.translation) * turn,
+                                 horse_pipeline_);
+  }
+
+ private:
+  // glmark2's quad: a 4-vertex strip (-1, -1), (1, -1), (-1, 1), (1, 1) at z = 0, as two
+  // counter-clockwise triangles.
+  static Mesh ground_quad() {
+    Mesh quad;
+    quad.positions = {{-1, -1, 0}, {1, -1, 0}, {-1, 1, 0}, {1, 1, 0}};
+    quad.indices = {0, 1, 2, 2, 1, 3};
+    return quad;
+  }
+
+  // The depth map is 2W x 2H of the frame's target (GL clamps a side to GL_MAX_TEXTURE_SIZE,
+  // 16384 on llvmpipe; facet's limit, Framebuffer::kMaxSize, is lower, reached above 4K).
+  // Made again only when the target's size changes.
+  void ensure_depth_map(int width, int height) {
+    const int map_width = std::min(2 * width, Framebuffer::kMaxSize);
+    const int map_height = std::min(2 * height, Framebuffer::kMaxSize);
+    if (depth_map_ && depth_map_->width() == map_width && depth_map_->height() == map_height) {
+      return;
+    }
+    depth_map_ = std::make_unique<RenderTexture>(
+        map_width, map_height, RenderTextureOptions{.depth = true, .color = false});
+    ground_material_.base_color_map.texture = depth_map_->depth_texture();
+  }
+
+  std::shared_ptr<const Mesh> horse_;  // does not change: checked once by the renderer
+  // Drawn by reference, checked in every frame (4 vertices): the renderer forgets a shared mesh
+  // that the frame before did not draw, and the light's frame between two of ours does not.
+  Mesh ground_;
+  View view_;
+  Material horse_material_, ground_material_;
+  pipeline::DrawPipeline horse_pipeline_, ground_pipeline_;
+  Lighting lighting_;
+  std::unique_ptr<RenderTexture> depth_map_;
+};
+
+// §2.6: the horse with the fit camera, but far 50.
+std::unique_ptr<BenchScene> shadow_scene() {
+  Glmark2Model model = load_3ds(kModels + "horse.3ds");
+  View view = fit_view(model, 2.0f);
+  view.far_plane = 50.0f;
+  return std::make_unique<ShadowScene>(glmark2_mesh(model, {.normals = true, .deindex = kDeindex}),
+                                       view);
+}
+
 }  // namespace
 
 std::vector<std::string> glmark2_scene_names() {
-  return {
-      "build:use-vbo=true",      "texture:texture-filter=linear",   "texture:texture-filter=mipmap",
-      "shading:shading=gouraud", "shading:shading=blinn-phong-inf", "shading:shading=phong",
-      "shading:shading=cel",     "bump:bump-render=normals",        "bump:bump-render=high-poly"};
+  return {"build:use-vbo=true",
+          "texture:texture-filter=linear",
+          "texture:texture-filter=mipmap",
+          "shading:shading=gouraud",
+          "shading:shading=blinn-phong-inf",
+          "shading:shading=phong",
+          "shading:shading=cel",
+          "bump:bump-render=normals",
+          "bump:bump-render=high-poly",
+          "shadow"};
 }
 
 std::unique_ptr<BenchScene> make_glmark2_scene(const std::string& name) {
@@ -204,6 +302,7 @@ std::unique_ptr<BenchScene> make_glmark2_scene(const std::string& name) {
   if (name == "shading:shading=cel") return shading_scene<glmark2::CelShading>();
   if (name == "bump:bump-render=normals") return bump_normals_scene();
   if (name == "bump:bump-render=high-poly") return bump_high_poly_scene();
+  if (name == "shadow") return shadow_scene();
   return nullptr;
 }
 

@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "scenes/glmark2_batch.hpp"
 #include "shading/models.hpp"
@@ -128,5 +129,45 @@ struct BumpNormalsShading : BatchForm<BatchShader::bump_normals>, shading::Displ
 struct BumpPolyShading : InterpolatedNormal,
                          BatchForm<BatchShader::bump_poly>,
                          shading::DisplayReferred {};
+
+// shadow's light (0, 3, 2), a direction here as in light-basic: normalize(0, 3, 2).
+inline const glm::vec3 kShadowLightDirection{0.0f, 0.83205029f, 0.55470020f};
+inline const glm::vec3 kShadowLightPosition{0.0f, 3.0f, 2.0f};
+
+// light-basic.vert/.frag with shadow's light (the horse of shadow): max(N.L, 0) x
+// MaterialDiffuse per vertex, L = normalize(0, 3, 2).
+struct ShadowHorseShading : BatchForm<BatchShader::basic_light>, shading::DisplayReferred {
+  static constexpr int kVaryings = 3;
+  static constexpr int kNormalSlot = -1;
+  static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
+    const float diffuse = std::max(glm::dot(in.normal, kShadowLightDirection), 0.0f);
+    shading::store(out, diffuse * glm::vec3(u.material->base_color));
+  }
+};
+
+// shadow.vert/.frag (the ground of shadow): ShadowCoord = B P lookAt((0, 3, 2) -> 0, up y)
+// (x, y, 0, 1) of the quad's UNTRANSFORMED vertex (neither the ground's ModelView nor the
+// horse's turn is in it: glmark2 projects the depth map as if the quad stood upright at z = 0,
+// GLMARK2_SCENES.md §2.6). P is the draw's own projection, u.model_view_projection x
+// inverse(u.model), so the vertex stage needs no other uniform. Per pixel, with
+// s = ShadowCoord / ShadowCoord.w and d the light's window depth at s.xy (the material's base
+// colour map, the light pass's depth texture, sampled NEAREST and clamped):
+//   rgb = 0.3 x (0.5 if ShadowCoord.w > 0 and d < s.z + 0.1505, else 1), grey.
+// Facet's window depth is GL's, z_ndc x 0.5 + 0.5 (pipeline/setup/setup.hpp), and B maps z the
+// same way, so d and s.z are on one scale, as in glmark2. The draw must have the map.
+struct ShadowGroundShading : BatchForm<BatchShader::shadow_ground>, shading::DisplayReferred {
+  static constexpr int kVaryings = 4;  // ShadowCoord
+  static constexpr int kNormalSlot = -1;
+  static constexpr float kDepthBias = 0.1505f;
+  static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
+    const glm::mat4 projection = u.model_view_projection * glm::inverse(u.model);
+    const glm::mat4 bias{0.5f, 0.0f, 0.0f, 0.0f, 0.0f, 0.5f, 0.0f, 0.0f,
+                         0.0f, 0.0f, 0.5f, 0.0f, 0.5f, 0.5f, 0.5f, 1.0f};
+    const glm::mat4 light_view =
+        glm::lookAt(kShadowLightPosition, glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+    shading::store(
+        out, bias * projection * light_view * glm::vec4(in.position.x, in.position.y, 0.0f, 1.0f));
+  }
+};
 
 }  // namespace facet::bench::glmark2

@@ -4,7 +4,7 @@
 // pixels are shaded by its SIMD kernel alone (glmark2_batch.cpp, through BatchForm), which
 // computes the formula each model's comment gives, then shows the color as glmark2's RGBA8
 // UNORM buffer stores it: clamped to [0, 1] and rounded to the nearest of 256 codes, returned as
-// a display value (models.hpp's display_value).
+// a display value (shading/models.hpp).
 //
 // Spaces: the scenes put facet's camera at the origin looking down -Z, so facet's world space
 // is glmark2's eye space: u.model is glmark2's ModelView, u.normal_matrix the rotation part of
@@ -153,8 +153,8 @@ struct ShadowHorseShading : BatchForm<BatchShader::basic_light>, shading::Displa
 // s = ShadowCoord / ShadowCoord.w and d the light's window depth at s.xy (the material's base
 // colour map, the light pass's depth texture, sampled NEAREST and clamped):
 //   rgb = 0.3 x (0.5 if ShadowCoord.w > 0 and d < s.z + 0.1505, else 1), grey.
-// Facet's window depth is GL's, z_ndc x 0.5 + 0.5 (pipeline/setup/setup.hpp), and B maps z the
-// same way, so d and s.z are on one scale, as in glmark2. The draw must have the map.
+// Facet's window depth is GL's, z_ndc x 0.5 + 0.5 (to_screen, pipeline/reference.hpp), and B maps z
+// the same way, so d and s.z are on one scale, as in glmark2. The draw must have the map.
 struct ShadowGroundShading : BatchForm<BatchShader::shadow_ground>, shading::DisplayReferred {
   static constexpr int kVaryings = 4;  // ShadowCoord
   static constexpr int kNormalSlot = -1;

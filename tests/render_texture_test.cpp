@@ -133,7 +133,8 @@ TEST(RenderTexture, DepthOnlyTargetsKeepTheSameDepths) {
   render_shapes_into(depth_only);
   EXPECT_EQ(depth_only.texture(), nullptr);
   EXPECT_EQ(depth_only.framebuffer().depth(), both.framebuffer().depth());
-  EXPECT_EQ(depth_only.depth_texture()->level(0).rgba32f, both.depth_texture()->level(0).rgba32f);
+  EXPECT_EQ(depth_only.depth_texture()->level(0).r32f, both.depth_texture()->level(0).r32f);
+  EXPECT_EQ(depth_only.depth_texture()->level(0).r32f, depth_only.framebuffer().depth());
   EXPECT_THROW(RenderTexture(4, 4, {.color = false}), Error);
 }
 

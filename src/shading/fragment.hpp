@@ -17,7 +17,6 @@ struct Fragment {
   const Plane* inv_w = nullptr;   // 1 / w plane
   // The base color map's texel here, when the raster loop sampled it ahead (base_color_texel).
   glm::vec4 base_texel{0.0f};
-  bool base_texel_ready = false;
 
   // d v[k] / dx in pixels. With V = v/w and W = 1/w planes, v = V/W, so by the quotient rule
   // dv/dx = (V_x - v * W_x) / W = (V_x - v * W_x) * w.

@@ -9,7 +9,6 @@
 #pragma once
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <glm/glm.hpp>
 
@@ -111,10 +110,7 @@ void surface_vertex_batch(const DrawUniforms& u, const VertexBatchInput& in,
 
 // The material's base color map at the fragment, sampled ahead by the raster loop for a whole
 // batch of pixels (texel_batch.hpp): a model that reads it declares kBaseColorTexcoord.
-inline glm::vec4 base_color_texel(const Fragment& f) {
-  assert(f.base_texel_ready);
-  return f.base_texel;
-}
+inline glm::vec4 base_color_texel(const Fragment& f) { return f.base_texel; }
 
 // The mark of models whose normal is the side of the surface seen: the back faces of two-sided
 // materials get their normal reversed (pipeline/frame.hpp's DrawPipeline::lights_back_faces).

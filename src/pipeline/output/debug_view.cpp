@@ -67,6 +67,7 @@ void resolve_tile_bins(const TileContext& tile, std::size_t bin_size, float scal
   resolve_tile(tile, Resolve{scale}, target);
   const glm::vec3 tint = heat(static_cast<float>(bin_size), 10.0f);
   const int width = tile.x1 - tile.x0;
+  const bool codes = target.format() == ColorFormat::rgba8_srgb;
   glm::vec4 mixed[kMaxTileSize];
   for (int y = tile.y0; y < tile.y1; ++y) {
     const std::size_t first = static_cast<std::size_t>(y) * target.width() + tile.x0;
@@ -74,19 +75,18 @@ void resolve_tile_bins(const TileContext& tile, std::size_t bin_size, float scal
       const bool outline = x == 0 || y == tile.y0;
       const glm::vec3 toward = outline ? glm::vec3(0.0f) : tint;
       const float amount = outline ? 0.7f : 0.5f;
-      if (target.format() == ColorFormat::rgba8_srgb) {
-        const std::uint8_t* stored = target.rgba8().data() + (first + x) * 4;
-        for (int c = 0; c < 3; ++c) mixed[x][c] = glm::mix(stored[c] / 255.0f, toward[c], amount);
-        mixed[x][3] = static_cast<float>(stored[3]) * shading::kInverse255;  // kept as it is
-      } else {
+      if (!codes) {
         float* out = target.rgba32f().data() + (first + x) * 4;
         for (int c = 0; c < 3; ++c)
           out[c] = glm::mix(out[c], shading::srgb_to_linear(toward[c]), amount);
+        continue;
       }
+      const std::uint8_t* stored = target.rgba8().data() + (first + x) * 4;
+      for (int c = 0; c < 3; ++c) mixed[x][c] = glm::mix(stored[c] / 255.0f, toward[c], amount);
+      mixed[x][3] = static_cast<float>(stored[3]) * shading::kInverse255;  // kept as it is
     }
-    if (target.format() == ColorFormat::rgba8_srgb) {
+    if (codes)
       tile.frame->kernels->round_unorm8_row(mixed, width, target.rgba8().data() + first * 4);
-    }
   }
 }
 

@@ -233,7 +233,6 @@ class PixelWriter {
       for (int k = 0; k < Shading::kVaryings; ++k) fragment.v[k] = pixels.v[k][n];
       if (texels != nullptr) {
         fragment.base_texel = {texels[n][0], texels[n][1], texels[n][2], texels[n][3]};
-        fragment.base_texel_ready = true;
       }
       const glm::vec4 color = Shading::fragment(fragment, uniforms_);
       for (int c = 0; c < 4; ++c) colors[n][c] = color[c];

@@ -94,17 +94,21 @@ TEST(Allocations, SteadyStateFramesIntoARenderTextureAllocateNothing) {
   EXPECT_EQ(frames(30), 0);
 }
 
-// glmark2's shadow renders the light's depth map before each frame: the map is kept too.
-TEST(Allocations, SteadyStateShadowBenchFramesAllocateNothing) {
+// glmark2's shadow renders the light's depth map before each frame, refract the back faces'
+// normals and depth, with their mip chain: those targets are kept too.
+TEST(Allocations, SteadyStateRenderToTextureBenchFramesAllocateNothing) {
   FACET_REQUIRE_PACKAGE(std::filesystem::is_directory("/usr/share/glmark2/models"),
                         "/usr/share/glmark2 missing (Debian package glmark2-data)");
-  auto scene = bench::make_bench_scene("shadow");
-  RenderSettings settings;
-  settings.threads = 2;
-  Renderer renderer(settings);
-  Framebuffer fb(320, 180);
-  allocations_in_frames(*scene, renderer, fb, 5);
-  EXPECT_EQ(allocations_in_frames(*scene, renderer, fb, 30), 0);
+  for (const char* name : {"shadow", "refract"}) {
+    SCOPED_TRACE(name);
+    auto scene = bench::make_bench_scene(name);
+    RenderSettings settings;
+    settings.threads = 2;
+    Renderer renderer(settings);
+    Framebuffer fb(320, 180);
+    allocations_in_frames(*scene, renderer, fb, 5);
+    EXPECT_EQ(allocations_in_frames(*scene, renderer, fb, 30), 0);
+  }
 }
 
 TEST(Allocations, TheCounterSeesAllocations) {

@@ -133,9 +133,10 @@ TEST(Glmark2Scenes, NamesAreTheGlmark2BenchmarkStrings) {
                                              "shading:shading=cel",
                                              "bump:bump-render=normals",
                                              "bump:bump-render=high-poly",
-                                             "shadow"};
+                                             "shadow",
+                                             "refract"};
   EXPECT_EQ(bench::glmark2_scene_names(), expected);
-  EXPECT_EQ(bench::make_glmark2_scene("refract"), nullptr);  // not here yet
+  EXPECT_EQ(bench::make_glmark2_scene("jellyfish"), nullptr);
 }
 
 // The reader and glmark2's normals on the smallest model: cube.3ds has 20 vertices and 12

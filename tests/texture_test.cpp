@@ -239,6 +239,39 @@ TEST(Texture, SrgbMipLevelMatchesAScalarReference) {
   }
 }
 
+// The 8-bit unorm levels (filtered in integers) against the float average of the decoded
+// texels, rounded: every level of a random texture with odd sides and levels tall enough to be
+// filtered in several parallel bands.
+TEST(Texture, UnormMipLevelsMatchTheFloatAverage) {
+  std::mt19937 random(11);
+  const int width = 258, height = 134;
+  std::vector<std::uint8_t> rgba(std::size_t{width} * height * 4);
+  for (auto& value : rgba) value = static_cast<std::uint8_t>(random());
+  auto t = Texture::from_rgba8(width, height, rgba, false);
+  for (int l = 1; l < t->level_count(); ++l) {
+    const Texture::Level& above = t->level(l - 1);
+    const Texture::Level& level = t->level(l);
+    const int nx = above.width > 1 ? 2 : 1, ny = above.height > 1 ? 2 : 1;
+    for (int y = 0; y < level.height; ++y) {
+      for (int x = 0; x < level.width; ++x) {
+        for (int c = 0; c < 4; ++c) {
+          float sum = 0.0f;
+          for (int dy = 0; dy < ny; ++dy) {
+            for (int dx = 0; dx < nx; ++dx) {
+              const std::size_t i = ((std::size_t{2} * y + dy) * above.width + 2 * x + dx) * 4 + c;
+              sum += static_cast<float>(above.rgba8[i]) / 255.0f;
+            }
+          }
+          const float average = sum * (1.0f / static_cast<float>(nx * ny));
+          ASSERT_EQ(level.rgba8[(static_cast<std::size_t>(y) * level.width + x) * 4 + c],
+                    test::encode_unorm8(average))
+              << "level " << l << " texel " << x << "," << y << " channel " << c;
+        }
+      }
+    }
+  }
+}
+
 // One float a texel (depth images): read as (v, v, v, 1), its levels the averages, its data
 // length checked.
 TEST(Texture, OneFloatTexturesReadAsGrayAndFilterWithoutQuantizing) {

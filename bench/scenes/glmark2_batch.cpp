@@ -78,6 +78,121 @@ HWY_INLINE void ShadowGround(const DrawUniforms& u, const ShadeInput& in, Displa
   }
 }
 
+// GLSL's refract(I, N, e): with k = 1 - (e e) (1 - (N.I) (N.I)), zero where k < 0, else
+// e I - (e (N.I) + sqrt k) N.
+HWY_INLINE Vec3V Refract(const Vec3V& i, const Vec3V& n, BatchV e) {
+  const BatchTag d;
+  const BatchV n_dot_i = Dot(n, i);
+  const BatchV k =
+      hn::Sub(hn::Set(d, 1.0f),
+              hn::Mul(hn::Mul(e, e), hn::Sub(hn::Set(d, 1.0f), hn::Mul(n_dot_i, n_dot_i))));
+  const auto inside = hn::Not(hn::Lt(k, hn::Zero(d)));
+  const BatchV along_n = hn::Add(hn::Mul(e, n_dot_i), hn::Sqrt(StdMax(k, hn::Zero(d))));
+  return {hn::IfThenElseZero(inside, hn::Sub(hn::Mul(e, i.x), hn::Mul(along_n, n.x))),
+          hn::IfThenElseZero(inside, hn::Sub(hn::Mul(e, i.y), hn::Mul(along_n, n.y))),
+          hn::IfThenElseZero(inside, hn::Sub(hn::Mul(e, i.z), hn::Mul(along_n, n.z)))};
+}
+
+// Samples `map` with the frame's lookup kernel at (s[i], t[i]), level of detail lod[i], for the
+// batch's pixels, and zeroes the texels of the vectors' scratch lanes past in.count.
+HWY_INLINE void SampleMap(const DrawUniforms& u, const TextureMap& map, const ShadeInput& in,
+                          const float* s, const float* t, const float* lod, float (*texel)[4]) {
+  const int lanes = static_cast<int>(hn::Lanes(BatchTag()));
+  u.frame->kernels->sample_at(*map.texture, map.sampler, s, t, lod, in.count, texel);
+  const int padded = (in.count + lanes - 1) / lanes * lanes;
+  std::fill(&texel[0][0] + 4 * in.count, &texel[0][0] + 4 * padded, 0.0f);
+}
+
+// refract's bunny (RefractShading), the whole batch: each of its three dependent lookups is one
+// call of the lookup kernel for every pixel, between the steps of the formula that need it.
+HWY_INLINE void RefractBatch(const DrawUniforms& u, const ShadeInput& in, DisplayCodes codes) {
+  const BatchTag d;
+  const int lanes = static_cast<int>(hn::Lanes(d));
+  constexpr int kBatch = shading::kShadeBatch;
+  alignas(64) float front[3][kBatch], back[3][kBatch];  // T1, then Pb
+  alignas(64) float s[kBatch], t[kBatch], lod[kBatch], no_lod[kBatch] = {};
+  alignas(64) float texel[kBatch][4];
+  const Material& material = *u.material;
+  const BatchV half = hn::Set(d, 0.5f);
+  constexpr int kPosition = RefractShading::kPosition, kMapCoord = RefractShading::kMapCoord;
+  // T1 = refract(E, N, 1.2), and the distance map's coordinate m.xy 0.5 + 0.5.
+  for (int j = 0; j < in.count; j += lanes) {
+    const Vec3V eye = Normalize(Negate(Load3(in.v, kPosition, j)));
+    const Vec3V n = Normalize(Load3(in.v, 0, j));
+    const Vec3V t1 = Refract(eye, n, hn::Set(d, kRefractiveIndex));
+    hn::Store(t1.x, d, front[0] + j);
+    hn::Store(t1.y, d, front[1] + j);
+    hn::Store(t1.z, d, front[2] + j);
+    const BatchV inverse_w = hn::Div(hn::Set(d, 1.0f), hn::Load(d, in.v[kMapCoord + 3] + j));
+    const BatchV m_x = hn::Add(hn::Mul(hn::Load(d, in.v[kMapCoord] + j), inverse_w), t1.x);
+    const BatchV m_y = hn::Add(hn::Mul(hn::Load(d, in.v[kMapCoord + 1] + j), inverse_w), t1.y);
+    hn::Store(hn::Add(hn::Mul(m_x, half), half), d, s + j);
+    hn::Store(hn::Add(hn::Mul(m_y, half), half), d, t + j);
+  }
+  SampleMap(u, material.occlusion_map, in, s, t, no_lod, texel);
+  // Pb = P + T1 dist, the normal map's coordinate Pb.xy 0.5 + 0.5, and its level of detail:
+  // log2 of the larger of the coordinate's changes, in texels, for a step of one pixel along x
+  // and along y on the plane through P normal to N (RefractShading). A step along x moves P by
+  // (2 |P.z| / (W P[0][0])) (e_x - P N.x / N.P), and so the coordinate by texels_x |P.z| times
+  // that bracket, with texels_x = size / (W P[0][0]) (and with y, H and P[1][1] along y).
+  const float texels_x = static_cast<float>(material.normal_map.texture->width()) /
+                         (static_cast<float>(u.frame->width) * u.frame->projection[0][0]);
+  const float texels_y = static_cast<float>(material.normal_map.texture->height()) /
+                         (static_cast<float>(u.frame->height) * u.frame->projection[1][1]);
+  for (int j = 0; j < in.count; j += lanes) {
+    BatchV dist[4];
+    hn::LoadInterleaved4(d, &texel[j][0], dist[0], dist[1], dist[2], dist[3]);
+    const Vec3V p = Load3(in.v, kPosition, j);
+    const Vec3V pb = {hn::Add(p.x, hn::Mul(hn::Load(d, front[0] + j), dist[0])),
+                      hn::Add(p.y, hn::Mul(hn::Load(d, front[1] + j), dist[0])),
+                      hn::Add(p.z, hn::Mul(hn::Load(d, front[2] + j), dist[0]))};
+    hn::Store(pb.x, d, back[0] + j);
+    hn::Store(pb.y, d, back[1] + j);
+    hn::Store(pb.z, d, back[2] + j);
+    hn::Store(hn::Add(hn::Mul(pb.x, half), half), d, s + j);
+    hn::Store(hn::Add(hn::Mul(pb.y, half), half), d, t + j);
+    const Vec3V n = Normalize(Load3(in.v, 0, j));
+    const BatchV depth = hn::Neg(p.z);
+    const BatchV q = hn::Div(hn::Set(d, 1.0f), Dot(n, p));
+    const BatchV a = hn::Mul(depth, hn::Set(d, texels_x)), b = hn::Mul(depth, hn::Set(d, texels_y));
+    const BatchV nx_q = hn::Mul(n.x, q), ny_q = hn::Mul(n.y, q);
+    const BatchV du_dx = hn::Mul(a, hn::Sub(hn::Set(d, 1.0f), hn::Mul(p.x, nx_q)));
+    const BatchV dv_dx = hn::Mul(a, hn::Neg(hn::Mul(p.y, nx_q)));
+    const BatchV du_dy = hn::Mul(b, hn::Neg(hn::Mul(p.x, ny_q)));
+    const BatchV dv_dy = hn::Mul(b, hn::Sub(hn::Set(d, 1.0f), hn::Mul(p.y, ny_q)));
+    const BatchV rho2 = StdMax(hn::Add(hn::Mul(du_dx, du_dx), hn::Mul(dv_dx, dv_dx)),
+                               hn::Add(hn::Mul(du_dy, du_dy), hn::Mul(dv_dy, dv_dy)));
+    hn::Store(hn::Mul(half, LodLog2(rho2)), d, lod + j);
+  }
+  SampleMap(u, material.normal_map, in, s, t, lod, texel);
+  // T2 = refract(Pb, Nb, 1 / 1.2), and the image's coordinate T2.xy 0.5 + 0.5.
+  for (int j = 0; j < in.count; j += lanes) {
+    BatchV nb[4];
+    hn::LoadInterleaved4(d, &texel[j][0], nb[0], nb[1], nb[2], nb[3]);
+    const Vec3V t2 =
+        Refract(Load3(back, 0, j), {nb[0], nb[1], nb[2]}, hn::Set(d, 1.0f / kRefractiveIndex));
+    hn::Store(hn::Add(hn::Mul(t2.x, half), half), d, s + j);
+    hn::Store(hn::Add(hn::Mul(t2.y, half), half), d, t + j);
+  }
+  SampleMap(u, material.base_color_map, in, s, t, no_lod, texel);
+  // The image plus the white highlight 0.8 max(reflect(Ld, N).E, 0)^100.
+  for (int j = 0; j < in.count; j += lanes) {
+    const Vec3V p = Load3(in.v, kPosition, j);
+    const Vec3V eye = Normalize(Negate(p));
+    const Vec3V n = Normalize(Load3(in.v, 0, j));
+    const Vec3V light_direction = Normalize({hn::Sub(p.x, hn::Set(d, kRefractLightPosition.x)),
+                                             hn::Sub(p.y, hn::Set(d, kRefractLightPosition.y)),
+                                             hn::Sub(p.z, hn::Set(d, kRefractLightPosition.z))});
+    const BatchV specular = hn::Mul(
+        hn::Set(d, 0.8f), Pow100(StdMax(Dot(Reflect(light_direction, n), eye), hn::Zero(d))));
+    BatchV image[4];
+    hn::LoadInterleaved4(d, &texel[j][0], image[0], image[1], image[2], image[3]);
+    StoreDisplayCodes(
+        {hn::Add(image[0], specular), hn::Add(image[1], specular), hn::Add(image[2], specular)}, j,
+        codes);
+  }
+}
+
 void ShadeGlmark2Batch(BatchShader shader, const DrawUniforms& u, const ShadeInput& in,
                        float (*rgba)[4]) {
   using Shader = BatchShader;
@@ -86,8 +201,11 @@ void ShadeGlmark2Batch(BatchShader shader, const DrawUniforms& u, const ShadeInp
   // Every shader's colour is shown as glmark2's RGBA8 buffer stores it, an 8-bit code per
   // channel: the codes are stored per vector, then decoded once for the batch.
   alignas(64) std::int32_t codes[3][shading::kShadeBatch];
-  if (shader == Shader::shadow_ground) ShadowGround(u, in, codes);  // its lookups all at once
-  for (int j = 0; shader != Shader::shadow_ground && j < in.count; j += lanes) {
+  // The shaders that look textures up at coordinates they compute: all lookups of a kind at once.
+  const bool looks_up = shader == Shader::shadow_ground || shader == Shader::refract;
+  if (shader == Shader::shadow_ground) ShadowGround(u, in, codes);
+  if (shader == Shader::refract) RefractBatch(u, in, codes);
+  for (int j = 0; !looks_up && j < in.count; j += lanes) {
     switch (shader) {
       case Shader::basic_light: {
         const Vec3V light = Load3(in.v, 0, j);
@@ -183,7 +301,11 @@ void ShadeGlmark2Batch(BatchShader shader, const DrawUniforms& u, const ShadeInp
         StoreDisplayCodes(BumpLight(Normalize({turned[0], turned[1], turned[2]})), j, codes);
         break;
       }
+      case Shader::refract_back_normal:
+        StoreDisplayCodes(Load3(in.v, 0, j), j, codes);
+        break;
       case Shader::shadow_ground:  // shaded above
+      case Shader::refract:
         break;
     }
   }

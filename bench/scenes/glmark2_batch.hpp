@@ -15,16 +15,18 @@ enum class BatchShader {
   cel,
   bump_poly,
   bump_normals,
-  shadow_ground
+  shadow_ground,
+  refract_back_normal,
+  refract
 };
 
 // Linear RGBA of every pixel of `in`, shaded by the formula of `shader`'s model
 // (glmark2_shading.hpp), shown as an 8-bit code. No fog: glmark2 has none, and the scenes
 // draw none (in.fog is not read). The textured shaders read in.base_texel, which must be
 // there: their draws have the map (the scenes check it). shadow_ground looks up its material's
-// base colour map itself (the frame's sample_at), at coordinates it computes per pixel. rgba holds
-// kShadeBatch colors, as for shading::ShadeBatchKernel. The kernel for `target`: the frame's
-// (FrameUniforms::kernels), as for the library's own kernels.
+// base colour map itself (the frame's sample_at), at coordinates it computes per pixel, and
+// refract its three maps. rgba holds kShadeBatch colors, as for shading::ShadeBatchKernel. The
+// kernel for `target`: the frame's (FrameUniforms::kernels), as for the library's own kernels.
 using Glmark2BatchKernel = void (*)(BatchShader shader, const shading::DrawUniforms& u,
                                     const shading::ShadeInput& in, float (*rgba)[4]);
 Glmark2BatchKernel glmark2_batch_kernel(SimdTarget target);

@@ -1,4 +1,4 @@
-// The .3ds reader and glmark2's normal generation (see glmark2_model.hpp).
+// The .3ds and .obj readers and glmark2's normal generation (see glmark2_model.hpp).
 #include "scenes/glmark2_model.hpp"
 
 #include <algorithm>
@@ -7,6 +7,7 @@
 #include <fstream>
 #include <glm/geometric.hpp>
 #include <iterator>
+#include <sstream>
 #include <string>
 #include <utility>
 
@@ -61,6 +62,22 @@ std::vector<char> read_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(path + ": cannot open (install the Debian package glmark2-data)");
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Every face index names a vertex (else fail(what)); then the model's bounding box.
+template <class Fail>
+void check_faces_and_bound(Glmark2Model& model, const Fail& fail) {
+  for (std::size_t i = 0; i < model.indices.size(); ++i) {
+    if (model.indices[i] >= model.positions.size()) {
+      fail("face " + std::to_string(i / 3) + " uses vertex " + std::to_string(model.indices[i]) +
+           " of " + std::to_string(model.positions.size()));
+    }
+  }
+  model.bbox_min = model.bbox_max = model.positions[0];
+  for (const glm::vec3& p : model.positions) {
+    model.bbox_min = glm::min(model.bbox_min, p);
+    model.bbox_max = glm::max(model.bbox_max, p);
+  }
 }
 
 }  // namespace
@@ -118,17 +135,40 @@ Glmark2Model load_3ds(const std::string& path) {
     in.fail(std::to_string(model.texcoords.size()) + " texcoords for " +
             std::to_string(model.positions.size()) + " vertices");
   }
-  for (std::size_t i = 0; i < model.indices.size(); ++i) {
-    if (model.indices[i] >= model.positions.size()) {
-      in.fail("face " + std::to_string(i / 3) + " uses vertex " + std::to_string(model.indices[i]) +
-              " of " + std::to_string(model.positions.size()));
+  check_faces_and_bound(model, [&](const std::string& what) { in.fail(what); });
+  return model;
+}
+
+Glmark2Model load_obj(const std::string& path) {
+  const std::vector<char> bytes = read_file(path);
+  std::istringstream text(std::string(bytes.begin(), bytes.end()));
+  Glmark2Model model;
+  std::string line;
+  int line_number = 0;
+  auto fail = [&](const std::string& what) {
+    throw Error(path + ": line " + std::to_string(line_number) + ": " + what);
+  };
+  while (std::getline(text, line)) {
+    ++line_number;
+    std::istringstream fields(line);
+    std::string kind;
+    fields >> kind;
+    if (kind == "v") {
+      glm::vec3 p;
+      if (!(fields >> p.x >> p.y >> p.z)) fail("a vertex needs x y z");
+      model.positions.push_back(p);
+    } else if (kind == "f") {
+      for (int k = 0; k < 3; ++k) {
+        long index = 0;
+        if (!(fields >> index) || index < 1) fail("a face needs three 1-based vertex indices");
+        model.indices.push_back(static_cast<std::uint32_t>(index - 1));
+      }
     }
   }
-  model.bbox_min = model.bbox_max = model.positions[0];
-  for (const glm::vec3& p : model.positions) {
-    model.bbox_min = glm::min(model.bbox_min, p);
-    model.bbox_max = glm::max(model.bbox_max, p);
+  if (model.positions.empty() || model.indices.empty()) {
+    throw Error(path + ": no vertices or no faces");
   }
+  check_faces_and_bound(model, [&](const std::string& what) { throw Error(path + ": " + what); });
   return model;
 }
 

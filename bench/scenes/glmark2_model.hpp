@@ -1,5 +1,5 @@
-// glmark2's .3ds models as glmark2 loads them (GLMARK2_SCENES.md §1.4): positions, faces and
-// texcoords read as stored, normals generated glmark2's way. Used by glmark2_scenes.cpp.
+// glmark2's .3ds and .obj models as glmark2 loads them (GLMARK2_SCENES.md §1.4): positions, faces
+// and texcoords read as stored, normals generated glmark2's way. Used by glmark2_scenes.cpp.
 #pragma once
 
 #include <cstdint>
@@ -25,6 +25,11 @@ struct Glmark2Model {
 // chunk is skipped by its length. Throws facet::Error (naming the file and offset) on a
 // missing, truncated or inconsistent file.
 Glmark2Model load_3ds(const std::string& path);
+
+// Reads an .obj file as glmark2 does (bunny.obj): `v x y z` lines are positions, `f a b c`
+// lines faces by 1-based index; every other line is skipped. Throws facet::Error (naming the
+// file and line) on a missing or malformed file.
+Glmark2Model load_obj(const std::string& path);
 
 // glmark2's generated normals: each face's unit normal normalize(cross(b - a, c - a)) is added
 // to the accumulators of its three FILE indices, then each accumulator is normalized. An

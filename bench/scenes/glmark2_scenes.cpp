@@ -1,10 +1,8 @@
-// The glmark2-equivalent benchmark scenes: glmark2 2023.01's benchmarks 1-10 of
+// The glmark2-equivalent benchmark scenes: glmark2 2023.01's benchmarks 1-11 of
 // GLMARK2_SCENES.md (shared bench folder) with the same models, textures, projection, model
 // transforms, animation and shading formulas, so that facet's frame time is measured on the
 // same work as glmark2 on llvmpipe. tests/glmark2_equivalence_test.cpp checks frame 0 against
 // glmark2's own frames.
-//
-// Not here yet: `refract` (§2.7), which also needs a colour target's mip chain every frame.
 #include <algorithm>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
@@ -275,6 +273,79 @@ std::unique_ptr<BenchScene> shadow_scene() {
                                        view);
 }
 
+// §2.7 refract, per frame: the bunny's back faces seen from the light (1, 1, 2) into a 2W x 2H
+// target, their object-space normals as its color (whose mip chain is filtered every frame) and
+// their depth; then the bunny, whose pixels refract through the front face to the back faces'
+// normals and out onto nasa1 (RefractShading).
+class RefractScene : public BenchScene {
+ public:
+  RefractScene(Mesh bunny, const View& view)
+      : bunny_(std::make_shared<const Mesh>(std::move(bunny))), view_(view) {
+    lighting_.lights.clear();  // the shading models carry glmark2's light themselves
+    if (lighting_.fog.mode != FogMode::none) throw Error("glmark2 scenes: the shaders have no fog");
+    back_material_.cull = CullMode::front;  // the back faces alone
+    bunny_material_.base_color_map = texture_map("nasa1.png", Filter::bilinear);
+    bunny_material_.normal_map.sampler = {Filter::trilinear, Wrap::clamp_to_edge,
+                                          Wrap::clamp_to_edge};
+    bunny_material_.occlusion_map.sampler = {Filter::nearest, Wrap::clamp_to_edge,
+                                             Wrap::clamp_to_edge};
+    back_pipeline_ = pipeline::make_pipeline<glmark2::RefractBackNormalShading>();
+    bunny_pipeline_ = pipeline::make_pipeline<glmark2::RefractShading>();
+  }
+
+  void record(Renderer& renderer, double t, int width, int height) override {
+    const float aspect = static_cast<float>(width) / static_cast<float>(height);
+    ensure_distance_map(width, height);
+    const float theta = static_cast<float>(glm::radians(kDegreesPerSecond * t));
+    const glm::mat4 turn = glm::rotate(glm::mat4(1.0f), theta, {0, 1, 0});
+    // 1. The back faces from the light: P . lookAt((1, 1, 2) -> 0, up y) . Ry(θ). The light is
+    // nearer than the bunny's far side, so the near plane cuts into it.
+    renderer.begin_frame(
+        Camera::look_at(glmark2::kRefractLightPosition, {0, 0, 0}, {0, 1, 0}, view_.fov_y_degrees,
+                        aspect, view_.near_plane, view_.far_plane),
+        lighting_);
+    pipeline::draw_with_pipeline(renderer, bunny_, back_material_, turn, back_pipeline_);
+    renderer.finish(*distance_map_);
+    // 2. The bunny: T . Ry(θ).
+    renderer.begin_frame(eye_camera(view_, aspect), lighting_);
+    pipeline::draw_with_pipeline(renderer, bunny_, bunny_material_,
+                                 glm::translate(glm::mat4(1.0f), view_.translation) * turn,
+                                 bunny_pipeline_);
+  }
+
+ private:
+  // 2W x 2H, as the depth map of ShadowScene; its color is 8-bit data (the normals' codes read
+  // as they are, as GL's RGBA8 target), mipmapped, and its depth kept. Made again only when the
+  // target's size changes.
+  void ensure_distance_map(int width, int height) {
+    const int map_width = std::min(2 * width, Framebuffer::kMaxSize);
+    const int map_height = std::min(2 * height, Framebuffer::kMaxSize);
+    if (distance_map_ && distance_map_->width() == map_width &&
+        distance_map_->height() == map_height) {
+      return;
+    }
+    distance_map_ = std::make_unique<RenderTexture>(
+        map_width, map_height,
+        RenderTextureOptions{.mipmaps = true, .depth = true, .srgb_texture = false});
+    bunny_material_.normal_map.texture = distance_map_->texture();
+    bunny_material_.occlusion_map.texture = distance_map_->depth_texture();
+  }
+
+  std::shared_ptr<const Mesh> bunny_;  // does not change: checked once by the renderer
+  View view_;
+  Material back_material_, bunny_material_;
+  pipeline::DrawPipeline back_pipeline_, bunny_pipeline_;
+  Lighting lighting_;
+  std::unique_ptr<RenderTexture> distance_map_;
+};
+
+// §2.7: bunny.obj with the fit camera.
+std::unique_ptr<BenchScene> refract_scene() {
+  Glmark2Model model = load_obj(kModels + "bunny.obj");
+  return std::make_unique<RefractScene>(glmark2_mesh(model, {.normals = true, .deindex = kDeindex}),
+                                        fit_view(model, 2.0f));
+}
+
 }  // namespace
 
 std::vector<std::string> glmark2_scene_names() {
@@ -287,7 +358,8 @@ std::vector<std::string> glmark2_scene_names() {
           "shading:shading=cel",
           "bump:bump-render=normals",
           "bump:bump-render=high-poly",
-          "shadow"};
+          "shadow",
+          "refract"};
 }
 
 std::unique_ptr<BenchScene> make_glmark2_scene(const std::string& name) {
@@ -303,6 +375,7 @@ std::unique_ptr<BenchScene> make_glmark2_scene(const std::string& name) {
   if (name == "bump:bump-render=normals") return bump_normals_scene();
   if (name == "bump:bump-render=high-poly") return bump_high_poly_scene();
   if (name == "shadow") return shadow_scene();
+  if (name == "refract") return refract_scene();
   return nullptr;
 }
 

@@ -23,6 +23,7 @@
 #include "shading/models.hpp"
 #include "shading/surface.hpp"
 #include "shading/uniforms.hpp"
+#include "shading/vertex_batch.hpp"
 
 namespace facet::bench::glmark2 {
 
@@ -167,6 +168,68 @@ struct ShadowGroundShading : BatchForm<BatchShader::shadow_ground>, shading::Dis
         glm::lookAt(kShadowLightPosition, glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
     shading::store(
         out, bias * projection * light_view * glm::vec4(in.position.x, in.position.y, 0.0f, 1.0f));
+  }
+};
+
+// refract's light (1, 1, 2), in eye space: the pass into the distance target looks from it at
+// the origin, and the bunny's highlight comes from it. The bunny's refractive index is 1.2.
+inline const glm::vec3 kRefractLightPosition{1.0f, 1.0f, 2.0f};
+inline constexpr float kRefractiveIndex = 1.2f;
+
+// depth.vert/.frag (refract's pass into the distance target, back faces only): the interpolated
+// OBJECT-space normal, stored clamped to [0, 1] as an 8-bit code per channel, alpha 1 (the
+// scene reads the target's codes back as data: RenderTextureOptions::srgb_texture false).
+// The draw only turns the model (by Ry(θ)), so the object normal is the world normal turned
+// back: transpose(normal_matrix) x normal.
+struct RefractBackNormalShading : BatchForm<BatchShader::refract_back_normal>,
+                                  shading::DisplayReferred {
+  static constexpr int kVaryings = 3;
+  static constexpr int kNormalSlot = -1;
+  static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
+    shading::store(out, glm::transpose(u.normal_matrix) * in.normal);
+  }
+};
+
+// light-refract.vert/.frag (refract's bunny). Varyings: the eye normal N, the eye position P
+// (ModelView x p) and MapCoord = B P_f lookAt((1, 1, 2) -> 0, up y) x p of the OBJECT-space p
+// (B the bias matrix, P_f the frame's projection; the bunny's turn is not in it, as in glmark2).
+// The material's maps carry the shader's three textures: base_color_map the image (nasa1,
+// bilinear), normal_map the back faces' normals (the distance target's color, trilinear),
+// occlusion_map their depth seen from the light (its depth texture, nearest), all clamped.
+// Per pixel, with refract(I, N, e) = 0 if k = 1 - e e (1 - (N.I)^2) < 0, else
+// e I - (e (N.I) + sqrt k) N, and reflect(I, N) = I - 2 (N.I) N:
+//   E = normalize(-P), N = normalize(N), T1 = refract(E, N, 1.2),
+//   m = MapCoord.xyz / MapCoord.w + T1, dist = depth at m.xy 0.5 + 0.5 (the bias a second time),
+//   Pb = P + T1 dist, Nb = normals at Pb.xy 0.5 + 0.5 (not remapped to [-1, 1]),
+//   T2 = refract(Pb, Nb, 1 / 1.2) (neither normalized), texel = image at T2.xy 0.5 + 0.5,
+//   Ld = normalize(P - (1, 1, 2)), s = max(reflect(Ld, N).E, 0)^100,
+//   rgb = texel.rgb + 0.8 s.
+// OpenGL takes Nb's level of detail from the screen-space derivatives of Pb.xy across a 2x2
+// quad. The kernel shades packed pixels, which have no neighbours, so it differentiates the
+// part of Pb that is the surface point: the footprint of a pixel on the plane through P normal
+// to N (the refracted offset T1 dist, smooth where the surface is, is left out).
+struct RefractShading : BatchForm<BatchShader::refract>, shading::DisplayReferred {
+  static constexpr int kVaryings = 10;
+  static constexpr int kNormalSlot = -1;
+  static constexpr int kPosition = 3;
+  static constexpr int kMapCoord = 6;
+  static void vertex_batch(const DrawUniforms& u, const shading::VertexBatchInput& in,
+                           float (*out)[shading::kVertexBatch]) {
+    const glm::mat4 bias{0.5f, 0.0f, 0.0f, 0.0f, 0.0f, 0.5f, 0.0f, 0.0f,
+                         0.0f, 0.0f, 0.5f, 0.0f, 0.5f, 0.5f, 0.5f, 1.0f};
+    const glm::mat4 light_matrix =
+        bias * u.frame->projection *
+        glm::lookAt(kRefractLightPosition, glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+    for (int n = 0; n < in.count; ++n) {
+      const glm::vec4 p(in.positions[n], 1.0f);
+      const glm::vec3 eye = glm::vec3(u.model * p);
+      const glm::vec4 map_coord = light_matrix * p;
+      for (int k = 0; k < 3; ++k) {
+        out[k][n] = in.normal[k][n];
+        out[kPosition + k][n] = eye[k];
+      }
+      for (int k = 0; k < 4; ++k) out[kMapCoord + k][n] = map_coord[k];
+    }
   }
 };
 

@@ -16,9 +16,10 @@ namespace facet {
 struct RenderTextureOptions {
   // rgba8_srgb: an 8-bit sRGB texture, as a framebuffer's PNG; rgba32f: linear float color.
   ColorFormat format = ColorFormat::rgba8_srgb;
-  // The whole mip chain (box filtered in linear light, as Texture's), refreshed after every
-  // render, for draws that see the texture minified (Filter::trilinear); otherwise the base
-  // level alone.
+  // The color texture's whole mip chain (box filtered in linear light, as Texture's), refreshed
+  // after every render, for draws that see the texture minified (Filter::trilinear); otherwise
+  // the base level alone. The depth texture has its base level alone either way: depths are
+  // compared, not averaged.
   bool mipmaps = false;
   // Also depth_texture(): the window depth of each pixel (0 at the near plane, 1 at the far
   // and where nothing was drawn), read as red, green and blue with alpha 1; stored as one float
@@ -27,6 +28,10 @@ struct RenderTextureOptions {
   // False: depth alone (with depth true), as a shadow map is made: no color is cleared,
   // shaded or resolved, and texture() is null.
   bool color = true;
+  // For rgba8_srgb: whether the texture reads its 8-bit codes as sRGB (a picture, as a PNG is
+  // read) or as code / 255 (data, as OpenGL's RGBA8 target holds it: a frame of display values
+  // alone, such as the normals view, stores each value as its code, and reads back its values).
+  bool srgb_texture = true;
 };
 
 class RenderTexture {
@@ -50,8 +55,9 @@ class RenderTexture {
   // Whether texture is one of this target's textures.
   bool owns(const Texture* texture) const;
 
-  // Copies the framebuffer into the textures and filters their mip chains. Renderer::finish
-  // calls it after rendering; call it after writing framebuffer() yourself. Allocates nothing.
+  // Copies the framebuffer into the textures and filters the color texture's mip chain, with
+  // oneTBB's threads (Renderer::finish calls it on the renderer's own). Renderer::finish calls
+  // it after rendering; call it after writing framebuffer() yourself. Allocates nothing.
   void update();
 
  private:

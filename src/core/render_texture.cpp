@@ -4,9 +4,25 @@
 #include <algorithm>
 #include <cstring>
 
+#include "core/parallel.hpp"
 #include "facet/error.hpp"
 
 namespace facet {
+namespace {
+
+// Copies count values in parallel chunks of 1 MiB: the copy is part of every frame that renders
+// into the target.
+template <class T>
+void parallel_copy(const T* from, T* to, std::size_t count) {
+  constexpr std::size_t kChunk = (std::size_t{1} << 20) / sizeof(T);
+  const int chunks = static_cast<int>((count + kChunk - 1) / kChunk);
+  parallel_tasks(chunks, default_workers(), [&](int chunk, int) {
+    const std::size_t first = static_cast<std::size_t>(chunk) * kChunk;
+    std::memcpy(to + first, from + first, std::min(kChunk, count - first) * sizeof(T));
+  });
+}
+
+}  // namespace
 
 RenderTexture::RenderTexture(int width, int height, const RenderTextureOptions& options)
     : options_(options),
@@ -16,14 +32,14 @@ RenderTexture::RenderTexture(int width, int height, const RenderTextureOptions& 
     throw Error("render texture: keeps neither color nor depth (RenderTextureOptions)");
   }
   if (options.color) {
-    const bool srgb = options.format == ColorFormat::rgba8_srgb;
+    const bool rgba8 = options.format == ColorFormat::rgba8_srgb;
     color_texture_ = Texture::render_target(
-        width, height, srgb ? Texture::Format::rgba8 : Texture::Format::rgba32f, srgb,
-        options.mipmaps, "render texture");
+        width, height, rgba8 ? Texture::Format::rgba8 : Texture::Format::rgba32f,
+        rgba8 && options.srgb_texture, options.mipmaps, "render texture");
   }
   if (options.depth) {
-    depth_texture_ = Texture::render_target(width, height, Texture::Format::r32f, false,
-                                            options.mipmaps, "render texture depth");
+    depth_texture_ = Texture::render_target(width, height, Texture::Format::r32f, false, false,
+                                            "render texture depth");
   }
   update();
 }
@@ -36,16 +52,15 @@ void RenderTexture::update() {
   if (color_texture_) {
     Texture::Level& color = color_texture_->base_level();
     if (options_.format == ColorFormat::rgba8_srgb) {
-      std::memcpy(color.rgba8.data(), framebuffer_.rgba8().data(), color.rgba8.size());
+      parallel_copy(framebuffer_.rgba8().data(), color.rgba8.data(), color.rgba8.size());
     } else {
-      std::memcpy(color.rgba32f.data(), framebuffer_.rgba32f().data(),
-                  color.rgba32f.size() * sizeof(float));
+      parallel_copy(framebuffer_.rgba32f().data(), color.rgba32f.data(), color.rgba32f.size());
     }
     color_texture_->refresh_from_base_level();
   }
   if (!depth_texture_) return;
-  const std::vector<float>& depth = framebuffer_.depth();
-  std::copy(depth.begin(), depth.end(), depth_texture_->base_level().r32f.begin());
+  parallel_copy(framebuffer_.depth().data(), depth_texture_->base_level().r32f.data(),
+                framebuffer_.depth().size());
   depth_texture_->refresh_from_base_level();
 }
 

@@ -148,6 +148,9 @@ void Renderer::Impl::run(Framebuffer& target) {
   uniforms.near_plane = camera.near_plane;
   uniforms.far_plane = camera.far_plane;
   uniforms.view = camera.view();
+  uniforms.projection = camera.projection();
+  uniforms.width = frame.width;
+  uniforms.height = frame.height;
   uniforms.orthographic = camera.projection_kind == Projection::orthographic;
   uniforms.view_depth = {};  // perspective: clip w
   if (camera.projection_kind == Projection::orthographic) {

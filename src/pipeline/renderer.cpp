@@ -215,7 +215,7 @@ void Renderer::finish(RenderTexture& target) {
         "texture with an earlier finish()");
   }
   impl_->finish(target.framebuffer(), !target.options().color);
-  target.update();
+  impl_->arena.execute([&] { target.update(); });  // on the renderer's threads
 }
 
 struct RendererAccess {

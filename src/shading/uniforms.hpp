@@ -55,8 +55,10 @@ struct FrameUniforms {
   const IrradianceHarmonics* environment_light = nullptr;
   float near_plane = 0.1f;
   float far_plane = 100.0f;
-  glm::mat4 view{1.0f};       // the camera's view matrix (what the extra outputs measure in)
-  bool orthographic = false;  // the camera's projection is parallel
+  glm::mat4 view{1.0f};        // the camera's view matrix (what the extra outputs measure in)
+  glm::mat4 projection{1.0f};  // the camera's projection matrix
+  int width = 0, height = 0;   // the target's size in pixels
+  bool orthographic = false;   // the camera's projection is parallel
   ViewDepth view_depth;
   // Display values (models.hpp) are stored as code / 255, not decoded to
   // linear: in frames whose every color is one (8-bit targets), and in every float target.

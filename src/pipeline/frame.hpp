@@ -290,6 +290,9 @@ struct Frame : PrimitiveBuffer {
   // Reused across frames: the first chunk_count are this frame's.
   std::vector<GeometryChunk> chunks;
   std::size_t chunk_count = 0;
+  // Frames whose triangles' regions of `triangles` and `planes` would take more bytes than this
+  // set their triangles up without regions (geometry.cpp's plan_chunks; tests lower it).
+  std::size_t max_triangle_region_bytes = std::size_t{1} << 30;
   // Geometry's parallel tasks: chunks [first_chunk, end_chunk), after transforming their draw's
   // vertices when `transform` says so (geometry.cpp).
   struct GeometryTask {

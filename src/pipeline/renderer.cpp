@@ -237,5 +237,9 @@ void draw_with_pipeline(Renderer& renderer, const std::shared_ptr<const Mesh>& m
   impl.record(*mesh, box, material, transform, pipe);
 }
 
+void set_max_triangle_region_bytes(Renderer& renderer, std::size_t bytes) {
+  RendererAccess::impl(renderer).frame.max_triangle_region_bytes = bytes;
+}
+
 }  // namespace pipeline
 }  // namespace facet

@@ -31,15 +31,24 @@ struct Totals {
   std::size_t triangles = 0, planes = 0, lines = 0, points = 0;
 };
 
+// Whether `draw` fills triangles (sets up a triangle per triangle of its mesh).
+bool fills_triangles(const DrawRecord& draw) {
+  const Topology topology = draw.mesh->topology;
+  return topology != Topology::lines && topology != Topology::points &&
+         draw.pipeline.fills_triangles;
+}
+
 // Gives a chunk of n primitives of `draw` its regions: room for everything it sets up unless
 // clipping splits triangles (one triangle per triangle, three edges per wireframe triangle,
-// one segment per line, one point per point), so only a fan's extra pieces can overflow.
-void plan_regions(GeometryChunk& chunk, const DrawRecord& draw, Totals& totals) {
+// one segment per line, one point per point), so only a fan's extra pieces can overflow; no
+// room for triangles unless `triangle_regions` (Frame::max_triangle_region_bytes).
+void plan_regions(GeometryChunk& chunk, const DrawRecord& draw, bool triangle_regions,
+                  Totals& totals) {
   const auto n = static_cast<std::uint32_t>(chunk.end - chunk.begin);
   const Topology topology = draw.mesh->topology;
   const bool line_mesh = topology == Topology::lines, point_mesh = topology == Topology::points;
   const bool triangle_mesh = !line_mesh && !point_mesh;
-  const std::uint32_t triangles = triangle_mesh && draw.pipeline.fills_triangles ? n : 0;
+  const std::uint32_t triangles = triangle_regions && fills_triangles(draw) ? n : 0;
   const std::uint32_t lines = line_mesh                                    ? n
                               : triangle_mesh && draw.pipeline.draws_edges ? 3 * n
                                                                            : 0;
@@ -60,6 +69,19 @@ void plan_regions(GeometryChunk& chunk, const DrawRecord& draw, Totals& totals) 
 
 // Splits every draw into chunks, in draw order, each with its regions of the frame's arrays.
 Totals plan_chunks(Frame& frame) {
+  std::size_t region_bytes = 0;
+  for (std::uint32_t d : frame.draw_order) {
+    const DrawRecord& draw = frame.draws[d];
+    if (!fills_triangles(draw)) continue;
+    region_bytes += draw.mesh->primitive_count() *
+                    (sizeof(SetupTriangle) + sizeof(Plane) * draw.pipeline.varyings);
+  }
+  // Past the limit, each chunk's triangles go to its overflow buffer, appended to the frame's
+  // arrays once set up, so memory follows the triangles that survive culling (a few per pixel
+  // at most, once they are smaller than pixels) instead of the meshes' size: 100 million
+  // triangles would reserve tens of gigabytes. Frames of ordinary size keep their regions and
+  // skip the appending copy.
+  const bool triangle_regions = region_bytes <= frame.max_triangle_region_bytes;
   Totals totals;
   std::size_t count = 0;
   for (std::uint32_t d : frame.draw_order) {
@@ -70,7 +92,7 @@ Totals plan_chunks(Frame& frame) {
       chunk.draw = d;
       chunk.begin = begin;
       chunk.end = std::min(n, begin + kChunkPrimitives);
-      plan_regions(chunk, frame.draws[d], totals);
+      plan_regions(chunk, frame.draws[d], triangle_regions, totals);
     }
   }
   // Indices must stay clear of the sequence's flag bits (primitive_sink.hpp).
@@ -101,6 +123,11 @@ void finish_chunks(Frame& frame, Totals end) {
     frame.stats.points_drawn += chunk.points.used;
     const PrimitiveBuffer& o = chunk.overflow;
     if (o.triangles.empty() && o.lines.empty()) continue;
+    if (end.triangles + o.triangles.size() >= kMaxPrimitiveIndex ||
+        end.lines + o.lines.size() >= kMaxPrimitiveIndex ||
+        end.planes + o.planes.size() > UINT32_MAX) {
+      throw Error("renderer: too many primitives in one frame");
+    }
     ensure_size(frame.triangles, end.triangles + o.triangles.size());
     ensure_size(frame.planes, end.planes + o.planes.size());
     ensure_size(frame.lines, end.lines + o.lines.size());

@@ -16,4 +16,7 @@ void draw_with_pipeline(Renderer& renderer, const std::shared_ptr<const Mesh>& m
                         const Material& material, const glm::mat4& transform,
                         const DrawPipeline& pipeline);
 
+// The renderer's Frame::max_triangle_region_bytes (tests: the big-frame setup on small frames).
+void set_max_triangle_region_bytes(Renderer& renderer, std::size_t bytes);
+
 }  // namespace facet::pipeline

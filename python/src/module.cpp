@@ -17,5 +17,6 @@ PYBIND11_MODULE(_facet, m) {
   facet::python::bind_camera(m);
   facet::python::bind_scene(m);
   facet::python::bind_animation(m);
+  facet::python::bind_render_texture(m);
   facet::python::bind_render(m);
 }

@@ -2,11 +2,14 @@
 // arguments, renders with the GIL released (so renderers in several Python threads work at
 // once), and hands each requested output over as an array that owns the framebuffer's buffer.
 // Each output is one entry of kOutputs and one small function that takes it out of the frame.
+// render_to() renders the same way into a facet.RenderTexture (render_texture_bindings.cpp).
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <mutex>
+#include <shared_mutex>
 #include <string>
 #include <variant>
 #include <vector>
@@ -17,6 +20,7 @@
 #include "facet/error.hpp"
 #include "facet/framebuffer.hpp"
 #include "facet/image_io.hpp"
+#include "facet/render_texture.hpp"
 #include "facet/renderer.hpp"
 
 namespace facet::python {
@@ -133,6 +137,58 @@ ToneMapping tone_mapping_named(const std::string& name) {
   throw Error("Renderer: tone_mapping must be 'none', 'pbr-neutral' or 'aces', got '" + name + "'");
 }
 
+// The locks a frame holds while it renders: its scene's, shared; those of the render textures
+// the scene's materials sample, shared; and the render texture it renders into, if any,
+// exclusive. Taken in one order, the scene first and then the render textures by address, so
+// frames in several Python threads never wait for each other in a circle (a scene's lock is
+// held exclusively only by changes to it, which take no other lock). Made with the GIL released.
+class FrameLocks {
+ public:
+  FrameLocks(const SceneHandle& scene, const RenderTextureHandle* target) : scene_(scene.mutex) {
+    std::vector<const RenderTextureHandle*> order;
+    for (const auto& sampled : scene.render_textures) order.push_back(sampled.get());
+    if (target != nullptr) order.push_back(target);
+    std::sort(order.begin(), order.end());
+    order.erase(std::unique(order.begin(), order.end()), order.end());
+    // A scene sampling its own target is locked once, exclusively; the renderer then refuses
+    // the frame.
+    for (const RenderTextureHandle* handle : order) {
+      if (handle == target) {
+        target_ = std::unique_lock(handle->mutex);
+      } else {
+        sampled_.emplace_back(handle->mutex);
+      }
+    }
+  }
+
+ private:
+  std::shared_lock<std::shared_mutex> scene_;
+  std::vector<std::shared_lock<std::shared_mutex>> sampled_;
+  std::unique_lock<std::shared_mutex> target_;
+};
+
+const SceneHandle& scene_argument(py::handle value, const char* function) {
+  if (!py::isinstance<SceneHandle>(value)) {
+    throw Error(std::string(function) + ": scene must be a facet.Scene, got " +
+                std::string(py::str(py::type::of(value).attr("__name__"))));
+  }
+  return value.cast<const SceneHandle&>();
+}
+
+// The camera of a width x height frame: camera_value, or for None the scene's (a loaded file's
+// automatic view framed again for this aspect).
+Camera frame_camera(const SceneHandle& scene, py::handle camera_value, const char* function,
+                    int width, int height) {
+  Camera camera;
+  if (camera_value.is_none()) {
+    std::shared_lock lock(scene.mutex);
+    camera = scene_camera(scene.scene, static_cast<float>(width) / static_cast<float>(height));
+  } else {
+    camera = object_of<Camera>(camera_value, function, "camera", "Camera");
+  }
+  return camera_for_image(camera, width, height);
+}
+
 // facet.Renderer: a facet::Renderer and the size of the images it makes. One frame at a time
 // each (the mutex); several renderers render at once.
 class PyRenderer {
@@ -163,32 +219,20 @@ class PyRenderer {
 
   py::dict render(py::handle scene_value, py::handle camera_value, py::handle outputs,
                   const std::string& format_name, const std::string& normals_name) {
-    if (!py::isinstance<SceneHandle>(scene_value)) {
-      throw Error("render: scene must be a facet.Scene, got " +
-                  std::string(py::str(py::type::of(scene_value).attr("__name__"))));
-    }
-    const SceneHandle& scene = scene_value.cast<const SceneHandle&>();
+    const SceneHandle& scene = scene_argument(scene_value, "render");
     const std::vector<const OutputKind*> kinds = requested_outputs(outputs);
     const ColorFormat format = color_format(format_name);
     const NormalSpace normals = normal_space(normals_name);
     ExtraOutputs extra;
     for (const OutputKind* kind : kinds) kind->request(extra, normals);
-    Camera camera;
-    if (camera_value.is_none()) {
-      std::shared_lock lock(scene.mutex);
-      // A loaded file's automatic view is framed again for this image's aspect.
-      camera = scene_camera(scene.scene, static_cast<float>(width_) / static_cast<float>(height_));
-    } else {
-      camera = object_of<Camera>(camera_value, "render", "camera", "Camera");
-    }
     RenderedFrame frame{Framebuffer(width_, height_, format, DepthImage::none, extra),
-                        camera_for_image(camera, width_, height_)};
+                        frame_camera(scene, camera_value, "render", width_, height_)};
     std::vector<OutputValues> values;
     {
       py::gil_scoped_release release;
       std::lock_guard lock(mutex_);
       {
-        std::shared_lock scene_lock(scene.mutex);
+        FrameLocks locks(scene, nullptr);
         renderer_->begin_frame(frame.camera, scene.scene.lighting);
         draw_scene(*renderer_, scene.scene);
         renderer_->finish(frame.image);
@@ -203,6 +247,27 @@ class PyRenderer {
           values[i].values);
     }
     return result;
+  }
+
+  // One frame of scene into target, at target's size (not this renderer's).
+  void render_to(py::handle target_value, py::handle scene_value, py::handle camera_value) {
+    if (!py::isinstance<RenderTextureHandle>(target_value)) {
+      throw Error("render_to: target must be a facet.RenderTexture, got " +
+                  std::string(py::str(py::type::of(target_value).attr("__name__"))));
+    }
+    RenderTextureHandle& target = target_value.cast<RenderTextureHandle&>();
+    const SceneHandle& scene = scene_argument(scene_value, "render_to");
+    const Camera camera = frame_camera(scene, camera_value, "render_to", target.target.width(),
+                                       target.target.height());
+    py::gil_scoped_release release;
+    std::lock_guard lock(mutex_);
+    {
+      FrameLocks locks(scene, &target);
+      renderer_->begin_frame(camera, scene.scene.lighting);
+      draw_scene(*renderer_, scene.scene);
+      renderer_->finish(target.target);  // refuses a scene that samples target's textures
+    }
+    stats_ = renderer_->stats();
   }
 
  private:
@@ -283,6 +348,15 @@ in outputs (facet.OUTPUTS lists them). Every output but color holds 0 where noth
   albedo:      (H, W, 4) float32, linear RGBA: base color x vertex color x texture, unlit
 Each output beyond color costs a pass over the scene only when asked for (docs/outputs.md).
 Row 0 is the top of the image. The arrays own their memory (no copy is made).)doc")
+      .def("render_to", &PyRenderer::render_to, py::arg("target"), py::arg("scene"),
+           py::arg("camera") = py::none(), R"doc(
+Renders scene seen through camera into target, a facet.RenderTexture, at the target's size and
+aspect (not this renderer's), with this renderer's settings (msaa, background, exposure, tone
+mapping, threads). Afterwards target.read_color() / read_depth() hold the frame, and every
+scene whose meshes use target.texture or target.depth_texture shows it. camera as in render().
+A scene whose meshes sample target's own textures raises facet.Error, rendering nothing.
+The GIL is released while the frame renders; the target is locked meanwhile: frames reading
+its textures and its readbacks in other threads wait for it.)doc")
       .def_property_readonly("width", &PyRenderer::width)
       .def_property_readonly("height", &PyRenderer::height)
       .def_property_readonly("threads", [](const PyRenderer& r) { return r.settings().threads; })

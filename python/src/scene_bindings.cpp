@@ -87,9 +87,24 @@ int add_mesh(SceneHandle& handle, py::handle vertices, py::handle faces, py::han
   Material look;
   if (!material.is_none()) look = object_of<Material>(material, kName, "material", "Material");
   std::shared_ptr<const Texture> image;
+  std::shared_ptr<const RenderTextureHandle> render_texture;  // image's, if it is one's
   if (!texture.is_none()) {
     if (mesh.texcoords.empty()) throw Error("add_mesh: a texture needs uvs, an (N, 2) array");
-    image = texture_image(texture, {kName, "texture"});
+    if (py::isinstance<TextureHandle>(texture)) {
+      const TextureHandle& given = texture.cast<const TextureHandle&>();
+      image = given.texture;
+      render_texture = given.source;
+      // A frame does not go on past its edges: clamped, its border texels are not blended with
+      // the opposite side's where the mesh shows the texture magnified.
+      look.base_color_map.sampler.wrap_u = Wrap::clamp_to_edge;
+      look.base_color_map.sampler.wrap_v = Wrap::clamp_to_edge;
+    } else if (py::isinstance<RenderTextureHandle>(texture)) {
+      throw Error(
+          "add_mesh: texture must be an image array or a facet.Texture, got a RenderTexture "
+          "(its .texture or .depth_texture is one)");
+    } else {
+      image = texture_image(texture, {kName, "texture"});
+    }
     look.base_color_map.texture = image;
   }
   const glm::mat4 transform = pose.is_none() ? glm::mat4(1.0f) : matrix4(pose, {kName, "pose"});
@@ -101,6 +116,7 @@ int add_mesh(SceneHandle& handle, py::handle vertices, py::handle faces, py::han
   return change_scene(handle, [&](SceneHandle& h) {
     h.scene.add_object(std::move(mesh), std::move(look), transform, name);
     if (image) h.scene.textures.push_back(image);
+    if (render_texture) h.render_textures.push_back(render_texture);
     return static_cast<int>(h.scene.nodes.size());  // the new node's id: its index + 1
   });
 }
@@ -143,9 +159,10 @@ Adds a triangle mesh and returns its instance id (1, 2, ...).
 vertices: (N, 3) float; faces: (M, 3) integer indices into vertices, counter-clockwise seen
 from the front. Optional, one row per vertex: normals (N, 3); uvs (N, 2), v up (v = 0 is the
 bottom row of the texture); colors (N, 3) or (N, 4), float in [0, 1] (linear) or uint8 (sRGB).
-texture: an (H, W, 3) or (H, W, 4) uint8 image (sRGB, row 0 at the top), the material's base
-color map; needs uvs. material: a facet.Material (default: white Lambert). pose: a 4x4
-object-to-world matrix (default: identity). Arrays are copied.)doc")
+texture: an (H, W, 3) or (H, W, 4) uint8 image (sRGB, row 0 at the top; uvs repeat it), or a
+facet.Texture (a RenderTexture's, showing its latest frame; uvs outside [0, 1] take its edge),
+the material's base color map; needs uvs. material: a facet.Material (default: white
+Lambert). pose: a 4x4 object-to-world matrix (default: identity). Arrays are copied.)doc")
       .def(
           "add_light",
           [](SceneHandle& handle, py::handle value) {

@@ -20,7 +20,14 @@ def test_the_python_blocks_of_the_docs_run(tmp_path, monkeypatch):
     frame = namespace["frame"]
     assert frame["depth"][180, 320] > 0  # the cube is in the middle
     assert np.load("cube_depth.npy").shape == (360, 640)
-    assert {"cube.png", "python.png", "cube_depth.npy"} <= {p.name for p in tmp_path.iterdir()}
+    assert {"cube.png", "python.png", "cube_depth.npy", "monitor.png"} <= {
+        p.name for p in tmp_path.iterdir()
+    }
+    # The render texture's second frame, shown on the screen in the middle of the view.
+    monitor = namespace["monitor"].read_color()
+    tv = namespace["tv"]
+    assert tuple(tv[0, 0]) != (0, 0, 0, 255) and tv[180, 320, :3].max() > 0
+    assert np.abs(tv[180, 320].astype(int) - monitor[90, 160]).max() <= 8
     # facet.dask's job wrote its 8 frames.
     assert namespace["index"].rendered == [f"frame_{i:04d}" for i in range(8)]
     assert len(list((tmp_path / "orbit").iterdir())) == 16

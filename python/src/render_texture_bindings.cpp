@@ -24,12 +24,14 @@ ColorFormat color_format(const std::string& name) {
 
 std::shared_ptr<RenderTextureHandle> make_render_texture(int width, int height,
                                                          const std::string& format, bool mipmaps,
-                                                         bool depth, bool color) {
+                                                         bool depth, bool color,
+                                                         bool srgb_texture) {
   RenderTextureOptions options;
   options.format = color_format(format);
   options.mipmaps = mipmaps;
   options.depth = depth;
   options.color = color;
+  options.srgb_texture = srgb_texture;
   try {
     return std::make_shared<RenderTextureHandle>(width, height, options);
   } catch (const Error& e) {
@@ -113,13 +115,16 @@ color_format: 'uint8' (sRGB, as a PNG) or 'float' (linear RGBA). mipmaps: the te
 whole mip chain, refreshed after every frame, for meshes that show it minified (their sampling
 is trilinear); otherwise the image alone. depth: also keep the frame's depth (read_depth,
 depth_texture). color: False keeps the depth alone (with depth=True), as a shadow map is made.
+srgb_texture: for 'uint8', False makes the texture read each 8-bit code as code / 255 (data)
+rather than as sRGB: a frame of display values alone (the 'normals' shading) stores each value
+as its code, so later scenes sample the values it wrote.
 facet.Error when neither color nor depth is kept, or for a side outside 1 to )doc" +
                                                 std::to_string(Framebuffer::kMaxSize) + ".";
   py::class_<RenderTextureHandle, std::shared_ptr<RenderTextureHandle>>(m, "RenderTexture",
                                                                         render_texture_doc.c_str())
       .def(py::init(&make_render_texture), py::arg("width"), py::arg("height"), py::kw_only(),
            py::arg("color_format") = "uint8", py::arg("mipmaps") = false, py::arg("depth") = false,
-           py::arg("color") = true)
+           py::arg("color") = true, py::arg("srgb_texture") = true)
       .def_property_readonly("width", [](const RenderTextureHandle& h) { return h.target.width(); })
       .def_property_readonly("height",
                              [](const RenderTextureHandle& h) { return h.target.height(); })
@@ -134,6 +139,9 @@ facet.Error when neither color nor depth is kept, or for a side outside 1 to )do
                              [](const RenderTextureHandle& h) { return h.target.options().depth; })
       .def_property_readonly("color",
                              [](const RenderTextureHandle& h) { return h.target.options().color; })
+      .def_property_readonly(
+          "srgb_texture",
+          [](const RenderTextureHandle& h) { return h.target.options().srgb_texture; })
       .def_property_readonly(
           "texture",
           [](const std::shared_ptr<RenderTextureHandle>& h) {

@@ -86,6 +86,25 @@ def test_float_color_is_linear_and_samples_as_it_was_rendered():
     assert shown[5, 9] == pytest.approx((1.0, 0.5, 2.0, 1.0), abs=1e-5)
 
 
+def test_a_data_texture_reads_back_the_values_a_normals_frame_wrote():
+    # The normals shading shows a +Z normal as (0.5, 0.5, 1), stored as the codes 128, 128, 255.
+    scene = facet.Scene()
+    vertices, faces, _ = quad()
+    normals = np.tile(np.array([0, 0, 1], np.float32), (4, 1))
+    scene.add_mesh(vertices, faces, normals=normals, material=facet.Material(shading="normals"))
+    shown = {}
+    for srgb in (True, False):
+        target = facet.RenderTexture(8, 8, srgb_texture=srgb)
+        assert target.srgb_texture == srgb
+        facet.Renderer(8, 8).render_to(target, scene, flat_view())
+        assert tuple(target.read_color()[4, 4]) == (128, 128, 255, 255)
+        shown[srgb] = facet.Renderer(8, 8).render(screen(target.texture), flat_view(), ["color"],
+                                                  color_format="float")["color"][4, 4]
+    # As data: the code / 255 itself; as sRGB: the code decoded to linear light.
+    assert shown[False][:3] == pytest.approx((128 / 255, 128 / 255, 1.0), abs=1e-6)
+    assert shown[True][:3] == pytest.approx((0.2158605, 0.2158605, 1.0), abs=1e-6)
+
+
 def sphere_scene():
     vertices, faces = icosphere(2)
     scene = facet.Scene()

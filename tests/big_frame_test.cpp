@@ -1,6 +1,7 @@
-// Frames too big to reserve room for every triangle (Frame::max_triangle_region_bytes, 1 GiB:
-// a mesh of tens of millions of triangles) set their triangles up without regions, into the
-// chunks' overflow buffers: the image, depth and counts must be those of the ordinary path.
+// Frames too big to reserve room for every triangle (Frame::max_triangle_region_bytes, a
+// quarter of the machine's memory: meshes of about 100 million triangles) set their triangles
+// up without regions, into the chunks' overflow buffers: the image, depth and counts must be
+// those of the ordinary path.
 // Here the limit is lowered so that small scenes take that path.
 #include <gtest/gtest.h>
 

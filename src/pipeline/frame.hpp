@@ -270,6 +270,12 @@ struct GeometryChunk {
 
 // The frame: everything above, and the set-up primitives (in the chunks' regions and then
 // their overflow; only the chunks' sequences say which slots hold one).
+// The default of Frame::max_triangle_region_bytes: a quarter of the machine's memory (1 GiB if
+// unknown). Regions are reserved, and only the survivors' part is ever touched, so a frame
+// whose regions fit costs no memory for its culled triangles; past it the reservation itself
+// would fail (geometry.cpp).
+std::size_t triangle_region_budget();
+
 struct Frame : PrimitiveBuffer {
   int width = 0;
   int height = 0;
@@ -292,7 +298,7 @@ struct Frame : PrimitiveBuffer {
   std::size_t chunk_count = 0;
   // Frames whose triangles' regions of `triangles` and `planes` would take more bytes than this
   // set their triangles up without regions (geometry.cpp's plan_chunks; tests lower it).
-  std::size_t max_triangle_region_bytes = std::size_t{1} << 30;
+  std::size_t max_triangle_region_bytes = triangle_region_budget();
   // Geometry's parallel tasks: chunks [first_chunk, end_chunk), after transforming their draw's
   // vertices when `transform` says so (geometry.cpp).
   struct GeometryTask {

@@ -1,6 +1,8 @@
 // The geometry stage (see geometry.hpp).
 #include "pipeline/geometry/geometry.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
 
 #include "core/parallel.hpp"
@@ -25,6 +27,17 @@ void ensure_size(std::vector<T, Allocator>& v, std::size_t n) {
   if (v.capacity() < n) v.reserve(n + n / 2);
   v.resize(n);
 }
+
+}  // namespace
+
+std::size_t triangle_region_budget() {
+  const long pages = ::sysconf(_SC_PHYS_PAGES);
+  const long page_size = ::sysconf(_SC_PAGESIZE);
+  if (pages <= 0 || page_size <= 0) return std::size_t{1} << 30;
+  return static_cast<std::size_t>(pages) * static_cast<std::size_t>(page_size) / 4;
+}
+
+namespace {
 
 // Frame-wide totals of the chunks' regions (and then of what overflowed them).
 struct Totals {
@@ -77,10 +90,10 @@ Totals plan_chunks(Frame& frame) {
                     (sizeof(SetupTriangle) + sizeof(Plane) * draw.pipeline.varyings);
   }
   // Past the limit, each chunk's triangles go to its overflow buffer, appended to the frame's
-  // arrays once set up, so memory follows the triangles that survive culling (a few per pixel
-  // at most, once they are smaller than pixels) instead of the meshes' size: 100 million
-  // triangles would reserve tens of gigabytes. Frames of ordinary size keep their regions and
-  // skip the appending copy.
+  // arrays once set up: only the triangles that survive culling (a few per pixel at most, once
+  // they are smaller than pixels) take memory, where reserving regions for 100 million
+  // triangles, tens of gigabytes, fails. Below it the regions are reserved (their culled part
+  // is never touched, so costs no memory) and the appending copy is skipped.
   const bool triangle_regions = region_bytes <= frame.max_triangle_region_bytes;
   Totals totals;
   std::size_t count = 0;

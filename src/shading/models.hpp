@@ -69,15 +69,26 @@ struct UnlitShading : BatchForm<BatchModel::unlit>, SurfaceVertexBatch<kUnlitVar
 };
 
 // Unlit for a draw whose color is the material's alone (no vertex colors:
-// pipeline/record/pipeline_table.cpp decides): the texture coordinate is its only varying, and the
-// color is the material's exactly, not an interpolated constant that may be off in the last bit.
+// pipeline/record/pipeline_table.cpp decides), and the shadow passes' depth: the texture
+// coordinate is its only varying, and the color is the material's exactly, not an interpolated
+// constant that may be off in the last bit. Its vertices go through the batch form (copies),
+// so a draw inside the guard band keeps no clip-space vertices (80 bytes a vertex, in every
+// shadow pass).
 struct ConstantColorUnlitShading : BatchForm<BatchModel::constant_unlit> {
   static constexpr int kVaryings = 2;
   static constexpr int kNormalSlot = -1;
   static constexpr int kBaseColorTexcoord = kTexcoordSlot;
   static_assert(kTexcoordSlot + 2 <= kVaryings);
-  static void vertex(const VertexInput& in, const DrawUniforms&, float* out) {
-    store(out + kTexcoordSlot, in.texcoord);
+  static void vertex_batch(const DrawUniforms&, const VertexBatchInput& in,
+                           float (*out)[kVertexBatch]) {
+    for (int c = 0; c < 2; ++c) {
+      float* slot = out[kTexcoordSlot + c];
+      if (in.texcoords == nullptr) {
+        std::fill_n(slot, in.count, 0.0f);
+      } else {
+        for (int n = 0; n < in.count; ++n) slot[n] = in.texcoords[n][c];
+      }
+    }
   }
 };
 

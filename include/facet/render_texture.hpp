@@ -2,8 +2,10 @@
 // it (Renderer::finish(RenderTexture&), the same tiled pipeline as any frame, so the same image
 // for any thread count, tile size and SIMD target), and its texture() then holds that image:
 // a mirror's view, a screen inside the scene, a light's depth. The texture is one object for
-// the target's whole life, rewritten in place by each such finish(), so the materials that
-// hold it see every new image; its mip chain is filtered after each render when asked for.
+// the target's whole life, given each new image by each such finish() (the frame is rendered
+// into a framebuffer whose buffers then trade places with the texture's: no copy), so the
+// materials that hold it see every new image; its mip chain is filtered after each render when
+// asked for.
 #pragma once
 
 #include <memory>
@@ -44,7 +46,10 @@ class RenderTexture {
   int height() const { return framebuffer_.height(); }
   const RenderTextureOptions& options() const { return options_; }
 
-  // What Renderer::finish renders into (its extra outputs: none).
+  // What Renderer::finish renders into (its extra outputs: none). update() then moves the image
+  // into the textures by trading buffers, so afterwards the framebuffer holds an earlier image,
+  // for the next render to overwrite: what was rendered is read through texture() and
+  // depth_texture() (Texture::level(0), rows top first as here).
   Framebuffer& framebuffer() { return framebuffer_; }
   const Framebuffer& framebuffer() const { return framebuffer_; }
   // The color image, as a texture for materials (TextureMap) and environments; null for a
@@ -55,9 +60,10 @@ class RenderTexture {
   // Whether texture is one of this target's textures.
   bool owns(const Texture* texture) const;
 
-  // Copies the framebuffer into the textures and filters the color texture's mip chain, with
-  // oneTBB's threads (Renderer::finish calls it on the renderer's own). Renderer::finish calls
-  // it after rendering; call it after writing framebuffer() yourself. Allocates nothing.
+  // Moves the framebuffer's image into the textures, trading their buffers (no copy: the
+  // framebuffer then holds the textures' earlier image), and filters the color texture's mip
+  // chain with oneTBB's threads (Renderer::finish calls it, after rendering, on the renderer's
+  // own). After writing framebuffer() yourself, every pixel, call it. Allocates nothing.
   void update();
 
  private:

@@ -51,7 +51,7 @@ py::object read_color(const RenderTextureHandle& handle) {
     {
       py::gil_scoped_release release;
       std::shared_lock lock(handle.mutex);
-      rgba = target.framebuffer().rgba32f();
+      rgba = target.texture()->level(0).rgba32f;
     }
     return adopt(std::move(rgba), std::move(shape));
   }
@@ -59,7 +59,7 @@ py::object read_color(const RenderTextureHandle& handle) {
   {
     py::gil_scoped_release release;
     std::shared_lock lock(handle.mutex);
-    rgba = target.framebuffer().rgba8();
+    rgba = target.texture()->level(0).rgba8;
   }
   return adopt(std::move(rgba), std::move(shape));
 }
@@ -74,7 +74,7 @@ py::object read_depth(const RenderTextureHandle& handle) {
   {
     py::gil_scoped_release release;
     std::shared_lock lock(handle.mutex);
-    depth = target.framebuffer().depth();
+    depth = target.depth_texture()->level(0).r32f;
   }
   return adopt(std::move(depth), {target.height(), target.width()});
 }

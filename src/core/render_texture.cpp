@@ -2,27 +2,11 @@
 #include "facet/render_texture.hpp"
 
 #include <algorithm>
-#include <cstring>
+#include <utility>
 
-#include "core/parallel.hpp"
 #include "facet/error.hpp"
 
 namespace facet {
-namespace {
-
-// Copies count values in parallel chunks of 1 MiB: the copy is part of every frame that renders
-// into the target.
-template <class T>
-void parallel_copy(const T* from, T* to, std::size_t count) {
-  constexpr std::size_t kChunk = (std::size_t{1} << 20) / sizeof(T);
-  const int chunks = static_cast<int>((count + kChunk - 1) / kChunk);
-  parallel_tasks(chunks, default_workers(), [&](int chunk, int) {
-    const std::size_t first = static_cast<std::size_t>(chunk) * kChunk;
-    std::memcpy(to + first, from + first, std::min(kChunk, count - first) * sizeof(T));
-  });
-}
-
-}  // namespace
 
 RenderTexture::RenderTexture(int width, int height, const RenderTextureOptions& options)
     : options_(options),
@@ -49,18 +33,19 @@ bool RenderTexture::owns(const Texture* texture) const {
 }
 
 void RenderTexture::update() {
+  // The framebuffer's image and the textures' base levels trade buffers: no copy, and the
+  // framebuffer keeps buffers of the right size for the next render.
   if (color_texture_) {
     Texture::Level& color = color_texture_->base_level();
     if (options_.format == ColorFormat::rgba8_srgb) {
-      parallel_copy(framebuffer_.rgba8().data(), color.rgba8.data(), color.rgba8.size());
+      std::swap(color.rgba8, framebuffer_.rgba8());
     } else {
-      parallel_copy(framebuffer_.rgba32f().data(), color.rgba32f.data(), color.rgba32f.size());
+      std::swap(color.rgba32f, framebuffer_.rgba32f());
     }
     color_texture_->refresh_from_base_level();
   }
   if (!depth_texture_) return;
-  parallel_copy(framebuffer_.depth().data(), depth_texture_->base_level().r32f.data(),
-                framebuffer_.depth().size());
+  std::swap(depth_texture_->base_level().r32f, framebuffer_.depth());
   depth_texture_->refresh_from_base_level();
 }
 

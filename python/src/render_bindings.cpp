@@ -194,7 +194,8 @@ Camera frame_camera(const SceneHandle& scene, py::handle camera_value, const cha
 class PyRenderer {
  public:
   PyRenderer(int width, int height, int threads, int msaa, py::handle background,
-             py::handle exposure, const std::string& tone_mapping, int tile_size)
+             py::handle exposure, const std::string& tone_mapping, int tile_size, bool shadows,
+             int shadow_map_size, int shadow_cascades)
       : width_(width), height_(height) {
     if (width < 1 || height < 1 || width > Framebuffer::kMaxSize ||
         height > Framebuffer::kMaxSize) {
@@ -209,6 +210,9 @@ class PyRenderer {
     settings.clear_color = rgba(background, {"Renderer", "background"});
     settings.exposure = number(exposure, {"Renderer", "exposure"});
     settings.tone_mapping = tone_mapping_named(tone_mapping);
+    settings.shadows = shadows;  // the renderer checks the map size and cascades
+    settings.shadow_map_size = shadow_map_size;
+    settings.shadow_cascades = shadow_cascades;
     renderer_ = std::make_unique<Renderer>(settings);  // its errors say "renderer: ..."
   }
 
@@ -321,13 +325,20 @@ samples per pixel for anti-aliasing, 1 (off), 2, 4, 8 or 16; the color is resolv
 the other outputs take each pixel centre's surface. background: linear RGB(A) where nothing is
 drawn. exposure: in stops, colors are scaled by 2^exposure. tone_mapping: how colors brighter
 than white are shown, 'none' (clipped; a float color keeps them), 'pbr-neutral' (Khronos PBR
-Neutral) or 'aces' (ACES filmic); the background color is not mapped. tile_size: 16, 32, 64 or 128. The GIL is released while a frame renders,
-so renderers in several Python threads render at once; one renderer renders one frame at a
-time.)doc")
-      .def(py::init<int, int, int, int, py::handle, py::handle, const std::string&, int>(),
+Neutral) or 'aces' (ACES filmic); the background color is not mapped. tile_size: 16, 32, 64 or
+128. shadows: directional and spot lights cast shadows through shadow maps (each light whose
+casts_shadows is set, as every light made here is), shadow_map_size texels a side (16 to
+8192), shadow_cascades maps per directional light (docs/pipeline.md, "Shadows"). The GIL is
+released while a frame renders, so renderers in several Python threads render at once; one
+renderer renders one frame at a time.)doc")
+      .def(py::init<int, int, int, int, py::handle, py::handle, const std::string&, int, bool, int,
+                    int>(),
            py::arg("width"), py::arg("height"), py::arg("threads") = 0, py::arg("msaa") = 1,
            py::kw_only(), py::arg("background") = py::make_tuple(0.0, 0.0, 0.0, 1.0),
-           py::arg("exposure") = 0.0, py::arg("tone_mapping") = "none", py::arg("tile_size") = 64)
+           py::arg("exposure") = 0.0, py::arg("tone_mapping") = "none", py::arg("tile_size") = 64,
+           py::arg("shadows") = RenderSettings{}.shadows,
+           py::arg("shadow_map_size") = RenderSettings{}.shadow_map_size,
+           py::arg("shadow_cascades") = RenderSettings{}.shadow_cascades)
       .def("render", &PyRenderer::render, py::arg("scene"), py::arg("camera") = py::none(),
            py::arg("outputs") = py::make_tuple("color", "depth"), py::kw_only(),
            py::arg("color_format") = "uint8", py::arg("normal_space") = "world", R"doc(
@@ -361,6 +372,11 @@ its textures and its readbacks in other threads wait for it.)doc")
       .def_property_readonly("height", &PyRenderer::height)
       .def_property_readonly("threads", [](const PyRenderer& r) { return r.settings().threads; })
       .def_property_readonly("msaa", [](const PyRenderer& r) { return r.settings().msaa; })
+      .def_property_readonly("shadows", [](const PyRenderer& r) { return r.settings().shadows; })
+      .def_property_readonly("shadow_map_size",
+                             [](const PyRenderer& r) { return r.settings().shadow_map_size; })
+      .def_property_readonly("shadow_cascades",
+                             [](const PyRenderer& r) { return r.settings().shadow_cascades; })
       .def_property_readonly(
           "stats", [](const PyRenderer& r) { return stats_dict(r.stats()); },
           "What the last frame did: triangles in, culled, clipped, drawn, pixels shaded, and "

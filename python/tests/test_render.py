@@ -189,6 +189,31 @@ def test_lights_light_lambert_surfaces():
     assert point > 0 and spot > 0
 
 
+def test_shadows_darken_what_a_light_cannot_reach():
+    # A small square half a unit in front of a large one, lit straight along -Z: with shadows
+    # the large square is dark behind the small one and lit around it.
+    scene = facet.Scene()
+    big, faces, _ = quad(half=2)
+    scene.add_mesh(big, faces, material=facet.Material((0.8, 0.8, 0.8)))
+    small, _, _ = quad(z=0.5, half=0.5)
+    scene.add_mesh(small, faces, material=unlit((0, 0, 0)))  # black: only the big one is lit
+    scene.ambient = (0, 0, 0)
+    scene.add_light(facet.Light.directional((0, 0, -1)))
+    camera = facet.Camera.look_at((0.0, -3.0, 3.0), (0, 0, 0), (0, 1, 0), 60.0, 0.1, 100.0)
+
+    def image(**settings):
+        return facet.Renderer(64, 64, **settings).render(scene, camera, ["color"])["color"]
+
+    plain, shadowed = image(), image(shadows=True, shadow_map_size=256)
+    lit = plain[..., 0] > 0
+    darkened = lit & (shadowed[..., 0] < plain[..., 0] // 4)
+    kept = lit & (shadowed[..., 0] == plain[..., 0])
+    assert darkened.sum() > 20 and kept.sum() > 5 * darkened.sum()
+    assert facet.Renderer(8, 8, shadows=True).shadows
+    with pytest.raises(facet.Error, match="shadow"):
+        facet.Renderer(8, 8, shadows=True, shadow_map_size=0)
+
+
 def test_stats_of_the_last_frame():
     scene = facet.Scene()
     scene.add_mesh(*quad()[:2])

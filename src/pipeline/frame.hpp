@@ -268,14 +268,14 @@ struct GeometryChunk {
   PrimitiveCounts counts;
 };
 
-// The frame: everything above, and the set-up primitives (in the chunks' regions and then
-// their overflow; only the chunks' sequences say which slots hold one).
 // The default of Frame::max_triangle_region_bytes: a quarter of the machine's memory (1 GiB if
 // unknown). Regions are reserved, and only the survivors' part is ever touched, so a frame
 // whose regions fit costs no memory for its culled triangles; past it the reservation itself
 // would fail (geometry.cpp).
 std::size_t triangle_region_budget();
 
+// The frame: everything above, and the set-up primitives (in the chunks' regions and then
+// their overflow; only the chunks' sequences say which slots hold one).
 struct Frame : PrimitiveBuffer {
   int width = 0;
   int height = 0;

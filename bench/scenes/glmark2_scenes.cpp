@@ -66,6 +66,35 @@ Camera eye_camera(const View& view, float aspect) {
                          view.near_plane, view.far_plane);
 }
 
+// The scenes' lighting: no lights (the shading models carry glmark2's lights themselves) and no
+// fog (glmark2 has none, and the models' kernel applies none: glmark2_batch.hpp).
+Lighting glmark2_lighting() {
+  Lighting lighting;
+  lighting.lights.clear();
+  if (lighting.fog.mode != FogMode::none) throw Error("glmark2 scenes: the shaders have no fog");
+  return lighting;
+}
+
+// The models' turn at time t: Ry(θ), θ = 36°/s x t.
+glm::mat4 turn_at(double t) {
+  const float theta = static_cast<float>(glm::radians(kDegreesPerSecond * t));
+  return glm::rotate(glm::mat4(1.0f), theta, {0, 1, 0});
+}
+
+// glmark2's passes seen from a light: P . lookAt(light -> 0, up y), P the view's projection.
+Camera light_camera(const glm::vec3& light, const View& view, float aspect) {
+  return Camera::look_at(light, {0, 0, 0}, {0, 1, 0}, view.fov_y_degrees, aspect, view.near_plane,
+                         view.far_plane);
+}
+
+// A side of shadow's and refract's off-screen targets for a frame side: twice it (GL clamps a
+// side to GL_MAX_TEXTURE_SIZE, 16384 on llvmpipe; facet's limit, Framebuffer::kMaxSize, is
+// lower, reached above 4K).
+int target_side(int frame_side) { return std::min(2 * frame_side, Framebuffer::kMaxSize); }
+
+// glmark2's wrap for every texture: clamped to the edges (§1.5).
+Sampler clamped(Filter filter) { return {filter, Wrap::clamp_to_edge, Wrap::clamp_to_edge}; }
+
 // One glmark2 benchmark: one mesh, one draw per frame with the scene's own shading model.
 class Glmark2Scene : public BenchScene {
  public:
@@ -75,11 +104,7 @@ class Glmark2Scene : public BenchScene {
         view_(view),
         rotation_(rotation),
         material_(std::move(material)),
-        pipeline_(pipeline) {
-    lighting_.lights.clear();  // the shading models carry glmark2's lights themselves
-    // glmark2 has no fog, and the shading models' kernel applies none (glmark2_batch.hpp).
-    if (lighting_.fog.mode != FogMode::none) throw Error("glmark2 scenes: the shaders have no fog");
-  }
+        pipeline_(pipeline) {}
 
   void record(Renderer& renderer, double t, int width, int height) override {
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
@@ -99,7 +124,7 @@ class Glmark2Scene : public BenchScene {
   Rotation rotation_;
   Material material_;
   pipeline::DrawPipeline pipeline_;
-  Lighting lighting_;
+  Lighting lighting_ = glmark2_lighting();
 };
 
 // glmark2's material colours (MaterialDiffuse): white by default, blue in the shading scenes.
@@ -113,7 +138,7 @@ Material material_with(glm::vec4 diffuse) {
 TextureMap texture_map(const std::string& file, Filter filter) {
   TextureMap map;
   map.texture = load_texture(kTextures + file, false);
-  map.sampler = {filter, Wrap::clamp_to_edge, Wrap::clamp_to_edge};
+  map.sampler = clamped(filter);
   return map;
 }
 
@@ -195,10 +220,7 @@ class ShadowScene : public BenchScene {
         ground_(ground_quad()),
         view_(view),
         horse_material_(material_with(kWhite)) {
-    lighting_.lights.clear();  // the shading models carry glmark2's light themselves
-    if (lighting_.fog.mode != FogMode::none) throw Error("glmark2 scenes: the shaders have no fog");
-    ground_material_.base_color_map.sampler = {Filter::nearest, Wrap::clamp_to_edge,
-                                               Wrap::clamp_to_edge};
+    ground_material_.base_color_map.sampler = clamped(Filter::nearest);
     horse_pipeline_ = pipeline::make_pipeline<glmark2::ShadowHorseShading>();
     ground_pipeline_ = pipeline::make_pipeline<glmark2::ShadowGroundShading>();
   }
@@ -206,13 +228,9 @@ class ShadowScene : public BenchScene {
   void record(Renderer& renderer, double t, int width, int height) override {
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
     ensure_depth_map(width, height);
-    const float theta = static_cast<float>(glm::radians(kDegreesPerSecond * t));
-    const glm::mat4 turn = glm::rotate(glm::mat4(1.0f), theta, {0, 1, 0});
+    const glm::mat4 turn = turn_at(t);
     // 1. The light's view: P . lookAt((0, 3, 2) -> 0, up y) . Ry(θ), the horse not moved away.
-    renderer.begin_frame(
-        Camera::look_at(glmark2::kShadowLightPosition, {0, 0, 0}, {0, 1, 0}, view_.fov_y_degrees,
-                        aspect, view_.near_plane, view_.far_plane),
-        lighting_);
+    renderer.begin_frame(light_camera(glmark2::kShadowLightPosition, view_, aspect), lighting_);
     pipeline::draw_with_pipeline(renderer, horse_, horse_material_, turn, horse_pipeline_);
     renderer.finish(*depth_map_);
     // 2. The ground: MV_g = T(0, -0.8, P[2][3] - 0.5) . Rx(-85°) . S(2), P[2][3] = 2 f n / (n - f).
@@ -239,12 +257,10 @@ class ShadowScene : public BenchScene {
     return quad;
   }
 
-  // The depth map is 2W x 2H of the frame's target (GL clamps a side to GL_MAX_TEXTURE_SIZE,
-  // 16384 on llvmpipe; facet's limit, Framebuffer::kMaxSize, is lower, reached above 4K).
-  // Made again only when the target's size changes.
+  // The depth map is 2W x 2H of the frame's target (target_side), made again only when the
+  // target's size changes.
   void ensure_depth_map(int width, int height) {
-    const int map_width = std::min(2 * width, Framebuffer::kMaxSize);
-    const int map_height = std::min(2 * height, Framebuffer::kMaxSize);
+    const int map_width = target_side(width), map_height = target_side(height);
     if (depth_map_ && depth_map_->width() == map_width && depth_map_->height() == map_height) {
       return;
     }
@@ -260,7 +276,7 @@ class ShadowScene : public BenchScene {
   View view_;
   Material horse_material_, ground_material_;
   pipeline::DrawPipeline horse_pipeline_, ground_pipeline_;
-  Lighting lighting_;
+  Lighting lighting_ = glmark2_lighting();
   std::unique_ptr<RenderTexture> depth_map_;
 };
 
@@ -281,14 +297,10 @@ class RefractScene : public BenchScene {
  public:
   RefractScene(Mesh bunny, const View& view)
       : bunny_(std::make_shared<const Mesh>(std::move(bunny))), view_(view) {
-    lighting_.lights.clear();  // the shading models carry glmark2's light themselves
-    if (lighting_.fog.mode != FogMode::none) throw Error("glmark2 scenes: the shaders have no fog");
     back_material_.cull = CullMode::front;  // the back faces alone
     bunny_material_.base_color_map = texture_map("nasa1.png", Filter::bilinear);
-    bunny_material_.normal_map.sampler = {Filter::trilinear, Wrap::clamp_to_edge,
-                                          Wrap::clamp_to_edge};
-    bunny_material_.occlusion_map.sampler = {Filter::nearest, Wrap::clamp_to_edge,
-                                             Wrap::clamp_to_edge};
+    bunny_material_.normal_map.sampler = clamped(Filter::trilinear);
+    bunny_material_.occlusion_map.sampler = clamped(Filter::nearest);
     back_pipeline_ = pipeline::make_pipeline<glmark2::RefractBackNormalShading>();
     bunny_pipeline_ = pipeline::make_pipeline<glmark2::RefractShading>();
   }
@@ -296,14 +308,10 @@ class RefractScene : public BenchScene {
   void record(Renderer& renderer, double t, int width, int height) override {
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
     ensure_distance_map(width, height);
-    const float theta = static_cast<float>(glm::radians(kDegreesPerSecond * t));
-    const glm::mat4 turn = glm::rotate(glm::mat4(1.0f), theta, {0, 1, 0});
+    const glm::mat4 turn = turn_at(t);
     // 1. The back faces from the light: P . lookAt((1, 1, 2) -> 0, up y) . Ry(θ). The light is
     // nearer than the bunny's far side, so the near plane cuts into it.
-    renderer.begin_frame(
-        Camera::look_at(glmark2::kRefractLightPosition, {0, 0, 0}, {0, 1, 0}, view_.fov_y_degrees,
-                        aspect, view_.near_plane, view_.far_plane),
-        lighting_);
+    renderer.begin_frame(light_camera(glmark2::kRefractLightPosition, view_, aspect), lighting_);
     pipeline::draw_with_pipeline(renderer, bunny_, back_material_, turn, back_pipeline_);
     renderer.finish(*distance_map_);
     // 2. The bunny: T . Ry(θ).
@@ -314,12 +322,11 @@ class RefractScene : public BenchScene {
   }
 
  private:
-  // 2W x 2H, as the depth map of ShadowScene; its color is 8-bit data (the normals' codes read
-  // as they are, as GL's RGBA8 target), mipmapped, and its depth kept. Made again only when the
-  // target's size changes.
+  // 2W x 2H (target_side); its color is 8-bit data (the normals' codes read as they are, as
+  // GL's RGBA8 target), mipmapped, and its depth kept. Made again only when the target's size
+  // changes.
   void ensure_distance_map(int width, int height) {
-    const int map_width = std::min(2 * width, Framebuffer::kMaxSize);
-    const int map_height = std::min(2 * height, Framebuffer::kMaxSize);
+    const int map_width = target_side(width), map_height = target_side(height);
     if (distance_map_ && distance_map_->width() == map_width &&
         distance_map_->height() == map_height) {
       return;
@@ -335,7 +342,7 @@ class RefractScene : public BenchScene {
   View view_;
   Material back_material_, bunny_material_;
   pipeline::DrawPipeline back_pipeline_, bunny_pipeline_;
-  Lighting lighting_;
+  Lighting lighting_ = glmark2_lighting();
   std::unique_ptr<RenderTexture> distance_map_;
 };
 

@@ -26,10 +26,13 @@ ViewDepths seen_depths(const Camera& view, const WorldBox& scene);
 
 // A map fitted to depths [near, far] spans the frustum's width at `far`, so its texels, near
 // the camera, are about far / near times the size on screen they are at the far end. The
-// automatic count keeps that ratio within kCascadeDepthRatio per cascade over the depths the
-// camera sees of the scene (seen_depths): the fewest cascades n, at most kMaxShadowCascades,
-// with far <= near * kCascadeDepthRatio^n (each cascade's share of logarithmic steps). An
-// orthographic view's texels are the same size on screen at every depth: one map.
+// automatic count is the fewest cascades n, at most kMaxShadowCascades, with
+// far <= near * kCascadeDepthRatio^n over the depths the camera sees of the scene
+// (seen_depths): logarithmic slices of that range would each keep the ratio within
+// kCascadeDepthRatio. 32 keeps one map for the views one map serves well: a model seen whole
+// spans two or three times its nearest depth, objects on a ground seen from above it a few
+// tens; a world seen from the ground spans thousands. An orthographic view's texels are the
+// same size on screen at every depth: one map.
 inline constexpr float kCascadeDepthRatio = 32.0f;
 int automatic_cascade_count(const Camera& view, const WorldBox& scene);
 

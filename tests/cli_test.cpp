@@ -134,6 +134,8 @@ const BadCase kBadCases[] = {
     {"shadow_map_huge", "--shadow-map-size 100000 -o out.png"},
     {"shadow_map_word", "--shadow-map-size big -o out.png"},
     {"shadow_cascades_5", "--shadow-cascades 5 -o out.png"},
+    {"shadow_cascades_zero", "--shadow-cascades 0 -o out.png"},
+    {"shadow_cascades_word", "--shadow-cascades many -o out.png"},
     {"near_zero", "--near 0 -o out.png"},
     {"far_behind_near", "--far 0.05 -o out.png"},
     {"orthographic_fov", "--orthographic --fov 30 -o out.png"},
@@ -209,6 +211,31 @@ TEST(CliRender, AutoShadowMapSizeFollowsTheImage) {
     EXPECT_EQ(read_file(dir / "auto.png"), read_file(dir / "same.png")) << c.size;
     EXPECT_NE(read_file(dir / "auto.png"), read_file(dir / "half.png")) << c.size;
   }
+}
+
+// The default shadow cascades, auto, are chosen from the view: one map for the shapes (the same
+// image as --shadow-cascades 1), three for the islands seen from the ground (as 3, not as 1).
+TEST(CliRender, AutoShadowCascadesFollowTheView) {
+  fs::path dir = fresh_test_dir("facet_cli_", "shadow_cascades_auto");
+  auto render = [&](const char* scene, const std::string& cascades, const char* output) {
+    const CommandResult r = run_facet(dir, std::string("render --scene ") + scene +
+                                               " -q --size 320x180" + cascades + " -o " + output);
+    ASSERT_EQ(r.exit_code, 0) << scene << cascades << ": " << r.stderr_text;
+  };
+  render("shapes", "", "shapes_default.png");
+  render("shapes", " --shadow-cascades auto", "shapes_auto.png");
+  render("shapes", " --shadow-cascades 1", "shapes_1.png");
+  EXPECT_TRUE(read_file(dir / "shapes_default.png") == read_file(dir / "shapes_auto.png"))
+      << "shapes_default.png vs shapes_auto.png";
+  EXPECT_TRUE(read_file(dir / "shapes_auto.png") == read_file(dir / "shapes_1.png"))
+      << "shapes_auto.png vs shapes_1.png";
+  render("islands", "", "islands_auto.png");
+  render("islands", " --shadow-cascades 3", "islands_3.png");
+  render("islands", " --shadow-cascades 1", "islands_1.png");
+  EXPECT_TRUE(read_file(dir / "islands_auto.png") == read_file(dir / "islands_3.png"))
+      << "islands_auto.png vs islands_3.png";
+  EXPECT_FALSE(read_file(dir / "islands_auto.png") == read_file(dir / "islands_1.png"))
+      << "islands_auto.png vs islands_1.png";
 }
 
 // The error says what is wrong with the path: an output that is a directory, a model that is a

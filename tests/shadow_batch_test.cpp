@@ -1,14 +1,15 @@
 // Shadowed draws on every SIMD target, for random points and normals against random depth maps
-// of a sun with one or three cascades and of a spot light (points inside a map, partly over its
-// edges, outside it, beyond its far plane and behind the light): the shadow lookup
-// (shadow_batch-inl.h) gives the one-point definition's bits (tests/support/light_reference.hpp);
-// the models lit per pixel (shade_batch.cpp) shade a shadowed pixel as the unshadowed one under
-// the light scaled by that visibility; and the Gouraud models' vertex batch (vertex_batch.cpp)
-// gives the portable target's bits.
+// of a sun with one or three cascades (blending where they meet, or not) and of a spot light
+// (points inside a map, partly over its edges, outside it, beyond its far plane and behind the
+// light): the shadow lookup (shadow_batch-inl.h) gives the one-point definition's bits
+// (tests/support/light_reference.hpp); the models lit per pixel (shade_batch.cpp) shade a
+// shadowed pixel as the unshadowed one under the light scaled by that visibility; and the
+// Gouraud models' vertex batch (vertex_batch.cpp) gives the portable target's bits.
 #include <gtest/gtest.h>
 #include <hwy/targets.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <glm/gtc/matrix_transform.hpp>
@@ -159,9 +160,12 @@ glm::vec3 random_normal(std::mt19937& rng, const Caster& sun) {
   }
 }
 
-// The view the cascades split: their far depths at a third and two thirds of the points'.
+// The view the cascades split: their far depths at a third and two thirds of the points', and
+// (two times in three) blend bands over the last tenth to half of each slice but the last, drawn
+// from a generator of their own seeded by the split (so they leave `rng`'s draws to the rest of
+// the test as they are).
 void split_cascades(std::mt19937& rng, const std::vector<glm::vec3>& points, Caster& sun) {
-  std::uniform_real_distribution<float> any(-1.0f, 1.0f);
+  std::uniform_real_distribution<float> any(-1.0f, 1.0f), share(0.1f, 0.5f);
   sun.maps.eye = {any(rng) * 10.0f, 5.0f, any(rng) * 10.0f};
   sun.maps.forward = glm::normalize(-sun.maps.eye + glm::vec3(any(rng), 0.0f, any(rng)));
   std::vector<float> depths;
@@ -169,22 +173,38 @@ void split_cascades(std::mt19937& rng, const std::vector<glm::vec3>& points, Cas
   std::sort(depths.begin(), depths.end());
   for (int c = 0; c < sun.maps.count; ++c) {
     sun.maps.far_depth[c] = depths[(depths.size() - 1) * (c + 1) / sun.maps.count];
+    sun.maps.blend_from[c] = sun.maps.far_depth[c], sun.maps.blend_rate[c] = 0.0f;
+  }
+  std::mt19937 bands(std::bit_cast<std::uint32_t>(sun.maps.far_depth[0]));
+  if (sun.maps.count == 1 || bands() % 3 == 0) return;
+  for (int c = 0; c + 1 < sun.maps.count; ++c) {
+    const float slice_start = c == 0 ? depths.front() : sun.maps.far_depth[c - 1];
+    const float band = share(bands) * (sun.maps.far_depth[c] - slice_start);
+    if (!(band > 0.0f)) continue;
+    sun.maps.blend_from[c] = sun.maps.far_depth[c] - band;
+    sun.maps.blend_rate[c] = 1.0f / band;
   }
 }
 
 // What the scalar lookup gives the points: fully lit, fully shadowed or in between, from
-// footprints inside a map and partly over its edges. Each kind must be compared.
+// footprints inside a map and partly over its edges, and (a sun's cascades) in a blend band
+// between two maps that differ there. Each kind must be compared.
 struct Seen {
-  int lit = 0, shadowed = 0, partly = 0, partly_at_edge = 0;
+  int lit = 0, shadowed = 0, partly = 0, partly_at_edge = 0, blended = 0;
   void add(const ShadowMaps& maps, glm::vec3 p, glm::vec3 n) {
-    const float v = shadow_visibility(maps, p, shading::safe_normalize(n));
+    n = shading::safe_normalize(n);
+    const float v = shadow_visibility(maps, p, n);
     if (v == 1.0f) ++lit;
     if (v == 0.0f) ++shadowed;
-    if (v <= 0.0f || v >= 1.0f) return;
-    ++partly;
     const float depth = glm::dot(p - maps.eye, maps.forward);
     int c = 0;
     while (c + 1 < maps.count && depth > maps.far_depth[c]) ++c;
+    if (c + 1 < maps.count && maps.blend_rate[c] > 0.0f && depth > maps.blend_from[c] &&
+        shadow_visibility(maps.maps[c], p, n) != shadow_visibility(maps.maps[c + 1], p, n)) {
+      ++blended;
+    }
+    if (v <= 0.0f || v >= 1.0f) return;
+    ++partly;
     const glm::vec3 m = map_point(maps.maps[c], p);
     const float size = static_cast<float>(maps.maps[c].size);
     if (m.x < 2.0f || m.y < 2.0f || m.x >= size - 2.0f || m.y >= size - 2.0f) ++partly_at_edge;
@@ -313,6 +333,7 @@ void expect_shadowed_pixels_bits() {
   }
   EXPECT_GT(compared, 500 * static_cast<int>(targets.size()));
   seen.expect_each_kind();
+  EXPECT_GT(seen.blended, 20);
 }
 
 TEST(ShadowBatch, LambertShadesShadowedPixelsOnEveryTarget) {
@@ -391,6 +412,7 @@ void expect_vertexs_bits() {
   }
   EXPECT_GT(compared, 500 * static_cast<int>(targets.size()));
   seen.expect_each_kind();
+  EXPECT_GT(seen.blended, 20);
   EXPECT_GT(seen_spot.lit, 50);
   EXPECT_GT(seen_spot.shadowed, 50);
   EXPECT_GT(seen_spot.partly, 50);
@@ -403,12 +425,12 @@ TEST(ShadowBatch, GouraudVerticesGivePortableBitsOnEveryTarget) {
 
 // The lookup itself (shadow_batch-inl.h's ShadowVisibility) against shadow_visibility, point by
 // point on every SIMD target: a spot light's perspective map, points behind the light included,
-// and a sun's one or three cascades.
+// and a sun's one or three cascades, points in their blend bands included.
 TEST(ShadowBatch, LookupGivesShadowVisibilitysBitsOnEveryTarget) {
   const std::vector<std::int64_t> targets = simd_targets();
   ASSERT_GE(targets.size(), 2u);
   std::mt19937 rng(20261204);
-  Seen seen_spot;
+  Seen seen_sun, seen_spot;
   int behind = 0, compared = 0;
   for (std::int64_t target : targets) {
     ForcedTarget forced(target);
@@ -436,7 +458,10 @@ TEST(ShadowBatch, LookupGivesShadowVisibilitysBitsOnEveryTarget) {
             << hwy::TargetName(target) << ", round " << round << ", point " << n << ": "
             << visibility[n] << ", shadow_visibility gives " << expected;
         ++compared;
-        if (!spot) continue;
+        if (!spot) {
+          seen_sun.add(light.maps, points[n], normals[n]);
+          continue;
+        }
         seen_spot.add(light.maps, points[n], normals[n]);
         const glm::vec4 h = light.maps.maps[0].world_to_map * glm::vec4(points[n], 1.0f);
         if (!(h.w > 0.0f)) ++behind;
@@ -445,6 +470,7 @@ TEST(ShadowBatch, LookupGivesShadowVisibilitysBitsOnEveryTarget) {
   }
   EXPECT_GT(compared, 1000 * static_cast<int>(targets.size()));
   seen_spot.expect_each_kind();
+  EXPECT_GT(seen_sun.blended, 20);
   EXPECT_GT(behind, 20);
 }
 

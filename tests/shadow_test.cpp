@@ -318,7 +318,8 @@ TEST(Shadows, SameImageForAnyThreadsTilesAndSimdTarget) {
 }
 
 // The map size and the cascades are checked where the settings are: a size of 0 or 100000, or
-// 0 or 5 cascades, is refused with a message that names the setting and its range.
+// -1 or 5 cascades, is refused with a message that names the setting and its range; 0 cascades
+// is kAutoShadowCascades.
 TEST(Shadows, ShadowMapSizeOutOfRangeIsAClearError) {
   for (int size : {0, -5, 15, 8193, 100000}) {
     RenderSettings s;
@@ -332,7 +333,7 @@ TEST(Shadows, ShadowMapSizeOutOfRangeIsAClearError) {
       EXPECT_NE(message.find(std::to_string(size)), std::string::npos) << message;
     }
   }
-  for (int cascades : {0, -1, 5}) {
+  for (int cascades : {-1, 5, 100}) {
     RenderSettings s;
     s.shadow_cascades = cascades;
     try {
@@ -343,6 +344,10 @@ TEST(Shadows, ShadowMapSizeOutOfRangeIsAClearError) {
     }
   }
   RenderSettings fine;
+  fine.shadow_cascades = RenderSettings::kAutoShadowCascades;
+  EXPECT_NO_THROW(Renderer{fine});
+  fine.shadow_cascades = RenderSettings::kMaxShadowCascades;
+  EXPECT_NO_THROW(Renderer{fine});
   fine.shadow_map_size = 16;
   EXPECT_NO_THROW(Renderer{fine});
   fine.shadow_map_size = 8192;

@@ -148,12 +148,15 @@ int parse_shadow_map_size(const std::string& text, ImageSize image) {
   return size;
 }
 
-void check_shadow_cascades(int cascades) {
-  if (cascades < 1 || cascades > RenderSettings::kMaxShadowCascades) {
-    throw Error("--shadow-cascades: must be 1 to " +
-                std::to_string(RenderSettings::kMaxShadowCascades) + ", got " +
-                std::to_string(cascades));
+int parse_shadow_cascades(const std::string& text) {
+  if (text == "auto") return RenderSettings::kAutoShadowCascades;
+  int cascades = 0;
+  if (!parse_number(text, cascades) || cascades < 1 ||
+      cascades > RenderSettings::kMaxShadowCascades) {
+    throw Error("--shadow-cascades: expected auto or 1 to " +
+                std::to_string(RenderSettings::kMaxShadowCascades) + ", got '" + text + "'");
   }
+  return cascades;
 }
 
 }  // namespace facet::cli

@@ -44,7 +44,8 @@ bool parse_shadows(const std::string& text);
 // pixel, so shadows look alike at every image size and a thumbnail does not pay for a map many
 // times its size.
 int parse_shadow_map_size(const std::string& text, ImageSize image);
-// Throws unless --shadow-cascades is within RenderSettings' range.
-void check_shadow_cascades(int cascades);
+// --shadow-cascades: 1 .. RenderSettings::kMaxShadowCascades, or "auto":
+// RenderSettings::kAutoShadowCascades, the count chosen each frame from the view.
+int parse_shadow_cascades(const std::string& text);
 
 }  // namespace facet::cli

@@ -48,8 +48,10 @@ void add_shadow_options(CLI::App& cmd, ShadowOptions& o) {
   cmd.add_option("--shadow-cascades", o.cascades,
                  "Shadow maps per directional light, 1 .. " +
                      std::to_string(RenderSettings::kMaxShadowCascades) +
-                     ", each fitted to a slice of the view's depths: more keep shadows sharp near "
-                     "the camera over a large world (the islands), at a depth pass each")
+                     ", each fitted to a slice of the view's depths and blended into the next "
+                     "where they meet: more keep shadows sharp near the camera over a large world "
+                     "(the islands), at a depth pass each; or auto: chosen each frame from the "
+                     "view, 1 for a model seen whole, more as the depths seen span more")
       ->capture_default_str();
 }
 
@@ -57,8 +59,7 @@ void apply_shadow_options(const ShadowOptions& o, bool default_on, ImageSize ima
                           RenderSettings& settings) {
   settings.shadows = o.shadows ? parse_shadows(*o.shadows) : default_on;
   settings.shadow_map_size = parse_shadow_map_size(o.map_size, image);
-  check_shadow_cascades(o.cascades);
-  settings.shadow_cascades = o.cascades;
+  settings.shadow_cascades = parse_shadow_cascades(o.cascades);
 }
 
 CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {

@@ -19,7 +19,7 @@ namespace facet::cli {
 struct ShadowOptions {
   std::optional<std::string> shadows;  // "on" or "off"; unset: the command's default
   std::string map_size = "auto";       // texels or "auto" (parse_shadow_map_size)
-  int cascades = 1;                    // RenderSettings::shadow_cascades
+  std::string cascades = "auto";       // 1 .. 4 or "auto" (parse_shadow_cascades)
 };
 
 struct RenderOptions {

@@ -62,8 +62,13 @@ struct RenderSettings {
   // A directional light's maps: 1, or up to kMaxShadowCascades maps, each fitted to a slice of
   // the view's depths (nearer slices thinner), for views whose depths span too much for one
   // map's texels to be small near the camera (a world seen from the ground). Each is a pass.
+  // Where two slices meet, a band of the nearer one blends into the farther map, so no seam
+  // shows. kAutoShadowCascades (the default) chooses the count each frame from the view: 1 for
+  // a model seen whole, more as the depths the camera sees of the scene span more (up to 4 over
+  // a world seen from the ground); docs/pipeline.md, "Shadows".
   static constexpr int kMaxShadowCascades = 4;
-  int shadow_cascades = 1;
+  static constexpr int kAutoShadowCascades = 0;
+  int shadow_cascades = kAutoShadowCascades;
 };
 
 struct FrameStats {
@@ -104,7 +109,7 @@ class Renderer {
  public:
   // Throws facet::Error for invalid settings (negative threads, unsupported tile size or
   // sample count, a shadow map size outside [kMinShadowMapSize, Framebuffer::kMaxSize], shadow
-  // cascades outside [1, kMaxShadowCascades]).
+  // cascades neither kAutoShadowCascades nor in [1, kMaxShadowCascades]).
   explicit Renderer(const RenderSettings& settings = {});
   ~Renderer();
   Renderer(const Renderer&) = delete;

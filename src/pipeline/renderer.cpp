@@ -36,10 +36,12 @@ Renderer::Renderer(const RenderSettings& settings) {
                 std::to_string(Framebuffer::kMaxSize) + " texels, got " + std::to_string(map));
   }
   const int cascades = settings.shadow_cascades;
-  if (cascades < 1 || cascades > RenderSettings::kMaxShadowCascades) {
+  if (cascades != RenderSettings::kAutoShadowCascades &&
+      (cascades < 1 || cascades > RenderSettings::kMaxShadowCascades)) {
     throw Error("renderer: shadow cascades must be 1 to " +
-                std::to_string(RenderSettings::kMaxShadowCascades) + ", got " +
-                std::to_string(cascades));
+                std::to_string(RenderSettings::kMaxShadowCascades) + ", or " +
+                std::to_string(RenderSettings::kAutoShadowCascades) +
+                " (chosen from the view), got " + std::to_string(cascades));
   }
   const int n = settings.msaa;
   if (n != 1 && n != 2 && n != 4 && n != 8 && n != 16) {

@@ -234,7 +234,8 @@ HWY_INLINE BatchV MapShadow(const ShadowMap& map, const Vec3V& p, const Vec3V& n
 
 // The share of the light reaching points p of unit normals n in the lanes of `wanted`, 1 in the
 // others: each lane's cascade is the first whose far depth its view depth does not pass (the
-// last if it passes them all), each cascade a lane picks looked up for its lanes. Out of
+// last if it passes them all), each cascade a lane picks looked up for its lanes; the lanes in
+// a cascade's blend band look the next cascade up too and move toward it (ShadowMaps). Out of
 // line (and of each file's own), so that the kernels' loops keep their registers for the draws
 // without shadows.
 static HWY_NOINLINE BatchV ShadowVisibility(const ShadowMaps& maps, const Vec3V& p, const Vec3V& n,
@@ -262,8 +263,21 @@ static HWY_NOINLINE BatchV ShadowVisibility(const ShadowMaps& maps, const Vec3V&
   }
   for (int i = 0; i < maps.count; ++i) {
     if (hn::AllFalse(d, in_cascade[i])) continue;
-    visibility =
-        hn::IfThenElse(in_cascade[i], MapShadow(maps.maps[i], p, n, in_cascade[i]), visibility);
+    BatchV v = MapShadow(maps.maps[i], p, n, in_cascade[i]);
+    if (i + 1 < maps.count && maps.blend_rate[i] > 0.0f) {
+      // std::min(into, 1) (which keeps a NaN, as Min need not), and Mul then Add, not MulAdd:
+      // every target rounds alike.
+      const BatchV one = hn::Set(d, 1.0f);
+      const BatchV into =
+          hn::Mul(hn::Sub(depth, hn::Set(d, maps.blend_from[i])), hn::Set(d, maps.blend_rate[i]));
+      const BatchV t = hn::IfThenElse(hn::Lt(one, into), one, into);
+      const BatchMask blending = hn::And(in_cascade[i], hn::Gt(t, hn::Zero(d)));
+      if (!hn::AllFalse(d, blending)) {
+        const BatchV next = MapShadow(maps.maps[i + 1], p, n, blending);
+        v = hn::IfThenElse(blending, hn::Add(v, hn::Mul(hn::Sub(next, v), t)), v);
+      }
+    }
+    visibility = hn::IfThenElse(in_cascade[i], v, visibility);
   }
   return visibility;
 }

@@ -80,6 +80,12 @@ struct ShadowMaps {
   ShadowMap maps[kMaxShadowCascades];
   // Map i serves view depths up to far_depth[i]; the last serves everything beyond too.
   float far_depth[kMaxShadowCascades] = {};
+  // Map i's blend band, from view depth blend_from[i] to far_depth[i]: there a point's
+  // visibility is map i's moved toward map i + 1's by t = min((depth - blend_from[i]) *
+  // blend_rate[i], 1), v + (v_next - v) * t (equal visibilities stay exactly theirs), so it
+  // does not jump where the slices meet. blend_rate[i] = 0: no band (the last map's).
+  float blend_from[kMaxShadowCascades] = {};
+  float blend_rate[kMaxShadowCascades] = {};
   glm::vec3 eye{0.0f}, forward{0.0f, 0.0f, -1.0f};  // the view depth is (p - eye) . forward
 };
 

@@ -118,12 +118,17 @@ inline float shadow_visibility(const ShadowMap& map, glm::vec3 p, glm::vec3 n) {
   return seen == 0 ? 0.0f : lit * (1.0f / 9.0f);
 }
 
-// The share of the light reaching p (normal n) from the map that serves p's view depth.
+// The share of the light reaching p (normal n) from the map that serves p's view depth, in
+// that map's blend band moved toward the next map's by how far into the band p is.
 inline float shadow_visibility(const ShadowMaps& maps, glm::vec3 p, glm::vec3 n) {
   const float depth = glm::dot(p - maps.eye, maps.forward);
   int i = 0;
   while (i + 1 < maps.count && depth > maps.far_depth[i]) ++i;
-  return shadow_visibility(maps.maps[i], p, n);
+  const float v = shadow_visibility(maps.maps[i], p, n);
+  if (i + 1 == maps.count || !(maps.blend_rate[i] > 0.0f)) return v;
+  const float t = std::min((depth - maps.blend_from[i]) * maps.blend_rate[i], 1.0f);
+  if (!(t > 0.0f)) return v;
+  return v + (shadow_visibility(maps.maps[i + 1], p, n) - v) * t;
 }
 
 }  // namespace facet::test

@@ -8,11 +8,6 @@
 namespace facet::pipeline {
 namespace {
 
-glm::vec3 box_corner(const WorldBox& box, int corner) {
-  return {(corner & 1) ? box.high.x : box.low.x, (corner & 2) ? box.high.y : box.low.y,
-          (corner & 4) ? box.high.z : box.low.z};
-}
-
 // An interval on one axis; empty when low > high.
 struct Span {
   float low = 1e30f, high = -1e30f;
@@ -38,7 +33,7 @@ std::optional<Camera> fit_directional_shadow(const Camera& view, glm::vec3 trave
   Span scene_x, scene_y, scene_z, depths;
   const glm::mat4 camera_view = view.view();
   for (int corner = 0; corner < 8; ++corner) {
-    const glm::vec3 p = box_corner(scene, corner);
+    const glm::vec3 p = scene.corner(corner);
     scene_x.add(glm::dot(p, right)), scene_y.add(glm::dot(p, up));
     scene_z.add(glm::dot(p, forward));
     depths.add(-(camera_view * glm::vec4(p, 1.0f)).z);
@@ -87,31 +82,6 @@ std::optional<Camera> fit_directional_shadow(const Camera& view, glm::vec3 trave
   return light;
 }
 
-ViewDepths scene_depths(const Camera& view, const WorldBox& scene) {
-  if (scene.empty()) return {1.0f, 0.0f};
-  Span depths;
-  const glm::mat4 camera_view = view.view();
-  for (int corner = 0; corner < 8; ++corner) {
-    depths.add(-(camera_view * glm::vec4(box_corner(scene, corner), 1.0f)).z);
-  }
-  return {std::max(depths.low, view.near_plane), std::min(depths.high, view.far_plane)};
-}
-
-void cascade_splits(ViewDepths depths, int count, float* split) {
-  constexpr float kLogarithmic = 0.8f;
-  // A perspective view's nearest depth is positive; an orthographic one's may be 0, where the
-  // logarithmic steps would all be 0: start those at a thousandth of the far depth.
-  const float near = std::max(depths.nearest, depths.farthest * 1e-3f), far = depths.farthest;
-  split[0] = depths.nearest;
-  for (int i = 1; i < count; ++i) {
-    const float t = static_cast<float>(i) / static_cast<float>(count);
-    const float logarithmic = near * std::pow(far / near, t);
-    const float even = depths.nearest + (far - depths.nearest) * t;
-    split[i] = kLogarithmic * logarithmic + (1.0f - kLogarithmic) * even;
-  }
-  split[count] = far;
-}
-
 std::optional<Camera> fit_spot_shadow(glm::vec3 position, glm::vec3 travel, float outer_degrees,
                                       const WorldBox& scene, int map_size) {
   if (scene.empty() || !(glm::length(travel) > 0.0f)) return std::nullopt;
@@ -120,7 +90,7 @@ std::optional<Camera> fit_spot_shadow(glm::vec3 position, glm::vec3 travel, floa
   // thousandth of far, which keeps the depths' precision at the far end within a texel).
   float farthest = 0.0f;
   for (int corner = 0; corner < 8; ++corner) {
-    farthest = std::max(farthest, glm::length(box_corner(scene, corner) - position));
+    farthest = std::max(farthest, glm::length(scene.corner(corner) - position));
   }
   const glm::vec3 outside = glm::max(glm::max(scene.low - position, position - scene.high), 0.0f);
   const float far_plane = farthest * 1.01f;

@@ -17,6 +17,10 @@ struct WorldBox {
   glm::vec3 high{-1e30f};
   bool empty() const { return !(low.x <= high.x && low.y <= high.y && low.z <= high.z); }
   void add(glm::vec3 p) { low = glm::min(low, p), high = glm::max(high, p); }
+  // Corner i: bit 0 picks high.x over low.x, bit 1 high.y, bit 2 high.z.
+  glm::vec3 corner(int i) const {
+    return {(i & 1) ? high.x : low.x, (i & 2) ? high.y : low.y, (i & 4) ? high.z : low.z};
+  }
 };
 
 // The orthographic camera of a map of map_size texels a side for a light travelling along
@@ -27,19 +31,6 @@ struct WorldBox {
 // scene box, so casters outside the camera's view still cast.
 std::optional<Camera> fit_directional_shadow(const Camera& view, glm::vec3 travel,
                                              const WorldBox& scene, int map_size);
-
-// The view depths of `scene` (the box around every draw) within the camera's near and far
-// planes: where a sun's cascades split. Empty (nearest > farthest) when the scene lies outside.
-struct ViewDepths {
-  float nearest, farthest;
-};
-ViewDepths scene_depths(const Camera& view, const WorldBox& scene);
-
-// Where `count` cascades over `depths` meet: split[0] = nearest, split[count] = farthest, and
-// between them the practical split scheme (Zhang et al., "Parallel-split shadow maps"): a blend
-// of logarithmic steps (each map's texels the same size on screen) and even ones, weighted
-// 0.8 toward logarithmic. split holds count + 1 values.
-void cascade_splits(ViewDepths depths, int count, float* split);
 
 // The perspective camera of a spot light's map: from `position` along `travel`, its field of
 // view the cone's (outer_degrees each side) plus two texels of margin, at most 160 degrees (a

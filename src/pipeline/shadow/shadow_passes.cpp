@@ -10,6 +10,7 @@
 #include "pipeline/record/draw_culling.hpp"
 #include "pipeline/record/pipeline_table.hpp"
 #include "pipeline/renderer_impl.hpp"
+#include "pipeline/shadow/cascades.hpp"
 #include "pipeline/shadow/shadow_fit.hpp"
 #include "shading/models.hpp"
 
@@ -61,33 +62,46 @@ shading::ShadowMap shadow_map_of(const Camera& light, const Framebuffer& target)
 }
 
 // The views of a light's maps this frame (none: no shadows from it): a spot's one, a sun's
-// one per cascade, fitted to its slice of the view's depths. Returns how many.
+// one per cascade (`cascades` of them), fitted to its slice of the view's depths, each but the
+// first from the start of the blend band of the slice before (cascades.hpp). Sets `maps`' far
+// depths and blend bands; returns how many maps.
 int shadow_views(const Light& light, const Camera& camera, const pipeline::WorldBox& scene,
-                 const RenderSettings& settings, Camera* views, float* far_depths) {
-  const int size = settings.shadow_map_size;
+                 int cascades, int size, Camera* views, shading::ShadowMaps& maps) {
   if (!light.casts_shadows) return 0;
   if (light.type == LightType::spot) {
     const std::optional<Camera> view = pipeline::fit_spot_shadow(
         light.position, light.direction, light.outer_cone_degrees, scene, size);
     if (!view) return 0;
-    views[0] = *view, far_depths[0] = camera.far_plane;
+    views[0] = *view, maps.far_depth[0] = camera.far_plane;
+    maps.blend_from[0] = camera.far_plane, maps.blend_rate[0] = 0.0f;
     return 1;
   }
   if (light.type != LightType::directional) return 0;  // point lights would need six maps
   const pipeline::ViewDepths depths = pipeline::scene_depths(camera, scene);
   if (!(depths.nearest <= depths.farthest)) return 0;
   float split[shading::kMaxShadowCascades + 1];
-  pipeline::cascade_splits(depths, settings.shadow_cascades, split);
+  pipeline::cascade_splits(depths, cascades, split);
   int count = 0;
-  for (int c = 0; c < settings.shadow_cascades; ++c) {
+  int slice_of[shading::kMaxShadowCascades];  // the slice each map kept serves
+  for (int c = 0; c < cascades; ++c) {
     Camera slice = camera;
-    slice.near_plane = split[c], slice.far_plane = split[c + 1];
+    slice.near_plane = c == 0 ? split[0] : pipeline::cascade_blend_start(split, c - 1);
+    slice.far_plane = split[c + 1];
     if (!(slice.far_plane > slice.near_plane)) slice.far_plane = camera.far_plane;
     const std::optional<Camera> view =
         pipeline::fit_directional_shadow(slice, light.direction, scene, size);
     if (!view) continue;  // the slice sees nothing of the scene
-    views[count] = *view, far_depths[count] = split[c + 1];
+    views[count] = *view, maps.far_depth[count] = split[c + 1], slice_of[count] = c;
     ++count;
+  }
+  // A map blends into the next where that serves the next slice (and so holds the band); the
+  // last, and one whose next slice saw nothing, have no band.
+  for (int k = 0; k < count; ++k) {
+    maps.blend_from[k] = maps.far_depth[k], maps.blend_rate[k] = 0.0f;
+    if (k + 1 == count || slice_of[k + 1] != slice_of[k] + 1) continue;
+    const float from = pipeline::cascade_blend_start(split, slice_of[k]);
+    if (!(maps.far_depth[k] > from)) continue;
+    maps.blend_from[k] = from, maps.blend_rate[k] = 1.0f / (maps.far_depth[k] - from);
   }
   return count;
 }
@@ -137,12 +151,14 @@ void Renderer::Impl::run_shadow_passes() {
   lighting.environment.image_based_lighting = false;
   depth_only_pass = true;
   const int size = settings.shadow_map_size;
+  const int cascades = color_settings.shadow_cascades == RenderSettings::kAutoShadowCascades
+                           ? pipeline::automatic_cascade_count(color_camera, scene)
+                           : color_settings.shadow_cascades;
   for (std::size_t i = 0; i < lighting.lights.size(); ++i) {
     Camera views[shading::kMaxShadowCascades];
-    float far_depths[shading::kMaxShadowCascades];
-    const int count =
-        shadow_views(lighting.lights[i], color_camera, scene, color_settings, views, far_depths);
     LightShadow& shadow = shadows[i];
+    const int count =
+        shadow_views(lighting.lights[i], color_camera, scene, cascades, size, views, shadow.maps);
     for (int c = 0; c < count; ++c) {
       std::optional<Framebuffer>& target = shadow.targets[c];
       if (!target || target->width() != size) {
@@ -162,7 +178,6 @@ void Renderer::Impl::run_shadow_passes() {
       }
       run(*target);
       shadow.maps.maps[c] = shadow_map_of(views[c], *target);
-      shadow.maps.far_depth[c] = far_depths[c];
     }
     shadow.maps.count = count;
     shadow.maps.eye = color_camera.eye;

@@ -328,7 +328,8 @@ than white are shown, 'none' (clipped; a float color keeps them), 'pbr-neutral' 
 Neutral) or 'aces' (ACES filmic); the background color is not mapped. tile_size: 16, 32, 64 or
 128. shadows: directional and spot lights cast shadows through shadow maps (each light whose
 casts_shadows is set, as every light made here is), shadow_map_size texels a side (16 to
-8192), shadow_cascades maps per directional light (docs/pipeline.md, "Shadows"). The GIL is
+8192), shadow_cascades maps per directional light, 1 to 4, or 0 (the default) to choose them
+from the view (docs/pipeline.md, "Shadows"). The GIL is
 released while a frame renders, so renderers in several Python threads render at once; one
 renderer renders one frame at a time.)doc")
       .def(py::init<int, int, int, int, py::handle, py::handle, const std::string&, int, bool, int,

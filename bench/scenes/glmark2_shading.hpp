@@ -131,6 +131,10 @@ struct BumpPolyShading : InterpolatedNormal,
                          BatchForm<BatchShader::bump_poly>,
                          shading::DisplayReferred {};
 
+// glmark2's bias matrix B (shadow, refract): clip space's [-1, 1] to [0, 1] on x, y and z.
+inline const glm::mat4 kBias{0.5f, 0.0f, 0.0f, 0.0f, 0.0f, 0.5f, 0.0f, 0.0f,
+                             0.0f, 0.0f, 0.5f, 0.0f, 0.5f, 0.5f, 0.5f, 1.0f};
+
 // shadow's light (0, 3, 2), a direction here as in light-basic: normalize(0, 3, 2).
 inline const glm::vec3 kShadowLightDirection{0.0f, 0.83205029f, 0.55470020f};
 inline const glm::vec3 kShadowLightPosition{0.0f, 3.0f, 2.0f};
@@ -162,12 +166,10 @@ struct ShadowGroundShading : BatchForm<BatchShader::shadow_ground>, shading::Dis
   static constexpr float kDepthBias = 0.1505f;
   static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
     const glm::mat4 projection = u.model_view_projection * glm::inverse(u.model);
-    const glm::mat4 bias{0.5f, 0.0f, 0.0f, 0.0f, 0.0f, 0.5f, 0.0f, 0.0f,
-                         0.0f, 0.0f, 0.5f, 0.0f, 0.5f, 0.5f, 0.5f, 1.0f};
     const glm::mat4 light_view =
         glm::lookAt(kShadowLightPosition, glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
     shading::store(
-        out, bias * projection * light_view * glm::vec4(in.position.x, in.position.y, 0.0f, 1.0f));
+        out, kBias * projection * light_view * glm::vec4(in.position.x, in.position.y, 0.0f, 1.0f));
   }
 };
 
@@ -215,10 +217,8 @@ struct RefractShading : BatchForm<BatchShader::refract>, shading::DisplayReferre
   static constexpr int kMapCoord = 6;
   static void vertex_batch(const DrawUniforms& u, const shading::VertexBatchInput& in,
                            float (*out)[shading::kVertexBatch]) {
-    const glm::mat4 bias{0.5f, 0.0f, 0.0f, 0.0f, 0.0f, 0.5f, 0.0f, 0.0f,
-                         0.0f, 0.0f, 0.5f, 0.0f, 0.5f, 0.5f, 0.5f, 1.0f};
     const glm::mat4 light_matrix =
-        bias * u.frame->projection *
+        kBias * u.frame->projection *
         glm::lookAt(kRefractLightPosition, glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
     for (int n = 0; n < in.count; ++n) {
       const glm::vec4 p(in.positions[n], 1.0f);

@@ -192,7 +192,8 @@ struct RefractBackNormalShading : BatchForm<BatchShader::refract_back_normal>,
   }
 };
 
-// light-refract.vert/.frag (refract's bunny). Varyings: the eye normal N, the eye position P
+// light-refract.vert/.frag (refract's bunny). Varyings (world space is eye space: the scene's
+// view is the identity): the eye normal N, the eye position P
 // (ModelView x p) and MapCoord = B P_f lookAt((1, 1, 2) -> 0, up y) x p of the OBJECT-space p
 // (B the bias matrix, P_f the frame's projection; the bunny's turn is not in it, as in glmark2).
 // The material's maps carry the shader's three textures: base_color_map the image (nasa1,

@@ -63,7 +63,8 @@ class RenderTexture {
   // Moves the framebuffer's image into the textures, trading their buffers (no copy: the
   // framebuffer then holds the textures' earlier image), and filters the color texture's mip
   // chain with oneTBB's threads (Renderer::finish calls it, after rendering, on the renderer's
-  // own). After writing framebuffer() yourself, every pixel, call it. Allocates nothing.
+  // own). After writing framebuffer() yourself, every pixel, call it, once per image: a second
+  // call trades the buffers back. Allocates nothing.
   void update();
 
  private:

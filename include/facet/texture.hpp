@@ -87,9 +87,10 @@ class Texture {
  private:
   friend class RenderTexture;
   Texture() = default;
-  // For RenderTexture: a texture whose base level its target's frames are copied into, with
-  // the whole mip chain or the base level alone; refresh_from_base_level() then filters the
-  // levels above it and decodes the linear copy, in place, allocating nothing.
+  // For RenderTexture: a texture whose base level trades buffers with its target's framebuffer
+  // after each frame, with the whole mip chain or the base level alone;
+  // refresh_from_base_level() then filters the levels above it and decodes the linear copy, in
+  // place, allocating nothing.
   static std::shared_ptr<Texture> render_target(int width, int height, Format format, bool srgb,
                                                 bool mipmaps, std::string name);
   Level& base_level() { return levels_[0]; }

@@ -3,7 +3,7 @@
 // sample (Scene.add_mesh's texture). Readbacks copy the image under the target's lock
 // (RenderTextureHandle) with the GIL released, then hand the copy over as an array.
 #include <memory>
-#include <mutex>
+#include <shared_mutex>
 #include <string>
 #include <vector>
 
@@ -32,6 +32,9 @@ std::shared_ptr<RenderTextureHandle> make_render_texture(int width, int height,
   options.depth = depth;
   options.color = color;
   options.srgb_texture = srgb_texture;
+  if (!color && !depth) {
+    throw Error("RenderTexture: keeps neither color nor depth (color=False needs depth=True)");
+  }
   try {
     return std::make_shared<RenderTextureHandle>(width, height, options);
   } catch (const Error& e) {

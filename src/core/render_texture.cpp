@@ -1,7 +1,6 @@
 // RenderTexture (see facet/render_texture.hpp): a framebuffer and the textures made of it.
 #include "facet/render_texture.hpp"
 
-#include <algorithm>
 #include <utility>
 
 #include "facet/error.hpp"

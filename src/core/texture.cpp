@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -202,6 +203,7 @@ void downsample(const Texture::Level& src, const Reader& read, const LevelWriter
 // channels r, b and g, a are summed in 16-bit lanes, which hold the largest sum (1022) with
 // room to spare.
 void downsample_unorm8(const Texture::Level& src, Texture::Level& dst) {
+  static_assert(std::endian::native == std::endian::little, "texels loaded as 64-bit words");
   constexpr std::uint64_t kLanes = 0x00FF00FF00FF00FFull;
   const std::size_t src_stride = static_cast<std::size_t>(src.width) * 4;
   for_each_band(dst.height, [&](int first_row, int end_row) {

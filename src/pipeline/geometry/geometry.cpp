@@ -124,6 +124,22 @@ Totals plan_chunks(Frame& frame) {
 // Appends what overflowed the chunks' regions after all the regions, in chunk order, and
 // rewrites the sequence entries that pointed into the overflow buffers. Also sums the counts.
 void finish_chunks(Frame& frame, Totals end) {
+  // The arrays grow once, to hold every chunk's overflow (a frame without regions puts all its
+  // triangles there).
+  Totals all = end;
+  for (std::size_t k = 0; k < frame.chunk_count; ++k) {
+    const PrimitiveBuffer& o = frame.chunks[k].overflow;
+    all.triangles += o.triangles.size();
+    all.planes += o.planes.size();
+    all.lines += o.lines.size();
+  }
+  if (all.triangles >= kMaxPrimitiveIndex || all.lines >= kMaxPrimitiveIndex ||
+      all.planes > UINT32_MAX) {
+    throw Error("renderer: too many primitives in one frame");
+  }
+  ensure_size(frame.triangles, all.triangles);
+  ensure_size(frame.planes, all.planes);
+  ensure_size(frame.lines, all.lines);
   std::size_t sequence_at = 0;
   for (std::size_t k = 0; k < frame.chunk_count; ++k) {
     GeometryChunk& chunk = frame.chunks[k];
@@ -136,14 +152,6 @@ void finish_chunks(Frame& frame, Totals end) {
     frame.stats.points_drawn += chunk.points.used;
     const PrimitiveBuffer& o = chunk.overflow;
     if (o.triangles.empty() && o.lines.empty()) continue;
-    if (end.triangles + o.triangles.size() >= kMaxPrimitiveIndex ||
-        end.lines + o.lines.size() >= kMaxPrimitiveIndex ||
-        end.planes + o.planes.size() > UINT32_MAX) {
-      throw Error("renderer: too many primitives in one frame");
-    }
-    ensure_size(frame.triangles, end.triangles + o.triangles.size());
-    ensure_size(frame.planes, end.planes + o.planes.size());
-    ensure_size(frame.lines, end.lines + o.lines.size());
     for (std::size_t i = 0; i < o.triangles.size(); ++i) {
       SetupTriangle t = o.triangles[i];
       t.varying_planes += static_cast<std::uint32_t>(end.planes);

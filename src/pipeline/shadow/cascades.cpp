@@ -10,12 +10,17 @@
 namespace facet::pipeline {
 namespace {
 
-// A convex polygon clipped by planes: a quad gains at most one vertex per plane, and it is
-// clipped by six (4 + 6).
+// A convex polygon clipped by planes: in exact arithmetic a quad gains at most one vertex per
+// plane, and it is clipped by six (4 + 6). Rounding can make a face lying almost in a plane
+// alternate sides and gain more; vertices past the room are dropped (only the depths' extremes
+// are wanted, and those vertices lie on the plane, by the ones kept).
 struct Polygon {
   static constexpr int kMaxVertices = 10;
   glm::vec3 v[kMaxVertices];
   int count = 0;
+  void add(const glm::vec3& p) {
+    if (count < kMaxVertices) v[count++] = p;
+  }
 };
 
 // The part of `polygon` where dot(plane, (p, 1)) >= 0 (Sutherland-Hodgman, one plane).
@@ -24,8 +29,8 @@ Polygon clip(const Polygon& polygon, glm::vec4 plane) {
   for (int i = 0; i < polygon.count; ++i) {
     const glm::vec3 a = polygon.v[i], b = polygon.v[(i + 1) % polygon.count];
     const float da = glm::dot(plane, glm::vec4(a, 1.0f)), db = glm::dot(plane, glm::vec4(b, 1.0f));
-    if (da >= 0.0f) out.v[out.count++] = a;
-    if ((da >= 0.0f) != (db >= 0.0f)) out.v[out.count++] = a + (b - a) * (da / (da - db));
+    if (da >= 0.0f) out.add(a);
+    if ((da >= 0.0f) != (db >= 0.0f)) out.add(a + (b - a) * (da / (da - db)));
   }
   return out;
 }

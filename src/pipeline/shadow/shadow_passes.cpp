@@ -106,6 +106,13 @@ int shadow_views(const Light& light, const Camera& camera, const pipeline::World
   return count;
 }
 
+// Runs f when the scope ends, by return or by exception.
+template <class F>
+struct ScopeExit {
+  F f;
+  ~ScopeExit() { f(); }
+};
+
 }  // namespace
 
 void Renderer::Impl::run_shadow_passes() {
@@ -142,6 +149,18 @@ void Renderer::Impl::run_shadow_passes() {
     }
   }
   std::swap(frame.draws, shadow_draws);
+  // The color pass's state is put back however the passes end: one that throws (too many
+  // primitives, memory) leaves the renderer as it was for the next frame.
+  const ScopeExit restore{[&] {
+    depth_only_pass = false;
+    std::swap(frame.draws, shadow_draws);
+    camera = color_camera;
+    settings = color_settings;
+    frame.view_projection = color_view_projection;
+    lighting.fog.mode = color_fog;
+    lighting.environment.show_as_background = color_background;
+    lighting.environment.image_based_lighting = color_environment_light;
+  }};
   settings.msaa = 1;
   settings.exposure = 0.0f;
   settings.tone_mapping = ToneMapping::none;
@@ -183,14 +202,6 @@ void Renderer::Impl::run_shadow_passes() {
     shadow.maps.eye = color_camera.eye;
     shadow.maps.forward = color_camera.forward();
   }
-  depth_only_pass = false;
-  std::swap(frame.draws, shadow_draws);
-  camera = color_camera;
-  settings = color_settings;
-  frame.view_projection = color_view_projection;
-  lighting.fog.mode = color_fog;
-  lighting.environment.show_as_background = color_background;
-  lighting.environment.image_based_lighting = color_environment_light;
   shadows_ready = true;
   shadow_ms = pipeline::ms_since(start);
 }

@@ -222,20 +222,19 @@ TEST(CliRender, AutoShadowCascadesFollowTheView) {
                                                " -q --size 320x180" + cascades + " -o " + output);
     ASSERT_EQ(r.exit_code, 0) << scene << cascades << ": " << r.stderr_text;
   };
+  auto same = [&](const char* a, const char* b) {
+    return read_file(dir / a) == read_file(dir / b);
+  };
   render("shapes", "", "shapes_default.png");
   render("shapes", " --shadow-cascades auto", "shapes_auto.png");
   render("shapes", " --shadow-cascades 1", "shapes_1.png");
-  EXPECT_TRUE(read_file(dir / "shapes_default.png") == read_file(dir / "shapes_auto.png"))
-      << "shapes_default.png vs shapes_auto.png";
-  EXPECT_TRUE(read_file(dir / "shapes_auto.png") == read_file(dir / "shapes_1.png"))
-      << "shapes_auto.png vs shapes_1.png";
+  EXPECT_TRUE(same("shapes_default.png", "shapes_auto.png"));
+  EXPECT_TRUE(same("shapes_auto.png", "shapes_1.png"));
   render("islands", "", "islands_auto.png");
   render("islands", " --shadow-cascades 3", "islands_3.png");
   render("islands", " --shadow-cascades 1", "islands_1.png");
-  EXPECT_TRUE(read_file(dir / "islands_auto.png") == read_file(dir / "islands_3.png"))
-      << "islands_auto.png vs islands_3.png";
-  EXPECT_FALSE(read_file(dir / "islands_auto.png") == read_file(dir / "islands_1.png"))
-      << "islands_auto.png vs islands_1.png";
+  EXPECT_TRUE(same("islands_auto.png", "islands_3.png"));
+  EXPECT_FALSE(same("islands_auto.png", "islands_1.png"));
 }
 
 // The error says what is wrong with the path: an output that is a directory, a model that is a

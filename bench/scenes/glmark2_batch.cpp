@@ -49,6 +49,16 @@ HWY_INLINE Vec3V BumpLight(const Vec3V& n) {
   return {gray, gray, gray};
 }
 
+// Samples `map` with the frame's lookup kernel at (s[i], t[i]), level of detail lod[i], for the
+// batch's pixels, and zeroes the texels of the vectors' scratch lanes past in.count.
+HWY_INLINE void SampleMap(const DrawUniforms& u, const TextureMap& map, const ShadeInput& in,
+                          const float* s, const float* t, const float* lod, float (*texel)[4]) {
+  const int lanes = static_cast<int>(hn::Lanes(BatchTag()));
+  u.frame->kernels->sample_at(*map.texture, map.sampler, s, t, lod, in.count, texel);
+  const int padded = (in.count + lanes - 1) / lanes * lanes;
+  std::fill(&texel[0][0] + 4 * in.count, &texel[0][0] + 4 * padded, 0.0f);
+}
+
 // shadow's ground (ShadowGroundShading), the whole batch: s = ShadowCoord / ShadowCoord.w per
 // pixel, the light's depth at every s.xy in one lookup of the frame's sampler (NEAREST and
 // clamped, as the map's sampler says), then grey 0.15 where that depth is nearer than
@@ -56,7 +66,7 @@ HWY_INLINE Vec3V BumpLight(const Vec3V& n) {
 HWY_INLINE void ShadowGround(const DrawUniforms& u, const ShadeInput& in, DisplayCodes codes) {
   const BatchTag d;
   const int lanes = static_cast<int>(hn::Lanes(d));
-  alignas(64) float s[3][shading::kShadeBatch], lod[shading::kShadeBatch] = {};
+  alignas(64) float s[3][shading::kShadeBatch], no_lod[shading::kShadeBatch] = {};
   alignas(64) float texel[shading::kShadeBatch][4];
   for (int j = 0; j < in.count; j += lanes) {
     const BatchV inverse_w = hn::Div(hn::Set(d, 1.0f), hn::Load(d, in.v[3] + j));
@@ -64,10 +74,7 @@ HWY_INLINE void ShadowGround(const DrawUniforms& u, const ShadeInput& in, Displa
       hn::Store(hn::Mul(hn::Load(d, in.v[c] + j), inverse_w), d, s[c] + j);
     }
   }
-  const TextureMap& map = u.material->base_color_map;
-  u.frame->kernels->sample_at(*map.texture, map.sampler, s[0], s[1], lod, in.count, texel);
-  const int padded = (in.count + lanes - 1) / lanes * lanes;
-  std::fill(&texel[0][0] + 4 * in.count, &texel[0][0] + 4 * padded, 0.0f);  // scratch lanes
+  SampleMap(u, u.material->base_color_map, in, s[0], s[1], no_lod, texel);
   for (int j = 0; j < in.count; j += lanes) {
     BatchV t[4];
     hn::LoadInterleaved4(d, &texel[j][0], t[0], t[1], t[2], t[3]);
@@ -93,16 +100,6 @@ HWY_INLINE Vec3V Refract(const Vec3V& i, const Vec3V& n, BatchV e) {
           hn::IfThenElseZero(inside, hn::Sub(hn::Mul(e, i.z), hn::Mul(along_n, n.z)))};
 }
 
-// Samples `map` with the frame's lookup kernel at (s[i], t[i]), level of detail lod[i], for the
-// batch's pixels, and zeroes the texels of the vectors' scratch lanes past in.count.
-HWY_INLINE void SampleMap(const DrawUniforms& u, const TextureMap& map, const ShadeInput& in,
-                          const float* s, const float* t, const float* lod, float (*texel)[4]) {
-  const int lanes = static_cast<int>(hn::Lanes(BatchTag()));
-  u.frame->kernels->sample_at(*map.texture, map.sampler, s, t, lod, in.count, texel);
-  const int padded = (in.count + lanes - 1) / lanes * lanes;
-  std::fill(&texel[0][0] + 4 * in.count, &texel[0][0] + 4 * padded, 0.0f);
-}
-
 // refract's bunny (RefractShading), the whole batch: each of its three dependent lookups is one
 // call of the lookup kernel for every pixel, between the steps of the formula that need it.
 HWY_INLINE void RefractBatch(const DrawUniforms& u, const ShadeInput& in, DisplayCodes codes) {
@@ -110,6 +107,7 @@ HWY_INLINE void RefractBatch(const DrawUniforms& u, const ShadeInput& in, Displa
   const int lanes = static_cast<int>(hn::Lanes(d));
   constexpr int kBatch = shading::kShadeBatch;
   alignas(64) float front[3][kBatch], back[3][kBatch];  // T1, then Pb
+  alignas(64) float normal[3][kBatch], eye[3][kBatch];  // normalize(N), E = normalize(-P)
   alignas(64) float s[kBatch], t[kBatch], lod[kBatch], no_lod[kBatch] = {};
   alignas(64) float texel[kBatch][4];
   const Material& material = *u.material;
@@ -117,12 +115,12 @@ HWY_INLINE void RefractBatch(const DrawUniforms& u, const ShadeInput& in, Displa
   constexpr int kPosition = RefractShading::kPosition, kMapCoord = RefractShading::kMapCoord;
   // T1 = refract(E, N, 1.2), and the distance map's coordinate m.xy 0.5 + 0.5.
   for (int j = 0; j < in.count; j += lanes) {
-    const Vec3V eye = Normalize(Negate(Load3(in.v, kPosition, j)));
+    const Vec3V e = Normalize(Negate(Load3(in.v, kPosition, j)));
     const Vec3V n = Normalize(Load3(in.v, 0, j));
-    const Vec3V t1 = Refract(eye, n, hn::Set(d, kRefractiveIndex));
-    hn::Store(t1.x, d, front[0] + j);
-    hn::Store(t1.y, d, front[1] + j);
-    hn::Store(t1.z, d, front[2] + j);
+    Store3(e, eye, 0, j);
+    Store3(n, normal, 0, j);
+    const Vec3V t1 = Refract(e, n, hn::Set(d, kRefractiveIndex));
+    Store3(t1, front, 0, j);
     const BatchV inverse_w = hn::Div(hn::Set(d, 1.0f), hn::Load(d, in.v[kMapCoord + 3] + j));
     const BatchV m_x = hn::Add(hn::Mul(hn::Load(d, in.v[kMapCoord] + j), inverse_w), t1.x);
     const BatchV m_y = hn::Add(hn::Mul(hn::Load(d, in.v[kMapCoord + 1] + j), inverse_w), t1.y);
@@ -146,12 +144,10 @@ HWY_INLINE void RefractBatch(const DrawUniforms& u, const ShadeInput& in, Displa
     const Vec3V pb = {hn::Add(p.x, hn::Mul(hn::Load(d, front[0] + j), dist[0])),
                       hn::Add(p.y, hn::Mul(hn::Load(d, front[1] + j), dist[0])),
                       hn::Add(p.z, hn::Mul(hn::Load(d, front[2] + j), dist[0]))};
-    hn::Store(pb.x, d, back[0] + j);
-    hn::Store(pb.y, d, back[1] + j);
-    hn::Store(pb.z, d, back[2] + j);
+    Store3(pb, back, 0, j);
     hn::Store(hn::Add(hn::Mul(pb.x, half), half), d, s + j);
     hn::Store(hn::Add(hn::Mul(pb.y, half), half), d, t + j);
-    const Vec3V n = Normalize(Load3(in.v, 0, j));
+    const Vec3V n = Load3(normal, 0, j);
     const BatchV depth = hn::Neg(p.z);
     const BatchV q = hn::Div(hn::Set(d, 1.0f), Dot(n, p));
     const BatchV a = hn::Mul(depth, hn::Set(d, texels_x)), b = hn::Mul(depth, hn::Set(d, texels_y));
@@ -178,13 +174,12 @@ HWY_INLINE void RefractBatch(const DrawUniforms& u, const ShadeInput& in, Displa
   // The image plus the white highlight 0.8 max(reflect(Ld, N).E, 0)^100.
   for (int j = 0; j < in.count; j += lanes) {
     const Vec3V p = Load3(in.v, kPosition, j);
-    const Vec3V eye = Normalize(Negate(p));
-    const Vec3V n = Normalize(Load3(in.v, 0, j));
+    const Vec3V e = Load3(eye, 0, j), n = Load3(normal, 0, j);
     const Vec3V light_direction = Normalize({hn::Sub(p.x, hn::Set(d, kRefractLightPosition.x)),
                                              hn::Sub(p.y, hn::Set(d, kRefractLightPosition.y)),
                                              hn::Sub(p.z, hn::Set(d, kRefractLightPosition.z))});
-    const BatchV specular = hn::Mul(
-        hn::Set(d, 0.8f), Pow100(StdMax(Dot(Reflect(light_direction, n), eye), hn::Zero(d))));
+    const BatchV specular =
+        hn::Mul(hn::Set(d, 0.8f), Pow100(StdMax(Dot(Reflect(light_direction, n), e), hn::Zero(d))));
     BatchV image[4];
     hn::LoadInterleaved4(d, &texel[j][0], image[0], image[1], image[2], image[3]);
     StoreDisplayCodes(

@@ -87,10 +87,20 @@ Camera light_camera(const glm::vec3& light, const View& view, float aspect) {
                          view.far_plane);
 }
 
-// A side of shadow's and refract's off-screen targets for a frame side: twice it (GL clamps a
-// side to GL_MAX_TEXTURE_SIZE, 16384 on llvmpipe; facet's limit, Framebuffer::kMaxSize, is
-// lower, reached above 4K).
-int target_side(int frame_side) { return std::min(2 * frame_side, Framebuffer::kMaxSize); }
+// Makes `target` shadow's or refract's off-screen target for a width x height frame, 2W x 2H
+// with `options`, unless it already is (GL clamps a side to GL_MAX_TEXTURE_SIZE, 16384 on
+// llvmpipe; facet's limit, Framebuffer::kMaxSize, is lower, reached above 4K). Returns whether
+// it was made again: only when the frame's size changes.
+bool ensure_target(std::unique_ptr<RenderTexture>& target, int width, int height,
+                   const RenderTextureOptions& options) {
+  const int target_width = std::min(2 * width, Framebuffer::kMaxSize);
+  const int target_height = std::min(2 * height, Framebuffer::kMaxSize);
+  if (target && target->width() == target_width && target->height() == target_height) {
+    return false;
+  }
+  target = std::make_unique<RenderTexture>(target_width, target_height, options);
+  return true;
+}
 
 // glmark2's wrap for every texture: clamped to the edges (§1.5).
 Sampler clamped(Filter filter) { return {filter, Wrap::clamp_to_edge, Wrap::clamp_to_edge}; }
@@ -257,16 +267,11 @@ class ShadowScene : public BenchScene {
     return quad;
   }
 
-  // The depth map is 2W x 2H of the frame's target (target_side), made again only when the
-  // target's size changes.
+  // The light's depth alone (ensure_target).
   void ensure_depth_map(int width, int height) {
-    const int map_width = target_side(width), map_height = target_side(height);
-    if (depth_map_ && depth_map_->width() == map_width && depth_map_->height() == map_height) {
-      return;
+    if (ensure_target(depth_map_, width, height, {.depth = true, .color = false})) {
+      ground_material_.base_color_map.texture = depth_map_->depth_texture();
     }
-    depth_map_ = std::make_unique<RenderTexture>(
-        map_width, map_height, RenderTextureOptions{.depth = true, .color = false});
-    ground_material_.base_color_map.texture = depth_map_->depth_texture();
   }
 
   std::shared_ptr<const Mesh> horse_;  // does not change: checked once by the renderer
@@ -322,20 +327,14 @@ class RefractScene : public BenchScene {
   }
 
  private:
-  // 2W x 2H (target_side); its color is 8-bit data (the normals' codes read as they are, as
-  // GL's RGBA8 target), mipmapped, and its depth kept. Made again only when the target's size
-  // changes.
+  // The back faces' normals as 8-bit data (their codes read as they are, as GL's RGBA8 target),
+  // mipmapped, and their depth (ensure_target).
   void ensure_distance_map(int width, int height) {
-    const int map_width = target_side(width), map_height = target_side(height);
-    if (distance_map_ && distance_map_->width() == map_width &&
-        distance_map_->height() == map_height) {
-      return;
+    if (ensure_target(distance_map_, width, height,
+                      {.mipmaps = true, .depth = true, .srgb_texture = false})) {
+      bunny_material_.normal_map.texture = distance_map_->texture();
+      bunny_material_.occlusion_map.texture = distance_map_->depth_texture();
     }
-    distance_map_ = std::make_unique<RenderTexture>(
-        map_width, map_height,
-        RenderTextureOptions{.mipmaps = true, .depth = true, .srgb_texture = false});
-    bunny_material_.normal_map.texture = distance_map_->texture();
-    bunny_material_.occlusion_map.texture = distance_map_->depth_texture();
   }
 
   std::shared_ptr<const Mesh> bunny_;  // does not change: checked once by the renderer

@@ -131,9 +131,14 @@ struct BumpPolyShading : InterpolatedNormal,
                          BatchForm<BatchShader::bump_poly>,
                          shading::DisplayReferred {};
 
-// glmark2's bias matrix B (shadow, refract): clip space's [-1, 1] to [0, 1] on x, y and z.
-inline const glm::mat4 kBias{0.5f, 0.0f, 0.0f, 0.0f, 0.0f, 0.5f, 0.0f, 0.0f,
-                             0.0f, 0.0f, 0.5f, 0.0f, 0.5f, 0.5f, 0.5f, 1.0f};
+// glmark2's LightMatrix (shadow, refract) for a light at `light`: B P lookAt(light -> 0, up y),
+// P the frame's projection and B the bias matrix, clip space's [-1, 1] to [0, 1] on x, y and z.
+inline glm::mat4 light_matrix(const glm::vec3& light, const DrawUniforms& u) {
+  const glm::mat4 bias{0.5f, 0.0f, 0.0f, 0.0f, 0.0f, 0.5f, 0.0f, 0.0f,
+                       0.0f, 0.0f, 0.5f, 0.0f, 0.5f, 0.5f, 0.5f, 1.0f};
+  return bias * u.frame->projection *
+         glm::lookAt(light, glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+}
 
 // shadow's light (0, 3, 2), a direction here as in light-basic: normalize(0, 3, 2).
 inline const glm::vec3 kShadowLightDirection{0.0f, 0.83205029f, 0.55470020f};
@@ -153,8 +158,7 @@ struct ShadowHorseShading : BatchForm<BatchShader::basic_light>, shading::Displa
 // shadow.vert/.frag (the ground of shadow): ShadowCoord = B P lookAt((0, 3, 2) -> 0, up y)
 // (x, y, 0, 1) of the quad's UNTRANSFORMED vertex (neither the ground's ModelView nor the
 // horse's turn is in it: glmark2 projects the depth map as if the quad stood upright at z = 0,
-// GLMARK2_SCENES.md §2.6). P is the draw's own projection, u.model_view_projection x
-// inverse(u.model), so the vertex stage needs no other uniform. Per pixel, with
+// GLMARK2_SCENES.md §2.6): light_matrix() of the vertex. Per pixel, with
 // s = ShadowCoord / ShadowCoord.w and d the light's window depth at s.xy (the material's base
 // colour map, the light pass's depth texture, sampled NEAREST and clamped):
 //   rgb = 0.3 x (0.5 if ShadowCoord.w > 0 and d < s.z + 0.1505, else 1), grey.
@@ -165,11 +169,8 @@ struct ShadowGroundShading : BatchForm<BatchShader::shadow_ground>, shading::Dis
   static constexpr int kNormalSlot = -1;
   static constexpr float kDepthBias = 0.1505f;
   static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
-    const glm::mat4 projection = u.model_view_projection * glm::inverse(u.model);
-    const glm::mat4 light_view =
-        glm::lookAt(kShadowLightPosition, glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
-    shading::store(
-        out, kBias * projection * light_view * glm::vec4(in.position.x, in.position.y, 0.0f, 1.0f));
+    shading::store(out, light_matrix(kShadowLightPosition, u) *
+                            glm::vec4(in.position.x, in.position.y, 0.0f, 1.0f));
   }
 };
 
@@ -194,8 +195,8 @@ struct RefractBackNormalShading : BatchForm<BatchShader::refract_back_normal>,
 
 // light-refract.vert/.frag (refract's bunny). Varyings (world space is eye space: the scene's
 // view is the identity): the eye normal N, the eye position P
-// (ModelView x p) and MapCoord = B P_f lookAt((1, 1, 2) -> 0, up y) x p of the OBJECT-space p
-// (B the bias matrix, P_f the frame's projection; the bunny's turn is not in it, as in glmark2).
+// (ModelView x p) and MapCoord = light_matrix() x p of the OBJECT-space p (the bunny's turn is
+// not in it, as in glmark2).
 // The material's maps carry the shader's three textures: base_color_map the image (nasa1,
 // bilinear), normal_map the back faces' normals (the distance target's color, trilinear),
 // occlusion_map their depth seen from the light (its depth texture, nearest), all clamped.
@@ -218,13 +219,11 @@ struct RefractShading : BatchForm<BatchShader::refract>, shading::DisplayReferre
   static constexpr int kMapCoord = 6;
   static void vertex_batch(const DrawUniforms& u, const shading::VertexBatchInput& in,
                            float (*out)[shading::kVertexBatch]) {
-    const glm::mat4 light_matrix =
-        kBias * u.frame->projection *
-        glm::lookAt(kRefractLightPosition, glm::vec3(0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+    const glm::mat4 map_matrix = light_matrix(kRefractLightPosition, u);
     for (int n = 0; n < in.count; ++n) {
       const glm::vec4 p(in.positions[n], 1.0f);
       const glm::vec3 eye = glm::vec3(u.model * p);
-      const glm::vec4 map_coord = light_matrix * p;
+      const glm::vec4 map_coord = map_matrix * p;
       for (int k = 0; k < 3; ++k) {
         out[k][n] = in.normal[k][n];
         out[kPosition + k][n] = eye[k];

@@ -37,6 +37,14 @@ HWY_INLINE Vec3V Load3(const float (*v)[kShadeBatch], int slot, int j) {
   return {hn::Load(d, v[slot] + j), hn::Load(d, v[slot + 1] + j), hn::Load(d, v[slot + 2] + j)};
 }
 
+// Load3's counterpart: v into slots slot .. slot + 2 at pixel j.
+HWY_INLINE void Store3(const Vec3V& v, float (*out)[kShadeBatch], int slot, int j) {
+  const BatchTag d;
+  hn::Store(v.x, d, out[slot] + j);
+  hn::Store(v.y, d, out[slot + 1] + j);
+  hn::Store(v.z, d, out[slot + 2] + j);
+}
+
 HWY_INLINE Vec3V Set3(const glm::vec3& v) {
   const BatchTag d;
   return {hn::Set(d, v.x), hn::Set(d, v.y), hn::Set(d, v.z)};

@@ -81,14 +81,7 @@ struct ConstantColorUnlitShading : BatchForm<BatchModel::constant_unlit> {
   static_assert(kTexcoordSlot + 2 <= kVaryings);
   static void vertex_batch(const DrawUniforms&, const VertexBatchInput& in,
                            float (*out)[kVertexBatch]) {
-    for (int c = 0; c < 2; ++c) {
-      float* slot = out[kTexcoordSlot + c];
-      if (in.texcoords == nullptr) {
-        std::fill_n(slot, in.count, 0.0f);
-      } else {
-        for (int n = 0; n < in.count; ++n) slot[n] = in.texcoords[n][c];
-      }
-    }
+    texcoords_vertex_batch(in, out);
   }
 };
 

@@ -63,20 +63,26 @@ void surface_vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
 // k of vertex n. The same operations, so the same bits, without a call and a VertexInput per
 // vertex; each slot is a loop of its own that the compiler vectorizes. Layouts without the
 // tangent, which the batch input does not carry.
+// The texture coordinates of a run of vertices into their slots (kTexcoordSlot): (0, 0) where
+// the mesh has none.
+inline void texcoords_vertex_batch(const VertexBatchInput& in, float (*out)[kVertexBatch]) {
+  for (int c = 0; c < 2; ++c) {
+    float* slot = out[kTexcoordSlot + c];
+    if (in.texcoords == nullptr) {
+      std::fill_n(slot, in.count, 0.0f);
+    } else {
+      for (int n = 0; n < in.count; ++n) slot[n] = in.texcoords[n][c];
+    }
+  }
+}
+
 template <int kCount>
 void surface_vertex_batch(const DrawUniforms& u, const VertexBatchInput& in,
                           float (*out)[kVertexBatch]) {
   static_assert(kCount <= kTangentSlot, "the batch input has no tangents");
   const int count = in.count;
   // The per-draw choices are made once, outside the loops over the vertices.
-  for (int c = 0; c < 2; ++c) {
-    float* slot = out[kTexcoordSlot + c];
-    if (in.texcoords == nullptr) {
-      std::fill_n(slot, count, 0.0f);
-    } else {
-      for (int n = 0; n < count; ++n) slot[n] = in.texcoords[n][c];
-    }
-  }
+  texcoords_vertex_batch(in, out);
   // material_color(): white vertex colors where the mesh has none, multiplied all the same.
   const bool vary = u.material->use_vertex_colors && in.colors != nullptr;
   const glm::vec4 same = u.material->use_vertex_colors ? u.material->base_color * glm::vec4(1.0f)

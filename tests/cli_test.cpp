@@ -130,6 +130,7 @@ const BadCase kBadCases[] = {
     {"msaa_32", "--msaa 32 -o out.png"},
     {"msaa_zero", "--msaa 0 -o out.png"},
     {"shadows_maybe", "--shadows maybe -o out.png"},
+    {"reflections_maybe", "--reflections maybe -o out.png"},
     {"shadow_map_zero", "--shadow-map-size 0 -o out.png"},
     {"shadow_map_huge", "--shadow-map-size 100000 -o out.png"},
     {"shadow_map_word", "--shadow-map-size big -o out.png"},
@@ -235,6 +236,22 @@ TEST(CliRender, AutoShadowCascadesFollowTheView) {
   render("islands", " --shadow-cascades 1", "islands_1.png");
   EXPECT_TRUE(same("islands_auto.png", "islands_3.png"));
   EXPECT_FALSE(same("islands_auto.png", "islands_1.png"));
+}
+
+// Reflections are on by default in render: the islands' sea mirrors them (--reflections on
+// draws the same), and --reflections off leaves it showing its water alone.
+TEST(CliRender, ReflectionsAreOnByDefault) {
+  fs::path dir = fresh_test_dir("facet_cli_", "reflections");
+  auto render = [&](const std::string& flag, const char* output) {
+    const CommandResult r =
+        run_facet(dir, "render --scene islands -q --size 160x90 --msaa 1" + flag + " -o " + output);
+    ASSERT_EQ(r.exit_code, 0) << flag << ": " << r.stderr_text;
+  };
+  render("", "default.png");
+  render(" --reflections on", "on.png");
+  render(" --reflections off", "off.png");
+  EXPECT_EQ(read_file(dir / "default.png"), read_file(dir / "on.png"));
+  EXPECT_NE(read_file(dir / "default.png"), read_file(dir / "off.png"));
 }
 
 // The error says what is wrong with the path: an output that is a directory, a model that is a

@@ -164,5 +164,25 @@ TEST(DocsPictures, RenderTextureOnAScreenInTheScene) {
   expect_matches_golden_in(FACET_DOCS_PICTURE_DIR, path, "render_texture");
 }
 
+// docs/pipeline.md's "Reflections": the islands' sea mirroring the second island, as `facet
+// render --scene islands --eye 150,6,80 --target 330,5,10` draws it (4 samples, shadows, PBR
+// Neutral), at 400x225.
+TEST(DocsPictures, Reflections) {
+  Scene scene = make_builtin_scene("islands");
+  const float aspect = static_cast<float>(kWidth) / kHeight;
+  const Camera camera = Camera::look_at({150.0f, 6.0f, 80.0f}, {330.0f, 5.0f, 10.0f}, {0, 1, 0},
+                                        scene.camera.fov_y_degrees, aspect, scene.camera.near_plane,
+                                        scene.camera.far_plane);
+  RenderSettings settings;
+  settings.msaa = 4;
+  settings.shadows = true;
+  settings.tone_mapping = ToneMapping::pbr_neutral;
+  const Framebuffer framebuffer = render_scene_image(scene, camera, kWidth, kHeight, settings);
+  const std::string path =
+      (std::filesystem::path(::testing::TempDir()) / "docs_reflections.png").string();
+  write_image(framebuffer, path);
+  expect_matches_golden_in(FACET_DOCS_PICTURE_DIR, path, "reflections");
+}
+
 }  // namespace
 }  // namespace facet::test

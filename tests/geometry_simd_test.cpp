@@ -73,43 +73,48 @@ TEST(GeometrySimd, VertexPassMatchesTheScalarCodeOnEveryTarget) {
                                {1.0f, 1.0f},
                                pipeline::guard_band_bounds(width, height)};
 
-  for (std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
-    hwy::SetSupportedTargetsForTest(target);
-    for (std::size_t first = 0; first < n; first += pipeline::kVertexPass) {
-      const std::size_t count = std::min(pipeline::kVertexPass, n - first);
-      pipeline::VertexPass pass;
-      pipeline::vertex_pass_kernel(chosen_simd_target())(in, first, count, pass);
-      for (std::size_t j = 0; j < count; ++j) {
-        const std::size_t i = first + j;
-        const glm::vec4 clip = mvp * glm::vec4(positions[i], 1.0f);
-        glm::vec3 normal = normal_matrix * normals[i];
-        const float length = glm::length(normal);
-        if (length > 0.0f) normal /= length;
-        const std::string where =
-            std::string(hwy::TargetName(target)) + " vertex " + std::to_string(i);
-        const float simd_normal[3] = {pass.nx[j], pass.ny[j], pass.nz[j]};
-        for (int k = 0; k < 3; ++k) {
-          ASSERT_TRUE(same_bits(simd_normal[k], normal[k]) ||
-                      (std::isnan(simd_normal[k]) && std::isnan(normal[k])))
-              << where << " normal " << k;
+  // Without and with a user clip plane (a reflection pass's), tilted so it cuts the vertices.
+  for (const bool user_plane : {false, true}) {
+    in.frustum.clips_user_plane = in.guard.clips_user_plane = user_plane;
+    in.frustum.user_plane = in.guard.user_plane = {0.3f, -0.7f, 0.2f, 0.1f};
+    for (std::int64_t target : hwy::SupportedAndGeneratedTargets()) {
+      hwy::SetSupportedTargetsForTest(target);
+      for (std::size_t first = 0; first < n; first += pipeline::kVertexPass) {
+        const std::size_t count = std::min(pipeline::kVertexPass, n - first);
+        pipeline::VertexPass pass;
+        pipeline::vertex_pass_kernel(chosen_simd_target())(in, first, count, pass);
+        for (std::size_t j = 0; j < count; ++j) {
+          const std::size_t i = first + j;
+          const glm::vec4 clip = mvp * glm::vec4(positions[i], 1.0f);
+          glm::vec3 normal = normal_matrix * normals[i];
+          const float length = glm::length(normal);
+          if (length > 0.0f) normal /= length;
+          const std::string where = std::string(hwy::TargetName(target)) + " vertex " +
+                                    std::to_string(i) + (user_plane ? ", user plane" : "");
+          const float simd_normal[3] = {pass.nx[j], pass.ny[j], pass.nz[j]};
+          for (int k = 0; k < 3; ++k) {
+            ASSERT_TRUE(same_bits(simd_normal[k], normal[k]) ||
+                        (std::isnan(simd_normal[k]) && std::isnan(normal[k])))
+                << where << " normal " << k;
+          }
+          ASSERT_TRUE(same_bits(pass.x[j], clip.x) && same_bits(pass.y[j], clip.y) &&
+                      same_bits(pass.z[j], clip.z) && same_bits(pass.w[j], clip.w))
+              << where;
+          const std::uint32_t codes = pipeline::outcode(clip, in.frustum) |
+                                      pipeline::outcode(clip, in.guard)
+                                          << pipeline::kGuardCodeShift |
+                                      (std::isfinite(clip.x) && std::isfinite(clip.y) &&
+                                               std::isfinite(clip.z) && std::isfinite(clip.w)
+                                           ? 0u
+                                           : pipeline::kNotFinite);
+          ASSERT_EQ(pass.codes[j] & ~kScalarScreen, codes) << where;
+          if (pass.codes[j] & kScalarScreen) continue;  // beyond the integers: never read
+          const pipeline::ScreenVertex s = pipeline::to_screen(clip, width, height);
+          ASSERT_EQ(pass.sx[j], s.x) << where;
+          ASSERT_EQ(pass.sy[j], s.y) << where;
+          ASSERT_TRUE(same_bits(pass.depth[j], s.z) || std::isnan(s.z)) << where;
+          ASSERT_TRUE(same_bits(pass.inv_w[j], s.inv_w)) << where;
         }
-        ASSERT_TRUE(same_bits(pass.x[j], clip.x) && same_bits(pass.y[j], clip.y) &&
-                    same_bits(pass.z[j], clip.z) && same_bits(pass.w[j], clip.w))
-            << where;
-        const pipeline::ClipBounds frustum{1.0f, 1.0f};
-        const std::uint32_t codes = pipeline::outcode(clip, frustum) |
-                                    pipeline::outcode(clip, in.guard) << pipeline::kGuardCodeShift |
-                                    (std::isfinite(clip.x) && std::isfinite(clip.y) &&
-                                             std::isfinite(clip.z) && std::isfinite(clip.w)
-                                         ? 0u
-                                         : pipeline::kNotFinite);
-        ASSERT_EQ(pass.codes[j] & ~kScalarScreen, codes) << where;
-        if (pass.codes[j] & kScalarScreen) continue;  // beyond the integers: never read
-        const pipeline::ScreenVertex s = pipeline::to_screen(clip, width, height);
-        ASSERT_EQ(pass.sx[j], s.x) << where;
-        ASSERT_EQ(pass.sy[j], s.y) << where;
-        ASSERT_TRUE(same_bits(pass.depth[j], s.z) || std::isnan(s.z)) << where;
-        ASSERT_TRUE(same_bits(pass.inv_w[j], s.inv_w)) << where;
       }
     }
   }

@@ -126,10 +126,10 @@ std::string tone_mapping_help(ToneMapping default_curve) {
          to_string(default_curve) + ")";
 }
 
-bool parse_shadows(const std::string& text) {
+bool parse_on_off(const std::string& flag, const std::string& text) {
   if (text == "on") return true;
   if (text == "off") return false;
-  throw Error("--shadows: expected on or off, got '" + text + "'");
+  throw Error(flag + ": expected on or off, got '" + text + "'");
 }
 
 int parse_shadow_map_size(const std::string& text, ImageSize image) {

@@ -37,8 +37,8 @@ ToneMapping parse_tone_mapping(const std::string& text);
 const char* to_string(ToneMapping curve);
 // The --tone-mapping help text, with the command's default.
 std::string tone_mapping_help(ToneMapping default_curve);
-// --shadows on|off as a bool; throws for anything else.
-bool parse_shadows(const std::string& text);
+// An on|off flag's value (--shadows, --reflections) as a bool; throws for anything else.
+bool parse_on_off(const std::string& flag, const std::string& text);
 // --shadow-map-size: texels within RenderSettings' range, or "auto": the power of two at least
 // the image's longer edge, 256 .. 2048. A map fitted to the view then spends about a texel per
 // pixel, so shadows look alike at every image size and a thumbnail does not pay for a map many

@@ -47,7 +47,7 @@ RenderSettings bench_settings(const BenchOptions& o, const bench::BenchScene& sc
   settings.tile_size = o.tile_size;
   settings.msaa = o.msaa;
   settings.tone_mapping = parse_tone_mapping(o.tone_mapping);
-  apply_shadow_options(o.shadows, false, size, settings);
+  apply_pass_options(o.passes, false, size, settings);
   settings.clear_color = scene.clear_color();
   return settings;
 }
@@ -195,7 +195,7 @@ CLI::App* add_bench_command(CLI::App& app, BenchOptions& o) {
       ->capture_default_str();
   cmd->add_option("--msaa", o.msaa, msaa_help(1));
   cmd->add_option("--tone-mapping", o.tone_mapping, tone_mapping_help(ToneMapping::none));
-  add_shadow_options(*cmd, o.shadows);
+  add_pass_options(*cmd, o.passes);
   cmd->add_option("--json", o.json, "Also write the results to this JSON file");
   return cmd;
 }
@@ -208,7 +208,7 @@ int run_bench(const BenchOptions& o) {
   check_msaa(o.msaa);
   parse_tone_mapping(o.tone_mapping);
   RenderSettings checked;
-  apply_shadow_options(o.shadows, false, size, checked);
+  apply_pass_options(o.passes, false, size, checked);
   if (o.tile_size != 16 && o.tile_size != 32 && o.tile_size != 64 && o.tile_size != 128) {
     throw Error("--tile-size: must be 16, 32, 64 or 128, got " + std::to_string(o.tile_size));
   }

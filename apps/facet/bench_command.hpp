@@ -21,7 +21,7 @@ struct BenchOptions {
   int tile_size = 64;
   int msaa = 1;                       // glmark2 runs without anti-aliasing
   std::string tone_mapping = "none";  // nor tone mapping
-  ShadowOptions shadows;              // nor shadows
+  PassOptions passes;                 // nor shadows, nor reflections
   std::string json;                   // empty: no JSON file
 };
 

@@ -33,7 +33,7 @@ DebugView parse_debug_view(const std::string& text) {
 
 }  // namespace
 
-void add_shadow_options(CLI::App& cmd, ShadowOptions& o) {
+void add_pass_options(CLI::App& cmd, PassOptions& o) {
   cmd.add_option("--shadows", o.shadows,
                  "Shadows of the scene's directional and spot lights (each that casts them: a "
                  "model's own, or the key of the default three lights), through shadow maps: on "
@@ -53,11 +53,17 @@ void add_shadow_options(CLI::App& cmd, ShadowOptions& o) {
                      "(the islands), at a depth pass each; or auto: chosen each frame from the "
                      "view, 1 for a model seen whole, more as the depths seen span more")
       ->capture_default_str();
+  cmd.add_option("--reflections", o.reflections,
+                 "Planar reflections: flat mirror materials (the islands' sea) show the scene "
+                 "mirrored in them, through a pass at half the image's size, or only the "
+                 "environment: on or off (the default is --shadows')")
+      ->capture_default_str();
 }
 
-void apply_shadow_options(const ShadowOptions& o, bool default_on, ImageSize image,
-                          RenderSettings& settings) {
-  settings.shadows = o.shadows ? parse_shadows(*o.shadows) : default_on;
+void apply_pass_options(const PassOptions& o, bool default_on, ImageSize image,
+                        RenderSettings& settings) {
+  settings.shadows = o.shadows ? parse_on_off("--shadows", *o.shadows) : default_on;
+  settings.reflections = o.reflections ? parse_on_off("--reflections", *o.reflections) : default_on;
   settings.shadow_map_size = parse_shadow_map_size(o.map_size, image);
   settings.shadow_cascades = parse_shadow_cascades(o.cascades);
 }
@@ -93,7 +99,7 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
                   "through EGL: docs/gl_twin.md)")
       ->capture_default_str();
   cmd->add_option("--msaa", o.msaa, msaa_help(4));
-  add_shadow_options(*cmd, o.shadows);
+  add_pass_options(*cmd, o.passes);
   cmd->add_option("--compare", o.compare,
                   "Draw the view once per variant and write them side by side, labelled: shading "
                   "models (every material shaded so), backends and tone mappings, separated by "
@@ -114,8 +120,8 @@ int run_render(const RenderOptions& o) {
   ImageSize size = parse_size("--size", o.size);
   check_threads(o.threads);
   check_msaa(o.msaa);
-  RenderSettings shadow_settings;
-  apply_shadow_options(o.shadows, true, size, shadow_settings);
+  RenderSettings pass_settings;
+  apply_pass_options(o.passes, true, size, pass_settings);
   if (!std::isfinite(o.exposure) || std::abs(o.exposure) > 20.0f) {
     throw Error("--exposure: must be within -20 .. 20 stops");
   }
@@ -167,9 +173,10 @@ int run_render(const RenderOptions& o) {
   settings.threads = o.threads;
   settings.tile_size = o.tile_size;
   settings.msaa = o.msaa;
-  settings.shadows = shadow_settings.shadows;
-  settings.shadow_map_size = shadow_settings.shadow_map_size;
-  settings.shadow_cascades = shadow_settings.shadow_cascades;
+  settings.shadows = pass_settings.shadows;
+  settings.shadow_map_size = pass_settings.shadow_map_size;
+  settings.shadow_cascades = pass_settings.shadow_cascades;
+  settings.reflections = pass_settings.reflections;
   // Transparent: the framebuffer holds premultiplied color (blending over alpha 0), written
   // out with straight alpha (FrameRenderer).
   settings.clear_color = glm::vec4(background, transparent ? 0.0f : 1.0f);

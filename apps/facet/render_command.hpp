@@ -15,11 +15,13 @@
 
 namespace facet::cli {
 
-// --shadows, --shadow-map-size, --shadow-cascades (render and bench).
-struct ShadowOptions {
-  std::optional<std::string> shadows;  // "on" or "off"; unset: the command's default
-  std::string map_size = "auto";       // texels or "auto" (parse_shadow_map_size)
-  std::string cascades = "auto";       // 1 .. 4 or "auto" (parse_shadow_cascades)
+// The options of the passes before the color pass (render, bench, view): --shadows,
+// --shadow-map-size, --shadow-cascades and --reflections.
+struct PassOptions {
+  std::optional<std::string> shadows;      // "on" or "off"; unset: the command's default
+  std::string map_size = "auto";           // texels or "auto" (parse_shadow_map_size)
+  std::string cascades = "auto";           // 1 .. 4 or "auto" (parse_shadow_cascades)
+  std::optional<std::string> reflections;  // "on" or "off"; unset: as shadows' default
 };
 
 struct RenderOptions {
@@ -34,20 +36,20 @@ struct RenderOptions {
   std::string tone_mapping = "pbr-neutral";
   int threads = 0;
   int tile_size = 64;
-  int msaa = 4;           // anti-aliased images by default (RenderSettings::msaa)
-  ShadowOptions shadows;  // on by default
+  int msaa = 4;        // anti-aliased images by default (RenderSettings::msaa)
+  PassOptions passes;  // shadows and reflections on by default
   bool orthographic = false;
   std::string backend = "facet";       // or "gl": the OpenGL twin (render_backend.hpp)
   std::optional<std::string> compare;  // variants side by side (render_compare.hpp)
   BatchOptions batch;                  // the positional models; several, or a folder, make a batch
 };
 
-// Adds the shadow options to a command (render, bench), filled on parse.
-void add_shadow_options(CLI::App& cmd, ShadowOptions& options);
-// Checks them (throwing facet::Error naming the flag) and sets them in settings; shadows are
-// `default_on` unless --shadows says.
-void apply_shadow_options(const ShadowOptions& options, bool default_on, ImageSize image,
-                          RenderSettings& settings);
+// Adds the pass options to a command (render, bench, view), filled on parse.
+void add_pass_options(CLI::App& cmd, PassOptions& options);
+// Checks them (throwing facet::Error naming the flag) and sets them in settings; shadows and
+// reflections are `default_on` unless --shadows or --reflections says.
+void apply_pass_options(const PassOptions& options, bool default_on, ImageSize image,
+                        RenderSettings& settings);
 
 // Adds the `render` subcommand and its flags to app; options are filled on parse.
 CLI::App* add_render_command(CLI::App& app, RenderOptions& options);

@@ -42,7 +42,7 @@ CLI::App* add_view_command(CLI::App& app, ViewOptions& o) {
   cmd->add_option("--msaa", o.msaa, msaa_help(4) + "; F10 cycles it");
   cmd->add_option("--tone-mapping", o.tone_mapping,
                   tone_mapping_help(ToneMapping::pbr_neutral) + "; T cycles it");
-  add_shadow_options(*cmd, o.shadows);
+  add_pass_options(*cmd, o.passes);
   cmd->add_option("--frames", o.frames, "Render this many frames, then quit (0: until closed)")
       ->capture_default_str();
   cmd->add_option("--screenshot", o.screenshot, "Save the last frame to this PNG or PPM file");
@@ -67,8 +67,9 @@ int run_view(const ViewOptions& o) {
   check_threads(o.threads);
   check_msaa(o.msaa);
   const ToneMapping tone_mapping = parse_tone_mapping(o.tone_mapping);
-  RenderSettings shadows;  // off unless asked: they cost several times a frame of the islands
-  apply_shadow_options(o.shadows, false, size, shadows);
+  // Off unless asked: shadows cost several times a frame of the islands, reflections another.
+  RenderSettings passes;
+  apply_pass_options(o.passes, false, size, passes);
   if (o.frames < 0) throw Error("--frames: must be 0 (until closed) or more");
   if (o.time && !std::isfinite(*o.time)) throw Error("--time: must be a finite number of seconds");
   if (!o.screenshot.empty()) check_writable(o.screenshot);
@@ -101,7 +102,7 @@ int run_view(const ViewOptions& o) {
   setup.settings.threads = o.threads;
   setup.settings.msaa = o.msaa;
   setup.settings.tone_mapping = tone_mapping;
-  setup.shadows = shadows;
+  setup.passes = passes;
   setup.settings.fov_degrees = setup.start.fov_y_degrees;
   setup.settings.overlay = o.overlay == "on" || (o.overlay == "auto" && o.frames == 0);
   setup.settings.fullscreen = o.fullscreen;

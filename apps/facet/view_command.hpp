@@ -25,7 +25,7 @@ struct ViewOptions {
   bool fullscreen = false;
   std::string backend = "facet";             // or gl (render_backend.hpp); B switches at run time
   std::string tone_mapping = "pbr-neutral";  // T cycles it
-  ShadowOptions shadows;                     // off by default: they cost most of a frame
+  PassOptions passes;                        // off by default: they cost most of a frame
 };
 
 // Adds the `view` subcommand and its flags to app; options are filled on parse.

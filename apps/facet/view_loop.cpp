@@ -93,9 +93,10 @@ void ViewLoop::make_renderer() {
   rs.clear_color = setup_.clear_color;
   rs.debug_view = settings_.debug_view();
   rs.tone_mapping = settings_.tone_mapping;
-  rs.shadows = setup_.shadows.shadows;
-  rs.shadow_map_size = setup_.shadows.shadow_map_size;
-  rs.shadow_cascades = setup_.shadows.shadow_cascades;
+  rs.shadows = setup_.passes.shadows;
+  rs.shadow_map_size = setup_.passes.shadow_map_size;
+  rs.shadow_cascades = setup_.passes.shadow_cascades;
+  rs.reflections = setup_.passes.reflections;
   renderer_ = std::make_unique<Renderer>(rs);
 }
 
@@ -219,7 +220,8 @@ void ViewLoop::render(double now, double dt) {
   info.threads = settings_.threads;
   info.msaa = settings_.msaa;
   info.tone_mapping = to_string(settings_.tone_mapping);
-  info.shadows = setup_.shadows.shadows;
+  info.shadows = setup_.passes.shadows;
+  info.reflections = setup_.passes.reflections;
   info.mode = to_string(settings_.mode);
   info.shading = settings_.shading_name();
   info.camera = setup_.camera_path                      ? "camera path"

@@ -36,8 +36,9 @@ struct ViewSetup {
   ViewSettings settings;
   glm::vec4 clear_color{0.0f};
   std::optional<CameraPath> camera_path;
-  // --shadows and its map size and cascades (RenderSettings' shadow fields; the rest unused).
-  RenderSettings shadows;
+  // --shadows, its map size and cascades, and --reflections (those fields of RenderSettings; the
+  // rest unused).
+  RenderSettings passes;
   std::optional<double> fixed_time;  // --time
   int frames = 0;                    // 0: until closed
 };

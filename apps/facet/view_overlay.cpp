@@ -44,6 +44,7 @@ void stats_panel(const OverlayInfo& info) {
     }
     ImGui::Text("tone mapping: %s (T)", info.tone_mapping.c_str());
     ImGui::Text("shadows: %s", info.shadows ? "on" : "off");
+    ImGui::Text("reflections: %s", info.reflections ? "on" : "off");
     ImGui::Text("mode: %s", info.mode.c_str());
     ImGui::Text("shading: %s", info.shading.c_str());
     ImGui::Text("camera: %s", info.camera.c_str());

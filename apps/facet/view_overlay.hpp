@@ -34,6 +34,7 @@ struct OverlayInfo {
   int msaa = 1;                 // samples per pixel
   std::string tone_mapping;     // "pbr-neutral", "aces" or "none" (T)
   bool shadows = false;         // --shadows
+  bool reflections = false;     // --reflections
   std::string mode, shading, camera;
   std::string sound;      // "on", "muted", "off (no device)"; empty: the scene has none
   std::string backend;    // "facet", "gl" or "difference" (B)

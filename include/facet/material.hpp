@@ -66,6 +66,12 @@ struct Material {
 
   glm::vec3 emissive{0.0f};   // linear RGB, added unlit
   float reflectivity = 0.0f;  // Phong models: mix toward the environment's reflection
+  // A flat mirror (a floor, a lake, the sea): what Phong models mix in by reflectivity, and PBR
+  // takes as the light from the mirror direction, is the scene itself, drawn mirrored through
+  // the mesh's plane by a pass of its own (RenderSettings::reflections), blurred by the
+  // roughness (PBR) or the highlight's exponent (Phong), not only the environment. A mesh that
+  // is not flat reflects the environment alone.
+  bool reflects_scene = false;
 
   TextureMap base_color_map;  // sRGB
   TextureMap normal_map;      // tangent space, linear

@@ -69,6 +69,15 @@ struct RenderSettings {
   static constexpr int kMaxShadowCascades = 4;
   static constexpr int kAutoShadowCascades = 0;
   int shadow_cascades = kAutoShadowCascades;
+  // Planar reflections: before the color pass, for each plane (up to kMaxMirrorPlanes) that
+  // flat draws of Material::reflects_scene lie in and the camera sees from the front, a pass
+  // draws the scene mirrored through it, cut at the plane, at reflection_scale of the frame's
+  // width and height (in (0, 1]), one sample a pixel, into a float texture whose mip chain
+  // blurs it for rough surfaces. Off: those materials reflect the environment alone.
+  // docs/pipeline.md, "Reflections".
+  bool reflections = true;
+  static constexpr int kMaxMirrorPlanes = 4;
+  float reflection_scale = 0.5f;
 };
 
 struct FrameStats {
@@ -99,6 +108,8 @@ struct FrameStats {
   // The shadow maps' depth passes (RenderSettings::shadows), included in ms_total; the counts
   // above are the color pass's.
   double ms_shadows = 0;
+  // The planar reflections' passes (RenderSettings::reflections), included in ms_total.
+  double ms_reflections = 0;
   // Every color was a display value, an 8-bit code (as the normals, depth and texcoords
   // models write): resolve rounded them to bytes instead of sRGB-encoding them, with the same
   // result.

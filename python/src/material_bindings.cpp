@@ -79,7 +79,7 @@ struct MaterialField {
   void (*set)(Material&, py::handle);
 };
 
-const std::array<MaterialField, 14> kMaterialFields{{
+const std::array<MaterialField, 15> kMaterialFields{{
     {"base_color", [](const Material& m) -> py::object { return to_tuple(m.base_color); },
      [](Material& m, py::handle v) {
        m.base_color =
@@ -118,6 +118,11 @@ const std::array<MaterialField, 14> kMaterialFields{{
     {"reflectivity", [](const Material& m) -> py::object { return to_python(m.reflectivity); },
      [](Material& m, py::handle v) {
        m.reflectivity = in_unit_range(v, {"Material", "reflectivity"});
+     }},
+    {"reflects_scene", [](const Material& m) -> py::object { return py::bool_(m.reflects_scene); },
+     [](Material& m, py::handle v) {
+       if (!py::isinstance<py::bool_>(v)) throw Error("Material: reflects_scene must be a bool");
+       m.reflects_scene = v.cast<bool>();
      }},
     {"use_vertex_colors",
      [](const Material& m) -> py::object { return py::bool_(m.use_vertex_colors); },
@@ -177,18 +182,20 @@ changes nothing already added.
 
 shading: one of facet.SHADING_MODELS ("lambert" by default; "unlit", "flat", "phong",
 "blinn_phong", "gouraud", "pbr", ...). metallic and roughness are read by "pbr";
-specular_color and shininess by the Phong models. use_vertex_colors multiplies base_color by
+specular_color and shininess by the Phong models. reflects_scene: a flat mesh that mirrors the
+scene (a floor, water; the Renderer's reflections): Phong models mix it in by reflectivity, PBR
+takes it as the light from the mirror direction. use_vertex_colors multiplies base_color by
 the mesh's colors. alpha_mode: opaque, mask (alpha_cutoff), blend, additive. cull: back (the
 default; front faces are counter-clockwise), front, none.)doc");
   const Material defaults;
   material.def(
       py::init([](py::object base_color, py::object shading, py::object metallic,
                   py::object roughness, py::object specular_color, py::object shininess,
-                  py::object emissive, py::object reflectivity, py::object use_vertex_colors,
-                  py::object alpha_mode, py::object alpha_cutoff, py::object cull,
-                  py::object wire_color, py::object name) {
+                  py::object emissive, py::object reflectivity, py::object reflects_scene,
+                  py::object use_vertex_colors, py::object alpha_mode, py::object alpha_cutoff,
+                  py::object cull, py::object wire_color, py::object name) {
         Material out;
-        const std::array<std::pair<const char*, py::object*>, 14> values{{
+        const std::array<std::pair<const char*, py::object*>, 15> values{{
             {"base_color", &base_color},
             {"shading", &shading},
             {"metallic", &metallic},
@@ -197,6 +204,7 @@ default; front faces are counter-clockwise), front, none.)doc");
             {"shininess", &shininess},
             {"emissive", &emissive},
             {"reflectivity", &reflectivity},
+            {"reflects_scene", &reflects_scene},
             {"use_vertex_colors", &use_vertex_colors},
             {"alpha_mode", &alpha_mode},
             {"alpha_cutoff", &alpha_cutoff},
@@ -213,6 +221,7 @@ default; front faces are counter-clockwise), front, none.)doc");
       py::arg("specular_color") = to_tuple(defaults.specular_color),
       py::arg("shininess") = defaults.shininess, py::arg("emissive") = to_tuple(defaults.emissive),
       py::arg("reflectivity") = defaults.reflectivity,
+      py::arg("reflects_scene") = defaults.reflects_scene,
       py::arg("use_vertex_colors") = defaults.use_vertex_colors,
       py::arg("alpha_mode") = std::string(to_string(defaults.alpha_mode)),
       py::arg("alpha_cutoff") = defaults.alpha_cutoff,

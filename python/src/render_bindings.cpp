@@ -195,7 +195,8 @@ class PyRenderer {
  public:
   PyRenderer(int width, int height, int threads, int msaa, py::handle background,
              py::handle exposure, const std::string& tone_mapping, int tile_size, bool shadows,
-             int shadow_map_size, int shadow_cascades)
+             int shadow_map_size, int shadow_cascades, bool reflections,
+             py::handle reflection_scale)
       : width_(width), height_(height) {
     if (width < 1 || height < 1 || width > Framebuffer::kMaxSize ||
         height > Framebuffer::kMaxSize) {
@@ -213,6 +214,8 @@ class PyRenderer {
     settings.shadows = shadows;  // the renderer checks the map size and cascades
     settings.shadow_map_size = shadow_map_size;
     settings.shadow_cascades = shadow_cascades;
+    settings.reflections = reflections;
+    settings.reflection_scale = number(reflection_scale, {"Renderer", "reflection_scale"});
     renderer_ = std::make_unique<Renderer>(settings);  // its errors say "renderer: ..."
   }
 
@@ -329,17 +332,21 @@ Neutral) or 'aces' (ACES filmic); the background color is not mapped. tile_size:
 128. shadows: directional and spot lights cast shadows through shadow maps (each light whose
 casts_shadows is set, as every light made here is), shadow_map_size texels a side (16 to
 8192), shadow_cascades maps per directional light, 1 to 4, or 0 (the default) to choose them
-from the view (docs/pipeline.md, "Shadows"). The GIL is
+from the view (docs/pipeline.md, "Shadows"). reflections: materials with reflects_scene on a
+flat mesh mirror the scene, through a pass at reflection_scale (in (0, 1]) of the image's width
+and height (docs/pipeline.md, "Reflections"); off, they reflect the environment alone. The GIL is
 released while a frame renders, so renderers in several Python threads render at once; one
 renderer renders one frame at a time.)doc")
       .def(py::init<int, int, int, int, py::handle, py::handle, const std::string&, int, bool, int,
-                    int>(),
+                    int, bool, py::handle>(),
            py::arg("width"), py::arg("height"), py::arg("threads") = 0, py::arg("msaa") = 1,
            py::kw_only(), py::arg("background") = py::make_tuple(0.0, 0.0, 0.0, 1.0),
            py::arg("exposure") = 0.0, py::arg("tone_mapping") = "none", py::arg("tile_size") = 64,
            py::arg("shadows") = RenderSettings{}.shadows,
            py::arg("shadow_map_size") = RenderSettings{}.shadow_map_size,
-           py::arg("shadow_cascades") = RenderSettings{}.shadow_cascades)
+           py::arg("shadow_cascades") = RenderSettings{}.shadow_cascades,
+           py::arg("reflections") = RenderSettings{}.reflections,
+           py::arg("reflection_scale") = RenderSettings{}.reflection_scale)
       .def("render", &PyRenderer::render, py::arg("scene"), py::arg("camera") = py::none(),
            py::arg("outputs") = py::make_tuple("color", "depth"), py::kw_only(),
            py::arg("color_format") = "uint8", py::arg("normal_space") = "world", R"doc(
@@ -378,6 +385,10 @@ its textures and its readbacks in other threads wait for it.)doc")
                              [](const PyRenderer& r) { return r.settings().shadow_map_size; })
       .def_property_readonly("shadow_cascades",
                              [](const PyRenderer& r) { return r.settings().shadow_cascades; })
+      .def_property_readonly("reflections",
+                             [](const PyRenderer& r) { return r.settings().reflections; })
+      .def_property_readonly("reflection_scale",
+                             [](const PyRenderer& r) { return r.settings().reflection_scale; })
       .def_property_readonly(
           "stats", [](const PyRenderer& r) { return stats_dict(r.stats()); },
           "What the last frame did: triangles in, culled, clipped, drawn, pixels shaded, and "

@@ -215,6 +215,34 @@ def test_shadows_darken_what_a_light_cannot_reach():
         facet.Renderer(8, 8, shadows=True, shadow_map_size=0)
 
 
+def test_a_mirror_reflects_the_scene():
+    # A mirror in the plane z = 0 (black itself, all reflection) and a red square in front of
+    # it: with reflections the mirror shows the square too, so more of the image is red.
+    scene = facet.Scene()
+    mirror, faces, _ = quad(half=3)
+    scene.add_mesh(mirror, faces, material=facet.Material(
+        (0, 0, 0), "blinn_phong", specular_color=(0, 0, 0), shininess=1e5, reflectivity=1.0,
+        reflects_scene=True))
+    square, _, _ = quad(z=1.0, half=0.3)
+    red = facet.Material((1, 0, 0), "unlit", cull="none")  # the mirror shows its back
+    scene.add_mesh(square + np.array([0, 0.6, 0], np.float32), faces, material=red)
+    camera = facet.Camera.look_at((0.0, -2.0, 4.0), (0, 0, 0), (0, 1, 0), 60.0, 0.1, 100.0)
+
+    def red_pixels(**settings):
+        color = facet.Renderer(64, 64, **settings).render(scene, camera, ["color"])["color"]
+        return int(((color[..., 0] > 200) & (color[..., 1] < 50)).sum())
+
+    direct, mirrored = red_pixels(reflections=False), red_pixels(reflection_scale=1.0)
+    assert direct > 20 and mirrored > direct + 20
+    assert facet.Material(reflects_scene=True).reflects_scene
+    renderer = facet.Renderer(8, 8)
+    assert renderer.reflections and renderer.reflection_scale == 0.5
+    with pytest.raises(facet.Error, match="reflection scale"):
+        facet.Renderer(8, 8, reflection_scale=0)
+    with pytest.raises(facet.Error, match="reflects_scene"):
+        facet.Material(reflects_scene=1)
+
+
 def test_stats_of_the_last_frame():
     scene = facet.Scene()
     scene.add_mesh(*quad()[:2])

@@ -286,6 +286,9 @@ struct Frame : PrimitiveBuffer {
   int tiles_x = 0;
   int tiles_y = 0;
   glm::mat4 view_projection{1.0f};
+  // A plane in clip space the frame's primitives are cut at, keeping where (a x + b y) +
+  // (c z + d w) >= 0 (geometry/clip.hpp's ClipBounds::user_plane): a reflection pass's mirror.
+  std::optional<glm::vec4> clip_plane;
   std::vector<DrawRecord> draws;
   std::vector<std::uint32_t> draw_order;  // opaque in submission order, then blended far-first
   std::vector<shading::LightData> lights;

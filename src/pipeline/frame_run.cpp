@@ -160,7 +160,7 @@ void Renderer::Impl::run(Framebuffer& target) {
   uniforms.display_exact = false;
   set_depth_view_range();
   uniforms.kernels = &kernels.shading;
-  const pipeline::ClipBounds guard = pipeline::guard_band_bounds(frame.width, frame.height);
+  const pipeline::ClipBounds guard = pipeline::guard_band_bounds(frame);
   for (pipeline::DrawRecord& draw : frame.draws) {
     draw.uniforms.material = &draw.material;
     draw.uniforms.frame = &uniforms;

@@ -30,6 +30,7 @@ inline unsigned outcode(const glm::vec4& c, const ClipBounds& b) {
   if (!(b.gx * c.w - c.x >= 0.0f)) code |= kClipRight;
   if (!(c.y + b.gy * c.w >= 0.0f)) code |= kClipBottom;
   if (!(b.gy * c.w - c.y >= 0.0f)) code |= kClipTop;
+  if (b.clips_user_plane && !(user_plane_distance(b.user_plane, c) >= 0.0f)) code |= kClipUser;
   return code;
 }
 

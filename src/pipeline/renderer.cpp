@@ -43,6 +43,10 @@ Renderer::Renderer(const RenderSettings& settings) {
                 std::to_string(RenderSettings::kAutoShadowCascades) +
                 " (chosen from the view), got " + std::to_string(cascades));
   }
+  if (!(settings.reflection_scale > 0.0f && settings.reflection_scale <= 1.0f)) {
+    throw Error("renderer: reflection scale must be in (0, 1], got " +
+                std::to_string(settings.reflection_scale));
+  }
   const int n = settings.msaa;
   if (n != 1 && n != 2 && n != 4 && n != 8 && n != 16) {
     throw Error("renderer: msaa must be 1, 2, 4, 8 or 16 samples per pixel, got " +
@@ -75,6 +79,8 @@ void Renderer::begin_frame(const Camera& camera, const Lighting& lighting) {
       std::any_of(lighting.lights.begin(), lighting.lights.end(), [](const Light& light) {
         return light.casts_shadows && light.type != LightType::point;
       });
+  impl_->frame_reflections =
+      impl_->settings.reflections && impl_->settings.debug_view == DebugView::none;
   impl_->primitives_outside = 0;
   impl_->instance_id.reset();
   impl_->draw_calls = 0;
@@ -155,7 +161,7 @@ void Renderer::Impl::record(const Mesh& mesh, const std::optional<pipeline::Mesh
   const bool outside = box && pipeline::box_outside_frustum(*box, model_view_projection);
   if (outside) {
     primitives_outside += mesh.primitive_count();
-    if (!frame_shadows) return;
+    if (!frame_shadows && !frame_reflections) return;
   }
   pipeline::DrawRecord record;
   record.mesh = &mesh;
@@ -181,11 +187,13 @@ void Renderer::Impl::finish(Framebuffer& target, bool depth_only) {
   if (target.extra_outputs().any()) check_extra_outputs(target);
   arena.execute([&] {
     run_shadow_passes();
+    if (!depth_only) run_reflection_passes(target);
     depth_only_pass = depth_only;
     run(target);
     depth_only_pass = false;
     frame.stats.ms_shadows = shadow_ms;
-    frame.stats.ms_total += shadow_ms;
+    frame.stats.ms_reflections = reflection_ms;
+    frame.stats.ms_total += shadow_ms + reflection_ms;
     if (target.extra_outputs().any()) run_extra_outputs(target);
   });
   shadows_ready = false;

@@ -7,6 +7,7 @@
 #include <tbb/info.h>
 #include <tbb/task_arena.h>
 
+#include <array>
 #include <chrono>
 #include <cstdint>
 #include <glm/vec4.hpp>
@@ -15,10 +16,12 @@
 #include <unordered_map>
 #include <vector>
 
+#include "facet/render_texture.hpp"
 #include "facet/renderer.hpp"
 #include "pipeline/frame.hpp"
 #include "pipeline/kernels.hpp"
 #include "pipeline/output/output.hpp"
+#include "shading/planar_reflection.hpp"
 #include "shading/shadow_map.hpp"
 
 namespace facet {
@@ -85,9 +88,26 @@ struct Renderer::Impl {
   std::vector<LightShadow> shadows;
   bool shadows_ready = false;    // run() hands the maps to the lights (after the passes)
   bool depth_only_pass = false;  // run() writes depth alone (Background::depth_only)
-  std::vector<pipeline::DrawRecord> shadow_draws;    // the color pass's draws during the passes
+  // The color pass's draws while a shadow or reflection pass runs.
+  std::vector<pipeline::DrawRecord> set_aside_draws;
   std::vector<pipeline::DrawRecord> shadow_casters;  // every draw that casts, drawn for the maps
   double shadow_ms = 0.0;
+  // Whether this frame may render planar reflections (RenderSettings::reflections, no debug
+  // view), decided at begin_frame(); then the draws outside the camera's view are kept too,
+  // since a mirror may show them (reflection_passes.cpp).
+  bool frame_reflections = false;
+  // Each mirror plane's pass of this frame: its plane, its target, and what the draws on the
+  // plane read of it. The first mirror_count are this frame's.
+  struct MirrorPass {
+    glm::vec4 plane{0.0f};
+    std::optional<RenderTexture> target;
+    shading::PlanarReflection reflection;
+  };
+  std::array<MirrorPass, RenderSettings::kMaxMirrorPlanes> mirrors;
+  int mirror_count = 0;
+  std::vector<int> mirror_of_draw;                   // per color draw: its pass in mirrors, or -1
+  std::vector<pipeline::DrawRecord> mirrored_draws;  // a pass's draws
+  double reflection_ms = 0.0;
   // Meshes drawn through shared pointers, checked once (Renderer::draw): checking every mesh again
   // in every frame costs real time in big worlds of many draws, all of it on the recording thread.
   // An entry holds its mesh, so no other mesh can take its address while it is remembered; it is
@@ -134,6 +154,9 @@ struct Renderer::Impl {
   void run_extra_outputs(Framebuffer& target);
   // The shadow maps of the frame's lights, before the color pass (shadow_passes.cpp).
   void run_shadow_passes();
+  // The planar reflections of the frame's mirror draws, after the shadow maps and before the
+  // color pass into `target` (reflection_passes.cpp); points those draws at them.
+  void run_reflection_passes(const Framebuffer& target);
   void order_draws();
   void set_depth_view_range();
   bool draws_only_display_values() const;

@@ -18,6 +18,7 @@
 #include "shading/environment_light.hpp"
 #include "shading/light_batch-inl.h"
 #include "shading/pbr_surface.hpp"
+#include "shading/planar_reflection-inl.h"
 #include "shading/shade_batch.hpp"
 #include "shading/uniforms.hpp"
 
@@ -139,12 +140,18 @@ HWY_INLINE Vec3V PbrLight(const DrawUniforms& u, const ShadeInput& in, int j, co
                 hn::Mul(hn::Set(d, u.frame->ambient.z),
                         hn::Add(hn::Mul(albedo.z, diffuse_share), hn::Mul(f0.z, half)))};
   const Environment& environment = u.frame->lighting->environment;
-  if (u.frame->environment_light != nullptr || environment.reflections) {
-    // The environment seen in the mirror direction glm::reflect(-view, n), blurred by roughness.
+  if (u.frame->environment_light != nullptr || environment.reflections || u.reflection != nullptr) {
+    // What is seen in the mirror direction glm::reflect(-view, n), blurred by roughness: the
+    // planar reflection at the surface point where the draw has one (blurred by alpha =
+    // roughness^2), else the environment.
     const Vec3V mirror = Reflect(Negate(view), n);
     const int count = std::min(static_cast<int>(hn::Lanes(d)), in.count - j);
-    const Vec3V seen = EnvironmentRadiance(u.frame->kernels->sample_at, environment, mirror,
-                                           hn::Mul(roughness, hn::Set(d, 8.0f)), count);
+    const Vec3V seen = u.reflection != nullptr
+                           ? PlanarReflectionRadiance(
+                                 u.frame->kernels->sample_at, *u.reflection, position,
+                                 ReflectionLod(*u.reflection, hn::Mul(roughness, roughness)), count)
+                           : EnvironmentRadiance(u.frame->kernels->sample_at, environment, mirror,
+                                                 hn::Mul(roughness, hn::Set(d, 8.0f)), count);
     if (u.frame->environment_light != nullptr) {
       // The image-based light replaces the ambient, a lane at a time (environment_light.hpp).
       Lanes3 lanes_ambient(ambient);

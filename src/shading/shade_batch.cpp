@@ -23,6 +23,7 @@
 #include "shading/light_batch-inl.h"
 #include "shading/pbr_batch-inl.h"
 #include "shading/pbr_surface.hpp"
+#include "shading/planar_reflection-inl.h"
 #include "shading/shadow_batch-inl.h"
 #include "shading/surface.hpp"
 
@@ -182,16 +183,23 @@ HWY_INLINE Vec3V SpecularLight(const DrawUniforms& u, bool blinn, const Vec3V& n
   return color;
 }
 
-// Phong's mirror reflection of the environment: the color mixed with the environment's radiance
-// from the mirror direction of the view about n by the material's reflectivity (glm::mix(color,
-// radiance, reflectivity) of glm::reflect(-view, n)'s radiance), for the first `count` lanes. Out
-// of line: it would take the inlined loop's registers.
+// Phong's mirror reflection: the color mixed with the radiance from the mirror direction of the
+// view about n by the material's reflectivity (glm::mix(color, radiance, reflectivity)), for the
+// first `count` lanes. The radiance is the planar reflection's at the surface point, blurred as
+// the highlight's exponent says (phong_roughness), where the draw has one; else the
+// environment's along glm::reflect(-view, n). Out of line: it would take the inlined loop's
+// registers.
 static HWY_NOINLINE Vec3V Reflected(const DrawUniforms& u, const Vec3V& color, const Vec3V& view,
-                                    const Vec3V& n, int count) {
+                                    const Vec3V& n, const Vec3V& position, int count) {
   const FloatTag d;
   const Vec3V radiance =
-      EnvironmentRadiance(u.frame->kernels->sample_at, u.frame->lighting->environment,
-                          Reflect(Negate(view), n), hn::Zero(d), count);
+      u.reflection != nullptr
+          ? PlanarReflectionRadiance(
+                u.frame->kernels->sample_at, *u.reflection, position,
+                ReflectionLod(*u.reflection, hn::Set(d, phong_roughness(u.material->shininess))),
+                count)
+          : EnvironmentRadiance(u.frame->kernels->sample_at, u.frame->lighting->environment,
+                                Reflect(Negate(view), n), hn::Zero(d), count);
   const float reflectivity = u.material->reflectivity;
   const FloatV kept = hn::Set(d, 1.0f - reflectivity), taken = hn::Set(d, reflectivity);
   return {hn::Add(hn::Mul(color.x, kept), hn::Mul(radiance.x, taken)),
@@ -311,8 +319,8 @@ void ShadeModel(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
   // light's direction or shadow depends on it.
   constexpr bool kNeedsView = kModel != BatchModel::lambert;
   const bool needs_position = kNeedsView || any_shadowed_light(u) || !only_directional_lights(u);
-  const bool reflects =
-      kPhong && m.reflectivity > 0.0f && u.frame->lighting->environment.reflections;
+  const bool reflects = kPhong && m.reflectivity > 0.0f &&
+                        (u.reflection != nullptr || u.frame->lighting->environment.reflections);
   const Vec3V eye = Set3(u.frame->eye);
   const Albedo base{{hn::Set(d, m.base_color.r), hn::Set(d, m.base_color.g),
                      hn::Set(d, m.base_color.b), hn::Set(d, m.base_color.a)}};
@@ -371,7 +379,7 @@ void ShadeModel(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
         }
         light = SpecularLight(u, kModel == BatchModel::blinn_phong, n, view, position, albedo,
                               specular, active);  // albedo already in
-        if (reflects) light = Reflected(u, light, view, n, in.count - j);
+        if (reflects) light = Reflected(u, light, view, n, position, in.count - j);
       }
       color[0] = hn::Add(light.x, emission.x);
       color[1] = hn::Add(light.y, emission.y);

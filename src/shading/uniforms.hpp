@@ -15,7 +15,8 @@
 
 namespace facet::shading {
 
-struct ShadowMaps;  // shadow_map.hpp
+struct ShadowMaps;        // shadow_map.hpp
+struct PlanarReflection;  // planar_reflection.hpp
 
 // A light prepared for shading: directions normalized, cone angles as cosines.
 struct LightData {
@@ -81,6 +82,9 @@ struct DrawUniforms {
   const Material* material = nullptr;  // the draw's own copy
   const FrameUniforms* frame = nullptr;
   std::uint32_t instance_id = 0;  // what the instance ids output shows (Renderer::set_instance_id)
+  // The planar reflection of the draw's plane (Material::reflects_scene) in the color pass of a
+  // frame that renders it; else null, and the draw reflects the environment alone.
+  const PlanarReflection* reflection = nullptr;
 };
 
 // Whether every light (Light or LightData) is directional: then no light's direction depends on

@@ -22,8 +22,10 @@ float distance(const glm::vec4& c, int plane, const ClipBounds& b) {
       return b.gx * c.w - c.x;
     case 4:
       return c.y + b.gy * c.w;
-    default:
+    case 5:
       return b.gy * c.w - c.y;
+    default:
+      return user_plane_distance(b.user_plane, c);
   }
 }
 
@@ -42,6 +44,12 @@ ClipBounds guard_band_bounds(int width, int height) {
   // |ndc| <= 1 + 2G / width.
   return {1.0f + 2.0f * kGuardBandPixels / static_cast<float>(width),
           1.0f + 2.0f * kGuardBandPixels / static_cast<float>(height)};
+}
+
+ClipBounds guard_band_bounds(const Frame& frame) {
+  ClipBounds bounds = guard_band_bounds(frame.width, frame.height);
+  if (frame.clip_plane) bounds.clips_user_plane = true, bounds.user_plane = *frame.clip_plane;
+  return bounds;
 }
 
 void clip_polygon(ClipPolygon& polygon, unsigned planes, const ClipBounds& bounds, int varyings) {

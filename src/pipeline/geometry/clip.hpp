@@ -1,7 +1,8 @@
 // Homogeneous clipping (Sutherland-Hodgman in clip space). Read by primitive.cpp (the fast
 // path) and reference.cpp. A triangle is clipped against near and far always and against the
 // sides only when a vertex leaves the guard band (fixed_point.hpp), where fixed point would
-// overflow; inside the guard band the rasterizer's bounding box does the side clipping.
+// overflow; inside the guard band the rasterizer's bounding box does the side clipping. A
+// frame may add a plane of its own (ClipBounds::user_plane: a planar reflection's mirror).
 #pragma once
 
 #include <glm/vec4.hpp>
@@ -17,10 +18,11 @@ enum ClipPlane : unsigned {
   kClipRight = 1u << 3,
   kClipBottom = 1u << 4,
   kClipTop = 1u << 5,
+  kClipUser = 1u << 6,  // ClipBounds::user_plane, in frames that have one
 };
-inline constexpr int kClipPlaneCount = 6;
+inline constexpr int kClipPlaneCount = 7;
 
-// Sutherland-Hodgman adds at most one vertex per plane: 3 + 6.
+// Sutherland-Hodgman adds at most one vertex per plane: 3 + 7.
 inline constexpr int kMaxClipVertices = 3 + kClipPlaneCount;
 
 struct ClipPolygon {
@@ -33,9 +35,21 @@ struct ClipPolygon {
 struct ClipBounds {
   float gx = 1.0f;
   float gy = 1.0f;
+  // A plane in clip space (a, b, c, d), inside where user_plane_distance >= 0, tested only when
+  // clips_user_plane: a reflection pass's mirror plane, behind which nothing may be seen.
+  bool clips_user_plane = false;
+  glm::vec4 user_plane{0.0f};
 };
 
+// The signed distance of clip position c to a user plane, in the order every test of it uses
+// (the vertex pass's SIMD lanes included): (a x + b y) + (c z + d w).
+inline float user_plane_distance(const glm::vec4& plane, const glm::vec4& c) {
+  return (plane.x * c.x + plane.y * c.y) + (plane.z * c.z + plane.w * c.w);
+}
+
+// The guard band for the frame size, with the frame's own plane (Frame::clip_plane) if any.
 ClipBounds guard_band_bounds(int width, int height);
+ClipBounds guard_band_bounds(const Frame& frame);
 
 // Clips the polygon against each plane in `planes`; interpolates `varyings` floats.
 // Leaves count < 3 when nothing remains.

@@ -181,6 +181,7 @@ void run_geometry(Frame& frame, int workers) {
     frame.worker_vertices.resize(workers);
   }
   const Totals totals = plan_chunks(frame);
+  const ClipBounds guard = guard_band_bounds(frame);
   // A small draw is one task, its vertex transform and then all its chunks, so that its
   // vertices (about 160 bytes each) are still in the core's cache when its triangles read
   // them; they go to the worker's own buffer, which the worker's next small draw overwrites
@@ -204,7 +205,7 @@ void run_geometry(Frame& frame, int workers) {
           small_over_w,
           vertex_count * static_cast<std::size_t>(frame.draws[d].pipeline.varyings) + kOverWSlack);
     } else {
-      transform_vertices(frame.draws[d], *frame.kernels, frame.width, frame.height, workers,
+      transform_vertices(frame.draws[d], *frame.kernels, frame.width, frame.height, guard, workers,
                          frame.vertices[d]);
       for (; k < end; ++k) frame.geometry_tasks.push_back({k, k + 1, false});
     }
@@ -223,7 +224,7 @@ void run_geometry(Frame& frame, int workers) {
     const std::uint32_t d = frame.chunks[task.first_chunk].draw;
     DrawVertices& vertices = task.transform ? frame.worker_vertices[worker] : frame.vertices[d];
     if (task.transform) {
-      transform_vertices(frame.draws[d], *frame.kernels, frame.width, frame.height, workers,
+      transform_vertices(frame.draws[d], *frame.kernels, frame.width, frame.height, guard, workers,
                          vertices);
     }
     for (std::uint32_t k = task.first_chunk; k < task.end_chunk; ++k) {

@@ -86,15 +86,15 @@ struct Assembler {
     std::uint32_t index;  // in the mesh, when the draw has a triangle hook
   };
 
-  // The planes a triangle whose vertices' codes or-ed are `codes` must be clipped against. Near
-  // and far are the same planes in both bounds; the guard band's sides only need checking when
-  // a vertex is outside the frustum's sides (the guard band contains them).
+  // The planes a triangle whose vertices' codes or-ed are `codes` must be clipped against. Near,
+  // far and a user plane are the same planes in both bounds; the guard band's sides only need
+  // checking when a vertex is outside the frustum's sides (the guard band contains them).
   static unsigned clip_planes(unsigned codes) {
     const unsigned any_out = codes & kFrustumCodes;
     if (any_out & (kClipLeft | kClipRight | kClipBottom | kClipTop)) {
       return codes >> kGuardCodeShift & kFrustumCodes;
     }
-    return any_out & (kClipNear | kClipFar);
+    return any_out & (kClipNear | kClipFar | kClipUser);
   }
 
   // Whether a triangle culling accepted goes to the setup kernel in a run: assemble()'s common
@@ -288,10 +288,9 @@ void assemble_primitives(const Frame& frame, std::uint32_t draw_index, const Dra
                          PrimitiveCounts& counts) {
   const DrawRecord& draw = frame.draws[draw_index];
   const Mesh& mesh = *draw.mesh;
-  Assembler assembler{
-      out,           counts, frame.width, frame.height,
-      draw_index,    draw,   vertices,    guard_band_bounds(frame.width, frame.height),
-      *frame.kernels};
+  Assembler assembler{out,           counts, frame.width, frame.height,
+                      draw_index,    draw,   vertices,    guard_band_bounds(frame),
+                      *frame.kernels};
   if (mesh.topology == Topology::lines) {
     for (std::size_t p = begin; p < end; ++p) {
       assembler.line(vertex_index(mesh, 2 * p), vertex_index(mesh, 2 * p + 1));

@@ -91,7 +91,7 @@ bool keeps_clip_vertices(const DrawRecord& draw, const ClipBounds& guard) {
 }
 
 void transform_vertices(const DrawRecord& draw, const Kernels& kernels, int width, int height,
-                        int workers, DrawVertices& out) {
+                        const ClipBounds& guard, int workers, DrawVertices& out) {
   std::size_t count = draw.mesh->positions.size();
   const Mesh& mesh = *draw.mesh;
   out.clip_written = draw.clip_vertices;
@@ -105,8 +105,8 @@ void transform_vertices(const DrawRecord& draw, const Kernels& kernels, int widt
                            draw.uniforms.normal_matrix,
                            width,
                            height,
-                           {1.0f, 1.0f},
-                           guard_band_bounds(width, height)};
+                           {1.0f, 1.0f, guard.clips_user_plane, guard.user_plane},
+                           guard};
   if (count <= kVerticesPerTask) {
     transform_range(draw, kernels, to, 0, count, out);
     return;

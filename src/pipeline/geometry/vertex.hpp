@@ -22,9 +22,9 @@ inline constexpr std::size_t kVerticesPerTask = 4096;
 bool keeps_clip_vertices(const DrawRecord& draw, const ClipBounds& guard);
 
 // Transforms every vertex of the draw into out (resized to the vertex count) and projects it
-// onto a width x height framebuffer. Large meshes are transformed in parallel batches; the
-// result does not depend on how they are split.
+// onto a width x height framebuffer whose guard band (and plane) `guard` is. Large meshes are
+// transformed in parallel batches; the result does not depend on how they are split.
 void transform_vertices(const DrawRecord& draw, const Kernels& kernels, int width, int height,
-                        int workers, DrawVertices& out);
+                        const ClipBounds& guard, int workers, DrawVertices& out);
 
 }  // namespace facet::pipeline

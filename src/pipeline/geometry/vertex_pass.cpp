@@ -134,6 +134,13 @@ void RunVertexPass(const VertexPassInput& in, std::size_t first, std::size_t cou
                            Outside(d, hn::Sub(gy_w, y), kClipTop << shift)));
     };
     auto codes = hn::Or(near_far, hn::Or(sides(in.frustum, 0), sides(in.guard, kGuardCodeShift)));
+    if (in.guard.clips_user_plane) {  // the same plane in both bounds
+      const glm::vec4& p = in.guard.user_plane;
+      const auto distance =
+          hn::Add(hn::Add(hn::Mul(hn::Set(d, p.x), x), hn::Mul(hn::Set(d, p.y), y)),
+                  hn::Add(hn::Mul(hn::Set(d, p.z), z), hn::Mul(hn::Set(d, p.w), w)));
+      codes = hn::Or(codes, Outside(d, distance, kClipUser | kClipUser << kGuardCodeShift));
+    }
     const auto finite = hn::And(hn::And(hn::IsFinite(x), hn::IsFinite(y)),
                                 hn::And(hn::IsFinite(z), hn::IsFinite(w)));
     codes = hn::Or(codes, hn::IfThenZeroElse(hn::RebindMask(di, finite),

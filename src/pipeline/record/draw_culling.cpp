@@ -108,12 +108,18 @@ bool box_inside_clip_bounds(const MeshBox& box, const glm::mat4& model_view_proj
   const float x_margin = kMargin * (size.x + guard.gx * size.w);
   const float y_margin = kMargin * (size.y + guard.gy * size.w);
   const float z_margin = kMargin * (size.z + size.w);
+  const glm::vec4 plane = glm::abs(guard.user_plane);
+  const float plane_margin =
+      kMargin * (plane.x * size.x + plane.y * size.y + plane.z * size.z + plane.w * size.w);
   for (int corner = 0; corner < 8; ++corner) {
     const glm::vec4 c = model_view_projection * corner_of(box, corner);
     const bool inside = c.z + c.w > z_margin && c.w - c.z > z_margin &&
                         c.x + guard.gx * c.w > x_margin && guard.gx * c.w - c.x > x_margin &&
                         c.y + guard.gy * c.w > y_margin && guard.gy * c.w - c.y > y_margin;
     if (!inside) return false;  // also when NaN
+    if (guard.clips_user_plane && !(user_plane_distance(guard.user_plane, c) > plane_margin)) {
+      return false;
+    }
   }
   return true;
 }

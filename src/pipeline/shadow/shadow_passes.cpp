@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <optional>
 
+#include "core/scope_exit.hpp"
 #include "pipeline/record/draw_culling.hpp"
 #include "pipeline/record/pipeline_table.hpp"
 #include "pipeline/renderer_impl.hpp"
@@ -106,13 +107,6 @@ int shadow_views(const Light& light, const Camera& camera, const pipeline::World
   return count;
 }
 
-// Runs f when the scope ends, by return or by exception.
-template <class F>
-struct ScopeExit {
-  F f;
-  ~ScopeExit() { f(); }
-};
-
 }  // namespace
 
 void Renderer::Impl::run_shadow_passes() {
@@ -148,12 +142,12 @@ void Renderer::Impl::run_shadow_passes() {
       caster.material.emissive_map = {};
     }
   }
-  std::swap(frame.draws, shadow_draws);
+  std::swap(frame.draws, set_aside_draws);
   // The color pass's state is put back however the passes end: one that throws (too many
   // primitives, memory) leaves the renderer as it was for the next frame.
   const ScopeExit restore{[&] {
     depth_only_pass = false;
-    std::swap(frame.draws, shadow_draws);
+    std::swap(frame.draws, set_aside_draws);
     camera = color_camera;
     settings = color_settings;
     frame.view_projection = color_view_projection;

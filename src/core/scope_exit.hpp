@@ -1,0 +1,13 @@
+// Runs a function when a scope ends, by return or by exception: what a pass that borrows the
+// renderer's state uses to put it back.
+#pragma once
+
+namespace facet {
+
+template <class F>
+struct ScopeExit {
+  F f;
+  ~ScopeExit() { f(); }
+};
+
+}  // namespace facet

@@ -1,0 +1,155 @@
+// The planar reflections' passes (RenderSettings::reflections): after the shadow maps and before
+// the color pass, the frame's draws run once more per mirror plane, seen by the camera mirrored
+// through the plane (mirror.hpp) and cut at it, into a float render texture whose mip chain then
+// blurs it for rough surfaces: the same tiled pipeline, so the reflections, and the images, are
+// the same for any thread count, tile size and SIMD target. The mirror draws' Phong and PBR
+// kernels then read them (shading/planar_reflection-inl.h).
+#include <algorithm>
+#include <cmath>
+
+#include "core/scope_exit.hpp"
+#include "facet/color.hpp"
+#include "pipeline/record/draw_culling.hpp"
+#include "pipeline/reflection/mirror.hpp"
+#include "pipeline/renderer_impl.hpp"
+
+namespace facet {
+
+using pipeline::DrawRecord;
+
+namespace {
+
+// The blur of a surface of roughness alpha spans about alpha times this share of the image's
+// height (PlanarReflection::blur_texels).
+constexpr float kBlurShare = 0.05f;
+
+// Whether a draw's model reads a planar reflection (shade_batch.cpp, pbr_batch-inl.h).
+bool reads_reflection(const DrawRecord& draw) {
+  const Material& m = draw.material;
+  if (!m.reflects_scene) return false;
+  if (m.shading == ShadingModel::pbr) return true;
+  return (m.shading == ShadingModel::phong || m.shading == ShadingModel::blinn_phong) &&
+         m.reflectivity > 0.0f;
+}
+
+// Whether a draw is a mirror on `plane` (as the eye sees it).
+bool mirror_on_plane(const DrawRecord& draw, const glm::vec4& plane, glm::vec3 eye) {
+  if (!reads_reflection(draw)) return false;
+  const std::optional<glm::vec4> own = pipeline::mirror_plane(*draw.mesh, draw.uniforms.model, eye);
+  return own && pipeline::same_plane(*own, plane);
+}
+
+// Whether every corner of a draw's bounds lies behind the plane (a pass cuts it away whole).
+bool behind_plane(const DrawRecord& draw, const glm::vec4& plane) {
+  if (!draw.bounds) return false;
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::vec3 p((corner & 1) ? draw.bounds->high.x : draw.bounds->low.x,
+                      (corner & 2) ? draw.bounds->high.y : draw.bounds->low.y,
+                      (corner & 4) ? draw.bounds->high.z : draw.bounds->low.z);
+    const glm::vec3 world(draw.uniforms.model * glm::vec4(p, 1.0f));
+    if (!(glm::dot(glm::vec3(plane), world) + plane.w < 0.0f)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+void Renderer::Impl::run_reflection_passes(const Framebuffer& target) {
+  reflection_ms = 0.0;
+  mirror_count = 0;
+  if (!frame_reflections) return;
+  const auto start = pipeline::Clock::now();
+  const glm::vec3 eye = camera.shading_eye();
+  mirror_of_draw.assign(frame.draws.size(), -1);
+  for (std::size_t d = 0; d < frame.draws.size(); ++d) {
+    const DrawRecord& draw = frame.draws[d];
+    if (!reads_reflection(draw)) continue;
+    const std::optional<glm::vec4> plane =
+        pipeline::mirror_plane(*draw.mesh, draw.uniforms.model, eye);
+    if (!plane) continue;
+    int m = 0;
+    while (m < mirror_count && !pipeline::same_plane(mirrors[m].plane, *plane)) ++m;
+    if (m == mirror_count) {
+      if (mirror_count == RenderSettings::kMaxMirrorPlanes) continue;  // the environment's
+      mirrors[mirror_count++].plane = *plane;
+    }
+    mirror_of_draw[d] = m;
+  }
+  if (mirror_count == 0) return;
+
+  // What the passes change, put back afterwards: the color pass's draws, camera, settings and
+  // fog color.
+  const Camera color_camera = camera;
+  const RenderSettings color_settings = settings;
+  const glm::mat4 color_view_projection = frame.view_projection;
+  const glm::vec3 color_fog = lighting.fog.color;
+  std::swap(frame.draws, set_aside_draws);
+  const ScopeExit restore{[&] {
+    std::swap(frame.draws, set_aside_draws);
+    camera = color_camera;
+    settings = color_settings;
+    frame.view_projection = color_view_projection;
+    frame.clip_plane.reset();
+    lighting.fog.color = color_fog;
+  }};
+  // The passes hold linear light: no exposure, no tone curve; the color pass applies both to
+  // what the mirrors show. Their fog fades to the color pass's fog color.
+  settings.msaa = 1;
+  settings.exposure = 0.0f;
+  settings.tone_mapping = ToneMapping::none;
+  lighting.fog.color =
+      fog_color_under(color_settings.tone_mapping, color_fog, std::exp2(color_settings.exposure));
+  const int width =
+      std::max(1, static_cast<int>(std::lround(target.width() * color_settings.reflection_scale)));
+  const int height =
+      std::max(1, static_cast<int>(std::lround(target.height() * color_settings.reflection_scale)));
+  for (int m = 0; m < mirror_count; ++m) {
+    MirrorPass& mirror = mirrors[m];
+    camera = pipeline::mirrored_camera(color_camera, mirror.plane);
+    frame.view_projection = camera.view_projection();
+    frame.clip_plane = pipeline::clip_space_plane(frame.view_projection, mirror.plane);
+    const glm::mat4 view = camera.view();
+    // The pass draws what its view takes in in front of the plane, but not the mirror itself.
+    frame.draws.clear();
+    for (const std::vector<DrawRecord>* draws : {&set_aside_draws, &outside_view_draws}) {
+      for (std::size_t d = 0; d < draws->size(); ++d) {
+        const DrawRecord& draw = (*draws)[d];
+        const bool is_mirror = draws == &set_aside_draws ? mirror_of_draw[d] == m
+                                                         : mirror_on_plane(draw, mirror.plane, eye);
+        if (is_mirror || behind_plane(draw, mirror.plane)) continue;
+        const glm::mat4 model_view_projection = frame.view_projection * draw.uniforms.model;
+        if (draw.bounds && pipeline::box_outside_frustum(*draw.bounds, model_view_projection)) {
+          continue;
+        }
+        frame.draws.push_back(draw);
+        DrawRecord& mirrored = frame.draws.back();
+        mirrored.uniforms.model_view_projection = model_view_projection;
+        mirrored.uniforms.reflection = nullptr;  // another plane's mirror shows the environment
+        if (pipeline::is_blended(draw.material.alpha_mode) && draw.bounds) {
+          const glm::vec4 centre = view * draw.uniforms.model *
+                                   glm::vec4((draw.bounds->low + draw.bounds->high) * 0.5f, 1.0f);
+          mirrored.view_depth = -centre.z;
+        }
+      }
+    }
+    if (!mirror.target || mirror.target->width() != width || mirror.target->height() != height) {
+      RenderTextureOptions options;
+      options.format = ColorFormat::rgba32f;
+      options.mipmaps = true;
+      mirror.target.emplace(width, height, options);
+    }
+    run(mirror.target->framebuffer());
+    mirror.target->update();
+    mirror.reflection.image = mirror.target->texture().get();
+    mirror.reflection.world_to_image = pipeline::mirror_image_transform(camera);
+    mirror.reflection.blur_texels = kBlurShare * static_cast<float>(height);
+  }
+  // The color pass's mirror draws read their plane's pass.
+  for (std::size_t d = 0; d < set_aside_draws.size(); ++d) {
+    set_aside_draws[d].uniforms.reflection =
+        mirror_of_draw[d] >= 0 ? &mirrors[mirror_of_draw[d]].reflection : nullptr;
+  }
+  reflection_ms = pipeline::ms_since(start);
+}
+
+}  // namespace facet

@@ -1,0 +1,341 @@
+// Planar reflections (Material::reflects_scene, RenderSettings::reflections): a mirror floor
+// shows what a render of the scene mirrored through it shows, what lies behind the plane is cut
+// away, rougher surfaces blur it, the images are the same for any thread count, tile size and
+// SIMD target, and the plane of a mirror draw is found (or refused) as mirror.hpp says.
+#include <gtest/gtest.h>
+#include <hwy/targets.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <glm/gtc/matrix_transform.hpp>
+#include <vector>
+
+#include "facet/error.hpp"
+#include "facet/procedural.hpp"
+#include "pipeline/geometry/clip.hpp"
+#include "pipeline/reflection/mirror.hpp"
+#include "support/forced_target.hpp"
+#include "support/render_helpers.hpp"
+
+namespace facet::test {
+namespace {
+
+constexpr int kWidth = 160, kHeight = 120;
+constexpr float kFloor = 20.0f;  // the mirror's side, centred on the origin at y = 0
+
+Camera view_camera() {
+  return Camera::look_at({0.0f, 2.0f, 6.0f}, {0.0f, 0.5f, 0.0f}, {0, 1, 0}, 50.0f,
+                         static_cast<float>(kWidth) / kHeight, 0.5f, 40.0f);
+}
+
+Material unlit(glm::vec3 color) {
+  Material m;
+  m.shading = ShadingModel::unlit;
+  m.base_color = glm::vec4(color, 1.0f);
+  m.cull = CullMode::none;  // also drawn mirrored, which reverses the winding
+  return m;
+}
+
+// A perfect Phong mirror: black itself, all reflection, an exponent too high to blur.
+Material phong_mirror() {
+  Material m;
+  m.shading = ShadingModel::blinn_phong;
+  m.base_color = {0.0f, 0.0f, 0.0f, 1.0f};
+  m.specular_color = glm::vec3(0.0f);
+  m.shininess = 1e6f;
+  m.reflectivity = 1.0f;
+  m.reflects_scene = true;
+  return m;
+}
+
+// A metallic white PBR mirror of the given roughness: it shows what it reflects, dimmed as it
+// roughens.
+Material pbr_mirror(float roughness) {
+  Material m;
+  m.shading = ShadingModel::pbr;
+  m.metallic = 1.0f;
+  m.roughness = roughness;
+  m.reflects_scene = true;
+  return m;
+}
+
+// Above the plane: a red box on the left and a green one on the right, so that a reflection
+// flipped left to right or upside down shows. `mirror` places them mirrored through y = 0.
+// (floor_pixels has the same boxes.)
+void add_boxes(Scene& scene, bool mirror) {
+  const glm::mat4 flip = glm::scale(glm::mat4(1.0f), {1.0f, mirror ? -1.0f : 1.0f, 1.0f});
+  scene.add_object(box({1.0f, 1.0f, 1.0f}), unlit({0.9f, 0.1f, 0.1f}),
+                   flip * glm::translate(glm::mat4(1.0f), {-1.2f, 0.8f, 0.0f}));
+  scene.add_object(box({0.8f, 1.6f, 0.8f}), unlit({0.1f, 0.8f, 0.2f}),
+                   flip * glm::translate(glm::mat4(1.0f), {1.0f, 1.1f, -1.0f}));
+}
+
+Scene mirror_scene(const Material& floor) {
+  Scene scene;
+  scene.add_object(plane(kFloor, kFloor), floor);
+  add_boxes(scene, false);
+  scene.lighting.ambient = glm::vec3(0.0f);
+  return scene;
+}
+
+RenderSettings full_size_reflections() {
+  RenderSettings settings;
+  settings.clear_color = {0.1f, 0.2f, 0.6f, 1.0f};
+  settings.reflection_scale = 1.0f;  // texel for pixel: the reflection as sharp as the view
+  return settings;
+}
+
+// The floor's pixels the boxes leave in view, less a pixel along their outlines: where only
+// the mirror is seen.
+std::vector<bool> floor_pixels(const Camera& camera) {
+  Scene scene;
+  scene.add_object(plane(kFloor, kFloor), unlit(glm::vec3(1.0f)));
+  scene.add_object(box({1.0f, 1.0f, 1.0f}), unlit(glm::vec3(0.0f)),
+                   glm::translate(glm::mat4(1.0f), {-1.2f, 0.8f, 0.0f}));
+  scene.add_object(box({0.8f, 1.6f, 0.8f}), unlit(glm::vec3(0.0f)),
+                   glm::translate(glm::mat4(1.0f), {1.0f, 1.1f, -1.0f}));
+  RenderSettings settings;
+  settings.clear_color = {0.0f, 0.0f, 0.0f, 1.0f};
+  const Framebuffer fb = render_scene_image(scene, camera, kWidth, kHeight, settings);
+  std::vector<bool> inside(static_cast<std::size_t>(kWidth) * kHeight, false);
+  const auto white = [&](int x, int y) {
+    return x >= 0 && y >= 0 && x < kWidth && y < kHeight &&
+           fb.rgba8()[(static_cast<std::size_t>(y) * kWidth + x) * 4] == 255;
+  };
+  for (int y = 0; y < kHeight; ++y) {
+    for (int x = 0; x < kWidth; ++x) {
+      inside[static_cast<std::size_t>(y) * kWidth + x] =
+          white(x, y) && white(x - 1, y) && white(x + 1, y) && white(x, y - 1) && white(x, y + 1);
+    }
+  }
+  return inside;
+}
+
+// How many of the floor's pixels differ from the reference by more than `tolerance` codes in a
+// channel, and how many show the red or the green box.
+struct MirrorCompare {
+  int floor = 0, differing = 0, red = 0, green = 0;
+};
+MirrorCompare compare_floor(const Framebuffer& image, const Framebuffer& reference,
+                            const std::vector<bool>& floor, int tolerance) {
+  MirrorCompare c;
+  for (std::size_t i = 0; i < floor.size(); ++i) {
+    if (!floor[i]) continue;
+    ++c.floor;
+    const std::uint8_t* a = &image.rgba8()[i * 4];
+    const std::uint8_t* b = &reference.rgba8()[i * 4];
+    bool differs = false;
+    for (int k = 0; k < 3; ++k) differs |= std::abs(int(a[k]) - int(b[k])) > tolerance;
+    c.differing += differs;
+    c.red += a[0] > 150 && a[1] < 120;
+    c.green += a[1] > 150 && a[0] < 120;
+  }
+  return c;
+}
+
+// The mirror shows, pixel for pixel, what a render of the boxes and their mirror images shows
+// there (edges aside: the two renders rasterize mirrored edges).
+TEST(PlanarReflection, ShowsTheSceneMirroredThroughThePlane) {
+  const Camera camera = view_camera();
+  const Framebuffer image = render_scene_image(mirror_scene(phong_mirror()), camera, kWidth,
+                                               kHeight, full_size_reflections());
+  Scene mirrored;
+  add_boxes(mirrored, false);
+  add_boxes(mirrored, true);
+  const Framebuffer reference =
+      render_scene_image(mirrored, camera, kWidth, kHeight, full_size_reflections());
+  const MirrorCompare c = compare_floor(image, reference, floor_pixels(camera), 24);
+  ASSERT_GT(c.floor, kWidth * kHeight / 4);
+  EXPECT_GT(c.red, 200) << "the red box's reflection";
+  EXPECT_GT(c.green, 200) << "the green box's reflection";
+  EXPECT_LT(c.differing, c.floor / 50) << c.differing << " of " << c.floor << " floor pixels";
+}
+
+// A quad under the floor, between the mirrored eye and the plane, its far end rising above
+// the plane only beyond the far plane: cut at the mirror's plane, it never hides the
+// reflection (whole-draw culling cannot drop it: its bounds cross the plane).
+TEST(PlanarReflection, CutsWhatLiesBehindThePlane) {
+  const Camera camera = view_camera();
+  Scene scene = mirror_scene(phong_mirror());
+  const glm::mat4 tilted = glm::translate(glm::mat4(1.0f), {0.0f, -0.3f, -25.0f}) *
+                           glm::rotate(glm::mat4(1.0f), 0.012f, {1.0f, 0.0f, 0.0f});
+  scene.add_object(plane(60.0f, 70.0f), unlit({0.0f, 0.0f, 1.0f}), tilted);
+  const Framebuffer image =
+      render_scene_image(scene, camera, kWidth, kHeight, full_size_reflections());
+  Scene mirrored;
+  add_boxes(mirrored, false);
+  add_boxes(mirrored, true);
+  const Framebuffer reference =
+      render_scene_image(mirrored, camera, kWidth, kHeight, full_size_reflections());
+  const MirrorCompare c = compare_floor(image, reference, floor_pixels(camera), 24);
+  EXPECT_LT(c.differing, c.floor / 50) << c.differing << " of " << c.floor << " floor pixels";
+}
+
+// Sum of the squared differences between horizontal neighbours on the floor: how sharp what it
+// shows is. (Squared: a blur spreads a step over several pixels, whose absolute differences add
+// up to the step's as before.)
+double sharpness(const Framebuffer& image, const std::vector<bool>& floor) {
+  double edges = 0.0;
+  for (int y = 0; y < kHeight; ++y) {
+    for (int x = 0; x + 1 < kWidth; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * kWidth + x;
+      if (!floor[i] || !floor[i + 1]) continue;
+      for (int k = 0; k < 3; ++k) {
+        const double d = int(image.rgba8()[i * 4 + k]) - int(image.rgba8()[(i + 1) * 4 + k]);
+        edges += d * d;
+      }
+    }
+  }
+  return edges;
+}
+
+// A rough mirror shows the boxes blurred: its edges weaker than a smooth one's. (Phong: its
+// reflection is not dimmed as it roughens, as PBR's is.)
+TEST(PlanarReflection, RougherSurfacesBlurIt) {
+  const Camera camera = view_camera();
+  const std::vector<bool> floor = floor_pixels(camera);
+  Material rough = phong_mirror();
+  rough.shininess = 8.0f;
+  const double smooth_edges =
+      sharpness(render_scene_image(mirror_scene(phong_mirror()), camera, kWidth, kHeight,
+                                   full_size_reflections()),
+                floor);
+  const double rough_edges = sharpness(
+      render_scene_image(mirror_scene(rough), camera, kWidth, kHeight, full_size_reflections()),
+      floor);
+  ASSERT_GT(smooth_edges, 0.0);
+  EXPECT_LT(rough_edges, 0.5 * smooth_edges)
+      << "smooth " << smooth_edges << ", rough " << rough_edges;
+}
+
+// Off, or on a material that does not ask, the mirror shows the environment alone (here none:
+// black); on, the pass is timed.
+TEST(PlanarReflection, OnlyWhereAskedAndOnlyWhenOn) {
+  const Camera camera = view_camera();
+  RenderSettings off = full_size_reflections();
+  off.reflections = false;
+  Material plain_mirror = phong_mirror();
+  plain_mirror.reflects_scene = false;
+  const Framebuffer without =
+      render_scene_image(mirror_scene(plain_mirror), camera, kWidth, kHeight, off);
+  EXPECT_TRUE(
+      render_scene_image(mirror_scene(phong_mirror()), camera, kWidth, kHeight, off).rgba8() ==
+      without.rgba8());
+  EXPECT_TRUE(render_scene_image(mirror_scene(plain_mirror), camera, kWidth, kHeight,
+                                 full_size_reflections())
+                  .rgba8() == without.rgba8());
+  const Framebuffer with = render_scene_image(mirror_scene(phong_mirror()), camera, kWidth, kHeight,
+                                              full_size_reflections());
+  EXPECT_FALSE(with.rgba8() == without.rgba8());
+
+  Renderer renderer(full_size_reflections());
+  Framebuffer fb(kWidth, kHeight);
+  const Scene scene = mirror_scene(phong_mirror());
+  renderer.begin_frame(camera, scene.lighting);
+  draw_scene(renderer, scene);
+  renderer.finish(fb);
+  EXPECT_GT(renderer.stats().ms_reflections, 0.0);
+}
+
+// A mirror under a shadowing sun, at the default half size, with a PBR sphere reflected: the
+// same bytes for any thread count, tile size and SIMD target.
+TEST(PlanarReflection, SameImageForAnyThreadsTilesAndSimdTarget) {
+  Scene scene = mirror_scene(pbr_mirror(0.2f));
+  Material ball;
+  ball.shading = ShadingModel::pbr;
+  ball.base_color = {0.8f, 0.6f, 0.3f, 1.0f};
+  scene.add_object(uv_sphere(0.6f), ball, glm::translate(glm::mat4(1.0f), {0.2f, 0.7f, 1.2f}));
+  scene.lighting.lights = {Light::directional({0.4f, -1.0f, -0.3f}, glm::vec3(1.0f), 2.0f)};
+  scene.lighting.ambient = glm::vec3(0.1f);
+  const Camera camera = view_camera();
+  RenderSettings base;
+  base.shadows = true;
+  base.threads = 1;
+  const Framebuffer expected = render_scene_image(scene, camera, kWidth, kHeight, base);
+  for (int msaa : {1, 4}) {
+    RenderSettings first = base;
+    first.msaa = msaa;
+    const Framebuffer reference = render_scene_image(scene, camera, kWidth, kHeight, first);
+    for (int threads : {2, 3}) {
+      for (int tile : {16, 128}) {
+        RenderSettings s = first;
+        s.threads = threads;
+        s.tile_size = tile;
+        EXPECT_TRUE(render_scene_image(scene, camera, kWidth, kHeight, s).rgba8() ==
+                    reference.rgba8())
+            << threads << " threads, tiles of " << tile << ", msaa " << msaa;
+      }
+    }
+  }
+  for (std::int64_t target : simd_targets()) {
+    ForcedTarget forced(target);
+    EXPECT_TRUE(render_scene_image(scene, camera, kWidth, kHeight, base).rgba8() ==
+                expected.rgba8())
+        << hwy::TargetName(target);
+  }
+}
+
+TEST(PlanarReflection, RefusesAScaleOutsideZeroToOne) {
+  for (float scale : {0.0f, -0.5f, 1.5f, NAN}) {
+    RenderSettings settings;
+    settings.reflection_scale = scale;
+    EXPECT_THROW(Renderer{settings}, Error) << scale;
+  }
+}
+
+// --- The geometry (mirror.hpp) ---
+
+TEST(MirrorPlane, OfAFlatMeshFacingTheEye) {
+  const glm::mat4 raised = glm::translate(glm::mat4(1.0f), {0.0f, 2.0f, 0.0f});
+  const auto above = pipeline::mirror_plane(plane(4.0f, 4.0f), raised, {1.0f, 5.0f, 1.0f});
+  ASSERT_TRUE(above);
+  EXPECT_NEAR(above->y, 1.0f, 1e-6f);
+  EXPECT_NEAR(above->w, -2.0f, 1e-6f);
+  const auto below = pipeline::mirror_plane(plane(4.0f, 4.0f), raised, {1.0f, -5.0f, 1.0f});
+  ASSERT_TRUE(below);
+  EXPECT_TRUE(pipeline::same_plane(*below, -*above));
+  EXPECT_FALSE(pipeline::same_plane(*below, *above));
+  // Not flat, seen edge-on, no area: none.
+  EXPECT_FALSE(pipeline::mirror_plane(box({1.0f, 1.0f, 1.0f}), raised, {0.0f, 5.0f, 0.0f}));
+  EXPECT_FALSE(pipeline::mirror_plane(plane(4.0f, 4.0f), raised, {9.0f, 2.0f, 0.0f}));
+  Mesh line_like;
+  line_like.positions = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}};
+  EXPECT_FALSE(pipeline::mirror_plane(line_like, glm::mat4(1.0f), {0.0f, 5.0f, 0.0f}));
+}
+
+// The mirrored camera sees a point's mirror image where the camera sees the point in the mirror:
+// a point on the plane lands at the same place in both views (its own reflection).
+TEST(MirrorPlane, MirroredCameraSeesThePlaneWhereTheCameraDoes) {
+  const Camera camera = view_camera();
+  const glm::vec4 floor(0.0f, 1.0f, 0.0f, 0.0f);
+  const Camera mirrored = pipeline::mirrored_camera(camera, floor);
+  EXPECT_NEAR(mirrored.eye.y, -camera.eye.y, 1e-6f);
+  const glm::mat4 to_image = pipeline::mirror_image_transform(mirrored);
+  for (const glm::vec3 p : {glm::vec3(0.5f, 0.0f, 1.0f), glm::vec3(-2.0f, 0.0f, -3.0f)}) {
+    const glm::vec4 c = camera.view_projection() * glm::vec4(p, 1.0f);
+    const glm::vec4 t = to_image * glm::vec4(p, 1.0f);
+    // The camera's image, flipped left to right: the mirrored camera's view is the mirror image.
+    EXPECT_NEAR(t.x / t.w, 0.5f - 0.5f * c.x / c.w, 1e-5f);
+    EXPECT_NEAR(t.y / t.w, 0.5f + 0.5f * c.y / c.w, 1e-5f);
+  }
+}
+
+// Clipping against the user plane keeps exactly the part of a triangle in front of it.
+TEST(MirrorPlane, ClipperCutsAtTheUserPlane) {
+  pipeline::ClipBounds bounds;
+  bounds.clips_user_plane = true;
+  bounds.user_plane = {0.0f, 1.0f, 0.0f, -0.25f};  // y >= 0.25 w
+  pipeline::ClipPolygon polygon;
+  polygon.count = 3;
+  polygon.vertices[0].clip = {-1.0f, -1.0f, 0.0f, 1.0f};
+  polygon.vertices[1].clip = {1.0f, -1.0f, 0.0f, 1.0f};
+  polygon.vertices[2].clip = {0.0f, 1.0f, 0.0f, 1.0f};
+  pipeline::clip_polygon(polygon, pipeline::kClipUser, bounds, 0);
+  ASSERT_EQ(polygon.count, 3);  // the tip above y = 0.25
+  for (int i = 0; i < polygon.count; ++i) {
+    EXPECT_GE(polygon.vertices[i].clip.y, 0.25f - 1e-6f);
+  }
+}
+
+}  // namespace
+}  // namespace facet::test

@@ -151,6 +151,35 @@ TEST(PlanarReflection, ShowsTheSceneMirroredThroughThePlane) {
   EXPECT_LT(c.differing, c.floor / 50) << c.differing << " of " << c.floor << " floor pixels";
 }
 
+// A small mirror, whose pass is cropped to where it is seen (a corner of the view), shows the
+// same: its texels are the full pass's.
+TEST(PlanarReflection, ASmallMirrorShowsTheSame) {
+  const Camera camera = view_camera();
+  Scene scene;
+  const glm::mat4 corner = glm::translate(glm::mat4(1.0f), {-1.5f, 0.0f, 1.5f});
+  scene.add_object(plane(3.0f, 3.0f), phong_mirror(), corner);
+  add_boxes(scene, false);
+  scene.lighting.ambient = glm::vec3(0.0f);
+  const Framebuffer image =
+      render_scene_image(scene, camera, kWidth, kHeight, full_size_reflections());
+  Scene mirrored;
+  add_boxes(mirrored, false);
+  add_boxes(mirrored, true);
+  const Framebuffer reference =
+      render_scene_image(mirrored, camera, kWidth, kHeight, full_size_reflections());
+  // The small mirror's pixels: the floor's where the small mirror lies.
+  Scene small;
+  small.add_object(plane(3.0f, 3.0f), unlit(glm::vec3(1.0f)), corner);
+  const Framebuffer mask = render_scene_image(small, camera, kWidth, kHeight);
+  std::vector<bool> pixels = floor_pixels(camera);
+  for (std::size_t i = 0; i < pixels.size(); ++i)
+    pixels[i] = pixels[i] && mask.rgba8()[i * 4] == 255;
+  const MirrorCompare c = compare_floor(image, reference, pixels, 24);
+  ASSERT_GT(c.floor, 500);
+  EXPECT_GT(c.red, 50) << "the red box's reflection";
+  EXPECT_LT(c.differing, c.floor / 50) << c.differing << " of " << c.floor << " mirror pixels";
+}
+
 // A quad under the floor, between the mirrored eye and the plane, its far end rising above
 // the plane only beyond the far plane: cut at the mirror's plane, it never hides the
 // reflection (whole-draw culling cannot drop it: its bounds cross the plane).
@@ -317,6 +346,28 @@ TEST(MirrorPlane, MirroredCameraSeesThePlaneWhereTheCameraDoes) {
     // The camera's image, flipped left to right: the mirrored camera's view is the mirror image.
     EXPECT_NEAR(t.x / t.w, 0.5f - 0.5f * c.x / c.w, 1e-5f);
     EXPECT_NEAR(t.y / t.w, 0.5f + 0.5f * c.y / c.w, 1e-5f);
+  }
+}
+
+// The cropped camera sees a rectangle of the camera's image as its whole image: a point at
+// NDC p there is at (p - centre) / half in the cropped view, perspective and orthographic.
+TEST(MirrorPlane, CroppedCameraSeesItsRectangle) {
+  pipeline::NdcRect rect;
+  rect.low = {-0.2f, -1.0f}, rect.high = {0.6f, 0.1f};
+  Camera shifted = view_camera();
+  shifted.lens_shift = {0.1f, -0.05f};
+  const Camera ortho =
+      Camera::orthographic({0, 2, 6}, {0, 0.5f, 0}, {0, 1, 0}, 3.0f, 1.3f, 0.5f, 40);
+  for (const Camera& camera : {view_camera(), shifted, ortho}) {
+    const Camera cropped = pipeline::cropped_camera(camera, rect);
+    const glm::vec2 centre = (rect.low + rect.high) * 0.5f, half = (rect.high - rect.low) * 0.5f;
+    for (const glm::vec3 p : {glm::vec3(0.3f, 0.2f, 0.5f), glm::vec3(-1.0f, 1.0f, -2.0f)}) {
+      const glm::vec4 c = camera.view_projection() * glm::vec4(p, 1.0f);
+      const glm::vec4 k = cropped.view_projection() * glm::vec4(p, 1.0f);
+      const glm::vec2 expected = (glm::vec2(c) / c.w - centre) / half;
+      EXPECT_NEAR(k.x / k.w, expected.x, 1e-4f);
+      EXPECT_NEAR(k.y / k.w, expected.y, 1e-4f);
+    }
   }
 }
 

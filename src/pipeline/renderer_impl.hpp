@@ -96,10 +96,12 @@ struct Renderer::Impl {
   // view), decided at begin_frame(); then the draws outside the camera's view are kept too,
   // since a mirror may show them (reflection_passes.cpp).
   bool frame_reflections = false;
-  // Each mirror plane's pass of this frame: its plane, its target, and what the draws on the
-  // plane read of it. The first mirror_count are this frame's.
+  // Each mirror plane's pass of this frame: its plane, its target (cropped to where the mirrors
+  // are seen), and what the draws on the plane read of it. The first mirror_count are this
+  // frame's.
   struct MirrorPass {
     glm::vec4 plane{0.0f};
+    bool seen = false;  // the pass ran: the camera sees a mirror on the plane
     std::optional<RenderTexture> target;
     shading::PlanarReflection reflection;
   };

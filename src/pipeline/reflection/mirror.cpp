@@ -6,6 +6,9 @@
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/matrix.hpp>
+#include <glm/trigonometric.hpp>
+
+#include "pipeline/geometry/clip.hpp"
 
 namespace facet::pipeline {
 namespace {
@@ -88,6 +91,50 @@ glm::vec4 clip_space_plane(const glm::mat4& view_projection, const glm::vec4& wo
   // plane . p = plane . (VP^-1 c) = (VP^-T plane) . c, in double: VP's inverse loses digits.
   const glm::dmat4 inverse = glm::inverse(glm::dmat4(view_projection));
   return glm::vec4(glm::transpose(inverse) * glm::dvec4(world_plane));
+}
+
+void add_seen_box(const MeshBox& box, const glm::mat4& model_view_projection, NdcRect& rect) {
+  glm::vec4 corner[8];
+  for (int k = 0; k < 8; ++k) {
+    corner[k] = model_view_projection * glm::vec4((k & 1) ? box.high.x : box.low.x,
+                                                  (k & 2) ? box.high.y : box.low.y,
+                                                  (k & 4) ? box.high.z : box.low.z, 1.0f);
+  }
+  // The six faces as triangles (corner bit 0 is x, 1 is y, 2 is z), each clipped to the frustum.
+  static constexpr int kFaces[6][4] = {{0, 2, 6, 4}, {1, 3, 7, 5}, {0, 1, 5, 4},
+                                       {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 5, 7, 6}};
+  constexpr unsigned kFrustum =
+      kClipNear | kClipFar | kClipLeft | kClipRight | kClipBottom | kClipTop;
+  for (const auto& face : kFaces) {
+    for (int half = 0; half < 2; ++half) {
+      ClipPolygon polygon;
+      polygon.count = 3;
+      polygon.vertices[0].clip = corner[face[0]];
+      polygon.vertices[1].clip = corner[face[1 + half]];
+      polygon.vertices[2].clip = corner[face[2 + half]];
+      clip_polygon(polygon, kFrustum, ClipBounds{}, 0);
+      for (int i = 0; i < polygon.count && polygon.count >= 3; ++i) {
+        const glm::vec4& c = polygon.vertices[i].clip;
+        if (c.w > 0.0f) rect.add(glm::clamp(glm::vec2(c) / c.w, glm::vec2(-1.0f), glm::vec2(1.0f)));
+      }
+    }
+  }
+}
+
+Camera cropped_camera(const Camera& camera, const NdcRect& rect) {
+  // NDC x' = (x - centre) / half: the projection's scale divided by half, the shift moved.
+  const glm::vec2 centre = (rect.low + rect.high) * 0.5f, half = (rect.high - rect.low) * 0.5f;
+  Camera cropped = camera;
+  cropped.aspect = camera.aspect * half.x / half.y;
+  cropped.lens_shift = (camera.lens_shift - centre) / half;
+  if (camera.projection_kind == Projection::orthographic) {
+    cropped.view_height = camera.view_height * half.y;
+  } else {
+    const float tan_half = std::tan(glm::radians(camera.fov_y_degrees) * 0.5f) * half.y;
+    cropped.fov_y_degrees = glm::degrees(2.0f * std::atan(tan_half));
+  }
+  cropped.calibrated_size = glm::ivec2(0);
+  return cropped;
 }
 
 }  // namespace facet::pipeline

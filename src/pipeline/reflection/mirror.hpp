@@ -1,15 +1,19 @@
 // The geometry of a planar reflection: the plane a mirror draw lies in, the camera that sees the
-// scene mirrored through it, and where a point's reflection lands in that camera's image. Read
-// by the reflection passes (reflection_passes.cpp) once per mirror plane per frame.
+// scene mirrored through it (cropped to where the mirrors are seen), and where a point's
+// reflection lands in that camera's image. Read by the reflection passes
+// (reflection_passes.cpp) once per mirror plane per frame.
 #pragma once
 
+#include <glm/common.hpp>
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 #include <optional>
 
 #include "facet/camera.hpp"
 #include "facet/mesh.hpp"
+#include "pipeline/frame.hpp"
 
 namespace facet::pipeline {
 
@@ -37,5 +41,20 @@ glm::mat4 mirror_image_transform(const Camera& mirrored);
 // The world plane as a plane of clip space under `view_projection`: inside (>= 0) where the
 // world plane is.
 glm::vec4 clip_space_plane(const glm::mat4& view_projection, const glm::vec4& world_plane);
+
+// A rectangle of NDC, [low, high]; empty when low > high.
+struct NdcRect {
+  glm::vec2 low{1e30f}, high{-1e30f};
+  bool empty() const { return !(low.x <= high.x && low.y <= high.y); }
+  void add(glm::vec2 p) { low = glm::min(low, p), high = glm::max(high, p); }
+};
+
+// Adds to `rect` where a box (a draw's bounds) is seen under model_view_projection: its faces
+// clipped to the view frustum, projected. A box the view does not see adds nothing.
+void add_seen_box(const MeshBox& box, const glm::mat4& model_view_projection, NdcRect& rect);
+
+// The camera that sees only `rect` of `camera`'s image (within [-1, 1]^2, not empty), filling
+// its own: the same eye, its field of view (or view height), aspect and lens shift narrowed.
+Camera cropped_camera(const Camera& camera, const NdcRect& rect);
 
 }  // namespace facet::pipeline

@@ -6,6 +6,8 @@
 // kernels then read them (shading/planar_reflection-inl.h).
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <optional>
 
 #include "core/scope_exit.hpp"
 #include "facet/color.hpp"
@@ -50,6 +52,70 @@ bool behind_plane(const DrawRecord& draw, const glm::vec4& plane) {
     if (!(glm::dot(glm::vec3(plane), world) + plane.w < 0.0f)) return false;
   }
   return true;
+}
+
+// A cropped pass's pixels are those of the full pass (the mirrored camera's whole view at the
+// reflection scale) in a rectangle whose edges lie on whole blocks of this many pixels (or on
+// the full pass's edges): its texels sit where the full pass's would, so the mirrors show the
+// same image however much of it they need.
+constexpr int kBlock = 32;
+
+// Pixels [low, high) of the full pass along one axis, of `full` pixels.
+struct Span {
+  int low, high;
+  int size() const { return high - low; }
+};
+
+// The span of NDC [from, to] widened by `margin` pixels, out to whole blocks.
+Span span_of(float from, float to, int full, float margin) {
+  const float scale = 0.5f * static_cast<float>(full);
+  const int low = static_cast<int>(std::floor(((from + 1.0f) * scale - margin) / kBlock)) * kBlock;
+  const int high = static_cast<int>(std::ceil(((to + 1.0f) * scale + margin) / kBlock)) * kBlock;
+  return {std::clamp(low, 0, full), std::clamp(high, 0, full)};
+}
+
+// The span grown to `size` pixels, within [0, full].
+Span grown(Span span, int size, int full) {
+  span.high = span.low + size;
+  if (span.high > full) span.low -= span.high - full, span.high = full;
+  return span;
+}
+
+// A pass's view and size: `full` (the mirrored camera) cropped to where the mirrors on plane m
+// are seen, widened by `margin` pixels of the full pass (the blur's reach); none when no mirror
+// is seen. A target of size `kept` is kept when it holds the crop and is at most twice its area
+// (or is the full pass): the crop grows to it rather than making a target of another size in
+// every frame of a moving camera.
+struct PassView {
+  Camera camera;
+  int width, height;
+};
+std::optional<PassView> pass_view(const Camera& full, const std::vector<DrawRecord>& draws,
+                                  const std::vector<int>& mirror_of_draw, int m, int full_width,
+                                  int full_height, float margin, glm::ivec2 kept) {
+  const glm::mat4 view_projection = full.view_projection();
+  pipeline::NdcRect seen;
+  for (std::size_t d = 0; d < draws.size(); ++d) {
+    if (mirror_of_draw[d] != m) continue;
+    if (!draws[d].bounds) return PassView{full, full_width, full_height};
+    pipeline::add_seen_box(*draws[d].bounds, view_projection * draws[d].uniforms.model, seen);
+  }
+  if (seen.empty()) return std::nullopt;
+  Span x = span_of(seen.low.x, seen.high.x, full_width, margin);
+  Span y = span_of(seen.low.y, seen.high.y, full_height, margin);
+  if (x.size() <= 0 || y.size() <= 0) return std::nullopt;
+  const bool holds =
+      kept.x >= x.size() && kept.y >= y.size() && kept.x <= full_width && kept.y <= full_height;
+  const bool whole = kept == glm::ivec2(full_width, full_height);
+  if (holds && (whole || std::int64_t{kept.x} * kept.y <= 2 * std::int64_t{x.size()} * y.size())) {
+    x = grown(x, kept.x, full_width), y = grown(y, kept.y, full_height);
+  }
+  pipeline::NdcRect rect;
+  rect.low = {2.0f * static_cast<float>(x.low) / static_cast<float>(full_width) - 1.0f,
+              2.0f * static_cast<float>(y.low) / static_cast<float>(full_height) - 1.0f};
+  rect.high = {2.0f * static_cast<float>(x.high) / static_cast<float>(full_width) - 1.0f,
+               2.0f * static_cast<float>(y.high) / static_cast<float>(full_height) - 1.0f};
+  return PassView{pipeline::cropped_camera(full, rect), x.size(), y.size()};
 }
 
 }  // namespace
@@ -99,13 +165,21 @@ void Renderer::Impl::run_reflection_passes(const Framebuffer& target) {
   settings.tone_mapping = ToneMapping::none;
   lighting.fog.color =
       fog_color_under(color_settings.tone_mapping, color_fog, std::exp2(color_settings.exposure));
-  const int width =
+  const int full_width =
       std::max(1, static_cast<int>(std::lround(target.width() * color_settings.reflection_scale)));
-  const int height =
+  const int full_height =
       std::max(1, static_cast<int>(std::lround(target.height() * color_settings.reflection_scale)));
+  const float blur_texels = kBlurShare * static_cast<float>(full_height);
   for (int m = 0; m < mirror_count; ++m) {
     MirrorPass& mirror = mirrors[m];
-    camera = pipeline::mirrored_camera(color_camera, mirror.plane);
+    mirror.seen = false;
+    const glm::ivec2 kept =
+        mirror.target ? glm::ivec2(mirror.target->width(), mirror.target->height()) : glm::ivec2(0);
+    const std::optional<PassView> pass =
+        pass_view(pipeline::mirrored_camera(color_camera, mirror.plane), set_aside_draws,
+                  mirror_of_draw, m, full_width, full_height, blur_texels + 2.0f, kept);
+    if (!pass) continue;
+    camera = pass->camera;
     frame.view_projection = camera.view_projection();
     frame.clip_plane = pipeline::clip_space_plane(frame.view_projection, mirror.plane);
     const glm::mat4 view = camera.view();
@@ -132,22 +206,25 @@ void Renderer::Impl::run_reflection_passes(const Framebuffer& target) {
         }
       }
     }
-    if (!mirror.target || mirror.target->width() != width || mirror.target->height() != height) {
+    if (!mirror.target || mirror.target->width() != pass->width ||
+        mirror.target->height() != pass->height) {
       RenderTextureOptions options;
       options.format = ColorFormat::rgba32f;
       options.mipmaps = true;
-      mirror.target.emplace(width, height, options);
+      mirror.target.emplace(pass->width, pass->height, options);
     }
     run(mirror.target->framebuffer());
     mirror.target->update();
     mirror.reflection.image = mirror.target->texture().get();
     mirror.reflection.world_to_image = pipeline::mirror_image_transform(camera);
-    mirror.reflection.blur_texels = kBlurShare * static_cast<float>(height);
+    mirror.reflection.blur_texels = blur_texels;
+    mirror.seen = true;
   }
   // The color pass's mirror draws read their plane's pass.
   for (std::size_t d = 0; d < set_aside_draws.size(); ++d) {
+    const int m = mirror_of_draw[d];
     set_aside_draws[d].uniforms.reflection =
-        mirror_of_draw[d] >= 0 ? &mirrors[mirror_of_draw[d]].reflection : nullptr;
+        m >= 0 && mirrors[m].seen ? &mirrors[m].reflection : nullptr;
   }
   reflection_ms = pipeline::ms_since(start);
 }

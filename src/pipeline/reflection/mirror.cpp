@@ -58,8 +58,9 @@ std::optional<glm::vec4> mirror_plane(const Mesh& mesh, const glm::mat4& model, 
   for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
     if (!(std::abs(signed_distance(plane, world(i))) <= tolerance)) return std::nullopt;
   }
+  // An eye in the plane sees the mirror edge-on (a camera low over a wide sea is not that).
   const float eye_side = signed_distance(plane, eye);
-  if (std::abs(eye_side) <= tolerance) return std::nullopt;
+  if (std::abs(eye_side) <= 1e-6f * size) return std::nullopt;
   return eye_side > 0.0f ? plane : -plane;
 }
 

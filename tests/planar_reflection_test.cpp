@@ -85,6 +85,15 @@ RenderSettings full_size_reflections() {
   return settings;
 }
 
+// What a perfect mirror floor should show: a render of the boxes and their mirror images,
+// without the floor.
+Framebuffer mirrored_reference(const Camera& camera) {
+  Scene mirrored;
+  add_boxes(mirrored, false);
+  add_boxes(mirrored, true);
+  return render_scene_image(mirrored, camera, kWidth, kHeight, full_size_reflections());
+}
+
 // The floor's pixels the boxes leave in view, less a pixel along their outlines: where only
 // the mirror is seen.
 std::vector<bool> floor_pixels(const Camera& camera) {
@@ -139,11 +148,7 @@ TEST(PlanarReflection, ShowsTheSceneMirroredThroughThePlane) {
   const Camera camera = view_camera();
   const Framebuffer image = render_scene_image(mirror_scene(phong_mirror()), camera, kWidth,
                                                kHeight, full_size_reflections());
-  Scene mirrored;
-  add_boxes(mirrored, false);
-  add_boxes(mirrored, true);
-  const Framebuffer reference =
-      render_scene_image(mirrored, camera, kWidth, kHeight, full_size_reflections());
+  const Framebuffer reference = mirrored_reference(camera);
   const MirrorCompare c = compare_floor(image, reference, floor_pixels(camera), 24);
   ASSERT_GT(c.floor, kWidth * kHeight / 4);
   EXPECT_GT(c.red, 200) << "the red box's reflection";
@@ -162,11 +167,7 @@ TEST(PlanarReflection, ASmallMirrorShowsTheSame) {
   scene.lighting.ambient = glm::vec3(0.0f);
   const Framebuffer image =
       render_scene_image(scene, camera, kWidth, kHeight, full_size_reflections());
-  Scene mirrored;
-  add_boxes(mirrored, false);
-  add_boxes(mirrored, true);
-  const Framebuffer reference =
-      render_scene_image(mirrored, camera, kWidth, kHeight, full_size_reflections());
+  const Framebuffer reference = mirrored_reference(camera);
   // The small mirror's pixels: the floor's where the small mirror lies.
   Scene small;
   small.add_object(plane(3.0f, 3.0f), unlit(glm::vec3(1.0f)), corner);
@@ -191,11 +192,7 @@ TEST(PlanarReflection, CutsWhatLiesBehindThePlane) {
   scene.add_object(plane(60.0f, 70.0f), unlit({0.0f, 0.0f, 1.0f}), tilted);
   const Framebuffer image =
       render_scene_image(scene, camera, kWidth, kHeight, full_size_reflections());
-  Scene mirrored;
-  add_boxes(mirrored, false);
-  add_boxes(mirrored, true);
-  const Framebuffer reference =
-      render_scene_image(mirrored, camera, kWidth, kHeight, full_size_reflections());
+  const Framebuffer reference = mirrored_reference(camera);
   const MirrorCompare c = compare_floor(image, reference, floor_pixels(camera), 24);
   EXPECT_LT(c.differing, c.floor / 50) << c.differing << " of " << c.floor << " floor pixels";
 }

@@ -3,9 +3,8 @@
 // target). Resolve encodes each tile row here (the frame's kernels, pipeline/kernels.hpp); the
 // texture mip builder, float images written as 8-bit and display_value_of fetch the kernel for
 // chosen_simd_target() once per call. SIMD lanes scale, clamp and find each channel's run of
-// the encoding table (core/color.hpp), each run's entry is loaded one at a time (scalar loads:
-// faster than gathers on the CPUs this runs on), then SIMD lanes finish the codes: exact, with
-// no pow per channel.
+// the encoding table (core/color.hpp), fetch each run's entry (a gather where gathers are fast,
+// else a load a lane), and finish the codes: exact, with no pow per channel.
 #pragma once
 
 #include <cstdint>
@@ -22,6 +21,13 @@ namespace facet::shading {
 using EncodeSrgbRowKernel = void (*)(const glm::vec4* colors, int count, float scale,
                                      std::uint8_t* rgba);
 EncodeSrgbRowKernel encode_srgb_row_kernel(SimdTarget target);
+// The kernel fetching the table's entries by gathers or by a load a lane (the same bytes):
+// encode_srgb_row_kernel(target) takes gathers where gathers_are_fast().
+EncodeSrgbRowKernel encode_srgb_row_kernel(SimdTarget target, bool gathering);
+// Whether the CPU's AVX-512 gathers are faster than loading each lane: it has AVX-512 and no
+// microcode mitigation of Gather Data Sampling (Linux's vulnerabilities/gather_data_sampling
+// reads "Not affected"), which makes them several times slower.
+bool gathers_are_fast();
 
 // rgba[4 i + c] for the count colors, every channel clamped to [0, 1] (NaN to 0) and rounded
 // to 8 bits as the encode kernel rounds alpha: unorm texture levels, and the resolve of

@@ -116,7 +116,6 @@ void Renderer::Impl::prepare_tiles(const Framebuffer& target) {
     buffers.block_max_depth.resize(static_cast<std::size_t>(blocks_x) * blocks_x);
     buffers.split.resize(pixels);
     buffers.sample_mask.resize(pixels);
-    buffers.waiting_written.resize(pixels);
   }
 }
 

@@ -42,7 +42,6 @@ struct TileBuffers {
   // MSAA (TileContext): color and depth hold a plane per sample; one entry per pixel here.
   std::vector<std::uint8_t> split;
   std::vector<std::uint16_t> sample_mask;
-  std::vector<std::uint8_t> waiting_written;  // zeros between tiles (TileContext)
 };
 
 }  // namespace pipeline

@@ -66,10 +66,6 @@ struct TileContext {
   // minus its depth at the pixel centre.
   std::uint16_t* sample_mask = nullptr;
   float sample_z[kMaxSamples] = {};
-  // Per pixel, 1 where the waiting pixels being written (write_waiting, small_triangles.hpp)
-  // have written so far, 0 elsewhere: write_waiting clears its marks when done, so the array is
-  // all zeros between its calls (as the buffer starts).
-  std::uint8_t* waiting_written = nullptr;
 };
 
 // Where frame pixel (x, y) is in the tile's buffers (plane 0).

@@ -80,7 +80,6 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
   tile.sample_plane = static_cast<std::ptrdiff_t>(ts) * ts;
   tile.split = buffers.split.data();
   tile.sample_mask = buffers.sample_mask.data();
-  tile.waiting_written = buffers.waiting_written.data();
   pipeline::WaitingPixels waiting;
   tile.waiting = &waiting;
   // Skip what the tile's last full, opaque, nearest triangle hides anyway (binning noted

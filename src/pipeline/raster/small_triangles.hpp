@@ -85,9 +85,6 @@ struct WaitingPixels {
   };
   Run runs[PackedPixels::kCapacity];
   int run_count = 0;
-  // MSAA: the first pixels, found before the pixels written since (add_waiting_band moves
-  // them past a flush), whose samples are tested again when written whatever else wrote there.
-  int found_before_flush = 0;
 };
 
 // Boxes of at most this many pixels join the waiting pixels in one piece: interpolate_pixels
@@ -118,8 +115,9 @@ template <class Shading>
 int find_small_samples(const TileContext& tile, const SetupTriangle& t, const SampleSteps& steps,
                        const float* sample_z, int x0, int y0, int x1, int y1, PackedPixels& out,
                        std::uint16_t* masks, int first) {
-  const SampleBoxSearch search =
+  SampleBoxSearch search =
       sample_box_search<depth_tested<Shading>()>(tile, t, steps, sample_z, x0, y0, x1, y1);
+  search.write_depth = true;  // WaitingPixels: the depths now, the colors when written
   return tile.kernels.find_box_samples(search, out.x + first, out.y + first, masks + first);
 }
 
@@ -158,48 +156,18 @@ void write_waiting(TileContext& tile) {
       out.store(x, y, pixels.z[n], glm::vec4(c[0], c[1], c[2], c[3]));
     }
   } else {
-    // Locals: TileContext's fields are read once (SampleWriter).
-    const int samples = tile.samples;
-    const std::ptrdiff_t plane = tile.sample_plane;
-    const float* depth = tile.depth;
-    const int x0 = tile.x0, y0 = tile.y0, stride = tile.stride;
-    std::uint8_t* written = tile.waiting_written;
-    SampleWriter<Shading, kAlpha, PixelWriter<Shading, kAlpha>::kDepthWrite> to(tile, nullptr);
-    std::uint64_t shaded = 0;
-    int n = 0;
-    for (int r = 0; r < waiting.run_count; ++r) {
-      const WaitingPixels::Run& run = waiting.runs[r];
-      to.sample_z = run.sample_z;
-      for (const int end = n + run.count; n < end; ++n) {
-        const std::ptrdiff_t pixel =
-            static_cast<std::ptrdiff_t>(pixels.y[n] - y0) * stride + (pixels.x[n] - x0);
-        unsigned mask = waiting.masks[n];
-        // The search's depth tests still hold where nothing wrote since: only a pixel before
-        // it in this flush, or one a flush wrote after it was found, may be nearer. There
-        // every sample is compared (no branch on each result: they follow no pattern), and
-        // those it does not cover are masked out.
-        if (written[pixel] || n < waiting.found_before_flush) {
-          unsigned passed = 0;
-          for (int s = 0; s < samples; ++s) {
-            passed |= static_cast<unsigned>(pixels.z[n] + run.sample_z[s] <
-                                            depth[s * plane + pixel])
-                      << s;
-          }
-          mask &= passed;
-          if (mask == 0) continue;
-        }
-        written[pixel] = 1;
-        const float* c = colors[n];
-        to.write(pixel, mask, pixels.z[n], glm::vec4(c[0], c[1], c[2], c[3]));
-        ++shaded;
-      }
+    // Their samples' depths are in the tile already (find_small_samples): the colors follow,
+    // in the same order.
+    SampleWriter<Shading, kAlpha, false> to(tile, nullptr);
+    const int x0 = tile.x0, y0 = tile.y0, stride = tile.stride;  // read once (SampleWriter)
+    for (int n = 0; n < pixels.count; ++n) {
+      const std::ptrdiff_t pixel =
+          static_cast<std::ptrdiff_t>(pixels.y[n] - y0) * stride + (pixels.x[n] - x0);
+      const float* c = colors[n];
+      to.write(pixel, waiting.masks[n], pixels.z[n], glm::vec4(c[0], c[1], c[2], c[3]));
     }
-    for (int k = 0; k < pixels.count; ++k) {
-      written[static_cast<std::ptrdiff_t>(pixels.y[k] - y0) * stride + (pixels.x[k] - x0)] = 0;
-    }
-    tile.pixels_shaded += shaded;
+    tile.pixels_shaded += pixels.count;
   }
-  waiting.found_before_flush = 0;
   waiting.run_count = 0;
   tile.pixels_shaded += out.shaded;
   pixels.count = 0;
@@ -240,7 +208,6 @@ void add_waiting_band(TileContext& tile, const SetupTriangle& t, const SampleSte
     std::copy_n(y, found, pixels.y);
     if (steps != nullptr) std::copy_n(masks, found, waiting.masks);
     first = 0;
-    waiting.found_before_flush = found;
   }
   pixels.count = first + found;
   WaitingPixels::Run& run = waiting.runs[waiting.run_count++];

@@ -170,8 +170,8 @@ TEST(SampleBoxes, WriteTheDepthsOfTheSamplesFoundOnly) {
       }
       ASSERT_EQ(found(t, steps, sample_z, tile, x0, y0, width, height, true), want)
           << hwy::TargetName(target) << ", triangle " << n << ", " << samples << " samples";
-      ASSERT_EQ(tile.depth, depth) << hwy::TargetName(target) << ", triangle " << n << ", "
-                                   << samples << " samples";
+      ASSERT_EQ(tile.depth, depth)
+          << hwy::TargetName(target) << ", triangle " << n << ", " << samples << " samples";
       ++tried;
     }
   }

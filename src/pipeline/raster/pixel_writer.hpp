@@ -180,24 +180,25 @@ void blend_into(glm::vec4& out, const glm::vec4& color) {
 }
 
 // MSAA: writes a pixel's color, shaded once, to the samples that its triangle covers and that
-// pass the depth test, each with its own depth and the draw's blending (PixelWriter::store_samples,
-// write_waiting). The tile's buffers are read once, into the writer: a store to split, a byte,
-// may alias TileContext's fields, which would otherwise be read again after each.
+// pass the depth test, with the draw's blending, and with kDepthWrite each sample's own depth
+// (PixelWriter::store_samples; write_waiting writes colors only, the search wrote the depths).
+// The tile's buffers are read once, into the writer: a store to split, a byte, may alias
+// TileContext's fields, which would otherwise be read again after each.
 template <class Shading, AlphaMode kAlpha, bool kDepthWrite>
 struct SampleWriter {
   // Whether a written color replaces the samples' (opaque and cut-out draws).
   static constexpr bool kReplaces =
       !additive<Shading>() && (kAlpha == AlphaMode::opaque || kAlpha == AlphaMode::mask);
 
-  // sample_z: the triangle's depth at each sample minus its depth at the pixel centre.
-  SampleWriter(const TileContext& tile, const float* sample_z)
+  // depth_steps: the triangle's depth at each sample minus its depth at the pixel centre.
+  SampleWriter(const TileContext& tile, const float* depth_steps)
       : color(tile.color),
         depth(tile.depth),
         split(tile.split),
         plane(tile.sample_plane),
         samples(tile.samples),
         all((1u << tile.samples) - 1),
-        sample_z(sample_z) {}
+        sample_z(depth_steps) {}
 
   // The samples of `mask` (bits, not 0) of tile pixel `pixel` take `c` and depth z at the centre.
   void write(std::ptrdiff_t pixel, unsigned mask, float z, const glm::vec4& c) const {
@@ -218,7 +219,9 @@ struct SampleWriter {
     if (!split[pixel]) {  // each sample its own copy of the pixel's color (split_pixel)
       // A replacing color overwrites the covered ones next; sample 0 is the copied one.
       const unsigned copied = (kReplaces ? all & ~mask : all) & ~1u;
-      for (unsigned m = copied; m != 0; m &= m - 1) color_at[std::countr_zero(m) * plane] = *color_at;
+      for (unsigned m = copied; m != 0; m &= m - 1) {
+        color_at[std::countr_zero(m) * plane] = *color_at;
+      }
       split[pixel] = 1;
     }
     for (unsigned m = mask; m != 0; m &= m - 1) {

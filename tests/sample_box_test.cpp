@@ -2,7 +2,8 @@
 // find_box_samples_wide, in doubles, for the others; block_raster.hpp) find, on every SIMD
 // target, exactly the pixels with a sample the 64-bit edge functions put inside the triangle and
 // whose depth passes the test, each with those samples' bits: for small triangles over their own
-// box and for big ones (edges up to the guard band) over a box in them, at every sample count.
+// box and for big ones (edges up to the guard band) over a box in them, at every sample count;
+// and find_box_samples, asked to, writes the depths of the samples it finds and no other.
 #include <gtest/gtest.h>
 #include <hwy/targets.h>
 
@@ -84,9 +85,10 @@ std::vector<Found> expected(const SetupTriangle& t, const pipeline::SampleSteps&
 
 std::vector<Found> found(const SetupTriangle& t, const pipeline::SampleSteps& steps,
                          const float* sample_z, const Tile& tile, int x0, int y0, int width,
-                         int height) {
-  const pipeline::SampleBoxSearch search = pipeline::sample_box_search<true>(
+                         int height, bool write_depth = false) {
+  pipeline::SampleBoxSearch search = pipeline::sample_box_search<true>(
       tile.context, t, steps, sample_z, x0, y0, x0 + width - 1, y0 + height - 1);
+  search.write_depth = write_depth;
   constexpr int kRoom = pipeline::kBlockPixels + pipeline::kBoxSearchSlack;
   std::int16_t xs[kRoom] = {}, ys[kRoom] = {};
   std::uint16_t masks[kRoom] = {};
@@ -133,6 +135,49 @@ TEST(SampleBoxes, FindExactlyTheSamplesTheEdgeFunctionsCover) {
   EXPECT_GT(partly_in_front, tried);  // pixels with samples on both sides of the depth test
   EXPECT_GT(wide, tried / 4);
   EXPECT_LT(wide, tried * 3 / 4);
+}
+
+TEST(SampleBoxes, WriteTheDepthsOfTheSamplesFoundOnly) {
+  std::mt19937 rng(20261204);
+  int tried = 0, written = 0, partly_in_front = 0;
+  for (std::int64_t target : simd_targets()) {
+    ForcedTarget forced(target);
+    for (int n = 0; n < 1000; ++n) {
+      const int samples = 2 << (n % 4);  // 2, 4, 8, 16
+      float cx, cy;
+      SetupTriangle t;
+      if (!random_triangle(rng, n % 2 == 0 ? 12.0f : 900.0f, cx, cy, t)) continue;
+      std::uniform_int_distribution<int> side(1, 16);
+      const int width = side(rng), height = std::min(side(rng), 64 / width);
+      const int x0 = static_cast<int>(cx) - width / 2, y0 = static_cast<int>(cy) - height / 2;
+      float sample_z[pipeline::kMaxSamples];
+      const pipeline::SampleSteps steps(t, samples, sample_z);
+      if (!steps.fits_32_bits) continue;  // only find_box_samples writes depths
+      Tile tile(t, steps, x0, y0, width, height, samples, rng);
+      const std::vector<Found> want = expected(t, steps, sample_z, tile, x0, y0, width, height);
+      std::vector<float> depth = tile.depth;  // what the search must leave
+      const std::ptrdiff_t plane = tile.context.sample_plane;
+      for (const Found& f : want) {
+        const float z_row = pipeline::evaluate_row(t.z, t.ref_y, static_cast<float>(f.y) + 0.5f);
+        const float z =
+            pipeline::evaluate_in_row(z_row, t.z, t.ref_x, static_cast<float>(f.x) + 0.5f);
+        for (int s = 0; s < samples; ++s) {
+          if ((f.mask >> s & 1u) == 0) continue;
+          depth[s * plane + (f.y - y0) * Tile::kStride + (f.x - x0)] = z + sample_z[s];
+          ++written;
+        }
+        partly_in_front += f.mask != (1u << samples) - 1;
+      }
+      ASSERT_EQ(found(t, steps, sample_z, tile, x0, y0, width, height, true), want)
+          << hwy::TargetName(target) << ", triangle " << n << ", " << samples << " samples";
+      ASSERT_EQ(tile.depth, depth)
+          << hwy::TargetName(target) << ", triangle " << n << ", " << samples << " samples";
+      ++tried;
+    }
+  }
+  EXPECT_GT(tried, 1000);
+  EXPECT_GT(written, tried);
+  EXPECT_GT(partly_in_front, tried / 4);  // samples left as they were beside samples written
 }
 
 }  // namespace

@@ -224,7 +224,7 @@ int FindBoxSamples(const SampleBoxSearch& in, std::int16_t* xs, std::int16_t* ys
       const int y = in.y0 + row;
       const float z_row = evaluate_row(t.z, t.ref_y, static_cast<float>(y) + 0.5f);
       const auto z = hn::Add(hn::Set(df, z_row), z_along_row);
-      const float* depth = in.depth + static_cast<std::ptrdiff_t>(row) * in.depth_stride + x;
+      float* depth = in.depth + static_cast<std::ptrdiff_t>(row) * in.depth_stride + x;
       auto bits = hn::Zero(di);
       for (int s = 0; s < in.samples; ++s) {
         auto outside = hn::Zero(di);
@@ -235,7 +235,9 @@ int FindBoxSamples(const SampleBoxSearch& in, std::int16_t* xs, std::int16_t* ys
         auto covered = hn::RebindMask(df, hn::AndNot(hn::Lt(outside, hn::Zero(di)), in_box));
         if (in.depth_test) {
           const auto sample_z = hn::Add(z, hn::Set(df, in.sample_z[s]));
-          covered = hn::And(covered, hn::Lt(sample_z, hn::LoadU(df, depth + s * in.plane)));
+          float* plane_depth = depth + s * in.plane;
+          covered = hn::And(covered, hn::Lt(sample_z, hn::LoadU(df, plane_depth)));
+          if (in.write_depth) hn::BlendedStore(sample_z, covered, df, plane_depth);
         }
         bits = hn::Or(bits, hn::IfThenElseZero(hn::RebindMask(di, covered), hn::Set(di, 1 << s)));
       }

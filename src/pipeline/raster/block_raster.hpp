@@ -78,7 +78,10 @@ struct SampleBoxSearch {
   std::int64_t step[3][16];
   const float* sample_z;  // the depth step of each sample (TileContext::sample_z)
   bool depth_test;
-  const float* depth;  // plane 0's depth at the box's first pixel; kDepthSlack readable after
+  // find_box_samples only (with depth_test): each sample found takes its depth in the tile
+  // at once, as a draw that writes depth without an alpha test would (small_triangles.hpp).
+  bool write_depth;
+  float* depth;  // plane 0's depth at the box's first pixel; kDepthSlack readable after
   int depth_stride;
   std::ptrdiff_t plane;  // floats between sample planes
 };
@@ -122,11 +125,12 @@ struct RasterKernels {
   // as evaluate_row and evaluate_in_row give it plus sample_z[s]): positions to x[n], y[n],
   // sample bits to masks[n], from n = 0; returns how many. For triangles whose coefficients
   // allow 32 bits (SampleSteps::fits_32_bits); like find_box_pixels it stores whole vectors, up
-  // to kBoxSearchSlack entries past the last found.
+  // to kBoxSearchSlack entries past the last found. With write_depth, the samples found take
+  // their depths (masked stores: the tile's other depths keep theirs).
   int (*find_box_samples)(const SampleBoxSearch& search, std::int16_t* x, std::int16_t* y,
                           std::uint16_t* masks);
   // The same search for the other triangles, with the edge functions in doubles; it stores the
-  // pixels found only.
+  // pixels found only, and never depths (write_depth is for triangles that fit 32 bits).
   int (*find_box_samples_wide)(const SampleBoxSearch& search, std::int16_t* x, std::int16_t* y,
                                std::uint16_t* masks);
 };

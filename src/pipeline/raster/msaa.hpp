@@ -11,8 +11,9 @@
 // write one color a pixel; only their depths are per sample. Every other block, and the whole
 // box of a small triangle, is searched for covered samples (SIMD across box rows,
 // find_box_samples): that is the work along edges. Small triangles of draws whose pixels may wait
-// join the tile's waiting pixels with their samples (small_triangles.hpp) and are shaded a batch
-// of several triangles at a time, as at one sample.
+// join the tile's waiting pixels with their samples, whose depths the search writes at once
+// (small_triangles.hpp), and are shaded a batch of several triangles at a time, as at one sample;
+// writing them is then writing their colors (SampleWriter).
 #pragma once
 
 #include <algorithm>

@@ -179,6 +179,67 @@ void blend_into(glm::vec4& out, const glm::vec4& color) {
   }
 }
 
+// MSAA: writes a pixel's color, shaded once, to the samples that its triangle covers and that
+// pass the depth test, with the draw's blending, and with kDepthWrite each sample's own depth
+// (PixelWriter::store_samples; write_waiting writes colors only, the search wrote the depths).
+// The tile's buffers are read once, into the writer: a store to split, a byte, may alias
+// TileContext's fields, which would otherwise be read again after each.
+template <class Shading, AlphaMode kAlpha, bool kDepthWrite>
+struct SampleWriter {
+  // Whether a written color replaces the samples' (opaque and cut-out draws).
+  static constexpr bool kReplaces =
+      !additive<Shading>() && (kAlpha == AlphaMode::opaque || kAlpha == AlphaMode::mask);
+
+  // depth_steps: the triangle's depth at each sample minus its depth at the pixel centre.
+  SampleWriter(const TileContext& tile, const float* depth_steps)
+      : color(tile.color),
+        depth(tile.depth),
+        split(tile.split),
+        plane(tile.sample_plane),
+        samples(tile.samples),
+        all((1u << tile.samples) - 1),
+        sample_z(depth_steps) {}
+
+  // The samples of `mask` (bits, not 0) of tile pixel `pixel` take `c` and depth z at the centre.
+  void write(std::ptrdiff_t pixel, unsigned mask, float z, const glm::vec4& c) const {
+    glm::vec4* color_at = color + pixel;
+    float* depth_at = depth + pixel;
+    if (mask == all) {
+      if (kReplaces || !split[pixel]) {
+        blend_into<Shading, kAlpha>(*color_at, c);  // every sample alike (again)
+        split[pixel] = 0;
+      } else {
+        for (int s = 0; s < samples; ++s) blend_into<Shading, kAlpha>(color_at[s * plane], c);
+      }
+      if constexpr (kDepthWrite) {
+        for (int s = 0; s < samples; ++s) depth_at[s * plane] = z + sample_z[s];
+      }
+      return;
+    }
+    if (!split[pixel]) {  // each sample its own copy of the pixel's color (split_pixel)
+      // A replacing color overwrites the covered ones next; sample 0 is the copied one.
+      const unsigned copied = (kReplaces ? all & ~mask : all) & ~1u;
+      for (unsigned m = copied; m != 0; m &= m - 1) {
+        color_at[std::countr_zero(m) * plane] = *color_at;
+      }
+      split[pixel] = 1;
+    }
+    for (unsigned m = mask; m != 0; m &= m - 1) {
+      const int s = std::countr_zero(m);
+      blend_into<Shading, kAlpha>(color_at[s * plane], c);
+      if constexpr (kDepthWrite) depth_at[s * plane] = z + sample_z[s];
+    }
+  }
+
+  glm::vec4* color;
+  float* depth;
+  std::uint8_t* split;
+  std::ptrdiff_t plane;
+  int samples;
+  unsigned all;  // every sample's bit
+  const float* sample_z;
+};
+
 // Shades one covered pixel that passed the depth test and writes it with the draw's blending:
 // the part of the raster loop that is the same for every path (raster.hpp, small_triangles.hpp).
 template <class Shading, AlphaMode kAlpha>
@@ -369,35 +430,8 @@ class PixelWriter {
   // MSAA: writes the pixel's color, shaded once, to the samples tile.sample_mask says, each
   // with its own depth and blending.
   void store_samples(std::ptrdiff_t pixel, float z, const glm::vec4& color) {
-    // Locals: the stores below are floats, which the compiler must assume may change the tile's
-    // fields unless they are read once here.
-    const unsigned mask = tile_.sample_mask[pixel];
-    const int samples = tile_.samples;
-    const std::ptrdiff_t plane = tile_.sample_plane;
-    glm::vec4* color_at = tile_.color + pixel;
-    float* depth_at = tile_.depth + pixel;
-    const float* sample_z = tile_.sample_z;
-    const unsigned all = (1u << samples) - 1;
-    if (mask == all) {
-      constexpr bool kReplaces =
-          !additive<Shading>() && (kAlpha == AlphaMode::opaque || kAlpha == AlphaMode::mask);
-      if (kReplaces || !tile_.split[pixel]) {
-        blend_into<Shading, kAlpha>(*color_at, color);  // every sample alike (again)
-        tile_.split[pixel] = 0;
-      } else {
-        for (int s = 0; s < samples; ++s) blend_into<Shading, kAlpha>(color_at[s * plane], color);
-      }
-      if constexpr (kDepthWrite) {
-        for (int s = 0; s < samples; ++s) depth_at[s * plane] = z + sample_z[s];
-      }
-      return;
-    }
-    split_pixel(tile_, pixel);
-    for (unsigned m = mask; m != 0; m &= m - 1) {
-      const int s = std::countr_zero(m);
-      blend_into<Shading, kAlpha>(color_at[s * plane], color);
-      if constexpr (kDepthWrite) depth_at[s * plane] = z + sample_z[s];
-    }
+    const SampleWriter<Shading, kAlpha, kDepthWrite> samples(tile_, tile_.sample_z);
+    samples.write(pixel, tile_.sample_mask[pixel], z, color);
   }
 
   shading::Fragment fragment;

@@ -73,6 +73,7 @@ SampleBoxSearch sample_box_search(const TileContext& tile, const SetupTriangle& 
   }
   search.sample_z = sample_z;
   search.depth_test = kDepthTest;
+  search.write_depth = false;
   search.depth =
       tile.depth + static_cast<std::ptrdiff_t>(top - tile.y0) * tile.stride + (left - tile.x0);
   search.depth_stride = tile.stride;

@@ -54,10 +54,13 @@ void raster_small_triangle(TileContext& tile, const SetupTriangle& t, int x0, in
 // (flush_waiting). A waiting pixel passed the depth test against the tile as it was before the
 // others waited; when written it is tested again, against what the pixels before it wrote: so a
 // pixel writes exactly when drawing the triangles one by one would have written it, with the same
-// color. Under MSAA the same holds sample by sample: a waiting pixel carries the samples its
-// triangle covers that passed the depth test when it was found, and each is tested again when
-// the pixel is written (the pixel is shaded once at its centre whatever its samples, so its color
-// is the one drawing triangles one by one gives).
+// color. Under MSAA a waiting pixel carries the samples its triangle covers that passed the
+// depth test when it was found, and the search wrote their depths then (find_small_samples): so
+// each triangle's search tests against the depths of the triangles before it, exactly as drawing
+// them one by one, and the colors, written later in the same order, end where drawing one by one
+// leaves them (a sample a later triangle won is written again after). No sample is tested twice,
+// and writing a waiting pixel is writing its color (the pixel is shaded once at its centre
+// whatever its samples, so its color is the one drawing triangles one by one gives).
 struct WaitingPixels {
   // Positions start at zero: interpolate_pixels reads whole vectors of them, the entries after
   // the last one found too, which then hold zeros, earlier pixels' positions or what the
@@ -81,7 +84,6 @@ struct WaitingPixels {
   struct Run {
     const SetupTriangle* triangle;
     int count;
-    float sample_z[kMaxSamples];  // MSAA: the triangle's depth steps (TileContext::sample_z)
   };
   Run runs[PackedPixels::kCapacity];
   int run_count = 0;
@@ -110,13 +112,15 @@ inline bool box_may_wait(int width, int height) {
 // MSAA: the pixels of the small triangle t's box [x0, x1] x [y0, y1] (inclusive, at most
 // kBlockPixels) with covered samples that pass the depth test, t's depth steps being sample_z
 // (steps.fits_32_bits): positions to out.x, y and sample bits to masks from entry `first` on;
-// returns how many. The same search as msaa.hpp's for a triangle drawn alone.
+// returns how many. The same search as msaa.hpp's for a triangle drawn alone, and it writes the
+// depths of the samples it finds (WaitingPixels: the colors follow when the pixels are written).
 template <class Shading>
 int find_small_samples(const TileContext& tile, const SetupTriangle& t, const SampleSteps& steps,
                        const float* sample_z, int x0, int y0, int x1, int y1, PackedPixels& out,
                        std::uint16_t* masks, int first) {
-  const SampleBoxSearch search =
+  SampleBoxSearch search =
       sample_box_search<depth_tested<Shading>()>(tile, t, steps, sample_z, x0, y0, x1, y1);
+  search.write_depth = true;
   return tile.kernels.find_box_samples(search, out.x + first, out.y + first, masks + first);
 }
 
@@ -155,30 +159,17 @@ void write_waiting(TileContext& tile) {
       out.store(x, y, pixels.z[n], glm::vec4(c[0], c[1], c[2], c[3]));
     }
   } else {
-    const int samples = tile.samples;
-    const std::ptrdiff_t plane = tile.sample_plane;
-    int n = 0;
-    for (int r = 0; r < waiting.run_count; ++r) {
-      const WaitingPixels::Run& run = waiting.runs[r];
-      std::copy_n(run.sample_z, samples, tile.sample_z);  // store_samples reads them
-      for (const int end = n + run.count; n < end; ++n) {
-        const int x = pixels.x[n], y = pixels.y[n];
-        const std::ptrdiff_t pixel = tile_index(tile, x, y);
-        // A pixel before it may be nearer. Every sample is compared (no branch on each result:
-        // they follow no pattern), and those it does not cover are masked out.
-        unsigned passed = 0;
-        for (int s = 0; s < samples; ++s) {
-          passed |=
-              static_cast<unsigned>(pixels.z[n] + run.sample_z[s] < tile.depth[s * plane + pixel])
-              << s;
-        }
-        const unsigned mask = waiting.masks[n] & passed;
-        if (mask == 0) continue;
-        tile.sample_mask[pixel] = static_cast<std::uint16_t>(mask);
-        const float* c = colors[n];
-        out.store(x, y, pixels.z[n], glm::vec4(c[0], c[1], c[2], c[3]));
-      }
+    // Their samples' depths are in the tile already (find_small_samples): the colors follow,
+    // in the same order.
+    SampleWriter<Shading, kAlpha, false> to(tile, nullptr);
+    const int x0 = tile.x0, y0 = tile.y0, stride = tile.stride;  // read once (SampleWriter)
+    for (int n = 0; n < pixels.count; ++n) {
+      const std::ptrdiff_t pixel =
+          static_cast<std::ptrdiff_t>(pixels.y[n] - y0) * stride + (pixels.x[n] - x0);
+      const float* c = colors[n];
+      to.write(pixel, waiting.masks[n], pixels.z[n], glm::vec4(c[0], c[1], c[2], c[3]));
     }
+    tile.pixels_shaded += pixels.count;
   }
   waiting.run_count = 0;
   tile.pixels_shaded += out.shaded;
@@ -225,7 +216,6 @@ void add_waiting_band(TileContext& tile, const SetupTriangle& t, const SampleSte
   WaitingPixels::Run& run = waiting.runs[waiting.run_count++];
   run.triangle = &t;
   run.count = found;
-  if (steps != nullptr) std::copy_n(sample_z, tile.samples, run.sample_z);
   if constexpr (base_color_texcoord<Shading>() >= 0) {
     const Plane* uv = tile.frame->planes.data() + t.varying_planes + base_color_texcoord<Shading>();
     const float slopes[shading::TexelBatch::kSlopes] = {uv[0].dx, uv[1].dx,   uv[0].dy,

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <glm/gtc/matrix_transform.hpp>
+#include <string>
 #include <vector>
 
 #include "facet/error.hpp"
@@ -59,22 +60,24 @@ Material pbr_mirror(float roughness) {
   return m;
 }
 
-// Above the plane: a red box on the left and a green one on the right, so that a reflection
-// flipped left to right or upside down shows. `mirror` places them mirrored through y = 0.
-// (floor_pixels has the same boxes.)
-void add_boxes(Scene& scene, bool mirror) {
+// Above the plane: a red box on the left, a green one on the right, so that a reflection
+// flipped left to right or upside down shows. `mirror` places them mirrored through y = 0;
+// `mask` draws them black (floor_pixels).
+void add_boxes(Scene& scene, bool mirror, bool mask = false) {
   const glm::mat4 flip = glm::scale(glm::mat4(1.0f), {1.0f, mirror ? -1.0f : 1.0f, 1.0f});
-  scene.add_object(box({1.0f, 1.0f, 1.0f}), unlit({0.9f, 0.1f, 0.1f}),
+  const Material black = unlit(glm::vec3(0.0f));
+  scene.add_object(box({1.0f, 1.0f, 1.0f}), mask ? black : unlit({0.9f, 0.1f, 0.1f}),
                    flip * glm::translate(glm::mat4(1.0f), {-1.2f, 0.8f, 0.0f}));
-  scene.add_object(box({0.8f, 1.6f, 0.8f}), unlit({0.1f, 0.8f, 0.2f}),
+  scene.add_object(box({0.8f, 1.6f, 0.8f}), mask ? black : unlit({0.1f, 0.8f, 0.2f}),
                    flip * glm::translate(glm::mat4(1.0f), {1.0f, 1.1f, -1.0f}));
 }
 
-Scene mirror_scene(const Material& floor) {
+Scene mirror_scene(const Material& floor, const Fog& fog = {}) {
   Scene scene;
   scene.add_object(plane(kFloor, kFloor), floor);
   add_boxes(scene, false);
   scene.lighting.ambient = glm::vec3(0.0f);
+  scene.lighting.fog = fog;
   return scene;
 }
 
@@ -86,11 +89,12 @@ RenderSettings full_size_reflections() {
 }
 
 // What a perfect mirror floor should show: a render of the boxes and their mirror images,
-// without the floor.
-Framebuffer mirrored_reference(const Camera& camera) {
+// without the floor, under the same fog.
+Framebuffer mirrored_reference(const Camera& camera, const Fog& fog = {}) {
   Scene mirrored;
   add_boxes(mirrored, false);
   add_boxes(mirrored, true);
+  mirrored.lighting.fog = fog;
   return render_scene_image(mirrored, camera, kWidth, kHeight, full_size_reflections());
 }
 
@@ -99,10 +103,7 @@ Framebuffer mirrored_reference(const Camera& camera) {
 std::vector<bool> floor_pixels(const Camera& camera) {
   Scene scene;
   scene.add_object(plane(kFloor, kFloor), unlit(glm::vec3(1.0f)));
-  scene.add_object(box({1.0f, 1.0f, 1.0f}), unlit(glm::vec3(0.0f)),
-                   glm::translate(glm::mat4(1.0f), {-1.2f, 0.8f, 0.0f}));
-  scene.add_object(box({0.8f, 1.6f, 0.8f}), unlit(glm::vec3(0.0f)),
-                   glm::translate(glm::mat4(1.0f), {1.0f, 1.1f, -1.0f}));
+  add_boxes(scene, false, true);
   RenderSettings settings;
   settings.clear_color = {0.0f, 0.0f, 0.0f, 1.0f};
   const Framebuffer fb = render_scene_image(scene, camera, kWidth, kHeight, settings);
@@ -142,18 +143,94 @@ MirrorCompare compare_floor(const Framebuffer& image, const Framebuffer& referen
   return c;
 }
 
+// The cameras the mirror is seen through: the test's, one with its lens shifted, and an
+// orthographic one.
+std::vector<Camera> mirror_cameras() {
+  Camera shifted = view_camera();
+  shifted.lens_shift = {0.15f, -0.1f};
+  const Camera parallel =
+      Camera::orthographic({0.0f, 2.0f, 6.0f}, {0.0f, 0.5f, 0.0f}, {0, 1, 0}, 5.0f,
+                           static_cast<float>(kWidth) / kHeight, 0.5f, 40.0f);
+  return {view_camera(), shifted, parallel};
+}
+
 // The mirror shows, pixel for pixel, what a render of the boxes and their mirror images shows
-// there (edges aside: the two renders rasterize mirrored edges).
+// there (edges aside: the two renders rasterize mirrored edges), through each camera; under
+// fog too, which fogs what the mirror shows over the whole path from the eye, once.
 TEST(PlanarReflection, ShowsTheSceneMirroredThroughThePlane) {
+  Fog fog;
+  fog.mode = FogMode::exponential;
+  fog.density = 0.15f;
+  fog.color = {0.5f, 0.5f, 0.45f};
+  for (const Fog& f : {Fog{}, fog}) {
+    int view = 0;
+    for (const Camera& camera : mirror_cameras()) {
+      const Framebuffer image = render_scene_image(mirror_scene(phong_mirror(), f), camera, kWidth,
+                                                   kHeight, full_size_reflections());
+      const Framebuffer reference = mirrored_reference(camera, f);
+      const MirrorCompare c = compare_floor(image, reference, floor_pixels(camera), 24);
+      const std::string where =
+          "camera " + std::to_string(view++) + (f.mode == FogMode::none ? "" : ", fog");
+      ASSERT_GT(c.floor, kWidth * kHeight / 5) << where;
+      if (f.mode == FogMode::none) {  // (fogged, they are no longer pure red and green)
+        EXPECT_GT(c.red, 100) << where << ": the red box's reflection";
+        EXPECT_GT(c.green, 100) << where << ": the green box's reflection";
+      }
+      EXPECT_LT(c.differing, c.floor / 50)
+          << where << ": " << c.differing << " of " << c.floor << " floor pixels";
+    }
+  }
+}
+
+// A box shaded by the texcoords view (display values: what the screen shows, not light) is
+// mirrored as it is shown, not as if its values were light.
+TEST(PlanarReflection, ShowsDisplayValuesAsTheyAreShown) {
   const Camera camera = view_camera();
-  const Framebuffer image = render_scene_image(mirror_scene(phong_mirror()), camera, kWidth,
-                                               kHeight, full_size_reflections());
-  const Framebuffer reference = mirrored_reference(camera);
-  const MirrorCompare c = compare_floor(image, reference, floor_pixels(camera), 24);
-  ASSERT_GT(c.floor, kWidth * kHeight / 4);
-  EXPECT_GT(c.red, 200) << "the red box's reflection";
-  EXPECT_GT(c.green, 200) << "the green box's reflection";
-  EXPECT_LT(c.differing, c.floor / 50) << c.differing << " of " << c.floor << " floor pixels";
+  Material uvs = unlit(glm::vec3(1.0f));
+  uvs.shading = ShadingModel::texcoords;
+  const glm::mat4 place = glm::translate(glm::mat4(1.0f), {0.0f, 1.2f, -1.0f});
+  const glm::mat4 flip = glm::scale(glm::mat4(1.0f), {1.0f, -1.0f, 1.0f});
+  Scene scene;
+  scene.add_object(plane(kFloor, kFloor), phong_mirror());
+  scene.add_object(box(glm::vec3(2.0f)), uvs, place);
+  Scene reference_scene;
+  reference_scene.add_object(box(glm::vec3(2.0f)), uvs, place);
+  reference_scene.add_object(box(glm::vec3(2.0f)), uvs, flip * place);
+  Scene mask;
+  mask.add_object(plane(kFloor, kFloor), unlit(glm::vec3(1.0f)));
+  mask.add_object(box(glm::vec3(2.0f)), unlit(glm::vec3(0.0f)), place);
+  const Framebuffer image =
+      render_scene_image(scene, camera, kWidth, kHeight, full_size_reflections());
+  const Framebuffer reference =
+      render_scene_image(reference_scene, camera, kWidth, kHeight, full_size_reflections());
+  const Framebuffer floor = render_scene_image(mask, camera, kWidth, kHeight);
+  std::vector<bool> pixels(static_cast<std::size_t>(kWidth) * kHeight);
+  int shown = 0;  // mirror pixels showing the box
+  for (std::size_t i = 0; i < pixels.size(); ++i) {
+    pixels[i] = floor.rgba8()[i * 4] == 255;
+    shown += pixels[i] && reference.rgba8()[i * 4 + 2] == 0;  // texcoords: blue 0
+  }
+  ASSERT_GT(shown, 1000);
+  const MirrorCompare c = compare_floor(image, reference, pixels, 24);
+  EXPECT_LT(c.differing, shown / 20) << c.differing << " of " << shown << " pixels of the box";
+}
+
+// A frame's reflections depend on that frame alone: a renderer that drew another view first (a
+// mirror seen smaller, its pass cropped otherwise) draws the same bytes as a fresh one.
+TEST(PlanarReflection, AFrameIsTheSameWhateverCameBefore) {
+  const Scene scene = mirror_scene(pbr_mirror(0.3f));
+  const Camera first = Camera::look_at({6.0f, 9.0f, 14.0f}, {0.0f, 0.0f, 0.0f}, {0, 1, 0}, 30.0f,
+                                       static_cast<float>(kWidth) / kHeight, 0.5f, 60.0f);
+  const auto render = [&](Renderer& renderer, const Camera& camera) {
+    Framebuffer fb(kWidth, kHeight);
+    renderer.begin_frame(camera, scene.lighting);
+    draw_scene(renderer, scene);
+    renderer.finish(fb);
+    return fb;
+  };
+  Renderer fresh, used;
+  render(used, first);
+  EXPECT_TRUE(render(used, view_camera()).rgba8() == render(fresh, view_camera()).rgba8());
 }
 
 // A small mirror, whose pass is cropped to where it is seen (a corner of the view), shows the
@@ -313,20 +390,32 @@ TEST(PlanarReflection, RefusesAScaleOutsideZeroToOne) {
 
 TEST(MirrorPlane, OfAFlatMeshFacingTheEye) {
   const glm::mat4 raised = glm::translate(glm::mat4(1.0f), {0.0f, 2.0f, 0.0f});
-  const auto above = pipeline::mirror_plane(plane(4.0f, 4.0f), raised, {1.0f, 5.0f, 1.0f});
+  const auto above =
+      pipeline::mirror_plane(plane(4.0f, 4.0f), raised, {1.0f, 5.0f, 1.0f}, CullMode::none);
   ASSERT_TRUE(above);
   EXPECT_NEAR(above->y, 1.0f, 1e-6f);
   EXPECT_NEAR(above->w, -2.0f, 1e-6f);
-  const auto below = pipeline::mirror_plane(plane(4.0f, 4.0f), raised, {1.0f, -5.0f, 1.0f});
+  const auto below =
+      pipeline::mirror_plane(plane(4.0f, 4.0f), raised, {1.0f, -5.0f, 1.0f}, CullMode::none);
   ASSERT_TRUE(below);
   EXPECT_TRUE(pipeline::same_plane(*below, -*above));
   EXPECT_FALSE(pipeline::same_plane(*below, *above));
+  // The side its culling drops (the plane faces +y, counter-clockwise from above): none.
+  EXPECT_TRUE(
+      pipeline::mirror_plane(plane(4.0f, 4.0f), raised, {1.0f, 5.0f, 1.0f}, CullMode::back));
+  EXPECT_FALSE(
+      pipeline::mirror_plane(plane(4.0f, 4.0f), raised, {1.0f, -5.0f, 1.0f}, CullMode::back));
+  EXPECT_FALSE(
+      pipeline::mirror_plane(plane(4.0f, 4.0f), raised, {1.0f, 5.0f, 1.0f}, CullMode::front));
   // Not flat, seen edge-on, no area: none.
-  EXPECT_FALSE(pipeline::mirror_plane(box({1.0f, 1.0f, 1.0f}), raised, {0.0f, 5.0f, 0.0f}));
-  EXPECT_FALSE(pipeline::mirror_plane(plane(4.0f, 4.0f), raised, {9.0f, 2.0f, 0.0f}));
+  EXPECT_FALSE(
+      pipeline::mirror_plane(box({1.0f, 1.0f, 1.0f}), raised, {0.0f, 5.0f, 0.0f}, CullMode::none));
+  EXPECT_FALSE(
+      pipeline::mirror_plane(plane(4.0f, 4.0f), raised, {9.0f, 2.0f, 0.0f}, CullMode::none));
   Mesh line_like;
   line_like.positions = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}};
-  EXPECT_FALSE(pipeline::mirror_plane(line_like, glm::mat4(1.0f), {0.0f, 5.0f, 0.0f}));
+  EXPECT_FALSE(
+      pipeline::mirror_plane(line_like, glm::mat4(1.0f), {0.0f, 5.0f, 0.0f}, CullMode::none));
 }
 
 // The mirrored camera sees a point's mirror image where the camera sees the point in the mirror:

@@ -185,7 +185,7 @@ void Renderer::Impl::run(Framebuffer& target) {
   frame.stats.triangles_in += primitives_outside;  // draws dropped whole when recorded
   frame.stats.culled += primitives_outside;
   frame.stats.ms_geometry = ms_since(start);
-  const bool referred = display_referred_frame(target);
+  const bool referred = !linear_pass && display_referred_frame(target);
   background.display_referred = frame.stats.display_referred = referred;
   resolve.scale = std::exp2(settings.exposure);
   resolve.display_referred = referred;
@@ -198,7 +198,7 @@ void Renderer::Impl::run(Framebuffer& target) {
   }
   // A float target keeps display values as code / 255 whatever else the frame draws (no sRGB
   // encode follows to undo a decode), and the debug views' values unrounded.
-  uniforms.display_exact = target.format() == ColorFormat::rgba32f;
+  uniforms.display_exact = !linear_pass && target.format() == ColorFormat::rgba32f;
   uniforms.display_referred = referred || uniforms.display_exact;
   if (referred) background.clear_color = pipeline::display_value_of(kernels, settings.clear_color);
 

@@ -88,6 +88,9 @@ struct Renderer::Impl {
   std::vector<LightShadow> shadows;
   bool shadows_ready = false;    // run() hands the maps to the lights (after the passes)
   bool depth_only_pass = false;  // run() writes depth alone (Background::depth_only)
+  // run() stores light only, never display values, whatever the target (a reflection pass,
+  // whose image the mirrors read as light).
+  bool linear_pass = false;
   // The color pass's draws while a shadow or reflection pass runs.
   std::vector<pipeline::DrawRecord> set_aside_draws;
   std::vector<pipeline::DrawRecord> shadow_casters;  // every draw that casts, drawn for the maps
@@ -107,8 +110,7 @@ struct Renderer::Impl {
   };
   std::array<MirrorPass, RenderSettings::kMaxMirrorPlanes> mirrors;
   int mirror_count = 0;
-  std::vector<int> mirror_of_draw;                   // per color draw: its pass in mirrors, or -1
-  std::vector<pipeline::DrawRecord> mirrored_draws;  // a pass's draws
+  std::vector<int> mirror_of_draw;  // per color draw: its pass in mirrors, or -1
   double reflection_ms = 0.0;
   // Meshes drawn through shared pointers, checked once (Renderer::draw): checking every mesh again
   // in every frame costs real time in big worlds of many draws, all of it on the recording thread.
@@ -159,6 +161,9 @@ struct Renderer::Impl {
   // The planar reflections of the frame's mirror draws, after the shadow maps and before the
   // color pass into `target` (reflection_passes.cpp); points those draws at them.
   void run_reflection_passes(const Framebuffer& target);
+  // A reflection pass's draws, for mirror plane m seen by `camera` from `eye`'s mirror image:
+  // the color pass's and those outside its view, into frame.draws (reflection_passes.cpp).
+  void select_mirrored_draws(int m, glm::vec3 eye);
   void order_draws();
   void set_depth_view_range();
   bool draws_only_display_values() const;

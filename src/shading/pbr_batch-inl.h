@@ -146,12 +146,12 @@ HWY_INLINE Vec3V PbrLight(const DrawUniforms& u, const ShadeInput& in, int j, co
     // roughness^2), else the environment.
     const Vec3V mirror = Reflect(Negate(view), n);
     const int count = std::min(static_cast<int>(hn::Lanes(d)), in.count - j);
-    const Vec3V seen = u.reflection != nullptr
-                           ? PlanarReflectionRadiance(
-                                 u.frame->kernels->sample_at, *u.reflection, position,
-                                 ReflectionLod(*u.reflection, hn::Mul(roughness, roughness)), count)
-                           : EnvironmentRadiance(u.frame->kernels->sample_at, environment, mirror,
-                                                 hn::Mul(roughness, hn::Set(d, 8.0f)), count);
+    const Vec3V seen =
+        u.reflection != nullptr
+            ? PlanarReflectionRadiance(u, in, j, position,
+                                       ReflectionLod(*u.reflection, hn::Mul(roughness, roughness)))
+            : EnvironmentRadiance(u.frame->kernels->sample_at, environment, mirror,
+                                  hn::Mul(roughness, hn::Set(d, 8.0f)), count);
     if (u.frame->environment_light != nullptr) {
       // The image-based light replaces the ambient, a lane at a time (environment_light.hpp).
       Lanes3 lanes_ambient(ambient);

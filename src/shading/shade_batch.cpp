@@ -20,6 +20,7 @@
 #include "shading/batch_math-inl.h"
 #include "shading/environment_batch-inl.h"
 #include "shading/environment_light.hpp"
+#include "shading/fog_batch-inl.h"
 #include "shading/light_batch-inl.h"
 #include "shading/pbr_batch-inl.h"
 #include "shading/pbr_surface.hpp"
@@ -117,26 +118,13 @@ HWY_INLINE Vec3V DiffuseLight(const DrawUniforms& u, const Vec3V& normal, const 
   return light;
 }
 
-// Distance fog at the ViewDepth (uniforms.hpp) of pixels j.. of `in`: the fraction of the color
-// kept, (end - depth) / (end - start) or e^(-density depth) (portable_math.hpp's polynomial:
-// the same bits on every CPU), clamped to [0, 1], then mixed with the fog color.
+// Distance fog at pixels j.. of `in`: the color mixed with the fog color, keeping FogKeep's
+// share (fog_batch-inl.h).
 HWY_INLINE void Fogged(const Fog& fog, const ViewDepth& depth, const ShadeInput& in, int j,
                        FloatV color[3]) {
   const FloatTag d;
-  const FloatV w = hn::Add(hn::Add(hn::Mul(hn::Set(d, depth.from_w), hn::Load(d, in.w + j)),
-                                   hn::Mul(hn::Set(d, depth.from_z), hn::Load(d, in.z + j))),
-                           hn::Set(d, depth.offset));
-  FloatV keep;
-  if (fog.mode == FogMode::linear) {
-    keep =
-        hn::Div(hn::Sub(hn::Set(d, fog.end), w), hn::Set(d, std::max(fog.end - fog.start, 1e-6f)));
-  } else {
-    keep = PortableExp(hn::Mul(hn::Set(d, -fog.density), w));
-  }
-  const FloatV one = hn::Set(d, 1.0f);
-  keep = hn::IfThenElse(hn::Lt(keep, hn::Zero(d)), hn::Zero(d),
-                        hn::IfThenElse(hn::Lt(one, keep), one, keep));  // std::clamp
-  const FloatV lose = hn::Sub(one, keep);
+  const FloatV keep = FogKeep(fog, depth, in, j);
+  const FloatV lose = hn::Sub(hn::Set(d, 1.0f), keep);
   for (int c = 0; c < 3; ++c) {
     color[c] = hn::Add(hn::Mul(hn::Set(d, fog.color[c]), lose), hn::Mul(color[c], keep));
   }
@@ -189,15 +177,16 @@ HWY_INLINE Vec3V SpecularLight(const DrawUniforms& u, bool blinn, const Vec3V& n
 // the highlight's exponent says (phong_roughness), where the draw has one; else the
 // environment's along glm::reflect(-view, n). Out of line: it would take the inlined loop's
 // registers.
-static HWY_NOINLINE Vec3V Reflected(const DrawUniforms& u, const Vec3V& color, const Vec3V& view,
-                                    const Vec3V& n, const Vec3V& position, int count) {
+static HWY_NOINLINE Vec3V Reflected(const DrawUniforms& u, const ShadeInput& in, int j,
+                                    const Vec3V& color, const Vec3V& view, const Vec3V& n,
+                                    const Vec3V& position) {
   const FloatTag d;
+  const int count = in.count - j;
   const Vec3V radiance =
       u.reflection != nullptr
           ? PlanarReflectionRadiance(
-                u.frame->kernels->sample_at, *u.reflection, position,
-                ReflectionLod(*u.reflection, hn::Set(d, phong_roughness(u.material->shininess))),
-                count)
+                u, in, j, position,
+                ReflectionLod(*u.reflection, hn::Set(d, phong_roughness(u.material->shininess))))
           : EnvironmentRadiance(u.frame->kernels->sample_at, u.frame->lighting->environment,
                                 Reflect(Negate(view), n), hn::Zero(d), count);
   const float reflectivity = u.material->reflectivity;
@@ -379,7 +368,7 @@ void ShadeModel(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
         }
         light = SpecularLight(u, kModel == BatchModel::blinn_phong, n, view, position, albedo,
                               specular, active);  // albedo already in
-        if (reflects) light = Reflected(u, light, view, n, position, in.count - j);
+        if (reflects) light = Reflected(u, in, j, light, view, n, position);
       }
       color[0] = hn::Add(light.x, emission.x);
       color[1] = hn::Add(light.y, emission.y);

@@ -28,7 +28,8 @@ glm::vec3 mirrored_direction(const glm::vec4& plane, glm::vec3 v) {
 
 }  // namespace
 
-std::optional<glm::vec4> mirror_plane(const Mesh& mesh, const glm::mat4& model, glm::vec3 eye) {
+std::optional<glm::vec4> mirror_plane(const Mesh& mesh, const glm::mat4& model, glm::vec3 eye,
+                                      CullMode cull) {
   if (mesh.topology != Topology::triangles || mesh.positions.empty()) return std::nullopt;
   const auto world = [&](std::size_t i) {
     return glm::vec3(model * glm::vec4(mesh.positions[i], 1.0f));
@@ -61,6 +62,10 @@ std::optional<glm::vec4> mirror_plane(const Mesh& mesh, const glm::mat4& model, 
   // An eye in the plane sees the mirror edge-on (a camera low over a wide sea is not that).
   const float eye_side = signed_distance(plane, eye);
   if (std::abs(eye_side) <= 1e-6f * size) return std::nullopt;
+  // The plane's normal is the first triangle's front (counter-clockwise) side, in world space.
+  if ((cull == CullMode::back && eye_side < 0.0f) || (cull == CullMode::front && eye_side > 0.0f)) {
+    return std::nullopt;
+  }
   return eye_side > 0.0f ? plane : -plane;
 }
 

@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "facet/camera.hpp"
+#include "facet/material.hpp"
 #include "facet/mesh.hpp"
 #include "pipeline/frame.hpp"
 
@@ -19,9 +20,11 @@ namespace facet::pipeline {
 
 // The world-space plane (n, d), n unit, n . p + d = 0 on it, in which every vertex of `mesh`
 // placed by `model` lies (within 1e-4 of the mesh's size), turned so that `eye` is on its
-// positive side; none for a mesh that is not flat, has no triangle of non-zero area, or is seen
-// edge-on (the eye within 1e-6 of the mesh's size of its plane).
-std::optional<glm::vec4> mirror_plane(const Mesh& mesh, const glm::mat4& model, glm::vec3 eye);
+// positive side; none for a mesh that is not flat, has no triangle of non-zero area, is seen
+// edge-on (the eye within 1e-6 of the mesh's size of its plane), or shows the eye the side
+// `cull` culls (its first such triangle's winding says which side is the front).
+std::optional<glm::vec4> mirror_plane(const Mesh& mesh, const glm::mat4& model, glm::vec3 eye,
+                                      CullMode cull);
 
 // Whether two planes of mirror_plane are the same (one pass serves both).
 bool same_plane(const glm::vec4& a, const glm::vec4& b);

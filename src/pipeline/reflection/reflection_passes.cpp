@@ -34,10 +34,15 @@ bool reads_reflection(const DrawRecord& draw) {
          m.reflectivity > 0.0f;
 }
 
+// A mirror draw's plane as the eye sees it (mirror.hpp).
+std::optional<glm::vec4> own_plane(const DrawRecord& draw, glm::vec3 eye) {
+  return pipeline::mirror_plane(*draw.mesh, draw.uniforms.model, eye, draw.material.cull);
+}
+
 // Whether a draw is a mirror on `plane` (as the eye sees it).
 bool mirror_on_plane(const DrawRecord& draw, const glm::vec4& plane, glm::vec3 eye) {
   if (!reads_reflection(draw)) return false;
-  const std::optional<glm::vec4> own = pipeline::mirror_plane(*draw.mesh, draw.uniforms.model, eye);
+  const std::optional<glm::vec4> own = own_plane(draw, eye);
   return own && pipeline::same_plane(*own, plane);
 }
 
@@ -56,26 +61,27 @@ bool behind_plane(const DrawRecord& draw, const glm::vec4& plane) {
 
 // A cropped pass's pixels are those of the full pass (the mirrored camera's whole view at the
 // reflection scale) in a rectangle whose edges lie on whole blocks of this many pixels (or on
-// the full pass's edges): its texels sit where the full pass's would, so the mirrors show the
-// same image however much of it they need.
+// the full pass's edges), and whose sides are whole steps of an eighth of the full pass's (so
+// its target is made anew only when the mirrors' extent crosses a step): its texels sit where
+// the full pass's would. Both depend on this frame's view alone, never on earlier frames.
 constexpr int kBlock = 32;
+constexpr int kSizeSteps = 8;
 
-// Pixels [low, high) of the full pass along one axis, of `full` pixels.
+// Pixels [low, high) of the full pass along one axis.
 struct Span {
   int low, high;
   int size() const { return high - low; }
 };
 
-// The span of NDC [from, to] widened by `margin` pixels, out to whole blocks.
+// The span of NDC [from, to] widened by `margin` pixels, out to whole blocks, then to a whole
+// step (within the full pass's `full` pixels).
 Span span_of(float from, float to, int full, float margin) {
   const float scale = 0.5f * static_cast<float>(full);
-  const int low = static_cast<int>(std::floor(((from + 1.0f) * scale - margin) / kBlock)) * kBlock;
-  const int high = static_cast<int>(std::ceil(((to + 1.0f) * scale + margin) / kBlock)) * kBlock;
-  return {std::clamp(low, 0, full), std::clamp(high, 0, full)};
-}
-
-// The span grown to `size` pixels, within [0, full].
-Span grown(Span span, int size, int full) {
+  Span span{static_cast<int>(std::floor(((from + 1.0f) * scale - margin) / kBlock)) * kBlock,
+            static_cast<int>(std::ceil(((to + 1.0f) * scale + margin) / kBlock)) * kBlock};
+  span.low = std::clamp(span.low, 0, full), span.high = std::clamp(span.high, 0, full);
+  const int step = (full / kSizeSteps + kBlock - 1) / kBlock * kBlock;
+  const int size = std::min(full, (span.size() + step - 1) / step * step);
   span.high = span.low + size;
   if (span.high > full) span.low -= span.high - full, span.high = full;
   return span;
@@ -83,16 +89,14 @@ Span grown(Span span, int size, int full) {
 
 // A pass's view and size: `full` (the mirrored camera) cropped to where the mirrors on plane m
 // are seen, widened by `margin` pixels of the full pass (the blur's reach); none when no mirror
-// is seen. A target of size `kept` is kept when it holds the crop and is at most twice its area
-// (or is the full pass): the crop grows to it rather than making a target of another size in
-// every frame of a moving camera.
+// is seen.
 struct PassView {
   Camera camera;
   int width, height;
 };
 std::optional<PassView> pass_view(const Camera& full, const std::vector<DrawRecord>& draws,
                                   const std::vector<int>& mirror_of_draw, int m, int full_width,
-                                  int full_height, float margin, glm::ivec2 kept) {
+                                  int full_height, float margin) {
   const glm::mat4 view_projection = full.view_projection();
   pipeline::NdcRect seen;
   for (std::size_t d = 0; d < draws.size(); ++d) {
@@ -101,15 +105,9 @@ std::optional<PassView> pass_view(const Camera& full, const std::vector<DrawReco
     pipeline::add_seen_box(*draws[d].bounds, view_projection * draws[d].uniforms.model, seen);
   }
   if (seen.empty()) return std::nullopt;
-  Span x = span_of(seen.low.x, seen.high.x, full_width, margin);
-  Span y = span_of(seen.low.y, seen.high.y, full_height, margin);
+  const Span x = span_of(seen.low.x, seen.high.x, full_width, margin);
+  const Span y = span_of(seen.low.y, seen.high.y, full_height, margin);
   if (x.size() <= 0 || y.size() <= 0) return std::nullopt;
-  const bool holds =
-      kept.x >= x.size() && kept.y >= y.size() && kept.x <= full_width && kept.y <= full_height;
-  const bool whole = kept == glm::ivec2(full_width, full_height);
-  if (holds && (whole || std::int64_t{kept.x} * kept.y <= 2 * std::int64_t{x.size()} * y.size())) {
-    x = grown(x, kept.x, full_width), y = grown(y, kept.y, full_height);
-  }
   pipeline::NdcRect rect;
   rect.low = {2.0f * static_cast<float>(x.low) / static_cast<float>(full_width) - 1.0f,
               2.0f * static_cast<float>(y.low) / static_cast<float>(full_height) - 1.0f};
@@ -118,7 +116,56 @@ std::optional<PassView> pass_view(const Camera& full, const std::vector<DrawReco
   return PassView{pipeline::cropped_camera(full, rect), x.size(), y.size()};
 }
 
+// Sorts the draws that read a planar reflection by their plane: mirror_of_draw[d] is draw d's
+// plane's index in `planes` (-1: none, or beyond the kMaxMirrorPlanes first); returns how many.
+int find_mirror_planes(const std::vector<DrawRecord>& draws, glm::vec3 eye,
+                       std::vector<int>& mirror_of_draw, glm::vec4* planes) {
+  int count = 0;
+  mirror_of_draw.assign(draws.size(), -1);
+  for (std::size_t d = 0; d < draws.size(); ++d) {
+    if (!reads_reflection(draws[d])) continue;
+    const std::optional<glm::vec4> plane = own_plane(draws[d], eye);
+    if (!plane) continue;
+    int m = 0;
+    while (m < count && !pipeline::same_plane(planes[m], *plane)) ++m;
+    if (m == count) {
+      if (count == RenderSettings::kMaxMirrorPlanes) continue;  // the environment's
+      planes[count++] = *plane;
+    }
+    mirror_of_draw[d] = m;
+  }
+  return count;
+}
+
 }  // namespace
+
+void Renderer::Impl::select_mirrored_draws(int m, glm::vec3 eye) {
+  const glm::vec4& plane = mirrors[m].plane;
+  const glm::mat4 view = camera.view();
+  frame.draws.clear();
+  // What the pass's view takes in in front of the plane, but not the mirrors on it.
+  for (const std::vector<DrawRecord>* draws : {&set_aside_draws, &outside_view_draws}) {
+    for (std::size_t d = 0; d < draws->size(); ++d) {
+      const DrawRecord& draw = (*draws)[d];
+      const bool is_mirror =
+          draws == &set_aside_draws ? mirror_of_draw[d] == m : mirror_on_plane(draw, plane, eye);
+      if (is_mirror || behind_plane(draw, plane)) continue;
+      const glm::mat4 model_view_projection = frame.view_projection * draw.uniforms.model;
+      if (draw.bounds && pipeline::box_outside_frustum(*draw.bounds, model_view_projection)) {
+        continue;
+      }
+      frame.draws.push_back(draw);
+      DrawRecord& mirrored = frame.draws.back();
+      mirrored.uniforms.model_view_projection = model_view_projection;
+      mirrored.uniforms.reflection = nullptr;  // another plane's mirror shows the environment
+      if (pipeline::is_blended(draw.material.alpha_mode) && draw.bounds) {
+        const glm::vec4 centre = view * draw.uniforms.model *
+                                 glm::vec4((draw.bounds->low + draw.bounds->high) * 0.5f, 1.0f);
+        mirrored.view_depth = -centre.z;
+      }
+    }
+  }
+}
 
 void Renderer::Impl::run_reflection_passes(const Framebuffer& target) {
   reflection_ms = 0.0;
@@ -126,21 +173,8 @@ void Renderer::Impl::run_reflection_passes(const Framebuffer& target) {
   if (!frame_reflections) return;
   const auto start = pipeline::Clock::now();
   const glm::vec3 eye = camera.shading_eye();
-  mirror_of_draw.assign(frame.draws.size(), -1);
-  for (std::size_t d = 0; d < frame.draws.size(); ++d) {
-    const DrawRecord& draw = frame.draws[d];
-    if (!reads_reflection(draw)) continue;
-    const std::optional<glm::vec4> plane =
-        pipeline::mirror_plane(*draw.mesh, draw.uniforms.model, eye);
-    if (!plane) continue;
-    int m = 0;
-    while (m < mirror_count && !pipeline::same_plane(mirrors[m].plane, *plane)) ++m;
-    if (m == mirror_count) {
-      if (mirror_count == RenderSettings::kMaxMirrorPlanes) continue;  // the environment's
-      mirrors[mirror_count++].plane = *plane;
-    }
-    mirror_of_draw[d] = m;
-  }
+  glm::vec4 planes[RenderSettings::kMaxMirrorPlanes];
+  mirror_count = find_mirror_planes(frame.draws, eye, mirror_of_draw, planes);
   if (mirror_count == 0) return;
 
   // What the passes change, put back afterwards: the color pass's draws, camera, settings and
@@ -157,9 +191,11 @@ void Renderer::Impl::run_reflection_passes(const Framebuffer& target) {
     frame.view_projection = color_view_projection;
     frame.clip_plane.reset();
     lighting.fog.color = color_fog;
+    linear_pass = false;
   }};
-  // The passes hold linear light: no exposure, no tone curve; the color pass applies both to
-  // what the mirrors show. Their fog fades to the color pass's fog color.
+  // The passes hold light (no display values), with no exposure and no tone curve: the color
+  // pass applies both to what the mirrors show. Their fog fades to the color pass's fog color.
+  linear_pass = true;
   settings.msaa = 1;
   settings.exposure = 0.0f;
   settings.tone_mapping = ToneMapping::none;
@@ -172,40 +208,16 @@ void Renderer::Impl::run_reflection_passes(const Framebuffer& target) {
   const float blur_texels = kBlurShare * static_cast<float>(full_height);
   for (int m = 0; m < mirror_count; ++m) {
     MirrorPass& mirror = mirrors[m];
+    mirror.plane = planes[m];
     mirror.seen = false;
-    const glm::ivec2 kept =
-        mirror.target ? glm::ivec2(mirror.target->width(), mirror.target->height()) : glm::ivec2(0);
     const std::optional<PassView> pass =
         pass_view(pipeline::mirrored_camera(color_camera, mirror.plane), set_aside_draws,
-                  mirror_of_draw, m, full_width, full_height, blur_texels + 2.0f, kept);
+                  mirror_of_draw, m, full_width, full_height, blur_texels + 2.0f);
     if (!pass) continue;
     camera = pass->camera;
     frame.view_projection = camera.view_projection();
     frame.clip_plane = pipeline::clip_space_plane(frame.view_projection, mirror.plane);
-    const glm::mat4 view = camera.view();
-    // The pass draws what its view takes in in front of the plane, but not the mirror itself.
-    frame.draws.clear();
-    for (const std::vector<DrawRecord>* draws : {&set_aside_draws, &outside_view_draws}) {
-      for (std::size_t d = 0; d < draws->size(); ++d) {
-        const DrawRecord& draw = (*draws)[d];
-        const bool is_mirror = draws == &set_aside_draws ? mirror_of_draw[d] == m
-                                                         : mirror_on_plane(draw, mirror.plane, eye);
-        if (is_mirror || behind_plane(draw, mirror.plane)) continue;
-        const glm::mat4 model_view_projection = frame.view_projection * draw.uniforms.model;
-        if (draw.bounds && pipeline::box_outside_frustum(*draw.bounds, model_view_projection)) {
-          continue;
-        }
-        frame.draws.push_back(draw);
-        DrawRecord& mirrored = frame.draws.back();
-        mirrored.uniforms.model_view_projection = model_view_projection;
-        mirrored.uniforms.reflection = nullptr;  // another plane's mirror shows the environment
-        if (pipeline::is_blended(draw.material.alpha_mode) && draw.bounds) {
-          const glm::vec4 centre = view * draw.uniforms.model *
-                                   glm::vec4((draw.bounds->low + draw.bounds->high) * 0.5f, 1.0f);
-          mirrored.view_depth = -centre.z;
-        }
-      }
-    }
+    select_mirrored_draws(m, eye);
     if (!mirror.target || mirror.target->width() != pass->width ||
         mirror.target->height() != pass->height) {
       RenderTextureOptions options;

@@ -215,6 +215,51 @@ TEST(PlanarReflection, ShowsDisplayValuesAsTheyAreShown) {
   EXPECT_LT(c.differing, shown / 20) << c.differing << " of " << shown << " pixels of the box";
 }
 
+// Blended draws are mirrored as they are drawn over what is behind them: a red glass before
+// the green box, a blue one before both.
+TEST(PlanarReflection, MirrorsBlendedDrawsInTheirOrder) {
+  const Camera camera = view_camera();
+  const auto add_glass = [](Scene& scene, bool mirror) {
+    const glm::mat4 flip = glm::scale(glm::mat4(1.0f), {1.0f, mirror ? -1.0f : 1.0f, 1.0f});
+    Material red = unlit({1.0f, 0.2f, 0.2f}), blue = unlit({0.2f, 0.3f, 1.0f});
+    red.base_color.a = 0.5f, blue.base_color.a = 0.4f;
+    red.alpha_mode = blue.alpha_mode = AlphaMode::blend;
+    scene.add_object(box({1.2f, 1.2f, 0.1f}), red,
+                     flip * glm::translate(glm::mat4(1.0f), {1.0f, 1.0f, 0.0f}));
+    scene.add_object(box({3.0f, 0.8f, 0.1f}), blue,
+                     flip * glm::translate(glm::mat4(1.0f), {0.0f, 0.6f, 1.5f}));
+  };
+  Scene scene = mirror_scene(phong_mirror());
+  add_glass(scene, false);
+  Scene reference_scene;
+  add_boxes(reference_scene, false);
+  add_boxes(reference_scene, true);
+  add_glass(reference_scene, false);
+  add_glass(reference_scene, true);
+  const Framebuffer image =
+      render_scene_image(scene, camera, kWidth, kHeight, full_size_reflections());
+  const Framebuffer reference =
+      render_scene_image(reference_scene, camera, kWidth, kHeight, full_size_reflections());
+  // The floor's pixels that neither the boxes nor the glasses cover.
+  Scene mask;
+  mask.add_object(plane(kFloor, kFloor), unlit(glm::vec3(1.0f)));
+  add_boxes(mask, false, true);
+  Material black = unlit(glm::vec3(0.0f));
+  mask.add_object(box({1.2f, 1.2f, 0.1f}), black,
+                  glm::translate(glm::mat4(1.0f), {1.0f, 1.0f, 0.0f}));
+  mask.add_object(box({3.0f, 0.8f, 0.1f}), black,
+                  glm::translate(glm::mat4(1.0f), {0.0f, 0.6f, 1.5f}));
+  const Framebuffer floor = render_scene_image(mask, camera, kWidth, kHeight);
+  std::vector<bool> pixels(static_cast<std::size_t>(kWidth) * kHeight);
+  for (std::size_t i = 0; i < pixels.size(); ++i) pixels[i] = floor.rgba8()[i * 4] == 255;
+  const MirrorCompare c = compare_floor(image, reference, pixels, 24);
+  ASSERT_GT(c.floor, kWidth * kHeight / 5);
+  EXPECT_LT(c.differing, c.floor / 50) << c.differing << " of " << c.floor << " floor pixels";
+  EXPECT_FALSE(image.rgba8() == render_scene_image(mirror_scene(phong_mirror()), camera, kWidth,
+                                                   kHeight, full_size_reflections())
+                                    .rgba8());
+}
+
 // A frame's reflections depend on that frame alone: a renderer that drew another view first (a
 // mirror seen smaller, its pass cropped otherwise) draws the same bytes as a fresh one.
 TEST(PlanarReflection, AFrameIsTheSameWhateverCameBefore) {

@@ -243,6 +243,53 @@ def test_a_mirror_reflects_the_scene():
         facet.Material(reflects_scene=1)
 
 
+def test_two_mirror_planes_each_have_their_pass():
+    # A floor mirror (y = 0) and a wall mirror (x = -3.5) beside it, a red box before them.
+    # The floor shows the same whether the wall is a mirror or not (its pass draws the wall
+    # black either way: a mirror that reflects no environment); the wall shows what a render of
+    # the scene mirrored through x = -3.5 shows there.
+    def mirror(reflects=True):
+        return facet.Material((0, 0, 0), "blinn_phong", specular_color=(0, 0, 0), shininess=1e6,
+                              reflectivity=1.0, reflects_scene=reflects, cull="none")
+
+    floor = (np.array([[-3, 0, -4], [3, 0, -4], [3, 0, 4], [-3, 0, 4]], np.float32),
+             np.array([[0, 2, 1], [0, 3, 2]], np.int64))
+    wall = (np.array([[-3.5, 0, -5], [-3.5, 4, -5], [-3.5, 4, 3], [-3.5, 0, 3]], np.float32),
+            np.array([[0, 2, 1], [0, 3, 2]], np.int64))
+    corners = [[x, y, z] for x in (-1.7, -0.7) for y in (0.3, 1.3) for z in (-0.5, 0.5)]
+    box = (np.array(corners, np.float32),
+           np.array([[0, 1, 3], [0, 3, 2], [4, 6, 7], [4, 7, 5], [0, 4, 5], [0, 5, 1],
+                     [2, 3, 7], [2, 7, 6], [0, 2, 6], [0, 6, 4], [1, 5, 7], [1, 7, 3]], np.int64))
+
+    def mirrored(mesh):  # through the wall's plane: x -> -7 - x (winding reversed)
+        vertices = mesh[0].copy()
+        vertices[:, 0] = -7 - vertices[:, 0]
+        return vertices, mesh[1][:, ::-1].copy()
+
+    def render(meshes):
+        scene = facet.Scene()
+        scene.ambient = (0, 0, 0)
+        for (vertices, faces), material in meshes:
+            scene.add_mesh(vertices, faces, material=material)
+        camera = facet.Camera.look_at((0, 2, 6), (0, 0.5, 0), (0, 1, 0), 50.0, 0.5, 40.0)
+        renderer = facet.Renderer(160, 120, reflection_scale=1.0, background=(0.1, 0.2, 0.6, 1))
+        return renderer.render(scene, camera, ["color"])["color"].astype(int)
+
+    red = facet.Material((0.9, 0.1, 0.1), "unlit", cull="none")
+    white = facet.Material((1, 1, 1), "unlit", cull="none")
+    dark = facet.Material((0, 0, 0), "unlit", cull="none")
+    one = render([(floor, mirror()), (wall, mirror(False)), (box, red)])
+    two = render([(floor, mirror()), (wall, mirror()), (box, red)])
+    reference = render([(floor, mirror(False)), (mirrored(floor), mirror(False)), (box, red),
+                        (mirrored(box), red)])
+    on_floor = render([(floor, white), (wall, dark), (box, dark)])[..., 0] == 255
+    on_wall = render([(floor, dark), (wall, white), (box, dark)])[..., 0] == 255
+    assert on_floor.sum() > 5000 and on_wall.sum() > 1000
+    assert (np.abs(one - two).max(axis=2)[on_floor] > 8).sum() == 0
+    assert (np.abs(two - reference).max(axis=2)[on_wall] > 24).sum() < on_wall.sum() // 50
+    assert (two[..., 2][on_wall] > 100).sum() > 100  # the wall shows the sky, not black
+
+
 def test_stats_of_the_last_frame():
     scene = facet.Scene()
     scene.add_mesh(*quad()[:2])

@@ -25,31 +25,91 @@ constexpr int kChunk = 64;
 // Floats in the widest vector of any target.
 constexpr int kMaxFloatLanes = HWY_MAX_BYTES / sizeof(float);
 
+using FloatV = hn::Vec<FloatTag>;
+using IntV = hn::Vec<IntTag>;
+using Tables = SrgbTables;
+
+// Each channel's factor, (scale, scale, scale, 1) over and over, count of them: the exposure
+// scales red, green and blue, not alpha. A vector starting at float j reads it from j % 4 on,
+// which covers targets with fewer than four lanes.
+void FillFactors(float scale, int count, float* factor) {
+  for (int j = 0; j < count; ++j) factor[j] = j % 4 == 3 ? 1.0f : scale;
+}
+
+// x clamped to [0, 1], NaN to 0.
+HWY_INLINE FloatV Clamped(FloatV x) {
+  const FloatTag df;
+  return hn::Min(hn::IfThenElseZero(hn::Gt(x, hn::Zero(df)), x), hn::Set(df, 1.0f));
+}
+
+// The 8-bit rounding of c in [0, 1]: c * 255 + 0.5 truncated, a multiplication then an
+// addition, not fused.
+HWY_INLINE IntV Rounded(FloatV c) {
+  const FloatTag df;
+  return hn::ConvertTo(IntTag(), hn::Add(hn::Mul(c, hn::Set(df, 255.0f)), hn::Set(df, 0.5f)));
+}
+
+// The bits of c (clamped) above those of the first run of the encoding table (color.hpp; 0
+// below it): the run is these >> kRunBits, the offset in it the bits below.
+HWY_INLINE IntV BitsAbove(FloatV c) {
+  const IntTag di;
+  return hn::Max(
+      hn::Sub(hn::BitCast(di, c), hn::Set(di, static_cast<std::int32_t>(Tables::kRunBase))),
+      hn::Zero(di));
+}
+
+// The bytes of the vector of floats from j: a color channel's code from its run's `entry` (the
+// run's first code, or the next from its offset in the run on), alpha's (j % 4 == 3, counted
+// from j & 3 on, for vectors of one or two lanes) `alpha_code`.
+HWY_INLINE IntV Codes(IntV entry, IntV above, IntV alpha_code, int j) {
+  const IntTag di;
+  const auto offset = hn::And(above, hn::Set(di, static_cast<std::int32_t>(Tables::kRunMask)));
+  const auto next = hn::Not(hn::Lt(
+      offset, hn::And(entry, hn::Set(di, static_cast<std::int32_t>(Tables::kRunOffsetMask)))));
+  // The mask as a vector is -1 where the next code has begun.
+  const auto code =
+      hn::Sub(hn::ShiftRight<Tables::kRunCodeShift>(entry), hn::VecFromMask(di, next));
+  const auto three = hn::Set(di, 3);
+  const auto alpha = hn::Eq(hn::And(hn::Iota(di, j & 3), three), three);
+  return hn::IfThenElse(alpha, alpha_code, code);
+}
+
+// The low bytes of v's lanes, stored from `to`.
+HWY_INLINE void StoreBytes(IntV v, std::uint8_t* to) {
+  const hn::Rebind<std::uint8_t, FloatTag> du8;
+  hn::StoreU(hn::TruncateTo(du8, hn::BitCast(hn::RebindToUnsigned<IntTag>(), v)), du8, to);
+}
+
+// Calls encode(from, to, j) for each vector of the `floats` floats from `in`, whose bytes go
+// from `out` on (j: the vector's first float): the last, partial one from a copy padded with
+// zeros into a buffer of which only its own bytes are kept, so every float goes through the
+// same lanes.
+template <class Encode>
+HWY_INLINE void ForEachVector(const float* in, int floats, std::uint8_t* out,
+                              const Encode& encode) {
+  const int lanes = static_cast<int>(hn::Lanes(FloatTag()));
+  int j = 0;
+  for (; j + lanes <= floats; j += lanes) encode(in + j, out + j, j);
+  if (j == floats) return;
+  alignas(64) float padded_in[kMaxFloatLanes] = {};
+  alignas(64) std::uint8_t padded_out[kMaxFloatLanes];
+  std::copy_n(in + j, floats - j, padded_in);
+  encode(padded_in, padded_out, j);
+  std::copy_n(padded_out, floats - j, out + j);
+}
+
 void EncodeSrgbRow(const glm::vec4* colors, int count, float scale, std::uint8_t* rgba) {
   const FloatTag df;
   const IntTag di;
-  const hn::RebindToUnsigned<IntTag> du;
-  const hn::Rebind<std::uint8_t, FloatTag> du8;
   const int lanes = static_cast<int>(hn::Lanes(df));
-  using Tables = SrgbTables;
   const Tables& tables = srgb_tables();
-  // Each channel's factor, (scale, scale, scale, 1) over and over: the exposure scales red,
-  // green and blue, not alpha. A vector starting at float j reads it from j % 4 on, which
-  // covers targets with fewer than four lanes.
   alignas(64) float factor[kChunk + 4];
-  for (int j = 0; j < kChunk + 4; ++j) factor[j] = j % 4 == 3 ? 1.0f : scale;
-  // Per channel: the bits of its value clamped to [0, 1] (NaN to 0) above those of the first
-  // run (color.hpp; 0 below it), and its run. Per color channel, the run's entry; per alpha
-  // channel, its 8-bit rounding (v * 255 + 0.5, truncated).
+  FillFactors(scale, kChunk + 4, factor);
+  // Per channel: BitsAbove and its run. Per color channel, the run's entry; per alpha channel,
+  // its 8-bit rounding.
   alignas(64) std::int32_t above[4 * kChunk + kMaxFloatLanes];
   alignas(64) std::int32_t run[4 * kChunk + kMaxFloatLanes];
   alignas(64) std::int32_t entry[4 * kChunk + kMaxFloatLanes];
-  const auto zero = hn::Zero(df), one = hn::Set(df, 1.0f);
-  const auto run_base = hn::Set(di, static_cast<std::int32_t>(Tables::kRunBase));
-  const auto codes = hn::Set(df, 255.0f), half = hn::Set(df, 0.5f);
-  const auto three = hn::Set(di, 3);
-  const auto run_mask = hn::Set(di, static_cast<std::int32_t>(Tables::kRunMask));
-  const auto offset_mask = hn::Set(di, static_cast<std::int32_t>(Tables::kRunOffsetMask));
   // A chunk whose floats end inside a vector is encoded from a copy padded with zeros, into a
   // buffer of which only its own bytes are kept: every float goes through the same lanes.
   alignas(64) float padded_in[4 * kChunk + kMaxFloatLanes];
@@ -68,13 +128,11 @@ void EncodeSrgbRow(const glm::vec4* colors, int count, float scale, std::uint8_t
     }
     // 1. Clamp; the run; alpha's code.
     for (int j = 0; j < whole; j += lanes) {
-      const auto x = hn::Mul(hn::LoadU(df, in + j), hn::LoadU(df, factor + (j & 3)));
-      const auto c = hn::Min(hn::IfThenElseZero(hn::Gt(x, zero), x), one);
-      const auto bits_above = hn::Max(hn::Sub(hn::BitCast(di, c), run_base), hn::Zero(di));
+      const auto c = Clamped(hn::Mul(hn::LoadU(df, in + j), hn::LoadU(df, factor + (j & 3))));
+      const auto bits_above = BitsAbove(c);
       hn::Store(bits_above, di, above + j);
       hn::Store(hn::ShiftRight<Tables::kRunBits>(bits_above), di, run + j);
-      // A multiplication then an addition, not fused.
-      hn::Store(hn::ConvertTo(di, hn::Add(hn::Mul(c, codes), half)), di, entry + j);
+      hn::Store(Rounded(c), di, entry + j);
     }
     // 2. The color channels' runs looked up, one at a time (scalar loads: faster than gathers
     // where the microcode mitigates Gather Data Sampling; EncodeSrgbRowGathering elsewhere).
@@ -83,18 +141,10 @@ void EncodeSrgbRow(const glm::vec4* colors, int count, float scale, std::uint8_t
       entry[k + 1] = static_cast<std::int32_t>(tables.run_code[run[k + 1]]);
       entry[k + 2] = static_cast<std::int32_t>(tables.run_code[run[k + 2]]);
     }
-    // 3. A color's code: the run's first, or the next from its offset in the run on.
+    // 3. The codes (alpha's entry is its rounding).
     for (int j = 0; j < whole; j += lanes) {
       const auto e = hn::Load(di, entry + j);
-      const auto offset = hn::And(hn::Load(di, above + j), run_mask);
-      const auto next = hn::Not(hn::Lt(offset, hn::And(e, offset_mask)));
-      // The mask as a vector is -1 where the next code has begun.
-      const auto code =
-          hn::Sub(hn::ShiftRight<Tables::kRunCodeShift>(e), hn::VecFromMask(di, next));
-      // Alpha's lanes: j % 4 == 3, counted from j & 3 on (vectors of one or two lanes).
-      const auto alpha = hn::Eq(hn::And(hn::Iota(di, j & 3), three), three);
-      const auto byte = hn::IfThenElse(alpha, e, code);
-      hn::StoreU(hn::TruncateTo(du8, hn::BitCast(du, byte)), du8, out + j);
+      StoreBytes(Codes(e, hn::Load(di, above + j), e, j), out + j);
     }
     if (out != destination) std::copy_n(out, floats, destination);
   }
@@ -108,83 +158,26 @@ void EncodeSrgbRowGathering(const glm::vec4* colors, int count, float scale, std
 #else
   const FloatTag df;
   const IntTag di;
-  const hn::RebindToUnsigned<IntTag> du;
-  const hn::Rebind<std::uint8_t, FloatTag> du8;
-  const int lanes = static_cast<int>(hn::Lanes(df));
-  using Tables = SrgbTables;
   const auto* run_code = reinterpret_cast<const std::int32_t*>(srgb_tables().run_code.data());
-  // Each channel's factor, (scale, scale, scale, 1) over and over: the exposure scales red,
-  // green and blue, not alpha. A vector starting at float j reads it from j % 4 on, which
-  // covers targets with fewer than four lanes.
   alignas(64) float factor[kMaxFloatLanes + 4];
-  for (int j = 0; j < kMaxFloatLanes + 4; ++j) factor[j] = j % 4 == 3 ? 1.0f : scale;
-  const auto zero = hn::Zero(df), one = hn::Set(df, 1.0f);
-  const auto run_base = hn::Set(di, static_cast<std::int32_t>(Tables::kRunBase));
-  const auto codes = hn::Set(df, 255.0f), half = hn::Set(df, 0.5f);
-  const auto three = hn::Set(di, 3);
-  const auto run_mask = hn::Set(di, static_cast<std::int32_t>(Tables::kRunMask));
-  const auto offset_mask = hn::Set(di, static_cast<std::int32_t>(Tables::kRunOffsetMask));
-  // The vector of floats from j: each color channel through the tables, alpha rounded.
-  const auto encode = [&](const float* from, std::uint8_t* to, int j) {
-    // The value clamped to [0, 1] (NaN to 0); the bits of it above those of the first run
-    // (color.hpp; 0 below it), and its run's entry, gathered (alpha's lanes too: their runs
-    // are as valid, their entries unused).
-    const auto x = hn::Mul(hn::LoadU(df, from), hn::LoadU(df, factor + (j & 3)));
-    const auto c = hn::Min(hn::IfThenElseZero(hn::Gt(x, zero), x), one);
-    const auto above = hn::Max(hn::Sub(hn::BitCast(di, c), run_base), hn::Zero(di));
+  FillFactors(scale, kMaxFloatLanes + 4, factor);
+  ForEachVector(&colors[0].x, 4 * count, rgba, [&](const float* from, std::uint8_t* to, int j) {
+    const auto c = Clamped(hn::Mul(hn::LoadU(df, from), hn::LoadU(df, factor + (j & 3))));
+    const auto above = BitsAbove(c);
+    // Alpha's lanes gather too: their runs are as valid, their entries unused.
     const auto entry = hn::GatherIndex(di, run_code, hn::ShiftRight<Tables::kRunBits>(above));
-    // A color's code: the run's first, or the next from its offset in the run on. The mask as
-    // a vector is -1 where the next code has begun.
-    const auto next = hn::Not(hn::Lt(hn::And(above, run_mask), hn::And(entry, offset_mask)));
-    const auto code =
-        hn::Sub(hn::ShiftRight<Tables::kRunCodeShift>(entry), hn::VecFromMask(di, next));
-    // Alpha's lanes (j % 4 == 3, counted from j & 3 on, for vectors of one or two lanes): its
-    // 8-bit rounding, v * 255 + 0.5 truncated, a multiplication then an addition, not fused.
-    const auto alpha = hn::Eq(hn::And(hn::Iota(di, j & 3), three), three);
-    const auto byte =
-        hn::IfThenElse(alpha, hn::ConvertTo(di, hn::Add(hn::Mul(c, codes), half)), code);
-    hn::StoreU(hn::TruncateTo(du8, hn::BitCast(du, byte)), du8, to);
-  };
-  const float* in = &colors[0].x;
-  const int floats = 4 * count;
-  int j = 0;
-  for (; j + lanes <= floats; j += lanes) encode(in + j, rgba + j, j);
-  if (j == floats) return;
-  // The floats left, padded with zeros to a vector; only their own bytes are kept.
-  alignas(64) float padded_in[kMaxFloatLanes] = {};
-  alignas(64) std::uint8_t padded_out[kMaxFloatLanes];
-  std::copy_n(in + j, floats - j, padded_in);
-  encode(padded_in, padded_out, j);
-  std::copy_n(padded_out, floats - j, rgba + j);
+    StoreBytes(Codes(entry, above, Rounded(c), j), to);
+  });
 #endif
 }
 
 // Every channel as EncodeSrgbRow rounds alpha, lane by lane.
 void RoundUnorm8Row(const glm::vec4* colors, int count, std::uint8_t* rgba) {
   const FloatTag df;
-  const IntTag di;
   const hn::Rebind<std::uint8_t, FloatTag> du8;
-  const int lanes = static_cast<int>(hn::Lanes(df));
-  const auto zero = hn::Zero(df), one = hn::Set(df, 1.0f);
-  const auto codes = hn::Set(df, 255.0f), half = hn::Set(df, 0.5f);
-  const auto round = [&](const float* from, std::uint8_t* to) {
-    const auto x = hn::LoadU(df, from);
-    const auto c = hn::Min(hn::IfThenElseZero(hn::Gt(x, zero), x), one);
-    // A multiplication then an addition, not fused, as alpha's.
-    const auto code = hn::ConvertTo(di, hn::Add(hn::Mul(c, codes), half));
-    hn::StoreU(hn::DemoteTo(du8, code), du8, to);
-  };
-  const float* in = &colors[0].x;
-  const int floats = 4 * count;
-  int j = 0;
-  for (; j + lanes <= floats; j += lanes) round(in + j, rgba + j);
-  if (j == floats) return;
-  // The floats left, padded with zeros to a vector; only their own bytes are kept.
-  alignas(64) float padded_in[kMaxFloatLanes] = {};
-  alignas(64) std::uint8_t padded_out[kMaxFloatLanes];
-  std::copy_n(in + j, floats - j, padded_in);
-  round(padded_in, padded_out);
-  std::copy_n(padded_out, floats - j, rgba + j);
+  ForEachVector(&colors[0].x, 4 * count, rgba, [&](const float* from, std::uint8_t* to, int) {
+    hn::StoreU(hn::DemoteTo(du8, Rounded(Clamped(hn::LoadU(df, from)))), du8, to);
+  });
 }
 
 }  // namespace facet::shading::HWY_NAMESPACE

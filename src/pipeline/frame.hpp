@@ -113,6 +113,11 @@ struct DrawPipeline {
 // Object-space bounding box of a mesh's positions (draw_culling.hpp).
 struct MeshBox {
   glm::vec3 low, high;
+  // Corner k (bit 0: x high, bit 1: y high, bit 2: z high), as a point.
+  glm::vec4 corner(int k) const {
+    return {k & 1 ? high.x : low.x, k & 2 ? high.y : low.y, k & 4 ? high.z : low.z, 1.0f};
+  }
+  glm::vec4 centre() const { return glm::vec4((low + high) * 0.5f, 1.0f); }
 };
 
 struct DrawRecord {

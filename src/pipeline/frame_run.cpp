@@ -79,10 +79,7 @@ void Renderer::Impl::set_depth_view_range() {
     if (!draw.bounds) continue;
     const glm::mat4 model_view = view * draw.uniforms.model;
     for (int corner = 0; corner < 8; ++corner) {
-      const glm::vec3 p((corner & 1) ? draw.bounds->high.x : draw.bounds->low.x,
-                        (corner & 2) ? draw.bounds->high.y : draw.bounds->low.y,
-                        (corner & 4) ? draw.bounds->high.z : draw.bounds->low.z);
-      const float depth = -(model_view * glm::vec4(p, 1.0f)).z;
+      const float depth = -(model_view * draw.bounds->corner(corner)).z;
       nearest = std::min(nearest, depth), farthest = std::max(farthest, depth);
     }
   }

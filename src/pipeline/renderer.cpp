@@ -169,7 +169,7 @@ void Renderer::Impl::record(const Mesh& mesh, const std::optional<pipeline::Mesh
   record.material = material;
   record.pipeline = pipeline::debug_pipeline(settings.debug_view, pipe);
   if (is_blended(material.alpha_mode) && box) {
-    glm::vec4 centre = camera.view() * transform * glm::vec4((box->low + box->high) * 0.5f, 1.0f);
+    glm::vec4 centre = camera.view() * transform * box->centre();
     record.view_depth = -centre.z;
   }
   shading::DrawUniforms& u = record.uniforms;

@@ -54,12 +54,6 @@ std::optional<MeshBox> finite_bounds(const Mesh& mesh) {
 
 namespace {
 
-// Corner k of the box (bit 0: x high, bit 1: y high, bit 2: z high), as a point.
-glm::vec4 corner_of(const MeshBox& box, int k) {
-  return {k & 1 ? box.high.x : box.low.x, k & 2 ? box.high.y : box.low.y,
-          k & 4 ? box.high.z : box.low.z, 1.0f};
-}
-
 // |M| element by element: |M| |p| bounds the magnitudes that M p sums, for the rounding margins.
 glm::mat4 magnitudes(const glm::mat4& m) {
   glm::mat4 out;
@@ -79,7 +73,7 @@ bool box_outside_frustum(const MeshBox& box, const glm::mat4& model_view_project
   const glm::mat4 magnitude = magnitudes(model_view_projection);
   unsigned outside = 0x3f;
   for (int corner = 0; corner < 8 && outside != 0; ++corner) {
-    const glm::vec4 p = corner_of(box, corner);
+    const glm::vec4 p = box.corner(corner);
     const glm::vec4 c = model_view_projection * p;
     const glm::vec4 size = magnitude * glm::abs(p);
     const float x_margin = kMargin * (size.x + size.w), y_margin = kMargin * (size.y + size.w);
@@ -112,7 +106,7 @@ bool box_inside_clip_bounds(const MeshBox& box, const glm::mat4& model_view_proj
   const float plane_margin =
       kMargin * (plane.x * size.x + plane.y * size.y + plane.z * size.z + plane.w * size.w);
   for (int corner = 0; corner < 8; ++corner) {
-    const glm::vec4 c = model_view_projection * corner_of(box, corner);
+    const glm::vec4 c = model_view_projection * box.corner(corner);
     const bool inside = c.z + c.w > z_margin && c.w - c.z > z_margin &&
                         c.x + guard.gx * c.w > x_margin && guard.gx * c.w - c.x > x_margin &&
                         c.y + guard.gy * c.w > y_margin && guard.gy * c.w - c.y > y_margin;

@@ -101,11 +101,7 @@ glm::vec4 clip_space_plane(const glm::mat4& view_projection, const glm::vec4& wo
 
 void add_seen_box(const MeshBox& box, const glm::mat4& model_view_projection, NdcRect& rect) {
   glm::vec4 corner[8];
-  for (int k = 0; k < 8; ++k) {
-    corner[k] = model_view_projection * glm::vec4((k & 1) ? box.high.x : box.low.x,
-                                                  (k & 2) ? box.high.y : box.low.y,
-                                                  (k & 4) ? box.high.z : box.low.z, 1.0f);
-  }
+  for (int k = 0; k < 8; ++k) corner[k] = model_view_projection * box.corner(k);
   // The six faces as triangles (corner bit 0 is x, 1 is y, 2 is z), each clipped to the frustum.
   static constexpr int kFaces[6][4] = {{0, 2, 6, 4}, {1, 3, 7, 5}, {0, 1, 5, 4},
                                        {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 5, 7, 6}};

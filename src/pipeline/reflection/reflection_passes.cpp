@@ -50,11 +50,8 @@ bool mirror_on_plane(const DrawRecord& draw, const glm::vec4& plane, glm::vec3 e
 bool behind_plane(const DrawRecord& draw, const glm::vec4& plane) {
   if (!draw.bounds) return false;
   for (int corner = 0; corner < 8; ++corner) {
-    const glm::vec3 p((corner & 1) ? draw.bounds->high.x : draw.bounds->low.x,
-                      (corner & 2) ? draw.bounds->high.y : draw.bounds->low.y,
-                      (corner & 4) ? draw.bounds->high.z : draw.bounds->low.z);
-    const glm::vec3 world(draw.uniforms.model * glm::vec4(p, 1.0f));
-    if (!(glm::dot(glm::vec3(plane), world) + plane.w < 0.0f)) return false;
+    // The plane as a row vector: plane . (model corner).
+    if (!(glm::dot(plane, draw.uniforms.model * draw.bounds->corner(corner)) < 0.0f)) return false;
   }
   return true;
 }
@@ -159,9 +156,7 @@ void Renderer::Impl::select_mirrored_draws(int m, glm::vec3 eye) {
       mirrored.uniforms.model_view_projection = model_view_projection;
       mirrored.uniforms.reflection = nullptr;  // another plane's mirror shows the environment
       if (pipeline::is_blended(draw.material.alpha_mode) && draw.bounds) {
-        const glm::vec4 centre = view * draw.uniforms.model *
-                                 glm::vec4((draw.bounds->low + draw.bounds->high) * 0.5f, 1.0f);
-        mirrored.view_depth = -centre.z;
+        mirrored.view_depth = -(view * draw.uniforms.model * draw.bounds->centre()).z;
       }
     }
   }

@@ -41,10 +41,7 @@ pipeline::DrawPipeline shadow_pipeline(AlphaMode alpha) {
 void add_draw_bounds(const DrawRecord& draw, pipeline::WorldBox& box) {
   if (!draw.bounds) return;
   for (int corner = 0; corner < 8; ++corner) {
-    const glm::vec3 p((corner & 1) ? draw.bounds->high.x : draw.bounds->low.x,
-                      (corner & 2) ? draw.bounds->high.y : draw.bounds->low.y,
-                      (corner & 4) ? draw.bounds->high.z : draw.bounds->low.z);
-    box.add(glm::vec3(draw.uniforms.model * glm::vec4(p, 1.0f)));
+    box.add(glm::vec3(draw.uniforms.model * draw.bounds->corner(corner)));
   }
 }
 

@@ -318,6 +318,39 @@ int FindBoxSamplesWide(const SampleBoxSearch& in, std::int16_t* xs, std::int16_t
 
 const char* TargetName() { return hwy::TargetName(HWY_TARGET); }
 
+void WriteSampleColors(const SampleColorWrite& to, const float (*colors)[4], const std::int16_t* xs,
+                       const std::int16_t* ys, const std::uint16_t* masks, int count) {
+  const hn::CappedTag<float, 4> d;  // one RGBA color a vector (a channel on HWY_SCALAR)
+  const hn::RebindToSigned<decltype(d)> di;
+  const int lanes = static_cast<int>(hn::Lanes(d));
+  const auto one = hn::Set(d, 1.0f);
+  const std::ptrdiff_t plane = to.plane * 4;  // floats
+  const unsigned all = (1u << to.samples) - 1;
+  for (int n = 0; n < count; ++n) {
+    const std::ptrdiff_t pixel =
+        static_cast<std::ptrdiff_t>(ys[n] - to.y0) * to.stride + (xs[n] - to.x0);
+    const auto was_split = hn::RebindMask(d, hn::Ne(hn::Set(di, to.split[pixel]), hn::Zero(di)));
+    const auto bits = hn::Set(di, masks[n]);
+    for (int channel = 0; channel < 4; channel += lanes) {
+      float* at = to.color + pixel * 4 + channel;
+      auto value = hn::LoadU(d, colors[n] + channel);
+      if (to.opaque) {
+        const auto alpha = hn::RebindMask(d, hn::Eq(hn::Iota(di, channel), hn::Set(di, 3)));
+        value = hn::IfThenElse(alpha, one, value);
+      }
+      const auto first = hn::LoadU(d, at);
+      for (int s = 0; s < to.samples; ++s) {
+        float* sample = at + s * plane;
+        const auto covered =
+            hn::RebindMask(d, hn::Ne(hn::And(bits, hn::Set(di, 1 << s)), hn::Zero(di)));
+        const auto kept = hn::IfThenElse(was_split, hn::LoadU(d, sample), first);
+        hn::StoreU(hn::IfThenElse(covered, value, kept), d, sample);
+      }
+    }
+    to.split[pixel] = masks[n] != all;
+  }
+}
+
 }  // namespace facet::pipeline::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
 
@@ -330,13 +363,15 @@ HWY_EXPORT(InterpolatePixels);
 HWY_EXPORT(FindBoxPixels);
 HWY_EXPORT(FindBoxSamples);
 HWY_EXPORT(FindBoxSamplesWide);
+HWY_EXPORT(WriteSampleColors);
 
 const char* simd_target_name() { return HWY_DISPATCH_TABLE(TargetName)[chosen_simd_target()](); }
 
 RasterKernels raster_kernels(SimdTarget index) {
-  return {HWY_DISPATCH_TABLE(CoverBlock)[index], HWY_DISPATCH_TABLE(InterpolatePixels)[index],
-          HWY_DISPATCH_TABLE(FindBoxPixels)[index], HWY_DISPATCH_TABLE(FindBoxSamples)[index],
-          HWY_DISPATCH_TABLE(FindBoxSamplesWide)[index]};
+  return {
+      HWY_DISPATCH_TABLE(CoverBlock)[index],         HWY_DISPATCH_TABLE(InterpolatePixels)[index],
+      HWY_DISPATCH_TABLE(FindBoxPixels)[index],      HWY_DISPATCH_TABLE(FindBoxSamples)[index],
+      HWY_DISPATCH_TABLE(FindBoxSamplesWide)[index], HWY_DISPATCH_TABLE(WriteSampleColors)[index]};
 }
 
 }  // namespace facet::pipeline

@@ -86,6 +86,20 @@ struct SampleBoxSearch {
   std::ptrdiff_t plane;  // floats between sample planes
 };
 
+// Waiting pixels' colors written to the samples found for them (small_triangles.hpp's
+// write_waiting, opaque draws): pixel n, at frame pixel (x[n], y[n]), takes colors[n] at the
+// samples of masks[n]; a pixel that was not split gives its other samples its old color, and
+// is split afterwards unless every sample took the new one (TileContext::split).
+struct SampleColorWrite {
+  float* color;          // the tile's colors, RGBA floats (TileContext::color)
+  std::uint8_t* split;   // TileContext::split
+  std::ptrdiff_t plane;  // pixels between sample planes (TileContext::sample_plane)
+  int stride;            // pixels per tile row
+  int x0, y0;            // the tile's first frame pixel
+  int samples;
+  bool opaque;  // alpha written as 1 (opaque surfaces), else as shaded (data outputs)
+};
+
 // The raster's SIMD kernels (block_raster.cpp, compiled for every target Highway supports) for
 // the target chosen now, as plain function pointers: the raster loops call them a triangle or
 // a block at a time, so dispatching each call (asking libhwy for the chosen target, then
@@ -133,6 +147,12 @@ struct RasterKernels {
   // pixels found only, and never depths (write_depth is for triangles that fit 32 bits).
   int (*find_box_samples_wide)(const SampleBoxSearch& search, std::int16_t* x, std::int16_t* y,
                                std::uint16_t* masks);
+  // Writes `count` waiting pixels' colors in order (SampleColorWrite), a pixel's samples with
+  // selects rather than branches on its mask and on whether it was split: along a small
+  // triangle's edges both are as good as random to the branch predictor.
+  void (*write_sample_colors)(const SampleColorWrite& to, const float (*colors)[4],
+                              const std::int16_t* x, const std::int16_t* y,
+                              const std::uint16_t* masks, int count);
 };
 RasterKernels raster_kernels(SimdTarget target);
 

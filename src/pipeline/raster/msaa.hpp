@@ -13,7 +13,7 @@
 // find_box_samples): that is the work along edges. Small triangles of draws whose pixels may wait
 // join the tile's waiting pixels with their samples, whose depths the search writes at once
 // (small_triangles.hpp), and are shaded a batch of several triangles at a time, as at one sample;
-// writing them is then writing their colors (SampleWriter).
+// writing them is then writing their colors (RasterKernels::write_sample_colors).
 #pragma once
 
 #include <algorithm>

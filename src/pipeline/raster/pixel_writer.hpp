@@ -181,9 +181,10 @@ void blend_into(glm::vec4& out, const glm::vec4& color) {
 
 // MSAA: writes a pixel's color, shaded once, to the samples that its triangle covers and that
 // pass the depth test, with the draw's blending, and with kDepthWrite each sample's own depth
-// (PixelWriter::store_samples; write_waiting writes colors only, the search wrote the depths).
-// The tile's buffers are read once, into the writer: a store to split, a byte, may alias
-// TileContext's fields, which would otherwise be read again after each.
+// (PixelWriter::store_samples; waiting pixels' colors go through
+// RasterKernels::write_sample_colors, the search having written their depths). The tile's
+// buffers are read once, into the writer: a store to split, a byte, may alias TileContext's
+// fields, which would otherwise be read again after each.
 template <class Shading, AlphaMode kAlpha, bool kDepthWrite>
 struct SampleWriter {
   // Whether a written color replaces the samples' (opaque and cut-out draws).

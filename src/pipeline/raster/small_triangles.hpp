@@ -161,14 +161,16 @@ void write_waiting(TileContext& tile) {
   } else {
     // Their samples' depths are in the tile already (find_small_samples): the colors follow,
     // in the same order.
-    SampleWriter<Shading, kAlpha, false> to(tile, nullptr);
-    const int x0 = tile.x0, y0 = tile.y0, stride = tile.stride;  // read once (SampleWriter)
-    for (int n = 0; n < pixels.count; ++n) {
-      const std::ptrdiff_t pixel =
-          static_cast<std::ptrdiff_t>(pixels.y[n] - y0) * stride + (pixels.x[n] - x0);
-      const float* c = colors[n];
-      to.write(pixel, waiting.masks[n], pixels.z[n], glm::vec4(c[0], c[1], c[2], c[3]));
-    }
+    static_assert(SampleWriter<Shading, kAlpha, false>::kReplaces, "waiting draws are opaque");
+    const SampleColorWrite to{reinterpret_cast<float*>(tile.color),
+                              tile.split,
+                              tile.sample_plane,
+                              tile.stride,
+                              tile.x0,
+                              tile.y0,
+                              tile.samples,
+                              !writes_data<Shading>()};
+    tile.kernels.write_sample_colors(to, colors, pixels.x, pixels.y, waiting.masks, pixels.count);
     tile.pixels_shaded += pixels.count;
   }
   waiting.run_count = 0;

@@ -9,6 +9,7 @@
 #include "pipeline/geometry/cull_batch.hpp"
 #include "pipeline/geometry/vertex_pass.hpp"
 #include "pipeline/geometry/vertex_rows.hpp"
+#include "pipeline/output/sample_average_row.hpp"
 #include "pipeline/output/sky_row.hpp"
 #include "pipeline/output/tone_map_row.hpp"
 #include "pipeline/raster/block_raster.hpp"
@@ -29,6 +30,7 @@ struct Kernels {
   shading::EncodeSrgbRowKernel encode_srgb_row = nullptr;
   shading::RoundUnorm8RowKernel round_unorm8_row = nullptr;
   ToneMapRowKernel tone_map_row = nullptr;
+  AverageSamplesRowKernel average_samples_row = nullptr;
   shading::ShadingKernels shading;
 };
 
@@ -44,6 +46,7 @@ inline Kernels kernels_for(SimdTarget target) {
           shading::encode_srgb_row_kernel(target),
           shading::round_unorm8_row_kernel(target),
           tone_map_row_kernel(target),
+          average_samples_row_kernel(target),
           shading::shading_kernels(target)};
 }
 

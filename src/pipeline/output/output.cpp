@@ -112,32 +112,24 @@ void tone_map(const TileContext& tile, const Resolve& resolve, std::ptrdiff_t fi
 
 // The MSAA resolve of one tile row: each pixel's samples averaged in linear light (in sample
 // order, then scaled: the same sum on every path), or its one color where they are alike.
-// Tone mapped, each sample is mapped before the average.
+// Tone mapped, each sample is mapped before the average: a row with split pixels has each
+// sample plane's row mapped whole.
 void average_samples(const TileContext& tile, const Resolve& resolve, std::ptrdiff_t first,
                      int count, glm::vec4* out) {
-  const bool mapped = resolve.tone_mapping != ToneMapping::none;
-  if (mapped) {
-    tone_map(tile, resolve, first, count, out);
-  } else {
-    std::copy_n(tile.color + first, count, out);
+  const AverageSamplesRowKernel average = tile.frame->kernels->average_samples_row;
+  const std::uint8_t* split = tile.split + first;
+  if (resolve.tone_mapping == ToneMapping::none) {
+    average(tile.color + first, tile.sample_plane, tile.samples, split, count, out);
+    return;
   }
-  const float inverse = 1.0f / static_cast<float>(tile.samples);
-  for (int x = 0; x < count; ++x) {
-    const std::ptrdiff_t pixel = first + x;
-    if (!tile.split[pixel]) continue;
-    glm::vec4 sum = out[x];
-    for (int s = 1; s < tile.samples; ++s) {
-      const std::ptrdiff_t sample = s * tile.sample_plane + pixel;
-      glm::vec4 color;
-      if (mapped) {
-        tone_map(tile, resolve, sample, 1, &color);
-      } else {
-        color = tile.color[sample];
-      }
-      sum += color;
-    }
-    out[x] = sum * inverse;
+  tone_map(tile, resolve, first, count, out);
+  if (std::all_of(split, split + count, [](std::uint8_t differ) { return differ == 0; })) return;
+  alignas(64) glm::vec4 mapped[kMaxSamples][kMaxTileSize];
+  std::copy_n(out, count, mapped[0]);
+  for (int s = 1; s < tile.samples; ++s) {
+    tone_map(tile, resolve, s * tile.sample_plane + first, count, mapped[s]);
   }
+  average(mapped[0], kMaxTileSize, tile.samples, split, count, out);
 }
 
 }  // namespace

@@ -1,0 +1,23 @@
+// Stage: output, the MSAA resolve's average (sample_average_row.cpp, compiled for every target
+// Highway supports): a tile row's pixels whose samples differ become the mean of their samples,
+// in linear light (or tone mapped, each sample before the average: output.cpp). Along a
+// model's silhouette and its small triangles' edges, which pixels differ is as good as random
+// to the branch predictor: the kernel selects rather than branches.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <glm/vec4.hpp>
+
+#include "core/simd_target.hpp"
+
+namespace facet::pipeline {
+
+// out[i] for the count pixels i of a row: where split[i], the sum of colors[s * plane + i] over
+// the samples s = 0 ... samples - 1, in that order, times 1 / samples; elsewhere colors[i]
+// (every sample alike). The same bits on every target.
+using AverageSamplesRowKernel = void (*)(const glm::vec4* colors, std::ptrdiff_t plane, int samples,
+                                         const std::uint8_t* split, int count, glm::vec4* out);
+AverageSamplesRowKernel average_samples_row_kernel(SimdTarget target);
+
+}  // namespace facet::pipeline

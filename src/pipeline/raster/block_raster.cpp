@@ -12,6 +12,7 @@
 
 #include "core/simd_target.hpp"
 #include "pipeline/setup/fixed_point.hpp"
+#include "pipeline/setup/sample_positions.hpp"
 #include "pipeline/setup/setup.hpp"
 
 HWY_BEFORE_NAMESPACE();
@@ -202,10 +203,25 @@ int FindBoxSamples(const SampleBoxSearch& in, std::int16_t* xs, std::int16_t* ys
   const int lanes = static_cast<int>(hn::Lanes(df));
   const SetupTriangle& t = *in.triangle;
   const auto half = hn::Set(df, 0.5f);
+  // The search's values as locals: the depth stores may alias anything they were read from, so
+  // the compiler would read each again after every store.
+  const int samples = in.samples, width = in.width, height = in.height;
+  const bool depth_test = in.depth_test, write_depth = in.write_depth;
+  const std::ptrdiff_t plane = in.plane, depth_stride = in.depth_stride;
+  const Plane z_plane = t.z;
+  const float ref_y = t.ref_y;
+  std::int32_t e_first[3], row_step[3], step[3][kMaxSamples];
+  float sample_z[kMaxSamples];
+  for (int i = 0; i < 3; ++i) {
+    e_first[i] = static_cast<std::int32_t>(in.e_first[i]);
+    row_step[i] = t.b[i] * 16;
+    for (int s = 0; s < samples; ++s) step[i][s] = static_cast<std::int32_t>(in.step[i][s]);
+  }
+  if (depth_test) std::copy_n(in.sample_z, samples, sample_z);
   int count = 0;
-  for (int x = 0; x < in.width; x += lanes) {
+  for (int x = 0; x < width; x += lanes) {
     const auto column = hn::Iota(di, x);
-    const auto in_box = hn::Lt(column, hn::Set(di, in.width));
+    const auto in_box = hn::Lt(column, hn::Set(di, width));
     hn::Vec<decltype(di)> along_row[3];
     for (int i = 0; i < 3; ++i) {
       along_row[i] = hn::Mul(hn::Set(di, t.a[i] * 16), column);  // |a| < 2^18: no overflow
@@ -215,29 +231,27 @@ int FindBoxSamples(const SampleBoxSearch& in, std::int16_t* xs, std::int16_t* ys
     const auto z_along_row =
         hn::Mul(hn::Set(df, t.z.dx),
                 hn::Sub(hn::Add(hn::ConvertTo(df, frame_x), half), hn::Set(df, t.ref_x)));
-    for (int row = 0; row < in.height; ++row) {
+    for (int row = 0; row < height; ++row) {
       hn::Vec<decltype(di)> edge[3];
       for (int i = 0; i < 3; ++i) {
-        const auto first = static_cast<std::int32_t>(in.e_first[i]) + row * t.b[i] * 16;
-        edge[i] = hn::Add(hn::Set(di, first), along_row[i]);
+        edge[i] = hn::Add(hn::Set(di, e_first[i] + row * row_step[i]), along_row[i]);
       }
       const int y = in.y0 + row;
-      const float z_row = evaluate_row(t.z, t.ref_y, static_cast<float>(y) + 0.5f);
+      const float z_row = evaluate_row(z_plane, ref_y, static_cast<float>(y) + 0.5f);
       const auto z = hn::Add(hn::Set(df, z_row), z_along_row);
-      float* depth = in.depth + static_cast<std::ptrdiff_t>(row) * in.depth_stride + x;
+      float* depth = in.depth + static_cast<std::ptrdiff_t>(row) * depth_stride + x;
       auto bits = hn::Zero(di);
-      for (int s = 0; s < in.samples; ++s) {
+      for (int s = 0; s < samples; ++s) {
         auto outside = hn::Zero(di);
         for (int i = 0; i < 3; ++i) {
-          outside = hn::Or(outside,
-                           hn::Add(edge[i], hn::Set(di, static_cast<std::int32_t>(in.step[i][s]))));
+          outside = hn::Or(outside, hn::Add(edge[i], hn::Set(di, step[i][s])));
         }
         auto covered = hn::RebindMask(df, hn::AndNot(hn::Lt(outside, hn::Zero(di)), in_box));
-        if (in.depth_test) {
-          const auto sample_z = hn::Add(z, hn::Set(df, in.sample_z[s]));
-          float* plane_depth = depth + s * in.plane;
-          covered = hn::And(covered, hn::Lt(sample_z, hn::LoadU(df, plane_depth)));
-          if (in.write_depth) hn::BlendedStore(sample_z, covered, df, plane_depth);
+        if (depth_test) {
+          const auto z_sample = hn::Add(z, hn::Set(df, sample_z[s]));
+          float* plane_depth = depth + s * plane;
+          covered = hn::And(covered, hn::Lt(z_sample, hn::LoadU(df, plane_depth)));
+          if (write_depth) hn::BlendedStore(z_sample, covered, df, plane_depth);
         }
         bits = hn::Or(bits, hn::IfThenElseZero(hn::RebindMask(di, covered), hn::Set(di, 1 << s)));
       }

@@ -85,6 +85,17 @@ struct ConstantColorUnlitShading : BatchForm<BatchModel::constant_unlit> {
   }
 };
 
+// The shadow passes' depth, for casters that are not cut out: no varyings, and in one-sample
+// tiles (the passes' own) no shading and no color (pipeline/raster/depth_only.hpp); in a
+// multisampled tile, white, which nothing reads.
+struct DepthOnlyShading {
+  static constexpr int kVaryings = 0;
+  static constexpr int kNormalSlot = -1;
+  static constexpr bool kDepthOnly = true;
+  static void vertex_batch(const DrawUniforms&, const VertexBatchInput&, float (*)[kVertexBatch]) {}
+  static glm::vec4 fragment(const Fragment&, const DrawUniforms&) { return glm::vec4(1.0f); }
+};
+
 // The mesh's vertex colors only (white where it has none).
 struct VertexColorShading {
   static constexpr int kVaryings = 4;

@@ -9,6 +9,7 @@
 #include <hwy/highway.h>
 
 #include <algorithm>
+#include <type_traits>
 
 #include "core/simd_target.hpp"
 #include "pipeline/setup/fixed_point.hpp"
@@ -122,12 +123,17 @@ void InterpolatePixels(const SetupTriangle& t, const Plane* planes, int varyings
   }
 }
 
+// The depth buffer, written by the depth-writing search only.
+template <bool kWritesDepth>
+using DepthRows = std::conditional_t<kWritesDepth, float, const float>;
+
 // FindBoxPixels' rows, vectors of DF's lanes at a time; e_first: the edges at the box's first
-// pixel, as FindBoxPixels says.
-template <class DF>
+// pixel, as FindBoxPixels says. kWritesDepth (WriteBoxDepths): the pixels found take their
+// depths, and their positions are not stored.
+template <bool kWritesDepth, class DF>
 HWY_INLINE int FindBoxRows(DF df, const SetupTriangle& t, const std::int32_t e_first[3], int x0,
-                           int y0, int width, int height, const float* depth, int depth_stride,
-                           bool depth_test, std::int16_t* xs, std::int16_t* ys) {
+                           int y0, int width, int height, DepthRows<kWritesDepth>* depth,
+                           int depth_stride, bool depth_test, std::int16_t* xs, std::int16_t* ys) {
   const hn::RebindToSigned<DF> di;
   const hn::Rebind<std::int16_t, DF> d16;
   const int lanes = static_cast<int>(hn::Lanes(df));
@@ -158,11 +164,14 @@ HWY_INLINE int FindBoxRows(DF df, const SetupTriangle& t, const std::int32_t e_f
       const int y = y0 + row;
       const float z_row = evaluate_row(t.z, t.ref_y, static_cast<float>(y) + 0.5f);
       const auto z = hn::Add(hn::Set(df, z_row), z_along_row);
-      if (depth_test) {
-        const float* depth_row = depth + static_cast<std::ptrdiff_t>(row) * depth_stride + x;
-        pass = hn::And(pass, hn::Lt(z, hn::LoadU(df, depth_row)));  // NaN fails
-      }
+      auto* depth_row = depth + static_cast<std::ptrdiff_t>(row) * depth_stride + x;
+      if (depth_test) pass = hn::And(pass, hn::Lt(z, hn::LoadU(df, depth_row)));  // NaN fails
       const auto n = hn::CountTrue(df, pass);
+      if constexpr (kWritesDepth) {
+        hn::BlendedStore(z, pass, df, depth_row);
+        count += static_cast<int>(n);
+        continue;
+      }
       hn::StoreU(hn::DemoteTo(d16, hn::Compress(frame_x, hn::RebindMask(di, pass))), d16,
                  xs + count);
       hn::StoreU(hn::Set(d16, static_cast<std::int16_t>(y)), d16, ys + count);
@@ -172,26 +181,46 @@ HWY_INLINE int FindBoxRows(DF df, const SetupTriangle& t, const std::int32_t e_f
   return count;
 }
 
-int FindBoxPixels(const SetupTriangle& t, int x0, int y0, int width, int height, const float* depth,
-                  int depth_stride, bool depth_test, std::int16_t* xs, std::int16_t* ys) {
+// The edges at the box's first pixel (x0, y0), as FindBoxPixels takes them.
+void BoxEdges(const SetupTriangle& t, int x0, int y0, std::int32_t e_first[3]) {
   // Edge i at box pixel (dx, dy) is e[i] + a*dx + b*dy, as for blocks (block_raster.hpp): E
   // at the box's first pixel centre over 256, floored. With |a|, |b| <= 2^23 and dx, dy <= 63,
   // a*dx and b*dy stay within 2^29, so e clamped to +-2^30 keeps every sign and 32 bits hold
   // the sums, even for a big triangle whose box in the tile is small. (Lanes past the box's
   // width may wrap around; in_box drops them.)
   constexpr std::int64_t kClamp = std::int64_t{1} << 30;
-  std::int32_t e_first[3];
   for (int i = 0; i < 3; ++i) {
     e_first[i] = static_cast<std::int32_t>(
         std::clamp(edge_at_centre(t, i, x0, y0) >> kSubpixelBits, -kClamp, kClamp));  // floor
   }
-  // Rows of eight pixels at most in vectors of eight, wider ones in vectors of up to sixteen.
+}
+
+// FindBoxRows in vectors of up to eight lanes for rows of eight pixels at most, of up to
+// sixteen for wider ones.
+template <bool kWritesDepth>
+int FindBoxRowsOfWidth(const SetupTriangle& t, int x0, int y0, int width, int height,
+                       DepthRows<kWritesDepth>* depth, int depth_stride, bool depth_test,
+                       std::int16_t* xs, std::int16_t* ys) {
+  std::int32_t e_first[3];
+  BoxEdges(t, x0, y0, e_first);
   if (width > kBlockSize) {
-    return FindBoxRows(hn::CappedTag<float, 16>(), t, e_first, x0, y0, width, height, depth,
-                       depth_stride, depth_test, xs, ys);
+    return FindBoxRows<kWritesDepth>(hn::CappedTag<float, 16>(), t, e_first, x0, y0, width, height,
+                                     depth, depth_stride, depth_test, xs, ys);
   }
-  return FindBoxRows(FloatTag(), t, e_first, x0, y0, width, height, depth, depth_stride, depth_test,
-                     xs, ys);
+  return FindBoxRows<kWritesDepth>(FloatTag(), t, e_first, x0, y0, width, height, depth,
+                                   depth_stride, depth_test, xs, ys);
+}
+
+int FindBoxPixels(const SetupTriangle& t, int x0, int y0, int width, int height, const float* depth,
+                  int depth_stride, bool depth_test, std::int16_t* xs, std::int16_t* ys) {
+  return FindBoxRowsOfWidth<false>(t, x0, y0, width, height, depth, depth_stride, depth_test, xs,
+                                   ys);
+}
+
+int WriteBoxDepths(const SetupTriangle& t, int x0, int y0, int width, int height, float* depth,
+                   int depth_stride) {
+  return FindBoxRowsOfWidth<true>(t, x0, y0, width, height, depth, depth_stride, true, nullptr,
+                                  nullptr);
 }
 
 int FindBoxSamples(const SampleBoxSearch& in, std::int16_t* xs, std::int16_t* ys,
@@ -375,6 +404,7 @@ HWY_EXPORT(CoverBlock);
 HWY_EXPORT(TargetName);
 HWY_EXPORT(InterpolatePixels);
 HWY_EXPORT(FindBoxPixels);
+HWY_EXPORT(WriteBoxDepths);
 HWY_EXPORT(FindBoxSamples);
 HWY_EXPORT(FindBoxSamplesWide);
 HWY_EXPORT(WriteSampleColors);
@@ -383,9 +413,10 @@ const char* simd_target_name() { return HWY_DISPATCH_TABLE(TargetName)[chosen_si
 
 RasterKernels raster_kernels(SimdTarget index) {
   return {
-      HWY_DISPATCH_TABLE(CoverBlock)[index],         HWY_DISPATCH_TABLE(InterpolatePixels)[index],
-      HWY_DISPATCH_TABLE(FindBoxPixels)[index],      HWY_DISPATCH_TABLE(FindBoxSamples)[index],
-      HWY_DISPATCH_TABLE(FindBoxSamplesWide)[index], HWY_DISPATCH_TABLE(WriteSampleColors)[index]};
+      HWY_DISPATCH_TABLE(CoverBlock)[index],       HWY_DISPATCH_TABLE(InterpolatePixels)[index],
+      HWY_DISPATCH_TABLE(FindBoxPixels)[index],    HWY_DISPATCH_TABLE(WriteBoxDepths)[index],
+      HWY_DISPATCH_TABLE(FindBoxSamples)[index],   HWY_DISPATCH_TABLE(FindBoxSamplesWide)[index],
+      HWY_DISPATCH_TABLE(WriteSampleColors)[index]};
 }
 
 }  // namespace facet::pipeline

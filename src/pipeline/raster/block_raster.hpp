@@ -134,6 +134,10 @@ struct RasterKernels {
   int (*find_box_pixels)(const SetupTriangle& t, int x0, int y0, int width, int height,
                          const float* depth, int depth_stride, bool depth_test, std::int16_t* x,
                          std::int16_t* y);
+  // find_box_pixels for a depth-only draw (depth_only.hpp), depth-tested: the pixels found take
+  // their depths, in the same rows' order; returns how many. Nothing else is stored.
+  int (*write_box_depths)(const SetupTriangle& t, int x0, int y0, int width, int height,
+                          float* depth, int depth_stride);
   // The MSAA box search (SampleBoxSearch): the pixels with a covered sample that passes the
   // depth test (the samples of the 64-bit edge functions, and the sample depths z at the centre
   // as evaluate_row and evaluate_in_row give it plus sample_z[s]): positions to x[n], y[n],

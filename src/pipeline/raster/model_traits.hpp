@@ -24,6 +24,14 @@ constexpr bool writes_data() {
   return false;
 }
 
+// Models that write depth alone (shading/models.hpp's DepthOnlyShading): their one-sample
+// triangles take raster_depth_only.
+template <class Shading>
+constexpr bool depth_only() {
+  if constexpr (requires { Shading::kDepthOnly; }) return Shading::kDepthOnly;
+  return false;
+}
+
 // Models whose colors are display values (shading/models.hpp's DisplayReferred).
 template <class Shading>
 constexpr bool display_referred() {

@@ -11,6 +11,7 @@
 
 #include "pipeline/frame.hpp"
 #include "pipeline/raster/block_raster.hpp"
+#include "pipeline/raster/depth_only.hpp"
 #include "pipeline/raster/msaa.hpp"
 #include "pipeline/raster/pixel_writer.hpp"
 #include "pipeline/raster/small_triangles.hpp"
@@ -74,6 +75,12 @@ inline std::uint64_t block_pixels_mask(int width, int height) {
 //      the tile (shade_full_block).
 template <class Shading, AlphaMode kAlpha = AlphaMode::opaque>
 void raster_triangle(TileContext& tile, const SetupTriangle& t) {
+  if constexpr (depth_only<Shading>()) {
+    if (tile.samples == 1) {
+      raster_depth_only(tile, t);
+      return;
+    }
+  }
   if (tile.samples > 1) {  // multisampled tiles (msaa.hpp; their small triangles wait too)
     raster_triangle_msaa<Shading, kAlpha>(tile, t);
     return;

@@ -28,13 +28,13 @@ bool casts_shadow(const DrawRecord& draw) {
          draw.pipeline.fills_triangles && !pipeline::is_blended(draw.material.alpha_mode);
 }
 
-// The depth pass draws the cheapest model that writes depth (its color is not read), and for
-// cut-out materials the unlit one, whose alpha cuts out as in color.
+// The depth pass draws depth alone, and cut-out materials with the unlit model, whose alpha
+// cuts out as in color.
 pipeline::DrawPipeline shadow_pipeline(AlphaMode alpha) {
   if (alpha == AlphaMode::mask) {
     return pipeline::make_pipeline<shading::UnlitShading, AlphaMode::mask>();
   }
-  return pipeline::make_pipeline<shading::ConstantColorUnlitShading>();
+  return pipeline::make_pipeline<shading::DepthOnlyShading>();
 }
 
 // Adds the world-space box around a draw's mesh bounds to `box`.

@@ -1,0 +1,18 @@
+// Stage: raster, for draws that write depth alone: the shadow passes' casters
+// (shading::DepthOnlyShading), whose color nothing reads. raster_triangle hands their triangles
+// here in one-sample tiles. No varyings, no shading and no color: a small triangle's box search
+// writes the depths it finds at once (write_box_depths), a larger triangle's blocks take
+// cover_block's depths. The depths are those the shaded paths write (the same arithmetic), in
+// the same order, so a depth map is the same bit for bit.
+#pragma once
+
+#include "pipeline/frame.hpp"
+#include "pipeline/setup/setup.hpp"
+
+namespace facet::pipeline {
+
+// Rasterizes triangle t into the one-sample tile's depth buffer: the covered pixels in front of
+// it take t's depth.
+void raster_depth_only(TileContext& tile, const SetupTriangle& t);
+
+}  // namespace facet::pipeline

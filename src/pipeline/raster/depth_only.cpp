@@ -88,6 +88,18 @@ void raster_depth_only(TileContext& tile, const SetupTriangle& t) {
   const int y0 = std::max(t.min_y, tile.y0), y1 = std::min(t.max_y, tile.y1 - 1);
   if (x0 > x1 || y0 > y1) return;
   flush_waiting(tile);  // this triangle is drawn after them
+  const int width = x1 - x0 + 1;
+  if (box_may_wait(width, y1 - y0 + 1)) {
+    // Small: the box searched a band of rows at a time, as the waiting pixels' search takes it
+    // (add_waiting), which keeps its edge values within 32 bits.
+    const int rows = kMaxWaitingBox / width;
+    for (int y = y0; y <= y1; y += rows) {
+      float* depth = tile.depth + tile_index(tile, x0, y);
+      tile.pixels_shaded += tile.kernels.write_box_depths(
+          t, x0, y, width, std::min(rows, y1 - y + 1), depth, tile.stride);
+    }
+    return;
+  }
   // A triangle behind everything drawn over its box is done without an edge test.
   float farthest_drawn = 0.0f;
   for (int by = (y0 - tile.y0) / kBlockSize; by <= (y1 - tile.y0) / kBlockSize; ++by) {
@@ -97,19 +109,7 @@ void raster_depth_only(TileContext& tile, const SetupTriangle& t) {
   }
   const DepthRange box_depth = depth_range_over(t, x0, y0, x1, y1);
   if (box_depth.nearest >= farthest_drawn) return;  // NaN goes on
-  const int width = x1 - x0 + 1;
-  if (!box_may_wait(width, y1 - y0 + 1)) {
-    tile.pixels_shaded += write_block_depths(tile, t, x0, y0, x1, y1, box_depth);
-    return;
-  }
-  // Small: the box searched a band of rows at a time, as the waiting pixels' search takes it
-  // (add_waiting), which keeps its edge values within 32 bits.
-  const int rows = kMaxWaitingBox / width;
-  for (int y = y0; y <= y1; y += rows) {
-    float* depth = tile.depth + tile_index(tile, x0, y);
-    tile.pixels_shaded += tile.kernels.write_box_depths(t, x0, y, width, std::min(rows, y1 - y + 1),
-                                                        depth, tile.stride);
-  }
+  tile.pixels_shaded += write_block_depths(tile, t, x0, y0, x1, y1, box_depth);
 }
 
 }  // namespace facet::pipeline

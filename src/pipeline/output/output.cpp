@@ -86,14 +86,13 @@ void fill_background(TileContext& tile, const Background& background) {
       bool computed = false;
       glm::vec4 sky{0.0f};
       for (int s = 1; s < tile.samples; ++s) {
-        const std::ptrdiff_t i = s * tile.sample_plane + pixel;
-        if (tile.depth[i] != kClearDepth) continue;
+        if (tile.depth[s * tile.sample_plane + pixel] != kClearDepth) continue;
         if (!computed) {
           sky_row(view, environment, sample_at, tile.x0 + x, tile.y0 + y, 1, &clear, kClearDepth,
                   &sky);
           computed = true;
         }
-        tile.color[i] = sky;
+        sample_color(tile, pixel, s) = sky;
       }
     }
   }
@@ -112,24 +111,36 @@ void tone_map(const TileContext& tile, const Resolve& resolve, std::ptrdiff_t fi
 
 // The MSAA resolve of one tile row: each pixel's samples averaged in linear light (in sample
 // order, then scaled: the same sum on every path), or its one color where they are alike.
-// Tone mapped, each sample is mapped before the average: a row with split pixels has each
-// sample plane's row mapped whole.
+// Tone mapped, each sample is mapped before the average: a row with split pixels has all its
+// samples mapped.
 void average_samples(const TileContext& tile, const Resolve& resolve, std::ptrdiff_t first,
                      int count, glm::vec4* out) {
   const AverageSamplesRowKernel average = tile.frame->kernels->average_samples_row;
   const std::uint8_t* split = tile.split + first;
+  const int others = tile.samples - 1;
+  const glm::vec4* row_others = tile.sample_colors + first * others;
   if (resolve.tone_mapping == ToneMapping::none) {
-    average(tile.color + first, tile.sample_plane, tile.samples, split, count, out);
+    average(tile.color + first, row_others, tile.samples, split, count, out);
     return;
   }
   tone_map(tile, resolve, first, count, out);
   if (std::all_of(split, split + count, [](std::uint8_t differ) { return differ == 0; })) return;
-  alignas(64) glm::vec4 mapped[kMaxSamples][kMaxTileSize];
-  std::copy_n(out, count, mapped[0]);
-  for (int s = 1; s < tile.samples; ++s) {
-    tone_map(tile, resolve, s * tile.sample_plane + first, count, mapped[s]);
+  // The other samples in their order, with their depths in the same order (nothing drawn at a
+  // sample keeps the clear color unmapped).
+  alignas(64) float depth[(kMaxSamples - 1) * kMaxTileSize];
+  alignas(64) glm::vec4 mapped[(kMaxSamples - 1) * kMaxTileSize];
+  const float* mapped_depth = nullptr;
+  if (!resolve.maps_background) {
+    for (int x = 0; x < count; ++x) {
+      for (int s = 1; s <= others; ++s) {
+        depth[x * others + s - 1] = tile.depth[s * tile.sample_plane + first + x];
+      }
+    }
+    mapped_depth = depth;
   }
-  average(mapped[0], kMaxTileSize, tile.samples, split, count, out);
+  tile.frame->kernels->tone_map_row(resolve.tone_mapping, row_others, mapped_depth, kClearDepth,
+                                    count * others, resolve.scale, mapped);
+  average(out, mapped, tile.samples, split, count, out);
 }
 
 }  // namespace

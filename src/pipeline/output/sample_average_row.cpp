@@ -11,20 +11,21 @@ HWY_BEFORE_NAMESPACE();
 namespace facet::pipeline::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-void AverageSamplesRow(const glm::vec4* colors, std::ptrdiff_t plane, int samples,
+void AverageSamplesRow(const glm::vec4* colors, const glm::vec4* others, int samples,
                        const std::uint8_t* split, int count, glm::vec4* out) {
   const hn::CappedTag<float, 4> d;  // one RGBA color a vector (a channel on HWY_SCALAR)
   const hn::RebindToSigned<decltype(d)> di;
   const int lanes = static_cast<int>(hn::Lanes(d));
   const auto inverse = hn::Set(d, 1.0f / static_cast<float>(samples));
-  const std::ptrdiff_t plane_floats = plane * 4;
   for (int x = 0; x < count; ++x) {
     const auto differ = hn::RebindMask(d, hn::Ne(hn::Set(di, split[x]), hn::Zero(di)));
+    const float* rest = &others[static_cast<std::ptrdiff_t>(x) * (samples - 1)].x;
     for (int channel = 0; channel < 4; channel += lanes) {
-      const float* first = &colors[x].x + channel;
-      const auto alike = hn::LoadU(d, first);
+      const auto alike = hn::LoadU(d, &colors[x].x + channel);
       auto sum = alike;
-      for (int s = 1; s < samples; ++s) sum = hn::Add(sum, hn::LoadU(d, first + s * plane_floats));
+      for (int s = 1; s < samples; ++s) {
+        sum = hn::Add(sum, hn::LoadU(d, rest + (s - 1) * 4 + channel));
+      }
       hn::StoreU(hn::IfThenElse(differ, hn::Mul(sum, inverse), alike), d, &out[x].x + channel);
     }
   }

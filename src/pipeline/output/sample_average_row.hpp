@@ -13,11 +13,13 @@
 
 namespace facet::pipeline {
 
-// out[i] for the count pixels i of a row: where split[i], the sum of colors[s * plane + i] over
-// the samples s = 0 ... samples - 1, in that order, times 1 / samples; elsewhere colors[i]
-// (every sample alike). The same bits on every target.
-using AverageSamplesRowKernel = void (*)(const glm::vec4* colors, std::ptrdiff_t plane, int samples,
-                                         const std::uint8_t* split, int count, glm::vec4* out);
+// out[i] for the count pixels i of a row: where split[i], the sum of its samples' colors,
+// colors[i] then others[i * (samples - 1) + s - 1] for s = 1 ... samples - 1, in that order,
+// times 1 / samples; elsewhere colors[i] (every sample alike). out may be colors. The same bits
+// on every target.
+using AverageSamplesRowKernel = void (*)(const glm::vec4* colors, const glm::vec4* others,
+                                         int samples, const std::uint8_t* split, int count,
+                                         glm::vec4* out);
 AverageSamplesRowKernel average_samples_row_kernel(SimdTarget target);
 
 }  // namespace facet::pipeline

@@ -367,27 +367,30 @@ void WriteSampleColors(const SampleColorWrite& to, const float (*colors)[4], con
   const hn::RebindToSigned<decltype(d)> di;
   const int lanes = static_cast<int>(hn::Lanes(d));
   const auto one = hn::Set(d, 1.0f);
-  const std::ptrdiff_t plane = to.plane * 4;  // floats
+  const int others = to.samples - 1;
   const unsigned all = (1u << to.samples) - 1;
   for (int n = 0; n < count; ++n) {
     const std::ptrdiff_t pixel =
         static_cast<std::ptrdiff_t>(ys[n] - to.y0) * to.stride + (xs[n] - to.x0);
     const auto was_split = hn::RebindMask(d, hn::Ne(hn::Set(di, to.split[pixel]), hn::Zero(di)));
     const auto bits = hn::Set(di, masks[n]);
+    auto covered = [&](int s) HWY_ATTR {
+      return hn::RebindMask(d, hn::Ne(hn::And(bits, hn::Set(di, 1 << s)), hn::Zero(di)));
+    };
     for (int channel = 0; channel < 4; channel += lanes) {
       float* at = to.color + pixel * 4 + channel;
+      float* rest = to.others + pixel * others * 4 + channel;  // sample s at rest + (s - 1) * 4
       auto value = hn::LoadU(d, colors[n] + channel);
       if (to.opaque) {
         const auto alpha = hn::RebindMask(d, hn::Eq(hn::Iota(di, channel), hn::Set(di, 3)));
         value = hn::IfThenElse(alpha, one, value);
       }
       const auto first = hn::LoadU(d, at);
-      for (int s = 0; s < to.samples; ++s) {
-        float* sample = at + s * plane;
-        const auto covered =
-            hn::RebindMask(d, hn::Ne(hn::And(bits, hn::Set(di, 1 << s)), hn::Zero(di)));
+      hn::StoreU(hn::IfThenElse(covered(0), value, first), d, at);
+      for (int s = 1; s <= others; ++s) {
+        float* sample = rest + (s - 1) * 4;
         const auto kept = hn::IfThenElse(was_split, hn::LoadU(d, sample), first);
-        hn::StoreU(hn::IfThenElse(covered, value, kept), d, sample);
+        hn::StoreU(hn::IfThenElse(covered(s), value, kept), d, sample);
       }
     }
     to.split[pixel] = masks[n] != all;

@@ -91,11 +91,11 @@ struct SampleBoxSearch {
 // samples of masks[n]; a pixel that was not split gives its other samples its old color, and
 // is split afterwards unless every sample took the new one (TileContext::split).
 struct SampleColorWrite {
-  float* color;          // the tile's colors, RGBA floats (TileContext::color)
-  std::uint8_t* split;   // TileContext::split
-  std::ptrdiff_t plane;  // pixels between sample planes (TileContext::sample_plane)
-  int stride;            // pixels per tile row
-  int x0, y0;            // the tile's first frame pixel
+  float* color;         // the tile's colors (sample 0), RGBA floats (TileContext::color)
+  float* others;        // samples 1 ... samples - 1 (TileContext::sample_colors)
+  std::uint8_t* split;  // TileContext::split
+  int stride;           // pixels per tile row
+  int x0, y0;           // the tile's first frame pixel
   int samples;
   bool opaque;  // alpha written as 1 (opaque surfaces), else as shaded (data outputs)
 };

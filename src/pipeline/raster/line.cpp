@@ -85,8 +85,7 @@ void plot_samples(TileContext& tile, std::ptrdiff_t i, float z, const glm::vec4&
     tile.color[i] = color;
   } else {
     split_pixel(tile, i);
-    for (unsigned m = mask; m != 0; m &= m - 1)
-      tile.color[std::countr_zero(m) * tile.sample_plane + i] = color;
+    for (unsigned m = mask; m != 0; m &= m - 1) sample_color(tile, i, std::countr_zero(m)) = color;
   }
   for (unsigned m = mask; m != 0; m &= m - 1) {
     float& depth = tile.depth[std::countr_zero(m) * tile.sample_plane + i];

@@ -54,12 +54,16 @@ struct TileContext {
   // own (render_tile.cpp sets it before the first triangle).
   WaitingPixels* waiting = nullptr;
   RasterKernels kernels{};  // the frame's (pipeline/kernels.hpp), set with the tile
-  // MSAA (raster/msaa.hpp): sample s of pixel i has color[s * sample_plane + i] and
-  // depth[s * sample_plane + i]; plane 0 is the one the one-sample paths use. While split[i] is
-  // 0, every sample of pixel i has color[i]'s color (the other planes' colors are stale): a
-  // write that covers all samples costs one color, and only edge pixels hold several.
+  // MSAA (raster/msaa.hpp): sample s of pixel i has depth[s * sample_plane + i] (planes: the
+  // searches test a box row of one sample at a time) and color sample_color(tile, i, s): sample
+  // 0's is color[i], the one the one-sample paths use, and the others' follow one another, those
+  // of pixel i from sample_colors[i * (samples - 1)] (a split pixel's samples are written and
+  // averaged together). While split[i] is 0, every sample of pixel i has color[i]'s color (the
+  // others' are stale): a write that covers all samples costs one color, and only edge pixels
+  // hold several.
   int samples = 1;
   std::ptrdiff_t sample_plane = 0;
+  glm::vec4* sample_colors = nullptr;
   std::uint8_t* split = nullptr;
   // Per pixel, the samples the triangle being drawn covers there that pass the depth test
   // (msaa.hpp sets it before shading the pixel); and that triangle's depth at each sample
@@ -71,6 +75,11 @@ struct TileContext {
 // Where frame pixel (x, y) is in the tile's buffers (plane 0).
 inline std::ptrdiff_t tile_index(const TileContext& tile, int x, int y) {
   return static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride + (x - tile.x0);
+}
+
+// MSAA: the color of sample s of tile pixel i (TileContext::sample_colors).
+inline glm::vec4& sample_color(const TileContext& tile, std::ptrdiff_t i, int s) {
+  return s == 0 ? tile.color[i] : tile.sample_colors[i * (tile.samples - 1) + (s - 1)];
 }
 
 // Alpha to coverage for cut-out (alpha-mask) draws under MSAA: the samples a pixel of this alpha
@@ -95,7 +104,7 @@ inline unsigned alpha_to_coverage(float alpha, float cutoff, int samples) {
 // leaves the samples different.
 inline void split_pixel(TileContext& tile, std::ptrdiff_t i) {
   if (tile.split[i]) return;
-  for (int s = 1; s < tile.samples; ++s) tile.color[s * tile.sample_plane + i] = tile.color[i];
+  for (int s = 1; s < tile.samples; ++s) sample_color(tile, i, s) = tile.color[i];
   tile.split[i] = 1;
 }
 
@@ -194,6 +203,7 @@ struct SampleWriter {
   // depth_steps: the triangle's depth at each sample minus its depth at the pixel centre.
   SampleWriter(const TileContext& tile, const float* depth_steps)
       : color(tile.color),
+        others(tile.sample_colors),
         depth(tile.depth),
         split(tile.split),
         plane(tile.sample_plane),
@@ -203,14 +213,16 @@ struct SampleWriter {
 
   // The samples of `mask` (bits, not 0) of tile pixel `pixel` take `c` and depth z at the centre.
   void write(std::ptrdiff_t pixel, unsigned mask, float z, const glm::vec4& c) const {
-    glm::vec4* color_at = color + pixel;
+    glm::vec4* first = color + pixel;                      // sample 0
+    glm::vec4* rest = others + pixel * (samples - 1) - 1;  // rest[s]: sample s >= 1
+    auto at = [&](int s) -> glm::vec4& { return s == 0 ? *first : rest[s]; };
     float* depth_at = depth + pixel;
     if (mask == all) {
       if (kReplaces || !split[pixel]) {
-        blend_into<Shading, kAlpha>(*color_at, c);  // every sample alike (again)
+        blend_into<Shading, kAlpha>(*first, c);  // every sample alike (again)
         split[pixel] = 0;
       } else {
-        for (int s = 0; s < samples; ++s) blend_into<Shading, kAlpha>(color_at[s * plane], c);
+        for (int s = 0; s < samples; ++s) blend_into<Shading, kAlpha>(at(s), c);
       }
       if constexpr (kDepthWrite) {
         for (int s = 0; s < samples; ++s) depth_at[s * plane] = z + sample_z[s];
@@ -220,19 +232,18 @@ struct SampleWriter {
     if (!split[pixel]) {  // each sample its own copy of the pixel's color (split_pixel)
       // A replacing color overwrites the covered ones next; sample 0 is the copied one.
       const unsigned copied = (kReplaces ? all & ~mask : all) & ~1u;
-      for (unsigned m = copied; m != 0; m &= m - 1) {
-        color_at[std::countr_zero(m) * plane] = *color_at;
-      }
+      for (unsigned m = copied; m != 0; m &= m - 1) rest[std::countr_zero(m)] = *first;
       split[pixel] = 1;
     }
     for (unsigned m = mask; m != 0; m &= m - 1) {
       const int s = std::countr_zero(m);
-      blend_into<Shading, kAlpha>(color_at[s * plane], c);
+      blend_into<Shading, kAlpha>(at(s), c);
       if constexpr (kDepthWrite) depth_at[s * plane] = z + sample_z[s];
     }
   }
 
   glm::vec4* color;
+  glm::vec4* others;  // TileContext::sample_colors
   float* depth;
   std::uint8_t* split;
   std::ptrdiff_t plane;

@@ -33,7 +33,7 @@ void plot_samples(TileContext& tile, std::ptrdiff_t i, const SetupPoint& p) {
   } else {
     split_pixel(tile, i);
     for (unsigned m = mask; m != 0; m &= m - 1)
-      tile.color[std::countr_zero(m) * tile.sample_plane + i] = p.color;
+      sample_color(tile, i, std::countr_zero(m)) = p.color;
   }
   for (unsigned m = mask; m != 0; m &= m - 1)
     tile.depth[std::countr_zero(m) * tile.sample_plane + i] = p.z;

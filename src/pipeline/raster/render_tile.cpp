@@ -78,6 +78,7 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
   tile.block_max_depth = buffers.block_max_depth.data();
   tile.samples = frame.samples;
   tile.sample_plane = static_cast<std::ptrdiff_t>(ts) * ts;
+  tile.sample_colors = tile.color + tile.sample_plane;
   tile.split = buffers.split.data();
   tile.sample_mask = buffers.sample_mask.data();
   pipeline::WaitingPixels waiting;

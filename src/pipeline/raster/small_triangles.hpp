@@ -163,8 +163,8 @@ void write_waiting(TileContext& tile) {
     // in the same order.
     static_assert(SampleWriter<Shading, kAlpha, false>::kReplaces, "waiting draws are opaque");
     const SampleColorWrite to{reinterpret_cast<float*>(tile.color),
+                              reinterpret_cast<float*>(tile.sample_colors),
                               tile.split,
-                              tile.sample_plane,
                               tile.stride,
                               tile.x0,
                               tile.y0,

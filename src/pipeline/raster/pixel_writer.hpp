@@ -213,9 +213,9 @@ struct SampleWriter {
 
   // The samples of `mask` (bits, not 0) of tile pixel `pixel` take `c` and depth z at the centre.
   void write(std::ptrdiff_t pixel, unsigned mask, float z, const glm::vec4& c) const {
-    glm::vec4* first = color + pixel;                      // sample 0
-    glm::vec4* rest = others + pixel * (samples - 1) - 1;  // rest[s]: sample s >= 1
-    auto at = [&](int s) -> glm::vec4& { return s == 0 ? *first : rest[s]; };
+    glm::vec4* first = color + pixel;                  // sample 0
+    glm::vec4* rest = others + pixel * (samples - 1);  // rest[s - 1]: sample s >= 1
+    auto at = [&](int s) -> glm::vec4& { return s == 0 ? *first : rest[s - 1]; };
     float* depth_at = depth + pixel;
     if (mask == all) {
       if (kReplaces || !split[pixel]) {
@@ -232,7 +232,7 @@ struct SampleWriter {
     if (!split[pixel]) {  // each sample its own copy of the pixel's color (split_pixel)
       // A replacing color overwrites the covered ones next; sample 0 is the copied one.
       const unsigned copied = (kReplaces ? all & ~mask : all) & ~1u;
-      for (unsigned m = copied; m != 0; m &= m - 1) rest[std::countr_zero(m)] = *first;
+      for (unsigned m = copied; m != 0; m &= m - 1) rest[std::countr_zero(m) - 1] = *first;
       split[pixel] = 1;
     }
     for (unsigned m = mask; m != 0; m &= m - 1) {

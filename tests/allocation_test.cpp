@@ -5,9 +5,12 @@
 #include <atomic>
 #include <cstdlib>
 #include <filesystem>
+#include <glm/gtc/matrix_transform.hpp>
 #include <new>
 
+#include "facet/procedural.hpp"
 #include "facet/render_texture.hpp"
+#include "facet/renderer.hpp"
 #include "facet/scene.hpp"
 #include "scenes/bench_scenes.hpp"
 #include "support/required_package.hpp"
@@ -109,6 +112,41 @@ TEST(Allocations, SteadyStateRenderToTextureBenchFramesAllocateNothing) {
     allocations_in_frames(*scene, renderer, fb, 5);
     EXPECT_EQ(allocations_in_frames(*scene, renderer, fb, 30), 0);
   }
+}
+
+// Materials keep their names (glTF's are often long), but a frame's copies of them must not
+// allocate: with shadows and a mirror, each draw is copied into several passes.
+TEST(Allocations, SteadyStateFramesOfLongNamedMaterialsAllocateNothing) {
+  RenderSettings settings;
+  settings.threads = 2;
+  settings.shadows = true;
+  settings.shadow_map_size = 256;
+  settings.reflections = true;
+  Renderer renderer(settings);
+  Framebuffer fb(160, 90);
+  const Mesh ball = uv_sphere(0.5f, 16, 8), floor = plane(6.0f, 6.0f);
+  Material ball_material, floor_material;
+  ball_material.name = "a material whose name no short-string buffer holds";
+  floor_material.name = "the floor, a mirror, also named at some length";
+  floor_material.reflects_scene = true;
+  floor_material.reflectivity = 0.5f;
+  floor_material.shading = ShadingModel::phong;
+  const Camera camera = Camera::look_at({0.0f, 2.0f, 4.0f}, {0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f},
+                                        50.0f, 160.0f / 90.0f, 0.1f, 50.0f);
+  auto frames = [&](int count) {
+    const long before = g_allocations.load();
+    for (int i = 0; i < count; ++i) {
+      renderer.begin_frame(camera);
+      renderer.draw(floor, floor_material);
+      renderer.draw(ball, ball_material, glm::translate(glm::mat4(1.0f), {0.0f, 0.6f, 0.0f}));
+      renderer.finish(fb);
+    }
+    return g_allocations.load() - before;
+  };
+  frames(5);
+  EXPECT_EQ(frames(20), 0);
+  EXPECT_GT(renderer.stats().ms_shadows, 0.0) << "no shadow pass ran";
+  EXPECT_GT(renderer.stats().ms_reflections, 0.0) << "no reflection pass ran";
 }
 
 TEST(Allocations, TheCounterSeesAllocations) {

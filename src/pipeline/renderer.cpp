@@ -19,6 +19,47 @@ namespace facet {
 
 using pipeline::is_blended;
 
+namespace {
+
+// The draw's material as the frame keeps it: without its name, which nothing in a frame reads
+// and which, longer than a string holds in place (glTF's often are), every copy of the draw
+// (the color pass, the shadow and reflection passes) would allocate anew every frame. The
+// binding lists every field: a field added to Material stops it compiling until it is copied
+// here too.
+Material without_name(const Material& m) {
+  const auto& [name, shading, base_color, use_vertex_colors, specular_color, shininess, metallic,
+               roughness, emissive, reflectivity, reflects_scene, base_color_map, normal_map,
+               normal_scale, specular_map, metallic_roughness_map, occlusion_map,
+               occlusion_strength, emissive_map, alpha_mode, alpha_cutoff, wire_color, point_size,
+               cull] = m;
+  return Material{{},
+                  shading,
+                  base_color,
+                  use_vertex_colors,
+                  specular_color,
+                  shininess,
+                  metallic,
+                  roughness,
+                  emissive,
+                  reflectivity,
+                  reflects_scene,
+                  base_color_map,
+                  normal_map,
+                  normal_scale,
+                  specular_map,
+                  metallic_roughness_map,
+                  occlusion_map,
+                  occlusion_strength,
+                  emissive_map,
+                  alpha_mode,
+                  alpha_cutoff,
+                  wire_color,
+                  point_size,
+                  cull};
+}
+
+}  // namespace
+
 Renderer::Renderer(const RenderSettings& settings) {
   if (settings.threads < 0 || settings.threads > RenderSettings::kMaxThreads) {
     throw Error("renderer: threads must be 0 (all cores) or 1 to " +
@@ -166,7 +207,7 @@ void Renderer::Impl::record(const Mesh& mesh, const std::optional<pipeline::Mesh
   pipeline::DrawRecord record;
   record.mesh = &mesh;
   record.bounds = box;
-  record.material = material;
+  record.material = without_name(material);
   record.pipeline = pipeline::debug_pipeline(settings.debug_view, pipe);
   if (is_blended(material.alpha_mode) && box) {
     glm::vec4 centre = camera.view() * transform * box->centre();

@@ -146,27 +146,39 @@ void average_samples(const TileContext& tile, const Resolve& resolve, std::ptrdi
 }  // namespace
 
 void resolve_tile(const TileContext& tile, const Resolve& resolve, Framebuffer& target) {
-  glm::vec4 resolved[kMaxTileSize];
   // Mapped colors have the exposure in them.
   const float scale = resolve.tone_mapping == ToneMapping::none ? resolve.scale : 1.0f;
-  for (int y = tile.y0; y < tile.y1; ++y) {
-    const std::ptrdiff_t first = static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride;
-    const int width = tile.x1 - tile.x0;
-    const glm::vec4* color = tile.color + first;
-    if (tile.samples > 1) {
-      average_samples(tile, resolve, first, width, resolved);
-      color = resolved;
-    } else if (resolve.tone_mapping != ToneMapping::none) {
-      tone_map(tile, resolve, first, width, resolved);
-      color = resolved;
-    }
-    const float* depth = tile.depth + first;
-    std::size_t row = static_cast<std::size_t>(y) * target.width();
+  const int width = tile.x1 - tile.x0;
+  auto write_row = [&](int y, const glm::vec4* color) {
+    const std::size_t row = static_cast<std::size_t>(y) * target.width();
     store_row(*tile.frame->kernels, target, row + tile.x0, color, width, scale,
               resolve.display_referred);
     if (target.has_depth()) {
+      const float* depth = tile.depth + static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride;
       std::copy_n(depth, width, target.depth().data() + row + tile.x0);
     }
+  };
+  if (tile.samples > 1) {
+    // Each row averaged one row ahead of its encode: the encode's wide loads of colors the
+    // average has just stored a color at a time would wait for those stores to complete.
+    glm::vec4 averaged[2][kMaxTileSize];
+    for (int y = tile.y0; y < tile.y1; ++y) {
+      const std::ptrdiff_t first = static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride;
+      average_samples(tile, resolve, first, width, averaged[(y - tile.y0) & 1]);
+      if (y > tile.y0) write_row(y - 1, averaged[(y - 1 - tile.y0) & 1]);
+    }
+    write_row(tile.y1 - 1, averaged[(tile.y1 - 1 - tile.y0) & 1]);
+    return;
+  }
+  glm::vec4 mapped[kMaxTileSize];
+  for (int y = tile.y0; y < tile.y1; ++y) {
+    const std::ptrdiff_t first = static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride;
+    const glm::vec4* color = tile.color + first;
+    if (resolve.tone_mapping != ToneMapping::none) {
+      tone_map(tile, resolve, first, width, mapped);
+      color = mapped;
+    }
+    write_row(y, color);
   }
 }
 

@@ -12,6 +12,7 @@ namespace {
 
 constexpr std::size_t kHugePage = std::size_t{2} << 20;
 constexpr int kHeapReserve = 256 << 20;
+constexpr std::size_t kReleaseAbove = std::size_t{256} << 20;
 
 }  // namespace
 
@@ -29,6 +30,10 @@ void use_memory_for_short_run() {
   if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
   std::free(block);
   mallopt(M_TOP_PAD, 128 << 10);  // glibc's default again for later growth
+}
+
+void release_import_leftovers() {
+  if (mallinfo2().fordblks >= kReleaseAbove) malloc_trim(0);
 }
 
 }  // namespace facet::cli

@@ -13,4 +13,11 @@ namespace facet::cli {
 // behaves as before.
 void use_memory_for_short_run();
 
+// Called once a model is loaded. The importer's working arrays (a big STL's corner list and weld
+// table: more than the mesh it makes) are free by then but stay in the heap, resident, where the
+// frame reuses only what fits its blocks; past kReleaseAbove bytes free, their pages go back to
+// the kernel, so that the peak is what the mesh and the frame touch. Smaller models keep theirs
+// for the frame, as use_memory_for_short_run intends.
+void release_import_leftovers();
+
 }  // namespace facet::cli

@@ -16,6 +16,7 @@
 #include "facet/renderer.hpp"
 #include "facet/scene.hpp"
 #include "output_files.hpp"
+#include "process_memory.hpp"
 #include "render_backend.hpp"
 #include "render_compare.hpp"
 #include "render_frames.hpp"
@@ -167,6 +168,7 @@ int run_render(const RenderOptions& o) {
   const float aspect = static_cast<float>(size.width) / size.height;
   Camera camera = build_camera(o.scene, scene, aspect);
   if (o.orthographic) camera = fit_orthographic(scene, camera, aspect);
+  release_import_leftovers();
   double load_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 
   RenderSettings settings;

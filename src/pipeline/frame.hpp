@@ -9,8 +9,10 @@
 // Every container is cleared, not freed, between frames, so steady-state frames reuse memory.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <new>
 #include <optional>
 #include <type_traits>
 #include <utility>
@@ -62,7 +64,8 @@ inline constexpr int kOverWSlack = 16;
 // A draw's transformed vertices, reused across frames.
 struct DrawVertices {
   // What the clipper, the per-triangle hooks and the edges read; not written (clip_written
-  // false) for a draw that reads none of them, whose planes come from over_w alone.
+  // false) for a draw that reads none of them, whose planes come from over_w alone, nor for a
+  // big draw with hooks, whose corners primitive assembly computes (vertex.hpp).
   std::vector<ClipVertex> clip;
   bool clip_written = true;
   std::vector<ProjectedVertex> projected;  // what culling and setup read
@@ -197,6 +200,15 @@ struct SetupPoint {
   glm::vec4 color;                 // linear RGBA
 };
 
+// UninitializedAllocator's blocks: those of kMappedBlockBytes or more are mappings of their own
+// (frame_memory.cpp), whatever malloc's settings (the CLI keeps blocks of up to 1 GiB in its
+// heap): their untouched pages are never resident, and a freed one is given back at once rather
+// than kept in the heap, resident where it was touched. Smaller ones stay in the heap, where the
+// CLI backs the first 256 MiB with huge pages (fewer TLB misses for a million-triangle frame).
+inline constexpr std::size_t kMappedBlockBytes = std::size_t{256} << 20;
+void* allocate_block(std::size_t bytes);
+void free_block(void* block, std::size_t bytes);
+
 // Allocates without initializing: a vector of it that grows leaves its new elements unwritten.
 // The frame's triangle and plane arrays are sized for every primitive of the frame (each chunk
 // gets a region as big as its input), but only the primitives that survive culling are written,
@@ -216,6 +228,11 @@ struct UninitializedAllocator : std::allocator<T> {
   UninitializedAllocator() = default;
   template <class U>
   UninitializedAllocator(const UninitializedAllocator<U>&) {}
+  T* allocate(std::size_t n) {
+    if (n > SIZE_MAX / sizeof(T)) throw std::bad_array_new_length();
+    return static_cast<T*>(allocate_block(n * sizeof(T)));
+  }
+  void deallocate(T* p, std::size_t n) { free_block(p, n * sizeof(T)); }
   template <class U, class... Args>
   void construct(U* p, Args&&... args) {
     if constexpr (sizeof...(Args) > 0) ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
@@ -279,6 +296,11 @@ struct GeometryChunk {
 // would fail (geometry.cpp).
 std::size_t triangle_region_budget();
 
+// The default of Frame::max_clip_vertex_bytes: meshes of up to about 3 million vertices keep
+// their ClipVertex, each computed once rather than once for every surviving triangle it is a
+// corner of; bigger ones save 80 bytes a vertex for about twice the vertex work.
+inline constexpr std::size_t kMaxClipVertexBytes = std::size_t{256} << 20;
+
 // The frame: everything above, and the set-up primitives (in the chunks' regions and then
 // their overflow; only the chunks' sequences say which slots hold one).
 struct Frame : PrimitiveBuffer {
@@ -307,6 +329,10 @@ struct Frame : PrimitiveBuffer {
   // Frames whose triangles' regions of `triangles` and `planes` would take more bytes than this
   // set their triangles up without regions (geometry.cpp's plan_chunks; tests lower it).
   std::size_t max_triangle_region_bytes = triangle_region_budget();
+  // Draws with per-triangle hooks whose ClipVertex would take more bytes than this keep none:
+  // their triangles' corners are computed when culling keeps them (vertex.hpp's
+  // keeps_clip_vertices; tests lower it).
+  std::size_t max_clip_vertex_bytes = kMaxClipVertexBytes;
   // Geometry's parallel tasks: chunks [first_chunk, end_chunk), after transforming their draw's
   // vertices when `transform` says so (geometry.cpp).
   struct GeometryTask {

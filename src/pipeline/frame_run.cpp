@@ -164,7 +164,7 @@ void Renderer::Impl::run(Framebuffer& target) {
     // Which maps the batch form samples depends on the material: decided here once, not for
     // every triangle.
     shading::maps_to_sample(draw.pipeline.maps_read, draw.material, draw.maps);
-    draw.clip_vertices = pipeline::keeps_clip_vertices(draw, guard);
+    draw.clip_vertices = pipeline::keeps_clip_vertices(draw, guard, frame.max_clip_vertex_bytes);
   }
   order_draws();
   background.clear_color = settings.clear_color;

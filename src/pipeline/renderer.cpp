@@ -292,5 +292,9 @@ void set_max_triangle_region_bytes(Renderer& renderer, std::size_t bytes) {
   RendererAccess::impl(renderer).frame.max_triangle_region_bytes = bytes;
 }
 
+void set_max_clip_vertex_bytes(Renderer& renderer, std::size_t bytes) {
+  RendererAccess::impl(renderer).frame.max_clip_vertex_bytes = bytes;
+}
+
 }  // namespace pipeline
 }  // namespace facet

@@ -28,6 +28,15 @@ void ensure_size(std::vector<T, Allocator>& v, std::size_t n) {
   v.resize(n);
 }
 
+// ensure_size for an array whose elements the caller rewrites before reading (a frame's, at its
+// start): one too small is freed before the bigger one is allocated, rather than copied into
+// it, which would touch (make resident) as many bytes of the new array as the old one held.
+template <class T, class Allocator>
+void ensure_size_discarding(std::vector<T, Allocator>& v, std::size_t n) {
+  if (v.capacity() < n) std::vector<T, Allocator>().swap(v);
+  ensure_size(v, n);
+}
+
 }  // namespace
 
 std::size_t triangle_region_budget() {
@@ -114,10 +123,10 @@ Totals plan_chunks(Frame& frame) {
     throw Error("renderer: too many primitives in one frame");
   }
   frame.chunk_count = count;
-  ensure_size(frame.triangles, totals.triangles);
-  ensure_size(frame.planes, totals.planes);
-  ensure_size(frame.lines, totals.lines);
-  ensure_size(frame.points, totals.points);
+  ensure_size_discarding(frame.triangles, totals.triangles);
+  ensure_size_discarding(frame.planes, totals.planes);
+  ensure_size_discarding(frame.lines, totals.lines);
+  ensure_size_discarding(frame.points, totals.points);
   return totals;
 }
 

@@ -2,11 +2,11 @@
 #include "pipeline/geometry/primitive.hpp"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 
 #include "pipeline/geometry/clip.hpp"
 #include "pipeline/geometry/cull_batch.hpp"
+#include "pipeline/geometry/vertex.hpp"
 #include "pipeline/kernels.hpp"
 #include "pipeline/setup/setup.hpp"
 #include "pipeline/setup/setup_batch.hpp"
@@ -27,6 +27,7 @@ struct Assembler {
   const DrawVertices& vertices;
   ClipBounds guard;
   const Kernels& kernels;
+  VertexPassInput pass_input = vertex_pass_input(draw, width, height, guard);
   bool hooks = has_triangle_hooks(draw);
   // Every triangle is set up by the setup kernel (setup_batch.hpp): those that need no clipping
   // a run of culling's survivors at a time, from the draw's projected vertices (unless
@@ -149,14 +150,18 @@ struct Assembler {
       return;
     }
 
-    // The per-triangle hooks and the clipper rewrite vertices: work on copies. (A draw whose
-    // vertex stage skipped the clip vertices has neither: its bounds said no clipping.)
-    assert(vertices.clip_written);
-    const ClipVertex* in[3] = {&vertices.clip[i0], &vertices.clip[i1], &vertices.clip[i2]};
+    // The per-triangle hooks and the clipper rewrite vertices: work on copies, or on the
+    // corners computed now for a draw whose vertex stage kept none (keeps_clip_vertices).
     ClipPolygon polygon;
     polygon.count = 3;
     ClipVertex* v = polygon.vertices;
-    for (int i = 0; i < 3; ++i) v[i] = *in[i];
+    if (vertices.clip_written) {
+      const ClipVertex* in[3] = {&vertices.clip[i0], &vertices.clip[i1], &vertices.clip[i2]};
+      for (int i = 0; i < 3; ++i) v[i] = *in[i];
+    } else {
+      const std::uint32_t corner[3] = {i0, i1, i2};
+      transform_corners(draw, kernels, pass_input, corner, v);
+    }
     const bool fill_normal = fills_face_normal(draw);
     const DrawPipeline::FaceFn face = face_hook(draw);
     if (fill_normal || face) {

@@ -18,5 +18,8 @@ void draw_with_pipeline(Renderer& renderer, const std::shared_ptr<const Mesh>& m
 
 // The renderer's Frame::max_triangle_region_bytes (tests: the big-frame setup on small frames).
 void set_max_triangle_region_bytes(Renderer& renderer, std::size_t bytes);
+// The renderer's Frame::max_clip_vertex_bytes (tests: corners computed in primitive assembly on
+// small meshes).
+void set_max_clip_vertex_bytes(Renderer& renderer, std::size_t bytes);
 
 }  // namespace facet::pipeline

@@ -19,8 +19,8 @@ namespace {
 constexpr int kWidth = 240, kHeight = 180;
 
 // Spheres of tiny, middling and large triangles, drawn far to near and near to far, crossing
-// each other, with `pipe`; the depth image.
-std::vector<float> depths(const pipeline::DrawPipeline& pipe, int samples, int tile_size) {
+// each other, with `pipe` (none: nothing drawn).
+Framebuffer render(const pipeline::DrawPipeline* pipe, int samples, int tile_size) {
   RenderSettings settings;
   settings.msaa = samples;
   settings.tile_size = tile_size;
@@ -34,32 +34,40 @@ std::vector<float> depths(const pipeline::DrawPipeline& pipe, int samples, int t
   const auto at = [](float x, float y, float z, float scale) {
     return glm::scale(glm::translate(glm::mat4(1.0f), {x, y, z}), glm::vec3(scale));
   };
-  pipeline::draw_with_pipeline(renderer, coarse, material, at(0.0f, 0.0f, -9.0f, 3.0f), pipe);
-  pipeline::draw_with_pipeline(renderer, fine, material, at(-1.0f, 0.3f, -4.0f, 1.0f), pipe);
-  pipeline::draw_with_pipeline(renderer, middling, material, at(-0.2f, 0.0f, -4.5f, 1.2f), pipe);
-  pipeline::draw_with_pipeline(renderer, coarse, material, at(1.5f, -0.5f, -3.5f, 0.8f), pipe);
-  pipeline::draw_with_pipeline(renderer, fine, material, at(1.0f, 0.8f, -12.0f, 2.5f), pipe);
+  if (pipe != nullptr) {
+    const std::pair<const Mesh*, glm::mat4> draws[] = {{&coarse, at(0.0f, 0.0f, -9.0f, 3.0f)},
+                                                       {&fine, at(-1.0f, 0.3f, -4.0f, 1.0f)},
+                                                       {&middling, at(-0.2f, 0.0f, -4.5f, 1.2f)},
+                                                       {&coarse, at(1.5f, -0.5f, -3.5f, 0.8f)},
+                                                       {&fine, at(1.0f, 0.8f, -12.0f, 2.5f)}};
+    for (const auto& [mesh, transform] : draws) {
+      pipeline::draw_with_pipeline(renderer, *mesh, material, transform, *pipe);
+    }
+  }
   Framebuffer target(kWidth, kHeight);
   renderer.finish(target);
-  return target.depth();
+  return target;
 }
 
 TEST(DepthOnly, WritesTheDepthsTheShadedPathWrites) {
   const auto depth_only = pipeline::make_pipeline<shading::DepthOnlyShading>();
   const auto shaded = pipeline::make_pipeline<shading::ConstantColorUnlitShading>();
   for (const int tile_size : {16, 64}) {
-    const std::vector<float> expected = depths(shaded, 1, tile_size);
+    const std::vector<float> expected = render(&shaded, 1, tile_size).depth();
     int drawn = 0;
     for (const float z : expected) drawn += z < 1.0f;
     ASSERT_GT(drawn, kWidth * kHeight / 4);  // the spheres are there
-    EXPECT_EQ(depths(depth_only, 1, tile_size), expected) << "tiles of " << tile_size;
+    const Framebuffer depth_alone = render(&depth_only, 1, tile_size);
+    EXPECT_EQ(depth_alone.depth(), expected) << "tiles of " << tile_size;
+    // And it took its own path: no color was written, where the shaded path writes white.
+    EXPECT_EQ(depth_alone.rgba8(), render(nullptr, 1, tile_size).rgba8());
   }
 }
 
 TEST(DepthOnly, MultisampledTilesShadeItAndKeepTheSameDepths) {
   const auto depth_only = pipeline::make_pipeline<shading::DepthOnlyShading>();
   const auto shaded = pipeline::make_pipeline<shading::ConstantColorUnlitShading>();
-  EXPECT_EQ(depths(depth_only, 4, 64), depths(shaded, 4, 64));
+  EXPECT_EQ(render(&depth_only, 4, 64).depth(), render(&shaded, 4, 64).depth());
 }
 
 }  // namespace

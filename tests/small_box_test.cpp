@@ -104,6 +104,44 @@ TEST(SmallBoxes, FindExactlyThePixelsTheEdgeFunctionsCover) {
   EXPECT_GT(clamped, 500);
 }
 
+// The depth-only form of the search (write_box_depths, for the shadow passes' casters) writes
+// each pixel find_box_pixels would find its depth, evaluate()'s, and leaves every other entry
+// of the buffer as it was (the lanes past the box, the rows' padding), on every target; over the
+// box shapes the depth-only raster hands it: up to kMaxWaitingBox pixels, one row or column too.
+TEST(SmallBoxes, DepthOnlySearchWritesTheDepthsOfThePixelsItFinds) {
+  std::mt19937 rng(20261203);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  int tried = 0, written = 0;
+  for (std::int64_t target : simd_targets()) {
+    ForcedTarget forced(target);
+    const pipeline::RasterKernels kernels = pipeline::raster_kernels(chosen_simd_target());
+    for (int n = 0; n < 2000; ++n) {
+      const float size = n % 2 == 0 ? 12.0f : 12000.0f;
+      float cx, cy;
+      SetupTriangle t;
+      if (!random_triangle(rng, size, cx, cy, t)) continue;
+      std::uniform_int_distribution<int> side(1, 16);
+      int width = side(rng), height = std::min(side(rng), 56 / width);
+      if (n % 7 == 0) width = 56, height = 1;
+      if (n % 7 == 1) width = 1, height = 56;
+      const int x0 = static_cast<int>(cx) - width / 2, y0 = static_cast<int>(cy) - height / 2;
+      const int stride = 64;
+      std::vector<float> depth(static_cast<std::size_t>(height) * stride + pipeline::kDepthSlack);
+      for (float& d : depth) d = unit(rng) < 0.2f ? 0.0f : 1.0f;
+      const std::vector<Found> pixels = expected(t, x0, y0, width, height, depth, stride);
+      std::vector<float> want = depth;
+      for (const Found& f : pixels) want[(f.y - y0) * stride + (f.x - x0)] = f.z;
+      const int count = kernels.write_box_depths(t, x0, y0, width, height, depth.data(), stride);
+      ASSERT_EQ(depth, want) << hwy::TargetName(target) << ", triangle " << n;
+      ASSERT_EQ(count, static_cast<int>(pixels.size())) << hwy::TargetName(target);
+      ++tried;
+      written += count > 0;
+    }
+  }
+  EXPECT_GT(tried, 2000);
+  EXPECT_GT(written, tried / 4);
+}
+
 // The raster loops call the kernels through pointers fetched per tile (RasterKernels): each
 // forced target gets its own, so the image tests that force every target run every target's
 // kernels.

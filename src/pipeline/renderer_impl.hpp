@@ -42,7 +42,8 @@ struct TileBuffers {
   std::vector<glm::vec4> color;
   std::vector<float> depth;
   std::vector<float> block_max_depth;  // one per 8x8 block (raster/raster.hpp)
-  // MSAA (TileContext): color and depth hold a plane per sample; one entry per pixel here.
+  // MSAA (TileContext): depth holds a plane per sample, color each pixel's sample 0 then the
+  // others' samples pixel by pixel (sample_colors); one entry per pixel here.
   std::vector<std::uint8_t> split;
   std::vector<std::uint16_t> sample_mask;
 };

@@ -69,11 +69,10 @@ struct UnlitShading : BatchForm<BatchModel::unlit>, SurfaceVertexBatch<kUnlitVar
 };
 
 // Unlit for a draw whose color is the material's alone (no vertex colors:
-// pipeline/record/pipeline_table.cpp decides), and the shadow passes' depth: the texture
-// coordinate is its only varying, and the color is the material's exactly, not an interpolated
-// constant that may be off in the last bit. Its vertices go through the batch form (copies),
-// so a draw inside the guard band keeps no clip-space vertices (80 bytes a vertex, in every
-// shadow pass).
+// pipeline/record/pipeline_table.cpp decides): the texture coordinate is its only varying, and
+// the color is the material's exactly, not an interpolated constant that may be off in the
+// last bit. Its vertices go through the batch form (copies), so a draw inside the guard band
+// keeps no clip-space vertices (80 bytes a vertex).
 struct ConstantColorUnlitShading : BatchForm<BatchModel::constant_unlit> {
   static constexpr int kVaryings = 2;
   static constexpr int kNormalSlot = -1;

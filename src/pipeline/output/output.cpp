@@ -75,7 +75,7 @@ void fill_background(TileContext& tile, const Background& background) {
             tile.color + static_cast<std::ptrdiff_t>(y) * tile.stride);
   }
   if (tile.samples == 1) return;
-  // The other samples of pixels whose samples differ (plane 0 is done above): the environment
+  // The other samples of pixels whose samples differ (sample 0 is done above): the environment
   // seen through the pixel centre (the row kernel for that one pixel), into those still at the
   // clear depth.
   const float clear = kClearDepth;

@@ -123,16 +123,16 @@ void InterpolatePixels(const SetupTriangle& t, const Plane* planes, int varyings
   }
 }
 
-// The depth buffer, written by the depth-writing search only.
+// The depth buffer's element: written by the depth-writing search only.
 template <bool kWritesDepth>
-using DepthRows = std::conditional_t<kWritesDepth, float, const float>;
+using DepthElement = std::conditional_t<kWritesDepth, float, const float>;
 
 // FindBoxPixels' rows, vectors of DF's lanes at a time; e_first: the edges at the box's first
 // pixel, as FindBoxPixels says. kWritesDepth (WriteBoxDepths): the pixels found take their
 // depths, and their positions are not stored.
 template <bool kWritesDepth, class DF>
 HWY_INLINE int FindBoxRows(DF df, const SetupTriangle& t, const std::int32_t e_first[3], int x0,
-                           int y0, int width, int height, DepthRows<kWritesDepth>* depth,
+                           int y0, int width, int height, DepthElement<kWritesDepth>* depth,
                            int depth_stride, bool depth_test, std::int16_t* xs, std::int16_t* ys) {
   const hn::RebindToSigned<DF> di;
   const hn::Rebind<std::int16_t, DF> d16;
@@ -140,6 +140,11 @@ HWY_INLINE int FindBoxRows(DF df, const SetupTriangle& t, const std::int32_t e_f
   alignas(64) static constexpr std::int32_t kLanes[16] = {0, 1, 2,  3,  4,  5,  6,  7,
                                                           8, 9, 10, 11, 12, 13, 14, 15};
   const auto half = hn::Set(df, 0.5f);
+  // In locals: the depth-writing form's stores may alias the triangle, which the compiler would
+  // then read again after each.
+  const Plane z_plane = t.z;
+  const float ref_y = t.ref_y;
+  const std::int32_t row_step[3] = {t.b[0], t.b[1], t.b[2]};
   int count = 0;
   // A box row at a time (a vector holds it but for boxes wider than a vector, which split into
   // vectors of columns).
@@ -157,12 +162,12 @@ HWY_INLINE int FindBoxRows(DF df, const SetupTriangle& t, const std::int32_t e_f
     for (int row = 0; row < height; ++row) {
       auto edges = hn::Zero(di);
       for (int i = 0; i < 3; ++i) edges = hn::Or(edges, hn::Add(hn::Set(di, e[i]), along_row[i]));
-      for (int i = 0; i < 3; ++i) e[i] += t.b[i];
+      for (int i = 0; i < 3; ++i) e[i] += row_step[i];
       // No branches on the masks: whether a row of a small triangle's box is covered, and
       // passes the depth test, is as good as random to the branch predictor.
       auto pass = hn::RebindMask(df, hn::AndNot(hn::Lt(edges, hn::Zero(di)), in_box));
       const int y = y0 + row;
-      const float z_row = evaluate_row(t.z, t.ref_y, static_cast<float>(y) + 0.5f);
+      const float z_row = evaluate_row(z_plane, ref_y, static_cast<float>(y) + 0.5f);
       const auto z = hn::Add(hn::Set(df, z_row), z_along_row);
       auto* depth_row = depth + static_cast<std::ptrdiff_t>(row) * depth_stride + x;
       if (depth_test) pass = hn::And(pass, hn::Lt(z, hn::LoadU(df, depth_row)));  // NaN fails
@@ -199,7 +204,7 @@ void BoxEdges(const SetupTriangle& t, int x0, int y0, std::int32_t e_first[3]) {
 // sixteen for wider ones.
 template <bool kWritesDepth>
 int FindBoxRowsOfWidth(const SetupTriangle& t, int x0, int y0, int width, int height,
-                       DepthRows<kWritesDepth>* depth, int depth_stride, bool depth_test,
+                       DepthElement<kWritesDepth>* depth, int depth_stride, bool depth_test,
                        std::int16_t* xs, std::int16_t* ys) {
   std::int32_t e_first[3];
   BoxEdges(t, x0, y0, e_first);
@@ -381,10 +386,8 @@ void WriteSampleColors(const SampleColorWrite& to, const float (*colors)[4], con
       float* at = to.color + pixel * 4 + channel;
       float* rest = to.others + pixel * others * 4 + channel;  // sample s at rest + (s - 1) * 4
       auto value = hn::LoadU(d, colors[n] + channel);
-      if (to.opaque) {
-        const auto alpha = hn::RebindMask(d, hn::Eq(hn::Iota(di, channel), hn::Set(di, 3)));
-        value = hn::IfThenElse(alpha, one, value);
-      }
+      const auto alpha = hn::RebindMask(d, hn::Eq(hn::Iota(di, channel), hn::Set(di, 3)));
+      value = hn::IfThenElse(alpha, one, value);
       const auto first = hn::LoadU(d, at);
       hn::StoreU(hn::IfThenElse(covered(0), value, first), d, at);
       for (int s = 1; s <= others; ++s) {

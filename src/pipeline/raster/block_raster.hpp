@@ -87,9 +87,10 @@ struct SampleBoxSearch {
 };
 
 // Waiting pixels' colors written to the samples found for them (small_triangles.hpp's
-// write_waiting, opaque draws): pixel n, at frame pixel (x[n], y[n]), takes colors[n] at the
-// samples of masks[n]; a pixel that was not split gives its other samples its old color, and
-// is split afterwards unless every sample took the new one (TileContext::split).
+// write_waiting; opaque surfaces, so alpha is written as 1): pixel n, at frame pixel (x[n],
+// y[n]), takes colors[n] at the samples of masks[n]; a pixel that was not split gives its other
+// samples its old color, and is split afterwards unless every sample took the new one
+// (TileContext::split).
 struct SampleColorWrite {
   float* color;         // the tile's colors (sample 0), RGBA floats (TileContext::color)
   float* others;        // samples 1 ... samples - 1 (TileContext::sample_colors)
@@ -97,7 +98,6 @@ struct SampleColorWrite {
   int stride;           // pixels per tile row
   int x0, y0;           // the tile's first frame pixel
   int samples;
-  bool opaque;  // alpha written as 1 (opaque surfaces), else as shaded (data outputs)
 };
 
 // The raster's SIMD kernels (block_raster.cpp, compiled for every target Highway supports) for

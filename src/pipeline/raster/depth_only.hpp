@@ -12,7 +12,8 @@
 namespace facet::pipeline {
 
 // Rasterizes triangle t into the one-sample tile's depth buffer: the covered pixels in front of
-// it take t's depth.
+// it take t's depth. They count as the tile's pixels shaded (FrameStats::pixels_shaded: the
+// pixels a pass wrote).
 void raster_depth_only(TileContext& tile, const SetupTriangle& t);
 
 }  // namespace facet::pipeline

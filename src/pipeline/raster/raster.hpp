@@ -60,7 +60,8 @@ inline std::uint64_t block_pixels_mask(int width, int height) {
 
 // Rasterizes one triangle into the tile; a template over the shading model and the alpha
 // mode so that the per-pixel loop is specialised once per draw state (record/pipeline_table.cpp
-// builds the table). Small triangles of draws whose pixels may wait join the tile's waiting pixels
+// builds the table). Depth-only draws in one-sample tiles take raster_depth_only
+// (depth_only.hpp). Small triangles of draws whose pixels may wait join the tile's waiting pixels
 // (small_triangles.hpp); other small triangles, after what waits is written, take
 // raster_small_triangle; the others, likewise after it, are walked in 8x8 blocks:
 //   1. blocks every edge keeps out are skipped, and edges that cover a block are not tested;
@@ -76,6 +77,8 @@ inline std::uint64_t block_pixels_mask(int width, int height) {
 template <class Shading, AlphaMode kAlpha = AlphaMode::opaque>
 void raster_triangle(TileContext& tile, const SetupTriangle& t) {
   if constexpr (depth_only<Shading>()) {
+    static_assert(kAlpha == AlphaMode::opaque && depth_tested<Shading>(),
+                  "depth alone is written by opaque, depth-tested draws");
     if (tile.samples == 1) {
       raster_depth_only(tile, t);
       return;

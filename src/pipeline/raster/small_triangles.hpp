@@ -161,15 +161,15 @@ void write_waiting(TileContext& tile) {
   } else {
     // Their samples' depths are in the tile already (find_small_samples): the colors follow,
     // in the same order.
-    static_assert(SampleWriter<Shading, kAlpha, false>::kReplaces, "waiting draws are opaque");
+    static_assert(SampleWriter<Shading, kAlpha, false>::kReplaces && !writes_data<Shading>(),
+                  "waiting draws are opaque surfaces");
     const SampleColorWrite to{reinterpret_cast<float*>(tile.color),
                               reinterpret_cast<float*>(tile.sample_colors),
                               tile.split,
                               tile.stride,
                               tile.x0,
                               tile.y0,
-                              tile.samples,
-                              !writes_data<Shading>()};
+                              tile.samples};
     tile.kernels.write_sample_colors(to, colors, pixels.x, pixels.y, waiting.masks, pixels.count);
     tile.pixels_shaded += pixels.count;
   }

@@ -111,36 +111,34 @@ void tone_map(const TileContext& tile, const Resolve& resolve, std::ptrdiff_t fi
 
 // The MSAA resolve of one tile row: each pixel's samples averaged in linear light (in sample
 // order, then scaled: the same sum on every path), or its one color where they are alike.
-// Tone mapped, each sample is mapped before the average: a row with split pixels has all its
-// samples mapped.
+// Tone mapped, each sample is mapped before the average: a split pixel's other samples (next to
+// each other) in one call.
 void average_samples(const TileContext& tile, const Resolve& resolve, std::ptrdiff_t first,
                      int count, glm::vec4* out) {
-  const AverageSamplesRowKernel average = tile.frame->kernels->average_samples_row;
   const std::uint8_t* split = tile.split + first;
   const int others = tile.samples - 1;
   const glm::vec4* row_others = tile.sample_colors + first * others;
   if (resolve.tone_mapping == ToneMapping::none) {
-    average(tile.color + first, row_others, tile.samples, split, count, out);
+    tile.frame->kernels->average_samples_row(tile.color + first, row_others, tile.samples, split,
+                                             count, out);
     return;
   }
   tone_map(tile, resolve, first, count, out);
-  if (std::all_of(split, split + count, [](std::uint8_t differ) { return differ == 0; })) return;
-  // The other samples in their order, with their depths in the same order (nothing drawn at a
-  // sample keeps the clear color unmapped).
-  alignas(64) float depth[(kMaxSamples - 1) * kMaxTileSize];
-  alignas(64) glm::vec4 mapped[(kMaxSamples - 1) * kMaxTileSize];
-  const float* mapped_depth = nullptr;
-  if (!resolve.maps_background) {
-    for (int x = 0; x < count; ++x) {
-      for (int s = 1; s <= others; ++s) {
-        depth[x * others + s - 1] = tile.depth[s * tile.sample_plane + first + x];
-      }
-    }
-    mapped_depth = depth;
+  const float inverse = 1.0f / static_cast<float>(tile.samples);
+  for (int x = 0; x < count; ++x) {
+    if (!split[x]) continue;
+    // The samples' depths in the same order (nothing drawn at a sample keeps the clear color
+    // unmapped).
+    float depth[kMaxSamples - 1];
+    for (int s = 1; s <= others; ++s) depth[s - 1] = tile.depth[s * tile.sample_plane + first + x];
+    glm::vec4 mapped[kMaxSamples - 1];
+    tile.frame->kernels->tone_map_row(resolve.tone_mapping, row_others + x * others,
+                                      resolve.maps_background ? nullptr : depth, kClearDepth,
+                                      others, resolve.scale, mapped);
+    glm::vec4 sum = out[x];
+    for (int s = 0; s < others; ++s) sum += mapped[s];
+    out[x] = sum * inverse;
   }
-  tile.frame->kernels->tone_map_row(resolve.tone_mapping, row_others, mapped_depth, kClearDepth,
-                                    count * others, resolve.scale, mapped);
-  average(out, mapped, tile.samples, split, count, out);
 }
 
 }  // namespace

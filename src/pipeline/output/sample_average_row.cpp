@@ -7,6 +7,9 @@
 #include <hwy/foreach_target.h>  // must come before highway.h
 #include <hwy/highway.h>
 
+#include <algorithm>
+#include <cstring>
+
 HWY_BEFORE_NAMESPACE();
 namespace facet::pipeline::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
@@ -17,16 +20,29 @@ void AverageSamplesRow(const glm::vec4* colors, const glm::vec4* others, int sam
   const hn::RebindToSigned<decltype(d)> di;
   const int lanes = static_cast<int>(hn::Lanes(d));
   const auto inverse = hn::Set(d, 1.0f / static_cast<float>(samples));
-  for (int x = 0; x < count; ++x) {
-    const auto differ = hn::RebindMask(d, hn::Ne(hn::Set(di, split[x]), hn::Zero(di)));
-    const float* rest = &others[static_cast<std::ptrdiff_t>(x) * (samples - 1)].x;
-    for (int channel = 0; channel < 4; channel += lanes) {
-      const auto alike = hn::LoadU(d, &colors[x].x + channel);
-      auto sum = alike;
-      for (int s = 1; s < samples; ++s) {
-        sum = hn::Add(sum, hn::LoadU(d, rest + (s - 1) * 4 + channel));
+  constexpr int kGroup = 8;
+  for (int x = 0; x < count;) {
+    // Eight pixels none of which is split are copied: most of a frame of large triangles.
+    std::uint64_t any_split = 1;
+    if (x + kGroup <= count) std::memcpy(&any_split, split + x, kGroup);
+    if (any_split == 0) {
+      if (out != colors) std::memcpy(out + x, colors + x, kGroup * sizeof(glm::vec4));
+      x += kGroup;
+      continue;
+    }
+    // Otherwise selects rather than branches: along small triangles' edges, which pixels are
+    // split is as good as random.
+    for (const int end = std::min(x + kGroup, count); x < end; ++x) {
+      const auto differ = hn::RebindMask(d, hn::Ne(hn::Set(di, split[x]), hn::Zero(di)));
+      const float* rest = &others[static_cast<std::ptrdiff_t>(x) * (samples - 1)].x;
+      for (int channel = 0; channel < 4; channel += lanes) {
+        const auto alike = hn::LoadU(d, &colors[x].x + channel);
+        auto sum = alike;
+        for (int s = 1; s < samples; ++s) {
+          sum = hn::Add(sum, hn::LoadU(d, rest + (s - 1) * 4 + channel));
+        }
+        hn::StoreU(hn::IfThenElse(differ, hn::Mul(sum, inverse), alike), d, &out[x].x + channel);
       }
-      hn::StoreU(hn::IfThenElse(differ, hn::Mul(sum, inverse), alike), d, &out[x].x + channel);
     }
   }
 }

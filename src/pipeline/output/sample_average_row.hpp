@@ -1,8 +1,9 @@
 // Stage: output, the MSAA resolve's average (sample_average_row.cpp, compiled for every target
 // Highway supports): a tile row's pixels whose samples differ become the mean of their samples,
-// in linear light (or tone mapped, each sample before the average: output.cpp). Along a
-// model's silhouette and its small triangles' edges, which pixels differ is as good as random
-// to the branch predictor: the kernel selects rather than branches.
+// in linear light (frames without tone mapping; tone mapped, output.cpp maps each sample
+// first). Along a model's silhouette and its small triangles' edges, which pixels differ is as
+// good as random to the branch predictor: the kernel selects rather than branches, but for runs
+// of pixels none of which differs, which it copies.
 #pragma once
 
 #include <cstddef>

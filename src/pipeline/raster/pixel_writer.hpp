@@ -1,7 +1,7 @@
-// Stage: raster + shade, the part every raster path shares: the tile being rendered
-// (TileContext, written by raster.hpp's loops, resolved by output.cpp), covered pixels packed
-// for shading (PackedPixels), and PixelWriter, which shades them with the draw's model (a batch
-// at a time with SIMD where the model allows) and writes them with the draw's blending.
+// Stage: raster + shade, the part every raster path shares: covered pixels packed for shading
+// (PackedPixels), and PixelWriter, which shades them with the draw's model (a batch at a time
+// with SIMD where the model allows) and writes them into the tile (tile_context.hpp) with the
+// draw's blending (sample_writer.hpp).
 #pragma once
 
 #include <algorithm>
@@ -18,6 +18,8 @@
 #include "pipeline/frame.hpp"
 #include "pipeline/raster/block_raster.hpp"
 #include "pipeline/raster/model_traits.hpp"
+#include "pipeline/raster/sample_writer.hpp"
+#include "pipeline/raster/tile_context.hpp"
 #include "pipeline/setup/fixed_point.hpp"
 #include "pipeline/setup/sample_positions.hpp"
 #include "shading/fragment.hpp"
@@ -26,87 +28,6 @@
 #include "shading/texel_batch.hpp"
 
 namespace facet::pipeline {
-
-// Largest tile edge the renderer accepts (RenderSettings::tile_size).
-inline constexpr int kMaxTileSize = 128;
-inline constexpr int kMaxTileBlocks = (kMaxTileSize / kBlockSize) * (kMaxTileSize / kBlockSize);
-
-struct WaitingPixels;
-
-// One tile being rendered: owned by one task for the whole frame, so nothing here is shared.
-struct TileContext {
-  const Frame* frame = nullptr;
-  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // pixel rectangle [x0, x1) x [y0, y1)
-  int stride = 0;                      // pixels per row of the tile buffers
-  glm::vec4* color = nullptr;          // linear RGBA
-  float* depth = nullptr;              // kDepthSlack more floats readable after the last row's
-  // Per 8x8 block (row-major, blocks_x per row): no depth in the block is larger. Starts at the
-  // clear depth; lowered when a triangle writes a whole block (raster_triangle).
-  float* block_max_depth = nullptr;
-  int blocks_x = 0;
-  // Per block, the index of the first triangle that can change it, counted from the first
-  // bin entry drawn (occlusion.hpp's first_visible_entries_per_block), or null: every one can.
-  // `entry` is the index of the triangle being drawn, counted the same way.
-  const std::uint32_t* block_starts = nullptr;
-  std::uint32_t entry = 0;
-  std::uint64_t pixels_shaded = 0;
-  // Pixels of small triangles waiting to be shaded together (WaitingPixels): the tile task's
-  // own (render_tile.cpp sets it before the first triangle).
-  WaitingPixels* waiting = nullptr;
-  RasterKernels kernels{};  // the frame's (pipeline/kernels.hpp), set with the tile
-  // MSAA (raster/msaa.hpp): sample s of pixel i has depth[s * sample_plane + i] (planes: the
-  // searches test a box row of one sample at a time) and color sample_color(tile, i, s): sample
-  // 0's is color[i], the one the one-sample paths use, and the others' follow one another, those
-  // of pixel i from sample_colors[i * (samples - 1)] (a split pixel's samples are written and
-  // averaged together). While split[i] is 0, every sample of pixel i has color[i]'s color (the
-  // others' are stale): a write that covers all samples costs one color, and only edge pixels
-  // hold several.
-  int samples = 1;
-  std::ptrdiff_t sample_plane = 0;
-  glm::vec4* sample_colors = nullptr;
-  std::uint8_t* split = nullptr;
-  // Per pixel, the samples the triangle being drawn covers there that pass the depth test
-  // (msaa.hpp sets it before shading the pixel); and that triangle's depth at each sample
-  // minus its depth at the pixel centre.
-  std::uint16_t* sample_mask = nullptr;
-  float sample_z[kMaxSamples] = {};
-};
-
-// Where frame pixel (x, y) is in the tile's buffers (plane 0).
-inline std::ptrdiff_t tile_index(const TileContext& tile, int x, int y) {
-  return static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride + (x - tile.x0);
-}
-
-// MSAA: the color of sample s of tile pixel i (TileContext::sample_colors).
-inline glm::vec4& sample_color(const TileContext& tile, std::ptrdiff_t i, int s) {
-  return s == 0 ? tile.color[i] : tile.sample_colors[i * (tile.samples - 1) + (s - 1)];
-}
-
-// Alpha to coverage for cut-out (alpha-mask) draws under MSAA: the samples a pixel of this alpha
-// keeps. Alpha is mapped so that the cutoff keeps half of them, 1 all and 0 none (linearly on
-// each side: the cut-out's edge is where a one-sample render puts it, softened across the
-// samples), and that many samples are kept, the first ones of the pattern. A fixed subset, not a
-// dither: the image stays the same for every tile and thread.
-inline unsigned alpha_to_coverage(float alpha, float cutoff, int samples) {
-  float kept;
-  if (!(alpha == alpha)) return 0u;  // NaN: discarded, as the one-sample test does
-  if (alpha >= cutoff) {
-    kept = cutoff >= 1.0f ? 1.0f : 0.5f + 0.5f * (alpha - cutoff) / (1.0f - cutoff);
-  } else {
-    kept = cutoff <= 0.0f ? 0.0f : 0.5f * alpha / cutoff;
-  }
-  const float count = std::clamp(kept, 0.0f, 1.0f) * static_cast<float>(samples) + 0.5f;
-  const int n = static_cast<int>(count);  // round half up, 0 .. samples
-  return n >= 32 ? ~0u : (1u << n) - 1u;
-}
-
-// MSAA: gives each sample of pixel i its own copy of the pixel's color, before a write that
-// leaves the samples different.
-inline void split_pixel(TileContext& tile, std::ptrdiff_t i) {
-  if (tile.split[i]) return;
-  for (int s = 1; s < tile.samples; ++s) sample_color(tile, i, s) = tile.color[i];
-  tile.split[i] = 1;
-}
 
 // Covered pixels that passed the depth test, packed, waiting to be shaded: those of a triangle's
 // partly covered blocks (raster.hpp), a small triangle's or several small triangles' of one draw
@@ -165,92 +86,6 @@ inline float distance_to_edges(const SetupTriangle& t, const EdgeScales& scales,
   }
   return static_cast<float>(distance);
 }
-
-// Writes one shaded color into the tile with the draw's blending.
-template <class Shading, AlphaMode kAlpha>
-void blend_into(glm::vec4& out, const glm::vec4& color) {
-  if constexpr (additive<Shading>()) {
-    out += color;
-  } else if constexpr (kAlpha == AlphaMode::blend) {  // "over", straight alpha
-    out = glm::vec4(glm::vec3(color) * color.a + glm::vec3(out) * (1.0f - color.a),
-                    color.a + out.a * (1.0f - color.a));
-  } else if constexpr (kAlpha == AlphaMode::additive) {
-    out += glm::vec4(glm::vec3(color) * color.a, 0.0f);
-  } else {
-    // Channel by channel: GCC assembles `color` in memory from 4- and 8-byte pieces, and a
-    // 16-byte copy reloading them would stall on store forwarding. Opaque and cut-out draws
-    // cover what they draw: alpha 1, whatever a texture's alpha channel says (glTF ignores an
-    // opaque material's alpha; a PNG with alpha must not see through an opaque surface).
-    out.r = color.r;
-    out.g = color.g;
-    out.b = color.b;
-    out.a = writes_data<Shading>() ? color.a : 1.0f;
-  }
-}
-
-// MSAA: writes a pixel's color, shaded once, to the samples that its triangle covers and that
-// pass the depth test, with the draw's blending, and with kDepthWrite each sample's own depth
-// (PixelWriter::store_samples; waiting pixels' colors go through
-// RasterKernels::write_sample_colors, the search having written their depths). The tile's
-// buffers are read once, into the writer: a store to split, a byte, may alias TileContext's
-// fields, which would otherwise be read again after each.
-template <class Shading, AlphaMode kAlpha, bool kDepthWrite>
-struct SampleWriter {
-  // Whether a written color replaces the samples' (opaque and cut-out draws).
-  static constexpr bool kReplaces =
-      !additive<Shading>() && (kAlpha == AlphaMode::opaque || kAlpha == AlphaMode::mask);
-
-  // depth_steps: the triangle's depth at each sample minus its depth at the pixel centre.
-  SampleWriter(const TileContext& tile, const float* depth_steps)
-      : color(tile.color),
-        others(tile.sample_colors),
-        depth(tile.depth),
-        split(tile.split),
-        plane(tile.sample_plane),
-        samples(tile.samples),
-        all((1u << tile.samples) - 1),
-        sample_z(depth_steps) {}
-
-  // The samples of `mask` (bits, not 0) of tile pixel `pixel` take `c` and depth z at the centre.
-  void write(std::ptrdiff_t pixel, unsigned mask, float z, const glm::vec4& c) const {
-    glm::vec4* first = color + pixel;                  // sample 0
-    glm::vec4* rest = others + pixel * (samples - 1);  // rest[s - 1]: sample s >= 1
-    auto at = [&](int s) -> glm::vec4& { return s == 0 ? *first : rest[s - 1]; };
-    float* depth_at = depth + pixel;
-    if (mask == all) {
-      if (kReplaces || !split[pixel]) {
-        blend_into<Shading, kAlpha>(*first, c);  // every sample alike (again)
-        split[pixel] = 0;
-      } else {
-        for (int s = 0; s < samples; ++s) blend_into<Shading, kAlpha>(at(s), c);
-      }
-      if constexpr (kDepthWrite) {
-        for (int s = 0; s < samples; ++s) depth_at[s * plane] = z + sample_z[s];
-      }
-      return;
-    }
-    if (!split[pixel]) {  // each sample its own copy of the pixel's color (split_pixel)
-      // A replacing color overwrites the covered ones next; sample 0 is the copied one.
-      const unsigned copied = (kReplaces ? all & ~mask : all) & ~1u;
-      for (unsigned m = copied; m != 0; m &= m - 1) rest[std::countr_zero(m) - 1] = *first;
-      split[pixel] = 1;
-    }
-    for (unsigned m = mask; m != 0; m &= m - 1) {
-      const int s = std::countr_zero(m);
-      blend_into<Shading, kAlpha>(at(s), c);
-      if constexpr (kDepthWrite) depth_at[s * plane] = z + sample_z[s];
-    }
-  }
-
-  glm::vec4* color;
-  glm::vec4* others;  // TileContext::sample_colors
-  float* depth;
-  std::uint8_t* split;
-  std::ptrdiff_t plane;
-  int samples;
-  unsigned all;  // every sample's bit
-  const float* sample_z;
-};
 
 // Shades one covered pixel that passed the depth test and writes it with the draw's blending:
 // the part of the raster loop that is the same for every path (raster.hpp, small_triangles.hpp).

@@ -19,6 +19,8 @@
 //   kDisplayReferred  optional (inherit DisplayReferred): the colors are display values
 //                   (below); frames of such draws alone skip the sRGB encode
 //                   (pipeline/renderer.cpp)
+//   kDepthOnly      optional: the draw writes depth alone (the shadow passes' casters), which
+//                   one-sample tiles do without shading (pipeline/raster/depth_only.hpp)
 //   kBaseColorTexcoord  optional: the slot of the texture coordinate the base color map (and
 //                   the other maps) are read at; the raster loop then samples the maps for a
 //                   batch of pixels at once (SIMD), for fragment() through base_color_texel()

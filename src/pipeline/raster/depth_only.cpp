@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <bit>
 #include <cstring>
+#include <optional>
 
 #include "pipeline/raster/block_raster.hpp"
 #include "pipeline/raster/pixel_writer.hpp"
@@ -13,9 +14,24 @@
 namespace facet::pipeline {
 namespace {
 
-// The blocks of the box [x0, x1] x [y0, y1] (frame pixels, inclusive), as raster_triangle walks
-// them: each block the triangle may cover in front of what is drawn there goes through
-// cover_block, and its covered pixels take their depths.
+// The block's covered pixels (block.mask) take their depths (block.z), into the tile's depth
+// from the block's first pixel `depth` on.
+void write_depths(const TileContext& tile, const BlockFragments& block, float* depth) {
+  if (block.mask == ~std::uint64_t{0}) {
+    for (int row = 0; row < kBlockSize; ++row) {
+      std::memcpy(depth + static_cast<std::ptrdiff_t>(row) * tile.stride,
+                  block.z + row * kBlockSize, sizeof(float) * kBlockSize);
+    }
+    return;
+  }
+  for (std::uint64_t m = block.mask; m != 0; m &= m - 1) {
+    const int i = std::countr_zero(m);
+    depth[static_cast<std::ptrdiff_t>(i / kBlockSize) * tile.stride + i % kBlockSize] = block.z[i];
+  }
+}
+
+// The blocks of the box [x0, x1] x [y0, y1] (frame pixels, inclusive) the triangle may change
+// (for_each_block): their covered pixels take cover_block's depths. Returns how many.
 int write_block_depths(TileContext& tile, const SetupTriangle& t, int x0, int y0, int x1, int y1,
                        const DepthRange& box_depth) {
   BlockInput in;
@@ -27,57 +43,15 @@ int write_block_depths(TileContext& tile, const SetupTriangle& t, int x0, int y0
   in.interpolate = false;
   alignas(64) BlockFragments block;
   int written = 0;
-  const int bx0 = (x0 - tile.x0) / kBlockSize, bx1 = (x1 - tile.x0) / kBlockSize;
-  const int by0 = (y0 - tile.y0) / kBlockSize, by1 = (y1 - tile.y0) / kBlockSize;
-  for (int by = by0; by <= by1; ++by) {
-    const int block_y = tile.y0 + by * kBlockSize;
-    in.y_begin = std::max(y0, block_y) - block_y;
-    in.y_end = std::min(y1, block_y + kBlockSize - 1) - block_y + 1;
-    for (int bx = bx0; bx <= bx1; ++bx) {
-      const int block_x = tile.x0 + bx * kBlockSize;
-      if (tile.block_starts != nullptr && tile.entry < tile.block_starts[by * tile.blocks_x + bx])
-        continue;  // a later triangle hides this one here
-      in.x_begin = std::max(x0, block_x) - block_x;
-      in.x_end = std::min(x1, block_x + kBlockSize - 1) - block_x + 1;
-      if (classify_edges(t, block_x, block_y, in) == EdgeCover::outside) continue;
-      in.px0 = static_cast<float>(block_x) + 0.5f;
-      in.py0 = static_cast<float>(block_y) + 0.5f;
-      float& max_depth = tile.block_max_depth[by * tile.blocks_x + bx];
-      if (!(box_depth.farthest < max_depth)) {
-        const float nearest = depth_range_over(t, block_x + in.x_begin, block_y + in.y_begin,
-                                               block_x + in.x_end - 1, block_y + in.y_end - 1)
-                                  .nearest;
-        if (nearest >= max_depth) continue;  // every pixel fails "less"; NaN goes on
-      }
-      float* depth = tile.depth + static_cast<std::ptrdiff_t>(block_y - tile.y0) * tile.stride +
-                     (block_x - tile.x0);
-      in.depth = depth;
-      tile.kernels.cover_block(in, block);
-      if (block.mask == 0) continue;
-      if (block.mask == ~std::uint64_t{0}) {
-        for (int row = 0; row < kBlockSize; ++row) {
-          std::memcpy(depth + static_cast<std::ptrdiff_t>(row) * tile.stride,
-                      block.z + row * kBlockSize, sizeof(float) * kBlockSize);
-        }
-      } else {
-        for (std::uint64_t m = block.mask; m != 0; m &= m - 1) {
-          const int i = std::countr_zero(m);
-          depth[static_cast<std::ptrdiff_t>(i / kBlockSize) * tile.stride + i % kBlockSize] =
-              block.z[i];
-        }
-      }
-      written += std::popcount(block.mask);
-      // Every pixel of the block written: the triangle's farthest over it bounds the block.
-      const int width = std::min(kBlockSize, tile.x1 - block_x);
-      const int height = std::min(kBlockSize, tile.y1 - block_y);
-      if (block.mask == block_pixels_mask(width, height)) {
-        const float farthest =
-            depth_range_over(t, block_x, block_y, block_x + width - 1, block_y + height - 1)
-                .farthest;
-        max_depth = std::min(max_depth, farthest);
-      }
-    }
-  }
+  for_each_block<true>(tile, t, x0, y0, x1, y1, box_depth, in,
+                       [&](int block_x, int block_y, EdgeCover, float& max_depth) {
+                         tile.kernels.cover_block(in, block);
+                         if (block.mask == 0) return;
+                         write_depths(tile, block, tile.depth + tile_index(tile, block_x, block_y));
+                         const int count = std::popcount(block.mask);
+                         written += count;
+                         lower_block_bound(tile, t, block_x, block_y, block.mask, count, max_depth);
+                       });
   return written;
 }
 
@@ -100,16 +74,8 @@ void raster_depth_only(TileContext& tile, const SetupTriangle& t) {
     }
     return;
   }
-  // A triangle behind everything drawn over its box is done without an edge test.
-  float farthest_drawn = 0.0f;
-  for (int by = (y0 - tile.y0) / kBlockSize; by <= (y1 - tile.y0) / kBlockSize; ++by) {
-    for (int bx = (x0 - tile.x0) / kBlockSize; bx <= (x1 - tile.x0) / kBlockSize; ++bx) {
-      farthest_drawn = std::max(farthest_drawn, tile.block_max_depth[by * tile.blocks_x + bx]);
-    }
-  }
-  const DepthRange box_depth = depth_range_over(t, x0, y0, x1, y1);
-  if (box_depth.nearest >= farthest_drawn) return;  // NaN goes on
-  tile.pixels_shaded += write_block_depths(tile, t, x0, y0, x1, y1, box_depth);
+  const std::optional<DepthRange> box_depth = depths_in_front(tile, t, x0, y0, x1, y1);
+  if (box_depth) tile.pixels_shaded += write_block_depths(tile, t, x0, y0, x1, y1, *box_depth);
 }
 
 }  // namespace facet::pipeline

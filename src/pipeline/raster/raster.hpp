@@ -8,6 +8,7 @@
 #include <bit>
 #include <cstdint>
 #include <limits>
+#include <optional>
 
 #include "pipeline/frame.hpp"
 #include "pipeline/raster/block_raster.hpp"
@@ -58,6 +59,80 @@ inline std::uint64_t block_pixels_mask(int width, int height) {
   return mask;
 }
 
+// The triangle's depths over the box [x0, x1] x [y0, y1] of the tile (depth_range_over), or none
+// when it lies behind everything drawn there (the blocks' depth bounds, tile.block_max_depth): a
+// far layer drawn after a near one is done without a block's edge tests. NaN goes on.
+inline std::optional<DepthRange> depths_in_front(const TileContext& tile, const SetupTriangle& t,
+                                                 int x0, int y0, int x1, int y1) {
+  float farthest_drawn = 0.0f;
+  for (int by = (y0 - tile.y0) / kBlockSize; by <= (y1 - tile.y0) / kBlockSize; ++by) {
+    for (int bx = (x0 - tile.x0) / kBlockSize; bx <= (x1 - tile.x0) / kBlockSize; ++bx) {
+      farthest_drawn = std::max(farthest_drawn, tile.block_max_depth[by * tile.blocks_x + bx]);
+    }
+  }
+  const DepthRange box_depth = depth_range_over(t, x0, y0, x1, y1);
+  if (box_depth.nearest >= farthest_drawn) return std::nullopt;
+  return box_depth;
+}
+
+// The 8x8 blocks of the box [x0, x1] x [y0, y1] (frame pixels, inclusive) that triangle t may
+// change: not hidden by a later triangle (tile.block_starts), not outside an edge, and, with
+// kDepthTest, not wholly behind the block's depth bound. For each, `in` holds the block's
+// pixel ranges, edge values (classify_edges), first pixel centre and depths, and
+// visit(block_x, block_y, edges, max_depth) runs, max_depth being the block's bound.
+// box_depth: t's depths over the box (depths_in_front; NaN farthest: each block is tested).
+template <bool kDepthTest, class Visit>
+void for_each_block(TileContext& tile, const SetupTriangle& t, int x0, int y0, int x1, int y1,
+                    const DepthRange& box_depth, BlockInput& in, Visit&& visit) {
+  const int bx0 = (x0 - tile.x0) / kBlockSize, bx1 = (x1 - tile.x0) / kBlockSize;
+  const int by0 = (y0 - tile.y0) / kBlockSize, by1 = (y1 - tile.y0) / kBlockSize;
+  for (int by = by0; by <= by1; ++by) {
+    const int block_y = tile.y0 + by * kBlockSize;
+    in.y_begin = std::max(y0, block_y) - block_y;
+    in.y_end = std::min(y1, block_y + kBlockSize - 1) - block_y + 1;
+    for (int bx = bx0; bx <= bx1; ++bx) {
+      const int block_x = tile.x0 + bx * kBlockSize;
+      if (tile.block_starts != nullptr && tile.entry < tile.block_starts[by * tile.blocks_x + bx])
+        continue;  // a later triangle hides this one here
+      in.x_begin = std::max(x0, block_x) - block_x;
+      in.x_end = std::min(x1, block_x + kBlockSize - 1) - block_x + 1;
+      const EdgeCover edges = classify_edges(t, block_x, block_y, in);
+      if (edges == EdgeCover::outside) continue;
+      in.px0 = static_cast<float>(block_x) + 0.5f;
+      in.py0 = static_cast<float>(block_y) + 0.5f;
+      float& max_depth = tile.block_max_depth[by * tile.blocks_x + bx];
+      // A block's depths lie within the box's (exact bounds, depth_range_over), so where the
+      // triangle's farthest is in front of the block's bound, the test below cannot reject the
+      // block and is not computed: every block of a first layer.
+      if (kDepthTest && !(box_depth.farthest < max_depth)) {
+        const float nearest = depth_range_over(t, block_x + in.x_begin, block_y + in.y_begin,
+                                               block_x + in.x_end - 1, block_y + in.y_end - 1)
+                                  .nearest;
+        if (nearest >= max_depth) continue;  // every pixel fails "less"; NaN goes on
+      }
+      in.depth = tile.depth + static_cast<std::ptrdiff_t>(block_y - tile.y0) * tile.stride +
+                 (block_x - tile.x0);
+      visit(block_x, block_y, edges, max_depth);
+    }
+  }
+}
+
+// After a triangle wrote `written` of the block's covered pixels `mask`: where it wrote every
+// pixel of the block (in the tile), their largest depth bounds the block. That is the
+// triangle's farthest over the block's corners (depth_range_over: the same arithmetic as
+// cover_block's depths, monotonic in x and y), four evaluations instead of a search of all 64.
+inline void lower_block_bound(const TileContext& tile, const SetupTriangle& t, int block_x,
+                              int block_y, std::uint64_t mask, int written, float& max_depth) {
+  const int width = std::min(kBlockSize, tile.x1 - block_x);
+  const int height = std::min(kBlockSize, tile.y1 - block_y);
+  const std::uint64_t all = block_pixels_mask(width, height);
+  if (mask == all && written == std::popcount(all)) {
+    const float farthest =
+        depth_range_over(t, block_x, block_y, block_x + width - 1, block_y + height - 1).farthest;
+    max_depth = std::min(max_depth, farthest);
+  }
+}
+
 // Rasterizes one triangle into the tile; a template over the shading model and the alpha
 // mode so that the per-pixel loop is specialised once per draw state (record/pipeline_table.cpp
 // builds the table). Depth-only draws in one-sample tiles take raster_depth_only
@@ -106,21 +181,12 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
     return;
   }
   constexpr bool kDepthTest = depth_tested<Shading>();
-  const int bx0 = (x0 - tile.x0) / kBlockSize, bx1 = (x1 - tile.x0) / kBlockSize;
-  const int by0 = (y0 - tile.y0) / kBlockSize, by1 = (y1 - tile.y0) / kBlockSize;
   // The triangle's depths over its whole box (NaN: unknown, each block is tested).
   DepthRange box_depth{0.0f, std::numeric_limits<float>::quiet_NaN()};
   if constexpr (kDepthTest) {
-    // The blocks' depth bounds over the whole box first: a triangle behind everything drawn
-    // there (a far layer drawn after a near one) is done without a block's edge tests.
-    float farthest_drawn = 0.0f;
-    for (int by = by0; by <= by1; ++by) {
-      for (int bx = bx0; bx <= bx1; ++bx) {
-        farthest_drawn = std::max(farthest_drawn, tile.block_max_depth[by * tile.blocks_x + bx]);
-      }
-    }
-    box_depth = depth_range_over(t, x0, y0, x1, y1);
-    if (box_depth.nearest >= farthest_drawn) return;  // NaN goes on
+    const std::optional<DepthRange> in_front = depths_in_front(tile, t, x0, y0, x1, y1);
+    if (!in_front) return;
+    box_depth = *in_front;
   }
   // Writes that leave every pixel of a block at a depth we know: the block's bound can drop.
   constexpr bool kTightensBound =
@@ -139,101 +205,63 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
   constexpr int kPendingPixels = PackedPixels::kCapacity - 7;
   static_assert(PackedPixels::kCapacity + kBlockPixels <= std::size(PackedPixels{}.x),
                 "a block's positions are packed after a whole batch before they move up");
-  for (int by = by0; by <= by1; ++by) {
-    const int block_y = tile.y0 + by * kBlockSize;
-    in.y_begin = std::max(y0, block_y) - block_y;
-    in.y_end = std::min(y1, block_y + kBlockSize - 1) - block_y + 1;
-    for (int bx = bx0; bx <= bx1; ++bx) {
-      const int block_x = tile.x0 + bx * kBlockSize;
-      if (tile.block_starts != nullptr && tile.entry < tile.block_starts[by * tile.blocks_x + bx])
-        continue;  // a later triangle hides this one here
-      in.x_begin = std::max(x0, block_x) - block_x;
-      in.x_end = std::min(x1, block_x + kBlockSize - 1) - block_x + 1;
-      const EdgeCover edges = classify_edges(t, block_x, block_y, in);
-      if (edges == EdgeCover::outside) continue;
-      in.px0 = static_cast<float>(block_x) + 0.5f;
-      in.py0 = static_cast<float>(block_y) + 0.5f;
-      float& max_depth = tile.block_max_depth[by * tile.blocks_x + bx];
-      // A block's depths lie within the box's (exact bounds, depth_range_over), so where the
-      // triangle's farthest is in front of the block's bound, the test below cannot reject the
-      // block and is not computed: every block of a first layer.
-      if (kDepthTest && !(box_depth.farthest < max_depth)) {
-        const float nearest = depth_range_over(t, block_x + in.x_begin, block_y + in.y_begin,
-                                               block_x + in.x_end - 1, block_y + in.y_end - 1)
-                                  .nearest;
-        if (nearest >= max_depth) continue;  // every pixel fails "less"; NaN goes on
+  const auto draw_block = [&](int block_x, int block_y, EdgeCover edges, float& max_depth) {
+    // Batches take a block's pixels packed, and interpolate_pixels gives the packed ones their w
+    // and varyings (the same values), cheaper than copying those one by one from cover_block's
+    // rows. cover_block interpolates only where the block is likely whole, for shade_full_block:
+    // every edge inside, and the triangle in front of the block's depth bound (exactly whole then
+    // in a first layer).
+    const bool all_inside = edges == EdgeCover::inside && in.x_begin == 0 &&
+                            in.x_end == kBlockSize && in.y_begin == 0 && in.y_end == kBlockSize;
+    const bool likely_whole = all_inside && (!kDepthTest || box_depth.farthest < max_depth);
+    in.interpolate = !out.batches() || (likely_whole && out.full_blocks());
+    tile.kernels.cover_block(in, block);
+    if (block.mask == 0) return;
+    int written = 0;
+    if (block.mask == ~std::uint64_t{0} && out.full_blocks() && in.interpolate) {
+      out.shade_full_block(block, block_x, block_y);
+      written = kBlockPixels;
+    } else if (out.batches()) {
+      // The block's pixels join those of the triangle's earlier blocks, shaded together when
+      // the next block's might not fit (or at the end): one batch of many pixels instead of a
+      // batch per block, a few pixels each along the edges. The triangle covers each pixel
+      // once, so the order of its writes does not matter.
+      int first = pixels.count, end = first;
+      for (std::uint64_t m = block.mask; m != 0; m &= m - 1) {
+        const int i = std::countr_zero(m);
+        pixels.x[end] = static_cast<std::int16_t>(block_x + i % kBlockSize);
+        pixels.y[end] = static_cast<std::int16_t>(block_y + i / kBlockSize);
+        ++end;
       }
-      const std::ptrdiff_t block_offset =
-          static_cast<std::ptrdiff_t>(block_y - tile.y0) * tile.stride + (block_x - tile.x0);
-      in.depth = tile.depth + block_offset;
-      // Batches take a block's pixels packed, and interpolate_pixels gives the packed ones their w
-      // and varyings (the same values), cheaper than copying those one by one from cover_block's
-      // rows. cover_block interpolates only where the block is likely whole, for shade_full_block:
-      // every edge inside, and the triangle in front of the block's depth bound (exactly whole then
-      // in a first layer).
-      const bool all_inside = edges == EdgeCover::inside && in.x_begin == 0 &&
-                              in.x_end == kBlockSize && in.y_begin == 0 && in.y_end == kBlockSize;
-      const bool likely_whole = all_inside && (!kDepthTest || box_depth.farthest < max_depth);
-      in.interpolate = !out.batches() || (likely_whole && out.full_blocks());
-      tile.kernels.cover_block(in, block);
-      if (block.mask == 0) continue;
-      int written = 0;
-      if (block.mask == ~std::uint64_t{0} && out.full_blocks() && in.interpolate) {
-        out.shade_full_block(block, block_x, block_y);
-        written = kBlockPixels;
-      } else if (out.batches()) {
-        // The block's pixels join those of the triangle's earlier blocks, shaded together when
-        // the next block's might not fit (or at the end): one batch of many pixels instead of a
-        // batch per block, a few pixels each along the edges. The triangle covers each pixel
-        // once, so the order of its writes does not matter.
-        int first = pixels.count, end = first;
-        for (std::uint64_t m = block.mask; m != 0; m &= m - 1) {
-          const int i = std::countr_zero(m);
-          pixels.x[end] = static_cast<std::int16_t>(block_x + i % kBlockSize);
-          pixels.y[end] = static_cast<std::int16_t>(block_y + i / kBlockSize);
-          ++end;
-        }
-        const int covered = end - first;
-        if (end > kPendingPixels && first > 0) {  // shade those before, then move these up
-          std::int16_t x[kBlockPixels], y[kBlockPixels];
-          std::copy_n(pixels.x + first, covered, x);
-          std::copy_n(pixels.y + first, covered, y);
-          out.shade(pixels);
-          std::copy_n(x, covered, pixels.x);
-          std::copy_n(y, covered, pixels.y);
-          first = 0;
-        }
-        pixels.count = first + covered;
-        pixels.pad_positions();  // interpolate_pixels reads whole vectors of positions
-        tile.kernels.interpolate_pixels(t, out.fragment.planes, Shading::kVaryings, first, covered,
-                                        pixels.x, pixels.y, pixels.z, pixels.w, pixels.v);
-        // Opaque draws (the only ones whose bound tightens) write every pixel they shade.
-        written = covered;
-      } else if constexpr (!batch_shaded<Shading>()) {  // batch models always batch
-        for (std::uint64_t m = block.mask; m != 0; m &= m - 1) {
-          const int i = std::countr_zero(m);
-          out.fragment.w = block.w[i];
-          for (int k = 0; k < Shading::kVaryings; ++k) out.fragment.v[k] = block.v[k][i];
-          written += out.write(block_x + i % kBlockSize, block_y + i / kBlockSize, block.z[i]);
-        }
+      const int covered = end - first;
+      if (end > kPendingPixels && first > 0) {  // shade those before, then move these up
+        std::int16_t x[kBlockPixels], y[kBlockPixels];
+        std::copy_n(pixels.x + first, covered, x);
+        std::copy_n(pixels.y + first, covered, y);
+        out.shade(pixels);
+        std::copy_n(x, covered, pixels.x);
+        std::copy_n(y, covered, pixels.y);
+        first = 0;
       }
-      if constexpr (kTightensBound) {
-        // Every pixel of the block written by this triangle: their largest depth bounds it.
-        // That is the triangle's farthest over the block's corners (depth_range_over: the
-        // same arithmetic as cover_block's depths, monotonic in x and y), four evaluations
-        // instead of a search of all 64.
-        const int width = std::min(kBlockSize, tile.x1 - block_x);
-        const int height = std::min(kBlockSize, tile.y1 - block_y);
-        const std::uint64_t all = block_pixels_mask(width, height);
-        if (block.mask == all && written == std::popcount(all)) {
-          const float farthest =
-              depth_range_over(t, block_x, block_y, block_x + width - 1, block_y + height - 1)
-                  .farthest;
-          max_depth = std::min(max_depth, farthest);
-        }
+      pixels.count = first + covered;
+      pixels.pad_positions();  // interpolate_pixels reads whole vectors of positions
+      tile.kernels.interpolate_pixels(t, out.fragment.planes, Shading::kVaryings, first, covered,
+                                      pixels.x, pixels.y, pixels.z, pixels.w, pixels.v);
+      // Opaque draws (the only ones whose bound tightens) write every pixel they shade.
+      written = covered;
+    } else if constexpr (!batch_shaded<Shading>()) {  // batch models always batch
+      for (std::uint64_t m = block.mask; m != 0; m &= m - 1) {
+        const int i = std::countr_zero(m);
+        out.fragment.w = block.w[i];
+        for (int k = 0; k < Shading::kVaryings; ++k) out.fragment.v[k] = block.v[k][i];
+        written += out.write(block_x + i % kBlockSize, block_y + i / kBlockSize, block.z[i]);
       }
     }
-  }
+    if constexpr (kTightensBound) {
+      lower_block_bound(tile, t, block_x, block_y, block.mask, written, max_depth);
+    }
+  };
+  for_each_block<kDepthTest>(tile, t, x0, y0, x1, y1, box_depth, in, draw_block);
   if (pixels.count > 0) out.shade(pixels);
   tile.pixels_shaded += out.shaded;
 }

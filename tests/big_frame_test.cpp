@@ -24,15 +24,14 @@ struct Rendered {
   FrameStats stats;
 };
 
-// The teapot world from its own camera, its near plane through the target when `cut`, at 4
-// samples a pixel, with or without triangle regions.
-Rendered render_teapot(bool cut, bool regions) {
-  const Scene scene = make_builtin_scene("teapot");
+// `scene` from its own camera, its near plane through the target when `cut`, at 4 samples a
+// pixel, by a renderer whose limits `limit` may lower.
+Rendered render(const Scene& scene, bool cut, void (*limit)(Renderer&)) {
   RenderSettings settings;
   settings.threads = 2;
   settings.msaa = 4;
   Renderer renderer(settings);
-  if (!regions) pipeline::set_max_triangle_region_bytes(renderer, 0);
+  if (limit != nullptr) limit(renderer);
   Rendered out;
   Camera camera = scene.camera;
   if (cut) camera.near_plane = glm::length(camera.target - camera.eye);
@@ -43,25 +42,33 @@ Rendered render_teapot(bool cut, bool regions) {
   return out;
 }
 
+// Both frames drew the same triangles into the same image and depth.
+void expect_same_frame(const Rendered& got, const Rendered& want) {
+  EXPECT_GT(want.stats.drawn, 1000u);
+  EXPECT_EQ(got.stats.drawn, want.stats.drawn);
+  EXPECT_EQ(got.stats.culled, want.stats.culled);
+  EXPECT_EQ(got.stats.clipped, want.stats.clipped);
+  EXPECT_EQ(got.framebuffer.rgba8(), want.framebuffer.rgba8());
+  EXPECT_EQ(got.framebuffer.depth(), want.framebuffer.depth());
+}
+
+void without_regions(Renderer& renderer) { pipeline::set_max_triangle_region_bytes(renderer, 0); }
+void without_clip_vertices(Renderer& renderer) { pipeline::set_max_clip_vertex_bytes(renderer, 0); }
+
 TEST(BigFrames, TrianglesSetUpWithoutRegionsDrawTheSameImage) {
+  const Scene teapot = make_builtin_scene("teapot");
   // Seen whole, and cut in two by the near plane (clipping's extra triangles overflow in both
   // paths).
   for (bool cut : {false, true}) {
-    const Rendered regions = render_teapot(cut, true);
-    const Rendered overflow = render_teapot(cut, false);
-    EXPECT_GT(regions.stats.drawn, 1000u);
-    EXPECT_EQ(overflow.stats.drawn, regions.stats.drawn);
-    EXPECT_EQ(overflow.stats.culled, regions.stats.culled);
-    EXPECT_EQ(overflow.stats.clipped, regions.stats.clipped);
-    EXPECT_EQ(overflow.framebuffer.rgba8(), regions.framebuffer.rgba8());
-    EXPECT_EQ(overflow.framebuffer.depth(), regions.framebuffer.depth());
+    SCOPED_TRACE(cut);
+    expect_same_frame(render(teapot, cut, without_regions), render(teapot, cut, nullptr));
   }
-  EXPECT_GT(render_teapot(true, true).stats.clipped, 0u);
+  EXPECT_GT(render(teapot, true, nullptr).stats.clipped, 0u);
 }
 
 // The teapot world without vertex normals (face normals filled in: a hook), every material
-// shaded `shading`, near plane cut as render_teapot's, with or without clip-space vertices.
-Rendered render_teapot_faceted(ShadingModel shading, bool cut, bool clip_vertices) {
+// shaded `shading`.
+Scene faceted_teapot(ShadingModel shading) {
   Scene scene = make_builtin_scene("teapot");
   for (std::shared_ptr<const Mesh>& mesh : scene.meshes) {
     Mesh faceted = *mesh;
@@ -70,19 +77,7 @@ Rendered render_teapot_faceted(ShadingModel shading, bool cut, bool clip_vertice
     mesh = std::make_shared<const Mesh>(std::move(faceted));
   }
   for (Material& material : scene.materials) material.shading = shading;
-  RenderSettings settings;
-  settings.threads = 2;
-  settings.msaa = 4;
-  Renderer renderer(settings);
-  if (!clip_vertices) pipeline::set_max_clip_vertex_bytes(renderer, 0);
-  Rendered out;
-  Camera camera = scene.camera;
-  if (cut) camera.near_plane = glm::length(camera.target - camera.eye);
-  renderer.begin_frame(camera, scene.lighting);
-  draw_scene(renderer, scene);
-  renderer.finish(out.framebuffer);
-  out.stats = renderer.stats();
-  return out;
+  return scene;
 }
 
 TEST(BigFrames, CornersComputedInAssemblyDrawTheSameImage) {
@@ -90,17 +85,11 @@ TEST(BigFrames, CornersComputedInAssemblyDrawTheSameImage) {
   // normals in a per-face hook), seen whole and clipped by the near plane.
   for (ShadingModel shading :
        {ShadingModel::blinn_phong, ShadingModel::flat, ShadingModel::gouraud, ShadingModel::pbr}) {
+    const Scene scene = faceted_teapot(shading);
     for (bool cut : {false, true}) {
       SCOPED_TRACE(static_cast<int>(shading));
       SCOPED_TRACE(cut);
-      const Rendered kept = render_teapot_faceted(shading, cut, true);
-      const Rendered computed = render_teapot_faceted(shading, cut, false);
-      EXPECT_GT(kept.stats.drawn, 1000u);
-      EXPECT_EQ(computed.stats.drawn, kept.stats.drawn);
-      EXPECT_EQ(computed.stats.culled, kept.stats.culled);
-      EXPECT_EQ(computed.stats.clipped, kept.stats.clipped);
-      EXPECT_EQ(computed.framebuffer.rgba8(), kept.framebuffer.rgba8());
-      EXPECT_EQ(computed.framebuffer.depth(), kept.framebuffer.depth());
+      expect_same_frame(render(scene, cut, without_clip_vertices), render(scene, cut, nullptr));
     }
   }
 }

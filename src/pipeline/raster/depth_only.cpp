@@ -14,44 +14,30 @@
 namespace facet::pipeline {
 namespace {
 
-// The block's covered pixels (block.mask) take their depths (block.z), into the tile's depth
-// from the block's first pixel `depth` on.
-void write_depths(const TileContext& tile, const BlockFragments& block, float* depth) {
-  if (block.mask == ~std::uint64_t{0}) {
-    for (int row = 0; row < kBlockSize; ++row) {
-      std::memcpy(depth + static_cast<std::ptrdiff_t>(row) * tile.stride,
-                  block.z + row * kBlockSize, sizeof(float) * kBlockSize);
-    }
-    return;
-  }
-  for (std::uint64_t m = block.mask; m != 0; m &= m - 1) {
-    const int i = std::countr_zero(m);
-    depth[static_cast<std::ptrdiff_t>(i / kBlockSize) * tile.stride + i % kBlockSize] = block.z[i];
-  }
-}
-
 // The blocks of the box [x0, x1] x [y0, y1] (frame pixels, inclusive) the triangle may change
-// (for_each_block): their covered pixels take cover_block's depths. Returns how many.
+// (for_each_block): the part of each within the box is searched as a small box is, its covered
+// pixels in front taking their depths at once (write_box_depths). Returns how many.
 int write_block_depths(TileContext& tile, const SetupTriangle& t, int x0, int y0, int x1, int y1,
                        const DepthRange& box_depth) {
   BlockInput in;
   in.triangle = &t;
-  in.varying_planes = nullptr;
-  in.varyings = 0;
-  in.depth_test = true;
-  in.depth_stride = tile.stride;
-  in.interpolate = false;
-  alignas(64) BlockFragments block;
   int written = 0;
-  for_each_block<true>(tile, t, x0, y0, x1, y1, box_depth, in,
-                       [&](int block_x, int block_y, EdgeCover, float& max_depth) {
-                         tile.kernels.cover_block(in, block);
-                         if (block.mask == 0) return;
-                         write_depths(tile, block, tile.depth + tile_index(tile, block_x, block_y));
-                         const int count = std::popcount(block.mask);
-                         written += count;
-                         lower_block_bound(tile, t, block_x, block_y, block.mask, count, max_depth);
-                       });
+  for_each_block<true>(
+      tile, t, x0, y0, x1, y1, box_depth, in,
+      [&](int block_x, int block_y, EdgeCover, float& max_depth) {
+        const int left = block_x + in.x_begin, top = block_y + in.y_begin;
+        const int width = in.x_end - in.x_begin, height = in.y_end - in.y_begin;
+        const int count = tile.kernels.write_box_depths(
+            t, left, top, width, height, tile.depth + tile_index(tile, left, top), tile.stride);
+        written += count;
+        // Every pixel of the block written: the whole block's mask, as lower_block_bound takes it.
+        const int block_width = std::min(kBlockSize, tile.x1 - block_x);
+        const int block_height = std::min(kBlockSize, tile.y1 - block_y);
+        if (count == block_width * block_height) {
+          lower_block_bound(tile, t, block_x, block_y, block_pixels_mask(block_width, block_height),
+                            count, max_depth);
+        }
+      });
   return written;
 }
 

@@ -1,9 +1,9 @@
 // Stage: raster, for draws that write depth alone: the shadow passes' casters
 // (shading::DepthOnlyShading), whose color nothing reads. raster_triangle hands their triangles
-// here in one-sample tiles. No varyings, no shading and no color: a small triangle's box search
-// writes the depths it finds at once (write_box_depths), a larger triangle's blocks take
-// cover_block's depths. The depths are those the shaded paths write (the same arithmetic), in
-// the same order, so a depth map is the same bit for bit.
+// here in one-sample tiles. No varyings, no shading and no color: a small triangle's box, and
+// each block of a larger one's, is searched in SIMD rows that write the depths they find at once
+// (write_box_depths). The depths are those the shaded paths write (the same arithmetic), in the
+// same order, so a depth map is the same bit for bit.
 #pragma once
 
 #include "pipeline/frame.hpp"

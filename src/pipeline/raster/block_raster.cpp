@@ -400,6 +400,40 @@ void WriteSampleColors(const SampleColorWrite& to, const float (*colors)[4], con
   }
 }
 
+bool BlockSamplesInFront(const float* z, const float* sample_z, int samples, const float* depth,
+                         std::ptrdiff_t stride, std::ptrdiff_t plane) {
+  const FloatTag df;
+  const int lanes = static_cast<int>(hn::Lanes(df));
+  auto in_front = hn::Eq(hn::Zero(df), hn::Zero(df));  // every lane true
+  for (int s = 0; s < samples; ++s) {
+    const auto step = hn::Set(df, sample_z[s]);
+    const float* plane_depth = depth + s * plane;
+    for (int row = 0; row < kBlockSize; ++row) {
+      for (int x = 0; x < kBlockSize; x += lanes) {
+        const auto sample = hn::Add(hn::LoadU(df, z + row * kBlockSize + x), step);
+        in_front = hn::And(in_front, hn::Lt(sample, hn::LoadU(df, plane_depth + row * stride + x)));
+      }
+    }
+  }
+  return hn::AllTrue(df, in_front);
+}
+
+void WriteBlockSampleDepths(const float* z, const float* sample_z, int samples, float* depth,
+                            std::ptrdiff_t stride, std::ptrdiff_t plane) {
+  const FloatTag df;
+  const int lanes = static_cast<int>(hn::Lanes(df));
+  for (int s = 0; s < samples; ++s) {
+    const auto step = hn::Set(df, sample_z[s]);
+    float* plane_depth = depth + s * plane;
+    for (int row = 0; row < kBlockSize; ++row) {
+      for (int x = 0; x < kBlockSize; x += lanes) {
+        hn::StoreU(hn::Add(hn::LoadU(df, z + row * kBlockSize + x), step), df,
+                   plane_depth + row * stride + x);
+      }
+    }
+  }
+}
+
 }  // namespace facet::pipeline::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
 
@@ -414,15 +448,21 @@ HWY_EXPORT(WriteBoxDepths);
 HWY_EXPORT(FindBoxSamples);
 HWY_EXPORT(FindBoxSamplesWide);
 HWY_EXPORT(WriteSampleColors);
+HWY_EXPORT(BlockSamplesInFront);
+HWY_EXPORT(WriteBlockSampleDepths);
 
 const char* simd_target_name() { return HWY_DISPATCH_TABLE(TargetName)[chosen_simd_target()](); }
 
 RasterKernels raster_kernels(SimdTarget index) {
-  return {
-      HWY_DISPATCH_TABLE(CoverBlock)[index],       HWY_DISPATCH_TABLE(InterpolatePixels)[index],
-      HWY_DISPATCH_TABLE(FindBoxPixels)[index],    HWY_DISPATCH_TABLE(WriteBoxDepths)[index],
-      HWY_DISPATCH_TABLE(FindBoxSamples)[index],   HWY_DISPATCH_TABLE(FindBoxSamplesWide)[index],
-      HWY_DISPATCH_TABLE(WriteSampleColors)[index]};
+  return {HWY_DISPATCH_TABLE(CoverBlock)[index],
+          HWY_DISPATCH_TABLE(InterpolatePixels)[index],
+          HWY_DISPATCH_TABLE(FindBoxPixels)[index],
+          HWY_DISPATCH_TABLE(WriteBoxDepths)[index],
+          HWY_DISPATCH_TABLE(FindBoxSamples)[index],
+          HWY_DISPATCH_TABLE(FindBoxSamplesWide)[index],
+          HWY_DISPATCH_TABLE(WriteSampleColors)[index],
+          HWY_DISPATCH_TABLE(BlockSamplesInFront)[index],
+          HWY_DISPATCH_TABLE(WriteBlockSampleDepths)[index]};
 }
 
 }  // namespace facet::pipeline

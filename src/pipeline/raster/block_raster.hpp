@@ -157,6 +157,15 @@ struct RasterKernels {
   void (*write_sample_colors)(const SampleColorWrite& to, const float (*colors)[4],
                               const std::int16_t* x, const std::int16_t* y,
                               const std::uint16_t* masks, int count);
+  // Whether every sample of a whole 8x8 block of a triangle covering them all (msaa.hpp) is in
+  // front: each sample's depth, z at the pixel's centre (cover_block's, row by row) plus
+  // sample_z[s], less than the tile's there (`depth` points at the block's first pixel of
+  // sample plane 0, rows `stride` floats apart, planes `plane` apart; NaN fails).
+  bool (*block_samples_in_front)(const float* z, const float* sample_z, int samples,
+                                 const float* depth, std::ptrdiff_t stride, std::ptrdiff_t plane);
+  // Those samples take those depths.
+  void (*write_block_sample_depths)(const float* z, const float* sample_z, int samples,
+                                    float* depth, std::ptrdiff_t stride, std::ptrdiff_t plane);
 };
 RasterKernels raster_kernels(SimdTarget target);
 

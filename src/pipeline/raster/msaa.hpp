@@ -7,8 +7,8 @@
 // covers that pass the depth test (PixelWriter::store_samples). output.cpp averages the samples.
 //
 // Cost: blocks whose every sample the triangle covers, in front of every sample drawn there
-// (block_in_front), take the one-sample whole-block path (cover_block, shade_full_block) and
-// write one color a pixel; only their depths are per sample. Every other block, and the whole
+// (block_samples_in_front), take the one-sample whole-block path (cover_block, shade_full_block)
+// and write one color a pixel; only their depths are per sample. Every other block, and the whole
 // box of a small triangle, is searched for covered samples (SIMD across box rows,
 // find_box_samples): that is the work along edges. Small triangles of draws whose pixels may wait
 // join the tile's waiting pixels with their samples, whose depths the search writes at once
@@ -75,24 +75,6 @@ void shade_covered_samples(TileContext& tile, const SetupTriangle& t, const Samp
   tile.kernels.interpolate_pixels(t, out.fragment.planes, Shading::kVaryings, 0, pixels.count,
                                   pixels.x, pixels.y, pixels.z, pixels.w, pixels.v);
   out.shade(pixels);
-}
-
-// Whether every sample of the whole block at tile pixel `first` passes the depth test, the
-// block's depths at the centres being z (cover_block's) and the triangle's depth steps
-// tile.sample_z. The tile's depth bound for the block (block_max_depth) bounds its depths from
-// above only: pixels drawn since it was lowered may be nearer, so each sample is compared.
-inline bool block_in_front(const TileContext& tile, const float* z, std::ptrdiff_t first) {
-  bool in_front = true;
-  for (int s = 0; s < tile.samples; ++s) {
-    const float step = tile.sample_z[s];
-    for (int row = 0; row < kBlockSize; ++row) {
-      const float* depth = tile.depth + s * tile.sample_plane + first +
-                           static_cast<std::ptrdiff_t>(row) * tile.stride;
-      const float* row_z = z + row * kBlockSize;
-      for (int x = 0; x < kBlockSize; ++x) in_front &= row_z[x] + step < depth[x];  // NaN fails
-    }
-  }
-  return in_front;
 }
 
 // Rasterizes one triangle into a multisampled tile, 8x8 blocks at a time as raster_triangle;
@@ -164,23 +146,24 @@ void raster_triangle_msaa(TileContext& tile, const SetupTriangle& t) {
       const std::ptrdiff_t first =
           static_cast<std::ptrdiff_t>(block_y - tile.y0) * tile.stride + (block_x - tile.x0);
       // Whole blocks in front of the block's depth bound are likely in front of every sample.
+      // The bound limits the block's depths from above only (pixels drawn since it was lowered
+      // may be nearer), so each sample is still compared.
       if (whole_block && out.full_blocks() && (!kDepthTest || farthest < max_depth)) {
         whole.px0 = static_cast<float>(block_x) + 0.5f;
         whole.py0 = static_cast<float>(block_y) + 0.5f;
         tile.kernels.cover_block(whole, block);
-        if (kDepthTest && !block_in_front(tile, block.z, first)) {
+        if (kDepthTest &&
+            !tile.kernels.block_samples_in_front(block.z, tile.sample_z, samples,
+                                                 tile.depth + first, tile.stride, plane)) {
           shade_covered_samples(tile, t, steps, out, pixels, left, top, right, bottom);
           continue;
         }
-        out.shade_full_block(block, block_x, block_y);
+        out.shade_full_block(block, block_x, block_y);  // (which writes plane 0's depths as z)
+        tile.kernels.write_block_sample_depths(block.z, tile.sample_z, samples, tile.depth + first,
+                                               tile.stride, plane);
         for (int row = 0; row < kBlockSize; ++row) {
-          const std::ptrdiff_t pixel = first + static_cast<std::ptrdiff_t>(row) * tile.stride;
-          const float* z = block.z + row * kBlockSize;
-          for (int s = 0; s < samples; ++s) {
-            float* depth = tile.depth + s * plane + pixel;
-            for (int x = 0; x < kBlockSize; ++x) depth[x] = z[x] + tile.sample_z[s];
-          }
-          std::memset(tile.split + pixel, 0, kBlockSize);
+          std::memset(tile.split + first + static_cast<std::ptrdiff_t>(row) * tile.stride, 0,
+                      kBlockSize);
         }
         if constexpr (kTightensBound) max_depth = std::min(max_depth, farthest);
         continue;

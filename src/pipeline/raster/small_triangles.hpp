@@ -151,13 +151,23 @@ void write_waiting(TileContext& tile) {
   alignas(64) float colors[PackedPixels::kCapacity][4];
   out.shade_waiting(pixels, waiting.slopes, colors);
   if (tile.samples == 1) {
+    // PixelWriter::store for these draws (opaque, depth-writing, no overlay), with the tile's
+    // values in locals: through the tile, each would be read again after every store.
+    static_assert(decltype(out)::kWaits && decltype(out)::kDepthWrite);
+    float* const depth = tile.depth;
+    glm::vec4* const color = tile.color;
+    const std::ptrdiff_t stride = tile.stride;
+    const int x0 = tile.x0, y0 = tile.y0;
+    std::uint64_t written = 0;
     for (int n = 0; n < pixels.count; ++n) {
-      const int x = pixels.x[n], y = pixels.y[n];
-      const float* depth = tile.depth + tile_index(tile, x, y);
-      if (!(pixels.z[n] < *depth)) continue;  // a pixel before it is nearer
+      const std::ptrdiff_t pixel = (pixels.y[n] - y0) * stride + (pixels.x[n] - x0);
+      if (!(pixels.z[n] < depth[pixel])) continue;  // a pixel before it is nearer
       const float* c = colors[n];
-      out.store(x, y, pixels.z[n], glm::vec4(c[0], c[1], c[2], c[3]));
+      blend_into<Shading, kAlpha>(color[pixel], glm::vec4(c[0], c[1], c[2], c[3]));
+      depth[pixel] = pixels.z[n];
+      ++written;
     }
+    out.shaded += written;
   } else {
     // Their samples' depths are in the tile already (find_small_samples): the colors follow,
     // in the same order.

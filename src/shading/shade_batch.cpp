@@ -282,10 +282,15 @@ bool ShadeConstantUnlitAsRgba(const DrawUniforms& u, const ShadeInput& in, float
   alignas(16) const float factor[4] = {c.r, c.g, c.b, c.a};
   alignas(16) const float added[4] = {e.x, e.y, e.z, 0.0f};
   const auto base = hn::LoadDup128(d, factor), emission = hn::LoadDup128(d, added);
+  const hn::RebindToSigned<decltype(d)> di;
+  const auto alpha =  // lanes 3, 7, 11, ...
+      hn::RebindMask(d, hn::Eq(hn::And(hn::Iota(di, 0), hn::Set(di, 3)), hn::Set(di, 3)));
   const int padded = (in.count + 7) / 8 * 8;  // as the per-channel loop writes them
   for (int n = 0; n < padded; n += pixels) {
     const auto texel = hn::LoadU(d, in.base_texel[n]);
-    hn::StoreU(hn::Add(hn::Mul(base, texel), emission), d, *ColorAt(rgba, in.rgba_row_stride, n));
+    auto color = hn::Add(hn::Mul(base, texel), emission);
+    if (in.opaque) color = hn::IfThenElse(alpha, hn::Set(d, 1.0f), color);
+    hn::StoreU(color, d, *ColorAt(rgba, in.rgba_row_stride, n));
   }
   return true;
 }
@@ -375,6 +380,7 @@ void ShadeModel(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
       color[2] = hn::Add(light.z, emission.z);
       color[3] = albedo.c[3];
     }
+    if (in.opaque) color[3] = hn::Set(d, 1.0f);
     if (fogged) Fogged(*in.fog, u.frame->view_depth, in, j, color);
     StoreColors(color, ColorAt(rgba, in.rgba_row_stride, j));
   }

@@ -107,6 +107,9 @@ struct ShadeInput {
   // Where pixel n's color goes: rgba[(n / 8) * rgba_row_stride + n % 8]. 8 for a packed array;
   // a whole 8x8 block (count 64) may go straight into a tile's rows with the tile's stride.
   int rgba_row_stride = 8;
+  // Alpha written as 1 whatever the model computes: an opaque draw covers what it draws
+  // (pipeline::blend_into). Batch forms declaring kOpaqueAlpha honour it.
+  bool opaque = false;
   // Each MaterialMap's texel per pixel, where the material has the map and the model reads it
   // (maps_read); else null.
   const float (*map_texel[kMaterialMaps])[4] = {};

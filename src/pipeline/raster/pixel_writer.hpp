@@ -216,13 +216,14 @@ class PixelWriter {
       const std::ptrdiff_t first = index(block_x, block_y);
       shading::ShadeInput in{kBlockPixels, block.w, block.z, block.v, nullptr, &fog_};
       in.rgba_row_stride = tile_.stride;
+      in.opaque = !writes_data<Shading>();  // alpha 1, as blend_into writes it
       sample_maps(in, block.v, block.w);
       Shading::fragment_batch(uniforms_, in, reinterpret_cast<float(*)[4]>(&tile_.color[first]));
       for (int row = 0; row < kBlockSize; ++row) {
         const std::ptrdiff_t pixel = first + static_cast<std::ptrdiff_t>(row) * tile_.stride;
         std::memcpy(&tile_.depth[pixel], block.z + row * kBlockSize, sizeof(float) * kBlockSize);
-        if constexpr (!writes_data<Shading>()) {
-          for (int x = 0; x < kBlockSize; ++x) tile_.color[pixel + x].a = 1.0f;  // as blend_into
+        if constexpr (!writes_data<Shading>() && !batch_opaque_alpha<Shading>()) {
+          for (int x = 0; x < kBlockSize; ++x) tile_.color[pixel + x].a = 1.0f;
         }
       }
       shaded += kBlockPixels;

@@ -9,6 +9,7 @@
 #include "pipeline/geometry/cull_batch.hpp"
 #include "pipeline/geometry/vertex_pass.hpp"
 #include "pipeline/geometry/vertex_rows.hpp"
+#include "pipeline/output/fill_row.hpp"
 #include "pipeline/output/sample_average_row.hpp"
 #include "pipeline/output/sky_row.hpp"
 #include "pipeline/output/tone_map_row.hpp"
@@ -31,6 +32,8 @@ struct Kernels {
   shading::RoundUnorm8RowKernel round_unorm8_row = nullptr;
   ToneMapRowKernel tone_map_row = nullptr;
   AverageSamplesRowKernel average_samples_row = nullptr;
+  FillFloatRowKernel fill_float_row = nullptr;
+  FillColorRowKernel fill_color_row = nullptr;
   shading::ShadingKernels shading;
 };
 
@@ -47,6 +50,8 @@ inline Kernels kernels_for(SimdTarget target) {
           shading::round_unorm8_row_kernel(target),
           tone_map_row_kernel(target),
           average_samples_row_kernel(target),
+          fill_float_row_kernel(target),
+          fill_color_row_kernel(target),
           shading::shading_kernels(target)};
 }
 

@@ -41,25 +41,23 @@ glm::vec4 display_value_of(const Kernels& kernels, const glm::vec4& linear) {
 }
 
 void clear_tile(TileContext& tile, const Background& background, bool color_hidden) {
-  for (int y = 0; y < tile.y1 - tile.y0; ++y) {
-    if (!background.environment && !color_hidden && !background.depth_only) {
-      std::fill_n(tile.color + static_cast<std::ptrdiff_t>(y) * tile.stride, tile.x1 - tile.x0,
-                  background.clear_color);
+  const Kernels& kernels = *tile.frame->kernels;
+  const int width = tile.x1 - tile.x0, height = tile.y1 - tile.y0;
+  const bool clears_color = !background.environment && !color_hidden && !background.depth_only;
+  // Whole tiles' rows are contiguous: each plane is filled in one go.
+  const bool whole = width == tile.stride;
+  const int rows = whole ? 1 : height;
+  const std::ptrdiff_t row_length = whole ? static_cast<std::ptrdiff_t>(width) * height : width;
+  for (int y = 0; y < rows; ++y) {
+    const std::ptrdiff_t row = static_cast<std::ptrdiff_t>(y) * tile.stride;
+    if (clears_color) kernels.fill_color_row(tile.color + row, row_length, background.clear_color);
+    // every sample at the clear depth, each pixel's samples alike (MSAA)
+    for (int s = 0; s < tile.samples; ++s) {
+      kernels.fill_float_row(tile.depth + s * tile.sample_plane + row, row_length, kClearDepth);
     }
-    std::fill_n(tile.depth + static_cast<std::ptrdiff_t>(y) * tile.stride, tile.x1 - tile.x0,
-                kClearDepth);
   }
   std::fill_n(tile.block_max_depth, tile.blocks_x * tile.blocks_x, kClearDepth);
-  if (tile.samples > 1) {  // every sample at the clear depth, each pixel's samples alike
-    for (int s = 1; s < tile.samples; ++s) {
-      for (int y = 0; y < tile.y1 - tile.y0; ++y) {
-        std::fill_n(
-            tile.depth + s * tile.sample_plane + static_cast<std::ptrdiff_t>(y) * tile.stride,
-            tile.x1 - tile.x0, kClearDepth);
-      }
-    }
-    std::fill_n(tile.split, tile.sample_plane, std::uint8_t{0});
-  }
+  if (tile.samples > 1) std::fill_n(tile.split, tile.sample_plane, std::uint8_t{0});
 }
 
 void fill_background(TileContext& tile, const Background& background) {

@@ -2,12 +2,9 @@
 #include "pipeline/raster/depth_only.hpp"
 
 #include <algorithm>
-#include <bit>
-#include <cstring>
 #include <optional>
 
 #include "pipeline/raster/block_raster.hpp"
-#include "pipeline/raster/pixel_writer.hpp"
 #include "pipeline/raster/raster.hpp"
 #include "pipeline/raster/small_triangles.hpp"
 

@@ -5,10 +5,14 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <glm/gtc/matrix_transform.hpp>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "facet/error.hpp"
+#include "facet/image_io.hpp"
 #include "facet/renderer.hpp"
 #include "facet/scene.hpp"
 #include "facet/worlds.hpp"
@@ -151,7 +155,25 @@ TEST(RenderTexture, DepthOnlyTargetsKeepTheSameDepths) {
   EXPECT_EQ(depth_only.texture(), nullptr);
   EXPECT_EQ(depth_only.depth_texture()->level(0).r32f, both.depth_texture()->level(0).r32f);
   EXPECT_EQ(depth_only.depth_texture()->level(0).r32f, shapes_reference().depth());
+  EXPECT_FALSE(depth_only.framebuffer().has_color());  // no color image allocated either
   EXPECT_THROW(RenderTexture(4, 4, {.color = false}), Error);
+}
+
+// A framebuffer of depth alone: no color image, the clear depth, and one error from what would
+// read or write its color.
+TEST(RenderTexture, DepthOnlyFramebuffersRefuseColor) {
+  Framebuffer depth = Framebuffer::depth_only(kWidth, kHeight);
+  EXPECT_FALSE(depth.has_color());
+  EXPECT_TRUE(depth.rgba8().empty() && depth.rgba32f().empty());
+  EXPECT_EQ(depth.depth(), std::vector<float>(kWidth * kHeight, 1.0f));
+  EXPECT_TRUE(Framebuffer(4, 4).has_color());
+  EXPECT_TRUE(Framebuffer(4, 4, ColorFormat::rgba32f).has_color());
+  EXPECT_THROW(depth.pixel(0, 0), Error);
+  const std::string png = testing::TempDir() + "/depth_only.png";
+  EXPECT_THROW(write_image(depth, png), Error);
+  EXPECT_FALSE(std::filesystem::exists(png));  // nothing half-written
+  EXPECT_THROW(render_shapes_into(depth), Error);
+  EXPECT_THROW(Framebuffer::depth_only(0, 4), Error);
 }
 
 // A draw that samples the target it is rendered into, or an environment that is that target:

@@ -64,12 +64,19 @@ class Framebuffer {
   // Throws facet::Error if a size is outside [1, kMaxSize].
   Framebuffer(int width, int height, ColorFormat format = ColorFormat::rgba8_srgb,
               DepthImage depth = DepthImage::keep, const ExtraOutputs& extra = {});
+  // Window depth alone, no color image (rgba8() and rgba32f() empty, has_color() false): what
+  // depth-only passes draw into (the shadow maps; a RenderTexture whose options keep no color).
+  // Renderer::finish(Framebuffer&), pixel(), images written from it and overlays drawn onto it
+  // throw facet::Error. Throws facet::Error if a size is outside [1, kMaxSize].
+  static Framebuffer depth_only(int width, int height);
 
   int width() const { return width_; }
   int height() const { return height_; }
   ColorFormat format() const { return format_; }
+  bool has_color() const { return !rgba8_.empty() || !rgba32f_.empty(); }
 
-  // Row-major, top row first, 4 values per pixel. Only the one matching format() is non-empty.
+  // Row-major, top row first, 4 values per pixel. Only the one matching format() is non-empty
+  // (neither, for depth_only()).
   std::vector<std::uint8_t>& rgba8() { return rgba8_; }
   const std::vector<std::uint8_t>& rgba8() const { return rgba8_; }
   std::vector<float>& rgba32f() { return rgba32f_; }
@@ -100,7 +107,7 @@ class Framebuffer {
   const std::vector<float>& albedo() const { return albedo_; }
 
   // Linear color of one pixel, whatever the format (sRGB decoded). Throws facet::Error if
-  // (x, y) is outside the image.
+  // (x, y) is outside the image or there is no color image (depth_only()).
   glm::vec4 pixel(int x, int y) const;
   // Depth of one pixel. Throws facet::Error if (x, y) is outside the image or there is no
   // depth image (DepthImage::none).
@@ -117,6 +124,9 @@ class Framebuffer {
   std::vector<float> view_depth_, ray_distance_, normals_, barycentrics_, albedo_;
   std::vector<std::uint32_t> instance_ids_, triangle_ids_;
 
+  enum class ColorImage { keep, none };
+  Framebuffer(int width, int height, ColorFormat format, ColorImage color, DepthImage depth,
+              const ExtraOutputs& extra);
   // Index of pixel (x, y); throws facet::Error naming `what` if it is outside the image.
   std::size_t checked_index(int x, int y, const char* what) const;
 };

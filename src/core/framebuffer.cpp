@@ -10,13 +10,24 @@ namespace facet {
 
 Framebuffer::Framebuffer(int width, int height, ColorFormat format, DepthImage depth,
                          const ExtraOutputs& extra)
+    : Framebuffer(width, height, format, ColorImage::keep, depth, extra) {}
+
+Framebuffer Framebuffer::depth_only(int width, int height) {
+  return Framebuffer(width, height, ColorFormat::rgba8_srgb, ColorImage::none, DepthImage::keep,
+                     {});
+}
+
+Framebuffer::Framebuffer(int width, int height, ColorFormat format, ColorImage color,
+                         DepthImage depth, const ExtraOutputs& extra)
     : width_(width), height_(height), format_(format), extra_(extra) {
   if (width < 1 || height < 1 || width > kMaxSize || height > kMaxSize) {
     throw Error("framebuffer: size " + std::to_string(width) + "x" + std::to_string(height) +
                 " is outside 1x1 .. " + std::to_string(kMaxSize) + "x" + std::to_string(kMaxSize));
   }
   std::size_t pixels = static_cast<std::size_t>(width) * height;
-  if (format == ColorFormat::rgba8_srgb) {
+  if (color == ColorImage::none) {
+    // (no color image)
+  } else if (format == ColorFormat::rgba8_srgb) {
     rgba8_.assign(pixels * 4, 0);
   } else {
     rgba32f_.assign(pixels * 4, 0.0f);
@@ -42,6 +53,7 @@ std::size_t Framebuffer::checked_index(int x, int y, const char* what) const {
 
 glm::vec4 Framebuffer::pixel(int x, int y) const {
   const std::size_t i = checked_index(x, y, "pixel") * 4;
+  if (!has_color()) throw Error("framebuffer: pixel on a depth-only framebuffer (no color image)");
   if (format_ == ColorFormat::rgba32f) {
     return {rgba32f_[i], rgba32f_[i + 1], rgba32f_[i + 2], rgba32f_[i + 3]};
   }

@@ -32,6 +32,7 @@ std::string lower_extension(const std::string& path) {
 // The framebuffer as 8-bit sRGB RGBA rows: a float one encoded a row at a time by the encode
 // kernel (core/srgb_row.hpp), each row first copied into glm::vec4s, the kernel's input.
 std::vector<std::uint8_t> to_rgba8(const Framebuffer& fb) {
+  if (!fb.has_color()) throw Error("image: a depth-only framebuffer has no color image to write");
   if (fb.format() == ColorFormat::rgba8_srgb) return fb.rgba8();
   const std::vector<float>& f = fb.rgba32f();
   std::vector<std::uint8_t> out(f.size());

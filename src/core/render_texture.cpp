@@ -9,8 +9,9 @@ namespace facet {
 
 RenderTexture::RenderTexture(int width, int height, const RenderTextureOptions& options)
     : options_(options),
-      framebuffer_(width, height, options.format,
-                   options.depth ? DepthImage::keep : DepthImage::none) {
+      framebuffer_(options.color ? Framebuffer(width, height, options.format,
+                                               options.depth ? DepthImage::keep : DepthImage::none)
+                                 : Framebuffer::depth_only(width, height)) {
   if (!options.color && !options.depth) {
     throw Error("render texture: keeps neither color nor depth (RenderTextureOptions)");
   }

@@ -221,7 +221,14 @@ void Renderer::Impl::record(const Mesh& mesh, const std::optional<pipeline::Mesh
   (outside ? outside_view_draws : frame.draws).push_back(record);
 }
 
-void Renderer::finish(Framebuffer& target) { impl_->finish(target, false); }
+void Renderer::finish(Framebuffer& target) {
+  if (!target.has_color()) {
+    throw Error(
+        "renderer: finish into a depth-only framebuffer; render depth alone into a RenderTexture "
+        "whose options keep no color");
+  }
+  impl_->finish(target, false);
+}
 
 void Renderer::Impl::finish(Framebuffer& target, bool depth_only) {
   require_recording("finish()");

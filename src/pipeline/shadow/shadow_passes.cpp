@@ -171,9 +171,7 @@ void Renderer::Impl::run_shadow_passes() {
         shadow_views(lighting.lights[i], color_camera, scene, cascades, size, views, shadow.maps);
     for (int c = 0; c < count; ++c) {
       std::optional<Framebuffer>& target = shadow.targets[c];
-      if (!target || target->width() != size) {
-        target.emplace(size, size, ColorFormat::rgba8_srgb, DepthImage::keep);
-      }
+      if (!target || target->width() != size) target = Framebuffer::depth_only(size, size);
       camera = views[c];
       frame.view_projection = views[c].view_projection();
       // Each pass draws the casters its view takes in, as recording does for the camera's.

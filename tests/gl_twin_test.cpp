@@ -12,6 +12,7 @@
 #include <sstream>
 #include <string>
 
+#include "facet/error.hpp"
 #include "facet/gl.hpp"
 #include "facet/image_io.hpp"
 #include "facet/import.hpp"
@@ -579,6 +580,13 @@ TEST(GlTwin, SceneDrawnAgainAfterItsCopiesWereFreed) {
   for (int frame = 0; frame < 62; ++frame) gl->render(other, Camera{}, small);
   const Framebuffer again = gl_image(*gl, shapes.scene, shapes.camera);
   EXPECT_EQ(first.rgba8(), again.rgba8());
+}
+
+TEST(GlTwin, ADepthOnlyFramebufferIsRefused) {
+  REQUIRE_GL(gl);
+  const Views shapes = scene_named("shapes");
+  Framebuffer depth = Framebuffer::depth_only(8, 8);
+  EXPECT_THROW(gl->render(shapes.scene, shapes.camera, depth), Error);
 }
 
 // --- The fill rule, where an edge runs exactly through pixel centres ------------------------

@@ -30,8 +30,8 @@ std::shared_ptr<const Texture> quarter_alpha_texture() {
 }
 
 // A quad filling the view (whole blocks and edges) and a grid of tiny ones (small triangles),
-// on a transparent background; returns the lowest alpha inside the quad (pixels 10 to 43 of a
-// row: its whole blocks among them) and the tiny quads' highest.
+// on a transparent background; returns the lowest alpha inside the quad (pixels 12 to 41 of
+// every row: its whole blocks among them) and the tiny quads' highest.
 struct Alphas {
   std::uint8_t big = 0, tiny = 0;
 };

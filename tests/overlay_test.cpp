@@ -129,6 +129,8 @@ TEST(Overlay, RejectsBadIndicesAndFloatTargets) {
   Framebuffer hdr(8, 8, ColorFormat::rgba32f);
   Quad ok(0, 0, 8, 8, glm::vec4(1.0f));
   EXPECT_THROW(draw_overlay(hdr, ok.draw()), Error);
+  Framebuffer depth = Framebuffer::depth_only(8, 8);  // no color image to draw onto
+  EXPECT_THROW(draw_overlay(depth, ok.draw()), Error);
 }
 
 }  // namespace

@@ -66,14 +66,17 @@ class Framebuffer {
               DepthImage depth = DepthImage::keep, const ExtraOutputs& extra = {});
   // Window depth alone, no color image (rgba8() and rgba32f() empty, has_color() false): what
   // depth-only passes draw into (the shadow maps; a RenderTexture whose options keep no color).
-  // Renderer::finish(Framebuffer&), pixel(), images written from it and overlays drawn onto it
-  // throw facet::Error. Throws facet::Error if a size is outside [1, kMaxSize].
+  // Renderer::finish(Framebuffer&), GlRenderer::render, pixel(), images written from it and
+  // overlays drawn onto it throw facet::Error. Throws facet::Error if a size is outside [1,
+  // kMaxSize].
   static Framebuffer depth_only(int width, int height);
 
   int width() const { return width_; }
   int height() const { return height_; }
   ColorFormat format() const { return format_; }
-  bool has_color() const { return !rgba8_.empty() || !rgba32f_.empty(); }
+  bool has_color() const {
+    return format_ == ColorFormat::rgba8_srgb ? !rgba8_.empty() : !rgba32f_.empty();
+  }
 
   // Row-major, top row first, 4 values per pixel. Only the one matching format() is non-empty
   // (neither, for depth_only()).

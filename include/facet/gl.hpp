@@ -34,7 +34,8 @@ class GlRenderer {
   // Draws every mesh instance of the scene seen from camera into target, as draw_scene and
   // Renderer::finish would: same transforms, levels of detail, materials, lights, fog, sky and
   // transparency order. The target's color format and depth image are filled like the software
-  // renderer's; extra outputs are not drawn (throws facet::Error if the target asks for any).
+  // renderer's; extra outputs are not drawn (throws facet::Error if the target asks for any, or
+  // has no color image: Framebuffer::depth_only).
   // Meshes and textures are uploaded the first time they are drawn and found again by address
   // (so, as for Renderer, a mesh must not change in place), and freed 60 frames after the last
   // frame that drew them.

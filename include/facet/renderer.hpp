@@ -153,7 +153,8 @@ class Renderer {
   // Runs the pipeline for everything recorded since begin_frame() into target, then one pass
   // for each group of the extra outputs target asks for (Framebuffer's ExtraOutputs). Throws
   // facet::Error when triangle ids are asked of a mesh of 2^24 triangles or more, whose ids a
-  // float pass cannot hold exactly.
+  // float pass cannot hold exactly, and for a target without a color image
+  // (Framebuffer::depth_only: depth alone is rendered into a RenderTexture keeping no color).
   void finish(Framebuffer& target);
   // The same into an offscreen target, whose textures then hold the image (RenderTexture). A
   // frame cannot sample what it renders into: throws facet::Error, rendering nothing, when a

@@ -25,11 +25,9 @@ Framebuffer::Framebuffer(int width, int height, ColorFormat format, ColorImage c
                 " is outside 1x1 .. " + std::to_string(kMaxSize) + "x" + std::to_string(kMaxSize));
   }
   std::size_t pixels = static_cast<std::size_t>(width) * height;
-  if (color == ColorImage::none) {
-    // (no color image)
-  } else if (format == ColorFormat::rgba8_srgb) {
+  if (color == ColorImage::keep && format == ColorFormat::rgba8_srgb) {
     rgba8_.assign(pixels * 4, 0);
-  } else {
+  } else if (color == ColorImage::keep) {
     rgba32f_.assign(pixels * 4, 0.0f);
   }
   if (depth == DepthImage::keep) depth_.assign(pixels, 1.0f);

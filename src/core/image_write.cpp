@@ -128,6 +128,9 @@ void write_image(const Framebuffer& framebuffer, ImageFileType type, std::FILE* 
 }
 
 void write_image(const Framebuffer& framebuffer, const std::string& path) {
+  if (!framebuffer.has_color()) {
+    throw Error(path + ": a depth-only framebuffer has no color image to write");
+  }
   ImageFileType type = image_file_type(path);
   // Beside the file it replaces, so that the rename is atomic (same file system).
   const std::string target = write_target(path);

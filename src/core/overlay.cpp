@@ -124,7 +124,8 @@ void draw_triangle(Framebuffer& target, const OverlayRect& clip, const Texture* 
 }  // namespace
 
 void draw_overlay(Framebuffer& target, const OverlayDraw& draw) {
-  if (target.format() != ColorFormat::rgba8_srgb || !target.has_color()) {
+  if (!target.has_color()) throw Error("overlay: the target is a depth-only framebuffer");
+  if (target.format() != ColorFormat::rgba8_srgb) {
     throw Error("overlay: the target must be an rgba8_srgb framebuffer");
   }
   if (draw.texture && draw.texture->format() != Texture::Format::rgba8) {

@@ -225,6 +225,8 @@ struct GlState {
           "OpenGL backend: extra outputs (depth in scene units, normals, ids, ...) are "
           "drawn by facet's own renderer only");
     }
+    if (!out.has_color())
+      throw Error("OpenGL backend: a depth-only framebuffer has no color image");
     context.make_current();
     camera.validate();
     gl::FrameState frame;

@@ -19,22 +19,16 @@ int write_block_depths(TileContext& tile, const SetupTriangle& t, int x0, int y0
   BlockInput in;
   in.triangle = &t;
   int written = 0;
-  for_each_block<true>(
-      tile, t, x0, y0, x1, y1, box_depth, in,
-      [&](int block_x, int block_y, EdgeCover, float& max_depth) {
-        const int left = block_x + in.x_begin, top = block_y + in.y_begin;
-        const int width = in.x_end - in.x_begin, height = in.y_end - in.y_begin;
-        const int count = tile.kernels.write_box_depths(
-            t, left, top, width, height, tile.depth + tile_index(tile, left, top), tile.stride);
-        written += count;
-        // Every pixel of the block written: the whole block's mask, as lower_block_bound takes it.
-        const int block_width = std::min(kBlockSize, tile.x1 - block_x);
-        const int block_height = std::min(kBlockSize, tile.y1 - block_y);
-        if (count == block_width * block_height) {
-          lower_block_bound(tile, t, block_x, block_y, block_pixels_mask(block_width, block_height),
-                            count, max_depth);
-        }
-      });
+  for_each_block<true>(tile, t, x0, y0, x1, y1, box_depth, in,
+                       [&](int block_x, int block_y, EdgeCover, float& max_depth) {
+                         const int left = block_x + in.x_begin, top = block_y + in.y_begin;
+                         const int width = in.x_end - in.x_begin, height = in.y_end - in.y_begin;
+                         const int count = tile.kernels.write_box_depths(
+                             t, left, top, width, height, tile.depth + tile_index(tile, left, top),
+                             tile.stride);
+                         written += count;
+                         lower_block_bound(tile, t, block_x, block_y, count, max_depth);
+                       });
   return written;
 }
 

@@ -50,15 +50,6 @@ inline EdgeCover classify_edges(const SetupTriangle& t, int block_x, int block_y
   return cover;
 }
 
-// Bits of the block pixels that lie inside the tile (all 64 except at the frame's right and
-// bottom edges).
-inline std::uint64_t block_pixels_mask(int width, int height) {
-  const std::uint64_t row = (std::uint64_t{1} << width) - 1;
-  std::uint64_t mask = 0;
-  for (int y = 0; y < height; ++y) mask |= row << (y * kBlockSize);
-  return mask;
-}
-
 // The triangle's depths over the box [x0, x1] x [y0, y1] of the tile (depth_range_over), or none
 // when it lies behind everything drawn there (the blocks' depth bounds, tile.block_max_depth): a
 // far layer drawn after a near one is done without a block's edge tests. NaN goes on.
@@ -117,16 +108,15 @@ void for_each_block(TileContext& tile, const SetupTriangle& t, int x0, int y0, i
   }
 }
 
-// After a triangle wrote `written` of the block's covered pixels `mask`: where it wrote every
-// pixel of the block (in the tile), their largest depth bounds the block. That is the
-// triangle's farthest over the block's corners (depth_range_over: the same arithmetic as
-// cover_block's depths, monotonic in x and y), four evaluations instead of a search of all 64.
+// After a triangle wrote `written` distinct pixels of the block: where that is every pixel of
+// the block (in the tile), their largest depth bounds the block. That is the triangle's farthest
+// over the block's corners (depth_range_over: the same arithmetic as cover_block's depths,
+// monotonic in x and y), four evaluations instead of a search of all 64.
 inline void lower_block_bound(const TileContext& tile, const SetupTriangle& t, int block_x,
-                              int block_y, std::uint64_t mask, int written, float& max_depth) {
+                              int block_y, int written, float& max_depth) {
   const int width = std::min(kBlockSize, tile.x1 - block_x);
   const int height = std::min(kBlockSize, tile.y1 - block_y);
-  const std::uint64_t all = block_pixels_mask(width, height);
-  if (mask == all && written == std::popcount(all)) {
+  if (written == width * height) {
     const float farthest =
         depth_range_over(t, block_x, block_y, block_x + width - 1, block_y + height - 1).farthest;
     max_depth = std::min(max_depth, farthest);
@@ -258,7 +248,7 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
       }
     }
     if constexpr (kTightensBound) {
-      lower_block_bound(tile, t, block_x, block_y, block.mask, written, max_depth);
+      lower_block_bound(tile, t, block_x, block_y, written, max_depth);
     }
   };
   for_each_block<kDepthTest>(tile, t, x0, y0, x1, y1, box_depth, in, draw_block);

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <glm/gtc/matrix_transform.hpp>
 #include <memory>
@@ -157,6 +158,35 @@ TEST(RenderTexture, DepthOnlyTargetsKeepTheSameDepths) {
   EXPECT_EQ(depth_only.depth_texture()->level(0).r32f, shapes_reference().depth());
   EXPECT_FALSE(depth_only.framebuffer().has_color());  // no color image allocated either
   EXPECT_THROW(RenderTexture(4, 4, {.color = false}), Error);
+}
+
+// Depth alone shades nothing, but what each draw leaves in the depth image stays: an opaque
+// quad's depths, none from a cut-out whose texture's alpha removes it nor from a blended one.
+TEST(RenderTexture, DepthOnlyTargetsKeepCutOutsAndBlendedDrawsOut) {
+  const Mesh mesh = screen(1.0f);
+  std::vector<std::uint8_t> clear_rgba(4 * 4 * 4, 0);  // alpha 0 everywhere: cut out
+  Material opaque, cut_out, blended;
+  cut_out.alpha_mode = AlphaMode::mask;
+  cut_out.base_color_map.texture = Texture::from_rgba8(4, 4, clear_rgba, true, "clear");
+  blended.alpha_mode = AlphaMode::blend;
+  blended.base_color.a = 0.5f;
+  auto depths = [&](bool color) {
+    RenderTexture target(kWidth, kHeight, {.depth = true, .color = color});
+    Renderer renderer;
+    renderer.begin_frame(Camera::orthographic({0, 0, 1}, {0, 0, 0}, {0, 1, 0}, 2.0f,
+                                              static_cast<float>(kWidth) / kHeight, 0.5f, 3.0f));
+    renderer.draw(mesh, opaque, glm::translate(glm::mat4(1.0f), {-0.5f, 0.0f, -1.0f}));
+    renderer.draw(mesh, cut_out, glm::translate(glm::mat4(1.0f), {0.0f, 0.0f, 0.0f}));
+    renderer.draw(mesh, blended, glm::translate(glm::mat4(1.0f), {0.5f, 0.0f, 0.5f}));
+    renderer.finish(target);
+    return target.depth_texture()->level(0).r32f;
+  };
+  const std::vector<float> alone = depths(false);
+  EXPECT_EQ(alone, depths(true));
+  // The opaque quad is there and behind the other two everywhere it is seen.
+  const float opaque_depth = alone[(kHeight / 2) * kWidth + kWidth / 4];
+  EXPECT_LT(opaque_depth, 1.0f);
+  for (const float d : alone) EXPECT_TRUE(d == 1.0f || d == opaque_depth) << d;
 }
 
 // A framebuffer of depth alone: no color image, the clear depth, and one error from what would

@@ -14,6 +14,7 @@
 #include "pipeline/record/draw_culling.hpp"
 #include "pipeline/record/pipeline_table.hpp"
 #include "pipeline/renderer_impl.hpp"
+#include "shading/models.hpp"
 
 namespace facet {
 
@@ -236,6 +237,7 @@ void Renderer::Impl::finish(Framebuffer& target, bool depth_only) {
   arena.execute([&] {
     run_shadow_passes();
     if (!depth_only) run_reflection_passes(target);
+    if (depth_only) use_depth_only_models();
     depth_only_pass = depth_only;
     run(target);
     depth_only_pass = false;
@@ -246,6 +248,21 @@ void Renderer::Impl::finish(Framebuffer& target, bool depth_only) {
   });
   shadows_ready = false;
   recording = false;
+}
+
+void Renderer::Impl::use_depth_only_models() {
+  static const pipeline::DrawPipeline depth_alone =
+      pipeline::make_pipeline<shading::DepthOnlyShading>();
+  for (pipeline::DrawRecord& draw : frame.draws) {
+    const pipeline::DrawPipeline& own = draw.pipeline;
+    if (!own.occludes || !own.fills_triangles || draw.material.alpha_mode != AlphaMode::opaque ||
+        draw.mesh->topology == Topology::lines || draw.mesh->topology == Topology::points) {
+      continue;
+    }
+    draw.pipeline = depth_alone;
+    draw.material.base_color_map = {};  // nothing samples them now
+    draw.material.emissive_map = {};
+  }
 }
 
 namespace {

@@ -152,6 +152,10 @@ struct Renderer::Impl {
   // Renderer::finish: the shadow passes, then run() (writing depth alone when depth_only),
   // then the extra outputs; ends the frame.
   void finish(Framebuffer& target, bool depth_only);
+  // For a pass that writes depth alone: the draws whose depths are an opaque surface's (filled
+  // triangles of opaque materials whose model tests and writes depth) take DepthOnlyShading,
+  // as the shadow passes' casters do, and shade nothing; the others keep their models.
+  void use_depth_only_models();
   // Throws facet::Error for extra outputs the frame's draws cannot give exactly (ids too big
   // for a float pass), before anything is drawn (output_passes.cpp).
   void check_extra_outputs(const Framebuffer& target) const;

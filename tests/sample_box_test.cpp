@@ -8,6 +8,7 @@
 #include <hwy/targets.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <random>
 #include <tuple>
 #include <vector>
@@ -59,9 +60,8 @@ struct Tile {
 };
 
 // What the search must find, by definition, sample by sample.
-std::vector<Found> expected(const SetupTriangle& t, const pipeline::SampleSteps& steps,
-                            const float* sample_z, const Tile& tile, int x0, int y0, int width,
-                            int height) {
+std::vector<Found> expected(const SetupTriangle& t, const float* sample_z, const Tile& tile, int x0,
+                            int y0, int width, int height) {
   std::vector<Found> out;
   for (int y = y0; y < y0 + height; ++y) {
     const float z_row = pipeline::evaluate_row(t.z, t.ref_y, static_cast<float>(y) + 0.5f);
@@ -70,8 +70,12 @@ std::vector<Found> expected(const SetupTriangle& t, const pipeline::SampleSteps&
       unsigned mask = 0;
       for (int s = 0; s < tile.context.samples; ++s) {
         bool inside = true;
+        // The sample's offset from the standard pattern, in fixed point.
+        const pipeline::SampleOffset offset = pipeline::sample_pattern(tile.context.samples)[s];
         for (int i = 0; i < 3; ++i) {
-          inside &= pipeline::edge_at_centre(t, i, x, y) + steps.edge[i][s] >= 0;
+          const std::int64_t step = std::int64_t{t.a[i]} * offset.x * pipeline::kSampleUnit +
+                                    std::int64_t{t.b[i]} * offset.y * pipeline::kSampleUnit;
+          inside &= pipeline::edge_at_centre(t, i, x, y) + step >= 0;
         }
         const float stored =
             tile.depth[s * tile.context.sample_plane + (y - y0) * Tile::kStride + (x - x0)];
@@ -119,7 +123,7 @@ TEST(SampleBoxes, FindExactlyTheSamplesTheEdgeFunctionsCover) {
       float sample_z[pipeline::kMaxSamples];
       const pipeline::SampleSteps steps(t, samples, sample_z);
       const Tile tile(t, steps, x0, y0, width, height, samples, rng);
-      const std::vector<Found> want = expected(t, steps, sample_z, tile, x0, y0, width, height);
+      const std::vector<Found> want = expected(t, sample_z, tile, x0, y0, width, height);
       ASSERT_EQ(found(t, steps, sample_z, tile, x0, y0, width, height), want)
           << hwy::TargetName(target) << ", triangle " << n << ", " << samples << " samples"
           << (steps.fits_32_bits ? "" : ", wide");
@@ -154,7 +158,7 @@ TEST(SampleBoxes, WriteTheDepthsOfTheSamplesFoundOnly) {
       const pipeline::SampleSteps steps(t, samples, sample_z);
       if (!steps.fits_32_bits) continue;  // only find_box_samples writes depths
       Tile tile(t, steps, x0, y0, width, height, samples, rng);
-      const std::vector<Found> want = expected(t, steps, sample_z, tile, x0, y0, width, height);
+      const std::vector<Found> want = expected(t, sample_z, tile, x0, y0, width, height);
       std::vector<float> depth = tile.depth;  // what the search must leave
       const std::ptrdiff_t plane = tile.context.sample_plane;
       for (const Found& f : want) {

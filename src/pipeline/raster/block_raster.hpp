@@ -75,8 +75,8 @@ struct SampleBoxSearch {
   int x0, y0, width, height;
   int samples;
   std::int64_t e_first[3];
-  std::int64_t step[3][16];
-  const float* sample_z;  // the depth step of each sample (TileContext::sample_z)
+  const std::int64_t (*step)[16];  // each sample's edge steps (SampleSteps::step)
+  const float* sample_z;           // the depth step of each sample (TileContext::sample_z)
   bool depth_test;
   // find_box_samples only (with depth_test): each sample found takes its depth in the tile
   // at once, as a draw that writes depth without an alpha test would (small_triangles.hpp).

@@ -20,8 +20,10 @@ namespace facet::pipeline {
 // depth is fl(depth at the centre + step) wherever it is computed). Rounding is monotonic, so
 // fl(a + min step) and fl(b + max step) bound the samples' depths of centres within [a, b].
 struct SampleSteps {
-  std::int64_t edge[3][kMaxSamples];
-  std::int64_t edge_min[3], edge_max[3];
+  // Each sample's step of each edge in sixteenths of a pixel, the box search's unit: the
+  // fixed-point step over kSampleUnit, exactly (sample offsets are whole sixteenths).
+  std::int64_t step[3][kMaxSamples];
+  std::int64_t edge_min[3], edge_max[3];  // the fixed-point steps' extremes
   float z_min, z_max;
   // The SIMD box search computes in 32 bits (SampleBoxSearch): only for these coefficients.
   bool fits_32_bits = true;
@@ -35,10 +37,9 @@ struct SampleSteps {
       edge_min[i] = edge_max[i] = std::int64_t{t.a[i]} * pattern[0].x * kSampleUnit +
                                   std::int64_t{t.b[i]} * pattern[0].y * kSampleUnit;
       for (int s = 0; s < samples; ++s) {
-        edge[i][s] = std::int64_t{t.a[i]} * pattern[s].x * kSampleUnit +
-                     std::int64_t{t.b[i]} * pattern[s].y * kSampleUnit;
-        edge_min[i] = std::min(edge_min[i], edge[i][s]);
-        edge_max[i] = std::max(edge_max[i], edge[i][s]);
+        step[i][s] = std::int64_t{t.a[i]} * pattern[s].x + std::int64_t{t.b[i]} * pattern[s].y;
+        edge_min[i] = std::min(edge_min[i], step[i][s] * kSampleUnit);
+        edge_max[i] = std::max(edge_max[i], step[i][s] * kSampleUnit);
       }
     }
     for (int s = 0; s < samples; ++s) {
@@ -69,8 +70,8 @@ SampleBoxSearch sample_box_search(const TileContext& tile, const SetupTriangle& 
     // floor(E / 16): the first centre lies on the sixteenths' grid, like every sample.
     const std::int64_t e_first = edge_at_centre(t, i, left, top) >> 4;
     search.e_first[i] = steps.fits_32_bits ? std::clamp(e_first, -kClamp, kClamp) : e_first;
-    for (int s = 0; s < tile.samples; ++s) search.step[i][s] = steps.edge[i][s] / kSampleUnit;
   }
+  search.step = steps.step;
   search.sample_z = sample_z;
   search.depth_test = kDepthTest;
   search.write_depth = false;

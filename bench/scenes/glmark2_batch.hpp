@@ -35,7 +35,6 @@ Glmark2BatchKernel glmark2_batch_kernel(SimdTarget target);
 // every draw and every batch size.
 template <BatchShader kShader>
 struct BatchForm {
-  static constexpr bool kOpaqueAlpha = true;  // alpha is always 1 (display codes)
   static void fragment_batch(const shading::DrawUniforms& u, const shading::ShadeInput& in,
                              float (*rgba)[4]) {
     glmark2_batch_kernel(u.frame->kernels->target)(kShader, u, in, rgba);

@@ -14,7 +14,6 @@
 #include "pipeline/record/draw_culling.hpp"
 #include "pipeline/record/pipeline_table.hpp"
 #include "pipeline/renderer_impl.hpp"
-#include "shading/models.hpp"
 
 namespace facet {
 
@@ -251,17 +250,12 @@ void Renderer::Impl::finish(Framebuffer& target, bool depth_only) {
 }
 
 void Renderer::Impl::use_depth_only_models() {
-  static const pipeline::DrawPipeline depth_alone =
-      pipeline::make_pipeline<shading::DepthOnlyShading>();
   for (pipeline::DrawRecord& draw : frame.draws) {
     const pipeline::DrawPipeline& own = draw.pipeline;
-    if (!own.occludes || !own.fills_triangles || draw.material.alpha_mode != AlphaMode::opaque ||
-        draw.mesh->topology == Topology::lines || draw.mesh->topology == Topology::points) {
-      continue;
+    if (own.occludes && own.fills_triangles && draw.material.alpha_mode == AlphaMode::opaque &&
+        draw.mesh->topology != Topology::lines && draw.mesh->topology != Topology::points) {
+      pipeline::draw_depth_alone(draw);
     }
-    draw.pipeline = depth_alone;
-    draw.material.base_color_map = {};  // nothing samples them now
-    draw.material.emissive_map = {};
   }
 }
 

@@ -39,7 +39,6 @@ inline ShadingKernels shading_kernels(SimdTarget target) {
 template <BatchModel kModel>
 struct BatchForm {
   static constexpr unsigned kMapsRead = maps_read(kModel);
-  static constexpr bool kOpaqueAlpha = true;  // honours ShadeInput::opaque
   static void fragment_batch(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
     u.frame->kernels->shade_batch(kModel, u, in, rgba);
   }

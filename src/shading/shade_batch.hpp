@@ -108,7 +108,8 @@ struct ShadeInput {
   // a whole 8x8 block (count 64) may go straight into a tile's rows with the tile's stride.
   int rgba_row_stride = 8;
   // Alpha written as 1 whatever the model computes: an opaque draw covers what it draws
-  // (pipeline::blend_into). Batch forms declaring kOpaqueAlpha honour it.
+  // (pipeline::blend_into). Every batch form honours it (the built-in kernels here, glmark2's,
+  // whose colors are display codes with alpha 1 anyway).
   bool opaque = false;
   // Each MaterialMap's texel per pixel, where the material has the map and the model reads it
   // (maps_read); else null.

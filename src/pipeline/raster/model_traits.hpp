@@ -78,14 +78,6 @@ constexpr bool batch_shaded() {
   return kBatch;
 }
 
-// Whether a batch model's fragment_batch writes alpha 1 when ShadeInput::opaque says so, as
-// blend_into does for opaque draws.
-template <class Shading>
-constexpr bool batch_opaque_alpha() {
-  if constexpr (requires { Shading::kOpaqueAlpha; }) return Shading::kOpaqueAlpha;
-  return false;
-}
-
 // The material maps besides the base color map a batch model reads (shading::maps_read).
 template <class Shading>
 constexpr unsigned maps_read() {

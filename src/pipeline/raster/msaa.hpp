@@ -158,7 +158,6 @@ void raster_triangle_msaa(TileContext& tile, const SetupTriangle& t) {
           shade_covered_samples(tile, t, steps, out, pixels, left, top, right, bottom);
           continue;
         }
-        // (Its plane-0 depths, z, are replaced next by z + sample_z[0].)
         out.shade_full_block(block, block_x, block_y);
         tile.kernels.write_block_sample_depths(block.z, tile.sample_z, samples, tile.depth + first,
                                                tile.stride, plane);

@@ -208,8 +208,8 @@ class PixelWriter {
 
   // A block whose 64 pixels are all covered and pass the depth test, at frame pixel
   // (block_x, block_y): sampled, shaded and fogged with SIMD straight from cover_block's
-  // arrays into the tile's rows (its depths copied a row at a time); no per-pixel step. Only
-  // when full_blocks().
+  // arrays into the tile's rows; no per-pixel step. Its depths are the caller's to write (one
+  // sample's, or each sample's under MSAA). Only when full_blocks().
   void shade_full_block(const BlockFragments& block, int block_x, int block_y) {
     if constexpr (kFullBlocks) {
       static_assert(kBlockSize == 8, "ShadeInput::rgba_row_stride counts rows of 8 pixels");
@@ -219,13 +219,6 @@ class PixelWriter {
       in.opaque = !writes_data<Shading>();  // alpha 1, as blend_into writes it
       sample_maps(in, block.v, block.w);
       Shading::fragment_batch(uniforms_, in, reinterpret_cast<float(*)[4]>(&tile_.color[first]));
-      for (int row = 0; row < kBlockSize; ++row) {
-        const std::ptrdiff_t pixel = first + static_cast<std::ptrdiff_t>(row) * tile_.stride;
-        std::memcpy(&tile_.depth[pixel], block.z + row * kBlockSize, sizeof(float) * kBlockSize);
-        if constexpr (!writes_data<Shading>() && !batch_opaque_alpha<Shading>()) {
-          for (int x = 0; x < kBlockSize; ++x) tile_.color[pixel + x].a = 1.0f;
-        }
-      }
       shaded += kBlockPixels;
     }
   }

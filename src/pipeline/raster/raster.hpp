@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <bit>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <optional>
 
@@ -210,6 +211,11 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
     int written = 0;
     if (block.mask == ~std::uint64_t{0} && out.full_blocks() && in.interpolate) {
       out.shade_full_block(block, block_x, block_y);
+      float* depth = tile.depth + tile_index(tile, block_x, block_y);
+      for (int row = 0; row < kBlockSize; ++row) {
+        std::memcpy(depth + static_cast<std::ptrdiff_t>(row) * tile.stride,
+                    block.z + row * kBlockSize, sizeof(float) * kBlockSize);
+      }
       written = kBlockPixels;
     } else if (out.batches()) {
       // The block's pixels join those of the triangle's earlier blocks, shaded together when

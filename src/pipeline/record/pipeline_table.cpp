@@ -24,6 +24,13 @@ DrawPipeline with_alpha(AlphaMode alpha) {
 
 }  // namespace
 
+void draw_depth_alone(DrawRecord& draw) {
+  static const DrawPipeline depth_alone = make_pipeline<shading::DepthOnlyShading>();
+  draw.pipeline = depth_alone;
+  draw.material.base_color_map = {};
+  draw.material.emissive_map = {};
+}
+
 DrawPipeline pipeline_for(ShadingModel model, AlphaMode alpha) {
   using namespace shading;
   switch (model) {

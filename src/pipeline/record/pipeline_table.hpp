@@ -22,6 +22,11 @@ DrawPipeline pipeline_for(ShadingModel model, AlphaMode alpha = AlphaMode::opaqu
 DrawPipeline pipeline_for(const Material& material, const Mesh& mesh, const Lighting& lighting,
                           bool shadowed = false);
 
+// Makes the draw one of a pass that writes depth alone (the shadow maps, a render texture that
+// keeps no color): DepthOnlyShading, which shades nothing, and no maps to sample. For draws whose
+// depths are an opaque surface's, which the caller checks.
+void draw_depth_alone(DrawRecord& draw);
+
 // The pipeline for any shading model type (see shading/models.hpp for what it provides);
 // also how tests plug in their own models.
 template <class Shading, AlphaMode kAlpha = AlphaMode::opaque>

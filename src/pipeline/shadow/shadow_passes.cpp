@@ -28,15 +28,6 @@ bool casts_shadow(const DrawRecord& draw) {
          draw.pipeline.fills_triangles && !pipeline::is_blended(draw.material.alpha_mode);
 }
 
-// The depth pass draws depth alone, and cut-out materials with the unlit model, whose alpha
-// cuts out as in color.
-pipeline::DrawPipeline shadow_pipeline(AlphaMode alpha) {
-  if (alpha == AlphaMode::mask) {
-    return pipeline::make_pipeline<shading::UnlitShading, AlphaMode::mask>();
-  }
-  return pipeline::make_pipeline<shading::DepthOnlyShading>();
-}
-
 // Adds the world-space box around a draw's mesh bounds to `box`.
 void add_draw_bounds(const DrawRecord& draw, pipeline::WorldBox& box) {
   if (!draw.bounds) return;
@@ -132,11 +123,14 @@ void Renderer::Impl::run_shadow_passes() {
       if (!casts_shadow(draw)) continue;
       shadow_casters.push_back(draw);
       DrawRecord& caster = shadow_casters.back();
-      caster.pipeline = shadow_pipeline(draw.material.alpha_mode);
       caster.material.cull = CullMode::none;  // open meshes cast from either side
-      // Only a cut-out reads its texture (for alpha): the others' would be sampled for nothing.
-      if (caster.material.alpha_mode != AlphaMode::mask) caster.material.base_color_map = {};
-      caster.material.emissive_map = {};
+      if (caster.material.alpha_mode == AlphaMode::mask) {
+        // The unlit model, whose alpha (of the base color map) cuts out as in color.
+        caster.pipeline = pipeline::make_pipeline<shading::UnlitShading, AlphaMode::mask>();
+        caster.material.emissive_map = {};
+      } else {
+        pipeline::draw_depth_alone(caster);
+      }
     }
   }
   std::swap(frame.draws, set_aside_draws);

@@ -88,8 +88,8 @@ glm::vec4 reference_pixel(const TextureMap& map, const shading::TexelBatch& batc
 }
 
 // Textures of every shape and storage: power-of-two sides and not, one texel, more levels
-// than a vector of the level table holds, float texels (HDR), one float a texel (depth), and
-// 8-bit ones too large for the linear copy.
+// than a vector of the level table holds, levels one texel wide (a row start shifted by 0),
+// float texels (HDR), one float a texel (depth), and 8-bit ones too large for the linear copy.
 std::vector<std::shared_ptr<const Texture>> sample_textures(std::mt19937& rng) {
   std::vector<float> hdr(40 * 24 * 4), depth(33 * 17);
   std::uniform_real_distribution<float> radiance(0.0f, 8.0f);
@@ -100,6 +100,7 @@ std::vector<std::shared_ptr<const Texture>> sample_textures(std::mt19937& rng) {
           random_texture(rng, 1, 1),
           random_texture(rng, 3, 5),
           random_texture(rng, 1024, 2),  // 11 levels: more than one vector of the level table
+          random_texture(rng, 2, 64),    // power-of-two sides, levels one texel wide and taller
           Texture::from_rgba32f(40, 24, std::move(hdr)),
           Texture::from_r32f(33, 17, std::move(depth)),
           random_texture(rng, 1030, 1020)};  // over 2^20 texels: no linear copy

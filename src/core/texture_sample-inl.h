@@ -18,6 +18,7 @@
 #include <hwy/highway.h>
 
 #include <algorithm>
+#include <bit>
 #include <cstdint>
 #include <cstring>
 
@@ -113,6 +114,7 @@ struct Source {
   int levels, width, height;
   Wrap wrap_u, wrap_v;
   bool power_of_two_u, power_of_two_v;  // the base level's sides (then every level's)
+  int log2_width;                       // where power_of_two_u
 };
 
 HWY_INLINE Source SourceOf(const Texture& texture, const Sampler& sampler) {
@@ -127,7 +129,8 @@ HWY_INLINE Source SourceOf(const Texture& texture, const Sampler& sampler) {
           sampler.wrap_u,
           sampler.wrap_v,
           (width & (width - 1)) == 0,
-          (height & (height - 1)) == 0};
+          (height & (height - 1)) == 0,
+          std::countr_zero(static_cast<unsigned>(width))};
 }
 
 // src.offsets[level] per lane (0 <= level < src.levels) with permutes of the offsets' vectors
@@ -163,15 +166,43 @@ struct Footprint {
   FloatV a, b;
 };
 
-// Offset of texel (x, row) in the texels, whose level starts at offset (per lane).
-HWY_INLINE IntV TexelOffset(IntV level_offset, IntV width, IntV x, IntV row) {
-  return hn::Add(level_offset, hn::ShiftLeft<2>(hn::Add(hn::Mul(row, width), x)));
+// The level of every lane, where they share one: then its sizes and offset are scalars; the base
+// level's are the same for every vector.
+struct SharedLevel {
+  int level;
+};
+struct BaseLevel {};
+
+// The start of each lane's row in its level (row * the level's width), by a shift where the
+// sides are powers of two. Level: each lane's (IntV), one for all (SharedLevel) or the base
+// level (BaseLevel).
+HWY_INLINE IntV RowStart(const Source& src, IntV level, IntV width, IntV row) {
+  const IntTag di;
+  if (!src.power_of_two_u) return hn::Mul(row, width);
+  return hn::Shl(row, hn::Max(hn::Sub(hn::Set(di, src.log2_width), level), hn::Zero(di)));
 }
+HWY_INLINE IntV RowStart(const Source& src, SharedLevel level, IntV width, IntV row) {
+  if (!src.power_of_two_u) return hn::Mul(row, width);
+  return hn::ShiftLeftSame(row, std::max(src.log2_width - level.level, 0));
+}
+HWY_INLINE IntV RowStart(const Source& src, BaseLevel, IntV width, IntV row) {
+  if (!src.power_of_two_u) return hn::Mul(row, width);
+  return hn::ShiftLeftSame(row, src.log2_width);
+}
+HWY_INLINE IntV LevelSize(int base, SharedLevel level) {
+  return hn::Set(IntTag(), std::max(base >> level.level, 1));
+}
+HWY_INLINE IntV LevelSize(int base, BaseLevel) { return hn::Set(IntTag(), base); }
+HWY_INLINE IntV LevelOffset(const Source& src, SharedLevel level) {
+  return hn::Set(IntTag(), src.texels == nullptr ? 0 : src.offsets[level.level]);
+}
+HWY_INLINE IntV LevelOffset(const Source&, BaseLevel) { return hn::Zero(IntTag()); }
 
 // The bilinear filter (OpenGL 4.6 §8.14.2) at each lane's level, up to the texel fetches: texel
 // centres sit at integer + 0.5, so the four texels around uv * size - 0.5 are blended by the
 // fractional part of that position.
-HWY_INLINE Footprint Bilinear(const Source& src, IntV level, FloatV u, FloatV v) {
+template <class Level>
+HWY_INLINE Footprint Bilinear(const Source& src, Level level, FloatV u, FloatV v) {
   const FloatTag df;
   const IntTag di;
   const IntV w = LevelSize(src.width, level), h = LevelSize(src.height, level);
@@ -187,10 +218,11 @@ HWY_INLINE Footprint Bilinear(const Source& src, IntV level, FloatV u, FloatV v)
   const IntV last_row = hn::Sub(h, hn::Set(di, 1));
   const IntV r0 = hn::Sub(last_row, ys.first), r1 = hn::Sub(last_row, ys.second);
   const IntV offset = LevelOffset(src, level);
-  fp.texel[0] = TexelOffset(offset, w, xs.first, r0);
-  fp.texel[1] = TexelOffset(offset, w, xs.second, r0);
-  fp.texel[2] = TexelOffset(offset, w, xs.first, r1);
-  fp.texel[3] = TexelOffset(offset, w, xs.second, r1);
+  const IntV row0 = RowStart(src, level, w, r0), row1 = RowStart(src, level, w, r1);
+  fp.texel[0] = hn::Add(offset, hn::ShiftLeft<2>(hn::Add(row0, xs.first)));
+  fp.texel[1] = hn::Add(offset, hn::ShiftLeft<2>(hn::Add(row0, xs.second)));
+  fp.texel[2] = hn::Add(offset, hn::ShiftLeft<2>(hn::Add(row1, xs.first)));
+  fp.texel[3] = hn::Add(offset, hn::ShiftLeft<2>(hn::Add(row1, xs.second)));
   return fp;
 }
 
@@ -203,7 +235,8 @@ HWY_INLINE IntV Nearest(const Source& src, FloatV u, FloatV v) {
   const IntV j = FloorToInt(Sanitize(hn::Mul(v, hn::ConvertTo(df, h))));
   const IntV row =
       hn::Sub(hn::Sub(h, hn::Set(di, 1)), WrapOne(src.wrap_v, j, h, src.power_of_two_v));
-  return TexelOffset(hn::Zero(di), w, WrapOne(src.wrap_u, i, w, src.power_of_two_u), row);
+  const IntV x = WrapOne(src.wrap_u, i, w, src.power_of_two_u);
+  return hn::ShiftLeft<2>(hn::Add(RowStart(src, BaseLevel{}, w, row), x));
 }
 
 // Every pixel's footprint, stored a vector at a time for the per-pixel blend.
@@ -391,11 +424,27 @@ HWY_INLINE void SamplePixels(const Source& src, Filter filter, const Coords& coo
   const IntV top_level = hn::Set(di, src.levels - 1);
   for (int j = 0; j < count; j += lanes) {
     const auto [u, v] = coords(j);
+    if (filter == Filter::bilinear) {
+      near.store(j, Bilinear(src, BaseLevel{}, u, v));
+      continue;
+    }
+    // The lanes of a vector mostly share their level.
     const IntV l0 = hn::Load(di, level + j);
-    near.store(j, Bilinear(src, l0, u, v));
+    const int first = level[j];
+    const bool shared = hn::AllTrue(di, hn::Eq(l0, hn::Set(di, first)));
+    if (shared && first == 0) {
+      near.store(j, Bilinear(src, BaseLevel{}, u, v));
+    } else if (shared) {
+      near.store(j, Bilinear(src, SharedLevel{first}, u, v));
+    } else {
+      near.store(j, Bilinear(src, l0, u, v));
+    }
     if (!hn::AllFalse(df, hn::Gt(hn::Load(df, fraction + j), hn::Zero(df)))) {
-      const IntV l1 = hn::Min(hn::Add(l0, hn::Set(di, 1)), top_level);
-      far.store(j, Bilinear(src, l1, u, v));
+      if (shared) {
+        far.store(j, Bilinear(src, SharedLevel{std::min(first + 1, src.levels - 1)}, u, v));
+      } else {
+        far.store(j, Bilinear(src, hn::Min(hn::Add(l0, hn::Set(di, 1)), top_level), u, v));
+      }
     }
   }
   // Each pixel's blend: from the linear copy four pixels a vector where it has sixteen lanes,

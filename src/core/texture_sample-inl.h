@@ -48,14 +48,8 @@ HWY_INLINE FloatV Sanitize(FloatV x) {
   const FloatV below_limit = hn::IfThenElse(hn::Lt(limit, x), limit, x);
   return hn::IfThenElse(hn::Gt(x, hn::Neg(limit)), below_limit, hn::Neg(limit));
 }
-// Floor of a sanitized coordinate: truncate, then step down where that rounded up.
-HWY_INLINE IntV FloorToInt(FloatV x) {
-  const FloatTag df;
-  const IntTag di;
-  const IntV t = hn::ConvertTo(di, x);  // truncates; |x| <= 2^23 after Sanitize
-  const auto above = hn::RebindMask(di, hn::Gt(hn::ConvertTo(df, t), x));
-  return hn::IfThenElse(above, hn::Sub(t, hn::Set(di, 1)), t);
-}
+// Floor of a sanitized coordinate (exact; |x| <= 2^23 after Sanitize, so it fits an int).
+HWY_INLINE IntV FloorToInt(FloatV x) { return hn::ConvertTo(IntTag(), hn::Floor(x)); }
 
 // i mod size, in [0, size). A power of two takes a mask (with two's complement the positive
 // remainder even for i < 0); other sizes the floor of a float division, which is the true floor:
@@ -209,10 +203,11 @@ HWY_INLINE Footprint Bilinear(const Source& src, Level level, FloatV u, FloatV v
   const FloatV half = hn::Set(df, 0.5f);
   const FloatV x = Sanitize(hn::Sub(hn::Mul(u, hn::ConvertTo(df, w)), half));
   const FloatV y = Sanitize(hn::Sub(hn::Mul(v, hn::ConvertTo(df, h)), half));
-  const IntV i0 = FloorToInt(x), j0 = FloorToInt(y);
+  const FloatV floor_x = hn::Floor(x), floor_y = hn::Floor(y);  // exact
+  const IntV i0 = hn::ConvertTo(di, floor_x), j0 = hn::ConvertTo(di, floor_y);
   Footprint fp;
-  fp.a = hn::Sub(x, hn::ConvertTo(df, i0));  // in [0, 1)
-  fp.b = hn::Sub(y, hn::ConvertTo(df, j0));
+  fp.a = hn::Sub(x, floor_x);  // in [0, 1)
+  fp.b = hn::Sub(y, floor_y);
   const Pair xs = WrapPair(src.wrap_u, i0, w, src.power_of_two_u);
   const Pair ys = WrapPair(src.wrap_v, j0, h, src.power_of_two_v);
   const IntV last_row = hn::Sub(h, hn::Set(di, 1));

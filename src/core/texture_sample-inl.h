@@ -289,59 +289,61 @@ HWY_INLINE Texel Blend(const Fetch& fetch, int level, const StoredFootprints& fp
   return Lerp(bottom, top, fp.b[k]);
 }
 
-#if HWY_ARCH_X86 && HWY_MAX_BYTES >= 64  // AVX-512: 512-bit vectors exist
-// Blend() and the blend toward the next level for pixels k .. k + 3 in one 16-lane vector
-// (lanes 4p .. 4p + 3 are pixel k + p's channels), for the whole groups of four of the batch,
-// from the linear copy; returns how many pixels it did. The same operations per lane as the
-// per-pixel blends; a pixel whose fraction is 0 keeps its level's blend (a select: the
-// per-pixel code skips the lerp).
+#if HWY_ARCH_X86 && HWY_MAX_BYTES >= 32  // AVX2 and AVX-512: 256-bit vectors exist
+// Blend() and the blend toward the next level for the whole groups of four pixels of the batch,
+// from the linear copy, two pixels a 256-bit vector (lanes 4p .. 4p + 3 are pixel p's channels:
+// a texel is one 128-bit load); returns how many pixels it did. The same operations per lane as
+// the per-pixel blends; a pixel whose fraction is 0 keeps its level's blend (a select: the
+// per-pixel code skips the lerp). (Sixteen lanes hold four pixels, but on this project's CPUs
+// 512-bit operations issue at half the rate, and building them from 128-bit loads costs more.)
 HWY_INLINE int BlendFours(const float* texels, const StoredFootprints& near,
                           const StoredFootprints& far, const float* fraction, int count,
                           float (*rgba)[4]) {
   // A group of four pixels lies in one vector of the footprint pass, so where one of them
   // blends toward the next level, all four have their next-level footprints stored.
   static_assert(hn::MaxLanes(FloatTag()) % 4 == 0);
-  const hn::Full512<float> d;
-  const hn::Full256<float> d8;
+  const hn::Full256<float> d;
   const hn::Full128<float> d4;
   const hn::RebindToSigned<decltype(d)> di;
-  alignas(64) static constexpr std::int32_t kPixelOfLane[16] = {0, 0, 0, 0, 1, 1, 1, 1,
-                                                                2, 2, 2, 2, 3, 3, 3, 3};
-  const auto spread = hn::IndicesFromVec(d, hn::Load(di, kPixelOfLane));
+  alignas(32) static constexpr std::int32_t kPixelOfLane[2][8] = {{0, 0, 0, 0, 1, 1, 1, 1},
+                                                                  {2, 2, 2, 2, 3, 3, 3, 3}};
+  const auto spread_low = hn::IndicesFromVec(d, hn::Load(di, kPixelOfLane[0]));
+  const auto spread_high = hn::IndicesFromVec(d, hn::Load(di, kPixelOfLane[1]));
   const auto one = hn::Set(d, 1.0f);
-  // Each of the four pixels' value at k + p, spread to its four lanes.
-  auto per_pixel = [&](const float* values) HWY_ATTR {
-    const auto four = hn::LoadDup128(d, values);
-    return hn::TableLookupLanes(four, spread);
-  };
   // Lerp(), lane by lane.
   auto lerp = [&](auto a, auto b, auto f) HWY_ATTR {
     const auto from_a = hn::Mul(a, hn::Sub(one, f));
     return hn::Add(from_a, hn::Mul(b, f));
   };
-  // Footprint texel t of pixels k .. k + 3, one pixel's RGBA in each quarter of the vector.
-  auto texel = [&](const StoredFootprints& fp, int t, int k) HWY_ATTR {
-    const auto low = hn::Combine(d8, hn::LoadU(d4, texels + fp.texel[t][k + 1]),
-                                 hn::LoadU(d4, texels + fp.texel[t][k]));
-    const auto high = hn::Combine(d8, hn::LoadU(d4, texels + fp.texel[t][k + 3]),
-                                  hn::LoadU(d4, texels + fp.texel[t][k + 2]));
-    return hn::Combine(d, high, low);
-  };
-  auto blend = [&](const StoredFootprints& fp, int k) HWY_ATTR {
-    const auto a = per_pixel(fp.a + k);
-    const auto bottom = lerp(texel(fp, 0, k), texel(fp, 1, k), a);
-    const auto top = lerp(texel(fp, 2, k), texel(fp, 3, k), a);
-    return lerp(bottom, top, per_pixel(fp.b + k));
+  // Pixels k + 2h and k + 2h + 1 (h: the half of the group).
+  auto blend_half = [&](const StoredFootprints& fp, int k, int h, auto four_a, auto four_b,
+                        auto spread) HWY_ATTR {
+    auto texel = [&](int t) HWY_ATTR {
+      return hn::Combine(d, hn::LoadU(d4, texels + fp.texel[t][k + 2 * h + 1]),
+                         hn::LoadU(d4, texels + fp.texel[t][k + 2 * h]));
+    };
+    const auto a = hn::TableLookupLanes(four_a, spread);
+    const auto bottom = lerp(texel(0), texel(1), a);
+    const auto top = lerp(texel(2), texel(3), a);
+    return lerp(bottom, top, hn::TableLookupLanes(four_b, spread));
   };
   int k = 0;
   for (; k + 4 <= count; k += 4) {
-    auto color = blend(near, k);
-    const auto f = per_pixel(fraction + k);
-    const auto blends = hn::Gt(f, hn::Zero(d));
-    if (!hn::AllFalse(d, blends)) {
-      color = hn::IfThenElse(blends, lerp(color, blend(far, k), f), color);
+    const auto four_f = hn::LoadDup128(d, fraction + k);
+    const auto blends = hn::Gt(four_f, hn::Zero(d));  // the four pixels', twice
+    const bool any = !hn::AllFalse(d, blends);
+    for (int h = 0; h < 2; ++h) {
+      const auto spread = h == 0 ? spread_low : spread_high;
+      auto color = blend_half(near, k, h, hn::LoadDup128(d, near.a + k),
+                              hn::LoadDup128(d, near.b + k), spread);
+      if (any) {
+        const auto f = hn::TableLookupLanes(four_f, spread);
+        const auto next = blend_half(far, k, h, hn::LoadDup128(d, far.a + k),
+                                     hn::LoadDup128(d, far.b + k), spread);
+        color = hn::IfThenElse(hn::Gt(f, hn::Zero(d)), lerp(color, next, f), color);
+      }
+      hn::StoreU(color, d, rgba[k + 2 * h]);
     }
-    hn::StoreU(color, d, rgba[k]);
   }
   return k;
 }
@@ -446,7 +448,7 @@ HWY_INLINE void SamplePixels(const Source& src, Filter filter, const Coords& coo
   // then one at a time.
   if (src.texels != nullptr) {
     int k = 0;
-#if HWY_ARCH_X86 && HWY_MAX_BYTES >= 64  // AVX-512: 512-bit vectors exist
+#if HWY_ARCH_X86 && HWY_MAX_BYTES >= 32  // AVX2 and AVX-512
     k = BlendFours(src.texels, near, far, fraction, count, rgba);
 #endif
     BlendPixels(LinearCopy{src.texels}, src, near, far, level, fraction, k, count, rgba);

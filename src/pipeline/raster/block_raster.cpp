@@ -25,7 +25,9 @@ namespace hn = hwy::HWY_NAMESPACE;
 using FloatTag = hn::CappedTag<float, kBlockSize>;
 using IntTag = hn::RebindToSigned<FloatTag>;
 
-void CoverBlock(const BlockInput& in, BlockFragments& out) {
+// CoverBlock, with kCoversBlock (BlockInput::covers_block) known.
+template <bool kCoversBlock>
+HWY_INLINE void CoverRows(const BlockInput& in, BlockFragments& out) {
   const FloatTag df;
   const IntTag di;
   const int lanes = static_cast<int>(hn::Lanes(df));
@@ -43,18 +45,21 @@ void CoverBlock(const BlockInput& in, BlockFragments& out) {
     float z_row = 0.0f, inv_w_row = 0.0f;
     const float* depth_row = in.depth + static_cast<std::ptrdiff_t>(y) * in.depth_stride;
     for (int x = 0; x < kBlockSize; x += lanes) {
-      const auto column = hn::Iota(di, x);
-      // Outside some edge when any of the three is negative: test the sign of their OR.
-      auto edges = hn::Set(di, 0);
-      for (int i = 0; i < 3; ++i) {
-        const auto e =
-            hn::Add(hn::Set(di, in.e[i] + in.b[i] * y), hn::Mul(hn::Set(di, in.a[i]), column));
-        edges = hn::Or(edges, e);
+      auto pass = hn::FirstN(df, static_cast<std::size_t>(lanes));  // every lane
+      if constexpr (!kCoversBlock) {
+        const auto column = hn::Iota(di, x);
+        // Outside some edge when any of the three is negative: test the sign of their OR.
+        auto edges = hn::Set(di, 0);
+        for (int i = 0; i < 3; ++i) {
+          const auto e =
+              hn::Add(hn::Set(di, in.e[i] + in.b[i] * y), hn::Mul(hn::Set(di, in.a[i]), column));
+          edges = hn::Or(edges, e);
+        }
+        const auto inside = hn::AndNot(
+            hn::Lt(edges, zero), hn::And(hn::Not(hn::Lt(column, x_begin)), hn::Lt(column, x_end)));
+        pass = hn::RebindMask(df, inside);
+        if (hn::AllFalse(df, pass)) continue;
       }
-      const auto inside = hn::AndNot(
-          hn::Lt(edges, zero), hn::And(hn::Not(hn::Lt(column, x_begin)), hn::Lt(column, x_end)));
-      auto pass = hn::RebindMask(df, inside);
-      if (hn::AllFalse(df, pass)) continue;
       if (!have_z_row) z_row = evaluate_row(t.z, t.ref_y, py), have_z_row = true;
       const int lane0 = y * kBlockSize + x;
       // (px - ref_x), then plane = row + dx * (px - ref_x): evaluate_in_row() lane by lane.
@@ -95,6 +100,14 @@ void CoverBlock(const BlockInput& in, BlockFragments& out) {
     }
   }
   out.mask = mask;
+}
+
+void CoverBlock(const BlockInput& in, BlockFragments& out) {
+  if (in.covers_block) {
+    CoverRows<true>(in, out);
+  } else {
+    CoverRows<false>(in, out);
+  }
 }
 
 void InterpolatePixels(const SetupTriangle& t, const Plane* planes, int varyings, int first,

@@ -114,6 +114,7 @@ void raster_triangle_msaa(TileContext& tile, const SetupTriangle& t) {
   std::fill_n(whole.e, 3, 0), std::fill_n(whole.a, 3, 0), std::fill_n(whole.b, 3, 0);
   whole.x_begin = whole.y_begin = 0;
   whole.x_end = whole.y_end = kBlockSize;
+  whole.covers_block = true;
   whole.triangle = &t;
   whole.varying_planes = out.fragment.planes;
   whole.varyings = Shading::kVaryings;

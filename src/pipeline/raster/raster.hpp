@@ -206,6 +206,7 @@ void raster_triangle(TileContext& tile, const SetupTriangle& t) {
                             in.x_end == kBlockSize && in.y_begin == 0 && in.y_end == kBlockSize;
     const bool likely_whole = all_inside && (!kDepthTest || box_depth.farthest < max_depth);
     in.interpolate = !out.batches() || (likely_whole && out.full_blocks());
+    in.covers_block = all_inside;
     tile.kernels.cover_block(in, block);
     if (block.mask == 0) return;
     int written = 0;

@@ -12,10 +12,12 @@
 #include <string>
 
 #include "core/color.hpp"
+#include "core/truncate_in_range-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace facet::shading::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
+namespace simd = facet::simd::HWY_NAMESPACE;
 
 using FloatTag = hn::ScalableTag<float>;
 using IntTag = hn::RebindToSigned<FloatTag>;
@@ -46,7 +48,8 @@ HWY_INLINE FloatV Clamped(FloatV x) {
 // addition, not fused.
 HWY_INLINE IntV Rounded(FloatV c) {
   const FloatTag df;
-  return hn::ConvertTo(IntTag(), hn::Add(hn::Mul(c, hn::Set(df, 255.0f)), hn::Set(df, 0.5f)));
+  return simd::TruncateInRange(IntTag(),
+                               hn::Add(hn::Mul(c, hn::Set(df, 255.0f)), hn::Set(df, 0.5f)));
 }
 
 // The bits of c (clamped) above those of the first run of the encoding table (color.hpp; 0

@@ -23,11 +23,13 @@
 #include <cstring>
 
 #include "core/texel.hpp"
+#include "core/truncate_in_range-inl.h"
 #include "facet/texture.hpp"
 
 HWY_BEFORE_NAMESPACE();
 namespace facet::sampling::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
+namespace simd = facet::simd::HWY_NAMESPACE;
 
 // Pixels sampled per call at most: the shading stage's batch.
 inline constexpr int kMaxPixels = 64;
@@ -49,7 +51,7 @@ HWY_INLINE FloatV Sanitize(FloatV x) {
   return hn::IfThenElse(hn::Gt(x, hn::Neg(limit)), below_limit, hn::Neg(limit));
 }
 // Floor of a sanitized coordinate (exact; |x| <= 2^23 after Sanitize, so it fits an int).
-HWY_INLINE IntV FloorToInt(FloatV x) { return hn::ConvertTo(IntTag(), hn::Floor(x)); }
+HWY_INLINE IntV FloorToInt(FloatV x) { return simd::TruncateInRange(IntTag(), hn::Floor(x)); }
 
 // i mod size, in [0, size). A power of two takes a mask (with two's complement the positive
 // remainder even for i < 0); other sizes the floor of a float division, which is the true floor:
@@ -204,7 +206,7 @@ HWY_INLINE Footprint Bilinear(const Source& src, Level level, FloatV u, FloatV v
   const FloatV x = Sanitize(hn::Sub(hn::Mul(u, hn::ConvertTo(df, w)), half));
   const FloatV y = Sanitize(hn::Sub(hn::Mul(v, hn::ConvertTo(df, h)), half));
   const FloatV floor_x = hn::Floor(x), floor_y = hn::Floor(y);  // exact
-  const IntV i0 = hn::ConvertTo(di, floor_x), j0 = hn::ConvertTo(di, floor_y);
+  const IntV i0 = simd::TruncateInRange(di, floor_x), j0 = simd::TruncateInRange(di, floor_y);
   Footprint fp;
   fp.a = hn::Sub(x, floor_x);  // in [0, 1)
   fp.b = hn::Sub(y, floor_y);
@@ -371,7 +373,7 @@ HWY_INLINE void StoreLevel(FloatV lod, FloatV top, std::int32_t* level, float* f
   const IntTag di;
   const FloatV below_top = hn::IfThenElse(hn::Lt(top, lod), top, lod);
   const FloatV l = hn::IfThenElse(hn::Gt(lod, hn::Zero(df)), below_top, hn::Zero(df));
-  const IntV l0 = hn::ConvertTo(di, l);
+  const IntV l0 = simd::TruncateInRange(di, l);
   hn::Store(l0, di, level + j);
   hn::Store(hn::Sub(l, hn::ConvertTo(df, l0)), df, fraction + j);
 }

@@ -18,11 +18,13 @@
 
 #include "core/color.hpp"
 #include "core/portable_math.hpp"
+#include "core/truncate_in_range-inl.h"
 #include "shading/shade_batch.hpp"
 
 HWY_BEFORE_NAMESPACE();
 namespace facet::shading::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
+namespace simd = facet::simd::HWY_NAMESPACE;
 
 // Eight lanes at most, as in texel_batch.cpp: batches are often a few pixels.
 using BatchTag = hn::CappedTag<float, 8>;
@@ -223,7 +225,8 @@ HWY_INLINE void StoreDisplayCodes(const Vec3V& rgb, int j, DisplayCodes codes) {
   for (int c = 0; c < 3; ++c) {
     const BatchV clamped =
         StdMin(hn::IfThenElseZero(hn::Gt(channel[c], hn::Zero(d)), channel[c]), hn::Set(d, 1.0f));
-    hn::Store(hn::ConvertTo(di, hn::Add(hn::Mul(clamped, hn::Set(d, 255.0f)), hn::Set(d, 0.5f))),
+    hn::Store(simd::TruncateInRange(
+                  di, hn::Add(hn::Mul(clamped, hn::Set(d, 255.0f)), hn::Set(d, 0.5f))),
               di, codes[c] + j);
   }
 }

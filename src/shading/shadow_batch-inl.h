@@ -145,8 +145,8 @@ HWY_INLINE BatchV FilteredShadow(const ShadowMap& map, const BatchV m[3], const 
   // not made).
   constexpr int kMaxLanes = 8;
   alignas(64) std::int32_t first_x[kMaxLanes], first_y[kMaxLanes];
-  hn::Store(hn::ConvertTo(di, ix), di, first_x);
-  hn::Store(hn::ConvertTo(di, iy), di, first_y);
+  hn::Store(simd::TruncateInRange(di, ix), di, first_x);
+  hn::Store(simd::TruncateInRange(di, iy), di, first_y);
   const float* rows[4][kMaxLanes];
   float clamped[kMaxLanes][4][4];
   const int lanes = static_cast<int>(hn::Lanes(d));

@@ -34,7 +34,8 @@ namespace simd = facet::simd::HWY_NAMESPACE;
 // Pixels sampled per call at most: the shading stage's batch.
 inline constexpr int kMaxPixels = 64;
 // Eight lanes at most: batches are often a few pixels of a small triangle, where AVX-512's
-// sixteen lanes mostly compute padding.
+// sixteen lanes mostly compute padding (and full batches gain nothing from them: BENCHMARKS.md
+// §6).
 constexpr int kMaxLanes = 8;
 using FloatTag = hn::CappedTag<float, kMaxLanes>;
 using IntTag = hn::RebindToSigned<FloatTag>;
@@ -446,8 +447,8 @@ HWY_INLINE void SamplePixels(const Source& src, Filter filter, const Coords& coo
       }
     }
   }
-  // Each pixel's blend: from the linear copy four pixels a vector where it has sixteen lanes,
-  // then one at a time.
+  // Each pixel's blend: from the linear copy whole groups of four pixels in 256-bit vectors
+  // where they exist, then one at a time.
   if (src.texels != nullptr) {
     int k = 0;
 #if HWY_ARCH_X86 && HWY_MAX_BYTES >= 32  // AVX2 and AVX-512

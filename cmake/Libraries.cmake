@@ -30,7 +30,9 @@ function(facet_layer name export_name output_name)
            $<BUILD_INTERFACE:${PROJECT_BINARY_DIR}/include>
            $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>
     PRIVATE ${PROJECT_SOURCE_DIR}/src)
-  target_compile_options(${name} PRIVATE ${FACET_WARNINGS})
+  # A shared layer's own calls bind to its own functions (nothing interposes them), so GCC may
+  # call them directly and inline them, not through the PLT.
+  target_compile_options(${name} PRIVATE ${FACET_WARNINGS} -fno-semantic-interposition)
   target_precompile_headers(${name} PRIVATE ${FACET_PRECOMPILED_HEADERS})
   target_compile_features(${name} PUBLIC cxx_std_20)
   set_target_properties(${name} PROPERTIES

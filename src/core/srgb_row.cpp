@@ -177,9 +177,8 @@ void EncodeSrgbRowGathering(const glm::vec4* colors, int count, float scale, std
 // Every channel as EncodeSrgbRow rounds alpha, lane by lane.
 void RoundUnorm8Row(const glm::vec4* colors, int count, std::uint8_t* rgba) {
   const FloatTag df;
-  const hn::Rebind<std::uint8_t, FloatTag> du8;
   ForEachVector(&colors[0].x, 4 * count, rgba, [&](const float* from, std::uint8_t* to, int) {
-    hn::StoreU(hn::DemoteTo(du8, Rounded(Clamped(hn::LoadU(df, from)))), du8, to);
+    StoreBytes(Rounded(Clamped(hn::LoadU(df, from))), to);  // 0 .. 255: the low bytes
   });
 }
 

@@ -170,13 +170,11 @@ struct SharedLevel {
 };
 struct BaseLevel {};
 
-// The start of each lane's row in its level (row * the level's width), by a shift where the
-// sides are powers of two. Level: each lane's (IntV), one for all (SharedLevel) or the base
-// level (BaseLevel).
-HWY_INLINE IntV RowStart(const Source& src, IntV level, IntV width, IntV row) {
-  const IntTag di;
-  if (!src.power_of_two_u) return hn::Mul(row, width);
-  return hn::Shl(row, hn::Max(hn::Sub(hn::Set(di, src.log2_width), level), hn::Zero(di)));
+// The start of each lane's row in its level (row * the level's width); where one level serves
+// every lane (SharedLevel, BaseLevel) and the sides are powers of two, by a shift. (A shift per
+// lane is itself a multiplication before AVX2.)
+HWY_INLINE IntV RowStart(const Source&, IntV /*level*/, IntV width, IntV row) {
+  return hn::Mul(row, width);
 }
 HWY_INLINE IntV RowStart(const Source& src, SharedLevel level, IntV width, IntV row) {
   if (!src.power_of_two_u) return hn::Mul(row, width);
@@ -206,7 +204,9 @@ HWY_INLINE Footprint Bilinear(const Source& src, Level level, FloatV u, FloatV v
   const FloatV half = hn::Set(df, 0.5f);
   const FloatV x = Sanitize(hn::Sub(hn::Mul(u, hn::ConvertTo(df, w)), half));
   const FloatV y = Sanitize(hn::Sub(hn::Mul(v, hn::ConvertTo(df, h)), half));
-  const FloatV floor_x = hn::Floor(x), floor_y = hn::Floor(y);  // exact
+  // Exact; x and y are never -0 (u * w - 0.5 rounds to +0 at worst), whose floor's sign
+  // differs between targets.
+  const FloatV floor_x = hn::Floor(x), floor_y = hn::Floor(y);
   const IntV i0 = simd::TruncateInRange(di, floor_x), j0 = simd::TruncateInRange(di, floor_y);
   Footprint fp;
   fp.a = hn::Sub(x, floor_x);  // in [0, 1)
@@ -297,8 +297,8 @@ HWY_INLINE Texel Blend(const Fetch& fetch, int level, const StoredFootprints& fp
 // from the linear copy, two pixels a 256-bit vector (lanes 4p .. 4p + 3 are pixel p's channels:
 // a texel is one 128-bit load); returns how many pixels it did. The same operations per lane as
 // the per-pixel blends; a pixel whose fraction is 0 keeps its level's blend (a select: the
-// per-pixel code skips the lerp). (Sixteen lanes hold four pixels, but on this project's CPUs
-// 512-bit operations issue at half the rate, and building them from 128-bit loads costs more.)
+// per-pixel code skips the lerp). (Sixteen lanes hold four pixels, but building them from
+// 128-bit loads takes more shuffles than they save: BENCHMARKS.md §6.)
 HWY_INLINE int BlendFours(const float* texels, const StoredFootprints& near,
                           const StoredFootprints& far, const float* fraction, int count,
                           float (*rgba)[4]) {

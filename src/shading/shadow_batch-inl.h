@@ -20,6 +20,7 @@
 
 #include <hwy/highway.h>
 
+#include "core/truncate_in_range-inl.h"
 #include "shading/batch_math-inl.h"
 #include "shading/shadow_map.hpp"
 

@@ -32,7 +32,8 @@ struct BlockInput {
   std::int32_t b[3];
   // The block pixels the triangle may touch: columns [x_begin, x_end), rows [y_begin, y_end).
   int x_begin, x_end, y_begin, y_end;
-  // Every pixel of the whole block is inside all three edges (classify_edges): no edge tests.
+  // Every pixel of the whole 8x8 block is inside all three edges (classify_edges; under MSAA,
+  // every sample: classify_samples): no edge tests.
   bool covers_block = false;
   float px0, py0;  // centre of block pixel (0, 0), in frame pixels
   const SetupTriangle* triangle;

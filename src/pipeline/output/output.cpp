@@ -2,6 +2,7 @@
 #include "pipeline/output/output.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 
 #include "core/color.hpp"
@@ -28,6 +29,24 @@ void store_row(const Kernels& kernels, Framebuffer& target, std::size_t first_pi
       out[0] = c.r * scale, out[1] = c.g * scale, out[2] = c.b * scale, out[3] = c.a;
     }
   }
+}
+
+// Copies `bytes` bytes of a cleared row into the framebuffer where they differ from what it
+// holds. A framebuffer drawn into frame after frame (the viewer, a frame sequence, `facet bench`)
+// already holds last frame's clear where nothing was drawn: reading a row costs less than
+// writing it, which must first fetch it (and later write it back).
+void write_cleared_row(void* out, const void* row, std::size_t bytes) {
+  if (std::memcmp(out, row, bytes) != 0) std::memcpy(out, row, bytes);
+}
+
+// A tile row of the clear depth.
+const float* clear_depth_row() {
+  static const std::array<float, kMaxTileSize> kRow = [] {
+    std::array<float, kMaxTileSize> row;
+    row.fill(kClearDepth);
+    return row;
+  }();
+  return kRow.data();
 }
 
 }  // namespace
@@ -182,7 +201,7 @@ void resolve_depth_tile(const TileContext& tile, bool cleared, Framebuffer& targ
   for (int y = tile.y0; y < tile.y1; ++y) {
     float* out = target.depth().data() + static_cast<std::size_t>(y) * target.width() + tile.x0;
     if (cleared) {
-      std::fill_n(out, tile.x1 - tile.x0, kClearDepth);
+      write_cleared_row(out, clear_depth_row(), sizeof(float) * (tile.x1 - tile.x0));
     } else {
       std::copy_n(tile.depth + static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride,
                   tile.x1 - tile.x0, out);
@@ -201,9 +220,11 @@ void resolve_cleared_tile(const TileContext& tile, const glm::vec4& clear, float
     for (int x = 0; x < width; ++x) std::memcpy(row_bytes + x * 4, pixel, 4);
     for (int y = tile.y0; y < tile.y1; ++y) {
       std::size_t row = static_cast<std::size_t>(y) * target.width();
-      std::memcpy(target.rgba8().data() + (row + tile.x0) * 4, row_bytes, width * 4);
-      if (target.has_depth())
-        std::fill_n(target.depth().data() + row + tile.x0, width, kClearDepth);
+      write_cleared_row(target.rgba8().data() + (row + tile.x0) * 4, row_bytes, width * 4);
+      if (target.has_depth()) {
+        write_cleared_row(target.depth().data() + row + tile.x0, clear_depth_row(),
+                          sizeof(float) * width);
+      }
     }
     return;
   }
@@ -212,7 +233,8 @@ void resolve_cleared_tile(const TileContext& tile, const glm::vec4& clear, float
     for (int x = tile.x0; x < tile.x1; ++x)
       store_row(*tile.frame->kernels, target, row + x, &clear, 1, scale);
     if (target.has_depth()) {
-      std::fill_n(target.depth().data() + row + tile.x0, tile.x1 - tile.x0, kClearDepth);
+      write_cleared_row(target.depth().data() + row + tile.x0, clear_depth_row(),
+                        sizeof(float) * (tile.x1 - tile.x0));
     }
   }
 }

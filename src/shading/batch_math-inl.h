@@ -225,9 +225,9 @@ HWY_INLINE void StoreDisplayCodes(const Vec3V& rgb, int j, DisplayCodes codes) {
   for (int c = 0; c < 3; ++c) {
     const BatchV clamped =
         StdMin(hn::IfThenElseZero(hn::Gt(channel[c], hn::Zero(d)), channel[c]), hn::Set(d, 1.0f));
-    hn::Store(simd::TruncateInRange(
-                  di, hn::Add(hn::Mul(clamped, hn::Set(d, 255.0f)), hn::Set(d, 0.5f))),
-              di, codes[c] + j);
+    hn::Store(
+        simd::TruncateInRange(di, hn::Add(hn::Mul(clamped, hn::Set(d, 255.0f)), hn::Set(d, 0.5f))),
+        di, codes[c] + j);
   }
 }
 

@@ -2,6 +2,8 @@
 // it, small bins skip per 8x8 block what a later triangle hides there
 // (pipeline/raster/occlusion.cpp), and 8x8 blocks behind what is drawn are rejected (raster.hpp).
 // All must leave every pixel as drawing everything would.
+#include "pipeline/raster/occlusion.hpp"
+
 #include <gtest/gtest.h>
 
 #include "facet/renderer.hpp"
@@ -224,6 +226,17 @@ TEST(Occlusion, BoxHoldsATileExactlyWhenItHoldsAWholeOne) {
   EXPECT_FALSE(holds(193, 32, 202, 39));
   EXPECT_FALSE(holds(192, 33, 202, 39));
   EXPECT_TRUE(holds(150, 20, 202, 39));  // ending at the frame's corner
+}
+
+// The per-block look is for bins of a few large triangles: at most one entry per 16 x 16 pixels
+// of the tile, whatever its size, so a bin of many small triangles skips it.
+TEST(Occlusion, BlockLookIsForBinsOfFewEntriesForTheirTile) {
+  EXPECT_TRUE(pipeline::looks_per_block(16, 64 * 64));  // eight quads, two triangles each
+  EXPECT_FALSE(pipeline::looks_per_block(17, 64 * 64));
+  EXPECT_TRUE(pipeline::looks_per_block(64, 128 * 128));
+  EXPECT_FALSE(pipeline::looks_per_block(65, 128 * 128));
+  EXPECT_TRUE(pipeline::looks_per_block(7, 64 * 30));  // a partial tile at the frame's edge
+  EXPECT_FALSE(pipeline::looks_per_block(8, 64 * 30));
 }
 
 }  // namespace

@@ -32,11 +32,16 @@ std::size_t first_visible_entry(const Frame& frame, const std::uint32_t* bin, st
 // clear color to see, so render_tile does not clear the color.
 bool hides_clear(const Frame& frame, std::uint32_t entry, int x0, int y0, int x1, int y1);
 
-// Bins of at most this many entries also look for hidden work per 8x8 block: the look costs
-// a depth bound per entry and block, which pays when a few large triangles overdraw each
-// other (where no single one covers the tile: along the seam of a full-screen quad's two
-// triangles), not in bins of many small ones.
-inline constexpr std::size_t kMaxBlockOcclusionEntries = 64;
+// Whether a bin of `entries` in a tile of `tile_pixels` also looks for hidden work per 8x8
+// block: when it holds at most one entry per kPixelsPerBlockOcclusionEntry pixels of the tile (16
+// in a 64 x 64 tile). The look costs a depth bound per entry and block the entry touches, which
+// pays when a few large triangles overdraw each other (where no single one covers the tile:
+// along the seam of a full-screen quad's two triangles), not in bins of triangles of a few
+// blocks, which seldom hide one another block by block.
+inline constexpr std::size_t kPixelsPerBlockOcclusionEntry = 256;
+inline bool looks_per_block(std::size_t entries, int tile_pixels) {
+  return entries * kPixelsPerBlockOcclusionEntry <= static_cast<std::size_t>(tile_pixels);
+}
 
 // The same per 8x8 block of the tile [x0, x1) x [y0, y1) (blocks_x blocks per row, aligned to
 // the tile's origin): starts[b] = index into bin[0 .. count) of the first entry that can change

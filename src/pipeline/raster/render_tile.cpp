@@ -98,7 +98,8 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
                             pipeline::hides_clear(frame, *bin, tile.x0, tile.y0, tile.x1, tile.y1);
   pipeline::clear_tile(tile, background, color_hidden);
   std::uint32_t block_starts[pipeline::kMaxTileBlocks];
-  if (bin_end - bin <= static_cast<std::ptrdiff_t>(pipeline::kMaxBlockOcclusionEntries) &&
+  if (pipeline::looks_per_block(static_cast<std::size_t>(bin_end - bin),
+                                (tile.x1 - tile.x0) * (tile.y1 - tile.y0)) &&
       pipeline::first_visible_entries_per_block(frame, bin, bin_end - bin, tile.x0, tile.y0,
                                                 tile.x1, tile.y1, tile.blocks_x, block_starts)) {
     tile.block_starts = block_starts;

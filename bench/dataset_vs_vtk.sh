@@ -13,7 +13,8 @@ MODEL=${1:-/usr/share/glmark2/models/bunny.obj}
 RUNS=${2:-3}
 PYTHON=/usr/bin/python3
 OUT=$(mktemp -d)
-trap 'kill $XVFB_PID 2>/dev/null || true; rm -rf "$OUT"' EXIT
+XVFB_PID=""  # set once Xvfb runs: the checks before it may exit first
+trap '[ -n "$XVFB_PID" ] && kill "$XVFB_PID" 2>/dev/null; rm -rf "$OUT"' EXIT
 "$PYTHON" -c "import vtk" 2>/dev/null || { echo "install python3-vtk9" >&2; exit 2; }
 [ -d build/python/package/facet ] || { echo "build facet first (make build)" >&2; exit 2; }
 

@@ -12,7 +12,8 @@ MODEL=${1:-/usr/share/glmark2/models/bunny.obj}
 RUNS=${2:-7}
 FACET=build/facet
 OUT=$(mktemp -d)
-trap 'kill $XVFB_PID 2>/dev/null || true; rm -rf "$OUT"' EXIT
+XVFB_PID=""  # set once Xvfb runs: the checks before it may exit first
+trap '[ -n "$XVFB_PID" ] && kill "$XVFB_PID" 2>/dev/null; rm -rf "$OUT"' EXIT
 command -v f3d >/dev/null || { echo "f3d is not installed (apt-get install f3d)" >&2; exit 2; }
 command -v Xvfb >/dev/null || { echo "Xvfb is not installed (apt-get install xvfb)" >&2; exit 2; }
 [ -x "$FACET" ] || { echo "build facet first (make build)" >&2; exit 2; }

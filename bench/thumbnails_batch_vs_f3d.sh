@@ -15,7 +15,8 @@ ROUNDS=${1:-3}
 FACET=build/facet
 MODELS=/usr/share/assimp/models
 OUT=$(mktemp -d)
-trap 'kill $XVFB_PID 2>/dev/null || true; rm -rf "$OUT"' EXIT
+XVFB_PID=""  # set once Xvfb runs: the checks before it may exit first
+trap '[ -n "$XVFB_PID" ] && kill "$XVFB_PID" 2>/dev/null; rm -rf "$OUT"' EXIT
 command -v f3d >/dev/null || { echo "f3d is not installed (apt-get install f3d)" >&2; exit 2; }
 command -v Xvfb >/dev/null || { echo "Xvfb is not installed (apt-get install xvfb)" >&2; exit 2; }
 [ -d "$MODELS" ] || { echo "assimp-testmodels is not installed" >&2; exit 2; }

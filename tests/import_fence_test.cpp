@@ -5,19 +5,27 @@
 // that crashes or hangs its OBJ, STL, 3DS, COLLADA or OFF readers once facet's prechecks ran;
 // import_mutations_test.cpp looks for them). Fenced imports are the same as unfenced ones, and
 // fork from a process whose oneTBB workers are busy without stalling.
+#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <stdlib.h>
+#include <unistd.h>
 
 #include <atomic>
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <future>
+#include <iterator>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "facet/error.hpp"
 #include "facet/import.hpp"
+#include "import/assimp_fence.hpp"
+#include "import/assimp_read_report.hpp"
+#include "import/import_internal.hpp"
 #include "support/cli_content_inputs.hpp"
 #include "support/render_helpers.hpp"
 #include "support/required_package.hpp"
@@ -147,22 +155,150 @@ TEST(ImportFence, TurnedOffTheChildIsNotStarted) {
   EXPECT_EQ(import_error(kBox, options), "");
 }
 
+// What the fenced read hands back (assimp's binary dump of its scene, read back here) is what
+// assimp made reading the file here: every mesh attribute, material, node, camera and light.
+void expect_same_textures(const TextureMap& a, const TextureMap& b) {
+  ASSERT_EQ(a.texture == nullptr, b.texture == nullptr);
+  if (!a.texture) return;
+  EXPECT_EQ(a.texture->level(0).width, b.texture->level(0).width);
+  EXPECT_EQ(a.texture->level(0).rgba8, b.texture->level(0).rgba8);
+  EXPECT_EQ(a.transform, b.transform);
+}
+
+void expect_same_scene(const Scene& a, const Scene& b) {
+  ASSERT_EQ(a.meshes.size(), b.meshes.size());
+  for (std::size_t i = 0; i < a.meshes.size(); ++i) {
+    const Mesh &x = *a.meshes[i], &y = *b.meshes[i];
+    EXPECT_EQ(x.topology, y.topology);
+    EXPECT_EQ(x.positions, y.positions);
+    EXPECT_EQ(x.normals, y.normals);
+    EXPECT_EQ(x.texcoords, y.texcoords);
+    EXPECT_EQ(x.colors, y.colors);
+    EXPECT_EQ(x.tangents, y.tangents);
+    EXPECT_EQ(x.indices, y.indices);
+  }
+  ASSERT_EQ(a.materials.size(), b.materials.size());
+  for (std::size_t i = 0; i < a.materials.size(); ++i) {
+    const Material &x = a.materials[i], &y = b.materials[i];
+    EXPECT_EQ(x.name, y.name);
+    EXPECT_EQ(x.shading, y.shading);
+    EXPECT_EQ(x.base_color, y.base_color);
+    EXPECT_EQ(x.specular_color, y.specular_color);
+    EXPECT_EQ(x.shininess, y.shininess);
+    EXPECT_EQ(x.emissive, y.emissive);
+    EXPECT_EQ(x.cull, y.cull);
+    EXPECT_EQ(x.alpha_mode, y.alpha_mode);
+    expect_same_textures(x.base_color_map, y.base_color_map);
+    expect_same_textures(x.normal_map, y.normal_map);
+    expect_same_textures(x.specular_map, y.specular_map);
+  }
+  ASSERT_EQ(a.nodes.size(), b.nodes.size());
+  for (std::size_t i = 0; i < a.nodes.size(); ++i) {
+    EXPECT_EQ(a.nodes[i].name, b.nodes[i].name);
+    EXPECT_EQ(a.nodes[i].parent, b.nodes[i].parent);
+    EXPECT_EQ(a.nodes[i].transform, b.nodes[i].transform);
+    ASSERT_EQ(a.nodes[i].instances.size(), b.nodes[i].instances.size());
+    for (std::size_t k = 0; k < a.nodes[i].instances.size(); ++k) {
+      EXPECT_EQ(a.nodes[i].instances[k].mesh, b.nodes[i].instances[k].mesh);
+      EXPECT_EQ(a.nodes[i].instances[k].material, b.nodes[i].instances[k].material);
+    }
+  }
+  ASSERT_EQ(a.cameras.size(), b.cameras.size());
+  for (std::size_t i = 0; i < a.cameras.size(); ++i) {
+    EXPECT_EQ(a.cameras[i].eye, b.cameras[i].eye);
+    EXPECT_EQ(a.cameras[i].target, b.cameras[i].target);
+    EXPECT_EQ(a.cameras[i].fov_y_degrees, b.cameras[i].fov_y_degrees);
+  }
+  EXPECT_EQ(a.has_file_lights, b.has_file_lights);
+  ASSERT_EQ(a.lighting.lights.size(), b.lighting.lights.size());
+  for (std::size_t i = 0; i < a.lighting.lights.size(); ++i) {
+    EXPECT_EQ(a.lighting.lights[i].type, b.lighting.lights[i].type);
+    EXPECT_EQ(a.lighting.lights[i].position, b.lighting.lights[i].position);
+    EXPECT_EQ(a.lighting.lights[i].direction, b.lighting.lights[i].direction);
+    EXPECT_EQ(a.lighting.lights[i].color, b.lighting.lights[i].color);
+    EXPECT_EQ(a.lighting.lights[i].intensity, b.lighting.lights[i].intensity);
+  }
+}
+
+// Every file of assimp-testmodels that goes to assimp, models or not: the same scene, or the
+// same error, fenced and unfenced.
 TEST(ImportFence, FencedImportIsTheUnfencedOne) {
   REQUIRE_INSTALLED(kOff);
   ImportOptions fenced = quiet(), unfenced = quiet();
   unfenced.fence_assimp = false;
-  for (const fs::path& model : {kBox, kOff}) {
-    SCOPED_TRACE(model.string());
-    const Scene a = import_scene(model.string(), fenced);
-    const Scene b = import_scene(model.string(), unfenced);
-    ASSERT_EQ(a.meshes.size(), b.meshes.size());
-    for (std::size_t i = 0; i < a.meshes.size(); ++i) {
-      EXPECT_EQ(a.meshes[i]->positions, b.meshes[i]->positions);
-      EXPECT_EQ(a.meshes[i]->indices, b.meshes[i]->indices);
+  int compared = 0;
+  for (const fs::directory_entry& entry : fs::recursive_directory_iterator(kSampleModels)) {
+    const std::string extension = io::lower_case(entry.path().extension().string());
+    if (!entry.is_regular_file() || extension == ".ply" || extension == ".stl" ||
+        extension == ".gltf" || extension == ".glb" || extension == ".d") {
+      continue;  // facet's own readers
     }
-    EXPECT_EQ(a.materials.size(), b.materials.size());
-    EXPECT_EQ(a.nodes.size(), b.nodes.size());
+    SCOPED_TRACE(entry.path().string());
+    Scene a, b;
+    std::string a_error, b_error;
+    try {
+      a = import_scene(entry.path().string(), fenced);
+    } catch (const Error& e) {
+      a_error = e.what();
+    }
+    try {
+      b = import_scene(entry.path().string(), unfenced);
+    } catch (const Error& e) {
+      b_error = e.what();
+    }
+    EXPECT_EQ(a_error, b_error);
+    if (!a_error.empty() || !b_error.empty()) continue;
+    expect_same_scene(a, b);
+    ++compared;
   }
+  // OBJ+MTL, 3DS, COLLADA, FBX, OFF and more; embedded textures (FBX, .zae, Half-Life MDL).
+  EXPECT_GT(compared, 250);
+}
+
+// What the probe writes in the child is what the caller gets back.
+TEST(ImportFence, WhatTheChildWritesComesBack) {
+  const io::FencedResult result = io::run_fenced("model", quiet(), [](int out) {
+    [[maybe_unused]] auto written = ::write(out, "the scene", 9);
+  });
+  EXPECT_EQ(result.bytes(), "the scene");
+  ImportOptions unfenced = quiet();
+  unfenced.fence_assimp = false;
+  EXPECT_EQ(io::run_fenced("model", unfenced, [](int) {}).bytes(), "");
+}
+
+// The child's report (the dump, the read's error, refusals, points left out, texture names)
+// reads back whole; bytes that are not a whole report read as none (the caller then reads the
+// file itself).
+TEST(ImportFence, ReadReportsReadBackWholeOrNotAtAll) {
+  io::AssimpReadReport report;
+  report.refusals = {"a.mtl: refused", "b.png: refused"};
+  report.dropped_points = 7;
+  report.dump = "ASSIMP.binary-dump.";
+  report.texture_names = {"skin.png", ""};
+  const std::string path = (fs::temp_directory_path() / "facet_read_report.bin").string();
+  {
+    const int fd = ::open(path.c_str(), O_CREAT | O_TRUNC | O_WRONLY, 0600);
+    ASSERT_GE(fd, 0);
+    EXPECT_TRUE(io::write_read_report(fd, report));
+    ::close(fd);
+  }
+  std::ifstream file(path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  fs::remove(path);
+  const std::optional<io::AssimpReadReport> back = io::parse_read_report(bytes);
+  ASSERT_TRUE(back.has_value());
+  EXPECT_EQ(back->refusals, report.refusals);
+  EXPECT_EQ(back->dropped_points, 7u);
+  EXPECT_EQ(back->error, "");
+  EXPECT_EQ(back->dump, report.dump);
+  EXPECT_EQ(back->texture_names, report.texture_names);
+  for (std::size_t cut = 0; cut < bytes.size(); ++cut) {
+    EXPECT_FALSE(io::parse_read_report(std::string_view(bytes).substr(0, cut))) << cut;
+  }
+  EXPECT_FALSE(io::parse_read_report(bytes + "x"));
+  std::string retagged = bytes;
+  retagged[0] = 'F';
+  EXPECT_FALSE(io::parse_read_report(retagged));
 }
 
 // fork() copies only the calling thread: the child must not need a lock another thread holds.

@@ -271,7 +271,7 @@ A glTF model is drawn at rest unless `time` (seconds) is given: then its animati
 file does not have raises facet.Error. Files the model references must lie in its folder unless
 allow_outside_paths is True.
 
-The formats assimp reads (OBJ, STL, 3DS, FBX, COLLADA, OFF, ...) are first read in a child
+The formats assimp reads (OBJ, 3DS, FBX, COLLADA, OFF, ...) are read in a child
 process (fence_assimp), limited to import_timeout seconds (None: no limit) and
 import_memory_limit bytes of address space (None: half the machine's memory): a crash, a hang
 or a runaway allocation inside assimp raises facet.Error naming the file instead of taking the

@@ -11,6 +11,7 @@
 #include <sys/mman.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -26,6 +27,7 @@
 #include <new>
 #include <string>
 #include <thread>
+#include <utility>
 
 #include "facet/error.hpp"
 
@@ -33,8 +35,9 @@ namespace facet::io {
 namespace {
 
 // The child's exit status when an allocation failed under its memory limit. assimp catches
-// std::bad_alloc and reports it as an ordinary read error, after which the real read would
-// make the same allocation without a limit: the child's new-handler exits with this instead.
+// std::bad_alloc and reports it as an ordinary read error, after which the caller's own read (no
+// dump came back) would make the same allocation without a limit: the child's new-handler exits
+// with this instead.
 constexpr int kOutOfMemoryExit = 97;
 constexpr int kParentGoneExit = 98;
 
@@ -130,7 +133,8 @@ void make_fault(Fault fault, const Limits& limits) {
 // and never unwinds into the caller's frames (an exception there would run the parent's code
 // in the child).
 [[noreturn]] void run_child(pid_t parent, const Limits& limits, int log_fd, int done_fd,
-                            Fault fault, const std::function<void()>& probe) noexcept {
+                            int result_fd, Fault fault,
+                            const std::function<void(int)>& probe) noexcept {
   // The child goes when the thread that forked it goes (the parent killed meanwhile).
   ::prctl(PR_SET_PDEATHSIG, SIGKILL);
   if (::getppid() != parent) ::_exit(kParentGoneExit);
@@ -158,13 +162,13 @@ void make_fault(Fault fault, const Limits& limits) {
   std::set_new_handler(exit_out_of_memory);
   try {
     make_fault(fault, limits);
-    probe();
+    probe(result_fd);
   } catch (const std::bad_alloc&) {
     // Where operator new is replaced by one that throws without asking the new-handler (a
     // host's counting allocator), or the probe found assimp's read failed for want of memory.
     ::_exit(kOutOfMemoryExit);
   } catch (...) {
-    // Any other error the read threw is the real read's to report.
+    // Any other error the read threw is the caller's to find again.
   }
   const char done = 1;
   [[maybe_unused]] auto written = ::write(done_fd, &done, 1);
@@ -310,9 +314,33 @@ std::string what_happened(int status, const Limits& limits, int log_fd) {
 
 }  // namespace
 
-void run_fenced(const std::string& path, const ImportOptions& options,
-                const std::function<void()>& probe) {
-  if (!options.fence_assimp) return;
+FencedResult::FencedResult(int fd) {
+  struct stat about {};
+  if (::fstat(fd, &about) != 0 || about.st_size <= 0) return;
+  void* data =
+      ::mmap(nullptr, static_cast<std::size_t>(about.st_size), PROT_READ, MAP_PRIVATE, fd, 0);
+  if (data == MAP_FAILED) return;
+  data_ = data, size_ = static_cast<std::size_t>(about.st_size);
+}
+
+FencedResult::FencedResult(FencedResult&& other) noexcept
+    : data_(std::exchange(other.data_, nullptr)), size_(std::exchange(other.size_, 0)) {}
+
+FencedResult& FencedResult::operator=(FencedResult&& other) noexcept {
+  if (this != &other) {
+    if (data_) ::munmap(data_, size_);
+    data_ = std::exchange(other.data_, nullptr), size_ = std::exchange(other.size_, 0);
+  }
+  return *this;
+}
+
+FencedResult::~FencedResult() {
+  if (data_) ::munmap(data_, size_);
+}
+
+FencedResult run_fenced(const std::string& path, const ImportOptions& options,
+                        const std::function<void(int)>& probe) {
+  if (!options.fence_assimp) return {};
   const Fault fault = test_fault();
   Limits limits;
   limits.seconds = options.import_time_limit_seconds;
@@ -333,13 +361,19 @@ void run_fenced(const std::string& path, const ImportOptions& options,
                   ": cannot import: cannot start assimp's fenced reader: " + std::strerror(errno));
     const Fd done_read(done_pipe[0]);
     Fd done_write(done_pipe[1]);
+    // What the probe hands back, in memory (a new file for each start).
+    const Fd result(::memfd_create("facet-assimp-result", MFD_CLOEXEC));
+    if (result.get() < 0)
+      throw Error(path +
+                  ": cannot import: cannot start assimp's fenced reader: " + std::strerror(errno));
     const pid_t parent = ::getpid();
     const pid_t pid = ::fork();
     if (pid < 0) {
       throw Error(path +
                   ": cannot import: cannot start assimp's fenced reader: " + std::strerror(errno));
     }
-    if (pid == 0) run_child(parent, limits, log.get(), done_write.get(), fault, probe);
+    if (pid == 0)
+      run_child(parent, limits, log.get(), done_write.get(), result.get(), fault, probe);
     done_write.reset();
     int status = 0;
     const Outcome outcome = wait_for(pid, limits.seconds, status);
@@ -361,7 +395,8 @@ void run_fenced(const std::string& path, const ImportOptions& options,
     }
     char done = 0;
     const bool finished = ::read(done_read.get(), &done, 1) == 1;
-    if (finished && (status == -1 || (WIFEXITED(status) && WEXITSTATUS(status) == 0))) return;
+    if (finished && (status == -1 || (WIFEXITED(status) && WEXITSTATUS(status) == 0)))
+      return FencedResult(result.get());
     throw Error(path + ": cannot import: " + what_happened(status, limits, log.get()));
   }
 }

@@ -2,10 +2,9 @@
 // process under limits, so that a bug inside assimp (an endless loop, a segfault, an assertion's
 // abort, a huge allocation) becomes one facet::Error instead of a hung or dead caller.
 //
-// The child is fork()ed without exec and only probes: it runs `probe` (assimp's read of the
-// file) and exits; the caller then reads the file for real, knowing the same read ends. That
-// costs a second read by assimp, but nothing has to come back from the child, so no serializer
-// has to follow the Scene's fields (docs/import.md has the measured cost).
+// The child is fork()ed without exec: it runs `probe` (assimp's read of the file), which writes
+// what it found to a memory file the caller reads back (import_assimp.cpp: the scene in
+// assimp's own binary dump), and exits.
 //
 // Forking a multi-threaded process (oneTBB's workers, a Python interpreter) leaves in the child
 // only the forking thread; a lock another thread held stays held there. The probe must
@@ -16,23 +15,43 @@
 // held all the same, the wall-clock limit turns the stall into an error, not a hang.
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <string>
+#include <string_view>
 
 #include "facet/import.hpp"
 
 namespace facet::io {
 
+// What a fenced probe handed back: the bytes it wrote, mapped read-only (empty when it wrote
+// none, or when the fence is off).
+class FencedResult {
+ public:
+  FencedResult() = default;
+  explicit FencedResult(int fd);  // maps the file's bytes; the descriptor stays the caller's
+  FencedResult(FencedResult&& other) noexcept;
+  FencedResult& operator=(FencedResult&& other) noexcept;
+  ~FencedResult();
+  std::string_view bytes() const { return {static_cast<const char*>(data_), size_}; }
+
+ private:
+  void* data_ = nullptr;
+  std::size_t size_ = 0;
+};
+
 // Runs `probe` in a child process limited by options (import_time_limit_seconds: wall clock,
 // enforced here with SIGKILL, and CPU time; import_memory_limit_bytes: RLIMIT_AS; no core
-// file). Returns when the child exited normally, whatever the probe found (an error it threw
-// is the real read's to report). Throws facet::Error "<path>: cannot import: ..." when the child
-// crashed, aborted, ran out of its memory, was killed or took too long.
+// file). The probe may write its result to the file descriptor it is given (an anonymous memory
+// file); returns those bytes when the child exited normally, whatever the probe found (an error
+// it threw is the caller's to find again). Throws facet::Error "<path>: cannot import: ..." when
+// the child crashed, aborted, ran out of its memory, was killed or took too long. With
+// options.fence_assimp off, runs nothing and returns no bytes.
 //
 // For tests, the environment variable FACET_FENCE_TEST_FAULT makes the child fail on purpose
 // instead of probing: "crash" (SIGSEGV), "abort" (an assertion's message, then abort), "hang"
 // (a busy loop), "memory" (allocates twice its limit).
-void run_fenced(const std::string& path, const ImportOptions& options,
-                const std::function<void()>& probe);
+FencedResult run_fenced(const std::string& path, const ImportOptions& options,
+                        const std::function<void(int out)>& probe);
 
 }  // namespace facet::io

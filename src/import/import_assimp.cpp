@@ -16,6 +16,7 @@
 #include <assimp/scene.h>
 
 #include <algorithm>
+#include <assimp/Exporter.hpp>
 #include <assimp/Importer.hpp>
 #include <cmath>
 #include <filesystem>
@@ -31,6 +32,7 @@
 #include "facet/error.hpp"
 #include "facet/mesh_tools.hpp"
 #include "import/assimp_fence.hpp"
+#include "import/assimp_read_report.hpp"
 #include "import/guarded_io.hpp"
 
 namespace facet::io {
@@ -272,23 +274,102 @@ const aiScene* read_and_process(Assimp::Importer& importer, const std::string& p
   return importer.ApplyPostProcessing(kPostProcess);
 }
 
+// The names of the scene's embedded textures (the dump leaves them out), back in place; false
+// when the scene has another count of them.
+bool restore_texture_names(const std::vector<std::string>& names, aiScene& ai) {
+  const unsigned count = ai.mTextures ? ai.mNumTextures : 0;
+  if (names.size() != count) return false;
+  for (unsigned i = 0; i < count; ++i) {
+    if (ai.mTextures[i]) ai.mTextures[i]->mFilename.Set(names[i]);
+  }
+  return true;
+}
+
+// convert(), its errors (bad_alloc on absurd sizes, and the like) as facet::Error.
+Scene convert_or_throw(const aiScene& ai, const std::string& path, const ImportOptions& options) {
+  try {
+    return convert(ai, path, options);
+  } catch (const Error&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw Error(path + ": cannot import: " + one_line(e.what()));
+  }
+}
+
+// The fenced child's read (assimp_fence.hpp): assimp reads the file there, and what it made
+// comes back as assimp's binary dump, with the refusals and the points left out. A read that
+// failed reports its error. Allocations past the child's limit end it (the fence's error), but
+// for the dump's: one that does not fit there is left to the caller, who reads the file itself.
+void read_in_child(const std::string& path, const ReferenceRules& rules, int out) {
+  Assimp::Importer importer;
+  auto* files = new GuardedIOSystem(rules);  // the importer owns it
+  importer.SetIOHandler(files);
+  AssimpReadReport report;
+  std::size_t dropped = 0;
+  const aiScene* ai = nullptr;
+  try {
+    ai = read_and_process(importer, path, dropped);
+    // assimp reports an allocation that failed (under the child's memory limit) as an ordinary
+    // read error: the fence must hear of it, or the caller's read makes it without a limit.
+    if (!ai &&
+        std::string_view(importer.GetErrorString()).find("bad_alloc") != std::string_view::npos) {
+      throw std::bad_alloc();
+    }
+    if (!ai) report.error = importer.GetErrorString();
+  } catch (const std::bad_alloc&) {
+    throw;
+  } catch (const std::exception& e) {  // assimp's DeadlyImportError escapes in some readers
+    report.error = e.what();
+    if (report.error.empty()) report.error = "unknown error";
+  }
+  report.refusals = files->refusals();
+  report.dropped_points = dropped;
+  Assimp::Exporter exporter;
+  if (ai) {
+    std::set_new_handler(nullptr);
+    try {
+      const aiExportDataBlob* blob = exporter.ExportToBlob(ai, "assbin");
+      if (!blob || !blob->data) return;
+      report.dump = {static_cast<const char*>(blob->data), blob->size};
+      for (unsigned i = 0; ai->mTextures && i < ai->mNumTextures; ++i) {
+        report.texture_names.emplace_back(ai->mTextures[i] ? ai->mTextures[i]->mFilename.C_Str()
+                                                           : "");
+      }
+    } catch (const std::bad_alloc&) {
+      return;
+    }
+  }
+  write_read_report(out, report);
+}
+
 }  // namespace
 
 Scene import_assimp_scene(const std::string& path, const ImportOptions& options) {
   precheck_model(path);
   const ReferenceRules rules(path, options);
-  // The same read in a child process first (assimp_fence.hpp): a hang or crash inside assimp
-  // is an error here, not this process's end. Its refusals and warnings are the real read's.
-  run_fenced(path, options, [&] {
-    Assimp::Importer probe;
-    probe.SetIOHandler(new GuardedIOSystem(rules));
-    std::size_t dropped = 0;
-    // assimp reports an allocation that failed (under the child's memory limit) as an ordinary
-    // read error: the fence must hear of it, or the real read makes the allocation unlimited.
-    if (!read_and_process(probe, path, dropped) &&
-        std::string_view(probe.GetErrorString()).find("bad_alloc") != std::string_view::npos)
-      throw std::bad_alloc();
-  });
+  // assimp reads the file in a child process (assimp_fence.hpp): a hang or crash inside it is
+  // an error here, not this process's end.
+  const FencedResult fenced =
+      run_fenced(path, options, [&](int out) { read_in_child(path, rules, out); });
+  if (const std::optional<AssimpReadReport> report = parse_read_report(fenced.bytes())) {
+    if (!report->error.empty()) {
+      throw Error(report->refusals.empty() ? path + ": cannot import: " + one_line(report->error)
+                                           : report->refusals.front());
+    }
+    Assimp::Importer importer;
+    const aiScene* ai =
+        importer.ReadFileFromMemory(report->dump.data(), report->dump.size(), 0, "assbin");
+    if (ai && restore_texture_names(report->texture_names, *const_cast<aiScene*>(ai))) {
+      if (report->dropped_points > 0) {
+        io::warn(options, path + ": " + std::to_string(report->dropped_points) +
+                              " points with a non-finite position left out");
+      }
+      for (const std::string& refusal : report->refusals) io::warn(options, refusal);
+      return convert_or_throw(*ai, path, options);
+    }
+  }
+  // Unfenced (ImportOptions::fence_assimp), or the child's read ended without a whole report
+  // (its dump did not fit its memory, or did not read back): the read here.
   Assimp::Importer importer;
   // Every file assimp opens goes through facet's rules (guarded_io.hpp); the importer owns it.
   auto* files = new GuardedIOSystem(rules);
@@ -313,13 +394,7 @@ Scene import_assimp_scene(const std::string& path, const ImportOptions& options)
     throw Error(refused_or(path + ": cannot import: " + one_line(importer.GetErrorString())));
   // The import went on without them (an OBJ's material library): one warning each.
   for (const std::string& refusal : files->refusals()) io::warn(options, refusal);
-  try {
-    return convert(*ai, path, options);
-  } catch (const Error&) {
-    throw;
-  } catch (const std::exception& e) {  // bad_alloc on absurd sizes, and the like
-    throw Error(path + ": cannot import: " + one_line(e.what()));
-  }
+  return convert_or_throw(*ai, path, options);
 }
 
 }  // namespace facet::io

@@ -116,7 +116,8 @@ TEST(Occlusion, NearerSurfacesDrawnEarlierStayVisible) {
 
 // A layered scene in two orders, nearest last (what the bin skipping acts on) and nearest first
 // (where nothing can be skipped): with every layer at its own depth, the images must agree.
-// Frame sizes that leave partial tiles, the smallest and the largest tile size, and layers of
+// Frame sizes that leave partial tiles, the smallest, the default and the largest tile size (the
+// last two look for hidden work per block in bins this small), and layers of
 // every kind the skipping must respect: alpha-masked, lines, and plain opaque.
 TEST(Occlusion, LayerOrderDoesNotMatterWithMaskedLayersLinesAndPartialTiles) {
   constexpr int kOddWidth = 203, kOddHeight = 117;
@@ -151,7 +152,7 @@ TEST(Occlusion, LayerOrderDoesNotMatterWithMaskedLayersLinesAndPartialTiles) {
   const Material lines_m = material({1, 1, 0, 1}, AlphaMode::opaque);
   const Material front_m = material({0, 1, 0, 1}, AlphaMode::opaque);
   for (const Mesh* last : {&front, &tilted}) {
-    for (int tile : {16, 128}) {
+    for (int tile : {16, 64, 128}) {
       RenderSettings settings;
       settings.tile_size = tile;
       auto render = [&](bool nearest_last) {

@@ -1,6 +1,7 @@
 // The child process an assimp read is fenced in (assimp_fence.hpp says why and what the child
 // may touch). The parent waits on a pidfd with the wall-clock limit and kills the child past
-// it; the child limits its own address space, processor time and core files before it probes,
+// it; the child limits its own address space, file sizes, processor time and core files before
+// it reads,
 // and says it finished by writing one byte to a pipe, so that success is known even where the
 // host program has SIGCHLD ignored (then no exit status can be collected).
 #include "import/assimp_fence.hpp"
@@ -103,7 +104,7 @@ struct Limits {
 
 [[noreturn]] void exit_out_of_memory() { ::_exit(kOutOfMemoryExit); }
 
-// FACET_FENCE_TEST_FAULT's failures, made in the child instead of a probe's.
+// FACET_FENCE_TEST_FAULT's failures, made in the child instead of a read's.
 void make_fault(Fault fault, const Limits& limits) {
   switch (fault) {
     case Fault::none:
@@ -134,7 +135,7 @@ void make_fault(Fault fault, const Limits& limits) {
 // in the child).
 [[noreturn]] void run_child(pid_t parent, const Limits& limits, int log_fd, int done_fd,
                             int result_fd, Fault fault,
-                            const std::function<void(int)>& probe) noexcept {
+                            const std::function<void(int)>& read) noexcept {
   // The child goes when the thread that forked it goes (the parent killed meanwhile).
   ::prctl(PR_SET_PDEATHSIG, SIGKILL);
   if (::getppid() != parent) ::_exit(kParentGoneExit);
@@ -154,6 +155,13 @@ void make_fault(Fault fault, const Limits& limits) {
     const rlimit space{limits.address_space, limits.address_space};
     ::setrlimit(RLIMIT_AS, &space);
   }
+  if (limits.budget > 0) {
+    // What the read writes to memory files is outside its address space: limited alike (a
+    // write past the limit fails, and no whole result comes back).
+    const rlimit size{limits.budget, limits.budget};
+    ::setrlimit(RLIMIT_FSIZE, &size);
+    ::signal(SIGXFSZ, SIG_IGN);
+  }
   if (limits.seconds > 0.0) {
     const auto cpu = static_cast<rlim_t>(std::ceil(limits.seconds)) + 1;
     const rlimit processor{cpu, cpu + 1};  // SIGXCPU at the soft limit, SIGKILL at the hard
@@ -162,10 +170,10 @@ void make_fault(Fault fault, const Limits& limits) {
   std::set_new_handler(exit_out_of_memory);
   try {
     make_fault(fault, limits);
-    probe(result_fd);
+    read(result_fd);
   } catch (const std::bad_alloc&) {
     // Where operator new is replaced by one that throws without asking the new-handler (a
-    // host's counting allocator), or the probe found assimp's read failed for want of memory.
+    // host's counting allocator), or the read found assimp's failed for want of memory.
     ::_exit(kOutOfMemoryExit);
   } catch (...) {
     // Any other error the read threw is the caller's to find again.
@@ -339,7 +347,7 @@ FencedResult::~FencedResult() {
 }
 
 FencedResult run_fenced(const std::string& path, const ImportOptions& options,
-                        const std::function<void(int)>& probe) {
+                        const std::function<void(int)>& read) {
   if (!options.fence_assimp) return {};
   const Fault fault = test_fault();
   Limits limits;
@@ -361,7 +369,7 @@ FencedResult run_fenced(const std::string& path, const ImportOptions& options,
                   ": cannot import: cannot start assimp's fenced reader: " + std::strerror(errno));
     const Fd done_read(done_pipe[0]);
     Fd done_write(done_pipe[1]);
-    // What the probe hands back, in memory (a new file for each start).
+    // What the read hands back, in memory (a new file for each start).
     const Fd result(::memfd_create("facet-assimp-result", MFD_CLOEXEC));
     if (result.get() < 0)
       throw Error(path +
@@ -372,8 +380,7 @@ FencedResult run_fenced(const std::string& path, const ImportOptions& options,
       throw Error(path +
                   ": cannot import: cannot start assimp's fenced reader: " + std::strerror(errno));
     }
-    if (pid == 0)
-      run_child(parent, limits, log.get(), done_write.get(), result.get(), fault, probe);
+    if (pid == 0) run_child(parent, limits, log.get(), done_write.get(), result.get(), fault, read);
     done_write.reset();
     int status = 0;
     const Outcome outcome = wait_for(pid, limits.seconds, status);

@@ -1,7 +1,7 @@
 // The fenced assimp read's report (see assimp_read_report.hpp): a tag, then the points left out,
-// the error, the refusals, the texture names and the dump, each text or blob as its length then its
-// bytes, in the byte order of the process that wrote it, which is the one that reads it (a fork of
-// it).
+// the error, the refusals, the texture names, the orthographic widths and the dump, each text or
+// blob as its length then its bytes, in the byte order of the process that wrote it, which is the
+// one that reads it (a fork of it).
 #include "import/assimp_read_report.hpp"
 
 #include <unistd.h>
@@ -61,7 +61,10 @@ bool write_read_report(int fd, const AssimpReadReport& report) {
   for (const std::string& name : report.texture_names) {
     if (!write_bytes(fd, name)) return false;
   }
-  return write_bytes(fd, report.dump);
+  const std::vector<float>& widths = report.orthographic_widths;
+  return write_bytes(
+             fd, {reinterpret_cast<const char*>(widths.data()), widths.size() * sizeof(float)}) &&
+         write_bytes(fd, report.dump);
 }
 
 std::optional<AssimpReadReport> parse_read_report(std::string_view bytes) {
@@ -84,6 +87,9 @@ std::optional<AssimpReadReport> parse_read_report(std::string_view bytes) {
     if (!read_bytes(bytes, text)) return std::nullopt;
     report.texture_names.emplace_back(text);
   }
+  if (!read_bytes(bytes, text) || text.size() % sizeof(float) != 0) return std::nullopt;
+  report.orthographic_widths.resize(text.size() / sizeof(float));
+  if (!text.empty()) std::memcpy(report.orthographic_widths.data(), text.data(), text.size());
   if (!read_bytes(bytes, report.dump) || !bytes.empty()) return std::nullopt;
   return report;
 }

@@ -262,9 +262,9 @@ Scene convert(const aiScene& ai, const std::string& path, const ImportOptions& o
   return scene;
 }
 
-// assimp's read of the file and the post-processing after it, as the fenced probe and the real
-// read both make it (read, then post-process, validation first: point clouds need their faces
-// in between). The importer's scene, or null (importer.GetErrorString() says why); `dropped`:
+// assimp's read of the file and the post-processing after it, as the fenced child and the read
+// in this process both make it (read, then post-process, validation first: point clouds need their
+// faces in between). The importer's scene, or null (importer.GetErrorString() says why); `dropped`:
 // the points with a non-finite position left out.
 const aiScene* read_and_process(Assimp::Importer& importer, const std::string& path,
                                 std::size_t& dropped) {
@@ -274,13 +274,30 @@ const aiScene* read_and_process(Assimp::Importer& importer, const std::string& p
   return importer.ApplyPostProcessing(kPostProcess);
 }
 
-// The names of the scene's embedded textures (the dump leaves them out), back in place; false
-// when the scene has another count of them.
-bool restore_texture_names(const std::vector<std::string>& names, aiScene& ai) {
-  const unsigned count = ai.mTextures ? ai.mNumTextures : 0;
-  if (names.size() != count) return false;
-  for (unsigned i = 0; i < count; ++i) {
-    if (ai.mTextures[i]) ai.mTextures[i]->mFilename.Set(names[i]);
+// What the dump leaves out (AssimpReadReport), taken from the scene read.
+void note_left_out(const aiScene& ai, AssimpReadReport& report) {
+  for (unsigned i = 0; ai.mTextures && i < ai.mNumTextures; ++i) {
+    report.texture_names.emplace_back(ai.mTextures[i] ? ai.mTextures[i]->mFilename.C_Str() : "");
+  }
+  for (unsigned i = 0; ai.mCameras && i < ai.mNumCameras; ++i) {
+    report.orthographic_widths.push_back(ai.mCameras[i] ? ai.mCameras[i]->mOrthographicWidth
+                                                        : 0.0f);
+  }
+}
+
+// ... and put back into the scene read from the dump; false when the scene does not have as
+// many textures and cameras.
+bool restore_left_out(const AssimpReadReport& report, aiScene& ai) {
+  const unsigned textures = ai.mTextures ? ai.mNumTextures : 0;
+  const unsigned cameras = ai.mCameras ? ai.mNumCameras : 0;
+  if (report.texture_names.size() != textures || report.orthographic_widths.size() != cameras) {
+    return false;
+  }
+  for (unsigned i = 0; i < textures; ++i) {
+    if (ai.mTextures[i]) ai.mTextures[i]->mFilename.Set(report.texture_names[i]);
+  }
+  for (unsigned i = 0; i < cameras; ++i) {
+    if (ai.mCameras[i]) ai.mCameras[i]->mOrthographicWidth = report.orthographic_widths[i];
   }
   return true;
 }
@@ -297,9 +314,9 @@ Scene convert_or_throw(const aiScene& ai, const std::string& path, const ImportO
 }
 
 // The fenced child's read (assimp_fence.hpp): assimp reads the file there, and what it made
-// comes back as assimp's binary dump, with the refusals and the points left out. A read that
-// failed reports its error. Allocations past the child's limit end it (the fence's error), but
-// for the dump's: one that does not fit there is left to the caller, who reads the file itself.
+// goes to `out` as assimp's binary dump, with the refusals and the points left out; a read that
+// failed sends its error. Allocations past the child's limit while reading end it (the fence's
+// error); past it while dumping, nothing is sent, and the caller reads the file itself.
 void read_in_child(const std::string& path, const ReferenceRules& rules, int out) {
   Assimp::Importer importer;
   auto* files = new GuardedIOSystem(rules);  // the importer owns it
@@ -320,26 +337,27 @@ void read_in_child(const std::string& path, const ReferenceRules& rules, int out
     throw;
   } catch (const std::exception& e) {  // assimp's DeadlyImportError escapes in some readers
     report.error = e.what();
-    if (report.error.empty()) report.error = "unknown error";
   }
   report.refusals = files->refusals();
   report.dropped_points = dropped;
-  Assimp::Exporter exporter;
-  if (ai) {
-    std::set_new_handler(nullptr);
-    try {
-      const aiExportDataBlob* blob = exporter.ExportToBlob(ai, "assbin");
-      if (!blob || !blob->data) return;
-      report.dump = {static_cast<const char*>(blob->data), blob->size};
-      for (unsigned i = 0; ai->mTextures && i < ai->mNumTextures; ++i) {
-        report.texture_names.emplace_back(ai->mTextures[i] ? ai->mTextures[i]->mFilename.C_Str()
-                                                           : "");
-      }
-    } catch (const std::bad_alloc&) {
-      return;
-    }
+  if (!ai) {
+    (void)write_read_report(out, report);  // unless it failed: then the caller reads the file
+    return;
   }
-  write_read_report(out, report);
+  std::set_new_handler(nullptr);
+  try {
+    Assimp::Exporter exporter;
+    const aiExportDataBlob* blob = exporter.ExportToBlob(ai, "assbin");
+    if (!blob || !blob->data) return;
+    // The caller reads the dump with assimp in its own process: read here first, under the
+    // child's limits, it is known to end there too.
+    Assimp::Importer check;
+    if (!check.ReadFileFromMemory(blob->data, blob->size, 0, "assbin")) return;
+    report.dump = {static_cast<const char*>(blob->data), blob->size};
+    note_left_out(*ai, report);
+    (void)write_read_report(out, report);
+  } catch (const std::exception&) {  // out of memory, or the exporter's own errors
+  }
 }
 
 }  // namespace
@@ -349,9 +367,13 @@ Scene import_assimp_scene(const std::string& path, const ImportOptions& options)
   const ReferenceRules rules(path, options);
   // assimp reads the file in a child process (assimp_fence.hpp): a hang or crash inside it is
   // an error here, not this process's end.
-  const FencedResult fenced =
+  FencedResult fenced =
       run_fenced(path, options, [&](int out) { read_in_child(path, rules, out); });
   if (const std::optional<AssimpReadReport> report = parse_read_report(fenced.bytes())) {
+    if (report->dropped_points > 0) {
+      io::warn(options, path + ": " + std::to_string(report->dropped_points) +
+                            " points with a non-finite position left out");
+    }
     if (!report->error.empty()) {
       throw Error(report->refusals.empty() ? path + ": cannot import: " + one_line(report->error)
                                            : report->refusals.front());
@@ -359,17 +381,18 @@ Scene import_assimp_scene(const std::string& path, const ImportOptions& options)
     Assimp::Importer importer;
     const aiScene* ai =
         importer.ReadFileFromMemory(report->dump.data(), report->dump.size(), 0, "assbin");
-    if (ai && restore_texture_names(report->texture_names, *const_cast<aiScene*>(ai))) {
-      if (report->dropped_points > 0) {
-        io::warn(options, path + ": " + std::to_string(report->dropped_points) +
-                              " points with a non-finite position left out");
-      }
+    fenced = FencedResult();  // the dump is read: its memory goes (report->dump with it)
+    if (ai && restore_left_out(*report, *const_cast<aiScene*>(ai))) {
       for (const std::string& refusal : report->refusals) io::warn(options, refusal);
       return convert_or_throw(*ai, path, options);
     }
   }
-  // Unfenced (ImportOptions::fence_assimp), or the child's read ended without a whole report
-  // (its dump did not fit its memory, or did not read back): the read here.
+  if (options.fence_assimp) {
+    io::warn(options, path +
+                          ": the fenced read sent no scene back (assimp could not dump it within "
+                          "ImportOptions::import_memory_limit_bytes): read in this process");
+  }
+  // Unfenced (ImportOptions::fence_assimp), or the child sent no whole report: the read here.
   Assimp::Importer importer;
   // Every file assimp opens goes through facet's rules (guarded_io.hpp); the importer owns it.
   auto* files = new GuardedIOSystem(rules);

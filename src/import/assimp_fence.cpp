@@ -1,9 +1,8 @@
 // The child process an assimp read is fenced in (assimp_fence.hpp says why and what the child
 // may touch). The parent waits on a pidfd with the wall-clock limit and kills the child past
 // it; the child limits its own address space, file sizes, processor time and core files before
-// it reads,
-// and says it finished by writing one byte to a pipe, so that success is known even where the
-// host program has SIGCHLD ignored (then no exit status can be collected).
+// it reads, and says it finished by writing one byte to a pipe, so that success is known even
+// where the host program has SIGCHLD ignored (then no exit status can be collected).
 #include "import/assimp_fence.hpp"
 
 #include <fcntl.h>

@@ -340,6 +340,7 @@ void read_in_child(const std::string& path, const ReferenceRules& rules, int out
   }
   report.refusals = files->refusals();
   report.dropped_points = dropped;
+  if (!ai && report.error.empty()) report.error = "unknown error";  // a report says it failed
   if (!ai) {
     (void)write_read_report(out, report);  // unless it failed: then the caller reads the file
     return;

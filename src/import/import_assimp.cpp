@@ -313,34 +313,56 @@ Scene convert_or_throw(const aiScene& ai, const std::string& path, const ImportO
   }
 }
 
-// The fenced child's read (assimp_fence.hpp): assimp reads the file there, and what it made
-// goes to `out` as assimp's binary dump, with the refusals and the points left out; a read that
-// failed sends its error. Allocations past the child's limit while reading end it (the fence's
-// error); past it while dumping, nothing is sent, and the caller reads the file itself.
-void read_in_child(const std::string& path, const ReferenceRules& rules, int out) {
-  Assimp::Importer importer;
+// assimp's read of the file (read_and_process) with every file it opens held to facet's rules:
+// the scene, or null when the read failed; `report` gets the error, the refusals and the points
+// left out. The same read in the fenced child and, unfenced, here.
+const aiScene* read_reporting(Assimp::Importer& importer, const std::string& path,
+                              const ReferenceRules& rules, AssimpReadReport& report) {
   auto* files = new GuardedIOSystem(rules);  // the importer owns it
   importer.SetIOHandler(files);
-  AssimpReadReport report;
   std::size_t dropped = 0;
   const aiScene* ai = nullptr;
   try {
     ai = read_and_process(importer, path, dropped);
-    // assimp reports an allocation that failed (under the child's memory limit) as an ordinary
-    // read error: the fence must hear of it, or the caller's read makes it without a limit.
-    if (!ai &&
-        std::string_view(importer.GetErrorString()).find("bad_alloc") != std::string_view::npos) {
-      throw std::bad_alloc();
-    }
     if (!ai) report.error = importer.GetErrorString();
-  } catch (const std::bad_alloc&) {
-    throw;
   } catch (const std::exception& e) {  // assimp's DeadlyImportError escapes in some readers
     report.error = e.what();
   }
+  if (!ai && report.error.empty()) report.error = "unknown error";
   report.refusals = files->refusals();
   report.dropped_points = dropped;
-  if (!ai && report.error.empty()) report.error = "unknown error";  // a report says it failed
+  return ai;
+}
+
+// The import's end, from a read and its report: the points left out warned of; a failed read
+// as one facet::Error (a file assimp needed and was refused makes the failure: that rather than
+// assimp's guess at why the file it could not open is missing); else the refusals warned of
+// (the import went on without them: an OBJ's material library) and the scene converted.
+Scene finish_import(const AssimpReadReport& report, const aiScene* ai, const std::string& path,
+                    const ImportOptions& options) {
+  if (report.dropped_points > 0) {
+    io::warn(options, path + ": " + std::to_string(report.dropped_points) +
+                          " points with a non-finite position left out");
+  }
+  if (!ai) {
+    throw Error(report.refusals.empty() ? path + ": cannot import: " + one_line(report.error)
+                                        : report.refusals.front());
+  }
+  for (const std::string& refusal : report.refusals) io::warn(options, refusal);
+  return convert_or_throw(*ai, path, options);
+}
+
+// The fenced child's read (assimp_fence.hpp): assimp reads the file there, and what it made
+// goes to `out` as assimp's binary dump, with the read's report. Allocations past the child's
+// limit while reading end it (the fence's error); past it while dumping, nothing is sent, and
+// the caller reads the file itself.
+void read_in_child(const std::string& path, const ReferenceRules& rules, int out) {
+  Assimp::Importer importer;
+  AssimpReadReport report;
+  const aiScene* ai = read_reporting(importer, path, rules, report);
+  // assimp reports an allocation that failed (under the child's memory limit) as an ordinary
+  // read error: the fence must hear of it, or the caller's read makes it without a limit.
+  if (!ai && report.error.find("bad_alloc") != std::string::npos) throw std::bad_alloc();
   if (!ai) {
     (void)write_read_report(out, report);  // unless it failed: then the caller reads the file
     return;
@@ -371,21 +393,13 @@ Scene import_assimp_scene(const std::string& path, const ImportOptions& options)
   FencedResult fenced =
       run_fenced(path, options, [&](int out) { read_in_child(path, rules, out); });
   if (const std::optional<AssimpReadReport> report = parse_read_report(fenced.bytes())) {
-    if (report->dropped_points > 0) {
-      io::warn(options, path + ": " + std::to_string(report->dropped_points) +
-                            " points with a non-finite position left out");
-    }
-    if (!report->error.empty()) {
-      throw Error(report->refusals.empty() ? path + ": cannot import: " + one_line(report->error)
-                                           : report->refusals.front());
-    }
+    if (!report->error.empty()) return finish_import(*report, nullptr, path, options);
     Assimp::Importer importer;
     const aiScene* ai =
         importer.ReadFileFromMemory(report->dump.data(), report->dump.size(), 0, "assbin");
     fenced = FencedResult();  // the dump is read: its memory goes (report->dump with it)
     if (ai && restore_left_out(*report, *const_cast<aiScene*>(ai))) {
-      for (const std::string& refusal : report->refusals) io::warn(options, refusal);
-      return convert_or_throw(*ai, path, options);
+      return finish_import(*report, ai, path, options);
     }
   }
   if (options.fence_assimp) {
@@ -395,30 +409,9 @@ Scene import_assimp_scene(const std::string& path, const ImportOptions& options)
   }
   // Unfenced (ImportOptions::fence_assimp), or the child sent no whole report: the read here.
   Assimp::Importer importer;
-  // Every file assimp opens goes through facet's rules (guarded_io.hpp); the importer owns it.
-  auto* files = new GuardedIOSystem(rules);
-  importer.SetIOHandler(files);
-  const aiScene* ai = nullptr;
-  // A file assimp needed and was refused makes the failure: say that rather than assimp's
-  // guess at why the file it could not open is missing.
-  auto refused_or = [&](const std::string& message) {
-    return files->refusals().empty() ? message : files->refusals().front();
-  };
-  try {
-    std::size_t dropped = 0;
-    ai = read_and_process(importer, path, dropped);
-    if (dropped > 0) {
-      io::warn(options, path + ": " + std::to_string(dropped) +
-                            " points with a non-finite position left out");
-    }
-  } catch (const std::exception& e) {  // assimp's DeadlyImportError escapes in some readers
-    throw Error(refused_or(path + ": cannot import: " + one_line(e.what())));
-  }
-  if (!ai)
-    throw Error(refused_or(path + ": cannot import: " + one_line(importer.GetErrorString())));
-  // The import went on without them (an OBJ's material library): one warning each.
-  for (const std::string& refusal : files->refusals()) io::warn(options, refusal);
-  return convert_or_throw(*ai, path, options);
+  AssimpReadReport report;
+  const aiScene* ai = read_reporting(importer, path, rules, report);
+  return finish_import(report, ai, path, options);
 }
 
 }  // namespace facet::io

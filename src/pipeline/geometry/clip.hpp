@@ -22,6 +22,21 @@ enum ClipPlane : unsigned {
 };
 inline constexpr int kClipPlaneCount = 7;
 
+// The frustum's outcode bits of ProjectedVertex::codes.
+inline constexpr unsigned kFrustumCodes = (1u << kClipPlaneCount) - 1;
+
+// The planes a triangle whose vertices' codes or-ed are `codes` must be clipped against (none:
+// its screen vertices are meaningful, and setup takes it as it is). Near, far and a user plane
+// are the same planes in both bounds; the guard band's sides only need checking when a vertex is
+// outside the frustum's sides (the guard band contains them).
+inline unsigned planes_to_clip(unsigned codes) {
+  const unsigned any_out = codes & kFrustumCodes;
+  if (any_out & (kClipLeft | kClipRight | kClipBottom | kClipTop)) {
+    return codes >> kGuardCodeShift & kFrustumCodes;
+  }
+  return any_out & (kClipNear | kClipFar | kClipUser);
+}
+
 // Sutherland-Hodgman adds at most one vertex per plane: 3 + 7.
 inline constexpr int kMaxClipVertices = 3 + kClipPlaneCount;
 

@@ -12,6 +12,7 @@
 #include "core/simd_target.hpp"
 #include "pipeline/geometry/clip.hpp"
 #include "pipeline/geometry/projected_load-inl.h"
+#include "pipeline/setup/pixel_box-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace facet::pipeline::HWY_NAMESPACE {
@@ -20,6 +21,39 @@ namespace hn = hwy::HWY_NAMESPACE;
 using DoubleTag = hn::ScalableTag<double>;
 using FloatTag = hn::Rebind<float, DoubleTag>;
 using UintTag = hn::Rebind<std::uint32_t, DoubleTag>;
+using IntTag = hn::Rebind<std::int32_t, DoubleTag>;
+
+// Lanes whose triangle needs no clipping (planes_to_clip(any) == 0, clip.hpp) and whose pixel
+// box (setup_batch.cpp's, from the vertices' screen positions) holds no pixel.
+HWY_INLINE hn::Mask<UintTag> EmptyBoxes(const CullInput& in, const hn::Vec<UintTag> index[3],
+                                        hn::Vec<UintTag> any) {
+  const FloatTag df;
+  const UintTag du;
+  const IntTag di;
+  const auto zero = hn::Zero(du);
+  const auto sides = hn::Set(du, kClipLeft | kClipRight | kClipBottom | kClipTop);
+  const auto planes =
+      hn::IfThenElse(hn::Ne(hn::And(any, sides), zero),
+                     hn::And(hn::ShiftRight<kGuardCodeShift>(any), hn::Set(du, kFrustumCodes)),
+                     hn::And(any, hn::Set(du, kClipNear | kClipFar | kClipUser)));
+  const auto unclipped = hn::Eq(planes, zero);
+  if (hn::AllFalse(du, unclipped)) return unclipped;
+  hn::Vec<IntTag> x[3], y[3];
+  for (int v = 0; v < 3; ++v) {
+    hn::Vec<FloatTag> screen[4];  // x, y (the bits of integers), z, 1 / w
+    LoadProjectedFields(df, in.projected, kScreenField, index[v], screen);
+    x[v] = hn::BitCast(di, screen[0]), y[v] = hn::BitCast(di, screen[1]);
+  }
+  const auto reach = hn::Set(di, in.reach);
+  const PixelSpans<IntTag> columns =
+      SpanPixels(di, hn::Min(hn::Min(x[0], x[1]), x[2]), hn::Max(hn::Max(x[0], x[1]), x[2]), reach,
+                 hn::Set(di, in.width - 1));
+  const PixelSpans<IntTag> rows =
+      SpanPixels(di, hn::Min(hn::Min(y[0], y[1]), y[2]), hn::Max(hn::Max(y[0], y[1]), y[2]), reach,
+                 hn::Set(di, in.height - 1));
+  const auto empty = hn::Or(hn::Gt(columns.first, columns.last), hn::Gt(rows.first, rows.last));
+  return hn::And(unclipped, hn::RebindMask(du, empty));
+}
 
 void CullTriangles(const CullInput& in, CullSurvivors& out) {
   const DoubleTag dd;
@@ -70,6 +104,9 @@ void CullTriangles(const CullInput& in, CullSurvivors& out) {
                          hn::Or(hn::Ne(hn::And(all, frustum), zero_u), degenerate));
     if (in.culls_front) culled = hn::Or(culled, front);
     if (in.culls_back) culled = hn::Or(culled, hn::Not(front));
+    if (in.drops_empty_boxes && !hn::AllTrue(du, culled)) {
+      culled = hn::Or(culled, EmptyBoxes(in, index, any));
+    }
     const auto keep = hn::AndNot(culled, hn::FirstN(du, static_cast<std::size_t>(valid)));
     hn::StoreU(hn::Compress(index[0], keep), du, out.i0 + kept);
     hn::StoreU(hn::Compress(index[1], keep), du, out.i1 + kept);

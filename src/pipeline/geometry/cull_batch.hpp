@@ -3,8 +3,9 @@
 // (cull_batch.cpp, compiled for every target Highway supports) reads each triangle's three
 // projected vertices and drops it for non-finite positions, all three vertices outside one
 // frustum plane, zero orientation in homogeneous coordinates (homogeneous_orientation's double
-// operations in its order, so every target drops the same triangles), or the facing the draw
-// culls. The survivors are kept in order.
+// operations in its order, so every target drops the same triangles), the facing the draw
+// culls, or (CullInput::drops_empty_boxes) a pixel box holding no pixel. The survivors are kept
+// in order.
 #pragma once
 
 #include <cstdint>
@@ -23,6 +24,15 @@ struct CullInput {
   const ProjectedVertex* projected;
   bool culls_front, culls_back;
   bool positions = false;  // also list where each survivor was in the run (CullSurvivors)
+  // Also drops the triangles setup would drop for an empty pixel box (setup_batch.hpp), among
+  // those that need no clipping (planes_to_clip): in a frame of this size, whose samples reach
+  // this far from a pixel's centre (fixed point: kSampleReach under MSAA, else 0). Scenes of
+  // tiny triangles, shadow maps' distant casters above all, lose most of theirs here, a vector
+  // of survivors' setup saved for each vector of them. Not with per-triangle hooks, which run
+  // for every triangle culling keeps.
+  bool drops_empty_boxes = false;
+  int width = 0, height = 0;
+  std::int32_t reach = 0;
 };
 
 // The triangles that survive, in order, structure of arrays. Room for a vector past the last.

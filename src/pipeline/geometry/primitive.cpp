@@ -8,15 +8,13 @@
 #include "pipeline/geometry/cull_batch.hpp"
 #include "pipeline/geometry/vertex.hpp"
 #include "pipeline/kernels.hpp"
+#include "pipeline/setup/sample_positions.hpp"
 #include "pipeline/setup/setup.hpp"
 #include "pipeline/setup/setup_batch.hpp"
 #include "shading/surface.hpp"
 
 namespace facet::pipeline {
 namespace {
-
-// The frustum's outcode bits of ProjectedVertex::codes.
-constexpr unsigned kFrustumCodes = (1u << kClipPlaneCount) - 1;
 
 struct Assembler {
   PrimitiveSink& out;
@@ -35,6 +33,7 @@ struct Assembler {
   // with per-triangle hooks); the others one clipped fan at a time (set_up_fan).
   SetupBatchKernel setup_kernel = nullptr;
   bool by_runs = false;
+  std::int32_t sample_reach = 0;  // how far a pixel's samples lie from its centre (fixed point)
   // set_up_fan's vertices, projected here; the kernel reads indices and varyings a vector at a
   // time past their ends (kSetupBatchSlack, kOverWSlack).
   static constexpr int kMaxFan = kMaxClipVertices - 2;
@@ -87,20 +86,9 @@ struct Assembler {
     std::uint32_t index;  // in the mesh, when the draw has a triangle hook
   };
 
-  // The planes a triangle whose vertices' codes or-ed are `codes` must be clipped against. Near,
-  // far and a user plane are the same planes in both bounds; the guard band's sides only need
-  // checking when a vertex is outside the frustum's sides (the guard band contains them).
-  static unsigned clip_planes(unsigned codes) {
-    const unsigned any_out = codes & kFrustumCodes;
-    if (any_out & (kClipLeft | kClipRight | kClipBottom | kClipTop)) {
-      return codes >> kGuardCodeShift & kFrustumCodes;
-    }
-    return any_out & (kClipNear | kClipFar | kClipUser);
-  }
-
   // Whether a triangle culling accepted goes to the setup kernel in a run: assemble()'s common
   // case, tested without its call.
-  bool kernel_sets_up(unsigned codes) const { return by_runs && clip_planes(codes) == 0; }
+  bool kernel_sets_up(unsigned codes) const { return by_runs && planes_to_clip(codes) == 0; }
 
   // Sets up the fan (v[0], v[i], v[i + 1]) of a convex polygon of `count` vertices in clip
   // space, inside the guard band, with the setup kernel; returns how many triangles it dropped.
@@ -139,7 +127,7 @@ struct Assembler {
     }
     if (!pipe.fills_triangles) return;
 
-    const unsigned planes = clip_planes(a.codes);
+    const unsigned planes = planes_to_clip(a.codes);
     if (planes == 0 && !hooks) {  // set up from the projected vertices (wireframe draws)
       const std::uint32_t index[3][1 + kSetupBatchSlack] = {{i0}, {i1}, {i2}};
       const std::uint32_t front[1 + kSetupBatchSlack] = {front_facing ? 1u : 0u};
@@ -267,7 +255,8 @@ void assemble_triangles(Assembler& assembler, const Mesh& mesh, std::size_t begi
   for (std::size_t first = begin; first < end; first += kCullBatch) {
     const int count = static_cast<int>(std::min<std::size_t>(end - first, kCullBatch));
     cull({list_triangles(mesh, first, count, listed), count, assembler.vertices.projected.data(),
-          assembler.culls_front, assembler.culls_back, assembler.draw.pipeline.triangle != nullptr},
+          assembler.culls_front, assembler.culls_back, assembler.draw.pipeline.triangle != nullptr,
+          assembler.by_runs, assembler.width, assembler.height, assembler.sample_reach},
          survivors);
     assembler.counts.culled += static_cast<std::uint64_t>(count - survivors.count);
     // Runs of survivors that need no clipping go to the setup kernel whole; the others, in
@@ -312,6 +301,7 @@ void assemble_primitives(const Frame& frame, std::uint32_t draw_index, const Dra
   // Edges come before their triangle's fill, so wireframe draws set up one at a time (and draws
   // of edges only set up no triangle).
   assembler.setup_kernel = frame.kernels->setup;
+  assembler.sample_reach = frame.samples > 1 ? kSampleReach : 0;
   assembler.by_runs =
       !assembler.hooks && !draw.pipeline.draws_edges && draw.pipeline.fills_triangles;
   assemble_triangles(assembler, mesh, begin, end);

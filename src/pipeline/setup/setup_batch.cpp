@@ -24,6 +24,7 @@
 #include "pipeline/geometry/projected_load-inl.h"
 #include "pipeline/setup/back_faces.hpp"
 #include "pipeline/setup/fixed_point.hpp"
+#include "pipeline/setup/pixel_box-inl.h"
 #include "pipeline/setup/sample_positions.hpp"
 #include "pipeline/setup/setup.hpp"
 
@@ -208,25 +209,16 @@ int SetupBatchLanes(const SetupBatch& b, const SetupBatchTarget& target) {
     swap(negative_float, z[1], z[2]), swap(negative_float, inv_w[1], inv_w[2]);
     hn::Store(hn::VecFromMask(di, negative), di, swapped);
 
-    // The pixel box: first centre at or after the smallest coordinate, floor((lo + 127) / 256),
-    // and last at or before the largest, floor((hi - 128) / 256), clamped to the frame.
-    const auto first_centre = [&](IntVec lo) {
-      return hn::ShiftRight<kSubpixelBits>(
-          hn::Add(lo, hn::Set(di, kSubpixelScale - 1 - kHalfPixel)));
-    };
-    const auto last_centre = [&](IntVec hi) {
-      return hn::ShiftRight<kSubpixelBits>(hn::Sub(hi, hn::Set(di, kHalfPixel)));
-    };
+    // The pixel box (under MSAA, of the pixels whose samples the triangle may cover: widened by
+    // the samples' reach, sample_positions.hpp), clamped to the frame.
     const IntVec low_x = hn::Min(hn::Min(x[0], x[1]), x[2]);
     const IntVec low_y = hn::Min(hn::Min(y[0], y[1]), y[2]);
     const IntVec high_x = hn::Max(hn::Max(x[0], x[1]), x[2]);
     const IntVec high_y = hn::Max(hn::Max(y[0], y[1]), y[2]);
-    // Under MSAA, the pixels whose samples the triangle may cover: the box widened by the
-    // samples' reach (sample_positions.hpp).
-    const IntVec box_x0 = hn::Max(zero, first_centre(hn::Sub(low_x, reach)));
-    const IntVec box_y0 = hn::Max(zero, first_centre(hn::Sub(low_y, reach)));
-    const IntVec box_x1 = hn::Min(last_x, last_centre(hn::Add(high_x, reach)));
-    const IntVec box_y1 = hn::Min(last_y, last_centre(hn::Add(high_y, reach)));
+    const PixelSpans<IntTag> columns = SpanPixels(di, low_x, high_x, reach, last_x);
+    const PixelSpans<IntTag> rows = SpanPixels(di, low_y, high_y, reach, last_y);
+    const IntVec box_x0 = columns.first, box_x1 = columns.last;
+    const IntVec box_y0 = rows.first, box_y1 = rows.last;
     keep = hn::AndNot(hn::Or(hn::Gt(box_x0, box_x1), hn::Gt(box_y0, box_y1)), keep);
     hn::Store(box_x0, di, min_x), hn::Store(box_y0, di, min_y);
     hn::Store(box_x1, di, max_x), hn::Store(box_y1, di, max_y);

@@ -26,10 +26,10 @@ struct CullInput {
   bool positions = false;  // also list where each survivor was in the run (CullSurvivors)
   // Also drops the triangles setup would drop for an empty pixel box (setup_batch.hpp), among
   // those that need no clipping (planes_to_clip): in a frame of this size, whose samples reach
-  // this far from a pixel's centre (fixed point: kSampleReach under MSAA, else 0). Scenes of
-  // tiny triangles, shadow maps' distant casters above all, lose most of theirs here, a vector
-  // of survivors' setup saved for each vector of them. Not with per-triangle hooks, which run
-  // for every triangle culling keeps.
+  // this far from a pixel's centre (fixed point: kSampleReach under MSAA, else 0). Setup works
+  // a vector of triangles at a time, dropped or not: in scenes of tiny triangles (shadow maps'
+  // distant casters above all), most of the vectors it would have spent on them are saved. Not
+  // with per-triangle hooks, which run for every triangle culling keeps.
   bool drops_empty_boxes = false;
   int width = 0, height = 0;
   std::int32_t reach = 0;

@@ -74,6 +74,16 @@ std::vector<Survivor> expected(const std::vector<pipeline::ProjectedVertex>& p,
   return out;
 }
 
+// The kernel's survivors are `want`, in order.
+void expect_survivors(const pipeline::CullSurvivors& got, const std::vector<Survivor>& want) {
+  ASSERT_EQ(got.count, static_cast<int>(want.size()));
+  for (int k = 0; k < got.count; ++k) {
+    EXPECT_EQ((Survivor{got.i0[k], got.i1[k], got.i2[k], got.codes[k], got.front_facing[k] != 0}),
+              want[k])
+        << "survivor " << k;
+  }
+}
+
 TEST(CullBatch, KeepsWhatTheDefinitionKeepsOnEveryTarget) {
   std::mt19937 rng(9);
   std::uniform_real_distribution<float> coordinate(-2.0f, 2.0f);
@@ -112,13 +122,7 @@ TEST(CullBatch, KeepsWhatTheDefinitionKeepsOnEveryTarget) {
             expected(vertices, indices.data(), count, culls_front, culls_back);
         pipeline::CullSurvivors got;
         cull({indices.data(), count, vertices.data(), culls_front, culls_back}, got);
-        ASSERT_EQ(got.count, static_cast<int>(want.size()));
-        for (int k = 0; k < got.count; ++k) {
-          EXPECT_EQ(
-              (Survivor{got.i0[k], got.i1[k], got.i2[k], got.codes[k], got.front_facing[k] != 0}),
-              want[k])
-              << "survivor " << k;
-        }
+        expect_survivors(got, want);
         if (count == pipeline::kCullBatch && mode == 2) {
           EXPECT_GT(got.count, count / 4);  // the run has both survivors
           EXPECT_LT(got.count, count);      // and culled triangles
@@ -176,13 +180,7 @@ TEST(CullBatch, DropsWhatSetupWouldForAnEmptyPixelBox) {
         cull({indices.data(), count, vertices.data(), false, false, false, true, kWidth, kHeight,
               reach},
              got);
-        ASSERT_EQ(got.count, static_cast<int>(want.size()));
-        for (int k = 0; k < got.count; ++k) {
-          EXPECT_EQ(
-              (Survivor{got.i0[k], got.i1[k], got.i2[k], got.codes[k], got.front_facing[k] != 0}),
-              want[k])
-              << "survivor " << k;
-        }
+        expect_survivors(got, want);
         if (count == pipeline::kCullBatch) {
           // Both kinds in the run: dropped for their box, and kept (a box with a pixel, or left
           // to clipping).

@@ -44,12 +44,13 @@ bool empty_box(const pipeline::ScreenVertex* v[3], int width, int height, std::i
   return x0 > x1 || y0 > y1;
 }
 
-// What the kernel keeps of `count` triangles; with boxes (width, height, reach), setup's empty
-// boxes are dropped too.
+// The frame whose empty pixel boxes the kernel drops (CullInput::drops_empty_boxes).
 struct Boxes {
   int width = 0, height = 0;
   std::int32_t reach = 0;
 };
+
+// What the kernel keeps of `count` triangles; with boxes, setup's empty boxes are dropped too.
 std::vector<Survivor> expected(const std::vector<pipeline::ProjectedVertex>& p,
                                const std::uint32_t* indices, int count, bool culls_front,
                                bool culls_back, const Boxes* boxes = nullptr) {

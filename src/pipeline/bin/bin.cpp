@@ -72,8 +72,7 @@ void for_each_entry(const Frame& frame, std::size_t begin, std::size_t end, Visi
 bool may_touch_tile(const Frame& frame, const SetupTriangle& t, int tx, int ty) {
   const int ts = frame.tile_size;
   return triangle_may_touch(t, tx * ts, ty * ts, std::min((tx + 1) * ts, frame.width),
-                            std::min((ty + 1) * ts, frame.height),
-                            frame.samples > 1 ? kSampleReach : 0);
+                            std::min((ty + 1) * ts, frame.height), sample_reach(frame.samples));
 }
 
 // Calls visit(tile, entry, hides) for every tile each primitive of entries [begin, end) may

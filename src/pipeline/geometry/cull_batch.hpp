@@ -24,12 +24,14 @@ struct CullInput {
   const ProjectedVertex* projected;
   bool culls_front, culls_back;
   bool positions = false;  // also list where each survivor was in the run (CullSurvivors)
-  // Also drops the triangles setup would drop for an empty pixel box (setup_batch.hpp), among
+  // Also drops the triangles setup would drop for an empty pixel box (setup_batch.cpp), among
   // those that need no clipping (planes_to_clip): in a frame of this size, whose samples reach
   // this far from a pixel's centre (fixed point: kSampleReach under MSAA, else 0). Setup works
   // a vector of triangles at a time, dropped or not: in scenes of tiny triangles (shadow maps'
-  // distant casters above all), most of the vectors it would have spent on them are saved. Not
-  // with per-triangle hooks, which run for every triangle culling keeps.
+  // distant casters above all), most of the vectors it would have spent on them are saved. Only
+  // where every survivor that needs no clipping goes to the setup kernel as it is
+  // (primitive.cpp's by_runs: no per-triangle hooks, which run for every triangle culling keeps,
+  // and no wireframe edges, which are drawn whatever the fill).
   bool drops_empty_boxes = false;
   int width = 0, height = 0;
   std::int32_t reach = 0;

@@ -301,7 +301,7 @@ void assemble_primitives(const Frame& frame, std::uint32_t draw_index, const Dra
   // Edges come before their triangle's fill, so wireframe draws set up one at a time (and draws
   // of edges only set up no triangle).
   assembler.setup_kernel = frame.kernels->setup;
-  assembler.sample_reach = frame.samples > 1 ? kSampleReach : 0;
+  assembler.sample_reach = sample_reach(frame.samples);
   assembler.by_runs =
       !assembler.hooks && !draw.pipeline.draws_edges && draw.pipeline.fills_triangles;
   assemble_triangles(assembler, mesh, begin, end);

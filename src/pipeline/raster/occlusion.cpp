@@ -45,9 +45,6 @@ DepthRange over_samples(const Frame& frame, const SetupTriangle& t, DepthRange r
   return {range.nearest + steps.z_min, range.farthest + steps.z_max};  // NaN stays
 }
 
-// How far from a pixel centre the frame's samples lie (kSampleReach under MSAA).
-std::int32_t sample_reach(const Frame& frame) { return frame.samples > 1 ? kSampleReach : 0; }
-
 // depth_range_over the part of t's bounding box in the rectangle [x0, x1) x [y0, y1), over its
 // samples.
 DepthRange depth_range_within(const Frame& frame, const SetupTriangle& t, int x0, int y0, int x1,
@@ -59,7 +56,7 @@ DepthRange depth_range_within(const Frame& frame, const SetupTriangle& t, int x0
 
 // triangle_covers for every sample of the rectangle's pixels.
 bool covers_samples(const Frame& frame, const SetupTriangle& t, int x0, int y0, int x1, int y1) {
-  return triangle_covers(t, x0, y0, x1, y1, sample_reach(frame));
+  return triangle_covers(t, x0, y0, x1, y1, sample_reach(frame.samples));
 }
 
 // Whether entry could hide the tile: an occluding draw's triangle whose bounding box holds the
@@ -152,7 +149,7 @@ bool first_visible_entries_per_block(const Frame& frame, const std::uint32_t* bi
     starts[b] = 0;
     nearest_so_far[b] = std::numeric_limits<float>::infinity();
   }
-  const std::int32_t reach = sample_reach(frame);
+  const std::int32_t reach = sample_reach(frame.samples);
   for (std::size_t i = 0; i < count; ++i) {
     const ScanEntry e = scan_entry(frame, bin[i]);
     if (!e.triangle) return true;

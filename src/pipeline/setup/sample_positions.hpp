@@ -50,4 +50,8 @@ inline constexpr std::int32_t kSampleUnit = kSubpixelScale / 16;
 // tests, when the frame has more than one sample.
 inline constexpr std::int32_t kSampleReach = kHalfPixel;
 
+// How far from a pixel's centre the samples of a frame of `samples` a pixel lie: kSampleReach,
+// or 0 at one sample. Culling, setup, binning and the occlusion tests widen boxes by it alike.
+inline std::int32_t sample_reach(int samples) { return samples > 1 ? kSampleReach : 0; }
+
 }  // namespace facet::pipeline

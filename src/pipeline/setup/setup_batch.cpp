@@ -159,8 +159,7 @@ int SetupBatchLanes(const SetupBatch& b, const SetupBatchTarget& target) {
   const IntVec last_x = hn::Set(di, target.width - 1), last_y = hn::Set(di, target.height - 1);
   const FloatVec to_pixels = hn::Set(df, 1.0f / static_cast<float>(kSubpixelScale));
   const int samples = target.out.frame().samples;
-  const bool multisampled = samples > 1;
-  const IntVec reach = hn::Set(di, multisampled ? kSampleReach : 0);
+  const IntVec reach = hn::Set(di, sample_reach(samples));
   // One vector of triangles' results, for the per-triangle part.
   alignas(64) std::int32_t swapped[kLanes];
   alignas(64) std::int32_t a[3][kLanes], bx[3][kLanes];

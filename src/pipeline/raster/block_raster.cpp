@@ -241,12 +241,13 @@ int WriteBoxDepths(const SetupTriangle& t, int x0, int y0, int width, int height
                                   nullptr);
 }
 
-int FindBoxSamples(const SampleBoxSearch& in, std::int16_t* xs, std::int16_t* ys,
-                   std::uint16_t* masks) {
-  const FloatTag df;
-  const IntTag di;
-  const hn::Rebind<std::int16_t, FloatTag> d16;
-  const hn::Rebind<std::uint16_t, FloatTag> du16;
+// FindBoxSamples' rows, vectors of DF's lanes at a time.
+template <class DF>
+HWY_INLINE int FindBoxSampleRows(DF df, const SampleBoxSearch& in, std::int16_t* xs,
+                                 std::int16_t* ys, std::uint16_t* masks) {
+  const hn::RebindToSigned<DF> di;
+  const hn::Rebind<std::int16_t, DF> d16;
+  const hn::Rebind<std::uint16_t, DF> du16;
   const int lanes = static_cast<int>(hn::Lanes(df));
   const SetupTriangle& t = *in.triangle;
   const auto half = hn::Set(df, 0.5f);
@@ -311,6 +312,16 @@ int FindBoxSamples(const SampleBoxSearch& in, std::int16_t* xs, std::int16_t* ys
     }
   }
   return count;
+}
+
+// FindBoxSamples in vectors of up to eight lanes for rows of eight pixels at most, of up to
+// sixteen for wider ones (as FindBoxRowsOfWidth).
+int FindBoxSamples(const SampleBoxSearch& in, std::int16_t* xs, std::int16_t* ys,
+                   std::uint16_t* masks) {
+  if (in.width > kBlockSize) {
+    return FindBoxSampleRows(hn::CappedTag<float, 16>(), in, xs, ys, masks);
+  }
+  return FindBoxSampleRows(FloatTag(), in, xs, ys, masks);
 }
 
 // FindBoxSamples for the triangles whose edge coefficients need more than 32 bits: the edge

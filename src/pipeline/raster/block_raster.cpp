@@ -136,6 +136,15 @@ void InterpolatePixels(const SetupTriangle& t, const Plane* planes, int varyings
   }
 }
 
+// search(tag) with the tag of a box row `width` pixels wide: vectors of up to eight lanes for
+// rows of eight pixels at most, of up to sixteen for wider ones (one vector where two of eight
+// would be half empty).
+template <class Search>
+HWY_INLINE int SearchRowsOfWidth(int width, const Search& search) {
+  if (width > kBlockSize) return search(hn::CappedTag<float, 16>());
+  return search(FloatTag());
+}
+
 // The depth buffer's element: written by the depth-writing search only.
 template <bool kWritesDepth>
 using DepthElement = std::conditional_t<kWritesDepth, float, const float>;
@@ -213,20 +222,17 @@ void BoxEdges(const SetupTriangle& t, int x0, int y0, std::int32_t e_first[3]) {
   }
 }
 
-// FindBoxRows in vectors of up to eight lanes for rows of eight pixels at most, of up to
-// sixteen for wider ones.
+// FindBoxRows in vectors as wide as the box's rows need (SearchRowsOfWidth).
 template <bool kWritesDepth>
 int FindBoxRowsOfWidth(const SetupTriangle& t, int x0, int y0, int width, int height,
                        DepthElement<kWritesDepth>* depth, int depth_stride, bool depth_test,
                        std::int16_t* xs, std::int16_t* ys) {
   std::int32_t e_first[3];
   BoxEdges(t, x0, y0, e_first);
-  if (width > kBlockSize) {
-    return FindBoxRows<kWritesDepth>(hn::CappedTag<float, 16>(), t, e_first, x0, y0, width, height,
-                                     depth, depth_stride, depth_test, xs, ys);
-  }
-  return FindBoxRows<kWritesDepth>(FloatTag(), t, e_first, x0, y0, width, height, depth,
-                                   depth_stride, depth_test, xs, ys);
+  return SearchRowsOfWidth(width, [&](auto df) HWY_ATTR {
+    return FindBoxRows<kWritesDepth>(df, t, e_first, x0, y0, width, height, depth, depth_stride,
+                                     depth_test, xs, ys);
+  });
 }
 
 int FindBoxPixels(const SetupTriangle& t, int x0, int y0, int width, int height, const float* depth,
@@ -314,14 +320,11 @@ HWY_INLINE int FindBoxSampleRows(DF df, const SampleBoxSearch& in, std::int16_t*
   return count;
 }
 
-// FindBoxSamples in vectors of up to eight lanes for rows of eight pixels at most, of up to
-// sixteen for wider ones (as FindBoxRowsOfWidth).
+// FindBoxSampleRows in vectors as wide as the box's rows need (SearchRowsOfWidth).
 int FindBoxSamples(const SampleBoxSearch& in, std::int16_t* xs, std::int16_t* ys,
                    std::uint16_t* masks) {
-  if (in.width > kBlockSize) {
-    return FindBoxSampleRows(hn::CappedTag<float, 16>(), in, xs, ys, masks);
-  }
-  return FindBoxSampleRows(FloatTag(), in, xs, ys, masks);
+  return SearchRowsOfWidth(
+      in.width, [&](auto df) HWY_ATTR { return FindBoxSampleRows(df, in, xs, ys, masks); });
 }
 
 // FindBoxSamples for the triangles whose edge coefficients need more than 32 bits: the edge

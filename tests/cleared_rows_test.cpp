@@ -1,21 +1,26 @@
 // Tiles where nothing is drawn write the clear color and depth only where the framebuffer does not
-// hold them already (pipeline/output/output.cpp, write_cleared_row): a framebuffer drawn into
-// again, whatever it held, must end exactly as a new one does.
+// hold them already, or into a large framebuffer with streaming stores
+// (pipeline/output/framebuffer_rows.hpp): a framebuffer drawn into again, whatever it held, must
+// end exactly as a new one does, and the rows written either way hold the same bytes.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <iterator>
+#include <numeric>
+#include <vector>
 
 #include "facet/renderer.hpp"
+#include "pipeline/output/framebuffer_rows.hpp"
 #include "support/render_helpers.hpp"
 
 namespace facet::test {
 namespace {
 
-constexpr int kWidth = 200,
-              kHeight = 150;  // empty tiles around the quad, partial ones at the edges
-
-// A small quad in the middle of the frame, cleared to `clear`, into `target`.
+// A small quad in the middle of the frame, cleared to `clear`, into `target` (empty tiles around
+// the quad, partial ones at the edges).
 void render_quad(const glm::vec4& clear, Framebuffer& target) {
+  const int width = target.width(), height = target.height();
   RenderSettings settings;
   settings.clear_color = clear;
   Renderer renderer(settings);
@@ -23,30 +28,65 @@ void render_quad(const glm::vec4& clear, Framebuffer& target) {
   material.shading = ShadingModel::unlit;
   material.base_color = {1.0f, 0.5f, 0.0f, 1.0f};
   const Mesh quad = soup_quad(-0.5f, -0.5f, 0.5f, 0.5f, -5.0f);
-  renderer.begin_frame(test_camera(kWidth, kHeight), Lighting{});
+  renderer.begin_frame(test_camera(width, height), Lighting{});
   renderer.draw(quad, material);
   renderer.finish(target);
 }
 
-Framebuffer fresh_render(const glm::vec4& clear) {
-  Framebuffer target(kWidth, kHeight);
+Framebuffer fresh_render(const glm::vec4& clear, int width, int height) {
+  Framebuffer target(width, height);
   render_quad(clear, target);
   return target;
 }
 
-TEST(ClearedRows, AFramebufferDrawnIntoAgainEndsAsANewOne) {
+// Each frame over what the one before left: garbage, then the other clear, then the same.
+void expect_reused_ends_as_new(int width, int height) {
   const glm::vec4 blue{0.1f, 0.2f, 0.6f, 1.0f}, grey{0.5f, 0.5f, 0.5f, 1.0f};
-  const Framebuffer expected_blue = fresh_render(blue), expected_grey = fresh_render(grey);
+  const Framebuffer expected_blue = fresh_render(blue, width, height);
+  const Framebuffer expected_grey = fresh_render(grey, width, height);
   ASSERT_NE(expected_blue.rgba8(), expected_grey.rgba8());
-  Framebuffer reused(kWidth, kHeight);
+  Framebuffer reused(width, height);
   std::fill(reused.rgba8().begin(), reused.rgba8().end(), std::uint8_t{0x5A});
   std::fill(reused.depth().begin(), reused.depth().end(), 0.25f);
-  // Each frame over what the one before left: garbage, then the other clear, then the same.
   for (const glm::vec4* clear : {&blue, &grey, &grey, &blue}) {
     render_quad(*clear, reused);
     const Framebuffer& expected = clear == &blue ? expected_blue : expected_grey;
     ASSERT_EQ(reused.rgba8(), expected.rgba8());
     ASSERT_EQ(reused.depth(), expected.depth());
+  }
+}
+
+TEST(ClearedRows, AFramebufferDrawnIntoAgainEndsAsANewOne) {
+  ASSERT_FALSE(pipeline::streams_cleared_rows(Framebuffer(200, 150)));
+  expect_reused_ends_as_new(200, 150);
+}
+
+TEST(ClearedRows, ALargeFramebufferStreamedIntoAgainEndsAsANewOne) {
+  const int width = 1203, height = 1001;  // 8 bytes a pixel: past the streaming threshold
+  ASSERT_TRUE(pipeline::streams_cleared_rows(Framebuffer(width, height)));
+  expect_reused_ends_as_new(width, height);
+}
+
+// Rows of 4-byte values at every alignment and length up to a few cache lines, written streamed
+// or not: the destination holds the row and nothing around it changes.
+TEST(ClearedRows, RowsWrittenEitherWayHoldTheSameBytes) {
+  std::vector<std::uint8_t> row(256);
+  std::iota(row.begin(), row.end(), std::uint8_t{1});
+  for (bool streaming : {false, true}) {
+    for (std::size_t start = 0; start < 64; start += 4) {
+      for (std::size_t bytes = 0; bytes <= 192; bytes += 4) {
+        alignas(64) std::uint8_t out[256 + 64];
+        std::fill(std::begin(out), std::end(out), std::uint8_t{0xEE});
+        pipeline::write_cleared_row(out + start, row.data(), bytes, streaming);
+        pipeline::end_streamed_rows();
+        for (std::size_t b = 0; b < std::size(out); ++b) {
+          const bool inside = b >= start && b < start + bytes;
+          ASSERT_EQ(out[b], inside ? row[b - start] : 0xEE)
+              << "byte " << b << ", start " << start << ", " << bytes << " bytes"
+              << (streaming ? ", streaming" : "");
+        }
+      }
+    }
   }
 }
 

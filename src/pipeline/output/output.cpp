@@ -7,6 +7,7 @@
 
 #include "core/color.hpp"
 #include "pipeline/kernels.hpp"
+#include "pipeline/output/framebuffer_rows.hpp"
 
 namespace facet::pipeline {
 namespace {
@@ -29,14 +30,6 @@ void store_row(const Kernels& kernels, Framebuffer& target, std::size_t first_pi
       out[0] = c.r * scale, out[1] = c.g * scale, out[2] = c.b * scale, out[3] = c.a;
     }
   }
-}
-
-// Copies `bytes` bytes of a cleared row into the framebuffer where they differ from what it
-// holds. A framebuffer drawn into frame after frame (the viewer, a frame sequence, `facet bench`)
-// already holds last frame's clear where nothing was drawn: reading a row costs less than
-// writing it, which must first fetch it (and later write it back).
-void write_cleared_row(void* out, const void* row, std::size_t bytes) {
-  if (std::memcmp(out, row, bytes) != 0) std::memcpy(out, row, bytes);
 }
 
 // A tile row of the clear depth.
@@ -198,45 +191,46 @@ void resolve_tile(const TileContext& tile, const Resolve& resolve, Framebuffer& 
 }
 
 void resolve_depth_tile(const TileContext& tile, bool cleared, Framebuffer& target) {
+  const bool streaming = cleared && streams_cleared_rows(target);
   for (int y = tile.y0; y < tile.y1; ++y) {
     float* out = target.depth().data() + static_cast<std::size_t>(y) * target.width() + tile.x0;
     if (cleared) {
-      write_cleared_row(out, clear_depth_row(), sizeof(float) * (tile.x1 - tile.x0));
+      write_cleared_row(out, clear_depth_row(), sizeof(float) * (tile.x1 - tile.x0), streaming);
     } else {
       std::copy_n(tile.depth + static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride,
                   tile.x1 - tile.x0, out);
     }
   }
+  if (streaming) end_streamed_rows();
 }
 
 void resolve_cleared_tile(const TileContext& tile, const glm::vec4& clear, float scale,
                           Framebuffer& target) {
+  const bool streaming = streams_cleared_rows(target);
+  const int width = tile.x1 - tile.x0;
   // Convert the clear color once into one tile row, then copy that row down the tile.
+  std::uint8_t row_bytes[kMaxTileSize * 4];
   if (target.format() == ColorFormat::rgba8_srgb) {
     std::uint8_t pixel[4];
     tile.frame->kernels->encode_srgb_row(&clear, 1, scale, pixel);
-    const int width = tile.x1 - tile.x0;
-    std::uint8_t row_bytes[kMaxTileSize * 4];
     for (int x = 0; x < width; ++x) std::memcpy(row_bytes + x * 4, pixel, 4);
-    for (int y = tile.y0; y < tile.y1; ++y) {
-      std::size_t row = static_cast<std::size_t>(y) * target.width();
-      write_cleared_row(target.rgba8().data() + (row + tile.x0) * 4, row_bytes, width * 4);
-      if (target.has_depth()) {
-        write_cleared_row(target.depth().data() + row + tile.x0, clear_depth_row(),
-                          sizeof(float) * width);
-      }
-    }
-    return;
   }
   for (int y = tile.y0; y < tile.y1; ++y) {
-    std::size_t row = static_cast<std::size_t>(y) * target.width();
-    for (int x = tile.x0; x < tile.x1; ++x)
-      store_row(*tile.frame->kernels, target, row + x, &clear, 1, scale);
+    const std::size_t row = static_cast<std::size_t>(y) * target.width();
+    if (target.format() == ColorFormat::rgba8_srgb) {
+      write_cleared_row(target.rgba8().data() + (row + tile.x0) * 4, row_bytes, width * 4,
+                        streaming);
+    } else {
+      for (int x = tile.x0; x < tile.x1; ++x) {
+        store_row(*tile.frame->kernels, target, row + x, &clear, 1, scale);
+      }
+    }
     if (target.has_depth()) {
       write_cleared_row(target.depth().data() + row + tile.x0, clear_depth_row(),
-                        sizeof(float) * (tile.x1 - tile.x0));
+                        sizeof(float) * width, streaming);
     }
   }
+  if (streaming) end_streamed_rows();
 }
 
 }  // namespace facet::pipeline

@@ -97,8 +97,8 @@ void Renderer::Impl::prepare_tiles(const Framebuffer& target) {
   frame.tiles_y = (frame.height + frame.tile_size - 1) / frame.tile_size;
   std::size_t tiles = static_cast<std::size_t>(frame.tiles_x) * frame.tiles_y;
   tile_pixels_shaded.assign(tiles, 0);
-  tile_ms.assign(tiles, 0.0);
-  tile_resolve_ms.assign(tiles, 0.0);
+  tile_ticks.assign(tiles, 0);
+  tile_resolve_ticks.assign(tiles, 0);
   // Every worker's tile buffers are sized here, before the tasks: which worker renders which
   // tile changes from frame to frame, and a buffer first grown inside a task would allocate
   // in a steady-state frame.
@@ -207,15 +207,17 @@ void Renderer::Impl::run(Framebuffer& target) {
   auto raster_start = Clock::now();
   int tiles = frame.tiles_x * frame.tiles_y;
   parallel_tasks(tiles, workers, [&](int tile, int worker) {
-    auto tile_start = Clock::now();
+    const std::uint64_t tile_start = pipeline::tick_count();
     render_tile(tile, worker, target);
-    tile_ms[tile] = ms_since(tile_start);
+    tile_ticks[tile] = pipeline::ticks_since(tile_start);
   });
   for (std::uint64_t n : tile_pixels_shaded) frame.stats.pixels_shaded += n;
   frame.stats.ms_raster = ms_since(raster_start);
   double busy = 0.0, resolving = 0.0;
-  for (std::size_t i = 0; i < tile_ms.size(); ++i)
-    busy += tile_ms[i], resolving += tile_resolve_ms[i];
+  for (std::size_t i = 0; i < tile_ticks.size(); ++i) {
+    busy += static_cast<double>(tile_ticks[i]);
+    resolving += static_cast<double>(std::min(tile_resolve_ticks[i], tile_ticks[i]));
+  }
   frame.stats.ms_resolve = busy > 0.0 ? frame.stats.ms_raster * (resolving / busy) : 0.0;
   frame.stats.ms_total = ms_since(start);
 }

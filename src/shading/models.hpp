@@ -6,7 +6,8 @@
 //   kNormalSlot     index of a world normal in its varyings (or -1): filled with the face
 //                   normal when the mesh has no normals
 //   vertex(in, uniforms, out)        per vertex: writes kVaryings floats; or vertex_batch
-//                   (vertex_batch.hpp), which takes every vertex of the model's draws
+//                   (vertex_batch.hpp), which takes every vertex of the model's draws (a model
+//                   may get one from its vertex(): VertexBatchFromVertex, surface.hpp)
 //   face(normal, centre, uniforms, v[3])  optional, per triangle before clipping: may rewrite
 //                                    the three vertices' varyings (flat shading)
 //   and how its pixels are shaded, one of:
@@ -98,7 +99,7 @@ struct DepthOnlyShading {
 };
 
 // The mesh's vertex colors only (white where it has none).
-struct VertexColorShading {
+struct VertexColorShading : VertexBatchFromVertex<VertexColorShading> {
   static constexpr int kVaryings = 4;
   static constexpr int kNormalSlot = -1;
   static void vertex(const VertexInput& in, const DrawUniforms&, float* out) {
@@ -158,7 +159,9 @@ struct DepthShading : BatchForm<BatchModel::depth_view>, DisplayReferred {
 };
 
 // Debug view: world-space normal, renormalized per pixel, shown as n * 0.5 + 0.5.
-struct NormalsShading : BatchForm<BatchModel::normals>, DisplayReferred {
+struct NormalsShading : BatchForm<BatchModel::normals>,
+                        VertexBatchFromVertex<NormalsShading>,
+                        DisplayReferred {
   static constexpr int kVaryings = 3;
   static constexpr int kNormalSlot = 0;
   static void vertex(const VertexInput& in, const DrawUniforms&, float* out) {
@@ -167,7 +170,9 @@ struct NormalsShading : BatchForm<BatchModel::normals>, DisplayReferred {
 };
 
 // Debug view: texture coordinates as red (u) and green (v), fractional part.
-struct TexcoordShading : BatchForm<BatchModel::texcoords_view>, DisplayReferred {
+struct TexcoordShading : BatchForm<BatchModel::texcoords_view>,
+                         VertexBatchFromVertex<TexcoordShading>,
+                         DisplayReferred {
   static constexpr int kVaryings = 2;
   static constexpr int kNormalSlot = -1;
   static void vertex(const VertexInput& in, const DrawUniforms&, float* out) {

@@ -124,4 +124,27 @@ struct LightsBackFaces {
   static constexpr bool kLightsBackFaces = true;
 };
 
+// vertex_batch from the model's own vertex(), a vertex at a time, for models whose vertex()
+// reads only what VertexBatchInput carries (position, normal, texture coordinate and color; no
+// tangent, which it then sees as zero): the same values, and with a batch form a draw inside the
+// guard band keeps no clip-space vertices (80 bytes a vertex, built one at a time): the setup
+// kernel takes its triangles straight from the projected vertices (pipeline/geometry/vertex.cpp).
+template <class Model>
+struct VertexBatchFromVertex {
+  static void vertex_batch(const DrawUniforms& u, const VertexBatchInput& in,
+                           float (*out)[kVertexBatch]) {
+    for (int n = 0; n < in.count; ++n) {
+      VertexInput vertex;
+      vertex.position = in.positions[n];
+      vertex.normal = {in.normal[0][n], in.normal[1][n], in.normal[2][n]};
+      vertex.color = in.colors ? in.colors[n] : glm::vec4(1.0f);
+      vertex.texcoord = in.texcoords ? in.texcoords[n] : glm::vec2(0.0f);
+      vertex.tangent = glm::vec4(0.0f);
+      float varyings[Model::kVaryings];
+      Model::vertex(vertex, u, varyings);
+      for (int k = 0; k < Model::kVaryings; ++k) out[k][n] = varyings[k];
+    }
+  }
+};
+
 }  // namespace facet::shading

@@ -57,13 +57,14 @@ void expect_reused_ends_as_new(int width, int height) {
 }
 
 TEST(ClearedRows, AFramebufferDrawnIntoAgainEndsAsANewOne) {
-  ASSERT_FALSE(pipeline::streams_cleared_rows(Framebuffer(200, 150)));
+  ASSERT_FALSE(pipeline::streams_cleared_rows(200 * 150 * 4));
   expect_reused_ends_as_new(200, 150);
 }
 
 TEST(ClearedRows, ALargeFramebufferStreamedIntoAgainEndsAsANewOne) {
-  const int width = 1203, height = 1001;  // 8 bytes a pixel: past the streaming threshold
-  ASSERT_TRUE(pipeline::streams_cleared_rows(Framebuffer(width, height)));
+  // Color and depth each past the streaming threshold; rows that are no whole number of lines.
+  const int width = 1503, height = 1101;
+  ASSERT_TRUE(pipeline::streams_cleared_rows(static_cast<std::size_t>(width) * height * 4));
   expect_reused_ends_as_new(width, height);
 }
 

@@ -1,7 +1,8 @@
-// A shading model given a batch form by VertexBatchFromVertex (shading/models.hpp) draws exactly
+// A shading model given a batch form by VertexBatchFromVertex (shading/surface.hpp) draws exactly
 // what its vertex() draws a vertex at a time: every input it reads (position, normal, texture
-// coordinate, color) reaches it alike, for triangles set up straight from the projected vertices
-// and for those clipped against the near plane.
+// coordinate, color) reaches it alike, for triangles set up straight from the projected vertices,
+// for those clipped against the near plane, and for a mesh without normals or texture
+// coordinates (its face normals written per triangle, from the corners computed again).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -47,6 +48,9 @@ Framebuffer render(const pipeline::DrawPipeline& pipe) {
   }
   // A floor running from under the camera into the distance: its near triangles are clipped.
   const Mesh floor = plane(40.0f, 40.0f, 8, 8);
+  Mesh bare = uv_sphere(0.6f, 12, 6);
+  bare.normals.clear();
+  bare.texcoords.clear();
   Material material;
   Renderer renderer;
   renderer.begin_frame(test_camera(kWidth, kHeight));
@@ -54,6 +58,8 @@ Framebuffer render(const pipeline::DrawPipeline& pipe) {
                                glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, -4.0f)), pipe);
   pipeline::draw_with_pipeline(renderer, floor, material,
                                glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, -1.0f, 0.0f)), pipe);
+  pipeline::draw_with_pipeline(renderer, bare, material,
+                               glm::translate(glm::mat4(1.0f), glm::vec3(1.6f, 0.5f, -3.5f)), pipe);
   Framebuffer target(kWidth, kHeight);
   renderer.finish(target);
   EXPECT_GT(renderer.stats().clipped, 0u);

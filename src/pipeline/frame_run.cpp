@@ -6,6 +6,7 @@
 #include <glm/matrix.hpp>
 
 #include "core/parallel.hpp"
+#include "core/tick_count.hpp"
 #include "pipeline/bin/bin.hpp"
 #include "pipeline/geometry/geometry.hpp"
 #include "pipeline/geometry/vertex.hpp"
@@ -207,9 +208,9 @@ void Renderer::Impl::run(Framebuffer& target) {
   auto raster_start = Clock::now();
   int tiles = frame.tiles_x * frame.tiles_y;
   parallel_tasks(tiles, workers, [&](int tile, int worker) {
-    const std::uint64_t tile_start = pipeline::tick_count();
+    const std::uint64_t tile_start = tick_count();
     render_tile(tile, worker, target);
-    tile_ticks[tile] = pipeline::ticks_since(tile_start);
+    tile_ticks[tile] = ticks_since(tile_start);
   });
   for (std::uint64_t n : tile_pixels_shaded) frame.stats.pixels_shaded += n;
   frame.stats.ms_raster = ms_since(raster_start);

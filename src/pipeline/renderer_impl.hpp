@@ -16,10 +16,6 @@
 #include <unordered_map>
 #include <vector>
 
-#if defined(__x86_64__) || defined(__i386__)
-#include <x86intrin.h>
-#endif
-
 #include "facet/render_texture.hpp"
 #include "facet/renderer.hpp"
 #include "pipeline/frame.hpp"
@@ -35,24 +31,6 @@ using Clock = std::chrono::steady_clock;
 
 inline double ms_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-// The tiles' timings enter the frame's statistics only as a share (ms_resolve is ms_raster times
-// the tiles' resolve time over their whole time), so they count in any steady unit: the CPU's
-// time-stamp counter where there is one, cheaper to read than the clock (whose four reads a tile
-// took 1.3 % of a one-thread frame of glmark2's `gouraud`).
-inline std::uint64_t tick_count() {
-#if defined(__x86_64__) || defined(__i386__)
-  return __rdtsc();
-#else
-  return static_cast<std::uint64_t>(Clock::now().time_since_epoch().count());
-#endif
-}
-// The ticks from `start` to now; 0 if the count went back (a counter not kept in step across
-// cores).
-inline std::uint64_t ticks_since(std::uint64_t start) {
-  const std::uint64_t now = tick_count();
-  return now > start ? now - start : 0;
 }
 
 inline bool is_blended(AlphaMode mode) {

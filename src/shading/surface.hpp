@@ -133,6 +133,7 @@ template <class Model>
 struct VertexBatchFromVertex {
   static void vertex_batch(const DrawUniforms& u, const VertexBatchInput& in,
                            float (*out)[kVertexBatch]) {
+    static_assert(Model::kVaryings > 0, "a model without varyings needs no vertex stage");
     for (int n = 0; n < in.count; ++n) {
       VertexInput vertex;
       vertex.position = in.positions[n];

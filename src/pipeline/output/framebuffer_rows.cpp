@@ -36,9 +36,13 @@ void stream_row(void* out, const void* row, std::size_t bytes) {
 
 }  // namespace
 
-bool streams_cleared_rows(const Framebuffer& target) {
-  const std::size_t floats = target.rgba32f().size() + target.depth().size();
-  return target.rgba8().size() + sizeof(float) * floats >= kStreamedImageBytes;
+bool streams_cleared_rows(std::size_t image_bytes) {
+#if defined(__SSE2__)
+  return image_bytes >= kStreamedImageBytes;
+#else
+  static_cast<void>(image_bytes);
+  return false;
+#endif
 }
 
 void write_cleared_row(void* out, const void* row, std::size_t bytes, bool streaming) {

@@ -191,7 +191,7 @@ void resolve_tile(const TileContext& tile, const Resolve& resolve, Framebuffer& 
 }
 
 void resolve_depth_tile(const TileContext& tile, bool cleared, Framebuffer& target) {
-  const bool streaming = cleared && streams_cleared_rows(target);
+  const bool streaming = cleared && streams_cleared_rows(sizeof(float) * target.depth().size());
   for (int y = tile.y0; y < tile.y1; ++y) {
     float* out = target.depth().data() + static_cast<std::size_t>(y) * target.width() + tile.x0;
     if (cleared) {
@@ -206,20 +206,22 @@ void resolve_depth_tile(const TileContext& tile, bool cleared, Framebuffer& targ
 
 void resolve_cleared_tile(const TileContext& tile, const glm::vec4& clear, float scale,
                           Framebuffer& target) {
-  const bool streaming = streams_cleared_rows(target);
   const int width = tile.x1 - tile.x0;
+  const bool bytes_color = target.format() == ColorFormat::rgba8_srgb;
+  const bool streams_color = bytes_color && streams_cleared_rows(target.rgba8().size());
+  const bool streams_depth = streams_cleared_rows(sizeof(float) * target.depth().size());
   // Convert the clear color once into one tile row, then copy that row down the tile.
   std::uint8_t row_bytes[kMaxTileSize * 4];
-  if (target.format() == ColorFormat::rgba8_srgb) {
+  if (bytes_color) {
     std::uint8_t pixel[4];
     tile.frame->kernels->encode_srgb_row(&clear, 1, scale, pixel);
     for (int x = 0; x < width; ++x) std::memcpy(row_bytes + x * 4, pixel, 4);
   }
   for (int y = tile.y0; y < tile.y1; ++y) {
     const std::size_t row = static_cast<std::size_t>(y) * target.width();
-    if (target.format() == ColorFormat::rgba8_srgb) {
+    if (bytes_color) {
       write_cleared_row(target.rgba8().data() + (row + tile.x0) * 4, row_bytes, width * 4,
-                        streaming);
+                        streams_color);
     } else {
       for (int x = tile.x0; x < tile.x1; ++x) {
         store_row(*tile.frame->kernels, target, row + x, &clear, 1, scale);
@@ -227,10 +229,10 @@ void resolve_cleared_tile(const TileContext& tile, const glm::vec4& clear, float
     }
     if (target.has_depth()) {
       write_cleared_row(target.depth().data() + row + tile.x0, clear_depth_row(),
-                        sizeof(float) * width, streaming);
+                        sizeof(float) * width, streams_depth);
     }
   }
-  if (streaming) end_streamed_rows();
+  if (streams_color || streams_depth) end_streamed_rows();
 }
 
 }  // namespace facet::pipeline

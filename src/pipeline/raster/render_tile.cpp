@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "core/tick_count.hpp"
 #include "pipeline/output/debug_view.hpp"
 #include "pipeline/output/output.hpp"
 #include "pipeline/raster/occlusion.hpp"
@@ -60,13 +61,13 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
   const DebugView debug = settings.debug_view;
   if (bin == bin_end && !background.environment && debug == DebugView::none) {
     // Lazy clear: nothing drawn here, write the clear values directly.
-    const std::uint64_t resolve_start = pipeline::tick_count();
+    const std::uint64_t resolve_start = tick_count();
     if (background.depth_only) {
       pipeline::resolve_depth_tile(tile, true, target);
     } else {
       pipeline::resolve_cleared_tile(tile, settings.clear_color, resolve.scale, target);
     }
-    tile_resolve_ticks[index] = pipeline::ticks_since(resolve_start);
+    tile_resolve_ticks[index] = ticks_since(resolve_start);
     return;
   }
   TileBuffers& buffers = tile_buffers[worker];  // sized in prepare_tiles
@@ -132,7 +133,7 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
   }
   pipeline::flush_waiting(tile);
   if (background_pending) pipeline::fill_background(tile, background);
-  const std::uint64_t resolve_start = pipeline::tick_count();
+  const std::uint64_t resolve_start = tick_count();
   if (background.depth_only) {
     pipeline::resolve_depth_tile(tile, false, target);
   } else if (debug == DebugView::none) {
@@ -140,7 +141,7 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
   } else {
     pipeline::resolve_debug_tile(tile, debug, bin_size, resolve.scale, target);
   }
-  tile_resolve_ticks[index] = pipeline::ticks_since(resolve_start);
+  tile_resolve_ticks[index] = ticks_since(resolve_start);
   tile_pixels_shaded[index] = tile.pixels_shaded;
 }
 

@@ -131,6 +131,7 @@ struct LightsBackFaces {
 // kernel takes its triangles straight from the projected vertices (pipeline/geometry/vertex.cpp).
 template <class Model>
 struct VertexBatchFromVertex {
+  using VertexSource = Model;  // pipeline_table.hpp checks that the drawn model is this one
   static void vertex_batch(const DrawUniforms& u, const VertexBatchInput& in,
                            float (*out)[kVertexBatch]) {
     static_assert(Model::kVaryings > 0, "a model without varyings needs no vertex stage");

@@ -37,6 +37,13 @@ DrawPipeline make_pipeline() {
   p.normal_slot = Shading::kNormalSlot;
   // Every vertex through the batch form where the model has one (vertex.cpp), else vertex().
   if constexpr (requires { &Shading::vertex_batch; }) {
+    if constexpr (requires { typename Shading::VertexSource; }) {
+      // A batch form from vertex() (VertexBatchFromVertex) calls the vertex() of the model it
+      // names: a model deriving from that one must not have its own.
+      using Source = typename Shading::VertexSource;
+      static_assert(Shading::kVaryings == Source::kVaryings && &Shading::vertex == &Source::vertex,
+                    "VertexBatchFromVertex names another model than the one drawn");
+    }
     p.vertex_batch = &Shading::vertex_batch;
   } else {
     p.vertex = &Shading::vertex;

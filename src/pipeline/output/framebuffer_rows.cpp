@@ -9,13 +9,14 @@
 #endif
 
 namespace facet::pipeline {
+
+#if defined(__SSE2__)
 namespace {
 
-// Copies the row with streaming stores, where the target has them. Only whole cache lines are
-// streamed: a part of a line written around the caches costs a read of the rest in memory. The
-// values before the first whole line and after the last go through the caches.
+// Copies the row with streaming stores. Only whole cache lines are streamed: a part of a line
+// written around the caches costs a read of the rest in memory. The values before the first whole
+// line and after the last go through the caches.
 void stream_row(void* out, const void* row, std::size_t bytes) {
-#if defined(__SSE2__)
   auto* to = static_cast<std::uint8_t*>(out);
   const auto* from = static_cast<const std::uint8_t*>(row);
   std::size_t b = 0;
@@ -29,12 +30,10 @@ void stream_row(void* out, const void* row, std::size_t bytes) {
     }
   }
   std::memcpy(to + b, from + b, bytes - b);
-#else
-  std::memcpy(out, row, bytes);
-#endif
 }
 
 }  // namespace
+#endif
 
 bool streams_cleared_rows(std::size_t image_bytes) {
 #if defined(__SSE2__)
@@ -46,11 +45,15 @@ bool streams_cleared_rows(std::size_t image_bytes) {
 }
 
 void write_cleared_row(void* out, const void* row, std::size_t bytes, bool streaming) {
+#if defined(__SSE2__)
   if (streaming) {
     stream_row(out, row, bytes);
-  } else if (std::memcmp(out, row, bytes) != 0) {
-    std::memcpy(out, row, bytes);
+    return;
   }
+#else
+  static_cast<void>(streaming);  // streams_cleared_rows() is false without streaming stores
+#endif
+  if (std::memcmp(out, row, bytes) != 0) std::memcpy(out, row, bytes);
 }
 
 void end_streamed_rows() {

@@ -3,8 +3,8 @@
 // directional, point and spot lights (with and without a range), from any side, inside and
 // outside spot cones, with and without texture coordinates, vertex colors and a highlight, for
 // every run length, and per face for meshes without normals; vertex() is its batch of one; and
-// it gives the values worked out by hand of a few simple cases. The batch form of the unlit and
-// Lambert models (surface_vertex_batch) gives their vertex()'s bits.
+// it gives the values worked out by hand of a few simple cases. The batch form of the surface
+// models (surface_vertex_batch: unlit, Lambert, Phong, PBR) gives surface_vertex()'s bits.
 #include "shading/vertex_batch.hpp"
 
 #include <gtest/gtest.h>
@@ -80,51 +80,56 @@ void randomize(std::mt19937& rng, Draw& d) {
 }
 
 // A random run of vertices: object positions, unit normals facing anywhere (now and then none:
-// the pass gives zero), texture coordinates and colors, each present or not.
+// the pass gives zero), texture coordinates, colors and tangents, each present or not.
 struct VertexRun {
   int count = 0;
   std::vector<glm::vec3> positions;
   std::vector<glm::vec2> texcoords;
   std::vector<glm::vec4> colors;
+  std::vector<glm::vec4> tangents;  // object space, w the handedness
   alignas(64) float normal[3][kVertexBatch] = {};
-  bool with_texcoords = false, with_colors = false;
+  bool with_texcoords = false, with_colors = false, with_tangents = false;
 
   void randomize(std::mt19937& rng, int round) {
     std::uniform_real_distribution<float> any(-3.0f, 3.0f), unit(0.0f, 1.0f);
     count = 1 + static_cast<int>(rng() % kVertexBatch);
-    positions.resize(count), texcoords.resize(count), colors.resize(count);
+    positions.resize(count), texcoords.resize(count), colors.resize(count), tangents.resize(count);
     for (int n = 0; n < count; ++n) {
       positions[n] = {any(rng), any(rng), any(rng)};
       texcoords[n] = {any(rng), any(rng)};
       colors[n] = {unit(rng), unit(rng), unit(rng), unit(rng)};
+      tangents[n] = {any(rng), any(rng), any(rng), rng() % 2 ? 1.0f : -1.0f};
       const glm::vec3 nv = rng() % 8 == 0 ? glm::vec3(0.0f)
                                           : glm::normalize(glm::vec3(any(rng), any(rng), any(rng)));
       for (int c = 0; c < 3; ++c) normal[c][n] = nv[c];
     }
-    with_texcoords = round % 2 == 0, with_colors = round % 3 != 0;
+    with_texcoords = round % 2 == 0, with_colors = round % 3 != 0, with_tangents = round % 4 < 2;
   }
   shading::VertexBatchInput input() const {
     return {count,
             positions.data(),
             {normal[0], normal[1], normal[2]},
             with_texcoords ? texcoords.data() : nullptr,
-            with_colors ? colors.data() : nullptr};
+            with_colors ? colors.data() : nullptr,
+            with_tangents ? tangents.data() : nullptr};
   }
-  shading::VertexInput vertex(int n) const {
+  // What the vertex stage hands vertex(): the tangent turned to world space by `model`.
+  shading::VertexInput vertex(int n, const glm::mat4& model) const {
     shading::VertexInput v;
     v.position = positions[n];
     v.normal = {normal[0][n], normal[1][n], normal[2][n]};
     v.color = with_colors ? colors[n] : glm::vec4(1.0f);
     v.texcoord = with_texcoords ? texcoords[n] : glm::vec2(0.0f);
-    v.tangent = glm::vec4(0.0f);
+    v.tangent = with_tangents ? glm::vec4(glm::mat3(model) * glm::vec3(tangents[n]), tangents[n].w)
+                              : glm::vec4(0.0f);
     return v;
   }
 };
 
 using Varyings = float[shading::kMaxVaryings][kVertexBatch];
 
-// Compares Model::vertex_batch with surface_vertex() (surface.hpp, the one-vertex form Phong
-// and PBR take) for random draws and vertices on every target.
+// Compares Model::vertex_batch with surface_vertex() (surface.hpp, the one-vertex form of the
+// surface layout) for random draws and vertices on every target.
 template <class Model>
 void expect_vertex_batch_gives_vertexs_bits() {
   std::mt19937 rng(20261122);
@@ -140,7 +145,8 @@ void expect_vertex_batch_gives_vertexs_bits() {
       Model::vertex_batch(draw.uniforms, run.input(), out);
       for (int n = 0; n < run.count; ++n) {
         float expected[Model::kVaryings];
-        shading::surface_vertex<Model::kVaryings>(run.vertex(n), draw.uniforms, expected);
+        shading::surface_vertex<Model::kVaryings>(run.vertex(n, draw.uniforms.model), draw.uniforms,
+                                                  expected);
         for (int k = 0; k < Model::kVaryings; ++k) {
           ASSERT_EQ(std::memcmp(&expected[k], &out[k][n], sizeof(float)), 0)
               << hwy::TargetName(target) << ", round " << round << ", vertex " << n << ", varying "
@@ -202,6 +208,8 @@ TEST(VertexBatch, SurfaceModelsGiveVertexsBits) {
   expect_vertex_batch_gives_vertexs_bits<shading::UnlitShading>();
   expect_vertex_batch_gives_vertexs_bits<shading::LambertShading>();
   expect_vertex_batch_gives_vertexs_bits<shading::UnpositionedLambertShading>();
+  expect_vertex_batch_gives_vertexs_bits<shading::PhongShading>();
+  expect_vertex_batch_gives_vertexs_bits<shading::PbrShading>();
 }
 
 // A triangle of a mesh without normals: its three corners take the light of its centre with

@@ -38,9 +38,7 @@ inline const glm::vec3 kHalfVector{0.40824829f, 0.40824829f, 0.81649658f};
 // light-basic.vert/.frag (build, gouraud): Lambert per vertex, no ambient, no specular.
 // Color = max(N.L, 0) x MaterialDiffuse (the material's base colour); the pixel shows the
 // interpolated colour.
-struct BasicLightShading : BatchForm<BatchShader::basic_light>,
-                           shading::VertexBatchFromVertex<BasicLightShading>,
-                           shading::DisplayReferred {
+struct BasicLightShading : BatchForm<BatchShader::basic_light>, shading::DisplayReferred {
   static constexpr int kVaryings = 3;
   static constexpr int kNormalSlot = -1;  // the scenes' meshes carry normals
   static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
@@ -53,7 +51,6 @@ struct BasicLightShading : BatchForm<BatchShader::basic_light>,
 // texel of the material's base colour map (its sampler: bilinear or trilinear, clamped), which
 // the draw must have. Layout: colour (3), texture coordinate (2).
 struct BasicLightTextureShading : BatchForm<BatchShader::basic_light_texture>,
-                                  shading::VertexBatchFromVertex<BasicLightTextureShading>,
                                   shading::DisplayReferred {
   static constexpr int kVaryings = 5;
   static constexpr int kNormalSlot = -1;
@@ -67,7 +64,7 @@ struct BasicLightTextureShading : BatchForm<BatchShader::basic_light_texture>,
 
 // The vertex stage of the shaders that light per pixel with the object-space normal: it is the
 // only varying. Shared by blinn-phong-inf and bump-poly.
-struct InterpolatedNormal : shading::VertexBatchFromVertex<InterpolatedNormal> {
+struct InterpolatedNormal {
   static constexpr int kVaryings = 3;
   static constexpr int kNormalSlot = 0;
   static void vertex(const VertexInput& in, const DrawUniforms&, float* out) {
@@ -85,7 +82,7 @@ struct BlinnPhongInfShading : InterpolatedNormal,
 
 // light-phong.vert: the eye-space normal and position (ModelView x p; w is 1, MV is affine).
 // Layout: normal (3), eye position (3). Shared by phong and cel.
-struct EyeNormalPosition : shading::VertexBatchFromVertex<EyeNormalPosition> {
+struct EyeNormalPosition {
   static constexpr int kVaryings = 6;
   static constexpr int kNormalSlot = 0;
   static constexpr int kPosition = 3;
@@ -119,9 +116,7 @@ struct CelShading : EyeNormalPosition, BatchForm<BatchShader::cel>, shading::Dis
 // Blinn-Phong, ambient 0.1, diffuse 0.8, specular 0.8 x 0.2:
 //   rgb = 0.1 + 0.8 max(N.L, 0) + 0.16 max(N.H, 0)^100, grey.
 // The mesh needs no normals; the draw must have the map.
-struct BumpNormalsShading : BatchForm<BatchShader::bump_normals>,
-                            shading::VertexBatchFromVertex<BumpNormalsShading>,
-                            shading::DisplayReferred {
+struct BumpNormalsShading : BatchForm<BatchShader::bump_normals>, shading::DisplayReferred {
   static constexpr int kVaryings = 2;
   static constexpr int kNormalSlot = -1;
   static constexpr int kBaseColorTexcoord = 0;  // sampled ahead, a batch at a time
@@ -151,9 +146,7 @@ inline const glm::vec3 kShadowLightPosition{0.0f, 3.0f, 2.0f};
 
 // light-basic.vert/.frag with shadow's light (the horse of shadow): max(N.L, 0) x
 // MaterialDiffuse per vertex, L = normalize(0, 3, 2).
-struct ShadowHorseShading : BatchForm<BatchShader::basic_light>,
-                            shading::VertexBatchFromVertex<ShadowHorseShading>,
-                            shading::DisplayReferred {
+struct ShadowHorseShading : BatchForm<BatchShader::basic_light>, shading::DisplayReferred {
   static constexpr int kVaryings = 3;
   static constexpr int kNormalSlot = -1;
   static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
@@ -171,9 +164,7 @@ struct ShadowHorseShading : BatchForm<BatchShader::basic_light>,
 //   rgb = 0.3 x (0.5 if ShadowCoord.w > 0 and d < s.z + 0.1505, else 1), grey.
 // Facet's window depth is GL's, z_ndc x 0.5 + 0.5 (to_screen, pipeline/reference.hpp), and B maps z
 // the same way, so d and s.z are on one scale, as in glmark2. The draw must have the map.
-struct ShadowGroundShading : BatchForm<BatchShader::shadow_ground>,
-                             shading::VertexBatchFromVertex<ShadowGroundShading>,
-                             shading::DisplayReferred {
+struct ShadowGroundShading : BatchForm<BatchShader::shadow_ground>, shading::DisplayReferred {
   static constexpr int kVaryings = 4;  // ShadowCoord
   static constexpr int kNormalSlot = -1;
   static constexpr float kDepthBias = 0.1505f;
@@ -194,7 +185,6 @@ inline constexpr float kRefractiveIndex = 1.2f;
 // The draw only turns the model (by Ry(θ)), so the object normal is the world normal turned
 // back: transpose(normal_matrix) x normal.
 struct RefractBackNormalShading : BatchForm<BatchShader::refract_back_normal>,
-                                  shading::VertexBatchFromVertex<RefractBackNormalShading>,
                                   shading::DisplayReferred {
   static constexpr int kVaryings = 3;
   static constexpr int kNormalSlot = -1;

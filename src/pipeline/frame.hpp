@@ -84,7 +84,6 @@ using RasterTriangleFn = void (*)(TileContext&, const SetupTriangle&);
 struct DrawPipeline {
   int varyings = 0;
   int normal_slot = -1;
-  void (*vertex)(const shading::VertexInput&, const shading::DrawUniforms&, float*) = nullptr;
   using FaceFn = void (*)(glm::vec3 normal, glm::vec3 centre, const shading::DrawUniforms&,
                           float* [3]);
   FaceFn face = nullptr;                  // every triangle (flat shading)
@@ -95,8 +94,7 @@ struct DrawPipeline {
   RasterTriangleFn raster = nullptr;
   // The material maps besides the base color map the batch form reads (shading::maps_read).
   unsigned maps_read = 0;
-  // The model's vertex() for a run of vertices (shading/vertex_batch.hpp), which the vertex
-  // stage takes for every draw of the model; null: none.
+  // The model's vertex stage for a run of vertices (shading/vertex_batch.hpp), every draw's.
   void (*vertex_batch)(const shading::DrawUniforms&, const shading::VertexBatchInput&,
                        float (*)[shading::kVertexBatch]) = nullptr;
   // The model lights the back of a two-sided material (CullMode::none) as a front: setup

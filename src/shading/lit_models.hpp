@@ -10,13 +10,11 @@ namespace facet::shading {
 // Phong (kBlinn = false) or Blinn-Phong (true), per pixel: ambient + diffuse + specular.
 template <bool kBlinn>
 struct PhongShadingT : BatchForm<kBlinn ? BatchModel::blinn_phong : BatchModel::phong>,
-                       LightsBackFaces {
+                       LightsBackFaces,
+                       SurfaceVertexBatch<kSurfaceVaryingsWithTangent> {
   static constexpr int kVaryings = kSurfaceVaryingsWithTangent;
   static constexpr int kNormalSlot = shading::kNormalSlot;
   static constexpr int kBaseColorTexcoord = kTexcoordSlot;
-  static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
-    surface_vertex<kVaryings>(in, u, out);
-  }
 };
 using PhongShading = PhongShadingT<false>;
 using BlinnPhongShading = PhongShadingT<true>;
@@ -72,13 +70,12 @@ struct ConstantColorGouraudShading : GouraudLight<kConstantGouraudDiffuseSlot, f
 // its mirror image.
 // Lights are scaled by pi so a white Lambertian surface under a unit light looks as bright as
 // in the Lambert model (the "punctual light" convention of glTF viewers).
-struct PbrShading : BatchForm<BatchModel::pbr>, LightsBackFaces {
+struct PbrShading : BatchForm<BatchModel::pbr>,
+                    LightsBackFaces,
+                    SurfaceVertexBatch<kSurfaceVaryingsWithTangent> {
   static constexpr int kVaryings = kSurfaceVaryingsWithTangent;
   static constexpr int kNormalSlot = shading::kNormalSlot;
   static constexpr int kBaseColorTexcoord = kTexcoordSlot;
-  static void vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
-    surface_vertex<kVaryings>(in, u, out);
-  }
 };
 
 }  // namespace facet::shading

@@ -5,9 +5,10 @@
 //   kVaryings       floats it passes from vertex to fragment (interpolated perspective-correct)
 //   kNormalSlot     index of a world normal in its varyings (or -1): filled with the face
 //                   normal when the mesh has no normals
-//   vertex(in, uniforms, out)        per vertex: writes kVaryings floats; or vertex_batch
-//                   (vertex_batch.hpp), which takes every vertex of the model's draws (a model
-//                   may get one from its vertex(): VertexBatchFromVertex, surface.hpp)
+//   vertex(in, uniforms, out)        per vertex: writes kVaryings floats; the vertex stage
+//                   calls it a run of vertices at a time (surface.hpp's vertex_batch_from_vertex)
+//                   unless the model has vertex_batch (vertex_batch.hpp), a form of its own for
+//                   a run of vertices at once
 //   face(normal, centre, uniforms, v[3])  optional, per triangle before clipping: may rewrite
 //                                    the three vertices' varyings (flat shading)
 //   and how its pixels are shaded, one of:
@@ -99,7 +100,7 @@ struct DepthOnlyShading {
 };
 
 // The mesh's vertex colors only (white where it has none).
-struct VertexColorShading : VertexBatchFromVertex<VertexColorShading> {
+struct VertexColorShading {
   static constexpr int kVaryings = 4;
   static constexpr int kNormalSlot = -1;
   static void vertex(const VertexInput& in, const DrawUniforms&, float* out) {
@@ -159,9 +160,7 @@ struct DepthShading : BatchForm<BatchModel::depth_view>, DisplayReferred {
 };
 
 // Debug view: world-space normal, renormalized per pixel, shown as n * 0.5 + 0.5.
-struct NormalsShading : BatchForm<BatchModel::normals>,
-                        VertexBatchFromVertex<NormalsShading>,
-                        DisplayReferred {
+struct NormalsShading : BatchForm<BatchModel::normals>, DisplayReferred {
   static constexpr int kVaryings = 3;
   static constexpr int kNormalSlot = 0;
   static void vertex(const VertexInput& in, const DrawUniforms&, float* out) {
@@ -170,9 +169,7 @@ struct NormalsShading : BatchForm<BatchModel::normals>,
 };
 
 // Debug view: texture coordinates as red (u) and green (v), fractional part.
-struct TexcoordShading : BatchForm<BatchModel::texcoords_view>,
-                         VertexBatchFromVertex<TexcoordShading>,
-                         DisplayReferred {
+struct TexcoordShading : BatchForm<BatchModel::texcoords_view>, DisplayReferred {
   static constexpr int kVaryings = 2;
   static constexpr int kNormalSlot = -1;
   static void vertex(const VertexInput& in, const DrawUniforms&, float* out) {

@@ -48,9 +48,7 @@ using OutputBase = std::conditional_t<kMasked, SamplesBaseColorAhead, NoBaseColo
 // the view-space position. An orthographic camera's rays start on the image plane: its ray
 // distance is the view depth.
 template <bool kMasked>
-struct DepthAndInstanceOutput : OutputModel<kMasked>,
-                                OutputBase<kMasked>,
-                                VertexBatchFromVertex<DepthAndInstanceOutput<kMasked>> {
+struct DepthAndInstanceOutput : OutputModel<kMasked>, OutputBase<kMasked> {
   using Base = OutputModel<kMasked>;
   static constexpr int kViewPositionSlot = Base::kFirstSlot;
   static constexpr int kVaryings = kViewPositionSlot + 3;
@@ -69,9 +67,7 @@ struct DepthAndInstanceOutput : OutputModel<kMasked>,
 // (x, y, z, alpha): the interpolated normal, renormalized, in world space or (kCamera) the
 // camera's view space. Meshes without normals get their face normals (kNormalSlot).
 template <bool kMasked, bool kCamera>
-struct NormalOutput : OutputModel<kMasked>,
-                      OutputBase<kMasked>,
-                      VertexBatchFromVertex<NormalOutput<kMasked, kCamera>> {
+struct NormalOutput : OutputModel<kMasked>, OutputBase<kMasked> {
   using Base = OutputModel<kMasked>;
   static constexpr int kNormalSlot = Base::kFirstSlot;
   static constexpr int kVaryings = kNormalSlot + 3;

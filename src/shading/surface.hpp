@@ -59,10 +59,12 @@ void surface_vertex(const VertexInput& in, const DrawUniforms& u, float* out) {
   if constexpr (kCount > kTangentSlot) store(out + kTangentSlot, in.tangent);
 }
 
-// surface_vertex() for a run of vertices (the batch form, vertex_batch.hpp): out[k][n] is slot
-// k of vertex n. The same operations, so the same bits, without a call and a VertexInput per
-// vertex; each slot is a loop of its own that the compiler vectorizes. Layouts without the
-// tangent, which the batch input does not carry.
+// A mesh's tangent (object space, w the handedness) in world space, as VertexInput::tangent holds
+// it; model3: the draw's model matrix without its translation.
+inline glm::vec4 world_tangent(const glm::mat3& model3, const glm::vec4& tangent) {
+  return {model3 * glm::vec3(tangent), tangent.w};
+}
+
 // The texture coordinates of a run of vertices into their slots (kTexcoordSlot): (0, 0) where
 // the mesh has none.
 inline void texcoords_vertex_batch(const VertexBatchInput& in, float (*out)[kVertexBatch]) {
@@ -76,10 +78,12 @@ inline void texcoords_vertex_batch(const VertexBatchInput& in, float (*out)[kVer
   }
 }
 
+// surface_vertex() for a run of vertices (the batch form, vertex_batch.hpp): out[k][n] is slot
+// k of vertex n. The same operations, so the same bits, without a call and a VertexInput per
+// vertex; each slot is a loop of its own that the compiler vectorizes.
 template <int kCount>
 void surface_vertex_batch(const DrawUniforms& u, const VertexBatchInput& in,
                           float (*out)[kVertexBatch]) {
-  static_assert(kCount <= kTangentSlot, "the batch input has no tangents");
   const int count = in.count;
   // The per-draw choices are made once, outside the loops over the vertices.
   texcoords_vertex_batch(in, out);
@@ -112,6 +116,17 @@ void surface_vertex_batch(const DrawUniforms& u, const VertexBatchInput& in,
       for (int c = 0; c < 3; ++c) out[kPositionSlot + c][n] = position[c];
     }
   }
+  if constexpr (kCount > kTangentSlot) {
+    if (in.tangents == nullptr) {
+      for (int c = 0; c < 4; ++c) std::fill_n(out[kTangentSlot + c], count, 0.0f);
+    } else {
+      const glm::mat3 model3(u.model);
+      for (int n = 0; n < count; ++n) {
+        const glm::vec4 tangent = world_tangent(model3, in.tangents[n]);
+        for (int c = 0; c < 4; ++c) out[kTangentSlot + c][n] = tangent[c];
+      }
+    }
+  }
 }
 
 // The material's base color map at the fragment, sampled ahead by the raster loop for a whole
@@ -124,29 +139,26 @@ struct LightsBackFaces {
   static constexpr bool kLightsBackFaces = true;
 };
 
-// vertex_batch from the model's own vertex(), a vertex at a time, for models whose vertex()
-// reads only what VertexBatchInput carries (position, normal, texture coordinate and color; no
-// tangent, which it then sees as zero): the same values, and with a batch form a draw inside the
-// guard band keeps no clip-space vertices (80 bytes a vertex, built one at a time): the setup
-// kernel takes its triangles straight from the projected vertices (pipeline/geometry/vertex.cpp).
+// vertex_batch from the model's own vertex(), a vertex at a time: the vertex stage's batch form
+// of every model without one of its own (pipeline/record/pipeline_table.hpp's make_pipeline),
+// the same values as vertex() given each vertex's VertexInput.
 template <class Model>
-struct VertexBatchFromVertex {
-  using VertexSource = Model;  // pipeline_table.hpp checks that the drawn model is this one
-  static void vertex_batch(const DrawUniforms& u, const VertexBatchInput& in,
-                           float (*out)[kVertexBatch]) {
-    static_assert(Model::kVaryings > 0, "a model without varyings needs no vertex stage");
+void vertex_batch_from_vertex(const DrawUniforms& u, const VertexBatchInput& in,
+                              float (*out)[kVertexBatch]) {
+  if constexpr (Model::kVaryings > 0) {
+    const glm::mat3 model3(u.model);
     for (int n = 0; n < in.count; ++n) {
       VertexInput vertex;
       vertex.position = in.positions[n];
       vertex.normal = {in.normal[0][n], in.normal[1][n], in.normal[2][n]};
       vertex.color = in.colors ? in.colors[n] : glm::vec4(1.0f);
       vertex.texcoord = in.texcoords ? in.texcoords[n] : glm::vec2(0.0f);
-      vertex.tangent = glm::vec4(0.0f);
+      vertex.tangent = in.tangents ? world_tangent(model3, in.tangents[n]) : glm::vec4(0.0f);
       float varyings[Model::kVaryings];
       Model::vertex(vertex, u, varyings);
       for (int k = 0; k < Model::kVaryings; ++k) out[k][n] = varyings[k];
     }
   }
-};
+}
 
 }  // namespace facet::shading

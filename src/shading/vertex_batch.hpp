@@ -24,6 +24,9 @@ struct VertexBatchInput {
   const float* normal[3] = {};
   const glm::vec2* texcoords = nullptr;  // count of them, or null: (0, 0)
   const glm::vec4* colors = nullptr;     // count of them, or null: white
+  // Object space, w the handedness, count of them, or null: zero. A model that reads one turns
+  // it to world space (world_tangent, surface.hpp).
+  const glm::vec4* tangents = nullptr;
 };
 
 // Where the Gouraud models (lit_models.hpp) keep their varyings: the diffuse light at slots

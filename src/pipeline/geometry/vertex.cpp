@@ -32,12 +32,10 @@ struct RunOutput {
 };
 
 // The vertex stage for one run: the vertex pass (clip position, world normal, projection), then
-// the shading model's varyings, a run at once with its batch form or a vertex at a time.
+// the shading model's varyings, a run at once by its batch form.
 void transform_run(const DrawRecord& draw, const Kernels& kernels,
                    const VertexPassInput& pass_input, const VertexRun& run, const RunOutput& out) {
-  const shading::DrawUniforms& u = draw.uniforms;
   const int varyings = draw.pipeline.varyings;
-  const bool batch = draw.pipeline.vertex_batch != nullptr;
   const std::size_t count = run.count;
   VertexPassInput to = pass_input;
   to.positions = run.positions, to.normals = run.normals;
@@ -46,49 +44,24 @@ void transform_run(const DrawRecord& draw, const Kernels& kernels,
   alignas(64) float batch_varyings[kMaxVaryings][shading::kVertexBatch];
   // First, several vertices at a time, all that needs no shading model.
   kernels.vertex_pass(to, 0, count, pass);
-  // Then the shading model: all of them at once if it has a batch form.
-  if (batch) {
-    draw.pipeline.vertex_batch(u,
-                               {static_cast<int>(count),
-                                run.positions,
-                                {pass.nx, pass.ny, pass.nz},
-                                run.texcoords,
-                                run.colors},
-                               batch_varyings);
-  }
+  // Then the shading model.
+  draw.pipeline.vertex_batch(draw.uniforms,
+                             {static_cast<int>(count),
+                              run.positions,
+                              {pass.nx, pass.ny, pass.nz},
+                              run.texcoords,
+                              run.colors,
+                              run.tangents},
+                             batch_varyings);
   kernels.store_projected(pass, count, out.projected);
   // What setup's planes pass through (perspective-correct interpolation of v / w; to_screen's
   // 1 / w is the pass's: the same division).
-  if (batch && out.over_w) {
-    kernels.store_over_w(batch_varyings, pass.inv_w, count, varyings, out.over_w);
-  }
-  if (!out.clip) return;  // a batch-form draw whose triangles only the setup kernel reads
-  const glm::mat3 model3(u.model);
+  if (out.over_w) kernels.store_over_w(batch_varyings, pass.inv_w, count, varyings, out.over_w);
+  if (!out.clip) return;  // a draw whose triangles only the setup kernel reads
   for (std::size_t j = 0; j < count; ++j) {
     ClipVertex& v = out.clip[j];
     v.clip = glm::vec4(pass.x[j], pass.y[j], pass.z[j], pass.w[j]);
-    if (batch) {
-      for (int k = 0; k < varyings; ++k) v.varyings[k] = batch_varyings[k][j];
-      continue;
-    }
-
-    shading::VertexInput in;
-    in.position = run.positions[j];
-    in.normal = {pass.nx[j], pass.ny[j], pass.nz[j]};
-    in.color = run.colors ? run.colors[j] : glm::vec4(1.0f);
-    in.texcoord = run.texcoords ? run.texcoords[j] : glm::vec2(0.0f);
-    in.tangent = run.tangents ? glm::vec4(model3 * glm::vec3(run.tangents[j]), run.tangents[j].w)
-                              : glm::vec4(0.0f);
-    draw.pipeline.vertex(in, u, v.varyings);
-  }
-  // The same for the varyings vertex() wrote, a vertex at a time. A loop of its own: read
-  // right after the shading model's narrow stores, the varyings' vector loads would stall on
-  // store forwarding.
-  for (std::size_t j = 0; out.over_w && !batch && j < count; ++j) {
-    const float inv_w = out.projected[j].screen.inv_w;
-    const float* v = out.clip[j].varyings;
-    float* o = out.over_w + j * varyings;
-    for (int k = 0; k < varyings; ++k) o[k] = v[k] * inv_w;
+    for (int k = 0; k < varyings; ++k) v.varyings[k] = batch_varyings[k][j];
   }
 }
 
@@ -123,7 +96,7 @@ bool keeps_clip_vertices(const DrawRecord& draw, const ClipBounds& guard,
   if (has_triangle_hooks(draw)) {
     return draw.mesh->positions.size() * sizeof(ClipVertex) <= max_clip_vertex_bytes;
   }
-  return draw.pipeline.vertex_batch == nullptr || !draw.bounds ||
+  return !draw.bounds ||
          !box_inside_clip_bounds(*draw.bounds, draw.uniforms.model_view_projection, guard);
 }
 

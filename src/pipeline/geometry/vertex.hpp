@@ -18,7 +18,7 @@ namespace facet::pipeline {
 inline constexpr std::size_t kVerticesPerTask = 4096;
 
 // Whether the draw's vertex stage must write ClipVertex: the clipper, the per-triangle hooks,
-// the edges and lines read them. A batch-form draw with none of those, whose bounds lie inside
+// the edges and lines read them. A draw with none of those, whose bounds lie inside
 // the guard band and between near and far, writes only its projected vertices and over_w: 80
 // bytes a vertex less to write and read. A draw with hooks whose ClipVertex would take more than
 // `max_clip_vertex_bytes` (Frame::max_clip_vertex_bytes) writes only its projected vertices:

@@ -8,6 +8,7 @@
 #include "facet/mesh.hpp"
 #include "pipeline/frame.hpp"
 #include "pipeline/raster/raster.hpp"
+#include "shading/surface.hpp"
 
 namespace facet::pipeline {
 
@@ -35,18 +36,11 @@ DrawPipeline make_pipeline() {
   DrawPipeline p;
   p.varyings = Shading::kVaryings;
   p.normal_slot = Shading::kNormalSlot;
-  // Every vertex through the batch form where the model has one (vertex.cpp), else vertex().
+  // Every vertex through a batch form (vertex.cpp): the model's own, else one from its vertex().
   if constexpr (requires { &Shading::vertex_batch; }) {
-    if constexpr (requires { typename Shading::VertexSource; }) {
-      // A batch form from vertex() (VertexBatchFromVertex) calls the vertex() of the model it
-      // names: a model deriving from that one must not have its own.
-      using Source = typename Shading::VertexSource;
-      static_assert(Shading::kVaryings == Source::kVaryings && &Shading::vertex == &Source::vertex,
-                    "VertexBatchFromVertex names another model than the one drawn");
-    }
     p.vertex_batch = &Shading::vertex_batch;
   } else {
-    p.vertex = &Shading::vertex;
+    p.vertex_batch = &shading::vertex_batch_from_vertex<Shading>;
   }
   if constexpr (requires { &Shading::face; }) p.face = &Shading::face;
   if constexpr (requires { &Shading::face_without_normals; }) {

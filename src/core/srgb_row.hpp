@@ -24,10 +24,11 @@ EncodeSrgbRowKernel encode_srgb_row_kernel(SimdTarget target);
 // The kernel fetching the table's entries by gathers or by a load a lane (the same bytes):
 // encode_srgb_row_kernel(target) takes gathers where gathers_are_fast().
 EncodeSrgbRowKernel encode_srgb_row_kernel(SimdTarget target, bool gathering);
-// Whether the CPU's AVX-512 gathers are faster than loading each lane: it has AVX-512 and no
-// microcode mitigation of Gather Data Sampling (Linux's vulnerabilities/gather_data_sampling
-// reads "Not affected"), which makes them several times slower. Measured on Intel Xeons only;
-// the gathering kernel gathers on AVX-512 targets alone (the others load a lane at a time).
+// Whether the CPU's AVX-512 gathers are faster than loading each lane: an Intel CPU with
+// AVX-512 and no microcode mitigation of Gather Data Sampling (Linux's
+// vulnerabilities/gather_data_sampling reads "Not affected"), which makes them several times
+// slower. Not AMD's: on Zen 4 a load a lane measured faster. The gathering kernel gathers on
+// AVX-512 targets alone (the others load a lane at a time).
 bool gathers_are_fast();
 
 // rgba[4 i + c] for the count colors, every channel clamped to [0, 1] (NaN to 0) and rounded

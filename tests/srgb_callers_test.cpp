@@ -15,6 +15,8 @@
 
 #include "core/color.hpp"
 #include "core/simd_target.hpp"
+#include "facet/color.hpp"
+#include "facet/error.hpp"
 #include "facet/framebuffer.hpp"
 #include "facet/image_io.hpp"
 #include "facet/texture.hpp"
@@ -134,6 +136,31 @@ TEST(SrgbCallers, FloatImagesAreWrittenAsTheReferenceEncodes) {
           << hwy::TargetName(target) << ", value " << i << ": " << values[i];
     }
   }
+}
+
+// facet::encode_srgb8, the public encode (the OpenGL twin's readback): the reference's codes,
+// the exposure's scale on color alone, on every target; too few bytes for the colors is an error.
+TEST(SrgbCallers, PublicEncodeIsTheReferenceCodes) {
+  constexpr int kColors = 150;
+  const std::vector<float> values = probe_values(kColors * 4);
+  std::vector<glm::vec4> colors(kColors);
+  std::memcpy(colors.data(), values.data(), values.size() * sizeof(float));
+  constexpr float kScale = 1.7f;
+  std::vector<std::uint8_t> expected(values.size());
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    expected[i] = i % 4 == 3 ? encode_unorm8(values[i]) : encode_srgb8(values[i] * kScale);
+  }
+  for (std::int64_t target : simd_targets()) {
+    ForcedTarget forced(target);
+    std::vector<std::uint8_t> bytes(values.size());
+    facet::encode_srgb8(colors, bytes, kScale);
+    for (std::size_t i = 0; i < bytes.size(); ++i) {
+      ASSERT_EQ(bytes[i], expected[i])
+          << hwy::TargetName(target) << ", value " << i << ": " << values[i];
+    }
+  }
+  std::vector<std::uint8_t> short_of_one(values.size() - 1);
+  EXPECT_THROW(facet::encode_srgb8(colors, short_of_one), Error);
 }
 
 // The display value of a linear color: its color channels' codes / 255, alpha as it is.

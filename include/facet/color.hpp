@@ -3,6 +3,7 @@
 // tone mapping brings linear colors of any brightness into what a display shows.
 #pragma once
 
+#include <cstdint>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 #include <span>
@@ -12,6 +13,13 @@ namespace facet {
 // An sRGB color with components in [0, 1] as linear RGB, and back.
 glm::vec3 srgb_to_linear(glm::vec3 srgb);
 glm::vec3 linear_to_srgb(glm::vec3 linear);
+
+// Linear RGBA colors to the bytes of an rgba8_srgb framebuffer, as the renderer's resolve writes
+// them: red, green and blue times `scale` (2^exposure) sRGB-encoded, within one code of
+// round(linear_to_srgb(v) * 255) (v clamped to [0, 1], NaN as 0; docs/pipeline.md, "Resolve"),
+// and alpha clamped and rounded to 8 bits. rgba takes four bytes a color and must hold them all.
+void encode_srgb8(std::span<const glm::vec4> linear, std::span<std::uint8_t> rgba,
+                  float scale = 1.0f);
 
 // How linear colors of any brightness become colors a display can show, after the exposure
 // and before the sRGB encode (docs/pipeline.md, "Tone mapping"). What is drawn is mapped, the

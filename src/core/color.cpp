@@ -3,10 +3,24 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
+#include <string>
 
+#include "core/simd_target.hpp"
+#include "core/srgb_row.hpp"
 #include "facet/color.hpp"
+#include "facet/error.hpp"
 
 namespace facet::shading {
+
+namespace {
+
+// 255 * linear_to_srgb(x), in double.
+double exact_code(double x) {
+  return 255.0 * (x <= 0.0031308 ? x * 12.92 : 1.055 * std::pow(x, 1.0 / 2.4) - 0.055);
+}
+
+}  // namespace
 
 SrgbTables::SrgbTables() {
   for (int i = 0; i < 256; ++i) {
@@ -14,15 +28,28 @@ SrgbTables::SrgbTables() {
     thresholds[i] = i == 0 ? 0.0f : srgb_to_linear((static_cast<float>(i) - 0.5f) / 255.0f);
   }
   thresholds[256] = 2.0f;
-  for (int r = 0; r < kRuns; ++r) {
-    const std::uint32_t start = kRunBase + (static_cast<std::uint32_t>(r) << kRunBits);
-    const float* next = std::upper_bound(thresholds.begin() + 1, thresholds.begin() + 256,
-                                         std::bit_cast<float>(start));
-    const auto code = static_cast<std::uint32_t>(next - thresholds.begin() - 1);
-    // thresholds[256] (2.0) lies beyond every run: the last code's run holds none.
-    const std::uint32_t offset =
-        std::min(std::bit_cast<std::uint32_t>(*next) - start, kRunMask + 1);
-    run_code[r] = code << kRunCodeShift | offset;
+  encode_lines.fill(0);
+  for (int line = 0; line < kEncodeLines; ++line) {
+    // The exact curve at the middle of each t's floats, the chord from the first t to the last,
+    // and the line: the chord moved to halve the largest distances above and below it.
+    double curve[256];
+    for (int t = 0; t < 256; ++t) {
+      const std::uint32_t first = kEncodeBase + (static_cast<std::uint32_t>(line) << 20) +
+                                  (static_cast<std::uint32_t>(t) << 12);
+      const double low = std::bit_cast<float>(first);
+      const double high = std::bit_cast<float>(first + (1u << 12) - 1);
+      curve[t] = exact_code(0.5 * (low + high));
+    }
+    const double slope = (curve[255] - curve[0]) / 255.0;
+    double above = 0.0, below = 0.0;
+    for (int t = 0; t < 256; ++t) {
+      const double distance = curve[t] - (curve[0] + slope * t);
+      above = std::max(above, distance), below = std::min(below, distance);
+    }
+    const double start = curve[0] + 0.5 * (above + below);
+    const auto bias = static_cast<std::uint32_t>(std::lround((start + 0.5) * 128.0));
+    const auto scale = static_cast<std::uint32_t>(std::lround(slope * 65536.0));
+    encode_lines[line] = bias << 16 | scale;
   }
 }
 
@@ -40,6 +67,15 @@ glm::vec3 srgb_to_linear(glm::vec3 srgb) {
 glm::vec3 linear_to_srgb(glm::vec3 linear) {
   return {shading::linear_to_srgb(linear.r), shading::linear_to_srgb(linear.g),
           shading::linear_to_srgb(linear.b)};
+}
+
+void encode_srgb8(std::span<const glm::vec4> linear, std::span<std::uint8_t> rgba, float scale) {
+  if (rgba.size() / 4 < linear.size()) {
+    throw Error("encode_srgb8: " + std::to_string(rgba.size()) + " bytes for " +
+                std::to_string(linear.size()) + " colors");
+  }
+  shading::encode_srgb_row_kernel(chosen_simd_target())(
+      linear.data(), static_cast<int>(linear.size()), scale, rgba.data());
 }
 
 }  // namespace facet

@@ -8,56 +8,10 @@
 #include <string>
 #include <vector>
 
+#include "facet/color.hpp"
 #include "facet/error.hpp"
 
 namespace facet::gl {
-namespace {
-
-std::uint8_t unorm8(float v) {  // clamped, NaN to 0, rounded: core/color.hpp's encode_unorm8
-  return static_cast<std::uint8_t>((v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f) * 255.0f + 0.5f);
-}
-
-// Linear light to 8-bit sRGB by the curve's thresholds instead of a power per channel, which at
-// 1080p took the readback longer than drawing the frame. Code k is the count of the 255
-// thresholds at or below the value: threshold k is where the exact curve (in double) crosses
-// k - 0.5 of 255. A table over [0, 1] in 4096 steps gives the count at each step's start; the
-// curve is never steeper than about 0.8 codes a step, so at most one more threshold lies inside
-// a step (the constructor checks), added without a branch.
-class Srgb8Encoder {
- public:
-  Srgb8Encoder() {
-    for (int k = 1; k <= 255; ++k) {
-      const double encoded = (k - 0.5) / 255.0;
-      const double linear =
-          encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4);
-      threshold_[k] = static_cast<float>(linear);
-    }
-    threshold_[256] = threshold_[257] = 2.0f;  // above every clamped value: 255 is the last
-    int code = 0;
-    for (int step = 0; step < kSteps; ++step) {
-      const float start = static_cast<float>(step) / kSteps;
-      while (threshold_[code + 1] <= start) ++code;
-      first_code_[step] = static_cast<std::uint8_t>(code);
-      const float end = static_cast<float>(step + 1) / kSteps;
-      if (step + 1 < kSteps && threshold_[code + 2] < end) {
-        throw Error("OpenGL backend: two sRGB codes begin inside one step of the encode table");
-      }
-    }
-  }
-  std::uint8_t operator()(float linear) const {
-    const float v = linear > 0.0f ? (linear < 1.0f ? linear : 1.0f) : 0.0f;  // NaN to 0
-    const int code = first_code_[std::min(static_cast<int>(v * kSteps), kSteps - 1)];
-    return static_cast<std::uint8_t>(code + (v >= threshold_[code + 1]));
-  }
-
- private:
-  static constexpr int kSteps = 4096;
-  float threshold_[258] = {};  // threshold_[k]: the smallest value coded k (k in 1..255)
-  std::uint8_t first_code_[kSteps] = {};
-};
-
-}  // namespace
-
 FrameTarget::~FrameTarget() {
   const GLuint framebuffers[] = {framebuffer_, ms_framebuffer_};
   const GLuint renderbuffers[] = {color_, depth_, ms_color_, ms_depth_};
@@ -146,16 +100,14 @@ void FrameTarget::read(Framebuffer& target, const Output& output) {
   }
   // GL's first row is the bottom one; facet's the top one.
   for (int y = 0; y < h; ++y) {
-    const float* from = &rgba[static_cast<std::size_t>(h - 1 - y) * w].x;
+    const glm::vec4* source = &rgba[static_cast<std::size_t>(h - 1 - y) * w];
     const std::size_t row = static_cast<std::size_t>(y) * w * 4;
     if (target.format() == ColorFormat::rgba8_srgb) {
-      static const Srgb8Encoder encode;
-      std::uint8_t* out = target.rgba8().data() + row;
-      for (int x = 0; x < w; ++x, from += 4, out += 4) {
-        for (int c = 0; c < 3; ++c) out[c] = encode(from[c] * scale);
-        out[3] = unorm8(from[3]);
-      }
+      // facet's own encode: the twin's colors become the bytes facet's would.
+      encode_srgb8({source, static_cast<std::size_t>(w)},
+                   {target.rgba8().data() + row, static_cast<std::size_t>(w) * 4}, scale);
     } else {
+      const float* from = &source->x;
       float* out = target.rgba32f().data() + row;
       for (int x = 0; x < w; ++x, from += 4, out += 4) {
         out[0] = from[0] * scale, out[1] = from[1] * scale, out[2] = from[2] * scale;

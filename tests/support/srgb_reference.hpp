@@ -1,10 +1,10 @@
-// The 8-bit encodes written out one value at a time, for tests: the sRGB encode from its tables
-// (core/color.hpp) and the plain rounding of alpha and display values. srgb_row_test compares
-// the row kernels (core/srgb_row.cpp) with them on every target, and texture_test holds the
-// sRGB one to the definition, round(linear_to_srgb(v) * 255). The library encodes through the
-// row kernels alone.
+// The 8-bit encodes written out one value at a time, for tests: the sRGB encode by its lines
+// (core/color.hpp), the exact encode it approximates, and the plain rounding of alpha and display
+// values. srgb_row_test compares the row kernels (core/srgb_row.cpp) with them on every target
+// and holds the lines to the exact encode; the library encodes through the row kernels alone.
 #pragma once
 
+#include <algorithm>
 #include <bit>
 #include <cstdint>
 
@@ -12,20 +12,31 @@
 
 namespace facet::test {
 
-// Encodes linear [0, 1] (clamped; NaN -> 0) to an 8-bit sRGB code: the largest code whose
-// threshold is at most the value, by one lookup of its run and one comparison (color.hpp).
-inline std::uint8_t encode_srgb8(const shading::SrgbTables& t, float linear) {
+// Encodes linear [0, 1] (clamped to [2^-13, the float below 1]; NaN -> 0) to an 8-bit sRGB code
+// by the encode's line for the value (color.hpp).
+inline std::uint8_t encode_srgb8(const shading::SrgbTables& tables, float linear) {
   using Tables = shading::SrgbTables;
-  if (!(linear > 0.0f)) return 0;  // also catches NaN
-  if (linear >= 1.0f) return 255;
-  const std::uint32_t bits = std::bit_cast<std::uint32_t>(linear);
-  const std::uint32_t above = bits > Tables::kRunBase ? bits - Tables::kRunBase : 0;
-  const std::uint32_t entry = t.run_code[above >> Tables::kRunBits];
-  const bool next = (above & Tables::kRunMask) >= (entry & Tables::kRunOffsetMask);
-  return static_cast<std::uint8_t>((entry >> Tables::kRunCodeShift) + next);
+  const float base = std::bit_cast<float>(Tables::kEncodeBase);
+  const float top = std::bit_cast<float>(Tables::kEncodeTop);
+  const float clamped = linear > base ? std::min(linear, top) : base;  // NaN fails
+  const std::uint32_t bits = std::bit_cast<std::uint32_t>(clamped);
+  const std::uint32_t line =
+      tables.encode_lines[(bits - Tables::kEncodeBase) >> Tables::kEncodeLineShift];
+  const std::uint32_t t = (bits >> 12) & 0xFF;
+  return static_cast<std::uint8_t>(((line >> 16) * 512 + (line & 0xFFFF) * t) >> 16);
 }
 inline std::uint8_t encode_srgb8(float linear) {
   return encode_srgb8(shading::srgb_tables(), linear);
+}
+
+// The exact encode: the largest code whose threshold is at most the value, which is
+// round(linear_to_srgb(v) * 255) (v clamped to [0, 1]; NaN -> 0).
+inline std::uint8_t exact_srgb8(float linear) {
+  const shading::SrgbTables& tables = shading::srgb_tables();
+  if (!(linear > 0.0f)) return 0;
+  const float* after =
+      std::upper_bound(tables.thresholds.begin() + 1, tables.thresholds.begin() + 256, linear);
+  return static_cast<std::uint8_t>(after - tables.thresholds.begin() - 1);
 }
 
 // A value clamped to [0, 1] (NaN -> 0) and rounded to an 8-bit code: v * 255 + 0.5, truncated,

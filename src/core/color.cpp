@@ -1,15 +1,12 @@
-// sRGB tables (see color.hpp) and the public conversions (facet/color.hpp).
+// sRGB tables (see color.hpp) and the public conversions (facet/color.hpp; encode_srgb8 is in
+// srgb_row.cpp, with the encoder).
 #include "core/color.hpp"
 
 #include <algorithm>
 #include <bit>
 #include <cmath>
-#include <string>
 
-#include "core/simd_target.hpp"
-#include "core/srgb_row.hpp"
 #include "facet/color.hpp"
-#include "facet/error.hpp"
 
 namespace facet::shading {
 
@@ -34,10 +31,11 @@ SrgbTables::SrgbTables() {
     // and the line: the chord moved to halve the largest distances above and below it.
     double curve[256];
     for (int t = 0; t < 256; ++t) {
-      const std::uint32_t first = kEncodeBase + (static_cast<std::uint32_t>(line) << 20) +
-                                  (static_cast<std::uint32_t>(t) << 12);
+      const std::uint32_t first = kEncodeBase +
+                                  (static_cast<std::uint32_t>(line) << kEncodeLineShift) +
+                                  (static_cast<std::uint32_t>(t) << kEncodePointShift);
       const double low = std::bit_cast<float>(first);
-      const double high = std::bit_cast<float>(first + (1u << 12) - 1);
+      const double high = std::bit_cast<float>(first + (1u << kEncodePointShift) - 1);
       curve[t] = exact_code(0.5 * (low + high));
     }
     const double slope = (curve[255] - curve[0]) / 255.0;
@@ -67,15 +65,6 @@ glm::vec3 srgb_to_linear(glm::vec3 srgb) {
 glm::vec3 linear_to_srgb(glm::vec3 linear) {
   return {shading::linear_to_srgb(linear.r), shading::linear_to_srgb(linear.g),
           shading::linear_to_srgb(linear.b)};
-}
-
-void encode_srgb8(std::span<const glm::vec4> linear, std::span<std::uint8_t> rgba, float scale) {
-  if (rgba.size() / 4 < linear.size()) {
-    throw Error("encode_srgb8: " + std::to_string(rgba.size()) + " bytes for " +
-                std::to_string(linear.size()) + " colors");
-  }
-  shading::encode_srgb_row_kernel(chosen_simd_target())(
-      linear.data(), static_cast<int>(linear.size()), scale, rgba.data());
 }
 
 }  // namespace facet

@@ -36,7 +36,8 @@ struct SrgbTables {
 
   static constexpr std::uint32_t kEncodeBase = 0x39000000;  // the bits of 2^-13
   static constexpr std::uint32_t kEncodeTop = 0x3F7FFFFF;   // the float below 1
-  static constexpr int kEncodeLineShift = 20;
+  static constexpr int kEncodeLineShift = 20;   // the line: bits above an eighth of an octave
+  static constexpr int kEncodePointShift = 12;  // t: the 8 bits below the line's
   static constexpr int kEncodeLines = ((kEncodeTop - kEncodeBase) >> kEncodeLineShift) + 1;
   // Each line: (its value at t = 0, plus 0.5, in 1/128 codes) << 16 | (its slope per t, in
   // 1/65536 codes); both below 2^15. Zero past the 104th: the vectors that hold it are read whole.

@@ -8,9 +8,13 @@
 #include <hwy/highway.h>
 
 #include <algorithm>
+#include <span>
+#include <string>
 
 #include "core/color.hpp"
 #include "core/truncate_in_range-inl.h"
+#include "facet/color.hpp"
+#include "facet/error.hpp"
 
 HWY_BEFORE_NAMESPACE();
 namespace facet::shading::HWY_NAMESPACE {
@@ -82,7 +86,7 @@ HWY_INLINE IntV SrgbCodes(const std::uint32_t* lines, FloatV c) {
   const IntV line =
       EncodeLines(lines, hn::ShiftRight<Tables::kEncodeLineShift>(hn::Sub(
                              bits, hn::Set(di, static_cast<std::int32_t>(Tables::kEncodeBase)))));
-  const IntV t = hn::And(hn::ShiftRight<12>(bits), hn::Set(di, 0xFF));
+  const IntV t = hn::And(hn::ShiftRight<Tables::kEncodePointShift>(bits), hn::Set(di, 0xFF));
   // (line >> 16) * 512 + (line & 0xFFFF) * t: below 2^31, no product overflows.
   const IntV start = hn::ShiftLeft<9>(hn::ShiftRight<16>(line));
   const IntV along = hn::Mul(hn::And(line, hn::Set(di, 0xFFFF)), t);
@@ -155,4 +159,17 @@ RoundUnorm8RowKernel round_unorm8_row_kernel(SimdTarget target) {
 }
 
 }  // namespace facet::shading
+
+namespace facet {
+
+void encode_srgb8(std::span<const glm::vec4> linear, std::span<std::uint8_t> rgba, float scale) {
+  if (rgba.size() / 4 < linear.size()) {
+    throw Error("encode_srgb8: " + std::to_string(rgba.size()) + " bytes for " +
+                std::to_string(linear.size()) + " colors");
+  }
+  shading::encode_srgb_row_kernel(chosen_simd_target())(
+      linear.data(), static_cast<int>(linear.size()), scale, rgba.data());
+}
+
+}  // namespace facet
 #endif  // HWY_ONCE

@@ -22,7 +22,7 @@ inline std::uint8_t encode_srgb8(const shading::SrgbTables& tables, float linear
   const std::uint32_t bits = std::bit_cast<std::uint32_t>(clamped);
   const std::uint32_t line =
       tables.encode_lines[(bits - Tables::kEncodeBase) >> Tables::kEncodeLineShift];
-  const std::uint32_t t = (bits >> 12) & 0xFF;
+  const std::uint32_t t = (bits >> Tables::kEncodePointShift) & 0xFF;
   return static_cast<std::uint8_t>(((line >> 16) * 512 + (line & 0xFFFF) * t) >> 16);
 }
 inline std::uint8_t encode_srgb8(float linear) {

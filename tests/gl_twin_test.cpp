@@ -483,7 +483,7 @@ TEST(GlTwinCli, RenderBackendGlDrawsWhatFacetDraws) {
   const test::Rgba8Image a = test::read_png((dir / "gl.png").string());
   const test::Rgba8Image b = test::read_png((dir / "facet.png").string());
   ASSERT_EQ(a.width, 160);
-  EXPECT_GE(psnr(a, b), 51.0);  // measured 57.2 dB
+  EXPECT_GE(psnr(a, b), 50.0);  // measured 56.1 dB
 }
 
 // `facet bench --backend gl` times the scenes the twin can draw, says which OpenGL it is, and

@@ -131,6 +131,24 @@ TEST(SrgbLines, AreWithinOneCodeOfTheExactEncode) {
   }
 }
 
+// Each line stays within 0.07 of a code of the exact curve, 255 * linear_to_srgb(v) in double,
+// over its whole range (every 7th float of [2^-13, 1)): what keeps a code within one of the
+// exact code, and what tests comparing codes with the curve allow beyond half a code.
+TEST(SrgbLines, StayWithinAFifteenthOfACodeOfTheCurve) {
+  using Tables = shading::SrgbTables;
+  const Tables& tables = shading::srgb_tables();
+  double farthest = 0.0;
+  for (std::uint32_t bits = Tables::kEncodeBase; bits <= Tables::kEncodeTop; bits += 7) {
+    const double v = std::bit_cast<float>(bits);
+    const double curve =
+        255.0 * (v <= 0.0031308 ? v * 12.92 : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055);
+    const double line =
+        static_cast<double>(srgb_line_value(tables, static_cast<float>(v))) / 65536.0 - 0.5;
+    farthest = std::max(farthest, std::abs(line - curve));
+  }
+  EXPECT_LT(farthest, 0.07);
+}
+
 // Display-referred frames' resolve: every code's display value (code / 255) back to the code,
 // and every channel of the probe values (NaN, infinities, values outside [0, 1] among them)
 // clamped and rounded as alpha is, on every target.

@@ -220,7 +220,8 @@ TEST(ToneMapping, MapsWhatIsDrawnAndLeavesTheClearColor) {
     const std::uint8_t* c = &clipped.rgba8()[p];
     if (c[0] == 255) {  // the square's inside: clipped without mapping, below white with it
       ++square;
-      // Half a code of rounding, and the encode's lines up to 0.07 code off the curve.
+      // Half a code of rounding, and the encode's lines' distance from the curve (under 0.07
+      // of a code: SrgbLines.StayWithinAFifteenthOfACodeOfTheCurve).
       for (int k = 0; k < 3; ++k) EXPECT_NEAR(m[k], 255.0f * want_srgb[k], 0.57f) << k;
       EXPECT_LT(m[0], 255);
     } else if (std::abs(c[0] - 255.0f * clear_srgb.r) < 0.6f) {

@@ -25,11 +25,10 @@ inline float linear_to_srgb(float c) {
 // 0), its bits minus kEncodeBase shifted right by 20 pick the line, and the next 8 bits of its
 // mantissa, t, the point on it: code = ((line >> 16) * 512 + (line & 0xFFFF) * t) >> 16. Each
 // line is its eighth's chord of the exact curve, moved to split the curve's largest distances
-// above and below it evenly, plus 0.5 so that the shift rounds: at most 0.065 of a code off the
-// curve, so a code at most one from the exact one, and the exact one for all but about 0.4 % of
-// values (checked on every float of [0, 1]; srgb_row_test checks every float near a threshold).
-// Integers only, so the same bytes on every target, and a table of 104 entries that AVX-512 reads
-// from registers.
+// above and below it evenly, plus 0.5 so that the shift rounds. The lines stay within 0.07 of a
+// code of the curve, so a code is at most one from the exact one, and mostly equal to it
+// (srgb_row_test's SrgbLines tests hold them to both). Integers only, so the same bytes on every
+// target, and a table of 104 entries that AVX-512 reads from registers.
 struct SrgbTables {
   std::array<float, 257> thresholds;  // [256] is a sentinel above every input
   std::array<float, 256> decode;

@@ -12,9 +12,9 @@
 
 namespace facet::test {
 
-// Encodes linear [0, 1] (clamped to [2^-13, the float below 1]; NaN -> 0) to an 8-bit sRGB code
-// by the encode's line for the value (color.hpp).
-inline std::uint8_t encode_srgb8(const shading::SrgbTables& tables, float linear) {
+// The encode's line (color.hpp) at linear [0, 1] (clamped to [2^-13, the float below 1]; NaN
+// -> 2^-13): the code plus 0.5, in 1/65536 codes.
+inline std::uint32_t srgb_line_value(const shading::SrgbTables& tables, float linear) {
   using Tables = shading::SrgbTables;
   const float base = std::bit_cast<float>(Tables::kEncodeBase);
   const float top = std::bit_cast<float>(Tables::kEncodeTop);
@@ -23,7 +23,12 @@ inline std::uint8_t encode_srgb8(const shading::SrgbTables& tables, float linear
   const std::uint32_t line =
       tables.encode_lines[(bits - Tables::kEncodeBase) >> Tables::kEncodeLineShift];
   const std::uint32_t t = (bits >> Tables::kEncodePointShift) & 0xFF;
-  return static_cast<std::uint8_t>(((line >> 16) * 512 + (line & 0xFFFF) * t) >> 16);
+  return (line >> 16) * 512 + (line & 0xFFFF) * t;
+}
+
+// Encodes linear [0, 1] (NaN -> 0) to an 8-bit sRGB code by the encode's line for the value.
+inline std::uint8_t encode_srgb8(const shading::SrgbTables& tables, float linear) {
+  return static_cast<std::uint8_t>(srgb_line_value(tables, linear) >> 16);
 }
 inline std::uint8_t encode_srgb8(float linear) {
   return encode_srgb8(shading::srgb_tables(), linear);

@@ -149,6 +149,24 @@ TEST(SrgbLines, StayWithinAFifteenthOfACodeOfTheCurve) {
   EXPECT_LT(farthest, 0.07);
 }
 
+// The SIMD encode multiplies the lines' 16-bit halves as signed numbers: each below 2^15. The
+// entries outside the lines are zero, and each line sits at its values' entry (line_entry).
+TEST(SrgbLines, HalvesArePositiveSigned16BitNumbersAtTheirEntries) {
+  using Tables = shading::SrgbTables;
+  const Tables& tables = shading::srgb_tables();
+  for (int entry = 0; entry < Tables::kEncodeEntries; ++entry) {
+    const std::uint32_t line = tables.encode_lines[entry];
+    const bool holds_a_line = entry >= Tables::kEncodeFirstEntry &&
+                              entry < Tables::kEncodeFirstEntry + Tables::kEncodeLines;
+    EXPECT_EQ(line != 0, holds_a_line) << "entry " << entry;
+    EXPECT_LT(line >> 16, 1u << 15) << "entry " << entry;
+    EXPECT_LT(line & 0xFFFF, 1u << 15) << "entry " << entry;
+  }
+  EXPECT_EQ(Tables::line_entry(Tables::kEncodeBase), Tables::kEncodeFirstEntry);
+  EXPECT_EQ(Tables::line_entry(Tables::kEncodeTop),
+            Tables::kEncodeFirstEntry + Tables::kEncodeLines - 1);
+}
+
 // Display-referred frames' resolve: every code's display value (code / 255) back to the code,
 // and every channel of the probe values (NaN, infinities, values outside [0, 1] among them)
 // clamped and rounded as alpha is, on every target.

@@ -47,7 +47,7 @@ SrgbTables::SrgbTables() {
     const double start = curve[0] + 0.5 * (above + below);
     const auto bias = static_cast<std::uint32_t>(std::lround((start + 0.5) * 128.0));
     const auto scale = static_cast<std::uint32_t>(std::lround(slope * 65536.0));
-    encode_lines[line] = bias << 16 | scale;
+    encode_lines[kEncodeFirstEntry + line] = bias << 16 | scale;
   }
 }
 

@@ -22,8 +22,9 @@ inline float linear_to_srgb(float c) {
 //
 // The library's encode (core/srgb_row.cpp) approximates it by lines, one per eighth of an octave
 // of [2^-13, 1): the value is clamped to [2^-13, the float below 1] (NaN to 2^-13, whose code is
-// 0), its bits minus kEncodeBase shifted right by 20 pick the line, and the next 8 bits of its
-// mantissa, t, the point on it: code = ((line >> 16) * 512 + (line & 0xFFFF) * t) >> 16. Each
+// 0), its bits shifted right by 20 pick the line (its entry: those bits modulo 128), and the
+// next 8 bits of its mantissa, t, the point on it: code = ((line >> 16) * 512 + (line & 0xFFFF)
+// * t) >> 16, one multiply-add of the line's 16-bit halves with (512, t) in SIMD. Each
 // line is its eighth's chord of the exact curve, moved to split the curve's largest distances
 // above and below it evenly, plus 0.5 so that the shift rounds. The lines stay within 0.07 of a
 // code of the curve, so a code is at most one from the exact one, and mostly equal to it
@@ -38,9 +39,19 @@ struct SrgbTables {
   static constexpr int kEncodeLineShift = 20;   // the line: bits above an eighth of an octave
   static constexpr int kEncodePointShift = 12;  // t: the 8 bits below the line's
   static constexpr int kEncodeLines = ((kEncodeTop - kEncodeBase) >> kEncodeLineShift) + 1;
+  // The entry of a value's line: (bits >> kEncodeLineShift) % kEncodeEntries, the exponent and
+  // top mantissa bits wrapped, which AVX-512's permutes read without a subtraction. The first
+  // line's (2^-13) is kEncodeFirstEntry.
+  static constexpr int kEncodeEntries = 128;
+  static constexpr int kEncodeFirstEntry = (kEncodeBase >> kEncodeLineShift) % kEncodeEntries;
+  static_assert(kEncodeFirstEntry + kEncodeLines <= kEncodeEntries);
+  static constexpr int line_entry(std::uint32_t bits) {
+    return static_cast<int>((bits >> kEncodeLineShift) % kEncodeEntries);
+  }
   // Each line: (its value at t = 0, plus 0.5, in 1/128 codes) << 16 | (its slope per t, in
-  // 1/65536 codes); both below 2^15. Zero past the 104th: the vectors that hold it are read whole.
-  alignas(64) std::array<std::uint32_t, 128> encode_lines;
+  // 1/65536 codes); both below 2^15, so positive as signed 16-bit halves. Zero outside the
+  // lines' entries: the vectors that hold them are read whole.
+  alignas(64) std::array<std::uint32_t, kEncodeEntries> encode_lines;
 
   SrgbTables();
 };

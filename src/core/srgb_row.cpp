@@ -52,45 +52,56 @@ HWY_INLINE IntV Rounded(FloatV c) {
                                hn::Add(hn::Mul(c, hn::Set(df, 255.0f)), hn::Set(df, 0.5f)));
 }
 
-// The encode's lines (color.hpp's SrgbTables::encode_lines) of the lanes' `line` indices: from
-// registers with AVX-512 (eight vectors of sixteen entries, two at a time by index bit 4, then
-// chosen by bits 5 and 6), else by a gather (a load a lane where the target has none).
-HWY_INLINE IntV EncodeLines(const std::uint32_t* lines, IntV line) {
+// The encode's lines (color.hpp's SrgbTables::encode_lines) of the lanes' entries, taken
+// modulo 128 (line_entry): from registers with AVX-512 (eight vectors of sixteen entries, two
+// at a time by entry bit 4, then chosen by bits 5 and 6; the permutes read bits 0 to 4 alone),
+// else by a gather (a load a lane where the target has none).
+HWY_INLINE IntV EncodeLines(const std::uint32_t* lines, IntV entry) {
   const IntTag di;
 #if HWY_TARGET == HWY_AVX3 || HWY_TARGET == HWY_AVX3_DL
-  static_assert(hn::MaxLanes(di) == 16);
+  static_assert(hn::MaxLanes(di) == 16 && Tables::kEncodeEntries == 128);
   auto table = [&](int first) HWY_ATTR {
     return hn::Load(di, reinterpret_cast<const std::int32_t*>(lines) + first).raw;
   };
   auto pair = [&](int first) HWY_ATTR {
-    return _mm512_permutex2var_epi32(table(first), line.raw, table(first + 16));
+    return _mm512_permutex2var_epi32(table(first), entry.raw, table(first + 16));
   };
-  const __mmask16 bit5 = _mm512_test_epi32_mask(line.raw, _mm512_set1_epi32(32));
-  const __mmask16 bit6 = _mm512_test_epi32_mask(line.raw, _mm512_set1_epi32(64));
+  const __mmask16 bit5 = _mm512_test_epi32_mask(entry.raw, _mm512_set1_epi32(32));
+  const __mmask16 bit6 = _mm512_test_epi32_mask(entry.raw, _mm512_set1_epi32(64));
   const __m512i low = _mm512_mask_blend_epi32(bit5, pair(0), pair(32));
   const __m512i high = _mm512_mask_blend_epi32(bit5, pair(64), pair(96));
   return IntV{_mm512_mask_blend_epi32(bit6, low, high)};
 #else
-  return hn::GatherIndex(di, reinterpret_cast<const std::int32_t*>(lines), line);
+  return hn::GatherIndex(di, reinterpret_cast<const std::int32_t*>(lines),
+                         hn::And(entry, hn::Set(di, Tables::kEncodeEntries - 1)));
 #endif
 }
 
-// The codes of the color channels of c (scaled, not clamped): color.hpp's encode by lines.
+// The codes of the color channels of c, clamped to [0, 1] (NaN to 0): color.hpp's encode by
+// lines.
 HWY_INLINE IntV SrgbCodes(const std::uint32_t* lines, FloatV c) {
-  const FloatTag df;
   const IntTag di;
-  // Clamped to [2^-13, the float below 1]; NaN fails the comparison.
-  const FloatV base = hn::BitCast(df, hn::Set(di, static_cast<std::int32_t>(Tables::kEncodeBase)));
-  const FloatV top = hn::BitCast(df, hn::Set(di, static_cast<std::int32_t>(Tables::kEncodeTop)));
-  const IntV bits = hn::BitCast(di, hn::Min(hn::IfThenElse(hn::Gt(c, base), c, base), top));
-  const IntV line =
-      EncodeLines(lines, hn::ShiftRight<Tables::kEncodeLineShift>(hn::Sub(
-                             bits, hn::Set(di, static_cast<std::int32_t>(Tables::kEncodeBase)))));
-  const IntV t = hn::And(hn::ShiftRight<Tables::kEncodePointShift>(bits), hn::Set(di, 0xFF));
-  // (line >> 16) * 512 + (line & 0xFFFF) * t: below 2^31, no product overflows.
+  // To [2^-13, the float below 1]: as integers, the order of the floats of [0, 1].
+  const IntV bits = hn::Min(
+      hn::Max(hn::BitCast(di, c), hn::Set(di, static_cast<std::int32_t>(Tables::kEncodeBase))),
+      hn::Set(di, static_cast<std::int32_t>(Tables::kEncodeTop)));
+  const IntV line = EncodeLines(lines, hn::ShiftRight<Tables::kEncodeLineShift>(bits));
+  const IntV t = hn::ShiftRight<Tables::kEncodePointShift>(bits);  // t in the low 8 bits
+  // (line >> 16) * 512 + (line & 0xFFFF) * t: the line's 16-bit halves times (512, t), each pair
+  // of products added, in one multiply-add (both halves below 2^15, so no sign; the sum below
+  // 2^25). One-lane targets have no halves to pair.
+#if HWY_TARGET == HWY_SCALAR
   const IntV start = hn::ShiftLeft<9>(hn::ShiftRight<16>(line));
-  const IntV along = hn::Mul(hn::And(line, hn::Set(di, 0xFFFF)), t);
+  const IntV along = hn::Mul(hn::And(line, hn::Set(di, 0xFFFF)), hn::And(t, hn::Set(di, 0xFF)));
   return hn::ShiftRight<16>(hn::Add(start, along));
+#else
+  const IntV t_and_512 = hn::OrAnd(hn::Set(di, 512 << 16), t, hn::Set(di, 0xFF));
+  const hn::Repartition<std::int16_t, IntTag> d16;
+  IntV odd = hn::Zero(di);
+  const IntV even = hn::ReorderWidenMulAccumulate(di, hn::BitCast(d16, line),
+                                                  hn::BitCast(d16, t_and_512), hn::Zero(di), odd);
+  return hn::ShiftRight<16>(hn::RearrangeToOddPlusEven(even, odd));
+#endif
 }
 
 // The low bytes of v's lanes, stored from `to`.
@@ -124,12 +135,12 @@ void EncodeSrgbRow(const glm::vec4* colors, int count, float scale, std::uint8_t
   alignas(64) float factor[kMaxFloatLanes + 4];
   FillFactors(scale, kMaxFloatLanes + 4, factor);
   ForEachVector(&colors[0].x, 4 * count, rgba, [&](const float* from, std::uint8_t* to, int j) {
-    const FloatV x = hn::LoadU(df, from);
-    const IntV codes = SrgbCodes(lines, hn::Mul(x, hn::LoadU(df, factor + (j & 3))));
+    // Alpha's factor is 1: its lanes keep their value.
+    const FloatV c = Clamped(hn::Mul(hn::LoadU(df, from), hn::LoadU(df, factor + (j & 3))));
     // Alpha's lanes (j % 4 == 3, counted from j & 3 on, for vectors of one or two lanes).
     const IntV three = hn::Set(di, 3);
     const auto alpha = hn::Eq(hn::And(hn::Iota(di, j & 3), three), three);
-    StoreBytes(hn::IfThenElse(alpha, Rounded(Clamped(x)), codes), to);
+    StoreBytes(hn::IfThenElse(alpha, Rounded(c), SrgbCodes(lines, c)), to);
   });
 }
 

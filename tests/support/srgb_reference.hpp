@@ -20,8 +20,7 @@ inline std::uint32_t srgb_line_value(const shading::SrgbTables& tables, float li
   const float top = std::bit_cast<float>(Tables::kEncodeTop);
   const float clamped = linear > base ? std::min(linear, top) : base;  // NaN fails
   const std::uint32_t bits = std::bit_cast<std::uint32_t>(clamped);
-  const std::uint32_t line =
-      tables.encode_lines[(bits - Tables::kEncodeBase) >> Tables::kEncodeLineShift];
+  const std::uint32_t line = tables.encode_lines[Tables::line_entry(bits)];
   const std::uint32_t t = (bits >> Tables::kEncodePointShift) & 0xFF;
   return (line >> 16) * 512 + (line & 0xFFFF) * t;
 }

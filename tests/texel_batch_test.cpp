@@ -153,6 +153,57 @@ TEST(TexelBatch, GivesTheReferencesBitsOnEveryTarget) {
   EXPECT_GT(compared, 1000);
 }
 
+// Trilinear batches of one triangle whose footprints are all at most a texel skip the levels of
+// detail (texel_batch.cpp's MagnifiedEverywhere): footprints of s texels along both axes, for s
+// on both sides of the bound and of 1, with the texture coordinates and w varying across the
+// batch as in a perspective view. A bound that let a footprint above one texel through would
+// give its pixels the base level alone where the reference blends toward the next.
+TEST(TexelBatch, TrilinearBatchesAtAndAroundMagnificationGiveTheReferencesBits) {
+  std::mt19937 rng(20261204);
+  const auto texture = random_texture(rng, 64, 32);
+  ASSERT_GT(texture->level_count(), 1);
+  std::uniform_real_distribution<float> coordinate(0.0f, 1.0f), spread(0.97f, 1.0f);
+  int compared = 0;
+  for (std::int64_t target : simd_targets()) {
+    ForcedTarget forced(target);
+    for (float side : {0.5f, 0.95f, 0.985f, 0.99f, 0.995f, 1.002f, 1.01f, 1.5f}) {
+      for (float tilt : {0.0f, 1e-4f}) {  // 1 / w constant across the triangle, or not
+        TextureMap map{texture, Sampler{Filter::trilinear, Wrap::repeat, Wrap::repeat},
+                       glm::mat3(1.0f)};
+        Case c;
+        c.batch.count = shading::kTexelBatch;
+        const float w = 2.0f;
+        for (int j = 0; j < c.batch.count; ++j) {
+          c.u[j] = coordinate(rng);
+          c.v[j] = coordinate(rng);
+          c.w[j] = w * spread(rng);  // the largest w gives the largest footprint
+        }
+        c.w[7] = w;
+        // (U_x - u W_x) w texels at the largest w: side along x, and along y.
+        c.planes[0] = {0.0f, side / (w * static_cast<float>(texture->width())), 0.0f};
+        c.planes[1] = {0.0f, 0.0f, side / (w * static_cast<float>(texture->height()))};
+        c.inv_w = {0.0f, tilt, -tilt};
+        c.batch.u = c.u;
+        c.batch.v = c.v;
+        c.batch.w = c.w;
+        c.batch.planes = c.planes;
+        c.batch.inv_w = &c.inv_w;
+        shading::sample_batch_kernel(chosen_simd_target())(map, c.batch);
+        for (int j = 0; j < c.batch.count; ++j) {
+          const glm::vec4 expected = reference_pixel(map, c.batch, j);
+          const float* texel = c.batch.rgba[j];
+          const glm::vec4 got{texel[0], texel[1], texel[2], texel[3]};
+          ASSERT_EQ(std::memcmp(&expected, &got, sizeof got), 0)
+              << hwy::TargetName(target) << ", footprint " << side << ", tilt " << tilt
+              << ", pixel " << j;
+          ++compared;
+        }
+      }
+    }
+  }
+  EXPECT_GT(compared, 1000);
+}
+
 TEST(TextureSampler, GivesTheReferencesBitsOnEveryTarget) {
   std::mt19937 rng(20261203);
   const auto textures = sample_textures(rng);

@@ -12,6 +12,7 @@
 #include <hwy/highway.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <type_traits>
@@ -106,12 +107,58 @@ HWY_INLINE void LevelsOfDetail(const Texture& texture, const glm::mat3& m, const
   }
 }
 
+// The largest bound MagnifiedEverywhere accepts: below 1 by a margin that covers the float
+// rounding of the bound and of LevelsOfDetail's rho2 (a few parts in a million).
+constexpr float kMagnifiedBound = 0.98f;
+
+// Whether every pixel of a batch of one triangle is magnified (a footprint of at most one texel:
+// level 0 and no blend toward level 1), from a bound on LevelsOfDetail's rho2 taken over the
+// batch's largest |u|, |v| and |w| instead of pixel by pixel: |(U_x - u W_x) w| is at most
+// (|U_x| + max|u| |W_x|) max|w|, and so on through the map's linear part in absolute values.
+// Where it holds, trilinear filtering gives bilinear filtering's bits. Non-finite values fail it.
+HWY_INLINE bool MagnifiedEverywhere(const Texture& texture, const glm::mat3& m,
+                                    const TexelBatch& batch) {
+  const FloatTag df;
+  const int lanes = static_cast<int>(hn::Lanes(df));
+  FloatV most_u = hn::Zero(df), most_v = hn::Zero(df), most_w = hn::Zero(df);
+  for (int j = 0; j < batch.count; j += lanes) {
+    // The lanes past the batch are left out; a NaN fails the comparison and is left out too,
+    // which is right: LevelsOfDetail gives a NaN level of detail level 0 (StoreLevel).
+    const auto in_batch = hn::FirstN(df, static_cast<std::size_t>(batch.count - j));
+    auto most = [&](FloatV so_far, const float* values) HWY_ATTR {
+      const FloatV a = hn::Abs(hn::LoadU(df, values + j));
+      return hn::IfThenElse(hn::And(in_batch, hn::Gt(a, so_far)), a, so_far);
+    };
+    most_u = most(most_u, batch.u), most_v = most(most_v, batch.v), most_w = most(most_w, batch.w);
+  }
+  const float u = hn::GetLane(hn::MaxOfLanes(df, most_u));
+  const float v = hn::GetLane(hn::MaxOfLanes(df, most_v));
+  const float w = hn::GetLane(hn::MaxOfLanes(df, most_w));
+  using S = TexelBatch;
+  auto derivative = [&](int slope, float value, int inv_w_slope) {
+    return (std::abs(batch.slope(slope, 0)) + value * std::abs(batch.slope(inv_w_slope, 0))) * w;
+  };
+  const float dux = derivative(S::u_dx, u, S::inv_w_dx), dvx = derivative(S::v_dx, v, S::inv_w_dx);
+  const float duy = derivative(S::u_dy, u, S::inv_w_dy), dvy = derivative(S::v_dy, v, S::inv_w_dy);
+  auto texels = [&](int row, float du, float dv, int size) {
+    return (std::abs(m[0][row]) * du + std::abs(m[1][row]) * dv) * static_cast<float>(size);
+  };
+  const float xu = texels(0, dux, dvx, texture.width()), xv = texels(1, dux, dvx, texture.height());
+  const float yu = texels(0, duy, dvy, texture.width()), yv = texels(1, duy, dvy, texture.height());
+  const float rho2 = std::max(xu * xu + xv * xv, yu * yu + yv * yv);
+  return rho2 < kMagnifiedBound;  // NaN fails
+}
+
 void SampleBatch(const TextureMap& map, TexelBatch& batch) {
   const FloatTag df;
   const int lanes = static_cast<int>(hn::Lanes(df));
   const Texture& texture = *map.texture;
   const glm::mat3& m = map.transform;
-  const Filter filter = map.sampler.filter;
+  // Trilinear filtering where every pixel is magnified is bilinear filtering: the levels of
+  // detail are not computed.
+  const bool magnified = map.sampler.filter == Filter::trilinear && batch.slopes == nullptr &&
+                         MagnifiedEverywhere(texture, m, batch);
+  const Filter filter = magnified ? Filter::bilinear : map.sampler.filter;
   // The map's transform of the texture coordinates of the pixels from j.
   auto transformed = [&](int j) HWY_ATTR {
     const FloatV u = hn::LoadU(df, batch.u + j), v = hn::LoadU(df, batch.v + j);

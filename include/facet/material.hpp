@@ -42,7 +42,8 @@ enum class AlphaMode {
 };
 
 // A texture map: the image, how it is sampled, and a transform of the texture coordinates
-// (KHR_texture_transform / MTL -o -s): uv' = (transform * vec3(uv, 1)).xy.
+// (KHR_texture_transform / MTL -o -s): uv' = (transform * vec3(uv, 1)).xy; the identity (the
+// default) leaves uv as it is.
 struct TextureMap {
   std::shared_ptr<const Texture> texture;  // null: no map
   Sampler sampler;

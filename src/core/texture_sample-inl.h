@@ -42,14 +42,13 @@ using IntTag = hn::RebindToSigned<FloatTag>;
 using FloatV = hn::Vec<FloatTag>;
 using IntV = hn::Vec<IntTag>;
 
-// A texel-space coordinate made safe to convert to int: NaN and huge values are clamped (to
-// 2^23: beyond it floats are whole numbers anyway, and +1 still fits in an int). NaN fails the
-// comparison.
+// A texel-space coordinate made safe to convert to int: huge values are clamped to +-2^23
+// (beyond it floats are whole numbers anyway, and +1 still fits in an int), NaN to -2^23.
+// Highway's Max gives its second argument where the first is NaN, on every target.
 HWY_INLINE FloatV Sanitize(FloatV x) {
   const FloatTag df;
   const FloatV limit = hn::Set(df, 8388608.0f);
-  const FloatV below_limit = hn::IfThenElse(hn::Lt(limit, x), limit, x);
-  return hn::IfThenElse(hn::Gt(x, hn::Neg(limit)), below_limit, hn::Neg(limit));
+  return hn::Min(hn::Max(x, hn::Neg(limit)), limit);
 }
 // Floor of a sanitized coordinate (exact; |x| <= 2^23 after Sanitize, so it fits an int).
 HWY_INLINE IntV FloorToInt(FloatV x) { return simd::TruncateInRange(IntTag(), hn::Floor(x)); }
@@ -92,6 +91,10 @@ struct Pair {
 };
 HWY_INLINE Pair WrapPair(Wrap mode, IntV i, IntV size, bool power_of_two) {
   const IntTag di;
+  if (mode == Wrap::repeat && power_of_two) {
+    const IntV mask = hn::Sub(size, hn::Set(di, 1));
+    return {hn::And(i, mask), hn::And(hn::Add(i, hn::Set(di, 1)), mask)};
+  }
   if (mode == Wrap::repeat) {
     const IntV first = WrapOne(mode, i, size, power_of_two);
     const IntV next = hn::Add(first, hn::Set(di, 1));

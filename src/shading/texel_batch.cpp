@@ -121,15 +121,19 @@ HWY_INLINE bool MagnifiedEverywhere(const Texture& texture, const glm::mat3& m,
   const FloatTag df;
   const int lanes = static_cast<int>(hn::Lanes(df));
   FloatV most_u = hn::Zero(df), most_v = hn::Zero(df), most_w = hn::Zero(df);
-  for (int j = 0; j < batch.count; j += lanes) {
-    // The lanes past the batch are left out; a NaN fails the comparison and is left out too,
-    // which is right: LevelsOfDetail gives a NaN level of detail level 0 (StoreLevel).
-    const auto in_batch = hn::FirstN(df, static_cast<std::size_t>(batch.count - j));
+  // A NaN is left out (Highway's Max gives its second argument where the first is NaN, on every
+  // target), which is right: LevelsOfDetail gives a NaN level of detail level 0 (StoreLevel).
+  auto take = [&](int j, auto in_batch) HWY_ATTR {
     auto most = [&](FloatV so_far, const float* values) HWY_ATTR {
-      const FloatV a = hn::Abs(hn::LoadU(df, values + j));
-      return hn::IfThenElse(hn::And(in_batch, hn::Gt(a, so_far)), a, so_far);
+      return hn::Max(in_batch(hn::Abs(hn::LoadU(df, values + j))), so_far);
     };
     most_u = most(most_u, batch.u), most_v = most(most_v, batch.v), most_w = most(most_w, batch.w);
+  };
+  int j = 0;
+  for (; j + lanes <= batch.count; j += lanes) take(j, [](FloatV x) HWY_ATTR { return x; });
+  if (j < batch.count) {  // the lanes past the batch left out
+    const auto in_batch = hn::FirstN(df, static_cast<std::size_t>(batch.count - j));
+    take(j, [&](FloatV x) HWY_ATTR { return hn::IfThenElseZero(in_batch, x); });
   }
   const float u = hn::GetLane(hn::MaxOfLanes(df, most_u));
   const float v = hn::GetLane(hn::MaxOfLanes(df, most_v));
@@ -159,9 +163,12 @@ void SampleBatch(const TextureMap& map, TexelBatch& batch) {
   const bool magnified = map.sampler.filter == Filter::trilinear && batch.slopes == nullptr &&
                          MagnifiedEverywhere(texture, m, batch);
   const Filter filter = magnified ? Filter::bilinear : map.sampler.filter;
-  // The map's transform of the texture coordinates of the pixels from j.
+  // The map's transform of the texture coordinates of the pixels from j; the identity leaves
+  // them as they are (TextureMap).
+  const bool identity = m == glm::mat3(1.0f);
   auto transformed = [&](int j) HWY_ATTR {
     const FloatV u = hn::LoadU(df, batch.u + j), v = hn::LoadU(df, batch.v + j);
+    if (identity) return std::pair{u, v};
     return std::pair{
         hn::Add(hn::Add(hn::Mul(hn::Set(df, m[0][0]), u), hn::Mul(hn::Set(df, m[1][0]), v)),
                 hn::Set(df, m[2][0])),

@@ -93,12 +93,15 @@ inline float reference_lod(const Texture& t, glm::vec2 duv_dx, glm::vec2 duv_dy)
 }
 
 // A material's map at texture coordinate uv whose derivatives are duv_dx, duv_dy: the map's
-// transform ((m00 u + m10 v) + m20), the derivatives through its linear part, then the texture.
+// transform ((m00 u + m10 v) + m20; none for the identity), the derivatives through its linear
+// part, then the texture.
 inline glm::vec4 reference_sample_map(const TextureMap& map, glm::vec2 uv, glm::vec2 duv_dx,
                                       glm::vec2 duv_dy) {
   const glm::mat3& m = map.transform;
-  const glm::vec2 uv_t{m[0][0] * uv.x + m[1][0] * uv.y + m[2][0],
-                       m[0][1] * uv.x + m[1][1] * uv.y + m[2][1]};
+  const glm::vec2 uv_t = m == glm::mat3(1.0f)
+                             ? uv
+                             : glm::vec2{m[0][0] * uv.x + m[1][0] * uv.y + m[2][0],
+                                         m[0][1] * uv.x + m[1][1] * uv.y + m[2][1]};
   float lod = 0.0f;
   if (map.sampler.filter == Filter::trilinear) {
     const glm::vec2 dx{m[0][0] * duv_dx.x + m[1][0] * duv_dx.y,

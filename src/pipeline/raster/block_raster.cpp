@@ -25,9 +25,11 @@ namespace hn = hwy::HWY_NAMESPACE;
 using FloatTag = hn::CappedTag<float, kBlockSize>;
 using IntTag = hn::RebindToSigned<FloatTag>;
 
-// CoverBlock, with kCoversBlock (BlockInput::covers_block) known.
-template <bool kCoversBlock>
+// CoverBlock, with kCoversBlock (BlockInput::covers_block) known, and the count of varyings
+// where kVaryings is not negative.
+template <bool kCoversBlock, int kVaryings>
 HWY_INLINE void CoverRows(const BlockInput& in, BlockFragments& out) {
+  const int varyings = kVaryings >= 0 ? kVaryings : in.varyings;
   const FloatTag df;
   const IntTag di;
   const int lanes = static_cast<int>(hn::Lanes(df));
@@ -79,7 +81,7 @@ HWY_INLINE void CoverRows(const BlockInput& in, BlockFragments& out) {
       }
       if (!have_rows) {
         inv_w_row = evaluate_row(t.inv_w, t.ref_y, py);
-        for (int k = 0; k < in.varyings; ++k) {
+        for (int k = 0; k < varyings; ++k) {
           varying_rows[k] = evaluate_row(in.varying_planes[k], t.ref_y, py);
         }
         have_rows = true;
@@ -92,7 +94,7 @@ HWY_INLINE void CoverRows(const BlockInput& in, BlockFragments& out) {
           hn::Add(hn::Set(df, inv_w_row), hn::Mul(hn::Set(df, t.inv_w.dx), relative_x));
       const auto w = hn::Div(hn::Set(df, 1.0f), inv_w);
       hn::Store(w, df, out.w + lane0);
-      for (int k = 0; k < in.varyings; ++k) {
+      for (int k = 0; k < varyings; ++k) {
         const auto v_over_w = hn::Add(hn::Set(df, varying_rows[k]),
                                       hn::Mul(hn::Set(df, in.varying_planes[k].dx), relative_x));
         hn::Store(hn::Mul(v_over_w, w), df, out.v[k] + lane0);
@@ -102,11 +104,32 @@ HWY_INLINE void CoverRows(const BlockInput& in, BlockFragments& out) {
   out.mask = mask;
 }
 
-void CoverBlock(const BlockInput& in, BlockFragments& out) {
+// CoverRows for the block's kind. Its loops over the varyings are unrolled for two to six of
+// them (textured unlit models, Gouraud, glmark2's models), whose rows otherwise spend much of
+// their time on the loops' bounds.
+template <int kVaryings>
+HWY_INLINE void CoverRowsOf(const BlockInput& in, BlockFragments& out) {
   if (in.covers_block) {
-    CoverRows<true>(in, out);
+    CoverRows<true, kVaryings>(in, out);
   } else {
-    CoverRows<false>(in, out);
+    CoverRows<false, kVaryings>(in, out);
+  }
+}
+
+void CoverBlock(const BlockInput& in, BlockFragments& out) {
+  switch (in.varyings) {
+    case 2:
+      return CoverRowsOf<2>(in, out);
+    case 3:
+      return CoverRowsOf<3>(in, out);
+    case 4:
+      return CoverRowsOf<4>(in, out);
+    case 5:
+      return CoverRowsOf<5>(in, out);
+    case 6:
+      return CoverRowsOf<6>(in, out);
+    default:
+      return CoverRowsOf<-1>(in, out);
   }
 }
 

@@ -1,7 +1,8 @@
 // Frames whose every color is a display value (the normals, depth and texcoords views, the
-// glmark2 scenes' models) keep those values as code / 255 in their tiles and round them at
-// resolve, instead of storing decoded linear values that resolve sRGB-encodes back to the same
-// codes (pipeline/frame_run.cpp's display_referred_frame). The bytes must not change: each frame
+// glmark2 scenes' models) keep those values as code / 255 in their tiles (at one sample, the
+// values themselves) and round them at resolve, instead of storing decoded linear values that
+// resolve sRGB-encodes back to the same codes (pipeline/frame_run.cpp's display_referred_frame).
+// The bytes must not change: each frame
 // here is also rendered to a float target, which never takes that path and holds a display
 // value as the value itself (the normals view's n * 0.5 + 0.5, unrounded) and everything else as
 // linear light; encoded as an 8-bit target stores each (display values rounded to their code,
@@ -16,10 +17,12 @@
 #include <vector>
 
 #include "facet/framebuffer.hpp"
+#include "facet/image_io.hpp"
 #include "facet/procedural.hpp"
 #include "facet/renderer.hpp"
 #include "facet/teapot.hpp"
 #include "scenes/bench_scenes.hpp"
+#include "support/golden.hpp"
 #include "support/required_package.hpp"
 #include "support/srgb_reference.hpp"
 
@@ -129,6 +132,24 @@ TEST(DisplayReferred, Glmark2ScenesGiveTheEncodedBytes) {
     EXPECT_TRUE(expect_same_bytes(record, with_clear(scene->clear_color()), name))
         << name << " did not take the display-referred path";
   }
+}
+
+// Multisampled display-referred frames round each sample's value to its code, and the resolve
+// averages the codes, as a multisampled 8-bit target does (glmark2's on llvmpipe); rounding the
+// samples' average value instead (the one-sample frames' way, StoreDisplay) changes edge pixels
+// by a code. Byte for byte against a golden made with the codes averaged.
+TEST(DisplayReferred, MultisampledFramesAverageTheSamplesCodes) {
+  RenderSettings settings = with_clear({0.3f, 0.55f, 0.07f, 0.6f});
+  settings.msaa = 4;
+  Renderer renderer(settings);
+  Framebuffer frame(kWidth, kHeight);
+  debug_view_scene(ShadingModel::normals)(renderer);
+  renderer.finish(frame);
+  ASSERT_TRUE(renderer.stats().display_referred);
+  const std::string path =
+      (std::filesystem::path(::testing::TempDir()) / "display_referred_msaa4.png").string();
+  write_image(frame, path);
+  expect_matches_golden(path, "display_referred_msaa4", Tolerance{0, 0.0});
 }
 
 // What needs linear colors keeps them: a lit draw among display ones, fog, exposure. (Fog mixes

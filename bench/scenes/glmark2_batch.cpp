@@ -63,7 +63,7 @@ HWY_INLINE void SampleMap(const DrawUniforms& u, const TextureMap& map, const Sh
 // pixel, the light's depth at every s.xy in one lookup of the frame's sampler (NEAREST and
 // clamped, as the map's sampler says), then grey 0.15 where that depth is nearer than
 // s.z + bias, else 0.3.
-HWY_INLINE void ShadowGround(const DrawUniforms& u, const ShadeInput& in, DisplayCodes codes) {
+HWY_INLINE void ShadowGround(const DrawUniforms& u, const ShadeInput& in, const DisplayOut& out) {
   const BatchTag d;
   const int lanes = static_cast<int>(hn::Lanes(d));
   alignas(64) float s[3][shading::kShadeBatch], no_lod[shading::kShadeBatch] = {};
@@ -81,7 +81,7 @@ HWY_INLINE void ShadowGround(const DrawUniforms& u, const ShadeInput& in, Displa
     const BatchV s_z = hn::Add(hn::Load(d, s[2] + j), hn::Set(d, ShadowGroundShading::kDepthBias));
     const auto shadowed = hn::And(hn::Gt(hn::Load(d, in.v[3] + j), hn::Zero(d)), hn::Lt(t[0], s_z));
     const BatchV gray = hn::IfThenElse(shadowed, hn::Set(d, 0.15f), hn::Set(d, 0.3f));
-    StoreDisplayCodes({gray, gray, gray}, j, codes);
+    StoreDisplay({gray, gray, gray}, j, out);
   }
 }
 
@@ -102,7 +102,7 @@ HWY_INLINE Vec3V Refract(const Vec3V& i, const Vec3V& n, BatchV e) {
 
 // refract's bunny (RefractShading), the whole batch: each of its three dependent lookups is one
 // call of the lookup kernel for every pixel, between the steps of the formula that need it.
-HWY_INLINE void RefractBatch(const DrawUniforms& u, const ShadeInput& in, DisplayCodes codes) {
+HWY_INLINE void RefractBatch(const DrawUniforms& u, const ShadeInput& in, const DisplayOut& out) {
   const BatchTag d;
   const int lanes = static_cast<int>(hn::Lanes(d));
   constexpr int kBatch = shading::kShadeBatch;
@@ -182,9 +182,9 @@ HWY_INLINE void RefractBatch(const DrawUniforms& u, const ShadeInput& in, Displa
         hn::Mul(hn::Set(d, 0.8f), Pow100(StdMax(Dot(Reflect(light_direction, n), e), hn::Zero(d))));
     BatchV image[4];
     hn::LoadInterleaved4(d, &texel[j][0], image[0], image[1], image[2], image[3]);
-    StoreDisplayCodes(
+    StoreDisplay(
         {hn::Add(image[0], specular), hn::Add(image[1], specular), hn::Add(image[2], specular)}, j,
-        codes);
+        out);
   }
 }
 
@@ -194,25 +194,28 @@ void ShadeGlmark2Batch(BatchShader shader, const DrawUniforms& u, const ShadeInp
   const BatchTag d;
   const int lanes = static_cast<int>(hn::Lanes(d));
   // Every shader's colour is shown as glmark2's RGBA8 buffer stores it, an 8-bit code per
-  // channel: the codes are stored per vector, then decoded once for the batch.
-  alignas(64) std::int32_t codes[3][shading::kShadeBatch];
+  // channel: the codes are stored per vector, then decoded once for the batch (or left to the
+  // resolve's rounding: StoreDisplay).
+  alignas(64) std::int32_t code_arrays[3][shading::kShadeBatch];
+  const DisplayOut display{code_arrays, u.frame->display_rounded_by_resolve,
+                           u.frame->display_referred, in.rgba_row_stride, rgba};
   // The shaders that look textures up at coordinates they compute: all lookups of a kind at once.
   const bool looks_up = shader == Shader::shadow_ground || shader == Shader::refract;
-  if (shader == Shader::shadow_ground) ShadowGround(u, in, codes);
-  if (shader == Shader::refract) RefractBatch(u, in, codes);
+  if (shader == Shader::shadow_ground) ShadowGround(u, in, display);
+  if (shader == Shader::refract) RefractBatch(u, in, display);
   for (int j = 0; !looks_up && j < in.count; j += lanes) {
     switch (shader) {
       case Shader::basic_light: {
         const Vec3V light = Load3(in.v, 0, j);
-        StoreDisplayCodes(light, j, codes);
+        StoreDisplay(light, j, display);
         break;
       }
       case Shader::basic_light_texture: {
         BatchV t[4];
         hn::LoadInterleaved4(d, &in.base_texel[j][0], t[0], t[1], t[2], t[3]);
         const Vec3V light = Load3(in.v, 0, j);
-        StoreDisplayCodes({hn::Mul(t[0], light.x), hn::Mul(t[1], light.y), hn::Mul(t[2], light.z)},
-                          j, codes);
+        StoreDisplay({hn::Mul(t[0], light.x), hn::Mul(t[1], light.y), hn::Mul(t[2], light.z)}, j,
+                     display);
         break;
       }
       case Shader::blinn_phong_inf: {
@@ -222,7 +225,7 @@ void ShadeGlmark2Batch(BatchShader shader, const DrawUniforms& u, const ShadeInp
         const BatchV specular =
             hn::Mul(hn::Set(d, 0.8f), Pow100(StdMax(Dot(n, Set3(kHalfVector)), hn::Zero(d))));
         const BatchV gray = hn::Add(hn::Set(d, 0.1f), specular);
-        StoreDisplayCodes({gray, gray, hn::Add(gray, diffuse)}, j, codes);
+        StoreDisplay({gray, gray, hn::Add(gray, diffuse)}, j, display);
         break;
       }
       case Shader::phong: {
@@ -237,10 +240,10 @@ void ShadeGlmark2Batch(BatchShader shader, const DrawUniforms& u, const ShadeInp
         const BatchV diffuse = StdMax(hn::Zero(d), Dot(n, light));
         const BatchV lit = hn::Mul(hn::Set(d, 0.8f), diffuse);
         const BatchV base = hn::Add(specular, hn::Set(d, 0.02f));
-        StoreDisplayCodes({hn::Add(base, hn::Mul(lit, hn::Set(d, u.material->base_color.r))),
-                           hn::Add(base, hn::Mul(lit, hn::Set(d, u.material->base_color.g))),
-                           hn::Add(base, hn::Mul(lit, hn::Set(d, u.material->base_color.b)))},
-                          j, codes);
+        StoreDisplay({hn::Add(base, hn::Mul(lit, hn::Set(d, u.material->base_color.r))),
+                      hn::Add(base, hn::Mul(lit, hn::Set(d, u.material->base_color.g))),
+                      hn::Add(base, hn::Mul(lit, hn::Set(d, u.material->base_color.b)))},
+                     j, display);
         break;
       }
       case Shader::cel: {
@@ -271,12 +274,11 @@ void ShadeGlmark2Batch(BatchShader shader, const DrawUniforms& u, const ShadeInp
           return hn::IfThenElse(highlight, hn::Add(hn::Set(d, 0.7f), hn::Mul(hn::Set(d, 0.3f), c)),
                                 c);
         };
-        StoreDisplayCodes({brighten(hn::Zero(d)), brighten(green), brighten(hn::Zero(d))}, j,
-                          codes);
+        StoreDisplay({brighten(hn::Zero(d)), brighten(green), brighten(hn::Zero(d))}, j, display);
         break;
       }
       case Shader::bump_poly:
-        StoreDisplayCodes(BumpLight(Normalize(Load3(in.v, 0, j))), j, codes);
+        StoreDisplay(BumpLight(Normalize(Load3(in.v, 0, j))), j, display);
         break;
       case Shader::bump_normals: {
         // normalize(normal_matrix * (texel * 2 - 1))
@@ -293,18 +295,18 @@ void ShadeGlmark2Batch(BatchShader shader, const DrawUniforms& u, const ShadeInp
               hn::Add(hn::Mul(hn::Set(d, m[0][r]), raw[0]), hn::Mul(hn::Set(d, m[1][r]), raw[1])),
               hn::Mul(hn::Set(d, m[2][r]), raw[2]));
         }
-        StoreDisplayCodes(BumpLight(Normalize({turned[0], turned[1], turned[2]})), j, codes);
+        StoreDisplay(BumpLight(Normalize({turned[0], turned[1], turned[2]})), j, display);
         break;
       }
       case Shader::refract_back_normal:
-        StoreDisplayCodes(Load3(in.v, 0, j), j, codes);
+        StoreDisplay(Load3(in.v, 0, j), j, display);
         break;
       case Shader::shadow_ground:  // shaded above
       case Shader::refract:
         break;
     }
   }
-  DecodeDisplayCodes(codes, in.count, u.frame->display_referred, in.rgba_row_stride, rgba);
+  FinishDisplay(display, in.count);
 }
 
 }  // namespace facet::bench::glmark2::HWY_NAMESPACE

@@ -216,7 +216,8 @@ HWY_INLINE void StoreColors(const BatchV color[4], float (*rgba)[4]) {
 
 // Display values (models.hpp; the debug views' and glmark2's output): a value clamped to
 // [0, 1] (NaN to 0), times 255, plus a half, truncated to its 8-bit code, which
-// DecodeDisplayCodes turns into the color the tile stores.
+// DecodeDisplayCodes turns into the color the tile stores. (StoreDisplay below decides whether
+// the code is needed at all.)
 using DisplayCodes = std::int32_t (*)[kShadeBatch];
 HWY_INLINE void StoreDisplayCodes(const Vec3V& rgb, int j, DisplayCodes codes) {
   const BatchTag d;
@@ -256,6 +257,31 @@ HWY_INLINE void DecodeDisplayCodes(DisplayCodes codes, int count, bool referred,
     float* out = *ColorAt(rgba, row_stride, n);
     for (int c = 0; c < 3; ++c) out[c] = decode[codes[c][n]];
     out[3] = 1.0f;
+  }
+}
+
+// Where a batch's display values go: their codes, which FinishDisplay decodes into the colors
+// once the batch is shaded; or, in frames whose resolve rounds the tile's colors to their codes
+// itself (FrameUniforms::display_rounded_by_resolve), the colors directly, the values as they
+// are: the resolve's rounding is StoreDisplayCodes', so the bytes are the same.
+struct DisplayOut {
+  DisplayCodes codes;
+  bool rounded_by_resolve;
+  bool referred;  // FrameUniforms::display_referred
+  int row_stride;
+  float (*rgba)[4];
+};
+HWY_INLINE void StoreDisplay(const Vec3V& rgb, int j, const DisplayOut& out) {
+  if (!out.rounded_by_resolve) {
+    StoreDisplayCodes(rgb, j, out.codes);
+    return;
+  }
+  const BatchV color[4] = {rgb.x, rgb.y, rgb.z, hn::Set(BatchTag(), 1.0f)};
+  StoreColors(color, ColorAt(out.rgba, out.row_stride, j));
+}
+HWY_INLINE void FinishDisplay(const DisplayOut& out, int count) {
+  if (!out.rounded_by_resolve) {
+    DecodeDisplayCodes(out.codes, count, out.referred, out.row_stride, out.rgba);
   }
 }
 

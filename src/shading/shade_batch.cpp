@@ -260,9 +260,10 @@ void ShadeDisplay(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4])
     }
   } else {
     alignas(64) std::int32_t codes[3][kShadeBatch];
-    for (int j = 0; j < in.count; j += lanes)
-      StoreDisplayCodes(DisplayShown<kView>(u, in, j), j, codes);
-    DecodeDisplayCodes(codes, in.count, u.frame->display_referred, in.rgba_row_stride, rgba);
+    const DisplayOut out{codes, u.frame->display_rounded_by_resolve, u.frame->display_referred,
+                         in.rgba_row_stride, rgba};
+    for (int j = 0; j < in.count; j += lanes) StoreDisplay(DisplayShown<kView>(u, in, j), j, out);
+    FinishDisplay(out, in.count);
   }
   FogBatch(u, in, rgba);
 }

@@ -87,6 +87,27 @@ glm::vec4 reference_pixel(const TextureMap& map, const shading::TexelBatch& batc
   return reference_sample_map(map, {u, v}, dx, dy);
 }
 
+// Points the case's batch at its own arrays (after any copy of the Case, whose pointers would
+// lead into the old one).
+void aim(Case& c) {
+  c.batch.u = c.u;
+  c.batch.v = c.v;
+  c.batch.w = c.w;
+  c.batch.planes = c.planes;
+  c.batch.inv_w = &c.inv_w;
+}
+
+// The first pixel of a sampled batch whose texel is not the reference's, bit for bit, or -1.
+int first_difference(const TextureMap& map, const shading::TexelBatch& batch) {
+  for (int j = 0; j < batch.count; ++j) {
+    const glm::vec4 expected = reference_pixel(map, batch, j);
+    const float* texel = batch.rgba[j];
+    const glm::vec4 got{texel[0], texel[1], texel[2], texel[3]};
+    if (std::memcmp(&expected, &got, sizeof got) != 0) return j;
+  }
+  return -1;
+}
+
 // Textures of every shape and storage: power-of-two sides and not, one texel, more levels
 // than a vector of the level table holds, levels one texel wide (a row start shifted by 0),
 // float texels (HDR), one float a texel (depth), and 8-bit ones too large for the linear copy.
@@ -125,25 +146,17 @@ TEST(TexelBatch, GivesTheReferencesBitsOnEveryTarget) {
             for (const glm::mat3& transform : transforms) {
               TextureMap map{texture, Sampler{filter, wrap_u, wrap_v}, transform};
               Case c = random_case(rng, 1 + static_cast<int>(rng() % shading::kTexelBatch));
-              c.batch.u = c.u;  // (set here: a copy of the Case would point into the old one)
-              c.batch.v = c.v;
-              c.batch.w = c.w;
+              aim(c);
               if (rng() % 2 == 0) c.batch.slopes = c.slopes;  // pixels of several triangles
-              c.batch.planes = c.planes;
-              c.batch.inv_w = &c.inv_w;
               shading::sample_batch_kernel(chosen_simd_target())(map, c.batch);
-              for (int j = 0; j < c.batch.count; ++j) {
-                const glm::vec4 expected = reference_pixel(map, c.batch, j);
-                const float* texel = c.batch.rgba[j];
-                const glm::vec4 got{texel[0], texel[1], texel[2], texel[3]};
-                ASSERT_EQ(std::memcmp(&expected, &got, sizeof got), 0)
-                    << hwy::TargetName(target) << ", " << texture->width() << "x"
-                    << texture->height() << ", filter " << static_cast<int>(filter) << ", wrap "
-                    << static_cast<int>(wrap_u) << "/" << static_cast<int>(wrap_v) << ", pixel "
-                    << j << " at (" << c.batch.u[j] << ", " << c.batch.v[j] << ")"
-                    << (c.batch.slopes ? ", own slopes" : "");
-                ++compared;
-              }
+              const int j = first_difference(map, c.batch);
+              ASSERT_EQ(j, -1) << hwy::TargetName(target) << ", " << texture->width() << "x"
+                               << texture->height() << ", filter " << static_cast<int>(filter)
+                               << ", wrap " << static_cast<int>(wrap_u) << "/"
+                               << static_cast<int>(wrap_v) << ", pixel " << j << " at ("
+                               << c.batch.u[j] << ", " << c.batch.v[j] << ")"
+                               << (c.batch.slopes ? ", own slopes" : "");
+              compared += c.batch.count;
             }
           }
         }
@@ -183,21 +196,12 @@ TEST(TexelBatch, TrilinearBatchesAtAndAroundMagnificationGiveTheReferencesBits) 
         c.planes[0] = {0.0f, side / (w * static_cast<float>(texture->width())), 0.0f};
         c.planes[1] = {0.0f, 0.0f, side / (w * static_cast<float>(texture->height()))};
         c.inv_w = {0.0f, tilt, -tilt};
-        c.batch.u = c.u;
-        c.batch.v = c.v;
-        c.batch.w = c.w;
-        c.batch.planes = c.planes;
-        c.batch.inv_w = &c.inv_w;
+        aim(c);
         shading::sample_batch_kernel(chosen_simd_target())(map, c.batch);
-        for (int j = 0; j < c.batch.count; ++j) {
-          const glm::vec4 expected = reference_pixel(map, c.batch, j);
-          const float* texel = c.batch.rgba[j];
-          const glm::vec4 got{texel[0], texel[1], texel[2], texel[3]};
-          ASSERT_EQ(std::memcmp(&expected, &got, sizeof got), 0)
-              << hwy::TargetName(target) << ", footprint " << side << ", tilt " << tilt
-              << ", pixel " << j;
-          ++compared;
-        }
+        const int j = first_difference(map, c.batch);
+        ASSERT_EQ(j, -1) << hwy::TargetName(target) << ", footprint " << side << ", tilt " << tilt
+                         << ", pixel " << j;
+        compared += c.batch.count;
       }
     }
   }

@@ -115,7 +115,7 @@ constexpr float kMagnifiedBound = 0.98f;
 // level 0 and no blend toward level 1), from a bound on LevelsOfDetail's rho2 taken over the
 // batch's largest |u|, |v| and |w| instead of pixel by pixel: |(U_x - u W_x) w| is at most
 // (|U_x| + max|u| |W_x|) max|w|, and so on through the map's linear part in absolute values.
-// Where it holds, trilinear filtering gives bilinear filtering's bits. Non-finite values fail it.
+// Where it holds, trilinear filtering gives bilinear filtering's bits. Infinite values fail it.
 HWY_INLINE bool MagnifiedEverywhere(const Texture& texture, const glm::mat3& m,
                                     const TexelBatch& batch) {
   const FloatTag df;

@@ -37,6 +37,27 @@ HWY_INLINE void CoverRows(const BlockInput& in, BlockFragments& out) {
   const auto zero = hn::Zero(di);
   const auto x_begin = hn::Set(di, in.x_begin), x_end = hn::Set(di, in.x_end);
   float varying_rows[kMaxVaryings];
+  // A covered block's rows are mostly all drawn: for the few varyings of the unrolled forms, its
+  // planes' row values (evaluate_row's, the same operations) for every row at once, a row a
+  // lane, rather than row by row. (With many varyings, reading them back a row at a time costs
+  // more than it saves.)
+  constexpr bool kAllRows = kCoversBlock && kVaryings >= 0;
+  alignas(32) float z_rows[kBlockSize], inv_w_rows[kBlockSize];
+  alignas(32) float varying_row_values[kAllRows ? kVaryings + 1 : 1][kBlockSize];
+  if constexpr (kAllRows) {
+    for (int r = 0; r < kBlockSize; r += lanes) {
+      const auto relative_y =
+          hn::Sub(hn::Iota(df, in.py0 + static_cast<float>(r)), hn::Set(df, t.ref_y));
+      auto rows = [&](const Plane& p, float* out_rows) HWY_ATTR {
+        hn::Store(hn::Add(hn::Set(df, p.at_ref), hn::Mul(hn::Set(df, p.dy), relative_y)), df,
+                  out_rows + r);
+      };
+      rows(t.z, z_rows);
+      if (!in.interpolate) continue;
+      rows(t.inv_w, inv_w_rows);
+      for (int k = 0; k < varyings; ++k) rows(in.varying_planes[k], varying_row_values[k]);
+    }
+  }
   std::uint64_t mask = 0;
   for (int y = in.y_begin; y < in.y_end; ++y) {
     // Per-row plane values, exactly as evaluate_row() computes them for the scalar path; only
@@ -62,7 +83,11 @@ HWY_INLINE void CoverRows(const BlockInput& in, BlockFragments& out) {
         pass = hn::RebindMask(df, inside);
         if (hn::AllFalse(df, pass)) continue;
       }
-      if (!have_z_row) z_row = evaluate_row(t.z, t.ref_y, py), have_z_row = true;
+      if constexpr (kAllRows) {
+        z_row = z_rows[y];
+      } else if (!have_z_row) {
+        z_row = evaluate_row(t.z, t.ref_y, py), have_z_row = true;
+      }
       const int lane0 = y * kBlockSize + x;
       // (px - ref_x), then plane = row + dx * (px - ref_x): evaluate_in_row() lane by lane.
       const auto relative_x =
@@ -79,7 +104,10 @@ HWY_INLINE void CoverRows(const BlockInput& in, BlockFragments& out) {
         hn::Store(z, df, out.z + lane0);
         continue;
       }
-      if (!have_rows) {
+      if constexpr (kAllRows) {
+        inv_w_row = inv_w_rows[y];
+        for (int k = 0; k < varyings; ++k) varying_rows[k] = varying_row_values[k][y];
+      } else if (!have_rows) {
         inv_w_row = evaluate_row(t.inv_w, t.ref_y, py);
         for (int k = 0; k < varyings; ++k) {
           varying_rows[k] = evaluate_row(in.varying_planes[k], t.ref_y, py);

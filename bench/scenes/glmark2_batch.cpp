@@ -63,7 +63,7 @@ HWY_INLINE void SampleMap(const DrawUniforms& u, const TextureMap& map, const Sh
 // pixel, the light's depth at every s.xy in one lookup of the frame's sampler (NEAREST and
 // clamped, as the map's sampler says), then grey 0.15 where that depth is nearer than
 // s.z + bias, else 0.3.
-HWY_INLINE void ShadowGround(const DrawUniforms& u, const ShadeInput& in, const DisplayOut& out) {
+HWY_INLINE void ShadowGround(const DrawUniforms& u, const ShadeInput& in, DisplayOut& out) {
   const BatchTag d;
   const int lanes = static_cast<int>(hn::Lanes(d));
   alignas(64) float s[3][shading::kShadeBatch], no_lod[shading::kShadeBatch] = {};
@@ -102,7 +102,7 @@ HWY_INLINE Vec3V Refract(const Vec3V& i, const Vec3V& n, BatchV e) {
 
 // refract's bunny (RefractShading), the whole batch: each of its three dependent lookups is one
 // call of the lookup kernel for every pixel, between the steps of the formula that need it.
-HWY_INLINE void RefractBatch(const DrawUniforms& u, const ShadeInput& in, const DisplayOut& out) {
+HWY_INLINE void RefractBatch(const DrawUniforms& u, const ShadeInput& in, DisplayOut& out) {
   const BatchTag d;
   const int lanes = static_cast<int>(hn::Lanes(d));
   constexpr int kBatch = shading::kShadeBatch;
@@ -196,9 +196,7 @@ void ShadeGlmark2Batch(BatchShader shader, const DrawUniforms& u, const ShadeInp
   // Every shader's colour is shown as glmark2's RGBA8 buffer stores it, an 8-bit code per
   // channel: the codes are stored per vector, then decoded once for the batch (or left to the
   // resolve's rounding: StoreDisplay).
-  alignas(64) std::int32_t code_arrays[3][shading::kShadeBatch];
-  const DisplayOut display{code_arrays, u.frame->display_rounded_by_resolve,
-                           u.frame->display_referred, in.rgba_row_stride, rgba};
+  DisplayOut display(*u.frame, in, rgba);
   // The shaders that look textures up at coordinates they compute: all lookups of a kind at once.
   const bool looks_up = shader == Shader::shadow_ground || shader == Shader::refract;
   if (shader == Shader::shadow_ground) ShadowGround(u, in, display);

@@ -265,13 +265,18 @@ HWY_INLINE void DecodeDisplayCodes(DisplayCodes codes, int count, bool referred,
 // itself (FrameUniforms::display_rounded_by_resolve), the colors directly, the values as they
 // are: the resolve's rounding is StoreDisplayCodes', so the bytes are the same.
 struct DisplayOut {
-  DisplayCodes codes;
+  DisplayOut(const FrameUniforms& frame, const ShadeInput& in, float (*colors)[4])
+      : rounded_by_resolve(frame.display_rounded_by_resolve),
+        referred(frame.display_referred),
+        row_stride(in.rgba_row_stride),
+        rgba(colors) {}
+  alignas(64) std::int32_t codes[3][kShadeBatch];
   bool rounded_by_resolve;
-  bool referred;  // FrameUniforms::display_referred
+  bool referred;
   int row_stride;
   float (*rgba)[4];
 };
-HWY_INLINE void StoreDisplay(const Vec3V& rgb, int j, const DisplayOut& out) {
+HWY_INLINE void StoreDisplay(const Vec3V& rgb, int j, DisplayOut& out) {
   if (!out.rounded_by_resolve) {
     StoreDisplayCodes(rgb, j, out.codes);
     return;
@@ -279,7 +284,7 @@ HWY_INLINE void StoreDisplay(const Vec3V& rgb, int j, const DisplayOut& out) {
   const BatchV color[4] = {rgb.x, rgb.y, rgb.z, hn::Set(BatchTag(), 1.0f)};
   StoreColors(color, ColorAt(out.rgba, out.row_stride, j));
 }
-HWY_INLINE void FinishDisplay(const DisplayOut& out, int count) {
+HWY_INLINE void FinishDisplay(DisplayOut& out, int count) {
   if (!out.rounded_by_resolve) {
     DecodeDisplayCodes(out.codes, count, out.referred, out.row_stride, out.rgba);
   }

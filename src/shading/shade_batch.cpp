@@ -259,9 +259,7 @@ void ShadeDisplay(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4])
       StoreColors(color, ColorAt(rgba, in.rgba_row_stride, j));
     }
   } else {
-    alignas(64) std::int32_t codes[3][kShadeBatch];
-    const DisplayOut out{codes, u.frame->display_rounded_by_resolve, u.frame->display_referred,
-                         in.rgba_row_stride, rgba};
+    DisplayOut out(*u.frame, in, rgba);
     for (int j = 0; j < in.count; j += lanes) StoreDisplay(DisplayShown<kView>(u, in, j), j, out);
     FinishDisplay(out, in.count);
   }

@@ -43,7 +43,7 @@ HWY_INLINE void CoverRows(const BlockInput& in, BlockFragments& out) {
   // more than it saves.)
   constexpr bool kAllRows = kCoversBlock && kVaryings >= 0;
   alignas(32) float z_rows[kBlockSize], inv_w_rows[kBlockSize];
-  alignas(32) float varying_row_values[kAllRows ? kVaryings + 1 : 1][kBlockSize];
+  alignas(32) float varying_row_values[kAllRows ? kVaryings : 1][kBlockSize];
   if constexpr (kAllRows) {
     for (int r = 0; r < kBlockSize; r += lanes) {
       const auto relative_y =

@@ -111,12 +111,23 @@ RenderSettings with_clear(glm::vec4 clear) {
   return settings;
 }
 
+// At every tile size (the last row of tiles is partial at each, the last column at 128) and at
+// one and three threads: one-sample frames keep their tiles as codes (TileContext::codes), which
+// every size and thread count must clear, fill and copy out alike.
 TEST(DisplayReferred, DebugViewsGiveTheEncodedBytes) {
   for (ShadingModel model : {ShadingModel::normals, ShadingModel::depth, ShadingModel::texcoords}) {
-    const std::string name(to_string(model));
-    EXPECT_TRUE(
-        expect_same_bytes(debug_view_scene(model), with_clear({0.3f, 0.55f, 0.07f, 0.6f}), name))
-        << name << " did not take the display-referred path";
+    for (int tile_size : {16, 32, 64, 128}) {
+      for (int threads : {1, 3}) {
+        const std::string name = std::string(to_string(model)) + ", tiles of " +
+                                 std::to_string(tile_size) + ", " + std::to_string(threads) +
+                                 " threads";
+        RenderSettings settings = with_clear({0.3f, 0.55f, 0.07f, 0.6f});
+        settings.tile_size = tile_size;
+        settings.threads = threads;
+        EXPECT_TRUE(expect_same_bytes(debug_view_scene(model), settings, name))
+            << name << " did not take the display-referred path";
+      }
+    }
   }
 }
 

@@ -194,8 +194,8 @@ void ShadeGlmark2Batch(BatchShader shader, const DrawUniforms& u, const ShadeInp
   const BatchTag d;
   const int lanes = static_cast<int>(hn::Lanes(d));
   // Every shader's colour is shown as glmark2's RGBA8 buffer stores it, an 8-bit code per
-  // channel: the codes are stored per vector, then decoded once for the batch (or left to the
-  // resolve's rounding: StoreDisplay).
+  // channel: the codes are stored per vector, then decoded once for the batch (or, into a tile of
+  // codes, stored as they are: StoreDisplay).
   DisplayOut display(*u.frame, in, rgba);
   // The shaders that look textures up at coordinates they compute: all lookups of a kind at once.
   const bool looks_up = shader == Shader::shadow_ground || shader == Shader::refract;

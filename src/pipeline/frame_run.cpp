@@ -37,11 +37,11 @@ bool Renderer::Impl::draws_only_display_values() const {
                      [](const pipeline::DrawRecord& d) { return d.pipeline.display_referred; });
 }
 
-// A frame of display values into an 8-bit sRGB target at exposure 0: the tiles hold code / 255
-// (at one sample, the display values themselves: FrameUniforms::display_rounded_by_resolve),
+// A frame of display values into an 8-bit sRGB target at exposure 0: the tiles hold code / 255,
 // which resolve rounds to the code, instead of the code's decoded linear value, which resolve's
-// sRGB encode turns back into the same code with far more work a pixel than the rounding. The
-// bytes are the same either way.
+// sRGB encode turns back into the same code with far more work a pixel than the rounding; at one
+// sample, where no samples are averaged, the codes themselves (TileContext::codes), which
+// resolve copies. The bytes are the same either way.
 bool Renderer::Impl::display_referred_frame(const Framebuffer& target) const {
   return target.format() == ColorFormat::rgba8_srgb && settings.exposure == 0.0f &&
          draws_only_display_values();
@@ -110,6 +110,7 @@ void Renderer::Impl::prepare_tiles(const Framebuffer& target) {
   for (TileBuffers& buffers : tile_buffers) {
     if (buffers.color.size() >= pixels * samples && buffers.split.size() >= pixels) continue;
     buffers.color.resize(pixels * samples);
+    buffers.codes.resize(pixels);
     // find_box_pixels reads past rows
     buffers.depth.resize(pixels * samples + pipeline::kDepthSlack);
     buffers.block_max_depth.resize(static_cast<std::size_t>(blocks_x) * blocks_x);
@@ -157,7 +158,6 @@ void Renderer::Impl::run(Framebuffer& target) {
   }
   uniforms.display_referred = false;  // decided after geometry (display_referred_frame)
   uniforms.display_exact = false;
-  uniforms.display_rounded_by_resolve = false;
   set_depth_view_range();
   uniforms.kernels = &kernels.shading;
   const pipeline::ClipBounds guard = pipeline::guard_band_bounds(frame);
@@ -200,7 +200,6 @@ void Renderer::Impl::run(Framebuffer& target) {
   // encode follows to undo a decode), and the debug views' values unrounded.
   uniforms.display_exact = !linear_pass && target.format() == ColorFormat::rgba32f;
   uniforms.display_referred = referred || uniforms.display_exact;
-  uniforms.display_rounded_by_resolve = referred && frame.samples == 1;
   if (referred) background.clear_color = pipeline::display_value_of(kernels, settings.clear_color);
 
   auto bin_start = Clock::now();

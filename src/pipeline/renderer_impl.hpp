@@ -40,6 +40,7 @@ inline bool is_blended(AlphaMode mode) {
 // A worker's tile buffers, reused for every tile it renders.
 struct TileBuffers {
   std::vector<glm::vec4> color;
+  std::vector<std::uint32_t> codes;  // TileContext::codes
   std::vector<float> depth;
   std::vector<float> block_max_depth;  // one per 8x8 block (raster/raster.hpp)
   // MSAA (TileContext): depth holds a plane per sample, color each pixel's sample 0 then the

@@ -13,6 +13,7 @@
 #include <hwy/highway.h>
 
 #include <algorithm>
+#include <bit>
 #include <cstring>
 #include <limits>
 
@@ -219,17 +220,29 @@ HWY_INLINE void StoreColors(const BatchV color[4], float (*rgba)[4]) {
 // DecodeDisplayCodes turns into the color the tile stores. (StoreDisplay below decides whether
 // the code is needed at all.)
 using DisplayCodes = std::int32_t (*)[kShadeBatch];
-HWY_INLINE void StoreDisplayCodes(const Vec3V& rgb, int j, DisplayCodes codes) {
+HWY_INLINE hn::Vec<hn::RebindToSigned<BatchTag>> DisplayCode(BatchV value) {
   const BatchTag d;
+  const BatchV clamped =
+      StdMin(hn::IfThenElseZero(hn::Gt(value, hn::Zero(d)), value), hn::Set(d, 1.0f));
+  return simd::TruncateInRange(hn::RebindToSigned<BatchTag>(),
+                               hn::Add(hn::Mul(clamped, hn::Set(d, 255.0f)), hn::Set(d, 0.5f)));
+}
+HWY_INLINE void StoreDisplayCodes(const Vec3V& rgb, int j, DisplayCodes codes) {
   const hn::RebindToSigned<BatchTag> di;
   const BatchV channel[3] = {rgb.x, rgb.y, rgb.z};
-  for (int c = 0; c < 3; ++c) {
-    const BatchV clamped =
-        StdMin(hn::IfThenElseZero(hn::Gt(channel[c], hn::Zero(d)), channel[c]), hn::Set(d, 1.0f));
-    hn::Store(
-        simd::TruncateInRange(di, hn::Add(hn::Mul(clamped, hn::Set(d, 255.0f)), hn::Set(d, 0.5f))),
-        di, codes[c] + j);
-  }
+  for (int c = 0; c < 3; ++c) hn::Store(DisplayCode(channel[c]), di, codes[c] + j);
+}
+
+// The codes of a vector of display values, alpha 1 (code 255), as four bytes RGBA a pixel
+// (ShadeInput::codes), from pixel j of rows row_stride apart on.
+static_assert(std::endian::native == std::endian::little, "codes are stored as RGBA bytes");
+HWY_INLINE void StorePackedCodes(const Vec3V& rgb, int j, int row_stride, std::uint32_t* codes) {
+  const hn::RebindToUnsigned<BatchTag> du;
+  const auto r = hn::BitCast(du, DisplayCode(rgb.x)), g = hn::BitCast(du, DisplayCode(rgb.y));
+  const auto b = hn::BitCast(du, DisplayCode(rgb.z));
+  const auto packed = hn::Or(hn::Or(r, hn::ShiftLeft<8>(g)),
+                             hn::Or(hn::ShiftLeft<16>(b), hn::Set(du, 0xFF000000u)));
+  hn::StoreU(packed, du, codes + (j / 8) * row_stride + j % 8);
 }
 
 // Pixel n's color (ColorAt) = its codes as display values (models.hpp),
@@ -261,31 +274,29 @@ HWY_INLINE void DecodeDisplayCodes(DisplayCodes codes, int count, bool referred,
 }
 
 // Where a batch's display values go: their codes, which FinishDisplay decodes into the colors
-// once the batch is shaded; or, in frames whose resolve rounds the tile's colors to their codes
-// itself (FrameUniforms::display_rounded_by_resolve), the colors directly, the values as they
-// are: the resolve's rounding is StoreDisplayCodes', so the bytes are the same.
+// once the batch is shaded; or, for a tile of codes (ShadeInput::codes), the codes packed as
+// its pixels' bytes, with the same rounding.
 struct DisplayOut {
   DisplayOut(const FrameUniforms& frame, const ShadeInput& in, float (*colors)[4])
-      : rounded_by_resolve(frame.display_rounded_by_resolve),
-        referred(frame.display_referred),
+      : referred(frame.display_referred),
         row_stride(in.rgba_row_stride),
-        rgba(colors) {}
+        rgba(colors),
+        tile_codes(in.codes) {}
   alignas(64) std::int32_t codes[3][kShadeBatch];
-  bool rounded_by_resolve;
   bool referred;
   int row_stride;
   float (*rgba)[4];
+  std::uint32_t* tile_codes;  // ShadeInput::codes
 };
 HWY_INLINE void StoreDisplay(const Vec3V& rgb, int j, DisplayOut& out) {
-  if (!out.rounded_by_resolve) {
-    StoreDisplayCodes(rgb, j, out.codes);
+  if (out.tile_codes != nullptr) {
+    StorePackedCodes(rgb, j, out.row_stride, out.tile_codes);
     return;
   }
-  const BatchV color[4] = {rgb.x, rgb.y, rgb.z, hn::Set(BatchTag(), 1.0f)};
-  StoreColors(color, ColorAt(out.rgba, out.row_stride, j));
+  StoreDisplayCodes(rgb, j, out.codes);
 }
 HWY_INLINE void FinishDisplay(DisplayOut& out, int count) {
-  if (!out.rounded_by_resolve) {
+  if (out.tile_codes == nullptr) {
     DecodeDisplayCodes(out.codes, count, out.referred, out.row_stride, out.rgba);
   }
 }

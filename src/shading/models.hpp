@@ -47,8 +47,9 @@ namespace facet::shading {
 // light), stored by the tile as the code decoded to linear (which resolve's sRGB encode gives
 // back exactly); in a frame whose every color is a display value (DrawUniforms::display_referred,
 // pipeline/frame_run.cpp) as code / 255, which resolve turns back into the code without the sRGB
-// tables (at one sample as the value itself, which resolve rounds to the same code:
-// display_rounded_by_resolve); in a float target (display_exact) as the value itself clamped to
+// tables (at one sample as the code itself, in a tile of codes: ShadeInput::codes, which the
+// batch forms honour by storing through batch_math-inl.h's DisplayOut); in a float target
+// (display_exact) as the value itself clamped to
 // [0, 1], neither rounded nor decoded, so a normal's 0 is stored as 0.5. NaN shows as 0. The
 // debug views are their SIMD kernel alone (shade_batch.cpp's ShadeDisplay).
 // The mark of models whose colors are display values (kDisplayReferred above).

@@ -107,6 +107,10 @@ struct ShadeInput {
   // Where pixel n's color goes: rgba[(n / 8) * rgba_row_stride + n % 8]. 8 for a packed array;
   // a whole 8x8 block (count 64) may go straight into a tile's rows with the tile's stride.
   int rgba_row_stride = 8;
+  // Or, for the display-referred models (models.hpp's DisplayReferred) into a tile of 8-bit codes
+  // (pipeline::TileContext::codes): where not null, pixel n's codes go to codes[(n / 8) *
+  // rgba_row_stride + n % 8], its four bytes RGBA, and nothing to rgba.
+  std::uint32_t* codes = nullptr;
   // Alpha written as 1 whatever the model computes: an opaque draw covers what it draws
   // (pipeline::blend_into). Every batch form honours it (the built-in kernels here, glmark2's,
   // whose colors are display codes with alpha 1 anyway).

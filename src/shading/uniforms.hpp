@@ -67,11 +67,6 @@ struct FrameUniforms {
   // The target holds floats: the debug views' display values are stored as they are (the
   // normals view's n * 0.5 + 0.5 itself), not rounded to 8-bit codes.
   bool display_exact = false;
-  // A display-referred frame of one sample into an 8-bit target: the tile's colors reach the
-  // target through the resolve's 8-bit rounding alone (no draw blends, no samples are
-  // averaged), which gives a display value its code as batch_math-inl.h's StoreDisplayCodes
-  // does, so the batches store display values unrounded (StoreDisplay).
-  bool display_rounded_by_resolve = false;
   // The view depths the depth view spans, white to black: the frame's draws' (their bounds'
   // nearest and farthest, within the near and far planes).
   float depth_view_near = 0.1f;

@@ -60,9 +60,15 @@ void clear_tile(TileContext& tile, const Background& background, bool color_hidd
   const bool whole = width == tile.stride;
   const int rows = whole ? 1 : height;
   const std::ptrdiff_t row_length = whole ? static_cast<std::ptrdiff_t>(width) * height : width;
+  const std::uint32_t clear_codes =
+      tile.codes != nullptr ? display_codes(background.clear_color) : 0;
   for (int y = 0; y < rows; ++y) {
     const std::ptrdiff_t row = static_cast<std::ptrdiff_t>(y) * tile.stride;
-    if (clears_color) kernels.fill_color_row(tile.color + row, row_length, background.clear_color);
+    if (clears_color && tile.codes != nullptr) {
+      std::fill_n(tile.codes + row, row_length, clear_codes);
+    } else if (clears_color) {
+      kernels.fill_color_row(tile.color + row, row_length, background.clear_color);
+    }
     // every sample at the clear depth, each pixel's samples alike (MSAA)
     for (int s = 0; s < tile.samples; ++s) {
       kernels.fill_float_row(tile.depth + s * tile.sample_plane + row, row_length, kClearDepth);
@@ -166,6 +172,19 @@ void resolve_tile(const TileContext& tile, const Resolve& resolve, Framebuffer& 
       std::copy_n(depth, width, target.depth().data() + row + tile.x0);
     }
   };
+  if (tile.codes != nullptr) {  // rounded already: copied
+    for (int y = tile.y0; y < tile.y1; ++y) {
+      const std::uint32_t* codes =
+          tile.codes + static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride;
+      const std::size_t first = static_cast<std::size_t>(y) * target.width() + tile.x0;
+      std::memcpy(target.rgba8().data() + first * 4, codes, sizeof(std::uint32_t) * width);
+      if (target.has_depth()) {
+        const float* depth = tile.depth + static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride;
+        std::copy_n(depth, width, target.depth().data() + first);
+      }
+    }
+    return;
+  }
   if (tile.samples > 1) {
     // Each row averaged one row ahead of its encode: the encode's wide loads of colors the
     // average has just stored a color at a time would wait for those stores to complete.

@@ -16,6 +16,7 @@
 #include <variant>
 
 #include "pipeline/frame.hpp"
+#include "pipeline/kernels.hpp"
 #include "pipeline/raster/block_raster.hpp"
 #include "pipeline/raster/model_traits.hpp"
 #include "pipeline/raster/sample_writer.hpp"
@@ -100,6 +101,9 @@ class PixelWriter {
   }
 
  public:
+  // A tile of codes takes the wire overlay's pixels from nothing (store_codes_all).
+  static_assert(!display_referred<Shading>() || !edge_overlay<Shading>());
+
   // Blended draws test depth but do not write it (they are sorted back to front instead).
   static constexpr bool kDepthWrite =
       depth_tested<Shading>() && (kAlpha == AlphaMode::opaque || kAlpha == AlphaMode::mask);
@@ -123,7 +127,10 @@ class PixelWriter {
       alignas(64) float colors[PackedPixels::kCapacity][4];
       shading::ShadeInput in{pixels.count, pixels.w, pixels.z, pixels.v, nullptr, batch_fog()};
       sample_maps(in, pixels.v, pixels.w);
+      alignas(64) std::uint32_t codes[PackedPixels::kCapacity];
+      if (tile_.codes != nullptr) in.codes = codes;
       Shading::fragment_batch(uniforms_, in, colors);
+      if (tile_.codes != nullptr) return store_codes_all(pixels, codes);
       return store_all(pixels, colors, kBatchFogs);
     } else {
       return shade_one_at_a_time(pixels);
@@ -174,6 +181,23 @@ class PixelWriter {
     return written;
   }
 
+  // store_all() into a tile of codes (TileContext::codes), of the codes a display-referred
+  // model's batch form gave the packed pixels (ShadeInput::codes): their alpha is 1, which the
+  // alpha test of a cut-out draw passes or fails for all of them, and such frames have no fog
+  // and their models no wire overlay.
+  int store_codes_all(const PackedPixels& pixels, const std::uint32_t* codes) {
+    if constexpr (kAlpha == AlphaMode::mask) {
+      if (!(1.0f >= alpha_cutoff_)) return 0;
+    }
+    for (int n = 0; n < pixels.count; ++n) {
+      const std::ptrdiff_t pixel = index(pixels.x[n], pixels.y[n]);
+      tile_.codes[pixel] = codes[n];
+      if constexpr (kDepthWrite) tile_.depth[pixel] = pixels.z[n];
+    }
+    shaded += static_cast<std::uint64_t>(pixels.count);
+    return pixels.count;
+  }
+
   // The fog of the frame on the colors of the packed pixels, in place, with the shading
   // kernel's fog.
   void fog(const PackedPixels& pixels, float (*rgba)[4]) const {
@@ -195,12 +219,14 @@ class PixelWriter {
 
   // The waiting pixels of several triangles of the draw, whose plane slopes for the base
   // color map's level of detail are slopes[k][n] (TexelBatch): sampled and shaded with SIMD,
-  // fogged, into colors; write_waiting (small_triangles.hpp) tests and stores them.
+  // fogged, into colors, or, where `codes` is not null (a tile of codes), into their codes
+  // (ShadeInput::codes); write_waiting (small_triangles.hpp) tests and stores them.
   void shade_waiting(PackedPixels& pixels, const float (*slopes)[PackedPixels::kCapacity],
-                     float (*colors)[4]) {
+                     float (*colors)[4], std::uint32_t* codes) {
     if constexpr (kWaits) {
       pixels.pad(Shading::kVaryings);
       shading::ShadeInput in{pixels.count, pixels.w, pixels.z, pixels.v, nullptr, &fog_};
+      in.codes = codes;
       sample_maps(in, pixels.v, pixels.w, slopes);
       Shading::fragment_batch(uniforms_, in, colors);
     }
@@ -218,8 +244,11 @@ class PixelWriter {
       in.rgba_row_stride = tile_.stride;
       in.opaque = !writes_data<Shading>();  // alpha 1, as blend_into writes it
       sample_maps(in, block.v, block.w);
-      Shading::fragment_batch(uniforms_, in, reinterpret_cast<float(*)[4]>(&tile_.color[first]));
       shaded += kBlockPixels;
+      // A tile of codes takes them from the display-referred models' batch forms, the only
+      // ones its frames draw (ShadeInput::codes).
+      if (tile_.codes != nullptr) in.codes = tile_.codes + first;
+      Shading::fragment_batch(uniforms_, in, reinterpret_cast<float(*)[4]>(&tile_.color[first]));
     }
   }
 
@@ -260,12 +289,23 @@ class PixelWriter {
     const std::ptrdiff_t pixel = index(x, y);
     if (tile_.samples > 1) {
       store_samples(pixel, z, color);
+    } else if (tile_.codes != nullptr) {
+      store_codes(pixel, color);
+      if constexpr (kDepthWrite) tile_.depth[pixel] = z;
     } else {
       blend_into<Shading, kAlpha>(tile_.color[pixel], color);
       if constexpr (kDepthWrite) tile_.depth[pixel] = z;
     }
     ++shaded;
     return true;
+  }
+
+  // The codes of `color` into a tile of codes (TileContext::codes), whose draws are display-
+  // referred, opaque or cut out: blend_into reads nothing of what was there.
+  void store_codes(std::ptrdiff_t pixel, const glm::vec4& color) {
+    glm::vec4 written(0.0f);
+    blend_into<Shading, kAlpha>(written, color);
+    tile_.codes[pixel] = display_codes(written);
   }
 
   // MSAA: writes the pixel's color, shaded once, to the samples tile.sample_mask says, each

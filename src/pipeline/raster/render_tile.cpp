@@ -73,6 +73,8 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
   TileBuffers& buffers = tile_buffers[worker];  // sized in prepare_tiles
   tile.blocks_x = (ts + pipeline::kBlockSize - 1) / pipeline::kBlockSize;
   tile.color = buffers.color.data();
+  // Display values whose codes the resolve would only copy: the tile holds the codes.
+  if (resolve.display_referred && frame.samples == 1) tile.codes = buffers.codes.data();
   tile.depth = buffers.depth.data();
   tile.block_max_depth = buffers.block_max_depth.data();
   tile.samples = frame.samples;

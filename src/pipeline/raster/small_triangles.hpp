@@ -149,13 +149,15 @@ void write_waiting(TileContext& tile) {
   static_assert(!edge_overlay<Shading>(), "waiting pixels are stored without the wire overlay");
   PixelWriter<Shading, kAlpha> out(tile, waiting.draw);
   alignas(64) float colors[PackedPixels::kCapacity][4];
-  out.shade_waiting(pixels, waiting.slopes, colors);
+  alignas(64) std::uint32_t shown[PackedPixels::kCapacity];  // their codes, for a tile of codes
+  out.shade_waiting(pixels, waiting.slopes, colors, tile.codes != nullptr ? shown : nullptr);
   if (tile.samples == 1) {
     // PixelWriter::store for these draws (opaque, depth-writing, no overlay), with the tile's
     // values in locals: through the tile, each would be read again after every store.
     static_assert(decltype(out)::kWaits && decltype(out)::kDepthWrite);
     float* const depth = tile.depth;
     glm::vec4* const color = tile.color;
+    std::uint32_t* const codes = tile.codes;
     const std::ptrdiff_t stride = tile.stride;
     const int x0 = tile.x0, y0 = tile.y0;
     std::uint64_t written = 0;
@@ -163,7 +165,11 @@ void write_waiting(TileContext& tile) {
       const std::ptrdiff_t pixel = (pixels.y[n] - y0) * stride + (pixels.x[n] - x0);
       if (!(pixels.z[n] < depth[pixel])) continue;  // a pixel before it is nearer
       const float* c = colors[n];
-      blend_into<Shading, kAlpha>(color[pixel], glm::vec4(c[0], c[1], c[2], c[3]));
+      if (codes != nullptr) {
+        codes[pixel] = shown[n];
+      } else {
+        blend_into<Shading, kAlpha>(color[pixel], glm::vec4(c[0], c[1], c[2], c[3]));
+      }
       depth[pixel] = pixels.z[n];
       ++written;
     }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <glm/vec4.hpp>
 
 #include "pipeline/frame.hpp"
@@ -26,7 +27,12 @@ struct TileContext {
   int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // pixel rectangle [x0, x1) x [y0, y1)
   int stride = 0;                      // pixels per row of the tile buffers
   glm::vec4* color = nullptr;          // linear RGBA
-  float* depth = nullptr;              // kDepthSlack more floats readable after the last row's
+  // Or, in display-referred frames of one sample into an 8-bit target (frame_run.cpp's
+  // display_referred_frame), whose colors the resolve would only round, each pixel's codes: its
+  // four bytes RGBA as the target stores them (display_codes), which the resolve copies; then
+  // `color` is not used. Null otherwise.
+  std::uint32_t* codes = nullptr;
+  float* depth = nullptr;  // kDepthSlack more floats readable after the last row's
   // Per 8x8 block (row-major, blocks_x per row): no depth in the block is larger. Starts at the
   // clear depth; lowered when a triangle writes a whole block (raster_triangle).
   float* block_max_depth = nullptr;
@@ -58,6 +64,20 @@ struct TileContext {
   std::uint16_t* sample_mask = nullptr;
   float sample_z[kMaxSamples] = {};
 };
+
+// A display value's codes as a tile of codes holds them (TileContext::codes): each channel
+// clamped to [0, 1], times 255 plus 0.5, truncated, as the models' batch forms and the
+// resolve's rounding (round_unorm8_row) compute them.
+inline std::uint32_t display_codes(const glm::vec4& value) {
+  std::uint8_t bytes[4];
+  for (int c = 0; c < 4; ++c) {
+    const float clamped = std::min(value[c] > 0.0f ? value[c] : 0.0f, 1.0f);
+    bytes[c] = static_cast<std::uint8_t>(static_cast<int>(clamped * 255.0f + 0.5f));
+  }
+  std::uint32_t codes;
+  std::memcpy(&codes, bytes, sizeof codes);
+  return codes;
+}
 
 // Where frame pixel (x, y) is in the tile's buffers (plane 0).
 inline std::ptrdiff_t tile_index(const TileContext& tile, int x, int y) {

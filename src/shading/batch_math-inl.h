@@ -216,9 +216,9 @@ HWY_INLINE void StoreColors(const BatchV color[4], float (*rgba)[4]) {
 }
 
 // Display values (models.hpp; the debug views' and glmark2's output): a value clamped to
-// [0, 1] (NaN to 0), times 255, plus a half, truncated to its 8-bit code, which
-// DecodeDisplayCodes turns into the color the tile stores. (StoreDisplay below decides whether
-// the code is needed at all.)
+// [0, 1] (NaN to 0), times 255, plus a half, truncated to its 8-bit code (DisplayCode), which
+// DecodeDisplayCodes turns into the color the tile stores, or which a tile of codes holds
+// (StorePackedCodes; StoreDisplay below chooses).
 using DisplayCodes = std::int32_t (*)[kShadeBatch];
 HWY_INLINE hn::Vec<hn::RebindToSigned<BatchTag>> DisplayCode(BatchV value) {
   const BatchTag d;

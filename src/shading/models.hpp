@@ -49,9 +49,9 @@ namespace facet::shading {
 // pipeline/frame_run.cpp) as code / 255, which resolve turns back into the code without the sRGB
 // tables (at one sample as the code itself, in a tile of codes: ShadeInput::codes, which the
 // batch forms honour by storing through batch_math-inl.h's DisplayOut); in a float target
-// (display_exact) as the value itself clamped to
-// [0, 1], neither rounded nor decoded, so a normal's 0 is stored as 0.5. NaN shows as 0. The
-// debug views are their SIMD kernel alone (shade_batch.cpp's ShadeDisplay).
+// (display_exact) as the value itself clamped to [0, 1], neither rounded nor decoded, so a
+// normal's 0 is stored as 0.5. NaN shows as 0. The debug views are their SIMD kernel alone
+// (shade_batch.cpp's ShadeDisplay).
 // The mark of models whose colors are display values (kDisplayReferred above).
 struct DisplayReferred {
   static constexpr bool kDisplayReferred = true;

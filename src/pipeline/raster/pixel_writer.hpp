@@ -16,7 +16,6 @@
 #include <variant>
 
 #include "pipeline/frame.hpp"
-#include "pipeline/kernels.hpp"
 #include "pipeline/raster/block_raster.hpp"
 #include "pipeline/raster/model_traits.hpp"
 #include "pipeline/raster/sample_writer.hpp"
@@ -244,11 +243,11 @@ class PixelWriter {
       in.rgba_row_stride = tile_.stride;
       in.opaque = !writes_data<Shading>();  // alpha 1, as blend_into writes it
       sample_maps(in, block.v, block.w);
-      shaded += kBlockPixels;
       // A tile of codes takes them from the display-referred models' batch forms, the only
       // ones its frames draw (ShadeInput::codes).
       if (tile_.codes != nullptr) in.codes = tile_.codes + first;
       Shading::fragment_batch(uniforms_, in, reinterpret_cast<float(*)[4]>(&tile_.color[first]));
+      shaded += kBlockPixels;
     }
   }
 

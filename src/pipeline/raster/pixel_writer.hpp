@@ -188,9 +188,12 @@ class PixelWriter {
     if constexpr (kAlpha == AlphaMode::mask) {
       if (!(1.0f >= alpha_cutoff_)) return 0;
     }
-    for (int n = 0; n < pixels.count; ++n) {
+    // In locals: a code's store may alias the count.
+    std::uint32_t* const tile_codes = tile_.codes;
+    const int count = pixels.count;
+    for (int n = 0; n < count; ++n) {
       const std::ptrdiff_t pixel = index(pixels.x[n], pixels.y[n]);
-      tile_.codes[pixel] = codes[n];
+      tile_codes[pixel] = codes[n];
       if constexpr (kDepthWrite) tile_.depth[pixel] = pixels.z[n];
     }
     shaded += static_cast<std::uint64_t>(pixels.count);

@@ -153,15 +153,16 @@ void write_waiting(TileContext& tile) {
   out.shade_waiting(pixels, waiting.slopes, colors, tile.codes != nullptr ? shown : nullptr);
   if (tile.samples == 1) {
     // PixelWriter::store for these draws (opaque, depth-writing, no overlay), with the tile's
-    // values in locals: through the tile, each would be read again after every store.
+    // values and the count in locals: through the tile, each would be read again after every
+    // store (a code's store may alias the count).
     static_assert(decltype(out)::kWaits && decltype(out)::kDepthWrite);
     float* const depth = tile.depth;
     glm::vec4* const color = tile.color;
     std::uint32_t* const codes = tile.codes;
     const std::ptrdiff_t stride = tile.stride;
-    const int x0 = tile.x0, y0 = tile.y0;
+    const int x0 = tile.x0, y0 = tile.y0, count = pixels.count;
     std::uint64_t written = 0;
-    for (int n = 0; n < pixels.count; ++n) {
+    for (int n = 0; n < count; ++n) {
       const std::ptrdiff_t pixel = (pixels.y[n] - y0) * stride + (pixels.x[n] - x0);
       if (!(pixels.z[n] < depth[pixel])) continue;  // a pixel before it is nearer
       const float* c = colors[n];

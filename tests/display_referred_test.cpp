@@ -1,7 +1,8 @@
 // Frames whose every color is a display value (the normals, depth and texcoords views, the
-// glmark2 scenes' models) keep those values as code / 255 in their tiles (at one sample, the
-// values themselves) and round them at resolve, instead of storing decoded linear values that
-// resolve sRGB-encodes back to the same codes (pipeline/frame_run.cpp's display_referred_frame).
+// glmark2 scenes' models) keep those values as code / 255 in their tiles and round them at
+// resolve (at one sample, the codes themselves, which resolve copies), instead of storing
+// decoded linear values that resolve sRGB-encodes back to the same codes
+// (pipeline/frame_run.cpp's display_referred_frame).
 // The bytes must not change: each frame here is also rendered to a float target, which never
 // takes that path and holds a display value as the value itself (the normals view's
 // n * 0.5 + 0.5, unrounded) and everything else as linear light; encoded as an 8-bit target

@@ -200,7 +200,10 @@ void Renderer::Impl::run(Framebuffer& target) {
   // encode follows to undo a decode), and the debug views' values unrounded.
   uniforms.display_exact = !linear_pass && target.format() == ColorFormat::rgba32f;
   uniforms.display_referred = referred || uniforms.display_exact;
-  if (referred) background.clear_color = pipeline::display_value_of(kernels, settings.clear_color);
+  if (referred) {
+    background.clear_color = pipeline::display_value_of(kernels, settings.clear_color);
+    background.clear_codes = pipeline::display_codes(kernels, background.clear_color);
+  }
 
   auto bin_start = Clock::now();
   pipeline::bin_primitives(frame, workers);

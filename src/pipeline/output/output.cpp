@@ -52,6 +52,12 @@ glm::vec4 display_value_of(const Kernels& kernels, const glm::vec4& linear) {
   return shown;
 }
 
+std::uint32_t display_codes(const Kernels& kernels, const glm::vec4& value) {
+  std::uint32_t codes;
+  kernels.round_unorm8_row(&value, 1, reinterpret_cast<std::uint8_t*>(&codes));
+  return codes;
+}
+
 void clear_tile(TileContext& tile, const Background& background, bool color_hidden) {
   const Kernels& kernels = *tile.frame->kernels;
   const int width = tile.x1 - tile.x0, height = tile.y1 - tile.y0;
@@ -60,12 +66,10 @@ void clear_tile(TileContext& tile, const Background& background, bool color_hidd
   const bool whole = width == tile.stride;
   const int rows = whole ? 1 : height;
   const std::ptrdiff_t row_length = whole ? static_cast<std::ptrdiff_t>(width) * height : width;
-  const std::uint32_t clear_codes =
-      tile.codes != nullptr ? display_codes(background.clear_color) : 0;
   for (int y = 0; y < rows; ++y) {
     const std::ptrdiff_t row = static_cast<std::ptrdiff_t>(y) * tile.stride;
     if (clears_color && tile.codes != nullptr) {
-      std::fill_n(tile.codes + row, row_length, clear_codes);
+      std::fill_n(tile.codes + row, row_length, background.clear_codes);
     } else if (clears_color) {
       kernels.fill_color_row(tile.color + row, row_length, background.clear_color);
     }

@@ -2,6 +2,7 @@
 // resolves the finished tile into the framebuffer once, converting to the target format.
 #pragma once
 
+#include <cstdint>
 #include <glm/glm.hpp>
 
 #include "facet/framebuffer.hpp"
@@ -18,6 +19,7 @@ struct Background {
   // The tiles hold display values (frame_run.cpp's display_referred_frame): clear_color is one
   // (display_value_of), and resolve_tile rounds instead of encoding.
   bool display_referred = false;
+  std::uint32_t clear_codes = 0;  // then clear_color's codes, for tiles of codes (display_codes)
   const Environment* environment = nullptr;  // non-null: draw the environment
   glm::mat4 inverse_view_projection{1.0f};
   glm::vec3 eye{0.0f};

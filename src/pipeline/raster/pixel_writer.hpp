@@ -307,7 +307,7 @@ class PixelWriter {
   void store_codes(std::ptrdiff_t pixel, const glm::vec4& color) {
     glm::vec4 written(0.0f);
     blend_into<Shading, kAlpha>(written, color);
-    tile_.codes[pixel] = display_codes(written);
+    tile_.codes[pixel] = display_codes(*tile_.frame->kernels, written);
   }
 
   // MSAA: writes the pixel's color, shaded once, to the samples tile.sample_mask says, each

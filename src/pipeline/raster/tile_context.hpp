@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <glm/vec4.hpp>
 
 #include "pipeline/frame.hpp"
@@ -29,8 +28,8 @@ struct TileContext {
   glm::vec4* color = nullptr;          // linear RGBA
   // Or, in display-referred frames of one sample into an 8-bit target (frame_run.cpp's
   // display_referred_frame), whose colors the resolve would only round, each pixel's codes: its
-  // four bytes RGBA as the target stores them (display_codes), which the resolve copies; then
-  // `color` is not used. Null otherwise.
+  // four bytes RGBA as the target stores them, which the resolve copies; then `color` is not
+  // used. Null otherwise.
   std::uint32_t* codes = nullptr;
   float* depth = nullptr;  // kDepthSlack more floats readable after the last row's
   // Per 8x8 block (row-major, blocks_x per row): no depth in the block is larger. Starts at the
@@ -65,19 +64,9 @@ struct TileContext {
   float sample_z[kMaxSamples] = {};
 };
 
-// A display value's codes as a tile of codes holds them (TileContext::codes): each channel
-// clamped to [0, 1], times 255 plus 0.5, truncated, as the models' batch forms and the
-// resolve's rounding (round_unorm8_row) compute them.
-inline std::uint32_t display_codes(const glm::vec4& value) {
-  std::uint8_t bytes[4];
-  for (int c = 0; c < 4; ++c) {
-    const float clamped = std::min(value[c] > 0.0f ? value[c] : 0.0f, 1.0f);
-    bytes[c] = static_cast<std::uint8_t>(static_cast<int>(clamped * 255.0f + 0.5f));
-  }
-  std::uint32_t codes;
-  std::memcpy(&codes, bytes, sizeof codes);
-  return codes;
-}
+// A display value's codes as a tile of codes holds them (TileContext::codes): the frame's
+// 8-bit rounding kernel's (round_unorm8_row), as the models' batch forms round them.
+std::uint32_t display_codes(const Kernels& kernels, const glm::vec4& value);
 
 // Where frame pixel (x, y) is in the tile's buffers (plane 0).
 inline std::ptrdiff_t tile_index(const TileContext& tile, int x, int y) {

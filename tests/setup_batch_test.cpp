@@ -51,6 +51,8 @@ void make_frame(std::size_t triangles, int varyings, Written& w) {
   // Past the region: planes another chunk's setup would be writing, which must stay as they are.
   w.frame.planes.assign(triangles * static_cast<std::size_t>(varyings) + kNextRegion, kCanary);
   w.chunk.triangles = {0, static_cast<std::uint32_t>(triangles), 0};
+  w.frame.sequence.assign(triangles, {});
+  w.chunk.entries = {0, static_cast<std::uint32_t>(triangles), 0};
 }
 
 // The triangles as setup's inputs: each corner its own projected vertex, whose varyings are
@@ -280,8 +282,9 @@ TEST(SetupBatch, WritesWhatTheDefinitionWritesOnEveryTarget) {
                              n * varyings * sizeof(pipeline::Plane)));
       for (std::size_t i = got.frame.planes.size() - kNextRegion; i < got.frame.planes.size(); ++i)
         EXPECT_TRUE(same_bytes(&got.frame.planes[i], &kCanary, sizeof kCanary)) << "plane " << i;
-      ASSERT_EQ(got.chunk.sequence.size(), expected.chunk.sequence.size());
-      EXPECT_TRUE(same_bytes(got.chunk.sequence.data(), expected.chunk.sequence.data(),
+      ASSERT_EQ(got.chunk.entry_count(), expected.chunk.entry_count());
+      ASSERT_EQ(got.chunk.entries.used, n);
+      EXPECT_TRUE(same_bytes(got.frame.sequence.data(), expected.frame.sequence.data(),
                              n * sizeof(pipeline::SequenceEntry)));
     }
   }

@@ -281,10 +281,16 @@ struct GeometryChunk {
   Region triangles, lines, points;
   std::uint32_t planes_begin = 0;  // triangle region slot i has planes_begin + i * varyings
   PrimitiveBuffer overflow;        // what did not fit in the regions (clipped fans)
-  // Every primitive in submission order. Binning walks the chunks' sequences in order, so
-  // bins keep submission order.
-  std::vector<SequenceEntry> sequence;
-  std::size_t sequence_at = 0;  // where this sequence starts in the frame's concatenation
+  // Every primitive's sequence entry, in submission order: in the chunk's region `entries` of
+  // the frame's `sequence` (room for one per primitive the regions above hold), then, past it,
+  // those of the clipped fans' extra pieces. Binning walks the chunks' entries in order, so bins
+  // keep submission order. In the frame's array rather than the chunk's own: chunk k holds
+  // another draw's primitives in each pass (the shadow passes draw other subsets), and a buffer
+  // of its own would grow, allocating, whenever a pass put a bigger one there.
+  Region entries;
+  std::vector<SequenceEntry> more_entries;
+  std::size_t sequence_at = 0;  // where its entries start in the frame's concatenation
+  std::size_t entry_count() const { return entries.used + more_entries.size(); }
   PrimitiveCounts counts;
 };
 
@@ -324,6 +330,7 @@ struct Frame : PrimitiveBuffer {
   // Reused across frames: the first chunk_count are this frame's.
   std::vector<GeometryChunk> chunks;
   std::size_t chunk_count = 0;
+  UninitializedVector<SequenceEntry> sequence;  // the chunks' entries regions
   // Frames whose triangles' regions of `triangles` and `planes` would take more bytes than this
   // set their triangles up without regions (geometry.cpp's plan_chunks; tests lower it).
   std::size_t max_triangle_region_bytes = triangle_region_budget();

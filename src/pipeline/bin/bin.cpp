@@ -62,9 +62,15 @@ void for_each_entry(const Frame& frame, std::size_t begin, std::size_t end, Visi
                            [&](const GeometryChunk& c) { return c.sequence_at <= begin; }) -
       chunks - 1;
   for (std::size_t i = begin; i < end; ++k) {
+    // The chunk's entries [j, stop): in its region of the frame's sequence, then past it.
     const GeometryChunk& chunk = chunks[k];
-    const std::size_t stop = std::min(end, chunk.sequence_at + chunk.sequence.size());
-    for (; i < stop; ++i) visit(chunk.sequence[i - chunk.sequence_at]);
+    const SequenceEntry* region = frame.sequence.data() + chunk.entries.begin;
+    const std::size_t in_region = chunk.entries.used;
+    const std::size_t stop = std::min(end - chunk.sequence_at, chunk.entry_count());
+    std::size_t j = i - chunk.sequence_at;
+    for (; j < std::min(stop, in_region); ++j) visit(region[j]);
+    for (; j < stop; ++j) visit(chunk.more_entries[j - in_region]);
+    i = chunk.sequence_at + j;
   }
 }
 

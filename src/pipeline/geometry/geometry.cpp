@@ -50,7 +50,7 @@ namespace {
 
 // Frame-wide totals of the chunks' regions (and then of what overflowed them).
 struct Totals {
-  std::size_t triangles = 0, planes = 0, lines = 0, points = 0;
+  std::size_t triangles = 0, planes = 0, lines = 0, points = 0, entries = 0;
 };
 
 // Whether `draw` fills triangles (sets up a triangle per triangle of its mesh).
@@ -83,9 +83,10 @@ void plan_regions(GeometryChunk& chunk, const DrawRecord& draw, bool triangle_re
   totals.planes += std::size_t{triangles} * draw.pipeline.varyings;
   totals.lines += lines;
   totals.points += points;
+  chunk.entries = {static_cast<std::uint32_t>(totals.entries), triangles + lines + points, 0};
+  totals.entries += triangles + lines + points;
   chunk.overflow.clear();
-  chunk.sequence.clear();
-  chunk.sequence.reserve(triangles + lines + points);  // capacity kept across frames
+  chunk.more_entries.clear();
   chunk.counts = {};
 }
 
@@ -119,7 +120,8 @@ Totals plan_chunks(Frame& frame) {
   }
   // Indices must stay clear of the sequence's flag bits (primitive_sink.hpp).
   if (totals.triangles >= kMaxPrimitiveIndex || totals.lines >= kMaxPrimitiveIndex ||
-      totals.points >= kMaxPrimitiveIndex || totals.planes > UINT32_MAX) {
+      totals.points >= kMaxPrimitiveIndex || totals.planes > UINT32_MAX ||
+      totals.entries > UINT32_MAX) {
     throw Error("renderer: too many primitives in one frame");
   }
   frame.chunk_count = count;
@@ -127,6 +129,7 @@ Totals plan_chunks(Frame& frame) {
   ensure_size_discarding(frame.planes, totals.planes);
   ensure_size_discarding(frame.lines, totals.lines);
   ensure_size_discarding(frame.points, totals.points);
+  ensure_size_discarding(frame.sequence, totals.entries);
   return totals;
 }
 
@@ -153,7 +156,7 @@ void finish_chunks(Frame& frame, Totals end) {
   for (std::size_t k = 0; k < frame.chunk_count; ++k) {
     GeometryChunk& chunk = frame.chunks[k];
     chunk.sequence_at = sequence_at;
-    sequence_at += chunk.sequence.size();
+    sequence_at += chunk.entry_count();
     frame.stats.culled += chunk.counts.culled;
     frame.stats.clipped += chunk.counts.clipped;
     frame.stats.drawn += chunk.triangles.used + chunk.overflow.triangles.size();
@@ -168,13 +171,17 @@ void finish_chunks(Frame& frame, Totals end) {
     }
     std::copy(o.planes.begin(), o.planes.end(), frame.planes.begin() + end.planes);
     std::copy(o.lines.begin(), o.lines.end(), frame.lines.begin() + end.lines);
-    for (SequenceEntry& entry : chunk.sequence) {
+    const auto rewrite = [&](SequenceEntry& entry) {
       std::uint32_t& e = entry.index;
-      if (!(e & kOverflowBit)) continue;
+      if (!(e & kOverflowBit)) return;
       const std::uint32_t local = e & ~(kOverflowBit | kLineBit);
       e = (e & kLineBit) ? static_cast<std::uint32_t>(end.lines + local) | kLineBit
                          : static_cast<std::uint32_t>(end.triangles + local);
+    };
+    for (std::uint32_t i = 0; i < chunk.entries.used; ++i) {
+      rewrite(frame.sequence[chunk.entries.begin + i]);
     }
+    for (SequenceEntry& entry : chunk.more_entries) rewrite(entry);
     end.triangles += o.triangles.size();
     end.planes += o.planes.size();
     end.lines += o.lines.size();

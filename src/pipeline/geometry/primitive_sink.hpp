@@ -36,6 +36,7 @@ class PrimitiveSink {
         planes_(frame.planes.data()),
         lines_(frame.lines.data()),
         points_(frame.points.data()),
+        sequence_(frame.sequence.data()),
         chunk_(chunk),
         varyings_(static_cast<std::uint32_t>(varyings)) {}
 
@@ -108,7 +109,13 @@ class PrimitiveSink {
  private:
   void append(std::uint32_t index, const SetupTriangle* triangle, int min_x, int min_y, int max_x,
               int max_y) {
-    chunk_.sequence.push_back(binning_entry(frame_, index, triangle, min_x, min_y, max_x, max_y));
+    const SequenceEntry entry = binning_entry(frame_, index, triangle, min_x, min_y, max_x, max_y);
+    GeometryChunk::Region& r = chunk_.entries;
+    if (r.used < r.capacity) {
+      sequence_[r.begin + r.used++] = entry;
+    } else {
+      chunk_.more_entries.push_back(entry);
+    }
   }
 
   const Frame& frame_;
@@ -117,6 +124,7 @@ class PrimitiveSink {
   Plane* planes_;
   SetupLine* lines_;
   SetupPoint* points_;
+  SequenceEntry* sequence_;
   GeometryChunk& chunk_;
   std::uint32_t varyings_;
 };

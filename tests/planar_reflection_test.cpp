@@ -37,18 +37,6 @@ Material unlit(glm::vec3 color) {
   return m;
 }
 
-// A perfect Phong mirror: black itself, all reflection, an exponent too high to blur.
-Material phong_mirror() {
-  Material m;
-  m.shading = ShadingModel::blinn_phong;
-  m.base_color = {0.0f, 0.0f, 0.0f, 1.0f};
-  m.specular_color = glm::vec3(0.0f);
-  m.shininess = 1e6f;
-  m.reflectivity = 1.0f;
-  m.reflects_scene = true;
-  return m;
-}
-
 // A metallic white PBR mirror of the given roughness: it shows what it reflects, dimmed as it
 // roughens.
 Material pbr_mirror(float roughness) {

@@ -102,6 +102,9 @@ struct DrawPipeline {
   // normal is the side seen, as the triangle's facing says, not as the interpolated normal
   // does at a smooth silhouette.
   bool lights_back_faces = false;
+  // The model lights its vertices (Gouraud), shadows included: its lookups are where the
+  // vertices are, not only where the view sees.
+  bool lights_vertices = false;
   bool fills_triangles = true;  // false for wireframe: edges only
   bool draws_edges = false;     // wireframe: edges become lines (line.cpp)
   bool depth_tested = true;     // false for debug counters that see through everything

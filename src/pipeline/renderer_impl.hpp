@@ -28,6 +28,7 @@ namespace facet {
 namespace pipeline {
 
 using Clock = std::chrono::steady_clock;
+struct ShadowReach;
 
 inline double ms_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -90,6 +91,9 @@ struct Renderer::Impl {
   std::vector<LightShadow> shadows;
   bool shadows_ready = false;    // run() hands the maps to the lights (after the passes)
   bool depth_only_pass = false;  // run() writes depth alone (Background::depth_only)
+  // A shadow pass's map's reach (shadow_reach.hpp): run() leaves the tiles outside it as they
+  // were, since no lookup reads them. None: every tile is drawn.
+  const pipeline::ShadowReach* map_reach = nullptr;
   // run() stores light only, never display values, whatever the target (a reflection pass,
   // whose image the mirrors read as light).
   bool linear_pass = false;
@@ -167,6 +171,9 @@ struct Renderer::Impl {
   // The planar reflections of the frame's mirror draws, after the shadow maps and before the
   // color pass into `target` (reflection_passes.cpp); points those draws at them.
   void run_reflection_passes(const Framebuffer& target);
+  // The cameras the reflection passes of this frame will see through, before they run: each
+  // mirror plane's mirrored camera, uncropped (reflection_passes.cpp). Returns how many.
+  int mirror_views(Camera* views);
   // A reflection pass's draws, for mirror plane m seen by `camera` from `eye`'s mirror image:
   // the color pass's and those outside its view, into frame.draws (reflection_passes.cpp).
   void select_mirrored_draws(int m, glm::vec3 eye);

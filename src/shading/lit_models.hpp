@@ -29,6 +29,7 @@ struct GouraudLight {
   static constexpr int kDiffuseSlot = kDiffuse;
   static constexpr int kSpecularSlot = kDiffuse + 3;
   static constexpr int kNormalSlot = -1;  // lit per vertex; see face_without_normals()
+  static constexpr bool kLightsVertices = true;
   static constexpr GouraudLayout kLayout{kDiffuse, kWithSurface};
   // The vertex stage lights every draw's vertices a run at a time.
   static void vertex_batch(const DrawUniforms& u, const VertexBatchInput& in,

@@ -98,6 +98,17 @@ Framebuffer render_side_by_side(const Mesh& left, const Mesh& right, const Mater
   return fb;
 }
 
+Material phong_mirror() {
+  Material m;
+  m.shading = ShadingModel::blinn_phong;
+  m.base_color = {0.0f, 0.0f, 0.0f, 1.0f};
+  m.specular_color = glm::vec3(0.0f);
+  m.shininess = 1e6f;
+  m.reflectivity = 1.0f;
+  m.reflects_scene = true;
+  return m;
+}
+
 std::shared_ptr<const Texture> checker_texture() {
   return Texture::from_rgba8(
       2, 2, {255, 255, 255, 255, 40, 90, 200, 255, 40, 90, 200, 255, 255, 255, 255, 255}, true,

@@ -55,6 +55,10 @@ Framebuffer render_side_by_side(const Mesh& left, const Mesh& right, const Mater
 // A 2x2 sRGB texture of two colors, white and blue, on the diagonals.
 std::shared_ptr<const Texture> checker_texture();
 
+// A perfect Phong mirror (Material::reflects_scene): black itself, all reflection, an exponent
+// too high to blur.
+Material phong_mirror();
+
 // A camera at the origin looking down -Z with the aspect of width x height.
 Camera test_camera(int width, int height, float fov = 60.0f, float near_plane = 0.1f,
                    float far_plane = 100.0f);

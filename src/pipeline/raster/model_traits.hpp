@@ -46,6 +46,13 @@ constexpr bool lights_back_faces() {
   return false;
 }
 
+// Models marked kLightsVertices (DrawPipeline::lights_vertices).
+template <class Shading>
+constexpr bool lights_vertices() {
+  if constexpr (requires { Shading::kLightsVertices; }) return Shading::kLightsVertices;
+  return false;
+}
+
 // Models with kEdgeOverlay draw the triangle's edges over their shading: pixels closer to an
 // edge than kOverlayHalfWidth pixels take the draw's wire color. Measured from the edge
 // functions, so the edges sit exactly on the surface: no depth fighting with the fill.

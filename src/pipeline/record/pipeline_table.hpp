@@ -48,6 +48,7 @@ DrawPipeline make_pipeline() {
   }
   if constexpr (requires { &Shading::triangle; }) p.triangle = &Shading::triangle;
   p.lights_back_faces = lights_back_faces<Shading>();
+  p.lights_vertices = lights_vertices<Shading>();
   p.raster = &raster_triangle<Shading, kAlpha>;
   p.maps_read = maps_read<Shading>();
   p.depth_tested = depth_tested<Shading>();

@@ -162,6 +162,14 @@ void Renderer::Impl::select_mirrored_draws(int m, glm::vec3 eye) {
   }
 }
 
+int Renderer::Impl::mirror_views(Camera* views) {
+  if (!frame_reflections) return 0;
+  glm::vec4 planes[RenderSettings::kMaxMirrorPlanes];
+  const int count = find_mirror_planes(frame.draws, camera.shading_eye(), mirror_of_draw, planes);
+  for (int m = 0; m < count; ++m) views[m] = pipeline::mirrored_camera(camera, planes[m]);
+  return count;
+}
+
 void Renderer::Impl::run_reflection_passes(const Framebuffer& target) {
   reflection_ms = 0.0;
   mirror_count = 0;

@@ -3,9 +3,13 @@
 // orthographic view along a directional light, a perspective one from a spot: shadow_fit.hpp),
 // into a depth target of the map's size: the same tiled
 // pipeline, so the maps, and the images, are the same for any thread count, tile size and SIMD
-// target. The color pass's lit models then read them (shading/shadow_map.hpp).
+// target. A sun's passes draw only the casters, and tiles, within their maps' reach
+// (shadow_reach.hpp). The color pass's lit models then read them (shading/shadow_map.hpp).
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <optional>
+#include <span>
 
 #include "core/scope_exit.hpp"
 #include "pipeline/record/draw_culling.hpp"
@@ -13,6 +17,7 @@
 #include "pipeline/renderer_impl.hpp"
 #include "pipeline/shadow/cascades.hpp"
 #include "pipeline/shadow/shadow_fit.hpp"
+#include "pipeline/shadow/shadow_reach.hpp"
 #include "shading/models.hpp"
 
 namespace facet {
@@ -36,18 +41,48 @@ void add_draw_bounds(const DrawRecord& draw, pipeline::WorldBox& box) {
   }
 }
 
-// What the lit models read of a light's map: the transform from the light's camera to the
-// map's texels, and the target's depth image (window depths, top row first).
-shading::ShadowMap shadow_map_of(const Camera& light, const Framebuffer& target) {
-  const float size = static_cast<float>(target.width());
-  // NDC -> continuous texel coordinates (texel centres on integers, y down, as setup's
-  // to_screen places pixel centres at + 0.5) and window depth.
-  glm::mat4 to_map(1.0f);
-  to_map[0][0] = 0.5f * size, to_map[3][0] = 0.5f * size - 0.5f;
-  to_map[1][1] = -0.5f * size, to_map[3][1] = 0.5f * size - 0.5f;
+// World position -> the continuous texel coordinates of a map `size` texels a side seen by
+// `light` (texel centres on integers, y down, as setup's to_screen places pixel centres at
+// + 0.5) and window depth.
+glm::mat4 world_to_map(const Camera& light, int size) {
+  const float texels = static_cast<float>(size);
+  glm::mat4 to_map(1.0f);  // from NDC
+  to_map[0][0] = 0.5f * texels, to_map[3][0] = 0.5f * texels - 0.5f;
+  to_map[1][1] = -0.5f * texels, to_map[3][1] = 0.5f * texels - 0.5f;
   to_map[2][2] = 0.5f, to_map[3][2] = 0.5f;
-  return shading::make_shadow_map(to_map * light.view_projection(), target.depth().data(),
+  return to_map * light.view_projection();
+}
+
+// What the lit models read of a light's map: the transform from world to the map's texels, and
+// the target's depth image (window depths, top row first).
+shading::ShadowMap shadow_map_of(const Camera& light, const Framebuffer& target) {
+  return shading::make_shadow_map(world_to_map(light, target.width()), target.depth().data(),
                                   target.width(), light.projection_kind == Projection::perspective);
+}
+
+// The largest coordinate of `box`'s corners.
+float magnitude_of(const pipeline::WorldBox& box) {
+  const glm::vec3 m = glm::max(glm::abs(box.low), glm::abs(box.high));
+  return std::max({m.x, m.y, m.z});
+}
+
+// The reach of each of a sun's `count` maps (shadow_reach.hpp): what `seen` (the views whose
+// points look the maps up) see at the view depths that read it (ShadowVisibility): past the
+// start of map k - 1's band (its far depth where it has none), up to map k's far depth; the
+// first from any depth (a mirror pass sees what lies behind the camera) and the last to any.
+// Each widened by the rounding of those depths.
+void shadow_reaches(std::span<const Camera> seen, const Camera* maps_views,
+                    const shading::ShadowMaps& maps, int count, int size, float magnitude,
+                    pipeline::ShadowReach* reaches) {
+  constexpr float kAny = std::numeric_limits<float>::infinity();
+  for (int k = 0; k < count; ++k) {
+    pipeline::LookupDepths depths{maps.eye, maps.forward, 0.0f, 0.0f};
+    depths.nearest = k == 0 ? -kAny : maps.blend_from[k - 1];
+    depths.farthest = k + 1 == count ? kAny : maps.far_depth[k];
+    depths.nearest -= 1e-3f * std::abs(depths.nearest) + 1e-4f * magnitude;
+    depths.farthest += 1e-3f * std::abs(depths.farthest) + 1e-4f * magnitude;
+    reaches[k] = pipeline::shadow_reach(seen, depths, world_to_map(maps_views[k], size), magnitude);
+  }
 }
 
 // The views of a light's maps this frame (none: no shadows from it): a spot's one, a sun's
@@ -117,6 +152,20 @@ void Renderer::Impl::run_shadow_passes() {
   const FogMode color_fog = lighting.fog.mode;
   const bool color_background = lighting.environment.show_as_background;
   const bool color_environment_light = lighting.environment.image_based_lighting;
+  // Where every lookup is at a point a view sees, a sun's maps need only the casters within
+  // their reach. Not so for models that look shadows up at their vertices, wherever those lie.
+  // Under MSAA a pixel is shaded at its centre, on the plane of a triangle that may not cover it,
+  // at any depth along the pixel's ray: within the view's frustum still where that depth picks
+  // neither the first map (nearer than the view, or behind the eye) nor the last.
+  static_assert(pipeline::ShadowReach::kMaxViews >= 1 + RenderSettings::kMaxMirrorPlanes);
+  Camera seen[pipeline::ShadowReach::kMaxViews];
+  seen[0] = color_camera;
+  const int seen_count = 1 + mirror_views(seen + 1);
+  const auto lights_vertices = [](const DrawRecord& draw) { return draw.pipeline.lights_vertices; };
+  const bool lookups_seen =
+      std::none_of(frame.draws.begin(), frame.draws.end(), lights_vertices) &&
+      std::none_of(outside_view_draws.begin(), outside_view_draws.end(), lights_vertices);
+  const bool centres_covered = color_settings.msaa == 1;
   shadow_casters.clear();
   for (const std::vector<DrawRecord>* draws : {&frame.draws, &outside_view_draws}) {
     for (const DrawRecord& draw : *draws) {
@@ -138,6 +187,7 @@ void Renderer::Impl::run_shadow_passes() {
   // primitives, memory) leaves the renderer as it was for the next frame.
   const ScopeExit restore{[&] {
     depth_only_pass = false;
+    map_reach = nullptr;
     std::swap(frame.draws, set_aside_draws);
     camera = color_camera;
     settings = color_settings;
@@ -163,7 +213,16 @@ void Renderer::Impl::run_shadow_passes() {
     LightShadow& shadow = shadows[i];
     const int count =
         shadow_views(lighting.lights[i], color_camera, scene, cascades, size, views, shadow.maps);
+    shadow.maps.eye = color_camera.eye;
+    shadow.maps.forward = color_camera.forward();
+    pipeline::ShadowReach reaches[shading::kMaxShadowCascades];
+    const bool sun = lookups_seen && lighting.lights[i].type == LightType::directional;
+    if (sun) {
+      shadow_reaches(std::span(seen, seen_count), views, shadow.maps, count, size,
+                     magnitude_of(scene), reaches);
+    }
     for (int c = 0; c < count; ++c) {
+      const bool reached = sun && (centres_covered || (c > 0 && c + 1 < count));
       std::optional<Framebuffer>& target = shadow.targets[c];
       if (!target || target->width() != size) target = Framebuffer::depth_only(size, size);
       camera = views[c];
@@ -172,18 +231,21 @@ void Renderer::Impl::run_shadow_passes() {
       frame.draws.clear();
       for (const DrawRecord& caster : shadow_casters) {
         const glm::mat4 model_view_projection = frame.view_projection * caster.uniforms.model;
-        if (caster.bounds && pipeline::box_outside_frustum(*caster.bounds, model_view_projection)) {
+        if (caster.bounds &&
+            (pipeline::box_outside_frustum(*caster.bounds, model_view_projection) ||
+             (reached &&
+              pipeline::box_outside_reach(reaches[c], caster.bounds->low, caster.bounds->high,
+                                          caster.uniforms.model)))) {
           continue;
         }
         frame.draws.push_back(caster);
         frame.draws.back().uniforms.model_view_projection = model_view_projection;
       }
+      map_reach = reached ? &reaches[c] : nullptr;
       run(*target);
       shadow.maps.maps[c] = shadow_map_of(views[c], *target);
     }
     shadow.maps.count = count;
-    shadow.maps.eye = color_camera.eye;
-    shadow.maps.forward = color_camera.forward();
   }
   shadows_ready = true;
   shadow_ms = pipeline::ms_since(start);

@@ -257,8 +257,9 @@ TEST(Shadows, ObliqueSunNoAcneAndNoLightLeaksWhereABoxStands) {
   EXPECT_GT(foot_pixels, 20);
 }
 
-// A light that does not cast shadows, or shadows off for the frame: the image without them.
-TEST(Shadows, ALightThatDoesNotCastLeavesTheImageAsWithout) {
+// A light that does not cast shadows, an occluder whose material casts none, or shadows off for
+// the frame: the image without them.
+TEST(Shadows, ALightOrMaterialThatDoesNotCastLeavesTheImageAsWithout) {
   const glm::vec3 down(0.0f, -1.0f, 0.0f);
   Scene scene = shadow_scene(ShadingModel::blinn_phong, kSquare, sun(down, 1.0f));
   const Framebuffer without =
@@ -271,6 +272,11 @@ TEST(Shadows, ALightThatDoesNotCastLeavesTheImageAsWithout) {
   const Framebuffer casting =
       render_scene_image(scene, view_camera(), kWidth, kHeight, shadow_settings(true));
   EXPECT_FALSE(without.rgba8() == casting.rgba8());
+  ASSERT_EQ(scene.materials.size(), 2u);  // the plane's, the occluder's
+  scene.materials[1].casts_shadows = false;
+  const Framebuffer material_not_casting =
+      render_scene_image(scene, view_camera(), kWidth, kHeight, shadow_settings(true));
+  EXPECT_TRUE(without.rgba8() == material_not_casting.rgba8());
 }
 
 // Shadows of a sun and a spot over a few shapes of every lit model are the same bytes for any

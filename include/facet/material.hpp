@@ -73,6 +73,10 @@ struct Material {
   // roughness (PBR) or the highlight's exponent (Phong), not only the environment. A mesh that
   // is not flat reflects the environment alone.
   bool reflects_scene = false;
+  // Whether the draw casts shadows (RenderSettings::shadows). Off for a surface with nothing
+  // seen beneath it (a sea, the floor at the bottom of a world): as a caster it could shade only
+  // what it hides, and the shadow maps' passes skip it.
+  bool casts_shadows = true;
 
   TextureMap base_color_map;  // sRGB
   TextureMap normal_map;      // tangent space, linear

@@ -79,7 +79,7 @@ struct MaterialField {
   void (*set)(Material&, py::handle);
 };
 
-const std::array<MaterialField, 15> kMaterialFields{{
+const std::array<MaterialField, 16> kMaterialFields{{
     {"base_color", [](const Material& m) -> py::object { return to_tuple(m.base_color); },
      [](Material& m, py::handle v) {
        m.base_color =
@@ -123,6 +123,11 @@ const std::array<MaterialField, 15> kMaterialFields{{
      [](Material& m, py::handle v) {
        if (!py::isinstance<py::bool_>(v)) throw Error("Material: reflects_scene must be a bool");
        m.reflects_scene = v.cast<bool>();
+     }},
+    {"casts_shadows", [](const Material& m) -> py::object { return py::bool_(m.casts_shadows); },
+     [](Material& m, py::handle v) {
+       if (!py::isinstance<py::bool_>(v)) throw Error("Material: casts_shadows must be a bool");
+       m.casts_shadows = v.cast<bool>();
      }},
     {"use_vertex_colors",
      [](const Material& m) -> py::object { return py::bool_(m.use_vertex_colors); },
@@ -184,7 +189,9 @@ shading: one of facet.SHADING_MODELS ("lambert" by default; "unlit", "flat", "ph
 "blinn_phong", "gouraud", "pbr", ...). metallic and roughness are read by "pbr";
 specular_color and shininess by the Phong models. reflects_scene: a flat mesh that mirrors the
 scene (a floor, water; the Renderer's reflections): Phong models mix it in by reflectivity, PBR
-takes it as the light from the mirror direction. use_vertex_colors multiplies base_color by
+takes it as the light from the mirror direction. casts_shadows: off for a surface with nothing
+seen beneath it (water, the floor at the bottom of a world): the shadow maps skip it.
+use_vertex_colors multiplies base_color by
 the mesh's colors. alpha_mode: opaque, mask (alpha_cutoff), blend, additive. cull: back (the
 default; front faces are counter-clockwise), front, none.)doc");
   const Material defaults;
@@ -192,10 +199,11 @@ default; front faces are counter-clockwise), front, none.)doc");
       py::init([](py::object base_color, py::object shading, py::object metallic,
                   py::object roughness, py::object specular_color, py::object shininess,
                   py::object emissive, py::object reflectivity, py::object reflects_scene,
-                  py::object use_vertex_colors, py::object alpha_mode, py::object alpha_cutoff,
-                  py::object cull, py::object wire_color, py::object name) {
+                  py::object casts_shadows, py::object use_vertex_colors, py::object alpha_mode,
+                  py::object alpha_cutoff, py::object cull, py::object wire_color,
+                  py::object name) {
         Material out;
-        const std::array<std::pair<const char*, py::object*>, 15> values{{
+        const std::array<std::pair<const char*, py::object*>, 16> values{{
             {"base_color", &base_color},
             {"shading", &shading},
             {"metallic", &metallic},
@@ -205,6 +213,7 @@ default; front faces are counter-clockwise), front, none.)doc");
             {"emissive", &emissive},
             {"reflectivity", &reflectivity},
             {"reflects_scene", &reflects_scene},
+            {"casts_shadows", &casts_shadows},
             {"use_vertex_colors", &use_vertex_colors},
             {"alpha_mode", &alpha_mode},
             {"alpha_cutoff", &alpha_cutoff},
@@ -222,6 +231,7 @@ default; front faces are counter-clockwise), front, none.)doc");
       py::arg("shininess") = defaults.shininess, py::arg("emissive") = to_tuple(defaults.emissive),
       py::arg("reflectivity") = defaults.reflectivity,
       py::arg("reflects_scene") = defaults.reflects_scene,
+      py::arg("casts_shadows") = defaults.casts_shadows,
       py::arg("use_vertex_colors") = defaults.use_vertex_colors,
       py::arg("alpha_mode") = std::string(to_string(defaults.alpha_mode)),
       py::arg("alpha_cutoff") = defaults.alpha_cutoff,

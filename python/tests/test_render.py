@@ -215,6 +215,27 @@ def test_shadows_darken_what_a_light_cannot_reach():
         facet.Renderer(8, 8, shadows=True, shadow_map_size=0)
 
 
+def test_a_material_that_casts_no_shadow():
+    # The small square of the test above, its material casting no shadow: the large one is lit
+    # behind it, as without shadows.
+    scene = facet.Scene()
+    big, faces, _ = quad(half=2)
+    scene.add_mesh(big, faces, material=facet.Material((0.8, 0.8, 0.8)))
+    small, _, _ = quad(z=0.5, half=0.5)
+    scene.add_mesh(small, faces, material=facet.Material((0, 0, 0), "unlit", casts_shadows=False))
+    scene.ambient = (0, 0, 0)
+    scene.add_light(facet.Light.directional((0, 0, -1)))
+    camera = facet.Camera.look_at((0.0, -3.0, 3.0), (0, 0, 0), (0, 1, 0), 60.0, 0.1, 100.0)
+
+    def image(**settings):
+        return facet.Renderer(64, 64, **settings).render(scene, camera, ["color"])["color"]
+
+    np.testing.assert_array_equal(image(shadows=True, shadow_map_size=256), image())
+    assert facet.Material().casts_shadows and not facet.Material(casts_shadows=False).casts_shadows
+    with pytest.raises(facet.Error, match="casts_shadows"):
+        facet.Material(casts_shadows=0)
+
+
 def test_a_mirror_reflects_the_scene():
     # A mirror in the plane z = 0 (black itself, all reflection) and a red square in front of
     # it: with reflections the mirror shows the square too, so more of the image is red.

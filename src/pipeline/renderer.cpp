@@ -28,8 +28,8 @@ namespace {
 // here too.
 Material without_name(const Material& m) {
   const auto& [name, shading, base_color, use_vertex_colors, specular_color, shininess, metallic,
-               roughness, emissive, reflectivity, reflects_scene, base_color_map, normal_map,
-               normal_scale, specular_map, metallic_roughness_map, occlusion_map,
+               roughness, emissive, reflectivity, reflects_scene, casts_shadows, base_color_map,
+               normal_map, normal_scale, specular_map, metallic_roughness_map, occlusion_map,
                occlusion_strength, emissive_map, alpha_mode, alpha_cutoff, wire_color, point_size,
                cull] = m;
   return Material{{},
@@ -43,6 +43,7 @@ Material without_name(const Material& m) {
                   emissive,
                   reflectivity,
                   reflects_scene,
+                  casts_shadows,
                   base_color_map,
                   normal_map,
                   normal_scale,

@@ -27,10 +27,12 @@ using pipeline::DrawRecord;
 namespace {
 
 // Whether a draw casts shadows: filled triangles that are not blended (a blended surface lets
-// light through; how much, a depth map cannot say). Lines and points do not.
+// light through; how much, a depth map cannot say), of a material that casts them. Lines and
+// points do not.
 bool casts_shadow(const DrawRecord& draw) {
   return draw.mesh->topology != Topology::lines && draw.mesh->topology != Topology::points &&
-         draw.pipeline.fills_triangles && !pipeline::is_blended(draw.material.alpha_mode);
+         draw.pipeline.fills_triangles && !pipeline::is_blended(draw.material.alpha_mode) &&
+         draw.material.casts_shadows;
 }
 
 // Adds the world-space box around a draw's mesh bounds to `box`.

@@ -83,9 +83,14 @@ Material plain(const char* name, glm::vec3 emissive = glm::vec3(0.0f)) {
 std::array<Material, kSurfaceCount> surface_materials(const IslandTextures& t) {
   Material palm = textured("palm", t.foliage);
   palm.cull = CullMode::none;  // single-sided fronds, seen from above and below
+  // Water is opaque and nothing is seen beneath it: as a caster it could only shade the shores,
+  // where their slopes met it in the shadow maps.
   Material ocean = shiny(textured("ocean", t.water), 0.45f, 64.0f);
   ocean.reflects_scene = true;  // the islands and the sky mirrored in the sea
   ocean.reflectivity = 0.5f;
+  ocean.casts_shadows = false;
+  Material river = shiny(textured("river", t.water), 0.35f, 48.0f);
+  river.casts_shadows = false;
   Material glass = shiny(plain("glass"), 0.9f, 96.0f);
   glass.base_color = {0.05f, 0.08f, 0.12f, 1.0f};
   return {
@@ -93,7 +98,7 @@ std::array<Material, kSurfaceCount> surface_materials(const IslandTextures& t) {
       textured("sand", t.sand),
       textured("rock", t.rock),
       ocean,
-      shiny(textured("river", t.water), 0.35f, 48.0f),
+      river,
       textured("falls", t.falls),
       plain("foam", glm::vec3(0.25f)),
       textured("wood", t.wood),

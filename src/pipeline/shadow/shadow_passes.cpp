@@ -218,13 +218,13 @@ void Renderer::Impl::run_shadow_passes() {
     shadow.maps.eye = color_camera.eye;
     shadow.maps.forward = color_camera.forward();
     pipeline::ShadowReach reaches[shading::kMaxShadowCascades];
-    const bool sun = lookups_seen && lighting.lights[i].type == LightType::directional;
-    if (sun) {
+    const bool sun_reaches = lookups_seen && lighting.lights[i].type == LightType::directional;
+    if (sun_reaches) {
       shadow_reaches(std::span(seen, seen_count), views, shadow.maps, count, size,
                      magnitude_of(scene), reaches);
     }
     for (int c = 0; c < count; ++c) {
-      const bool reached = sun && (centres_covered || (c > 0 && c + 1 < count));
+      const bool reached = sun_reaches && (centres_covered || (c > 0 && c + 1 < count));
       std::optional<Framebuffer>& target = shadow.targets[c];
       if (!target || target->width() != size) target = Framebuffer::depth_only(size, size);
       camera = views[c];

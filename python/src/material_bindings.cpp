@@ -191,9 +191,9 @@ specular_color and shininess by the Phong models. reflects_scene: a flat mesh th
 scene (a floor, water; the Renderer's reflections): Phong models mix it in by reflectivity, PBR
 takes it as the light from the mirror direction. casts_shadows: off for a surface with nothing
 seen beneath it (water, the floor at the bottom of a world): the shadow maps skip it.
-use_vertex_colors multiplies base_color by
-the mesh's colors. alpha_mode: opaque, mask (alpha_cutoff), blend, additive. cull: back (the
-default; front faces are counter-clockwise), front, none.)doc");
+use_vertex_colors multiplies base_color by the mesh's colors. alpha_mode: opaque, mask
+(alpha_cutoff), blend, additive. cull: back (the default; front faces are counter-clockwise),
+front, none.)doc");
   const Material defaults;
   material.def(
       py::init([](py::object base_color, py::object shading, py::object metallic,

@@ -59,6 +59,7 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
   const std::uint32_t* bin = frame.bin_entries.data() + frame.bin_start[index];
   const std::uint32_t* bin_end = frame.bin_entries.data() + frame.bin_start[index + 1];
   const std::size_t bin_size = static_cast<std::size_t>(bin_end - bin);
+  // A shadow map's tile that no lookup reads keeps what it held (shadow_reach.hpp).
   if (map_reach && pipeline::texels_outside_reach(*map_reach, tile.x0, tile.y0, tile.x1, tile.y1)) {
     tile_resolve_ticks[index] = 0, tile_pixels_shaded[index] = 0;
     return;

@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <utility>
+#include <vector>
 
 #include "facet/islands.hpp"
 #include "facet/procedural.hpp"
@@ -221,6 +222,64 @@ TEST(ShadowReach, MirrorShowsShadowsCastOutsideTheView) {
   const Camera camera = Camera::look_at({0.0f, 2.0f, 0.0f}, {0.0f, 1.5f, -5.0f}, {0, 1, 0}, 70.0f,
                                         kAspect, 0.5f, 100.0f);
   expect_as_drawn_whole(std::move(scene), camera, reach_settings(), "mirror");
+}
+
+// One renderer's frames, as the viewer draws them, each the image a fresh renderer draws: its
+// maps keep what earlier frames left in the tiles a pass skips (outside the reach, and the
+// empty tiles it cleared before and leaves cleared), which no lookup may see. The camera
+// walks, turns, and comes back.
+TEST(ShadowReach, FramesOfOneRendererAreThoseOfFreshOnes) {
+  const Scene scene = make_islands_scene();
+  Camera start = scene_camera(scene, kAspect);
+  start.aspect = kAspect;
+  const glm::vec3 along = start.forward();
+  const glm::vec3 side = glm::normalize(glm::cross(along, glm::vec3(0, 1, 0)));
+  std::vector<Camera> path;
+  for (const glm::vec3 step :
+       {glm::vec3(0.0f), along * 20.0f, side * 30.0f, -along * 15.0f, glm::vec3(0.0f)}) {
+    Camera camera = start;
+    camera.eye += step, camera.target += step + side * 10.0f * glm::length(step) / 30.0f;
+    path.push_back(camera);
+  }
+  for (const int msaa : {1, 4}) {
+    RenderSettings settings = reach_settings();
+    settings.msaa = msaa;
+    Renderer renderer(settings);
+    Framebuffer frame(kWidth, kHeight);
+    for (std::size_t i = 0; i < path.size(); ++i) {
+      renderer.begin_frame(path[i], scene.lighting);
+      draw_scene(renderer, scene);
+      renderer.finish(frame);
+      const Framebuffer fresh = render_scene_image(scene, path[i], kWidth, kHeight, settings);
+      EXPECT_TRUE(frame.rgba8() == fresh.rgba8()) << "msaa " << msaa << ", frame " << i;
+    }
+  }
+}
+
+// A block moving over a ground that casts no shadow, under a sun straight down, seen from
+// above: the maps' tiles it leaves are empty again, and must be cleared again, or its old
+// shadows stay. Each frame as a fresh renderer draws it.
+TEST(ShadowReach, ACasterThatMovesLeavesNoShadowBehind) {
+  Scene scene;
+  Material ground = lit({0.8f, 0.8f, 0.8f});
+  ground.casts_shadows = false;
+  scene.add_object(plane(16.0f, 9.0f), ground);
+  const int block =
+      scene.add_object(box({1.0f, 0.2f, 1.0f}), lit({0.2f, 0.2f, 0.8f}), at({-4.0f, 1.0f, 0.0f}));
+  scene.lighting.lights = {Light::directional({0.0f, -1.0f, 0.0f})};
+  scene.lighting.ambient = glm::vec3(0.1f);
+  const Camera above =
+      Camera::orthographic({0, 10, 0}, {0, 0, 0}, {0, 0, -1}, 9.0f, kAspect, 1.0f, 20.0f);
+  Renderer renderer(reach_settings());
+  Framebuffer frame(kWidth, kHeight);
+  for (int i = 0; i < 4; ++i) {
+    scene.nodes[block].transform = at({i % 2 == 0 ? -4.0f : 4.0f, 1.0f, 0.0f});
+    renderer.begin_frame(above, scene.lighting);
+    draw_scene(renderer, scene);
+    renderer.finish(frame);
+    const Framebuffer fresh = render_scene_image(scene, above, kWidth, kHeight, reach_settings());
+    EXPECT_TRUE(frame.rgba8() == fresh.rgba8()) << "frame " << i;
+  }
 }
 
 // Two cascades over a ground seen from low down, a sun low behind, and a row of posts along

@@ -84,8 +84,15 @@ struct Renderer::Impl {
   std::vector<pipeline::DrawRecord> outside_view_draws;
   // Each light's shadow maps (by its index in lighting.lights): the depth targets of its passes
   // and what the lit models read of them; `maps.count` 0 when the light has none this frame.
+  // A map's tiles that hold the clear depth alone: cleared by an earlier frame's pass and not
+  // drawn since. A pass leaves them as they are where nothing is drawn again.
+  struct ClearTiles {
+    int tile_size = 0;
+    std::vector<std::uint8_t> clear;  // per tile, in the frame's order
+  };
   struct LightShadow {
     std::optional<Framebuffer> targets[shading::kMaxShadowCascades];
+    ClearTiles clear_tiles[shading::kMaxShadowCascades];
     shading::ShadowMaps maps;
   };
   std::vector<LightShadow> shadows;
@@ -94,6 +101,8 @@ struct Renderer::Impl {
   // A shadow pass's map's reach (shadow_reach.hpp): run() leaves the tiles outside it as they
   // were, since no lookup reads them. None: every tile is drawn.
   const pipeline::ShadowReach* map_reach = nullptr;
+  // A shadow pass's map's ClearTiles: run() skips clearing them again, and keeps them current.
+  ClearTiles* map_clear_tiles = nullptr;
   // run() stores light only, never display values, whatever the target (a reflection pass,
   // whose image the mirrors read as light).
   bool linear_pass = false;

@@ -68,8 +68,11 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
   if (bin == bin_end && !background.environment && debug == DebugView::none) {
     // Lazy clear: nothing drawn here, write the clear values directly.
     const std::uint64_t resolve_start = tick_count();
-    if (background.depth_only) {
+    if (map_clear_tiles && map_clear_tiles->clear[index]) {
+      // A shadow map's tile that holds the clear depth already.
+    } else if (background.depth_only) {
       pipeline::resolve_depth_tile(tile, true, target);
+      if (map_clear_tiles) map_clear_tiles->clear[index] = 1;
     } else {
       pipeline::resolve_cleared_tile(tile, settings.clear_color, resolve.scale, target);
     }
@@ -144,6 +147,7 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
   const std::uint64_t resolve_start = tick_count();
   if (background.depth_only) {
     pipeline::resolve_depth_tile(tile, false, target);
+    if (map_clear_tiles) map_clear_tiles->clear[index] = 0;
   } else if (debug == DebugView::none) {
     pipeline::resolve_tile(tile, resolve, target);
   } else {

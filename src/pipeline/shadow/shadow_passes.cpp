@@ -190,6 +190,7 @@ void Renderer::Impl::run_shadow_passes() {
   const ScopeExit restore{[&] {
     depth_only_pass = false;
     map_reach = nullptr;
+    map_clear_tiles = nullptr;
     std::swap(frame.draws, set_aside_draws);
     camera = color_camera;
     settings = color_settings;
@@ -226,7 +227,17 @@ void Renderer::Impl::run_shadow_passes() {
     for (int c = 0; c < count; ++c) {
       const bool reached = sun_reaches && (centres_covered || (c > 0 && c + 1 < count));
       std::optional<Framebuffer>& target = shadow.targets[c];
-      if (!target || target->width() != size) target = Framebuffer::depth_only(size, size);
+      ClearTiles& clear_tiles = shadow.clear_tiles[c];
+      const int tiles_across = (size + settings.tile_size - 1) / settings.tile_size;
+      if (!target || target->width() != size) {
+        target = Framebuffer::depth_only(size, size);
+        clear_tiles.clear.clear();
+      }
+      if (clear_tiles.tile_size != settings.tile_size) {
+        clear_tiles.tile_size = settings.tile_size;
+        clear_tiles.clear.clear();
+      }
+      clear_tiles.clear.resize(static_cast<std::size_t>(tiles_across) * tiles_across);
       camera = views[c];
       frame.view_projection = views[c].view_projection();
       // Each pass draws the casters its view takes in, as recording does for the camera's.
@@ -244,6 +255,7 @@ void Renderer::Impl::run_shadow_passes() {
         frame.draws.back().uniforms.model_view_projection = model_view_projection;
       }
       map_reach = reached ? &reaches[c] : nullptr;
+      map_clear_tiles = &clear_tiles;
       run(*target);
       shadow.maps.maps[c] = shadow_map_of(views[c], *target);
     }

@@ -82,14 +82,14 @@ struct Renderer::Impl {
   // since they may still cast shadows into it (shadow_passes.cpp).
   bool frame_shadows = false;
   std::vector<pipeline::DrawRecord> outside_view_draws;
-  // Each light's shadow maps (by its index in lighting.lights): the depth targets of its passes
-  // and what the lit models read of them; `maps.count` 0 when the light has none this frame.
   // A map's tiles that hold the clear depth alone: cleared by an earlier frame's pass and not
   // drawn since. A pass leaves them as they are where nothing is drawn again.
   struct ClearTiles {
     int tile_size = 0;
     std::vector<std::uint8_t> clear;  // per tile, in the frame's order
   };
+  // Each light's shadow maps (by its index in lighting.lights): the depth targets of its passes
+  // and what the lit models read of them; `maps.count` 0 when the light has none this frame.
   struct LightShadow {
     std::optional<Framebuffer> targets[shading::kMaxShadowCascades];
     ClearTiles clear_tiles[shading::kMaxShadowCascades];

@@ -80,16 +80,10 @@ ViewDepths seen_depths(const Camera& view, const WorldBox& scene) {
   // frustum (both convex) lie on the intersection's boundary: on the box's faces within the
   // frustum or on the frustum's faces within the box.
   const glm::mat4 view_projection = view.view_projection();
-  const glm::mat4 inverse = glm::inverse(view_projection);
   glm::vec3 box[8], frustum[8];
   glm::vec4 in_box[6], in_frustum[6];
-  for (int corner = 0; corner < 8; ++corner) {
-    box[corner] = scene.corner(corner);
-    const glm::vec4 h =
-        inverse * glm::vec4((corner & 1) ? 1.0f : -1.0f, (corner & 2) ? 1.0f : -1.0f,
-                            (corner & 4) ? 1.0f : -1.0f, 1.0f);
-    frustum[corner] = glm::vec3(h) / h.w;
-  }
+  for (int corner = 0; corner < 8; ++corner) box[corner] = scene.corner(corner);
+  frustum_corners(view, frustum);
   // Within the frustum: -w <= x, y, z <= w in clip space (rows of the view-projection).
   const glm::mat4 rows = glm::transpose(view_projection);
   for (int axis = 0; axis < 3; ++axis) {

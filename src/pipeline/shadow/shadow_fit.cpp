@@ -22,6 +22,15 @@ glm::vec3 up_across(glm::vec3 forward) {
 
 }  // namespace
 
+void frustum_corners(const Camera& view, glm::vec3 corners[8]) {
+  const glm::mat4 inverse = glm::inverse(view.view_projection());
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec4 p = inverse * glm::vec4((i & 1) ? 1.0f : -1.0f, (i & 2) ? 1.0f : -1.0f,
+                                            (i & 4) ? 1.0f : -1.0f, 1.0f);
+    corners[i] = glm::vec3(p) / p.w;
+  }
+}
+
 std::optional<Camera> fit_directional_shadow(const Camera& view, glm::vec3 travel,
                                              const WorldBox& scene, int map_size) {
   if (scene.empty() || !(glm::length(travel) > 0.0f)) return std::nullopt;
@@ -44,14 +53,12 @@ std::optional<Camera> fit_directional_shadow(const Camera& view, glm::vec3 trave
 
   // The frustum between those depths: along each corner ray from the near plane to the far,
   // view depth grows linearly, for either projection.
-  const glm::mat4 inverse = glm::inverse(view.view_projection());
+  glm::vec3 frustum[8];
+  frustum_corners(view, frustum);
   const float span = view.far_plane - view.near_plane;
   Span seen_x, seen_y;
   for (int corner = 0; corner < 4; ++corner) {
-    const float nx = (corner & 1) ? 1.0f : -1.0f, ny = (corner & 2) ? 1.0f : -1.0f;
-    const glm::vec4 a = inverse * glm::vec4(nx, ny, -1.0f, 1.0f);
-    const glm::vec4 b = inverse * glm::vec4(nx, ny, 1.0f, 1.0f);
-    const glm::vec3 on_near = glm::vec3(a) / a.w, on_far = glm::vec3(b) / b.w;
+    const glm::vec3 on_near = frustum[corner], on_far = frustum[corner + 4];
     for (const float depth : {nearest, farthest}) {
       const float t = span > 0.0f ? (depth - view.near_plane) / span : 0.0f;
       const glm::vec3 p = on_near + (on_far - on_near) * t;

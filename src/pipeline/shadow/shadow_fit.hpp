@@ -23,6 +23,10 @@ struct WorldBox {
   }
 };
 
+// The corners of `view`'s frustum: corner i on the right (bit 0) or left edge, the top (bit 1)
+// or bottom, on the far (bit 2) or near plane, numbered as WorldBox::corner numbers a box's.
+void frustum_corners(const Camera& view, glm::vec3 corners[8]);
+
 // The orthographic camera of a map of map_size texels a side for a light travelling along
 // `travel`, or none when the camera sees nothing of `scene` (the box around every draw).
 // Across the light: the camera's frustum, cut to the view depths the scene spans, intersected

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <glm/glm.hpp>
 
+#include "pipeline/shadow/shadow_fit.hpp"
+
 namespace facet::pipeline {
 namespace {
 
@@ -12,15 +14,10 @@ namespace {
 // its edges cross their two planes (every corner of the cut solid, since the planes are
 // parallel and so never meet on an edge). Returns how many, at most 32.
 int cut_frustum(const Camera& view, const LookupDepths& depths, glm::vec3* points) {
-  const glm::mat4 inverse = glm::inverse(view.view_projection());
   glm::vec3 corner[8];
+  frustum_corners(view, corner);
   float depth[8];
-  for (int i = 0; i < 8; ++i) {
-    const glm::vec4 p = inverse * glm::vec4((i & 1) ? 1.0f : -1.0f, (i & 2) ? 1.0f : -1.0f,
-                                            (i & 4) ? 1.0f : -1.0f, 1.0f);
-    corner[i] = glm::vec3(p) / p.w;
-    depth[i] = glm::dot(corner[i] - depths.eye, depths.forward);
-  }
+  for (int i = 0; i < 8; ++i) depth[i] = glm::dot(corner[i] - depths.eye, depths.forward);
   int count = 0;
   for (int i = 0; i < 8; ++i) {
     if (depth[i] >= depths.nearest && depth[i] <= depths.farthest) points[count++] = corner[i];

@@ -1,10 +1,11 @@
 // Gouraud draws of one constant surface color interpolate only their light
 // (ConstantColorGouraudShading, 6 varyings): chosen exactly when nothing in the draw varies the
 // color, and drawing what the 12-varying Gouraud model draws, but for the last bit of rounding
-// of the interpolated constant color that it no longer has.
+// of the interpolated constant color that it no longer has. Under gray light, one channel of it
+// (GrayLightGouraudShading, 2 varyings), drawing what the 6-varying model draws but for the
+// rounding of the ambient light, which it adds after interpolation.
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <memory>
 
 #include "facet/procedural.hpp"
@@ -34,7 +35,8 @@ TEST(ConstantColorGouraud, IsChosenOnlyWhenNothingVariesTheColor) {
   constexpr int kConstant = shading::ConstantColorGouraudShading::kVaryings;
   constexpr int kFull = shading::GouraudShading::kVaryings;
   static_assert(kConstant < kFull);
-  const Lighting lights;
+  Lighting lights;
+  lights.lights[0].color = {1.0f, 0.9f, 0.8f};  // not gray (GrayLightGouraud below)
 
   Material m = gouraud_material();
   EXPECT_EQ(pipeline::pipeline_for(m, plain, lights).varyings, kConstant);
@@ -55,21 +57,60 @@ TEST(ConstantColorGouraud, DrawsWhatTheFullGouraudModelDraws) {
   Mesh faceted = sphere;
   faceted.normals.clear();  // lit per face (face_without_normals)
   const Material material = gouraud_material();
+  Lighting lighting;
+  lighting.lights[0].color = {1.0f, 0.9f, 0.8f};  // not gray
+  const pipeline::DrawPipeline constant = pipeline::pipeline_for(material, sphere, lighting);
+  ASSERT_EQ(constant.varyings, shading::ConstantColorGouraudShading::kVaryings);
   auto render = [&](const pipeline::DrawPipeline& pipe) {
-    return render_side_by_side(sphere, faceted, material, pipe, kWidth, kHeight);
+    return render_side_by_side(sphere, faceted, material, pipe, kWidth, kHeight, &lighting);
   };
-  const Framebuffer full = render(pipeline::make_pipeline<shading::GouraudShading>());
-  const Framebuffer constant = render(pipeline::pipeline_for(material, sphere, Lighting{}));
-  int lit = 0, differing = 0;
-  for (std::size_t i = 0; i < full.rgba8().size(); ++i) {
-    const int difference = std::abs(full.rgba8()[i] - constant.rgba8()[i]);
-    ASSERT_LE(difference, 1) << "byte " << i;
-    differing += difference != 0;
-    lit += i % 4 == 0 && full.rgba8()[i] != 0;
-  }
-  EXPECT_GT(lit, kWidth * kHeight / 8);  // the spheres are there
-  EXPECT_LT(differing, lit / 20);        // and almost every byte is the same
-  EXPECT_EQ(full.depth(), constant.depth());
+  expect_same_but_rounding(render(pipeline::make_pipeline<shading::GouraudShading>()),
+                           render(constant));
+}
+
+// What makes the light gray: every light's color and the material's specular color (the ambient
+// light need not be).
+TEST(GrayLightGouraud, IsChosenOnlyUnderGrayLight) {
+  const Mesh sphere = uv_sphere(1.0f, 8, 4);
+  constexpr int kGray = shading::GrayLightGouraudShading::kVaryings;
+  constexpr int kConstant = shading::ConstantColorGouraudShading::kVaryings;
+  static_assert(kGray < kConstant);
+  const Material m = gouraud_material();
+  Lighting lighting;  // one white sun; a bluish ambient light
+  ASSERT_NE(lighting.ambient.r, lighting.ambient.b);
+  lighting.lights.push_back(
+      Light::spot({0, 3, 0}, {0, -1, 0}, 20.0f, 30.0f, glm::vec3(0.5f), 3.0f));
+  EXPECT_EQ(pipeline::pipeline_for(m, sphere, lighting).varyings, kGray);
+  EXPECT_EQ(pipeline::pipeline_for(m, sphere, lighting, true).varyings, kGray);  // shadowed
+
+  Lighting tinted = lighting;
+  tinted.lights[1].color = {1.0f, 0.9f, 0.8f};
+  EXPECT_EQ(pipeline::pipeline_for(m, sphere, tinted).varyings, kConstant);
+  Material tinted_highlight = m;
+  tinted_highlight.specular_color = {0.6f, 0.6f, 0.5f};
+  EXPECT_EQ(pipeline::pipeline_for(tinted_highlight, sphere, lighting).varyings, kConstant);
+  Material blended = m;
+  blended.alpha_mode = AlphaMode::blend;
+  EXPECT_EQ(pipeline::pipeline_for(blended, sphere, lighting).varyings, kConstant);
+}
+
+TEST(GrayLightGouraud, DrawsWhatTheConstantColorModelDraws) {
+  constexpr int kWidth = 160, kHeight = 120;
+  const Mesh sphere = uv_sphere(1.0f, 40, 20);
+  Mesh faceted = sphere;
+  faceted.normals.clear();  // lit per face (face_without_normals)
+  const Material material = gouraud_material();
+  Lighting lighting;
+  lighting.ambient = {0.1f, 0.2f, 0.35f};
+  lighting.lights = {Light::directional({-0.4f, -0.5f, -1.0f}, glm::vec3(0.9f), 1.5f),
+                     Light::point({2.0f, 1.0f, -2.0f}, glm::vec3(2.0f), 4.0f)};
+  const pipeline::DrawPipeline gray = pipeline::pipeline_for(material, sphere, lighting);
+  ASSERT_EQ(gray.varyings, shading::GrayLightGouraudShading::kVaryings);
+  auto render = [&](const pipeline::DrawPipeline& pipe) {
+    return render_side_by_side(sphere, faceted, material, pipe, kWidth, kHeight, &lighting);
+  };
+  expect_same_but_rounding(render(pipeline::make_pipeline<shading::ConstantColorGouraudShading>()),
+                           render(gray));
 }
 
 }  // namespace

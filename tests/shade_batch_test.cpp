@@ -279,6 +279,8 @@ TEST(ShadeBatch, GouraudModelsAreAlikeOnEveryTarget) {
   // Chosen only for draws without a texture (nor vertex colors, which randomize() has none of).
   expect_every_target_alike<shading::ConstantColorGouraudShading>(
       [](const Draw& d) { return !d.material.base_color_map; });
+  expect_every_target_alike<shading::GrayLightGouraudShading>(
+      [](const Draw& d) { return !d.material.base_color_map; });
 }
 
 TEST(ShadeBatch, PhongBlinnPhongAndPbrAreAlikeOnEveryTarget) {

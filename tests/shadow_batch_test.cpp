@@ -421,6 +421,7 @@ void expect_vertexs_bits() {
 TEST(ShadowBatch, GouraudVerticesGivePortableBitsOnEveryTarget) {
   expect_vertexs_bits<shading::GouraudShading>();
   expect_vertexs_bits<shading::ConstantColorGouraudShading>();
+  expect_vertexs_bits<shading::GrayLightGouraudShading>();
 }
 
 // The lookup itself (shadow_batch-inl.h's ShadowVisibility) against shadow_visibility, point by

@@ -201,6 +201,7 @@ TEST(VertexBatch, GouraudGivesPortableBitsOnEveryTarget) {
 
 TEST(VertexBatch, ConstantColorGouraudGivesPortableBitsOnEveryTarget) {
   expect_every_target_gives_portable_bits<shading::ConstantColorGouraudShading>();
+  expect_every_target_gives_portable_bits<shading::GrayLightGouraudShading>();
 }
 
 // vertex() lights one vertex as a run lights it wherever it is in the run.
@@ -214,8 +215,8 @@ TEST(VertexBatch, SurfaceModelsGiveVertexsBits) {
 
 // A triangle of a mesh without normals: its three corners take the light of its centre with
 // its face normal, the same bits on every target as on the portable one.
-TEST(VertexBatch, GouraudFaceWithoutNormalsGivesPortableBitsOnEveryTarget) {
-  using Model = shading::ConstantColorGouraudShading;
+template <class Model>
+void expect_face_without_normals_gives_portable_bits() {
   const std::int64_t portable = portable_simd_target();
   ASSERT_NE(portable, 0);
   std::mt19937 rng(20261203);
@@ -247,6 +248,11 @@ TEST(VertexBatch, GouraudFaceWithoutNormalsGivesPortableBitsOnEveryTarget) {
     }
   }
   EXPECT_GT(compared, 200);
+}
+
+TEST(VertexBatch, GouraudFaceWithoutNormalsGivesPortableBitsOnEveryTarget) {
+  expect_face_without_normals_gives_portable_bits<shading::ConstantColorGouraudShading>();
+  expect_face_without_normals_gives_portable_bits<shading::GrayLightGouraudShading>();
 }
 
 // Cases worked out by hand, on every target: a vertex at the origin, facing +z, seen from

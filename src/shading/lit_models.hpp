@@ -22,15 +22,16 @@ using BlinnPhongShading = PhongShadingT<true>;
 // Gouraud: Blinn-Phong evaluated at the vertices, shadows included (a shadow is sampled at
 // each vertex, not per pixel); the pixel interpolates diffuse and specular light. GouraudLight is
 // what both layouts share: the lighting, by the SIMD kernels of vertex_batch.hpp alone, writing
-// the diffuse light at slots kDiffuse..kDiffuse+2 and the specular light at the next three, after
-// the surface layout's texture coordinate and color if kWithSurface.
-template <int kDiffuse, bool kWithSurface>
+// the diffuse light at slots kDiffuse..kDiffuse+2 and the specular light at the next three (under
+// gray light, kGray, one slot each: GouraudLayout), after the surface layout's texture coordinate
+// and color if kWithSurface.
+template <int kDiffuse, bool kWithSurface, bool kGray = false>
 struct GouraudLight {
   static constexpr int kDiffuseSlot = kDiffuse;
-  static constexpr int kSpecularSlot = kDiffuse + 3;
+  static constexpr int kSpecularSlot = kDiffuse + (kGray ? 1 : 3);
   static constexpr int kNormalSlot = -1;  // lit per vertex; see face_without_normals()
   static constexpr bool kLightsVertices = true;
-  static constexpr GouraudLayout kLayout{kDiffuse, kWithSurface};
+  static constexpr GouraudLayout kLayout{kDiffuse, kWithSurface, kGray};
   // The vertex stage lights every draw's vertices a run at a time.
   static void vertex_batch(const DrawUniforms& u, const VertexBatchInput& in,
                            float (*out)[kVertexBatch]) {
@@ -41,9 +42,9 @@ struct GouraudLight {
   static void face_without_normals(glm::vec3 normal, glm::vec3 centre, const DrawUniforms& u,
                                    float* v[3]) {
     alignas(64) float light[6][kVertexBatch];
-    u.frame->kernels->gouraud_light_batch(u, {1, &centre, &normal}, light);
+    u.frame->kernels->gouraud_light_batch(u, {1, &centre, &normal, true, kGray}, light);
     for (int i = 0; i < 3; ++i) {
-      for (int k = 0; k < 6; ++k) v[i][kDiffuseSlot + k] = light[k][0];
+      for (int k = 0; k < (kGray ? 2 : 6); ++k) v[i][kDiffuseSlot + k] = light[k][0];
     }
   }
 };
@@ -64,6 +65,17 @@ struct ConstantColorGouraudShading : GouraudLight<kConstantGouraudDiffuseSlot, f
                                      BatchForm<BatchModel::constant_gouraud> {
   static constexpr int kVaryings = 6;
   static_assert(kSpecularSlot + 3 == kVaryings);
+};
+
+// Constant-color Gouraud under gray light (GouraudLayout; pipeline_table.cpp decides): 2 varyings,
+// the lights' diffuse and specular light, each standing for its three equal channels; the pixel
+// adds the ambient light to the diffuse. A third of ConstantColorGouraudShading's plane set-up and
+// interpolation; its colors differ only in rounding (the ambient light added after interpolation
+// instead of before).
+struct GrayLightGouraudShading : GouraudLight<kConstantGouraudDiffuseSlot, false, true>,
+                                 BatchForm<BatchModel::gray_gouraud> {
+  static constexpr int kVaryings = 2;
+  static_assert(kSpecularSlot + 1 == kVaryings);
 };
 
 // Physically based: Cook-Torrance (GGX, Smith, Schlick), metallic-roughness, occlusion,

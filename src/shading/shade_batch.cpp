@@ -299,9 +299,11 @@ bool ShadeConstantUnlitAsRgba(const DrawUniforms& u, const ShadeInput& in, float
 template <BatchModel kModel>
 void ShadeModel(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
   constexpr bool kUnlit = kModel == BatchModel::unlit || kModel == BatchModel::constant_unlit;
-  constexpr bool kGouraud = kModel == BatchModel::gouraud || kModel == BatchModel::constant_gouraud;
+  constexpr bool kGray = kModel == BatchModel::gray_gouraud;
+  constexpr bool kGouraud =
+      kModel == BatchModel::gouraud || kModel == BatchModel::constant_gouraud || kGray;
   constexpr bool kConstantColor =
-      kModel == BatchModel::constant_unlit || kModel == BatchModel::constant_gouraud;
+      kModel == BatchModel::constant_unlit || kModel == BatchModel::constant_gouraud || kGray;
   constexpr bool kPhong = kModel == BatchModel::phong || kModel == BatchModel::blinn_phong;
   constexpr unsigned kMapsRead = maps_read(kModel);
   const bool fogged = in.fog != nullptr && in.fog->mode != FogMode::none;
@@ -329,13 +331,17 @@ void ShadeModel(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
       color[2] = hn::Add(albedo.c[2], emission.z);
       color[3] = hn::Add(albedo.c[3], hn::Zero(d));
     } else if constexpr (kGouraud) {
-      // Albedo x the interpolated diffuse light + the specular light, then emission.
+      // Albedo x the interpolated diffuse light + the specular light, then emission. Gray light
+      // keeps one slot for each, and its diffuse light without the ambient (GouraudLayout).
       constexpr int kDiffuse =
           kModel == BatchModel::gouraud ? kGouraudDiffuseSlot : kConstantGouraudDiffuseSlot;
       const FloatV e[3] = {emission.x, emission.y, emission.z};
       for (int c = 0; c < 3; ++c) {
-        const FloatV lit = hn::Add(hn::Mul(albedo.c[c], hn::Load(d, in.v[kDiffuse + c] + j)),
-                                   hn::Load(d, in.v[kDiffuse + 3 + c] + j));
+        const int diffuse = kGray ? kDiffuse : kDiffuse + c;
+        const int specular = kGray ? kDiffuse + 1 : kDiffuse + 3 + c;
+        FloatV light = hn::Load(d, in.v[diffuse] + j);
+        if constexpr (kGray) light = hn::Add(hn::Set(d, u.frame->ambient[c]), light);
+        const FloatV lit = hn::Add(hn::Mul(albedo.c[c], light), hn::Load(d, in.v[specular] + j));
         color[c] = hn::Add(lit, e[c]);
       }
       color[3] = albedo.c[3];
@@ -411,6 +417,8 @@ void ShadeBatch(BatchModel model, const DrawUniforms& u, const ShadeInput& in, f
       return ShadeModel<BatchModel::gouraud>(u, in, rgba);
     case BatchModel::constant_gouraud:
       return ShadeModel<BatchModel::constant_gouraud>(u, in, rgba);
+    case BatchModel::gray_gouraud:
+      return ShadeModel<BatchModel::gray_gouraud>(u, in, rgba);
     case BatchModel::pbr:
       return ShadeModel<BatchModel::pbr>(u, in, rgba);
   }

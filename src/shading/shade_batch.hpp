@@ -14,8 +14,8 @@ namespace facet::shading {
 inline constexpr int kShadeBatch = 64;
 
 // constant_unlit: unlit with the material's base color instead of an interpolated color;
-// gouraud and constant_gouraud: the Gouraud models (lit_models.hpp), whose pixels combine the
-// light interpolated from their vertices; pbr: physically based (metallic-roughness).
+// gouraud, constant_gouraud and gray_gouraud: the Gouraud models (lit_models.hpp), whose pixels
+// combine the light interpolated from their vertices; pbr: physically based (metallic-roughness).
 enum class BatchModel {
   unlit,
   constant_unlit,
@@ -27,6 +27,7 @@ enum class BatchModel {
   texcoords_view,
   gouraud,
   constant_gouraud,
+  gray_gouraud,
   pbr
 };
 
@@ -52,7 +53,7 @@ inline const TextureMap& material_map(const Material& m, MaterialMap map) {
 }
 
 // Which maps (map_bit) a model reads: every model its emission's, but the normals view and the
-// constant-color Gouraud model, which has no texture coordinate (pipeline/record/
+// constant-color Gouraud models, which have no texture coordinate (pipeline/record/
 // pipeline_table.cpp takes it for draws without maps); Phong and Blinn-Phong their normal and
 // specular maps; PBR its normal, metallic-roughness and occlusion maps.
 inline constexpr unsigned maps_read(BatchModel model) {
@@ -61,6 +62,7 @@ inline constexpr unsigned maps_read(BatchModel model) {
     case BatchModel::depth_view:
     case BatchModel::texcoords_view:
     case BatchModel::constant_gouraud:
+    case BatchModel::gray_gouraud:
       return 0;
     case BatchModel::phong:
     case BatchModel::blinn_phong:

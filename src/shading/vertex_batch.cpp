@@ -21,19 +21,20 @@ HWY_BEFORE_NAMESPACE();
 namespace facet::shading::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-// The light at a vector of world positions p of unit normals n: the ambient light, then for
-// each light that the side of the normal faces (n . l > 0), its radiance after its shadow
-// (looked up in the lanes of `active` only) times n . l as diffuse light, and times the
-// material's specular color and the Blinn-Phong highlight (max(0, n . h)^shininess, h the half
-// vector) as specular light.
+// The light at a vector of world positions p of unit normals n: the ambient light (unless
+// !with_ambient), then for each light that the side of the normal faces (n . l > 0), its radiance
+// after its shadow (looked up in the lanes of `active` only) times n . l as diffuse light, and
+// times the material's specular color and the Blinn-Phong highlight (max(0, n . h)^shininess, h the
+// half vector) as specular light.
 HWY_INLINE void LightVertices(const DrawUniforms& u, const Vec3V& p, const Vec3V& n,
-                              BatchMask active, BatchV diffuse[3], BatchV specular[3]) {
+                              BatchMask active, BatchV diffuse[3], BatchV specular[3],
+                              bool with_ambient = true) {
   const BatchTag d;
   const Material& material = *u.material;
   const Vec3V eye = Set3(u.frame->eye);
   const Vec3V view = SafeNormalize({hn::Sub(eye.x, p.x), hn::Sub(eye.y, p.y), hn::Sub(eye.z, p.z)});
   for (int c = 0; c < 3; ++c) {
-    diffuse[c] = hn::Set(d, u.frame->ambient[c]);
+    diffuse[c] = with_ambient ? hn::Set(d, u.frame->ambient[c]) : hn::Zero(d);
     specular[c] = hn::Zero(d);
   }
   for (int i = 0; i < u.frame->light_count; ++i) {
@@ -77,16 +78,22 @@ HWY_INLINE Vec3V LoadVec3s(const glm::vec3* v, int j, int count) {
   return out;
 }
 
-// Lights the vector of points from j on and stores the light at out[first..first + 5] + j;
-// without the lights' shadows unless `shadows`.
+// Lights the vector of points from j on and stores the light at out[first..first + 5] + j, or
+// under gray light (GouraudLayout) its red channel's, without the ambient light, at
+// out[first..first + 1] + j; without the lights' shadows unless `shadows`.
 HWY_INLINE void LightAndStore(const DrawUniforms& u, const Vec3V& p, const Vec3V& n, int j,
-                              int count, int first, float (*out)[kVertexBatch],
-                              bool shadows = true) {
+                              int count, int first, float (*out)[kVertexBatch], bool shadows = true,
+                              bool gray = false) {
   const BatchTag d;
   BatchV diffuse[3], specular[3];
   const BatchMask active = shadows ? hn::FirstN(d, static_cast<std::size_t>(count - j))
                                    : hn::FirstN(d, 0);  // no lane looks a shadow up
-  LightVertices(u, p, n, active, diffuse, specular);
+  LightVertices(u, p, n, active, diffuse, specular, !gray);
+  if (gray) {
+    hn::Store(diffuse[0], d, out[first] + j);
+    hn::Store(specular[0], d, out[first + 1] + j);
+    return;
+  }
   for (int c = 0; c < 3; ++c) {
     hn::Store(diffuse[c], d, out[first + c] + j);
     hn::Store(specular[c], d, out[first + 3 + c] + j);
@@ -97,7 +104,7 @@ void GouraudLightBatch(const DrawUniforms& u, const WorldPoints& in, float (*out
   const int lanes = static_cast<int>(hn::Lanes(BatchTag()));
   for (int j = 0; j < in.count; j += lanes) {
     LightAndStore(u, LoadVec3s(in.positions, j, in.count), LoadVec3s(in.normals, j, in.count), j,
-                  in.count, 0, out, in.shadows);
+                  in.count, 0, out, in.shadows, in.gray);
   }
 }
 
@@ -117,7 +124,8 @@ void GouraudVertexBatch(const DrawUniforms& u, const VertexBatchInput& in, Goura
     }
     const Vec3V normal{hn::Load(d, in.normal[0] + j), hn::Load(d, in.normal[1] + j),
                        hn::Load(d, in.normal[2] + j)};
-    LightAndStore(u, {world[0], world[1], world[2]}, normal, j, in.count, layout.diffuse, out);
+    LightAndStore(u, {world[0], world[1], world[2]}, normal, j, in.count, layout.diffuse, out, true,
+                  layout.gray);
   }
   if (!layout.with_surface) return;
   // The texture coordinate and material_color(): copies and one product, per vertex.

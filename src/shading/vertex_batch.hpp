@@ -31,10 +31,14 @@ struct VertexBatchInput {
 
 // Where the Gouraud models (lit_models.hpp) keep their varyings: the diffuse light at slots
 // diffuse..diffuse+2, the specular light at diffuse+3..diffuse+5, and, when with_surface, the
-// texture coordinate and material_color() at kTexcoordSlot and kColorSlot (surface.hpp).
+// texture coordinate and material_color() at kTexcoordSlot and kColorSlot (surface.hpp). Under
+// gray light (every light's color and the specular color gray: the three channels' light from the
+// lights has the same bits), one slot each: the diffuse light at `diffuse`, without the ambient
+// light (which need not be gray: the pixel adds it), and the specular light at the next.
 struct GouraudLayout {
   int diffuse;
   bool with_surface;
+  bool gray = false;
 };
 
 // out[k][n]: varying k of vertex n in that layout, n < count (the light is stored a vector at a
@@ -44,16 +48,19 @@ using GouraudVertexBatchKernel = void (*)(const DrawUniforms& u, const VertexBat
 GouraudVertexBatchKernel gouraud_vertex_batch_kernel(SimdTarget target);
 
 // Points already in world space, with their unit world normals: count of each, at most
-// kVertexBatch; lit with the lights' shadows or without (flat shading's triangles).
+// kVertexBatch; lit with the lights' shadows or without (flat shading's triangles), in the full
+// layout or the gray light's (GouraudLayout).
 struct WorldPoints {
   int count = 0;
   const glm::vec3* positions = nullptr;
   const glm::vec3* normals = nullptr;
   bool shadows = true;
+  bool gray = false;
 };
 
 // out[k][n]: the diffuse light (k = 0..2) and the specular light (k = 3..5) at point n, as the
-// vertex batch lights its vertices once it has their world positions.
+// vertex batch lights its vertices once it has their world positions; under gray light, the
+// diffuse light without the ambient (k = 0) and the specular light (k = 1).
 using GouraudLightBatchKernel = void (*)(const DrawUniforms& u, const WorldPoints& in,
                                          float (*out)[kVertexBatch]);
 GouraudLightBatchKernel gouraud_light_batch_kernel(SimdTarget target);

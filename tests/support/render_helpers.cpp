@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
 #include <memory>
@@ -96,6 +97,20 @@ Framebuffer render_side_by_side(const Mesh& left, const Mesh& right, const Mater
                                glm::translate(glm::mat4(1.0f), glm::vec3(1.2f, 0.0f, -5.0f)), pipe);
   renderer.finish(fb);
   return fb;
+}
+
+void expect_same_but_rounding(const Framebuffer& full, const Framebuffer& cheaper) {
+  ASSERT_EQ(full.rgba8().size(), cheaper.rgba8().size());
+  int drawn = 0, differing = 0;
+  for (std::size_t i = 0; i < full.rgba8().size(); ++i) {
+    const int difference = std::abs(full.rgba8()[i] - cheaper.rgba8()[i]);
+    ASSERT_LE(difference, 1) << "byte " << i;
+    differing += difference != 0;
+    drawn += i % 4 == 0 && full.rgba8()[i] > 0;
+  }
+  EXPECT_GT(drawn, full.width() * full.height() / 8);
+  EXPECT_LT(differing, drawn / 20) << drawn;
+  EXPECT_EQ(full.depth(), cheaper.depth());
 }
 
 Material phong_mirror() {

@@ -52,6 +52,11 @@ Framebuffer render_side_by_side(const Mesh& left, const Mesh& right, const Mater
                                 const pipeline::DrawPipeline& pipe, int width, int height,
                                 const Lighting* lighting = nullptr);
 
+// That a cheaper form's image (render_side_by_side) is the full form's but for rounding: every
+// byte within one code, almost all equal, the same depths, and the meshes drawn (an eighth of
+// the pixels at least).
+void expect_same_but_rounding(const Framebuffer& full, const Framebuffer& cheaper);
+
 // A 2x2 sRGB texture of two colors, white and blue, on the diagonals.
 std::shared_ptr<const Texture> checker_texture();
 

@@ -1,6 +1,8 @@
 // The table of specialised pipelines (see pipeline_table.hpp).
 #include "pipeline/record/pipeline_table.hpp"
 
+#include <algorithm>
+
 #include "shading/lit_models.hpp"
 #include "shading/models.hpp"
 
@@ -20,6 +22,17 @@ DrawPipeline with_alpha(AlphaMode alpha) {
     default:
       return make_pipeline<Shading, AlphaMode::opaque>();
   }
+}
+
+bool gray(glm::vec3 color) { return color.r == color.g && color.g == color.b; }
+
+// Whether every channel of the light a Gouraud vertex gets from the lights has the same bits
+// (GouraudLayout): each light's color (its radiance is color x intensity, scaled by the same
+// attenuation and shadow in each channel) and the specular color are gray.
+bool lights_gray(const Lighting& lighting, const Material& material) {
+  return gray(material.specular_color) &&
+         std::all_of(lighting.lights.begin(), lighting.lights.end(),
+                     [](const Light& light) { return gray(light.color); });
 }
 
 }  // namespace
@@ -77,6 +90,10 @@ DrawPipeline pipeline_for(const Material& material, const Mesh& mesh, const Ligh
   const bool vertex_colored = material.use_vertex_colors && !mesh.colors.empty();
   if (material.shading == ShadingModel::gouraud && !vertex_colored && !material.base_color_map &&
       !material.emissive_map) {
+    // Opaque draws only: each alpha mode is another instance of the raster loop.
+    if (material.alpha_mode == AlphaMode::opaque && lights_gray(lighting, material)) {
+      return make_pipeline<shading::GrayLightGouraudShading>();
+    }
     return with_alpha<shading::ConstantColorGouraudShading>(material.alpha_mode);
   }
   if (material.shading == ShadingModel::unlit && !vertex_colored) {

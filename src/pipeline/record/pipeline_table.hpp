@@ -17,9 +17,9 @@ DrawPipeline pipeline_for(ShadingModel model, AlphaMode alpha = AlphaMode::opaqu
 
 // The pipeline for a draw: its material's shading model and alpha mode, where the mesh,
 // material and the frame's lights allow in a cheaper form (Gouraud of one constant surface
-// color interpolates only its light; Lambert lit from one side by directional lights only,
-// no position, unless `shadowed`: the frame renders shadows, which are looked up at the
-// position). Point meshes ignore the shading model (unlit: primitive.cpp).
+// color interpolates only its light, and under gray light one channel of it; Lambert lit from one
+// side by directional lights only, no position, unless `shadowed`: the frame renders shadows, which
+// are looked up at the position). Point meshes ignore the shading model (unlit: primitive.cpp).
 DrawPipeline pipeline_for(const Material& material, const Mesh& mesh, const Lighting& lighting,
                           bool shadowed = false);
 

@@ -1,6 +1,8 @@
 // Procedural meshes (facet::worlds): the building blocks of the built-in worlds. Every mesh has
 // outward unit normals, texture coordinates in [0, 1] and counter-clockwise front faces (seen from
-// outside).
+// outside). The solids (box, cube, pyramid, uv_sphere, prism, cone) close bit for bit: copies of a
+// vertex at a seam or a pole have the same position, so shadow maps can draw only their faces
+// toward the light.
 #pragma once
 
 #include <glm/vec3.hpp>

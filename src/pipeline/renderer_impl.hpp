@@ -21,6 +21,7 @@
 #include "pipeline/frame.hpp"
 #include "pipeline/kernels.hpp"
 #include "pipeline/output/output.hpp"
+#include "pipeline/shadow/closed_surface.hpp"
 #include "shading/planar_reflection.hpp"
 #include "shading/shadow_map.hpp"
 
@@ -135,8 +136,13 @@ struct Renderer::Impl {
     std::shared_ptr<const Mesh> mesh;
     std::optional<pipeline::MeshBox> box;
     std::uint64_t last_frame = 0;
+    std::optional<pipeline::Closure> closure;  // once a shadow pass asks (closed_surface.hpp)
   };
   std::unordered_map<const Mesh*, CheckedMesh> checked_meshes;
+  // The faces a draw casts shadows with (shadow_passes.cpp): both, but a closed opaque mesh's
+  // (pipeline::closed_surface, remembered with its check) only those whose outer side faces the
+  // light. Meshes drawn by reference are not remembered, so they cast with both.
+  CullMode shadow_cull(const pipeline::DrawRecord& draw);
   std::uint64_t frame_number = 0;
 
   explicit Impl(const RenderSettings& s)

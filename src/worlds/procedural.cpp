@@ -179,7 +179,9 @@ void add_smooth_side(Mesh& mesh, float radius, float top_radius, float height, i
       // An apex gets one copy per segment, in the segment's middle, so that each triangle meeting
       // there is shaded with its own direction; the last copy is unused.
       const float step = level == 1 && apex ? std::min(k + 0.5f, float(segments)) : float(k);
-      const float u = step / segments, angle = kTau * u;
+      const float u = step / segments;
+      // The seam's second copy at angle 0, the first's bits: the surface closes (uv_sphere).
+      const float angle = k == segments && !(level == 1 && apex) ? 0.0f : kTau * u;
       // Perpendicular to both the circle and the slant line (-radius, height) in the
       // (radial, y) plane.
       const vec3 normal = glm::normalize(around(angle, height, radius - top_radius));
@@ -292,8 +294,13 @@ Mesh uv_sphere(float radius, int segments, int rings) {
     for (int k = 0; k <= segments; ++k) {
       // As at a cone's apex: one pole copy per segment, in its middle (the last one is unused).
       const float step = pole ? std::min(k + 0.5f, float(segments)) : float(k);
-      const float u = step / segments, angle = kTau * u;
-      const vec3 normal = around(angle, std::sin(polar), std::cos(polar));
+      const float u = step / segments;
+      // The seam's second copy at angle 0 and the poles on the axis exactly (sin(kTau) and
+      // sin(kPi) are not 0 in floats): the surface closes bit for bit, which the shadow maps'
+      // passes rely on (pipeline/shadow/closed_surface.hpp).
+      const float angle = k == segments && !pole ? 0.0f : kTau * u;
+      const vec3 normal = pole ? vec3(0.0f, ring == 0 ? 1.0f : -1.0f, 0.0f)
+                               : around(angle, std::sin(polar), std::cos(polar));
       add_vertex(mesh, radius * normal, normal, {u, 1.0f - float(ring) / rings},
                  around_tangent(angle));
     }
@@ -322,7 +329,7 @@ Mesh prism(int sides, float radius, float height) {
   if (sides <= kMaxFlatPrismSides) {
     for (int k = 0; k < sides; ++k) {
       const float u0 = static_cast<float>(k) / sides, u1 = static_cast<float>(k + 1) / sides;
-      const float a0 = kTau * u0, a1 = kTau * u1;
+      const float a0 = kTau * u0, a1 = k + 1 == sides ? 0.0f : kTau * u1;  // the seam closes
       add_flat(mesh, "prism",
                {around(a0, radius, 0.0f), around(a1, radius, 0.0f), around(a1, radius, height),
                 around(a0, radius, height)},

@@ -16,6 +16,7 @@
 #include "pipeline/record/pipeline_table.hpp"
 #include "pipeline/renderer_impl.hpp"
 #include "pipeline/shadow/cascades.hpp"
+#include "pipeline/shadow/closed_surface.hpp"
 #include "pipeline/shadow/shadow_fit.hpp"
 #include "pipeline/shadow/shadow_reach.hpp"
 #include "shading/models.hpp"
@@ -174,7 +175,7 @@ void Renderer::Impl::run_shadow_passes() {
       if (!casts_shadow(draw)) continue;
       shadow_casters.push_back(draw);
       DrawRecord& caster = shadow_casters.back();
-      caster.material.cull = CullMode::none;  // open meshes cast from either side
+      caster.material.cull = shadow_cull(draw);
       if (caster.material.alpha_mode == AlphaMode::mask) {
         // The unlit model, whose alpha (of the base color map) cuts out as in color.
         caster.pipeline = pipeline::make_pipeline<shading::UnlitShading, AlphaMode::mask>();
@@ -263,6 +264,20 @@ void Renderer::Impl::run_shadow_passes() {
   }
   shadows_ready = true;
   shadow_ms = pipeline::ms_since(start);
+}
+
+CullMode Renderer::Impl::shadow_cull(const DrawRecord& draw) {
+  // Open meshes cast from either side. So does a cut-out: its holes show the inner side.
+  if (draw.material.alpha_mode != AlphaMode::opaque) return CullMode::none;
+  const auto entry = checked_meshes.find(draw.mesh);
+  if (entry == checked_meshes.end()) return CullMode::none;
+  std::optional<pipeline::Closure>& closure = entry->second.closure;
+  if (!closure) closure = pipeline::closed_surface(*draw.mesh);
+  if (*closure == pipeline::Closure::open) return CullMode::none;
+  // A mirroring transform turns the winding, and so which faces face out, around.
+  const bool mirrored = glm::determinant(glm::mat3(draw.uniforms.model)) < 0.0f;
+  const bool fronts_out = (*closure == pipeline::Closure::fronts_out) != mirrored;
+  return fronts_out ? CullMode::back : CullMode::front;
 }
 
 }  // namespace facet

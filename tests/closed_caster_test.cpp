@@ -29,12 +29,7 @@ Mesh reversed(Mesh mesh) {
   return mesh;
 }
 
-// `part` added to `mesh`, its positions moved by `offset`.
-void append(Mesh& mesh, const Mesh& part, glm::vec3 offset) {
-  const auto first = static_cast<std::uint32_t>(mesh.positions.size());
-  for (const glm::vec3& p : part.positions) mesh.positions.push_back(p + offset);
-  for (std::uint32_t i : part.indices) mesh.indices.push_back(first + i);
-}
+glm::mat4 at(glm::vec3 p) { return glm::translate(glm::mat4(1.0f), p); }
 
 TEST(ClosedSurface, TheProceduralSolidsCloseWithTheirFrontsOut) {
   const std::pair<const char*, Mesh> solids[] = {{"uv_sphere", uv_sphere(1.0f)},
@@ -53,9 +48,9 @@ TEST(ClosedSurface, TheProceduralSolidsCloseWithTheirFrontsOut) {
   }
   // Several solids in one mesh, some far from the origin (the islands' merged scenery).
   Mesh several;
-  append(several, uv_sphere(0.5f, 16, 10), {-105.46f, 11.55f, 12.61f});
-  append(several, cone(0.3f, 1.0f, 7), {-105.0f, 11.0f, 12.0f});
-  append(several, box({1.0f, 1.0f, 1.0f}), {3.0f, 0.0f, 0.0f});
+  append(several, transformed(uv_sphere(0.5f, 16, 10), at({-105.46f, 11.55f, 12.61f})));
+  append(several, transformed(cone(0.3f, 1.0f, 7), at({-105.0f, 11.0f, 12.0f})));
+  append(several, transformed(box({1.0f, 1.0f, 1.0f}), at({3.0f, 0.0f, 0.0f})));
   EXPECT_EQ(closed_surface(several), Closure::fronts_out);
 }
 
@@ -65,14 +60,13 @@ TEST(ClosedSurface, OpenFlatOrUnusualMeshesAreOpen) {
   holed.indices.resize(holed.indices.size() - 3);
   EXPECT_EQ(closed_surface(holed), Closure::open);
   // Two spheres on one spot: each edge runs twice each way.
-  Mesh doubled;
-  append(doubled, uv_sphere(1.0f, 8, 4), glm::vec3(0.0f));
-  append(doubled, uv_sphere(1.0f, 8, 4), glm::vec3(0.0f));
+  Mesh doubled = uv_sphere(1.0f, 8, 4);
+  append(doubled, uv_sphere(1.0f, 8, 4));
   EXPECT_EQ(closed_surface(doubled), Closure::open);
   // A sphere and its inside-out copy on one spot: every edge runs once each way, but nothing is
   // enclosed.
   Mesh both_sides = uv_sphere(1.0f, 8, 4);
-  append(both_sides, reversed(uv_sphere(1.0f, 8, 4)), glm::vec3(0.0f));
+  append(both_sides, reversed(uv_sphere(1.0f, 8, 4)));
   EXPECT_EQ(closed_surface(both_sides), Closure::open);
   Mesh not_finite = cube();
   not_finite.positions[0].x = std::numeric_limits<float>::quiet_NaN();
@@ -110,7 +104,6 @@ struct BoxesScene {
         renderer.draw(mesh, material, transform);
       }
     };
-    const auto at = [](glm::vec3 p) { return glm::translate(glm::mat4(1.0f), p); };
     const glm::mat4 mirror = glm::scale(glm::mat4(1.0f), {-1.0f, 1.0f, 1.0f});
     draw(ground, two_sided, glm::mat4(1.0f));
     draw(sphere, matte, at({-2.5f, 0.8f, 1.5f}));

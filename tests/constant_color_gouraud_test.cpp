@@ -51,21 +51,33 @@ TEST(ConstantColorGouraud, IsChosenOnlyWhenNothingVariesTheColor) {
   EXPECT_EQ(pipeline::pipeline_for(glowing, plain, lights).varyings, kFull);
 }
 
-TEST(ConstantColorGouraud, DrawsWhatTheFullGouraudModelDraws) {
-  constexpr int kWidth = 160, kHeight = 120;
-  const Mesh sphere = uv_sphere(1.0f, 40, 20);  // normals: lit per vertex
-  Mesh faceted = sphere;
-  faceted.normals.clear();  // lit per face (face_without_normals)
-  const Material material = gouraud_material();
+// Two spheres of gouraud_material() drawn with `pipe`: the left with normals (lit per vertex), the
+// right without (lit per face: face_without_normals). First, the pipeline the draw would get.
+struct LitSpheres {
+  Mesh sphere = uv_sphere(1.0f, 40, 20);
+  Mesh faceted = without_normals(sphere);
+  Material material = gouraud_material();
   Lighting lighting;
-  lighting.lights[0].color = {1.0f, 0.9f, 0.8f};  // not gray
-  const pipeline::DrawPipeline constant = pipeline::pipeline_for(material, sphere, lighting);
+
+  static Mesh without_normals(Mesh mesh) {
+    mesh.normals.clear();
+    return mesh;
+  }
+  pipeline::DrawPipeline chosen() const {
+    return pipeline::pipeline_for(material, sphere, lighting);
+  }
+  Framebuffer render(const pipeline::DrawPipeline& pipe) const {
+    return render_side_by_side(sphere, faceted, material, pipe, 160, 120, &lighting);
+  }
+};
+
+TEST(ConstantColorGouraud, DrawsWhatTheFullGouraudModelDraws) {
+  LitSpheres spheres;
+  spheres.lighting.lights[0].color = {1.0f, 0.9f, 0.8f};  // not gray
+  const pipeline::DrawPipeline constant = spheres.chosen();
   ASSERT_EQ(constant.varyings, shading::ConstantColorGouraudShading::kVaryings);
-  auto render = [&](const pipeline::DrawPipeline& pipe) {
-    return render_side_by_side(sphere, faceted, material, pipe, kWidth, kHeight, &lighting);
-  };
-  expect_same_but_rounding(render(pipeline::make_pipeline<shading::GouraudShading>()),
-                           render(constant));
+  expect_same_but_rounding(spheres.render(pipeline::make_pipeline<shading::GouraudShading>()),
+                           spheres.render(constant));
 }
 
 // What makes the light gray: every light's color and the material's specular color (the ambient
@@ -95,22 +107,15 @@ TEST(GrayLightGouraud, IsChosenOnlyUnderGrayLight) {
 }
 
 TEST(GrayLightGouraud, DrawsWhatTheConstantColorModelDraws) {
-  constexpr int kWidth = 160, kHeight = 120;
-  const Mesh sphere = uv_sphere(1.0f, 40, 20);
-  Mesh faceted = sphere;
-  faceted.normals.clear();  // lit per face (face_without_normals)
-  const Material material = gouraud_material();
-  Lighting lighting;
-  lighting.ambient = {0.1f, 0.2f, 0.35f};
-  lighting.lights = {Light::directional({-0.4f, -0.5f, -1.0f}, glm::vec3(0.9f), 1.5f),
-                     Light::point({2.0f, 1.0f, -2.0f}, glm::vec3(2.0f), 4.0f)};
-  const pipeline::DrawPipeline gray = pipeline::pipeline_for(material, sphere, lighting);
+  LitSpheres spheres;
+  spheres.lighting.ambient = {0.1f, 0.2f, 0.35f};
+  spheres.lighting.lights = {Light::directional({-0.4f, -0.5f, -1.0f}, glm::vec3(0.9f), 1.5f),
+                             Light::point({2.0f, 1.0f, -2.0f}, glm::vec3(2.0f), 4.0f)};
+  const pipeline::DrawPipeline gray = spheres.chosen();
   ASSERT_EQ(gray.varyings, shading::GrayLightGouraudShading::kVaryings);
-  auto render = [&](const pipeline::DrawPipeline& pipe) {
-    return render_side_by_side(sphere, faceted, material, pipe, kWidth, kHeight, &lighting);
-  };
-  expect_same_but_rounding(render(pipeline::make_pipeline<shading::ConstantColorGouraudShading>()),
-                           render(gray));
+  expect_same_but_rounding(
+      spheres.render(pipeline::make_pipeline<shading::ConstantColorGouraudShading>()),
+      spheres.render(gray));
 }
 
 }  // namespace

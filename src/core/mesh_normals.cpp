@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/parallel.hpp"
+#include "core/position_ids.hpp"
 #include "facet/mesh_tools.hpp"
 
 namespace facet {
@@ -146,16 +147,7 @@ std::vector<std::uint32_t> identical_vertices(const Mesh& mesh, bool with_normal
 
 Welding weld(const Mesh& mesh) {
   Welding w;
-  const std::size_t n = mesh.positions.size();
-  const std::vector<std::uint32_t> same_position =
-      first_with_equal_key(n, [&](std::uint32_t i, Bits& key) {
-        key.clear();
-        append_bits(key, mesh.positions[i]);
-      });
-  w.position_id.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {  // numbered in order of first appearance
-    w.position_id[i] = same_position[i] == i ? w.position_count++ : w.position_id[same_position[i]];
-  }
+  w.position_id = position_ids(mesh.positions, w.position_count);
   w.vertex_id = identical_vertices(mesh, false);  // the normals are being replaced
   return w;
 }
@@ -413,6 +405,22 @@ void compute_tangents(Mesh& mesh) {
     float w = glm::dot(glm::cross(normal, t), bitangent[i]) < 0.0f ? -1.0f : 1.0f;
     mesh.tangents[i] = glm::vec4(t / length, w);
   }
+}
+
+std::vector<std::uint32_t> position_ids(const std::vector<glm::vec3>& positions,
+                                        std::uint32_t& count) {
+  const std::size_t n = positions.size();
+  const std::vector<std::uint32_t> same_position =
+      first_with_equal_key(n, [&](std::uint32_t i, Bits& key) {
+        key.clear();
+        append_bits(key, positions[i]);
+      });
+  std::vector<std::uint32_t> ids(n);
+  count = 0;
+  for (std::size_t i = 0; i < n; ++i) {  // numbered in order of first appearance
+    ids[i] = same_position[i] == i ? count++ : ids[same_position[i]];
+  }
+  return ids;
 }
 
 }  // namespace facet

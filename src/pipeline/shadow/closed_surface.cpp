@@ -1,6 +1,7 @@
 // Stage: the shadow maps' passes, which casters are closed surfaces (see closed_surface.hpp).
 // Run once per mesh, the first time a shadow pass draws it, so it must cost little next to
-// drawing the mesh: flat hash tables (open addressing) rather than node-based sets.
+// drawing the mesh: positions welded as smoothing welds them (core/position_ids.hpp), edges in a
+// flat hash table (open addressing) rather than a node-based set.
 #include "pipeline/shadow/closed_surface.hpp"
 
 #include <bit>
@@ -10,10 +11,10 @@
 #include <limits>
 #include <vector>
 
+#include "core/position_ids.hpp"
+
 namespace facet::pipeline {
 namespace {
-
-constexpr std::uint32_t kEmpty = std::numeric_limits<std::uint32_t>::max();
 
 std::uint64_t mix(std::uint64_t h) {
   h ^= h >> 33;
@@ -24,43 +25,17 @@ std::uint64_t mix(std::uint64_t h) {
 // A power of two at least twice n: probes stay short.
 std::size_t table_size(std::size_t n) { return std::bit_ceil(2 * n + 1); }
 
-// Each vertex's welded id: the first vertex at its position (+0 and -0 alike). Empty when a
-// position is not finite.
-std::vector<std::uint32_t> welded_ids(const std::vector<glm::vec3>& positions) {
-  struct Slot {
-    std::uint32_t x, y, z, id = kEmpty;
-  };
-  const std::size_t mask = table_size(positions.size()) - 1;
-  std::vector<Slot> table(mask + 1);
-  std::vector<std::uint32_t> ids(positions.size());
-  std::uint32_t next = 0;
-  for (std::size_t v = 0; v < positions.size(); ++v) {
-    const glm::vec3 p = positions[v] + glm::vec3(0.0f);  // -0 + 0 is +0
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return {};
-    const Slot key{std::bit_cast<std::uint32_t>(p.x), std::bit_cast<std::uint32_t>(p.y),
-                   std::bit_cast<std::uint32_t>(p.z)};
-    std::size_t at = mix(key.x ^ mix(key.y ^ mix(key.z))) & mask;
-    for (;; at = (at + 1) & mask) {
-      Slot& slot = table[at];
-      if (slot.id == kEmpty) {
-        slot = {key.x, key.y, key.z, next++};
-        break;
-      }
-      if (slot.x == key.x && slot.y == key.y && slot.z == key.z) break;
-    }
-    ids[v] = table[at].id;
-  }
-  return ids;
-}
-
 }  // namespace
 
 Closure closed_surface(const Mesh& mesh) {
   if (mesh.topology != Topology::triangles) return Closure::open;
   const std::size_t triangles = mesh.primitive_count();
   if (triangles == 0 || triangles > kMaxClosedSurfaceTriangles) return Closure::open;
-  const std::vector<std::uint32_t> id = welded_ids(mesh.positions);
-  if (id.empty()) return Closure::open;
+  for (const glm::vec3& p : mesh.positions) {
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return Closure::open;
+  }
+  std::uint32_t positions = 0;
+  const std::vector<std::uint32_t> id = position_ids(mesh.positions, positions);
   // Each edge once, by its two welded ends, with the directions triangles run along it (bit 0:
   // from the lower id, bit 1: from the higher). A closed, consistently wound surface runs along
   // every edge once each way.

@@ -21,20 +21,21 @@ HWY_BEFORE_NAMESPACE();
 namespace facet::shading::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-// The light at a vector of world positions p of unit normals n: the ambient light (unless
-// !with_ambient), then for each light that the side of the normal faces (n . l > 0), its radiance
-// after its shadow (looked up in the lanes of `active` only) times n . l as diffuse light, and
-// times the material's specular color and the Blinn-Phong highlight (max(0, n . h)^shininess, h the
-// half vector) as specular light.
+// The light at a vector of world positions p of unit normals n: the ambient light, then for each
+// light that the side of the normal faces (n . l > 0), its radiance after its shadow (looked up in
+// the lanes of `active` only) times n . l as diffuse light, and times the material's specular
+// color and the Blinn-Phong highlight (max(0, n . h)^shininess, h the half vector) as specular
+// light. Under gray light (GouraudLayout) the red channel alone, without the ambient light.
 HWY_INLINE void LightVertices(const DrawUniforms& u, const Vec3V& p, const Vec3V& n,
                               BatchMask active, BatchV diffuse[3], BatchV specular[3],
-                              bool with_ambient = true) {
+                              bool gray = false) {
+  const int channels = gray ? 1 : 3;
   const BatchTag d;
   const Material& material = *u.material;
   const Vec3V eye = Set3(u.frame->eye);
   const Vec3V view = SafeNormalize({hn::Sub(eye.x, p.x), hn::Sub(eye.y, p.y), hn::Sub(eye.z, p.z)});
   for (int c = 0; c < 3; ++c) {
-    diffuse[c] = with_ambient ? hn::Set(d, u.frame->ambient[c]) : hn::Zero(d);
+    diffuse[c] = gray ? hn::Zero(d) : hn::Set(d, u.frame->ambient[c]);
     specular[c] = hn::Zero(d);
   }
   for (int i = 0; i < u.frame->light_count; ++i) {
@@ -51,7 +52,7 @@ HWY_INLINE void LightVertices(const DrawUniforms& u, const Vec3V& p, const Vec3V
             ? hn::Set(d, 1.0f)
             : PortablePow(StdMax(Dot(n, half), hn::Zero(d)), material.shininess);
     const BatchV radiance[3] = {received.x, received.y, received.z};
-    for (int c = 0; c < 3; ++c) {
+    for (int c = 0; c < channels; ++c) {
       diffuse[c] =
           hn::IfThenElse(lit, hn::Add(diffuse[c], hn::Mul(radiance[c], n_dot_l)), diffuse[c]);
       // (radiance x specular color) x highlight.
@@ -88,7 +89,7 @@ HWY_INLINE void LightAndStore(const DrawUniforms& u, const Vec3V& p, const Vec3V
   BatchV diffuse[3], specular[3];
   const BatchMask active = shadows ? hn::FirstN(d, static_cast<std::size_t>(count - j))
                                    : hn::FirstN(d, 0);  // no lane looks a shadow up
-  LightVertices(u, p, n, active, diffuse, specular, !gray);
+  LightVertices(u, p, n, active, diffuse, specular, gray);
   if (gray) {
     hn::Store(diffuse[0], d, out[first] + j);
     hn::Store(specular[0], d, out[first + 1] + j);

@@ -56,7 +56,24 @@ TEST(BenchCli, PrintsOneRowPerSceneWithEveryStageAndWritesJson) {
         "\"name\": \"overdraw\"", "\"median_ms\"", "\"triangles_per_s\"", "\"pixels_per_s\"",
         "\"geometry_ms\"", "\"binning_ms\"", "\"raster_ms\"", "\"resolve_ms\"",
         // overdraw is eight quads, all in view and facing the camera
-        "\"triangles_in\": 16", "\"triangles_drawn\": 16", "\"pixels_shaded\""}) {
+        "\"triangles_in\": 16", "\"triangles_drawn\": 16", "\"pixels_shaded\"",
+        "\"tile_size\": 32}"}) {
+    EXPECT_NE(text.find(key), std::string::npos) << key << " missing from\n" << text;
+  }
+}
+
+// Without --tile-size the size is chosen per frame: the JSON says "auto", and each scene the size
+// its frames used (overdraw's tiles hold floats: 64).
+TEST(BenchCli, JsonNamesTheAutomaticTileSizeAndTheOneUsed) {
+  auto dir = fresh_test_dir("facet_bench_cli_", "auto_tiles");
+  const std::string json = (dir / "out.json").string();
+  std::string command = FACET_CLI;
+  command += " bench --scene overdraw --size 32x18 --frames 1 --warmup 0 --json " + json;
+  CommandResult r = run_command(command);
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  std::ifstream file(json);
+  std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  for (const char* key : {"\"tile_size\": \"auto\"", "\"tile_size\": 64}"}) {
     EXPECT_NE(text.find(key), std::string::npos) << key << " missing from\n" << text;
   }
 }

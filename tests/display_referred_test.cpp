@@ -192,6 +192,61 @@ TEST(DisplayReferred, FramesThatNeedLinearColorsKeepThem) {
   EXPECT_FALSE(referred);
 }
 
+// The automatic tile size (RenderSettings::kAutoTileSize): 128 pixels where the tiles hold
+// codes (one sample, display values alone), 64 wherever they hold floats, and what was asked
+// for when a size is given. Lines, which geometry counts only after the size is chosen, are
+// foreseen from their meshes. The image is the same as with 64-pixel tiles.
+TEST(DisplayReferred, AutomaticTilesAre128PixelsWhereTheyHoldCodes) {
+  const auto tile_size = [](const Record& record, RenderSettings settings,
+                            ColorFormat format = ColorFormat::rgba8_srgb) {
+    Renderer renderer(settings);
+    Framebuffer frame(kWidth, kHeight, format);
+    record(renderer);
+    renderer.finish(frame);
+    return renderer.stats().tile_size;
+  };
+  const RenderSettings automatic = with_clear({0.2f, 0.2f, 0.2f, 1.0f});
+  const Record normals = debug_view_scene(ShadingModel::normals);
+  EXPECT_EQ(tile_size(normals, automatic), 128);
+
+  RenderSettings multisampled = automatic;
+  multisampled.msaa = 4;
+  EXPECT_EQ(tile_size(normals, multisampled), 64);
+  EXPECT_EQ(tile_size(normals, automatic, ColorFormat::rgba32f), 64);
+  RenderSettings given = automatic;
+  given.tile_size = 32;
+  EXPECT_EQ(tile_size(normals, given), 32);
+
+  const Record with_lines = [&](Renderer& renderer) {
+    normals(renderer);
+    static const Mesh line = [] {
+      Mesh mesh;
+      mesh.topology = Topology::lines;
+      mesh.positions = {{-1.0f, 0.0f, 0.0f}, {1.0f, 0.5f, 0.0f}};
+      return mesh;
+    }();
+    Material material;
+    material.shading = ShadingModel::normals;
+    renderer.draw(line, material);
+  };
+  EXPECT_EQ(tile_size(with_lines, automatic), 64);
+  Lighting fogged;
+  fogged.fog.mode = FogMode::linear;
+  EXPECT_EQ(tile_size(debug_view_scene(ShadingModel::normals, fogged), automatic), 64);
+  const Record lit = [](Renderer& renderer) {
+    static const Mesh ball = uv_sphere(0.4f);
+    renderer.begin_frame(Camera::look_at({0, 0, 3}, {0, 0, 0}, {0, 1, 0}, 45.0f, 1.0f, 0.1f, 10.0f),
+                         {});
+    renderer.draw(ball, Material{});
+  };
+  EXPECT_EQ(tile_size(lit, automatic), 64);
+
+  bool referred = false;
+  RenderSettings sixty_four = automatic;
+  sixty_four.tile_size = 64;
+  EXPECT_EQ(render_8bit(normals, automatic, referred), render_8bit(normals, sixty_four, referred));
+}
+
 // A float target holds the normals view's values themselves: a face turned to the camera (normal
 // +Z) is (0.5, 0.5, 1) exactly, not the sRGB decode of the 8-bit code 128 (0.2158), and the 8-bit
 // target holds that value's code.

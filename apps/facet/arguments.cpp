@@ -148,6 +148,15 @@ int parse_shadow_map_size(const std::string& text, ImageSize image) {
   return size;
 }
 
+int parse_tile_size(const std::string& text) {
+  if (text == "auto") return RenderSettings::kAutoTileSize;
+  int size = 0;
+  if (!parse_number(text, size) || (size != 16 && size != 32 && size != 64 && size != 128)) {
+    throw Error("--tile-size: expected auto, 16, 32, 64 or 128, got '" + text + "'");
+  }
+  return size;
+}
+
 int parse_shadow_cascades(const std::string& text) {
   if (text == "auto") return RenderSettings::kAutoShadowCascades;
   int cascades = 0;

@@ -47,5 +47,13 @@ int parse_shadow_map_size(const std::string& text, ImageSize image);
 // --shadow-cascades: 1 .. RenderSettings::kMaxShadowCascades, or "auto":
 // RenderSettings::kAutoShadowCascades, the count chosen each frame from the view.
 int parse_shadow_cascades(const std::string& text);
+// --tile-size: 16, 32, 64 or 128 pixels, or "auto": RenderSettings::kAutoTileSize, the size
+// chosen each frame.
+int parse_tile_size(const std::string& text);
+// --tile-size's help.
+inline constexpr const char* kTileSizeHelp =
+    "Tile edge in pixels: 16, 32, 64 or 128, or auto: 128 where the tiles hold 8-bit codes (one "
+    "sample, every model writing display values: the glmark2 scenes, the debug models), else 64. "
+    "The image is the same at every size";
 
 }  // namespace facet::cli

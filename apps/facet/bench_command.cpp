@@ -32,6 +32,7 @@ struct SceneResult {
   double geometry_ms = 0, binning_ms = 0, raster_ms = 0, resolve_ms = 0;
   // The last frame's work: triangles submitted and drawn, pixels shaded.
   std::uint64_t triangles = 0, drawn = 0, pixels = 0;
+  int tile_size = 0;  // the last frame's (FrameStats::tile_size: --tile-size auto chooses)
 };
 
 double median(std::vector<double> v) {
@@ -44,7 +45,7 @@ RenderSettings bench_settings(const BenchOptions& o, const bench::BenchScene& sc
                               const ImageSize& size) {
   RenderSettings settings;
   settings.threads = o.threads;
-  settings.tile_size = o.tile_size;
+  settings.tile_size = parse_tile_size(o.tile_size);
   settings.msaa = o.msaa;
   settings.tone_mapping = parse_tone_mapping(o.tone_mapping);
   apply_pass_options(o.passes, false, size, settings);
@@ -108,6 +109,7 @@ SceneResult run_scene(const std::string& name, bench::BenchScene& scene, const B
   r.triangles = renderer.stats().triangles_in;
   r.drawn = renderer.stats().drawn;
   r.pixels = renderer.stats().pixels_shaded;
+  r.tile_size = renderer.stats().tile_size;
   r.triangles_per_s = r.triangles / (r.median_ms / 1000.0);
   r.pixels_per_s = r.pixels / (r.median_ms / 1000.0);
   return r;
@@ -134,8 +136,13 @@ void write_json(const std::string& path, const BenchOptions& o, const ImageSize&
                 const std::vector<SceneResult>& results) {
   std::ofstream out(path);
   if (!out) throw Error(o.json + ": cannot write");
+  // A number, or "auto" as a string.
+  const int tile_size = parse_tile_size(o.tile_size);
+  const std::string tile_size_json = tile_size == RenderSettings::kAutoTileSize
+                                         ? "\"" + o.tile_size + "\""
+                                         : std::to_string(tile_size);
   out << "{\n  \"size\": \"" << size.width << "x" << size.height
-      << "\",\n  \"threads\": " << o.threads << ",\n  \"tile_size\": " << o.tile_size
+      << "\",\n  \"threads\": " << o.threads << ",\n  \"tile_size\": " << tile_size_json
       << ",\n  \"msaa\": " << o.msaa << ",\n  \"tone_mapping\": \"" << o.tone_mapping << "\""
       << ",\n  \"backend\": \"" << o.backend << "\""
       << ",\n  \"frames\": " << o.frames << ",\n  \"scenes\": [\n";
@@ -147,8 +154,9 @@ void write_json(const std::string& path, const BenchOptions& o, const ImageSize&
         << ", \"pixels_per_s\": " << r.pixels_per_s << ", \"geometry_ms\": " << r.geometry_ms
         << ", \"binning_ms\": " << r.binning_ms << ", \"raster_ms\": " << r.raster_ms
         << ", \"resolve_ms\": " << r.resolve_ms << ", \"triangles_in\": " << r.triangles
-        << ", \"triangles_drawn\": " << r.drawn << ", \"pixels_shaded\": " << r.pixels << "}"
-        << (i + 1 < results.size() ? ",\n" : "\n");
+        << ", \"triangles_drawn\": " << r.drawn << ", \"pixels_shaded\": " << r.pixels;
+    if (r.tile_size > 0) out << ", \"tile_size\": " << r.tile_size;  // none on the OpenGL twin
+    out << "}" << (i + 1 < results.size() ? ",\n" : "\n");
   }
   out << "  ]\n}\n";
 }
@@ -191,8 +199,7 @@ CLI::App* add_bench_command(CLI::App& app, BenchOptions& o) {
   cmd->add_option("--warmup", o.warmup, "Frames rendered before measuring")->capture_default_str();
   cmd->add_option("--threads", o.threads, "Worker threads, 0 = all cores, at most 256")
       ->capture_default_str();
-  cmd->add_option("--tile-size", o.tile_size, "Tile edge in pixels: 16, 32, 64 or 128")
-      ->capture_default_str();
+  cmd->add_option("--tile-size", o.tile_size, kTileSizeHelp)->capture_default_str();
   cmd->add_option("--msaa", o.msaa, msaa_help(1));
   cmd->add_option("--tone-mapping", o.tone_mapping, tone_mapping_help(ToneMapping::none));
   add_pass_options(*cmd, o.passes);
@@ -209,9 +216,7 @@ int run_bench(const BenchOptions& o) {
   parse_tone_mapping(o.tone_mapping);
   RenderSettings checked;
   apply_pass_options(o.passes, false, size, checked);
-  if (o.tile_size != 16 && o.tile_size != 32 && o.tile_size != 64 && o.tile_size != 128) {
-    throw Error("--tile-size: must be 16, 32, 64 or 128, got " + std::to_string(o.tile_size));
-  }
+  parse_tile_size(o.tile_size);
   const Backend backend = parse_backend("--backend", o.backend);
   // Every name is checked before the first frame, so a typo does not end a long run half-way.
   const std::vector<std::string> known = bench::bench_scene_names();

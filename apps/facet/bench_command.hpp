@@ -18,7 +18,7 @@ struct BenchOptions {
   int frames = 50;
   int warmup = 5;
   int threads = 0;
-  int tile_size = 64;
+  std::string tile_size = "auto";
   int msaa = 1;                       // glmark2 runs without anti-aliasing
   std::string tone_mapping = "none";  // nor tone mapping
   PassOptions passes;                 // nor shadows, nor reflections

@@ -93,8 +93,7 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& o) {
   cmd->add_option("--tone-mapping", o.tone_mapping, tone_mapping_help(ToneMapping::pbr_neutral));
   cmd->add_option("--threads", o.threads, "Worker threads, 0 = all cores, at most 256")
       ->capture_default_str();
-  cmd->add_option("--tile-size", o.tile_size, "Tile edge in pixels: 16, 32, 64 or 128")
-      ->capture_default_str();
+  cmd->add_option("--tile-size", o.tile_size, kTileSizeHelp)->capture_default_str();
   cmd->add_option("--backend", o.backend,
                   "Renderer: facet (the software rasterizer) or gl (its OpenGL twin, headless "
                   "through EGL: docs/gl_twin.md)")
@@ -121,6 +120,7 @@ int run_render(const RenderOptions& o) {
   ImageSize size = parse_size("--size", o.size);
   check_threads(o.threads);
   check_msaa(o.msaa);
+  const int tile_size = parse_tile_size(o.tile_size);
   RenderSettings pass_settings;
   apply_pass_options(o.passes, true, size, pass_settings);
   if (!std::isfinite(o.exposure) || std::abs(o.exposure) > 20.0f) {
@@ -173,7 +173,7 @@ int run_render(const RenderOptions& o) {
 
   RenderSettings settings;
   settings.threads = o.threads;
-  settings.tile_size = o.tile_size;
+  settings.tile_size = tile_size;
   settings.msaa = o.msaa;
   settings.shadows = pass_settings.shadows;
   settings.shadow_map_size = pass_settings.shadow_map_size;

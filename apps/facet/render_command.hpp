@@ -35,7 +35,7 @@ struct RenderOptions {
   // Highlights kept rather than clipped in every thumbnail (RenderSettings::tone_mapping).
   std::string tone_mapping = "pbr-neutral";
   int threads = 0;
-  int tile_size = 64;
+  std::string tile_size = "auto";
   int msaa = 4;        // anti-aliased images by default (RenderSettings::msaa)
   PassOptions passes;  // shadows and reflections on by default
   bool orthographic = false;

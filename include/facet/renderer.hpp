@@ -32,8 +32,12 @@ struct RenderSettings {
   // Each worker thread has its own tile buffers and an OS thread: more than this is a mistake
   // (a typo), not a machine.
   static constexpr int kMaxThreads = 256;
-  int threads = 0;                                // worker threads; 0 = all cores
-  int tile_size = 64;                             // tile edge in pixels: 16, 32, 64 or 128
+  int threads = 0;  // worker threads; 0 = all cores
+  // Tile edge in pixels: 16, 32, 64 or 128, or kAutoTileSize (the default) to choose it each
+  // frame: 128 where the tiles hold 8-bit codes (a frame of display values at one sample:
+  // docs/pipeline.md, "Binning"), else 64. Images are the same bits at every size.
+  static constexpr int kAutoTileSize = 0;
+  int tile_size = kAutoTileSize;
   glm::vec4 clear_color{0.0f, 0.0f, 0.0f, 1.0f};  // linear RGBA
   float exposure = 0.0f;  // in stops: colors are scaled by 2^exposure before output
   ToneMapping tone_mapping = ToneMapping::none;
@@ -114,6 +118,7 @@ struct FrameStats {
   // models write): resolve rounded them to bytes instead of sRGB-encoding them, with the same
   // result.
   bool display_referred = false;
+  int tile_size = 0;  // the color pass's tile edge in pixels (RenderSettings::tile_size)
 };
 
 class Renderer {

@@ -329,19 +329,21 @@ the other outputs take each pixel centre's surface. background: linear RGB(A) wh
 drawn. exposure: in stops, colors are scaled by 2^exposure. tone_mapping: how colors brighter
 than white are shown, 'none' (clipped; a float color keeps them), 'pbr-neutral' (Khronos PBR
 Neutral) or 'aces' (ACES filmic); the background color is not mapped. tile_size: 16, 32, 64 or
-128. shadows: directional and spot lights cast shadows through shadow maps (each light whose
-casts_shadows is set, as every light made here is), shadow_map_size texels a side (16 to
-8192), shadow_cascades maps per directional light, 1 to 4, or 0 (the default) to choose them
-from the view (docs/pipeline.md, "Shadows"). reflections: materials with reflects_scene on a
-flat mesh mirror the scene, through a pass at reflection_scale (in (0, 1]) of the image's width
-and height (docs/pipeline.md, "Reflections"); off, they reflect the environment alone. The GIL is
-released while a frame renders, so renderers in several Python threads render at once; one
-renderer renders one frame at a time.)doc")
+128, or 0 (the default) to choose it each frame: 128 where the tiles hold 8-bit codes, else 64
+(the images are the same). shadows: directional and spot lights cast shadows through shadow
+maps (each light whose casts_shadows is set, as every light made here is), shadow_map_size
+texels a side (16 to 8192), shadow_cascades maps per directional light, 1 to 4, or 0 (the
+default) to choose them from the view (docs/pipeline.md, "Shadows"). reflections: materials
+with reflects_scene on a flat mesh mirror the scene, through a pass at reflection_scale (in
+(0, 1]) of the image's width and height (docs/pipeline.md, "Reflections"); off, they reflect
+the environment alone. The GIL is released while a frame renders, so renderers in several
+Python threads render at once; one renderer renders one frame at a time.)doc")
       .def(py::init<int, int, int, int, py::handle, py::handle, const std::string&, int, bool, int,
                     int, bool, py::handle>(),
            py::arg("width"), py::arg("height"), py::arg("threads") = 0, py::arg("msaa") = 1,
            py::kw_only(), py::arg("background") = py::make_tuple(0.0, 0.0, 0.0, 1.0),
-           py::arg("exposure") = 0.0, py::arg("tone_mapping") = "none", py::arg("tile_size") = 64,
+           py::arg("exposure") = 0.0, py::arg("tone_mapping") = "none",
+           py::arg("tile_size") = RenderSettings{}.tile_size,
            py::arg("shadows") = RenderSettings{}.shadows,
            py::arg("shadow_map_size") = RenderSettings{}.shadow_map_size,
            py::arg("shadow_cascades") = RenderSettings{}.shadow_cascades,

@@ -30,7 +30,9 @@ using pipeline::TileBuffers;
 // unblended. Such a frame is not tone mapped. Decided after geometry, which counted the lines
 // and points.
 bool Renderer::Impl::draws_only_display_values() const {
-  if (background.environment != nullptr || settings.debug_view != DebugView::none) return false;
+  if (lighting.environment.show_as_background || settings.debug_view != DebugView::none) {
+    return false;
+  }
   if (lighting.fog.mode != FogMode::none) return false;
   if (frame.stats.lines_drawn > 0 || frame.stats.points_drawn > 0) return false;
   return std::all_of(frame.draws.begin(), frame.draws.end(),
@@ -45,6 +47,25 @@ bool Renderer::Impl::draws_only_display_values() const {
 bool Renderer::Impl::display_referred_frame(const Framebuffer& target) const {
   return target.format() == ColorFormat::rgba8_srgb && settings.exposure == 0.0f &&
          draws_only_display_values();
+}
+
+// The tile edge of this frame (RenderSettings::tile_size). Automatic: 128 for a frame whose
+// tiles will hold 8-bit codes (a display-referred frame at one sample: TileContext::codes), a
+// quarter of a float tile's bytes, so that four times the pixels fit the caches alike while a
+// quarter as many tiles share the work paid per tile (each draw's last partial batch of waiting
+// pixels, the triangles binned into two tiles, the clears and resolves); 64 for the others,
+// whose 128-pixel tiles (256 KB of float colors) lose in the caches what they save. Decided
+// before geometry, which bins by it: the lines and points geometry counts are foreseen from the
+// draws' meshes. Every size gives the same image.
+int Renderer::Impl::frame_tile_size(const Framebuffer& target) const {
+  if (settings.tile_size != RenderSettings::kAutoTileSize) return settings.tile_size;
+  const bool lines_or_points =
+      std::any_of(frame.draws.begin(), frame.draws.end(), [](const pipeline::DrawRecord& d) {
+        return d.mesh->topology == Topology::lines || d.mesh->topology == Topology::points;
+      });
+  const bool codes = frame.samples == 1 && !linear_pass && !depth_only_pass && !lines_or_points &&
+                     display_referred_frame(target);
+  return codes ? 128 : 64;
 }
 
 // Transparency: opaque (and cut-out) draws first in submission order, then blended draws back
@@ -92,9 +113,9 @@ void Renderer::Impl::set_depth_view_range() {
 void Renderer::Impl::prepare_tiles(const Framebuffer& target) {
   frame.width = target.width();
   frame.height = target.height();
-  frame.tile_size = settings.tile_size;
   // The debug views show what the pipeline did per pixel: one sample.
   frame.samples = settings.debug_view == DebugView::none ? settings.msaa : 1;
+  frame.tile_size = frame_tile_size(target);
   frame.tiles_x = (frame.width + frame.tile_size - 1) / frame.tile_size;
   frame.tiles_y = (frame.height + frame.tile_size - 1) / frame.tile_size;
   std::size_t tiles = static_cast<std::size_t>(frame.tiles_x) * frame.tiles_y;
@@ -185,6 +206,7 @@ void Renderer::Impl::run(Framebuffer& target) {
   frame.stats.triangles_in += primitives_outside;  // draws dropped whole when recorded
   frame.stats.culled += primitives_outside;
   frame.stats.ms_geometry = ms_since(start);
+  frame.stats.tile_size = frame.tile_size;
   const bool referred = !linear_pass && display_referred_frame(target);
   background.display_referred = frame.stats.display_referred = referred;
   resolve.scale = std::exp2(settings.exposure);

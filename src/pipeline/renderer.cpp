@@ -67,9 +67,11 @@ Renderer::Renderer(const RenderSettings& settings) {
                 std::to_string(RenderSettings::kMaxThreads) + ", got " +
                 std::to_string(settings.threads));
   }
-  int ts = settings.tile_size;
-  if (ts != 16 && ts != 32 && ts != 64 && ts != 128) {
-    throw Error("renderer: tile size must be 16, 32, 64 or 128, got " + std::to_string(ts));
+  const int ts = settings.tile_size;
+  if (ts != RenderSettings::kAutoTileSize && ts != 16 && ts != 32 && ts != 64 && ts != 128) {
+    throw Error("renderer: tile size must be 16, 32, 64 or 128, or " +
+                std::to_string(RenderSettings::kAutoTileSize) + " (auto), got " +
+                std::to_string(ts));
   }
   const int map = settings.shadow_map_size;
   if (map < RenderSettings::kMinShadowMapSize || map > Framebuffer::kMaxSize) {

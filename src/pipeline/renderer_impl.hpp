@@ -196,6 +196,7 @@ struct Renderer::Impl {
   void set_depth_view_range();
   bool draws_only_display_values() const;
   bool display_referred_frame(const Framebuffer& target) const;
+  int frame_tile_size(const Framebuffer& target) const;
 };
 
 }  // namespace facet

@@ -229,13 +229,14 @@ void Renderer::Impl::run_shadow_passes() {
       const bool reached = sun_reaches && (centres_covered || (c > 0 && c + 1 < count));
       std::optional<Framebuffer>& target = shadow.targets[c];
       ClearTiles& clear_tiles = shadow.clear_tiles[c];
-      const int tiles_across = (size + settings.tile_size - 1) / settings.tile_size;
       if (!target || target->width() != size) {
         target = Framebuffer::depth_only(size, size);
         clear_tiles.clear.clear();
       }
-      if (clear_tiles.tile_size != settings.tile_size) {
-        clear_tiles.tile_size = settings.tile_size;
+      const int tile_size = frame_tile_size(*target);
+      const int tiles_across = (size + tile_size - 1) / tile_size;
+      if (clear_tiles.tile_size != tile_size) {
+        clear_tiles.tile_size = tile_size;
         clear_tiles.clear.clear();
       }
       clear_tiles.clear.resize(static_cast<std::size_t>(tiles_across) * tiles_across);

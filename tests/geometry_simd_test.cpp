@@ -130,7 +130,7 @@ TEST(GeometrySimd, ProjectionOfClippedVerticesMatchesTheDefinitionOnEveryTarget)
   int compared = 0;
   for (std::int64_t target : simd_targets()) {
     ForcedTarget forced(target);
-    for (const auto [width, height] : {std::pair{641, 479}, std::pair{8192, 8192}}) {
+    for (const auto& [width, height] : {std::pair{641, 479}, std::pair{8192, 8192}}) {
       const pipeline::ClipBounds guard = pipeline::guard_band_bounds(width, height);
       for (int count = 1; count <= 40; ++count) {
         std::vector<glm::vec4> clip(count);

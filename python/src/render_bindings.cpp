@@ -298,6 +298,7 @@ py::dict stats_dict(const FrameStats& s) {
   d["ms_binning"] = s.ms_binning;
   d["ms_raster"] = s.ms_raster;
   d["ms_total"] = s.ms_total;
+  d["tile_size"] = s.tile_size;
   return d;
 }
 

@@ -318,6 +318,11 @@ def test_stats_of_the_last_frame():
     renderer.render(scene, front_camera())
     assert renderer.stats["triangles_in"] == 2 and renderer.stats["drawn"] == 2
     assert (renderer.width, renderer.height, renderer.threads, renderer.msaa) == (32, 32, 2, 1)
+    # The tile size chosen for a lit frame (its tiles hold floats), or the one asked for.
+    assert renderer.stats["tile_size"] == 64
+    sixteen = facet.Renderer(32, 32, tile_size=16)
+    sixteen.render(scene, front_camera())
+    assert sixteen.stats["tile_size"] == 16
 
 
 def test_msaa_blends_edge_pixels_and_keeps_ids_whole():

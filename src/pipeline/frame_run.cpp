@@ -52,9 +52,9 @@ bool Renderer::Impl::display_referred_frame(const Framebuffer& target) const {
 // The tile edge of this frame (RenderSettings::tile_size). Automatic: 128 for a frame whose
 // tiles will hold 8-bit codes (a display-referred frame at one sample: TileContext::codes), a
 // quarter of a float tile's bytes, so that four times the pixels fit the caches alike while a
-// quarter as many tiles share the work paid per tile (each draw's last partial batch of waiting
-// pixels, the triangles binned into two tiles, the clears and resolves); 64 for the others,
-// whose 128-pixel tiles (256 KB of float colors) lose in the caches what they save. Decided
+// quarter as many tiles share the work paid per tile (a bin's walk, the clears and resolves) and
+// fewer triangles straddle two tiles; 64 for the others, whose 128-pixel tiles (256 KB of float
+// colors) lose in the caches what they save. Decided
 // before geometry, which bins by it: the lines and points geometry counts are foreseen from the
 // draws' meshes. Every size gives the same image.
 int Renderer::Impl::frame_tile_size(const Framebuffer& target) const {

@@ -26,17 +26,18 @@ using pipeline::TileBuffers;
 
 // Whether every color this frame writes into its tiles is a display value (an 8-bit code, as
 // the debug views and the glmark2 scenes' models write): without fog, environment, debug view,
-// lines or points (their colors are linear), every draw's model writes display values
-// unblended. Such a frame is not tone mapped. Decided after geometry, which counted the lines
-// and points.
+// line or point meshes (their colors are linear), every draw's model writes display values
+// unblended. Such a frame is not tone mapped. Known from the draws alone, before geometry (which
+// bins by the tile size that depends on it: frame_tile_size).
 bool Renderer::Impl::draws_only_display_values() const {
   if (lighting.environment.show_as_background || settings.debug_view != DebugView::none) {
     return false;
   }
   if (lighting.fog.mode != FogMode::none) return false;
-  if (frame.stats.lines_drawn > 0 || frame.stats.points_drawn > 0) return false;
-  return std::all_of(frame.draws.begin(), frame.draws.end(),
-                     [](const pipeline::DrawRecord& d) { return d.pipeline.display_referred; });
+  return std::all_of(frame.draws.begin(), frame.draws.end(), [](const pipeline::DrawRecord& d) {
+    return d.pipeline.display_referred && d.mesh->topology != Topology::lines &&
+           d.mesh->topology != Topology::points;
+  });
 }
 
 // A frame of display values into an 8-bit sRGB target at exposure 0: the tiles hold code / 255,
@@ -54,17 +55,11 @@ bool Renderer::Impl::display_referred_frame(const Framebuffer& target) const {
 // quarter of a float tile's bytes, so that four times the pixels fit the caches alike while a
 // quarter as many tiles share the work paid per tile (a bin's walk, the clears and resolves) and
 // fewer triangles straddle two tiles; 64 for the others, whose 128-pixel tiles (256 KB of float
-// colors) lose in the caches what they save. Decided
-// before geometry, which bins by it: the lines and points geometry counts are foreseen from the
-// draws' meshes. Every size gives the same image.
+// colors) lose in the caches what they save. Every size gives the same image.
 int Renderer::Impl::frame_tile_size(const Framebuffer& target) const {
   if (settings.tile_size != RenderSettings::kAutoTileSize) return settings.tile_size;
-  const bool lines_or_points =
-      std::any_of(frame.draws.begin(), frame.draws.end(), [](const pipeline::DrawRecord& d) {
-        return d.mesh->topology == Topology::lines || d.mesh->topology == Topology::points;
-      });
-  const bool codes = frame.samples == 1 && !linear_pass && !depth_only_pass && !lines_or_points &&
-                     display_referred_frame(target);
+  const bool codes =
+      frame.samples == 1 && !linear_pass && !depth_only_pass && display_referred_frame(target);
   return codes ? 128 : 64;
 }
 

@@ -4,19 +4,24 @@
 # the other, ROUNDS times; then per scene each backend's median over the rounds and the ratio
 # (OpenGL ms / facet ms: above 1 means facet is faster). Without a GPU that OpenGL is Mesa's
 # llvmpipe (the first line says which); both at SIZE with THREADS threads, without MSAA.
+# READBACK off times the twin's frames as glmark2 times llvmpipe's: into an 8-bit sRGB target,
+# clear, draw, glFinish, no readback (facet bench --gl-readback off): llvmpipe drawing the view.
 #
-# Usage: bench/vs_gl.sh [ROUNDS] [THREADS] [SIZE]    (default 5 rounds, 2 threads, 1920x1080)
+# Usage: bench/vs_gl.sh [ROUNDS] [THREADS] [SIZE] [READBACK]
+#        (default 5 rounds, 2 threads, 1920x1080, readback on)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ROUNDS=${1:-5}
 THREADS=${2:-2}
 SIZE=${3:-1920x1080}
+READBACK=${4:-on}
 [ -x build/facet ] || { echo "build facet first (make build)" >&2; exit 2; }
 OUT=$(mktemp -d)
 trap 'rm -rf "$OUT"' EXIT
 date -u
 for r in $(seq "$ROUNDS"); do
-  build/facet bench --backend gl --threads "$THREADS" --size "$SIZE" --frames 20 >"$OUT/gl.txt"
+  build/facet bench --backend gl --gl-readback "$READBACK" --threads "$THREADS" --size "$SIZE" \
+    --frames 20 >"$OUT/gl.txt"
   [ "$r" -gt 1 ] || head -1 "$OUT/gl.txt"
   awk -v r="$r" '$2 ~ /^[0-9.]+$/ { print $1, r, $2 }' "$OUT/gl.txt" >>"$OUT/gl"
   scenes=$(awk '$2 ~ /^[0-9.]+$/ { printf "%s%s", sep, $1; sep = "," }' "$OUT/gl.txt")

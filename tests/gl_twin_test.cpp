@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -512,6 +514,54 @@ TEST(GlTwinCli, BenchTimesTheScenesTheTwinCanDraw) {
   EXPECT_NE(glmark2.stderr_text.find("--scene build:use-vbo=true: a glmark2 scene"),
             std::string::npos)
       << glmark2.stderr_text;
+}
+
+// `--gl-readback off` times the twin's frames as glmark2 times llvmpipe's (GlRenderer::draw), and
+// says so in the JSON; it asks for the twin.
+TEST(GlTwinCli, BenchWithoutReadbackTimesTheDrawAlone) {
+  REQUIRE_GL(gl);
+  const auto dir = std::filesystem::temp_directory_path() / "facet_gl_twin";
+  std::filesystem::create_directories(dir);
+  const std::string json = (dir / "draw_only.json").string();
+  const std::string bench = std::string(FACET_CLI) +
+                            " bench --size 64x36 --frames 2 --warmup 1 --threads 2 "
+                            "--scene bunny-close --gl-readback off";
+  const test::CommandResult r = test::run_command(bench + " --backend gl --json " + json);
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+  EXPECT_NE(r.stdout_text.find("bunny-close"), std::string::npos) << r.stdout_text;
+  std::ifstream file(json);
+  const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("\"gl_readback\": \"off\""), std::string::npos) << text;
+  const test::CommandResult facet = test::run_command(bench);
+  EXPECT_EQ(facet.exit_code, 2);
+  EXPECT_NE(facet.stderr_text.find("--gl-readback off: only with --backend gl"), std::string::npos)
+      << facet.stderr_text;
+}
+
+// The frame GlRenderer::draw times is render()'s, drawn into 8-bit sRGB that OpenGL encodes:
+// read back, facet's image without tone mapping (which draw leaves out), but for the two
+// encoders' roundings.
+TEST(GlTwin, DrawnFrameIsTheRenderedOneEncodedByOpenGL) {
+  REQUIRE_GL(gl);
+  FACET_REQUIRE_PACKAGE(std::filesystem::exists(kBunny), "the bunny needs glmark2-data");
+  // 6 dB under llvmpipe's: its sRGB encode rounds some values the other way.
+  for (const Expected expected : {Expected{"bunny", 60.0}, Expected{"shapes", 49.0}}) {
+    const std::string name = expected.scene;
+    const Views v = scene_named(name);
+    RenderSettings settings = twin_settings();
+    settings.tone_mapping = ToneMapping::none;
+    const Framebuffer reference =
+        test::render_scene_image(v.scene, v.camera, kWidth, kHeight, settings);
+    Framebuffer drawn(kWidth, kHeight);
+    gl->draw(v.scene, v.camera, drawn, true);
+    keep_images(name + "_drawn", reference, drawn);
+    const double db = psnr(reference, drawn);
+    std::printf("%s drawn into 8-bit sRGB: PSNR %.2f dB\n", name.c_str(), db);
+    EXPECT_GE(db, expected.min_psnr) << name;
+  }
+  Framebuffer floats(kWidth, kHeight, ColorFormat::rgba32f, DepthImage::none);
+  const Views v = scene_named("shapes");
+  EXPECT_THROW(gl->draw(v.scene, v.camera, floats), Error);
 }
 
 // `facet render --compare facet,gl`: facet's image and the twin's side by side, the right panel

@@ -123,8 +123,17 @@ SceneResult run_scene_gl(const std::string& name, bench::BenchScene& scene, cons
   Framebuffer framebuffer(size.width, size.height, ColorFormat::rgba8_srgb, DepthImage::none);
   const float aspect = static_cast<float>(size.width) / size.height;
   Camera camera;
+  const bool read_back = o.gl_readback == "on";
   std::vector<double> total = time_frames(
-      o, [&](double t) { gl.render(*scene.scene_at(t, aspect, camera), camera, framebuffer); },
+      o,
+      [&](double t) {
+        const Scene& frame = *scene.scene_at(t, aspect, camera);
+        if (read_back) {
+          gl.render(frame, camera, framebuffer);
+        } else {
+          gl.draw(frame, camera, framebuffer);
+        }
+      },
       [] {});
   SceneResult r;
   r.name = name;
@@ -145,6 +154,7 @@ void write_json(const std::string& path, const BenchOptions& o, const ImageSize&
       << "\",\n  \"threads\": " << o.threads << ",\n  \"tile_size\": " << tile_size_json
       << ",\n  \"msaa\": " << o.msaa << ",\n  \"tone_mapping\": \"" << o.tone_mapping << "\""
       << ",\n  \"backend\": \"" << o.backend << "\""
+      << ",\n  \"gl_readback\": \"" << o.gl_readback << "\""
       << ",\n  \"frames\": " << o.frames << ",\n  \"scenes\": [\n";
   for (std::size_t i = 0; i < results.size(); ++i) {
     const SceneResult& r = results[i];
@@ -193,6 +203,10 @@ CLI::App* add_bench_command(CLI::App& app, BenchOptions& o) {
                   "Renderer: facet, or gl (its OpenGL twin: the scenes it can draw, timed the same "
                   "way with the pixels read back; --threads sets llvmpipe's LP_NUM_THREADS)")
       ->capture_default_str();
+  cmd->add_option("--gl-readback", o.gl_readback,
+                  "With --backend gl: on, or off to time its frames as glmark2 times llvmpipe's "
+                  "(an 8-bit sRGB target, clear, draw, glFinish; no readback, no tone mapping)")
+      ->capture_default_str();
   cmd->add_option("--size", o.size, "Frame size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--frames", o.frames, "Frames measured per scene (after the warm-up)")
       ->capture_default_str();
@@ -218,6 +232,12 @@ int run_bench(const BenchOptions& o) {
   apply_pass_options(o.passes, false, size, checked);
   parse_tile_size(o.tile_size);
   const Backend backend = parse_backend("--backend", o.backend);
+  if (o.gl_readback != "on" && o.gl_readback != "off") {
+    throw Error("--gl-readback: expected on or off, got '" + o.gl_readback + "'");
+  }
+  if (o.gl_readback == "off" && backend != Backend::gl) {
+    throw Error("--gl-readback off: only with --backend gl");
+  }
   // Every name is checked before the first frame, so a typo does not end a long run half-way.
   const std::vector<std::string> known = bench::bench_scene_names();
   const std::vector<std::string> glmark2 = bench::glmark2_scene_names();

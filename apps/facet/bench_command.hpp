@@ -14,6 +14,9 @@ namespace facet::cli {
 struct BenchOptions {
   std::string scene = "all";  // a name, names separated by commas, or all
   std::string backend = "facet";
+  // The OpenGL twin's frames: "on", read back as `facet render` needs them; "off", timed as
+  // glmark2 times llvmpipe's (GlRenderer::draw).
+  std::string gl_readback = "on";
   std::string size = "1920x1080";
   int frames = 50;
   int warmup = 5;

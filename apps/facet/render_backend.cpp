@@ -35,6 +35,10 @@ void GlBackend::render(const Scene& scene, const Camera& camera, Framebuffer& ta
   impl_->renderer.render(scene, camera, target);
 }
 
+void GlBackend::draw(const Scene& scene, const Camera& camera, Framebuffer& target) {
+  impl_->renderer.draw(scene, camera, target);
+}
+
 double GlBackend::last_frame_ms() const { return impl_->renderer.last_frame_ms(); }
 
 #else
@@ -50,6 +54,7 @@ const std::string& GlBackend::renderer_name() const {
   return none;
 }
 void GlBackend::render(const Scene&, const Camera&, Framebuffer&) {}
+void GlBackend::draw(const Scene&, const Camera&, Framebuffer&) {}
 double GlBackend::last_frame_ms() const { return 0.0; }
 
 #endif

@@ -41,7 +41,15 @@ class GlRenderer {
   // frame that drew them.
   void render(const Scene& scene, const Camera& camera, Framebuffer& target);
 
-  // Wall time of the last render(), readback included, in milliseconds.
+  // The frame render() draws, timed as glmark2 times a frame of llvmpipe's (facet bench
+  // --gl-readback off): into an 8-bit sRGB color buffer of the target's size, which OpenGL
+  // encodes into as it writes, the samples resolved, then glFinish. Neither exposure nor tone
+  // mapping is applied, and nothing is read back unless `read`: then, after the timing, the
+  // codes OpenGL wrote go into target's color (not its depth). target must be rgba8_srgb (else
+  // throws facet::Error).
+  void draw(const Scene& scene, const Camera& camera, Framebuffer& target, bool read = false);
+
+  // Wall time of the last render(), readback included, or of the last draw(), in milliseconds.
   double last_frame_ms() const;
 
  private:

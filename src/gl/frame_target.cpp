@@ -19,7 +19,7 @@ FrameTarget::~FrameTarget() {
   glDeleteRenderbuffers(4, renderbuffers);
 }
 
-void FrameTarget::make(int width, int height, int samples) {
+void FrameTarget::make(int width, int height, int samples, Color color_kind) {
   if (framebuffer_ == 0) {
     glGenFramebuffers(1, &framebuffer_);
     glGenRenderbuffers(1, &color_);
@@ -29,10 +29,11 @@ void FrameTarget::make(int width, int height, int samples) {
     glGenRenderbuffers(1, &ms_depth_);
   }
   // Float color: the image stays linear and unclamped until the encode at readback, as in
-  // facet's tiles.
+  // facet's tiles. Or 8-bit sRGB, as glmark2 draws (GL_FRAMEBUFFER_SRGB on: encoded as written).
+  const GLenum format = color_kind == Color::srgb8 ? GL_SRGB8_ALPHA8 : GL_RGBA32F;
   auto attach = [&](GLuint framebuffer, GLuint color, GLuint depth, int n) {
     glBindRenderbuffer(GL_RENDERBUFFER, color);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, n, GL_RGBA32F, width, height);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, n, format, width, height);
     glBindRenderbuffer(GL_RENDERBUFFER, depth);
     glRenderbufferStorageMultisample(GL_RENDERBUFFER, n, GL_DEPTH_COMPONENT32F, width, height);
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
@@ -40,17 +41,18 @@ void FrameTarget::make(int width, int height, int samples) {
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
     if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
       throw Error("OpenGL backend: cannot make a " + std::to_string(width) + "x" +
-                  std::to_string(height) + " float framebuffer with " + std::to_string(n) +
-                  " samples a pixel");
+                  std::to_string(height) +
+                  (color_kind == Color::srgb8 ? " 8-bit sRGB" : " float") + " framebuffer with " +
+                  std::to_string(n) + " samples a pixel");
     }
   };
   attach(framebuffer_, color_, depth_, 0);
   if (samples > 1) attach(ms_framebuffer_, ms_color_, ms_depth_, samples);
-  width_ = width, height_ = height, samples_ = samples;
+  width_ = width, height_ = height, samples_ = samples, color_kind_ = color_kind;
 }
 
-void FrameTarget::bind(int width, int height, int samples) {
-  if (width != width_ || height != height_ || samples != asked_samples_) {
+void FrameTarget::bind(int width, int height, int samples, Color color) {
+  if (width != width_ || height != height_ || samples != asked_samples_ || color != color_kind_) {
     GLint max_samples = 1;
     glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
     const int usable = std::max(1, std::min(samples, static_cast<int>(max_samples)));
@@ -59,8 +61,13 @@ void FrameTarget::bind(int width, int height, int samples) {
                    samples, usable);
       warned_ = true;
     }
-    make(width, height, usable);
+    make(width, height, usable, color);
     asked_samples_ = samples;
+  }
+  if (color == Color::srgb8) {
+    glEnable(GL_FRAMEBUFFER_SRGB);
+  } else {
+    glDisable(GL_FRAMEBUFFER_SRGB);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, samples_ > 1 ? ms_framebuffer_ : framebuffer_);
   glViewport(0, 0, width, height);
@@ -119,6 +126,29 @@ void FrameTarget::read(Framebuffer& target, const Output& output) {
   for (int y = 0; y < h; ++y) {
     std::copy_n(depth.data() + static_cast<std::size_t>(h - 1 - y) * w, w,
                 target.depth().data() + static_cast<std::size_t>(y) * w);
+  }
+}
+
+void FrameTarget::finish() {
+  if (samples_ > 1) {  // resolve: each pixel's samples averaged
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, ms_framebuffer_);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_);
+    glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT,
+                      GL_NEAREST);
+  }
+  glFinish();
+}
+
+void FrameTarget::read_codes(Framebuffer& target) {
+  const int w = width_, h = height_;
+  std::vector<std::uint8_t> codes(static_cast<std::size_t>(w) * h * 4);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, codes.data());
+  const std::size_t row_bytes = static_cast<std::size_t>(w) * 4;
+  for (int y = 0; y < h; ++y) {  // GL's first row is the bottom one
+    std::copy_n(codes.data() + static_cast<std::size_t>(h - 1 - y) * row_bytes, row_bytes,
+                target.rgba8().data() + static_cast<std::size_t>(y) * row_bytes);
   }
 }
 

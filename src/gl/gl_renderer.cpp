@@ -1,6 +1,6 @@
 // The GL twin's frame, top to bottom (GlRenderer::render, on the renderer's GL thread): the draws
 // in facet's order, the opaque ones, the sky where nothing opaque was drawn, the blended ones back
-// to front, then the readback. Each draw picks a program for its shading model (glsl_fragment.cpp),
+// to front, then the readback (or, timed as glmark2 times a frame, GlRenderer::draw: glFinish). Each draw picks a program for its shading model (glsl_fragment.cpp),
 // as facet's renderer picks a specialised raster loop (pipeline/record/pipeline_table.cpp).
 #include <algorithm>
 #include <chrono>
@@ -130,17 +130,29 @@ struct GlState {
   }
   ~GlState() { glDeleteVertexArrays(1, &empty_vertex_array); }
 
-  Program& program(const std::string& defines, bool sky = false) {
+  // A draw's program (`geometry_stage`: with the geometry stage), or the sky's.
+  Program& program(const std::string& defines, bool geometry_stage, bool sky = false) {
     auto& slot = programs[(sky ? "sky " : "") + defines];
     if (!slot) {
       const std::string common = gl::kCommonGlsl;
-      slot =
-          sky ? std::make_unique<Program>(defines, common + gl::kSkyVertexGlsl, "",
-                                          common + gl::kSkyFragmentGlsl)
-              : std::make_unique<Program>(defines, common + gl::kVertexGlsl,
-                                          common + gl::kGeometryGlsl, common + gl::kFragmentGlsl);
+      slot = sky ? std::make_unique<Program>(defines, common + gl::kSkyVertexGlsl, "",
+                                             common + gl::kSkyFragmentGlsl)
+                 : std::make_unique<Program>(
+                       defines, common + gl::kVertexGlsl,
+                       geometry_stage ? common + gl::kGeometryGlsl : std::string(),
+                       common + gl::kFragmentGlsl);
     }
     return *slot;
+  }
+
+  // Whether a draw reads what the geometry stage makes per triangle (glsl_stages.cpp): face
+  // normals where the mesh has none, flat shading's color, the wire overlay's edges, and which
+  // side the normals face for two-sided lighting; lines and points pass through it. Without it,
+  // llvmpipe skips a stage it pays for per triangle, and the image is the same.
+  static bool needs_geometry_stage(const gl::GpuMesh& mesh, const Material& material,
+                                   const char* model) {
+    return mesh.mode != GL_TRIANGLES || !mesh.has_normals || material.cull == CullMode::none ||
+           material.shading == ShadingModel::wire_overlay || std::string(model) == "MODEL_FLAT";
   }
 
   // Draws the mesh with the program of `model` (a MODEL_* define of glsl_fragment.cpp).
@@ -161,7 +173,9 @@ struct GlState {
     }
     if (mesh.mode == GL_LINES) defines += "#define PRIMITIVE_LINES\n";
     if (mesh.mode == GL_POINTS) defines += "#define PRIMITIVE_POINTS\n";
-    Program& p = program(defines);
+    const bool geometry_stage = needs_geometry_stage(mesh, material, model);
+    if (!geometry_stage) defines += "#define NO_GEOMETRY_STAGE\n";
+    Program& p = program(defines, geometry_stage);
     glUseProgram(p.id());
     gl::set_frame_uniforms(p, frame);
     gl::set_draw_uniforms(p, draw, material, frame, mesh.has_normals, resources);
@@ -206,7 +220,7 @@ struct GlState {
   }
 
   void draw_sky(const gl::FrameState& frame) {
-    Program& p = program("", true);
+    Program& p = program("", false, true);
     glUseProgram(p.id());
     gl::set_frame_uniforms(p, frame);
     set_blending(AlphaMode::opaque);
@@ -220,6 +234,31 @@ struct GlState {
 
   void render(const Scene& scene, const Camera& camera, Framebuffer& out) {
     const auto start = std::chrono::steady_clock::now();
+    const ToneMapping tone_mapping = draw_frame(scene, camera, out, gl::FrameTarget::Color::linear_float);
+    target.read(out,
+                {settings.exposure, tone_mapping, scene.lighting.environment.show_as_background});
+    resources.free_unused();
+    last_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  }
+
+  void draw_only(const Scene& scene, const Camera& camera, Framebuffer& out, bool read) {
+    if (out.format() != ColorFormat::rgba8_srgb) {
+      throw Error("OpenGL backend: a frame timed as glmark2 times one draws into 8-bit sRGB");
+    }
+    const auto start = std::chrono::steady_clock::now();
+    draw_frame(scene, camera, out, gl::FrameTarget::Color::srgb8);
+    target.finish();
+    last_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    if (read) target.read_codes(out);
+    resources.free_unused();
+  }
+
+  // Every draw of the frame into the target bound with that color buffer; returns the frame's
+  // tone mapping, which the readback applies.
+  ToneMapping draw_frame(const Scene& scene, const Camera& camera, const Framebuffer& out,
+                         gl::FrameTarget::Color color) {
     if (out.extra_outputs().any()) {
       throw Error(
           "OpenGL backend: extra outputs (depth in scene units, normals, ids, ...) are "
@@ -247,7 +286,7 @@ struct GlState {
     gl::depth_view_range(draws, camera, frame.depth_view_near, frame.depth_view_far);
 
     bind_environment(scene.lighting.environment);
-    target.bind(out.width(), out.height(), settings.msaa);
+    target.bind(out.width(), out.height(), settings.msaa, color);
     // The last frame may have left depth writes off (blended draws, the sky), and glClear
     // obeys the depth mask.
     set_blending(AlphaMode::opaque);
@@ -267,11 +306,7 @@ struct GlState {
       this->draw(draw, frame);
     }
     if (sky_pending) draw_sky(frame);
-    target.read(out,
-                {settings.exposure, tone_mapping, scene.lighting.environment.show_as_background});
-    resources.free_unused();
-    last_ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return tone_mapping;
   }
 };
 
@@ -291,6 +326,9 @@ const std::string& GlRenderer::version() const { return impl_->state->version; }
 double GlRenderer::last_frame_ms() const { return impl_->state->last_ms; }
 void GlRenderer::render(const Scene& scene, const Camera& camera, Framebuffer& target) {
   impl_->thread.run([&] { impl_->state->render(scene, camera, target); });
+}
+void GlRenderer::draw(const Scene& scene, const Camera& camera, Framebuffer& target, bool read) {
+  impl_->thread.run([&] { impl_->state->draw_only(scene, camera, target, read); });
 }
 
 }  // namespace facet

@@ -7,9 +7,17 @@ namespace facet::gl {
 
 const char* const kFragmentGlsl = R"glsl(
 in Varyings VARYINGS in_v;
+#ifdef NO_GEOMETRY_STAGE
+// Straight from the vertex stage: the draw reads none of the geometry stage's values
+// (gl_renderer.cpp's needs_geometry_stage).
+const int normals_front = 1;
+const vec4 face_color = vec4(0.0);
+const vec3 edge_lines[3] = vec3[3](vec3(0.0), vec3(0.0), vec3(0.0));
+#else
 flat in int normals_front;
 flat in vec4 face_color;
 flat in vec3 edge_lines[3];
+#endif
 
 out vec4 out_color;
 

@@ -297,7 +297,12 @@ py::dict stats_dict(const FrameStats& s) {
   d["ms_geometry"] = s.ms_geometry;
   d["ms_binning"] = s.ms_binning;
   d["ms_raster"] = s.ms_raster;
+  d["ms_resolve"] = s.ms_resolve;
+  d["ms_shadows"] = s.ms_shadows;
+  d["ms_reflections"] = s.ms_reflections;
+  d["ms_extra_outputs"] = s.ms_extra_outputs;
   d["ms_total"] = s.ms_total;
+  d["display_referred"] = s.display_referred;
   d["tile_size"] = s.tile_size;
   return d;
 }

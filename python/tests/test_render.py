@@ -325,6 +325,30 @@ def test_stats_of_the_last_frame():
     assert sixteen.stats["tile_size"] == 16
 
 
+def test_stats_time_every_pass():
+    # The shadow maps' and the extra outputs' passes are timed apart, inside the total; a frame
+    # without them spends nothing on them.
+    scene = facet.Scene()
+    scene.add_mesh(*quad()[:2])
+    scene.add_light(facet.Light.directional((0, 0, -1)))
+    plain = facet.Renderer(32, 32)
+    plain.render(scene, front_camera(), ["color"])
+    stats = plain.stats
+    assert stats["ms_shadows"] == 0 and stats["ms_reflections"] == 0
+    assert stats["ms_extra_outputs"] == 0 and not stats["display_referred"]
+    assert 0 <= stats["ms_resolve"] <= stats["ms_raster"] <= stats["ms_total"]
+    shadowed = facet.Renderer(32, 32, shadows=True, shadow_map_size=256)
+    shadowed.render(scene, front_camera(), ["color", "normal"])
+    stats = shadowed.stats
+    assert stats["ms_shadows"] > 0 and stats["ms_extra_outputs"] > 0
+    assert stats["ms_total"] >= stats["ms_shadows"] + stats["ms_extra_outputs"]
+    # A frame of display values (the normals view) is rounded, not encoded.
+    normals = facet.Scene()
+    normals.add_mesh(*quad()[:2], material=facet.Material((1, 1, 1), "normals"))
+    plain.render(normals, front_camera(), ["color"])
+    assert plain.stats["display_referred"]
+
+
 def test_msaa_blends_edge_pixels_and_keeps_ids_whole():
     # A quad's silhouette: at 1 sample every pixel is the quad's or the background's; at 4 the
     # edge pixels lie between, the inside stays the quad's, and the ids never blend.

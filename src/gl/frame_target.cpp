@@ -41,9 +41,8 @@ void FrameTarget::make(int width, int height, int samples, Color color_kind) {
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
     if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
       throw Error("OpenGL backend: cannot make a " + std::to_string(width) + "x" +
-                  std::to_string(height) +
-                  (color_kind == Color::srgb8 ? " 8-bit sRGB" : " float") + " framebuffer with " +
-                  std::to_string(n) + " samples a pixel");
+                  std::to_string(height) + (color_kind == Color::srgb8 ? " 8-bit sRGB" : " float") +
+                  " framebuffer with " + std::to_string(n) + " samples a pixel");
     }
   };
   attach(framebuffer_, color_, depth_, 0);

@@ -1,7 +1,8 @@
 // The GL twin's frame, top to bottom (GlRenderer::render, on the renderer's GL thread): the draws
 // in facet's order, the opaque ones, the sky where nothing opaque was drawn, the blended ones back
-// to front, then the readback (or, timed as glmark2 times a frame, GlRenderer::draw: glFinish). Each draw picks a program for its shading model (glsl_fragment.cpp),
-// as facet's renderer picks a specialised raster loop (pipeline/record/pipeline_table.cpp).
+// to front, then the readback (or, timed as glmark2 times a frame, GlRenderer::draw: glFinish).
+// Each draw picks a program for its shading model (glsl_fragment.cpp), as facet's renderer picks a
+// specialised raster loop (pipeline/record/pipeline_table.cpp).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -234,7 +235,8 @@ struct GlState {
 
   void render(const Scene& scene, const Camera& camera, Framebuffer& out) {
     const auto start = std::chrono::steady_clock::now();
-    const ToneMapping tone_mapping = draw_frame(scene, camera, out, gl::FrameTarget::Color::linear_float);
+    const ToneMapping tone_mapping =
+        draw_frame(scene, camera, out, gl::FrameTarget::Color::linear_float);
     target.read(out,
                 {settings.exposure, tone_mapping, scene.lighting.environment.show_as_background});
     resources.free_unused();

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <map>
 #include <memory>
 #include <string>
@@ -153,7 +154,7 @@ struct GlState {
   static bool needs_geometry_stage(const gl::GpuMesh& mesh, const Material& material,
                                    const char* model) {
     return mesh.mode != GL_TRIANGLES || !mesh.has_normals || material.cull == CullMode::none ||
-           material.shading == ShadingModel::wire_overlay || std::string(model) == "MODEL_FLAT";
+           material.shading == ShadingModel::wire_overlay || std::strcmp(model, "MODEL_FLAT") == 0;
   }
 
   // Draws the mesh with the program of `model` (a MODEL_* define of glsl_fragment.cpp).

@@ -131,8 +131,9 @@ void tone_map(const TileContext& tile, const Resolve& resolve, std::ptrdiff_t fi
 
 // The MSAA resolve of one tile row: each pixel's samples averaged in linear light (in sample
 // order, then scaled: the same sum on every path), or its one color where they are alike.
-// Tone mapped, each sample is mapped before the average: a split pixel's other samples (next to
-// each other) in one call.
+// Tone mapped, each sample is mapped before the average: the split pixels' other samples are
+// gathered, with their depths, and mapped together, kSamplesMapped at most a call (the curves map
+// each lane alone, so gathering changes no bits); then each such pixel's sum is taken.
 void average_samples(const TileContext& tile, const Resolve& resolve, std::ptrdiff_t first,
                      int count, glm::vec4* out) {
   const std::uint8_t* split = tile.split + first;
@@ -145,20 +146,35 @@ void average_samples(const TileContext& tile, const Resolve& resolve, std::ptrdi
   }
   tone_map(tile, resolve, first, count, out);
   const float inverse = 1.0f / static_cast<float>(tile.samples);
+  constexpr int kSamplesMapped = 256;
+  static_assert(kSamplesMapped >= kMaxSamples - 1);
+  glm::vec4 gathered[kSamplesMapped], mapped[kSamplesMapped];
+  float depths[kSamplesMapped];
+  int pixels[kSamplesMapped];
+  int gathered_count = 0, pixel_count = 0;
+  const auto map_gathered = [&] {
+    // Nothing drawn at a sample keeps the clear color unmapped.
+    tile.frame->kernels->tone_map_row(resolve.tone_mapping, gathered,
+                                      resolve.maps_background ? nullptr : depths, kClearDepth,
+                                      gathered_count, resolve.scale, mapped);
+    for (int k = 0; k < pixel_count; ++k) {
+      glm::vec4 sum = out[pixels[k]];
+      for (int s = 0; s < others; ++s) sum += mapped[k * others + s];
+      out[pixels[k]] = sum * inverse;
+    }
+    gathered_count = pixel_count = 0;
+  };
   for (int x = 0; x < count; ++x) {
     if (!split[x]) continue;
-    // The samples' depths in the same order (nothing drawn at a sample keeps the clear color
-    // unmapped).
-    float depth[kMaxSamples - 1];
-    for (int s = 1; s <= others; ++s) depth[s - 1] = tile.depth[s * tile.sample_plane + first + x];
-    glm::vec4 mapped[kMaxSamples - 1];
-    tile.frame->kernels->tone_map_row(resolve.tone_mapping, row_others + x * others,
-                                      resolve.maps_background ? nullptr : depth, kClearDepth,
-                                      others, resolve.scale, mapped);
-    glm::vec4 sum = out[x];
-    for (int s = 0; s < others; ++s) sum += mapped[s];
-    out[x] = sum * inverse;
+    if (gathered_count + others > kSamplesMapped) map_gathered();
+    std::copy_n(row_others + x * others, others, gathered + gathered_count);
+    for (int s = 1; s <= others; ++s) {
+      depths[gathered_count + s - 1] = tile.depth[s * tile.sample_plane + first + x];
+    }
+    gathered_count += others;
+    pixels[pixel_count++] = x;
   }
+  if (gathered_count > 0) map_gathered();
 }
 
 }  // namespace

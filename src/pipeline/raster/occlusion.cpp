@@ -41,8 +41,8 @@ ScanEntry scan_entry(const Frame& frame, std::uint32_t entry) {
 DepthRange over_samples(const Frame& frame, const SetupTriangle& t, DepthRange range) {
   if (frame.samples == 1) return range;
   float z[kMaxSamples];
-  const SampleSteps steps(t, frame.samples, z);
-  return {range.nearest + steps.z_min, range.farthest + steps.z_max};  // NaN stays
+  const DepthSteps steps = sample_depth_steps(t, frame.samples, z);
+  return {range.nearest + steps.min, range.farthest + steps.max};  // NaN stays
 }
 
 // depth_range_over the part of t's bounding box in the rectangle [x0, x1) x [y0, y1), over its

@@ -15,6 +15,21 @@
 
 namespace facet::pipeline {
 
+// The depth each sample of triangle t adds at its pixel centre, into z[0 .. samples) (rounded
+// once, the same on every path); returns their least and greatest.
+struct DepthSteps {
+  float min, max;
+};
+inline DepthSteps sample_depth_steps(const SetupTriangle& t, int samples, float* z) {
+  const SampleOffset* pattern = sample_pattern(samples);
+  for (int s = 0; s < samples; ++s) {
+    // Sixteenths are exact in float; no contraction (the build's -ffp-contract=off).
+    z[s] = t.z.dx * (static_cast<float>(pattern[s].x) / 16.0f) +
+           t.z.dy * (static_cast<float>(pattern[s].y) / 16.0f);
+  }
+  return {*std::min_element(z, z + samples), *std::max_element(z, z + samples)};
+}
+
 // What a triangle's samples add to its values at the pixel centre: each edge function's step
 // (exact, fixed point) and the depth's (rounded once, the same on every path, so a sample's
 // depth is fl(depth at the centre + step) wherever it is computed). Rounding is monotonic, so
@@ -30,25 +45,38 @@ struct SampleSteps {
 
   // Fills z[0 .. samples) with the depth steps (the tile's sample_z while t is drawn).
   SampleSteps(const SetupTriangle& t, int samples, float* z) {
+    // The usual counts unrolled: a triangle's steps are taken for every tile it is drawn in.
+    switch (samples) {
+      case 2:
+        fill<2>(t, z);
+        break;
+      case 4:
+        fill<4>(t, z);
+        break;
+      case 8:
+        fill<8>(t, z);
+        break;
+      default:
+        fill<kMaxSamples>(t, z, samples);
+    }
+  }
+
+ private:
+  template <int kSamples>
+  void fill(const SetupTriangle& t, float* z, int samples = kSamples) {
     const SampleOffset* pattern = sample_pattern(samples);
     for (int i = 0; i < 3; ++i) {
-      const std::int64_t size = std::abs(std::int64_t{t.a[i]}) + std::abs(std::int64_t{t.b[i]});
-      fits_32_bits = fits_32_bits && size < (std::int64_t{1} << 18);
-      edge_min[i] = edge_max[i] = std::int64_t{t.a[i]} * pattern[0].x * kSampleUnit +
-                                  std::int64_t{t.b[i]} * pattern[0].y * kSampleUnit;
-      for (int s = 0; s < samples; ++s) {
-        step[i][s] = std::int64_t{t.a[i]} * pattern[s].x + std::int64_t{t.b[i]} * pattern[s].y;
+      const std::int64_t a = t.a[i], b = t.b[i];
+      fits_32_bits = fits_32_bits && std::abs(a) + std::abs(b) < (std::int64_t{1} << 18);
+      edge_min[i] = edge_max[i] = (a * pattern[0].x + b * pattern[0].y) * kSampleUnit;
+      for (int s = 0; s < kSamples && s < samples; ++s) {
+        step[i][s] = a * pattern[s].x + b * pattern[s].y;
         edge_min[i] = std::min(edge_min[i], step[i][s] * kSampleUnit);
         edge_max[i] = std::max(edge_max[i], step[i][s] * kSampleUnit);
       }
     }
-    for (int s = 0; s < samples; ++s) {
-      // Sixteenths are exact in float; no contraction (the build's -ffp-contract=off).
-      z[s] = t.z.dx * (static_cast<float>(pattern[s].x) / 16.0f) +
-             t.z.dy * (static_cast<float>(pattern[s].y) / 16.0f);
-    }
-    z_min = *std::min_element(z, z + samples);
-    z_max = *std::max_element(z, z + samples);
+    const DepthSteps depth = sample_depth_steps(t, samples, z);
+    z_min = depth.min, z_max = depth.max;
   }
 };
 

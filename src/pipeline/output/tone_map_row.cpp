@@ -24,7 +24,7 @@ struct Rgb {
 };
 
 // x * (1 - t) + y * t, as GLSL's mix.
-Vec Mix(FloatTag df, Vec x, Vec y, Vec t) {
+HWY_INLINE Vec Mix(FloatTag df, Vec x, Vec y, Vec t) {
   return hn::Add(hn::Mul(x, hn::Sub(hn::Set(df, 1.0f), t)), hn::Mul(y, t));
 }
 
@@ -32,7 +32,7 @@ Vec Mix(FloatTag df, Vec x, Vec y, Vec t) {
 // brightest channel stays under 0.76 keep their hue and value (less a small offset that
 // darkens the deepest shadows a little, at most 0.04); brighter ones are compressed toward
 // white, desaturating as they go, and reach it only at infinity.
-Rgb PbrNeutral(FloatTag df, Rgb c) {
+HWY_INLINE Rgb PbrNeutral(FloatTag df, Rgb c) {
   constexpr float kStart = 0.8f - 0.04f, kDesaturation = 0.15f, kD = 1.0f - kStart;
   const Vec toe_end = hn::Set(df, 0.08f);
   const Vec lowest = hn::Min(c.r, hn::Min(c.g, c.b));
@@ -64,7 +64,7 @@ Rgb PbrNeutral(FloatTag df, Rgb c) {
 // (github.com/TheRealMJP/BakingLab, ACES.hlsl), with the 1 / 0.6 exposure three.js and the
 // Khronos glTF viewer give it so that mid grey stays near mid grey. Contrast rises and
 // saturated highlights shift toward white; values are clamped to [0, 1].
-Rgb AcesFilmic(FloatTag df, Rgb c) {
+HWY_INLINE Rgb AcesFilmic(FloatTag df, Rgb c) {
   // The input transform (sRGB to the fit's space) with the 1 / 0.6 folded in would round
   // differently from applying them in turn, which is what is documented: both are applied.
   const Vec boost = hn::Set(df, 1.0f / 0.6f);

@@ -167,8 +167,9 @@ void average_samples(const TileContext& tile, const Resolve& resolve, std::ptrdi
   for (int x = 0; x < count; ++x) {
     if (!split[x]) continue;
     if (gathered_count + others > kSamplesMapped) map_gathered();
-    std::copy_n(row_others + x * others, others, gathered + gathered_count);
+    // A loop rather than std::copy_n, which for a count known only at run time calls memmove.
     for (int s = 1; s <= others; ++s) {
+      gathered[gathered_count + s - 1] = row_others[x * others + s - 1];
       depths[gathered_count + s - 1] = tile.depth[s * tile.sample_plane + first + x];
     }
     gathered_count += others;

@@ -94,7 +94,8 @@ TEST(BenchCli, BadValuesGiveOneErrorLine) {
   for (const char* args :
        {"--scene no_such_scene", "--scene overdraw,", "--scene shapes,nope", "--backend vulkan",
         "--frames 0", "--warmup -1", "--threads -2", "--size 0x10", "--tile-size 48", "--msaa 3",
-        "--shadows yes", "--shadow-map-size 0", "--shadow-map-size 100000"}) {
+        "--shadows yes", "--shadow-map-size 0", "--shadow-map-size 100000",
+        "--gl-readback maybe"}) {
     std::string command = FACET_CLI;
     command += " bench --size 32x18 ";
     command += args;

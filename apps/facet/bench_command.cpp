@@ -123,7 +123,7 @@ SceneResult run_scene_gl(const std::string& name, bench::BenchScene& scene, cons
   Framebuffer framebuffer(size.width, size.height, ColorFormat::rgba8_srgb, DepthImage::none);
   const float aspect = static_cast<float>(size.width) / size.height;
   Camera camera;
-  const bool read_back = o.gl_readback == "on";
+  const bool read_back = parse_on_off("--gl-readback", o.gl_readback);
   std::vector<double> total = time_frames(
       o,
       [&](double t) {
@@ -232,10 +232,7 @@ int run_bench(const BenchOptions& o) {
   apply_pass_options(o.passes, false, size, checked);
   parse_tile_size(o.tile_size);
   const Backend backend = parse_backend("--backend", o.backend);
-  if (o.gl_readback != "on" && o.gl_readback != "off") {
-    throw Error("--gl-readback: expected on or off, got '" + o.gl_readback + "'");
-  }
-  if (o.gl_readback == "off" && backend != Backend::gl) {
+  if (!parse_on_off("--gl-readback", o.gl_readback) && backend != Backend::gl) {
     throw Error("--gl-readback off: only with --backend gl");
   }
   // Every name is checked before the first frame, so a typo does not end a long run half-way.

@@ -77,14 +77,7 @@ void FrameTarget::read(Framebuffer& target, const Output& output) {
   const bool mapped = output.tone_mapping != ToneMapping::none;
   // Tone mapping leaves the clear color alone: it tells the pixels nothing was drawn on by depth.
   const bool need_depth = target.has_depth() || (mapped && !output.maps_background);
-  if (samples_ > 1) {  // resolve: each pixel's samples averaged; depth takes one
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, ms_framebuffer_);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_);
-    glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    if (need_depth) {
-      glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
-    }
-  }
+  resolve_samples(need_depth);
   std::vector<glm::vec4> rgba(static_cast<std::size_t>(w) * h);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
   glPixelStorei(GL_PACK_ALIGNMENT, 4);
@@ -128,13 +121,17 @@ void FrameTarget::read(Framebuffer& target, const Output& output) {
   }
 }
 
+void FrameTarget::resolve_samples(bool depth) {
+  if (samples_ == 1) return;
+  const int w = width_, h = height_;
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, ms_framebuffer_);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_);
+  glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  if (depth) glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+}
+
 void FrameTarget::finish() {
-  if (samples_ > 1) {  // resolve: each pixel's samples averaged
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, ms_framebuffer_);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_);
-    glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT,
-                      GL_NEAREST);
-  }
+  resolve_samples(false);
   glFinish();
 }
 

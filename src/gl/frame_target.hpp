@@ -47,6 +47,9 @@ class FrameTarget {
 
  private:
   void make(int width, int height, int samples, Color color);
+  // Multisampled: each pixel's samples averaged into the single-sample buffers (a blit), and,
+  // when `depth`, one sample's depth.
+  void resolve_samples(bool depth);
   GLuint framebuffer_ = 0, color_ = 0, depth_ = 0;           // single-sample: read back
   GLuint ms_framebuffer_ = 0, ms_color_ = 0, ms_depth_ = 0;  // multisampled: drawn into
   int width_ = 0, height_ = 0, samples_ = 0, asked_samples_ = 0;

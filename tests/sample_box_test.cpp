@@ -41,7 +41,7 @@ struct Tile {
        int height, int samples, std::mt19937& rng) {
     const std::ptrdiff_t plane = static_cast<std::ptrdiff_t>(height) * kStride;
     depth.resize(plane * samples + pipeline::kDepthSlack, 1.0f);
-    const float spread = std::max(-steps.z_min, steps.z_max) + 1e-6f;
+    const float spread = std::max(-steps.depth.min, steps.depth.max) + 1e-6f;
     std::uniform_real_distribution<float> around(-spread, spread);
     for (int s = 0; s < samples; ++s) {
       for (int y = 0; y < height; ++y) {

@@ -139,8 +139,8 @@ void raster_triangle_msaa(TileContext& tile, const SetupTriangle& t) {
       float farthest = 0.0f;
       if constexpr (kDepthTest) {
         const DepthRange range = depth_range_over(t, left, top, right, bottom);
-        if (range.nearest + steps.z_min >= max_depth) continue;  // NaN goes on (and fails)
-        farthest = range.farthest + steps.z_max;
+        if (range.nearest + steps.depth.min >= max_depth) continue;  // NaN goes on (and fails)
+        farthest = range.farthest + steps.depth.max;
       }
       const bool whole_block = edges == EdgeCover::inside && left == block_x && top == block_y &&
                                right - left + 1 == kBlockSize && bottom - top + 1 == kBlockSize;

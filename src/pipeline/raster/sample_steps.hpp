@@ -39,7 +39,7 @@ struct SampleSteps {
   // fixed-point step over kSampleUnit, exactly (sample offsets are whole sixteenths).
   std::int64_t step[3][kMaxSamples];
   std::int64_t edge_min[3], edge_max[3];  // the fixed-point steps' extremes
-  float z_min, z_max;
+  DepthSteps depth;  // the depth steps' extremes
   // The SIMD box search computes in 32 bits (SampleBoxSearch): only for these coefficients.
   bool fits_32_bits = true;
 
@@ -75,8 +75,7 @@ struct SampleSteps {
         edge_max[i] = std::max(edge_max[i], step[i][s] * kSampleUnit);
       }
     }
-    const DepthSteps depth = sample_depth_steps(t, samples, z);
-    z_min = depth.min, z_max = depth.max;
+    depth = sample_depth_steps(t, samples, z);
   }
 };
 

@@ -39,7 +39,7 @@ struct SampleSteps {
   // fixed-point step over kSampleUnit, exactly (sample offsets are whole sixteenths).
   std::int64_t step[3][kMaxSamples];
   std::int64_t edge_min[3], edge_max[3];  // the fixed-point steps' extremes
-  DepthSteps depth;  // the depth steps' extremes
+  DepthSteps depth;                       // the depth steps' extremes
   // The SIMD box search computes in 32 bits (SampleBoxSearch): only for these coefficients.
   bool fits_32_bits = true;
 

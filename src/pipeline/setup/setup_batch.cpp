@@ -148,6 +148,9 @@ HWY_INLINE hn::Mask<IntTag> CoversACentre(const IntVec x[3], const IntVec y[3], 
   return hn::Not(hn::Lt(all_outside, hn::Zero(di)));
 }
 
+// Up to this many varyings, a triangle's planes are solved in scalars.
+constexpr int kFewVaryings = 3;
+
 int SetupBatchLanes(const SetupBatch& b, const SetupBatchTarget& target) {
   const DoubleTag dd;
   const FloatTag df;
@@ -275,7 +278,8 @@ int SetupBatchLanes(const SetupBatch& b, const SetupBatchTarget& target) {
     solver.solve(inv_w[0], inv_w[1], inv_w[2], dx, dy);
     hn::Store(inv_w[0], df, inv_w0), hn::Store(dx, df, inv_w_dx), hn::Store(dy, df, inv_w_dy);
 
-    // Each kept triangle in order: its record, then its varying planes a vector at a time.
+    // Each kept triangle in order: its record, then its varying planes (a vector at a time but
+    // for a few).
     dropped += std::min(lanes, b.count - first) - std::popcount(kept);
     for (; kept != 0; kept &= static_cast<std::uint8_t>(kept - 1)) {
       const int l = std::countr_zero(kept);
@@ -291,27 +295,40 @@ int SetupBatchLanes(const SetupBatch& b, const SetupBatchTarget& target) {
       target.out.add_reserved_triangle(slot);
       if (target.varyings == 0) continue;  // (slot.planes may then be null)
 
-      const Coefficients one{hn::Set(dd, x1[l]), hn::Set(dd, y1[l]), hn::Set(dd, x2[l]),
-                             hn::Set(dd, y2[l]), hn::Set(dd, inv_det[l])};
       const bool swaps = swapped[l] != 0;
       const int n = target.varyings;
       const float* const v[3] = {target.over_w + std::size_t{vertex[0][l]} * n,
                                  target.over_w + std::size_t{vertex[swaps ? 2 : 1][l]} * n,
                                  target.over_w + std::size_t{vertex[swaps ? 1 : 2][l]} * n};
       float* planes = &slot.planes[0].at_ref;
-      const int whole = target.varyings - target.varyings % lanes;
-      int k = 0;
-      for (; k < whole; k += lanes) one.solve_planes(v, k, planes + 3 * k);
-      // The last few planes: a whole vector's worth where the room past them is scratch;
-      // otherwise (the next planes may be another chunk's, which another thread writes)
-      // through a buffer.
-      if (k < target.varyings) {
-        if (target.out.plane_room(slot) >= static_cast<std::uint32_t>(whole + lanes)) {
-          one.solve_planes(v, k, planes + 3 * k);
-        } else {
-          alignas(64) float rest[3 * kLanes];
-          one.solve_planes(v, k, rest);
-          for (int f = 0; f < 3 * (target.varyings - k); ++f) planes[3 * k + f] = rest[f];
+      if (n <= kFewVaryings) {
+        // PlaneSolver::plane a varying at a time, in scalars: a vector would hold these few
+        // planes in a few of its lanes and store a whole vector's worth.
+        for (int k = 0; k < n; ++k) {
+          const double d0 = v[0][k];
+          const double d1 = static_cast<double>(v[1][k]) - d0;
+          const double d2 = static_cast<double>(v[2][k]) - d0;
+          planes[3 * k] = v[0][k];
+          planes[3 * k + 1] = static_cast<float>((d1 * y2[l] - d2 * y1[l]) * inv_det[l]);
+          planes[3 * k + 2] = static_cast<float>((d2 * x1[l] - d1 * x2[l]) * inv_det[l]);
+        }
+      } else {
+        const Coefficients one{hn::Set(dd, x1[l]), hn::Set(dd, y1[l]), hn::Set(dd, x2[l]),
+                               hn::Set(dd, y2[l]), hn::Set(dd, inv_det[l])};
+        const int whole = n - n % lanes;
+        int k = 0;
+        for (; k < whole; k += lanes) one.solve_planes(v, k, planes + 3 * k);
+        // The last few planes: a whole vector's worth where the room past them is scratch;
+        // otherwise (the next planes may be another chunk's, which another thread writes)
+        // through a buffer.
+        if (k < n) {
+          if (target.out.plane_room(slot) >= static_cast<std::uint32_t>(whole + lanes)) {
+            one.solve_planes(v, k, planes + 3 * k);
+          } else {
+            alignas(64) float rest[3 * kLanes];
+            one.solve_planes(v, k, rest);
+            for (int f = 0; f < 3 * (n - k); ++f) planes[3 * k + f] = rest[f];
+          }
         }
       }
       if (target.back_face_normal >= 0) {

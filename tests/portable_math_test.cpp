@@ -90,10 +90,18 @@ TEST(PortableMath, ExpIsExpToFloatPrecision) {
 }
 
 TEST(PortableMath, PowIsPowForHighlights) {
-  for (float s : {1.0f, 8.0f, 32.0f, 100.0f, 256.0f}) {
+  // Whole exponents by repeated squaring: each product's rounding (2^-24 relative) doubles with
+  // each squaring after it, so within about s 2^-24 relative. Others through log2 and exp2.
+  for (float s : {1.0f, 2.0f, 7.0f, 8.0f, 32.0f, 48.0f, 100.0f, 256.0f, 1000.0f, 65536.0f}) {
     for (float x = 0.0f; x <= 1.0f; x += 0.001f) {
       const double exact = std::pow(static_cast<double>(x), static_cast<double>(s));
-      // Relative 2e-6 s, or absolutely tiny where the result underflows the normal range.
+      // Relative 2 s 2^-24, or absolutely tiny where the result underflows the normal range.
+      ASSERT_NEAR(portable_pow(x, s), exact, 1.2e-7 * s * exact + 1e-37) << x << "^" << s;
+    }
+  }
+  for (float s : {0.5f, 1.5f, 12.8f, 33.3f, 100.5f, 65537.0f}) {
+    for (float x = 0.0f; x <= 1.0f; x += 0.001f) {
+      const double exact = std::pow(static_cast<double>(x), static_cast<double>(s));
       ASSERT_NEAR(portable_pow(x, s), exact, 2e-6 * s * exact + 1e-37) << x << "^" << s;
     }
   }

@@ -100,7 +100,13 @@ void randomize(std::mt19937& rng, Draw& d) {
   d.frame.lights = d.lights;
   d.material.base_color = {unit(rng), unit(rng), unit(rng), 1.0f};
   d.material.specular_color = {unit(rng), unit(rng), unit(rng)};
-  d.material.shininess = rng() % 5 == 0 ? 0.0f : 1.0f + unit(rng) * 127.0f;
+  // None, a whole number (powers by repeated squaring) or any other (through log2 and exp2).
+  switch (rng() % 5) {
+    case 0: d.material.shininess = 0.0f; break;
+    case 1:
+    case 2: d.material.shininess = std::floor(1.0f + unit(rng) * 127.0f); break;
+    default: d.material.shininess = 1.0f + unit(rng) * 127.0f;
+  }
   d.uniforms.normal_matrix = glm::mat3(any(rng), any(rng), any(rng), any(rng), any(rng), any(rng),
                                        any(rng), any(rng), any(rng));
   switch (rng() % 3) {

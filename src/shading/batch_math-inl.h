@@ -175,8 +175,20 @@ HWY_INLINE BatchV PortableExp(BatchV x) {
   return PortableExp2(hn::Mul(x, hn::Set(BatchTag(), portable_math::kLog2E)));
 }
 
-// portable_pow(x, s) for one s (s == 0 is the caller's: x^0 = 1).
+// portable_pow(x, s) for one s (s == 0 is the caller's: x^0 = 1): the same multiplications for
+// a whole s (portable_math::is_whole_power), else the same 2^(s log2 x).
 HWY_INLINE BatchV PortablePow(BatchV x, float s) {
+  if (portable_math::is_whole_power(s)) {
+    auto n = static_cast<std::uint32_t>(s);
+    BatchV power = x;  // x^(2^k), k the bit of n looked at
+    while ((n & 1u) == 0) n >>= 1, power = hn::Mul(power, power);
+    BatchV result = power;
+    for (n >>= 1; n != 0; n >>= 1) {
+      power = hn::Mul(power, power);
+      if (n & 1u) result = hn::Mul(result, power);
+    }
+    return result;
+  }
   return PortableExp2(hn::Mul(hn::Set(BatchTag(), s), PortableLog2(x)));
 }
 

@@ -101,12 +101,11 @@ void randomize(std::mt19937& rng, Draw& d) {
   d.material.base_color = {unit(rng), unit(rng), unit(rng), 1.0f};
   d.material.specular_color = {unit(rng), unit(rng), unit(rng)};
   // None, a whole number (powers by repeated squaring) or any other (through log2 and exp2).
-  switch (rng() % 5) {
-    case 0: d.material.shininess = 0.0f; break;
-    case 1:
-    case 2: d.material.shininess = std::floor(1.0f + unit(rng) * 127.0f); break;
-    default: d.material.shininess = 1.0f + unit(rng) * 127.0f;
-  }
+  const unsigned shininess_kind = rng() % 5;
+  const float shininess = 1.0f + unit(rng) * 127.0f;
+  d.material.shininess = shininess_kind == 0   ? 0.0f
+                         : shininess_kind <= 2 ? std::floor(shininess)
+                                               : shininess;
   d.uniforms.normal_matrix = glm::mat3(any(rng), any(rng), any(rng), any(rng), any(rng), any(rng),
                                        any(rng), any(rng), any(rng));
   switch (rng() % 3) {

@@ -278,8 +278,8 @@ int SetupBatchLanes(const SetupBatch& b, const SetupBatchTarget& target) {
     solver.solve(inv_w[0], inv_w[1], inv_w[2], dx, dy);
     hn::Store(inv_w[0], df, inv_w0), hn::Store(dx, df, inv_w_dx), hn::Store(dy, df, inv_w_dy);
 
-    // Each kept triangle in order: its record, then its varying planes (a vector at a time but
-    // for a few).
+    // Each kept triangle in order: its record, then its varying planes (a vector at a time, or
+    // in scalars when they are few).
     dropped += std::min(lanes, b.count - first) - std::popcount(kept);
     for (; kept != 0; kept &= static_cast<std::uint8_t>(kept - 1)) {
       const int l = std::countr_zero(kept);

@@ -40,6 +40,7 @@ class PlaneSolver {
     double x1, y1, x2, y2, inv_det;
   };
 
+  explicit PlaneSolver(const Coefficients& c) : c_(c) {}
   PlaneSolver(const float x[3], const float y[3]) {
     c_.x1 = double{x[1]} - x[0];
     c_.y1 = double{y[1]} - y[0];

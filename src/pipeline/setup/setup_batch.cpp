@@ -302,16 +302,10 @@ int SetupBatchLanes(const SetupBatch& b, const SetupBatchTarget& target) {
                                  target.over_w + std::size_t{vertex[swaps ? 1 : 2][l]} * n};
       float* planes = &slot.planes[0].at_ref;
       if (n <= kFewVaryings) {
-        // PlaneSolver::plane a varying at a time, in scalars: a vector would hold these few
-        // planes in a few of its lanes and store a whole vector's worth.
-        for (int k = 0; k < n; ++k) {
-          const double d0 = v[0][k];
-          const double d1 = static_cast<double>(v[1][k]) - d0;
-          const double d2 = static_cast<double>(v[2][k]) - d0;
-          planes[3 * k] = v[0][k];
-          planes[3 * k + 1] = static_cast<float>((d1 * y2[l] - d2 * y1[l]) * inv_det[l]);
-          planes[3 * k + 2] = static_cast<float>((d2 * x1[l] - d1 * x2[l]) * inv_det[l]);
-        }
+        // In scalars: a vector would hold these few planes in a few of its lanes and store a
+        // whole vector's worth.
+        const PlaneSolver one({x1[l], y1[l], x2[l], y2[l], inv_det[l]});
+        for (int k = 0; k < n; ++k) slot.planes[k] = one.plane(v[0][k], v[1][k], v[2][k]);
       } else {
         const Coefficients one{hn::Set(dd, x1[l]), hn::Set(dd, y1[l]), hn::Set(dd, x2[l]),
                                hn::Set(dd, y2[l]), hn::Set(dd, inv_det[l])};

@@ -9,9 +9,11 @@
 
 #include <algorithm>
 #include <bit>
+#include <cstring>
 #include <cmath>
 #include <limits>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "core/color.hpp"
@@ -170,6 +172,64 @@ TEST(SrgbLines, HalvesArePositiveSigned16BitNumbersAtTheirEntries) {
 // Display-referred frames' resolve: every code's display value (code / 255) back to the code,
 // and every channel of the probe values (NaN, infinities, values outside [0, 1] among them)
 // clamped and rounded as alpha is, on every target.
+// The resolve's encode that knows its background's codes gives the plain encode's bytes on every
+// target, the background color's runs mixed with other colors, with those of -0.0 and NaN that
+// share its values but not its bits, at every row length and position; and it does take the
+// known codes for runs of the background: given wrong ones, a row of nothing else shows them (on
+// targets of four lanes or more, which compare a vector of colors at a time).
+TEST(SrgbRowKnowing, GivesThePlainEncodesBytesOnEveryTarget) {
+  const glm::vec4 background{0.2f, 0.0f, 0.7f, 1.0f};
+  const std::vector<float> values = probe_values();
+  std::mt19937 rng(20261206);
+  int compared = 0;
+  for (std::int64_t target : simd_targets()) {
+    ForcedTarget forced(target);
+    const SimdTarget chosen = chosen_simd_target();
+    for (float scale : {1.0f, 0.35f}) {
+      shading::KnownCodes known{background, 0};
+      shading::encode_srgb_row_kernel(chosen)(&background, 1, scale,
+                                              reinterpret_cast<std::uint8_t*>(&known.codes));
+      for (int count : {1, 3, 4, 5, 16, 17, 63, 64, 128}) {
+        for (int round = 0; round < 40; ++round) {
+          std::vector<glm::vec4> row(count, background);
+          // Some rows all background; the others with a run of it and colors besides.
+          const int others = round % 4 == 0 ? 0 : std::uniform_int_distribution<int>(1, count)(rng);
+          for (int k = 0; k < others; ++k) {
+            glm::vec4& c = row[std::uniform_int_distribution<int>(0, count - 1)(rng)];
+            switch (k % 3) {
+              case 0:  // a value of the probe
+                c[k % 4] = values[rng() % values.size()];
+                break;
+              case 1:  // equal to the background's, other bits
+                c.g = -0.0f;
+                break;
+              default:
+                c.r = std::numeric_limits<float>::quiet_NaN();
+            }
+          }
+          std::vector<std::uint8_t> plain(4 * count), knowing(4 * count);
+          shading::encode_srgb_row_kernel(chosen)(row.data(), count, scale, plain.data());
+          shading::encode_srgb_row_knowing_kernel(chosen)(row.data(), count, scale, known,
+                                                          knowing.data());
+          ASSERT_EQ(knowing, plain) << hwy::TargetName(target) << ", row of " << count;
+          compared += count;
+        }
+      }
+    }
+    // Wrong codes for the background show where the kernel took them.
+    const shading::KnownCodes wrong{background, 0x01020304u};
+    std::vector<glm::vec4> row(64, background);
+    std::vector<std::uint8_t> out(4 * 64);
+    shading::encode_srgb_row_knowing_kernel(chosen)(row.data(), 64, 1.0f, wrong, out.data());
+    std::uint32_t first;
+    std::memcpy(&first, out.data(), 4);
+    if (hwy::TargetName(target) != std::string("SCALAR")) {
+      EXPECT_EQ(first, wrong.codes) << hwy::TargetName(target);
+    }
+  }
+  EXPECT_GT(compared, 10000);
+}
+
 TEST(Unorm8Row, RoundsEveryChannelAsAlphaOnEveryTarget) {
   std::vector<glm::vec4> codes(64);
   std::vector<float> values = probe_values();

@@ -8,6 +8,7 @@
 #include <hwy/highway.h>
 
 #include <algorithm>
+#include <cstring>
 #include <span>
 #include <string>
 
@@ -128,19 +129,53 @@ HWY_INLINE void ForEachVector(const float* in, int floats, std::uint8_t* out,
   std::copy_n(padded_out, floats - j, out + j);
 }
 
+// The encode of one vector of floats from `from` (float j of the row on) into `to`.
+HWY_INLINE void EncodeVector(const std::uint32_t* lines, const float* factor, const float* from,
+                             std::uint8_t* to, int j) {
+  const FloatTag df;
+  const IntTag di;
+  // Alpha's factor is 1: its lanes keep their value.
+  const FloatV c = Clamped(hn::Mul(hn::LoadU(df, from), hn::LoadU(df, factor + (j & 3))));
+  // Alpha's lanes (j % 4 == 3, counted from j & 3 on, for vectors of one or two lanes).
+  const IntV three = hn::Set(di, 3);
+  const auto alpha = hn::Eq(hn::And(hn::Iota(di, j & 3), three), three);
+  StoreBytes(hn::IfThenElse(alpha, Rounded(c), SrgbCodes(lines, c)), to);
+}
+
 void EncodeSrgbRow(const glm::vec4* colors, int count, float scale, std::uint8_t* rgba) {
+  const std::uint32_t* lines = srgb_tables().encode_lines.data();
+  alignas(64) float factor[kMaxFloatLanes + 4];
+  FillFactors(scale, kMaxFloatLanes + 4, factor);
+  ForEachVector(&colors[0].x, 4 * count, rgba, [&](const float* from, std::uint8_t* to, int j) {
+    EncodeVector(lines, factor, from, to, j);
+  });
+}
+
+// A vector whose floats all have known's bits takes known's codes; the others are encoded. A
+// channel's code depends on its value and whether it is alpha alone, so the bytes are the
+// encode's either way. Targets of fewer than four lanes encode every vector.
+void EncodeSrgbRowKnowing(const glm::vec4* colors, int count, float scale, const KnownCodes& known,
+                          std::uint8_t* rgba) {
   const FloatTag df;
   const IntTag di;
   const std::uint32_t* lines = srgb_tables().encode_lines.data();
   alignas(64) float factor[kMaxFloatLanes + 4];
   FillFactors(scale, kMaxFloatLanes + 4, factor);
+  const int lanes = static_cast<int>(hn::Lanes(df));
+  if (lanes < 4) {
+    ForEachVector(&colors[0].x, 4 * count, rgba, [&](const float* from, std::uint8_t* to, int j) {
+      EncodeVector(lines, factor, from, to, j);
+    });
+    return;
+  }
+  // Vectors start at a color (j % 4 == 0): known's channels, once per color in the vector.
+  const IntV known_bits = hn::BitCast(di, hn::LoadDup128(df, &known.color.x));
   ForEachVector(&colors[0].x, 4 * count, rgba, [&](const float* from, std::uint8_t* to, int j) {
-    // Alpha's factor is 1: its lanes keep their value.
-    const FloatV c = Clamped(hn::Mul(hn::LoadU(df, from), hn::LoadU(df, factor + (j & 3))));
-    // Alpha's lanes (j % 4 == 3, counted from j & 3 on, for vectors of one or two lanes).
-    const IntV three = hn::Set(di, 3);
-    const auto alpha = hn::Eq(hn::And(hn::Iota(di, j & 3), three), three);
-    StoreBytes(hn::IfThenElse(alpha, Rounded(c), SrgbCodes(lines, c)), to);
+    if (hn::AllTrue(di, hn::Eq(hn::BitCast(di, hn::LoadU(df, from)), known_bits))) {
+      for (int k = 0; k < lanes; k += 4) std::memcpy(to + k, &known.codes, 4);
+    } else {
+      EncodeVector(lines, factor, from, to, j);
+    }
   });
 }
 
@@ -159,10 +194,15 @@ HWY_AFTER_NAMESPACE();
 namespace facet::shading {
 
 HWY_EXPORT(EncodeSrgbRow);
+HWY_EXPORT(EncodeSrgbRowKnowing);
 HWY_EXPORT(RoundUnorm8Row);
 
 EncodeSrgbRowKernel encode_srgb_row_kernel(SimdTarget target) {
   return HWY_DISPATCH_TABLE(EncodeSrgbRow)[target];
+}
+
+EncodeSrgbRowKnowingKernel encode_srgb_row_knowing_kernel(SimdTarget target) {
+  return HWY_DISPATCH_TABLE(EncodeSrgbRowKnowing)[target];
 }
 
 RoundUnorm8RowKernel round_unorm8_row_kernel(SimdTarget target) {

@@ -22,6 +22,19 @@ using EncodeSrgbRowKernel = void (*)(const glm::vec4* colors, int count, float s
                                      std::uint8_t* rgba);
 EncodeSrgbRowKernel encode_srgb_row_kernel(SimdTarget target);
 
+// A color whose codes are known already, and those codes (RGBA, byte 0 red): what the resolve's
+// background pixels hold, the clear color.
+struct KnownCodes {
+  glm::vec4 color{0.0f};
+  std::uint32_t codes = 0;  // the encode kernel's for color at the row's scale
+};
+// As EncodeSrgbRowKernel, except that runs of colors with known.color's bits (a vector of them
+// at a time) take known.codes instead of being encoded again: the same bytes when known.codes
+// is color's encode at this scale. A tile row's undrawn pixels cost a compare.
+using EncodeSrgbRowKnowingKernel = void (*)(const glm::vec4* colors, int count, float scale,
+                                            const KnownCodes& known, std::uint8_t* rgba);
+EncodeSrgbRowKnowingKernel encode_srgb_row_knowing_kernel(SimdTarget target);
+
 // rgba[4 i + c] for the count colors, every channel clamped to [0, 1] (NaN to 0) and rounded
 // to 8 bits as the encode kernel rounds alpha: unorm texture levels, and the resolve of
 // display values (pipeline/output/output.hpp).

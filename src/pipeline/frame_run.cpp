@@ -221,6 +221,10 @@ void Renderer::Impl::run(Framebuffer& target) {
     background.clear_color = pipeline::display_value_of(kernels, settings.clear_color);
     background.clear_codes = pipeline::display_codes(kernels, background.clear_color);
   }
+  resolve.background.reset();
+  if (!referred && !background.environment && target.format() == ColorFormat::rgba8_srgb) {
+    resolve.background = pipeline::background_codes(kernels, resolve, background.clear_color);
+  }
 
   auto bin_start = Clock::now();
   pipeline::bin_primitives(frame, workers);

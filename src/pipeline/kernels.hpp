@@ -29,6 +29,7 @@ struct Kernels {
   RasterKernels raster{};
   SkyRowKernel sky_row = nullptr;
   shading::EncodeSrgbRowKernel encode_srgb_row = nullptr;
+  shading::EncodeSrgbRowKnowingKernel encode_srgb_row_knowing = nullptr;
   shading::RoundUnorm8RowKernel round_unorm8_row = nullptr;
   ToneMapRowKernel tone_map_row = nullptr;
   AverageSamplesRowKernel average_samples_row = nullptr;
@@ -47,6 +48,7 @@ inline Kernels kernels_for(SimdTarget target) {
           raster_kernels(target),
           sky_row_kernel(target),
           shading::encode_srgb_row_kernel(target),
+          shading::encode_srgb_row_knowing_kernel(target),
           shading::round_unorm8_row_kernel(target),
           tone_map_row_kernel(target),
           average_samples_row_kernel(target),

@@ -13,13 +13,17 @@ namespace facet::pipeline {
 namespace {
 
 // Writes one row of linear colors (scaled by the exposure) in the target's format; or of
-// display values, to an 8-bit target, rounded as they are.
+// display values, to an 8-bit target, rounded as they are. Colors with known's bits take its
+// codes without being encoded.
 void store_row(const Kernels& kernels, Framebuffer& target, std::size_t first_pixel,
-               const glm::vec4* colors, int count, float scale, bool display_referred = false) {
+               const glm::vec4* colors, int count, float scale, bool display_referred = false,
+               const shading::KnownCodes* known = nullptr) {
   if (target.format() == ColorFormat::rgba8_srgb) {
     std::uint8_t* out = target.rgba8().data() + first_pixel * 4;
     if (display_referred) {
       kernels.round_unorm8_row(colors, count, out);
+    } else if (known != nullptr) {
+      kernels.encode_srgb_row_knowing(colors, count, scale, *known, out);
     } else {
       kernels.encode_srgb_row(colors, count, scale, out);
     }
@@ -56,6 +60,22 @@ std::uint32_t display_codes(const Kernels& kernels, const glm::vec4& value) {
   std::uint32_t codes;
   kernels.round_unorm8_row(&value, 1, reinterpret_cast<std::uint8_t*>(&codes));
   return codes;
+}
+
+shading::KnownCodes background_codes(const Kernels& kernels, const Resolve& resolve,
+                                     const glm::vec4& clear) {
+  shading::KnownCodes known{clear, 0};
+  float scale = resolve.scale;
+  if (resolve.tone_mapping != ToneMapping::none) {  // as resolve_tile maps a row, then encodes
+    const float depth = kClearDepth;
+    kernels.tone_map_row(resolve.tone_mapping, &clear, &depth, kClearDepth, 1, resolve.scale,
+                         &known.color);
+    scale = 1.0f;
+  }
+  std::uint8_t codes[4];
+  kernels.encode_srgb_row(&known.color, 1, scale, codes);
+  std::memcpy(&known.codes, codes, sizeof(codes));
+  return known;
 }
 
 void clear_tile(TileContext& tile, const Background& background, bool color_hidden) {
@@ -187,7 +207,7 @@ void resolve_tile(const TileContext& tile, const Resolve& resolve, Framebuffer& 
   auto write_row = [&](int y, const glm::vec4* color) {
     const std::size_t row = static_cast<std::size_t>(y) * target.width();
     store_row(*tile.frame->kernels, target, row + tile.x0, color, width, scale,
-              resolve.display_referred);
+              resolve.display_referred, resolve.background ? &*resolve.background : nullptr);
     if (target.has_depth()) {
       const float* depth = tile.depth + static_cast<std::ptrdiff_t>(y - tile.y0) * tile.stride;
       std::copy_n(depth, width, target.depth().data() + row + tile.x0);

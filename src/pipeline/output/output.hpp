@@ -3,8 +3,10 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <glm/glm.hpp>
 
+#include "core/srgb_row.hpp"
 #include "facet/framebuffer.hpp"
 #include "facet/light.hpp"
 #include "facet/renderer.hpp"
@@ -38,6 +40,10 @@ struct Resolve {
   // The background is the environment, mapped as what is drawn is; else only the pixels drawn
   // (their depth no longer the clear depth) are mapped, never the clear color.
   bool maps_background = false;
+  // The linear color an undrawn pixel brings to the encode (the clear color, scaled and never
+  // mapped when tone mapped) and its codes, when the background is that plain color and the
+  // target 8-bit sRGB: its pixels take the codes without being encoded again.
+  std::optional<shading::KnownCodes> background;
 };
 
 // The depth a tile starts at: the far plane.
@@ -55,6 +61,10 @@ void fill_background(TileContext& tile, const Background& background);
 // A linear color as the display value a display-referred tile holds for it: its sRGB codes
 // (the frame's encode kernel) / 255; alpha is never encoded.
 glm::vec4 display_value_of(const Kernels& kernels, const glm::vec4& linear);
+// Resolve::background for a plain clear color: the color an undrawn pixel brings to the encode
+// (scaled, never mapped, when tone mapped) and its codes at the row's scale.
+shading::KnownCodes background_codes(const Kernels& kernels, const Resolve& resolve,
+                                     const glm::vec4& clear);
 // Writes the tile to the framebuffer; colors are scaled by the exposure and tone mapped first
 // (tone_map_row.hpp). A multisampled tile's samples are averaged in linear light, each
 // mapped first (the depth image takes sample 0's depth). In a display-referred frame the tile

@@ -3,8 +3,8 @@
 #pragma once
 
 #include <cstdint>
-#include <optional>
 #include <glm/glm.hpp>
+#include <optional>
 
 #include "core/srgb_row.hpp"
 #include "facet/framebuffer.hpp"

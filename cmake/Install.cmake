@@ -2,6 +2,8 @@
 #   P/include/facet/*.hpp                        public headers (version.hpp generated)
 #   P/lib/libfacet{,-import,-worlds,-sound}.a    the layers (.so with a SONAME when shared)
 #   P/bin/facet                                  the command-line program
+#   P/lib/facet/facet-{view,gl}.so               its modules, in a shared build: the viewer and
+#                                                the OpenGL twin's backend
 #   P/lib/cmake/facet/facet*.cmake               the package: find_package(facet) gives
 #                                                facet::core, ::import, ::worlds, ::sound and
 #                                                the umbrella facet::facet
@@ -29,6 +31,12 @@ install(TARGETS facet_core facet_import facet_worlds facet_sound facet_all EXPOR
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 if(FACET_BUILD_PROGRAM)
   install(TARGETS facet_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+  # The program's modules (apps/facet/modules.hpp), where it looks for them.
+  foreach(module facet_view_module facet_gl_module)
+    if(TARGET ${module})
+      install(TARGETS ${module} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/facet)
+    endif()
+  endforeach()
   install(FILES ${PROJECT_SOURCE_DIR}/data/facet.thumbnailer
           DESTINATION ${CMAKE_INSTALL_DATADIR}/thumbnailers)
 endif()

@@ -1,5 +1,5 @@
-// The viewer's first-person pace (apps/facet/view_controls.cpp), fed held keys without a window:
-// a human walk in the built-in worlds, whose units are metres, whatever their size; a pace
+// The viewer's first-person pace (apps/facet/view/view_controls.cpp), fed held keys without a
+// window: a human walk in the built-in worlds, whose units are metres, whatever their size; a pace
 // scaled by the size of a model of unknown units; Shift runs.
 #include "view_controls.hpp"
 

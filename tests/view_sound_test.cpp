@@ -1,4 +1,4 @@
-// The viewer's islands sound (apps/facet/view_sound.cpp), heard through OpenAL Soft's loopback
+// The viewer's islands sound (apps/facet/view/view_sound.cpp), heard through OpenAL Soft's loopback
 // device: the sources sit where the world's parts are and follow them as the world animates, the
 // listener is the camera, and muting silences everything.
 #include "view_sound.hpp"

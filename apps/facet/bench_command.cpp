@@ -119,7 +119,7 @@ SceneResult run_scene(const std::string& name, bench::BenchScene& scene, const B
 // the pixels read back into the framebuffer as facet's finish() writes them.
 SceneResult run_scene_gl(const std::string& name, bench::BenchScene& scene, const BenchOptions& o,
                          const ImageSize& size) {
-  GlBackend gl(bench_settings(o, scene, size));  // setup: not timed
+  const std::unique_ptr<GlBackend> gl = make_gl_backend(bench_settings(o, scene, size));  // untimed
   Framebuffer framebuffer(size.width, size.height, ColorFormat::rgba8_srgb, DepthImage::none);
   const float aspect = static_cast<float>(size.width) / size.height;
   Camera camera;
@@ -129,9 +129,9 @@ SceneResult run_scene_gl(const std::string& name, bench::BenchScene& scene, cons
       [&](double t) {
         const Scene& frame = *scene.scene_at(t, aspect, camera);
         if (read_back) {
-          gl.render(frame, camera, framebuffer);
+          gl->render(frame, camera, framebuffer);
         } else {
-          gl.draw(frame, camera, framebuffer);
+          gl->draw(frame, camera, framebuffer);
         }
       },
       [] {});
@@ -257,7 +257,7 @@ int run_bench(const BenchOptions& o) {
   }
   if (backend == Backend::gl) {
     set_gl_threads(o.threads);
-    std::printf("OpenGL: %s\n", GlBackend(RenderSettings{}).description().c_str());
+    std::printf("OpenGL: %s\n", make_gl_backend(RenderSettings{})->description().c_str());
   }
   std::vector<SceneResult> results;
   std::printf("%-28s %9s %9s %9s %10s %10s %8s %8s %8s %8s\n", "scene", "median", "min", "max",

@@ -1,5 +1,5 @@
 // Dear ImGui drawn by facet: the font atlas as a facet texture, and a frame's draw data drawn
-// into a framebuffer with draw_overlay. Shared by the viewer's panels (view_overlay.cpp) and
+// into a framebuffer with draw_overlay. Shared by the viewer's panels (view/view_overlay.cpp) and
 // the labels of `facet render --compare` (render_compare.cpp).
 #pragma once
 

@@ -18,27 +18,24 @@ enum class Backend { facet, gl };
 Backend parse_backend(const std::string& flag, const std::string& text);
 const char* backend_name(Backend backend);
 
-// The OpenGL twin, behind a wall: the program compiles and links with or without it.
+// The OpenGL twin (facet::gl, docs/gl_twin.md) as the program uses it: made by the OpenGL
+// module (gl/gl_twin_backend.cpp, modules.hpp), so that only the commands that draw with it load
+// OpenGL.
 class GlBackend {
  public:
-  // Throws facet::Error, one line: the build has no OpenGL backend, or EGL cannot make a
-  // context here (what is missing).
-  explicit GlBackend(const RenderSettings& settings);
-  ~GlBackend();
-  GlBackend(const GlBackend&) = delete;
-  GlBackend& operator=(const GlBackend&) = delete;
+  virtual ~GlBackend() = default;
 
   // "llvmpipe (LLVM 15.0.6, 256 bits), OpenGL 4.5 (Core Profile) Mesa 22.3.6".
-  std::string description() const;
-  const std::string& renderer_name() const;  // "llvmpipe (LLVM 15.0.6, 256 bits)"
-  void render(const Scene& scene, const Camera& camera, Framebuffer& target);
+  virtual std::string description() const = 0;
+  virtual const std::string& renderer_name() const = 0;  // "llvmpipe (LLVM 15.0.6, 256 bits)"
+  virtual void render(const Scene& scene, const Camera& camera, Framebuffer& target) = 0;
   // GlRenderer::draw: the frame timed as glmark2 times one, nothing read back.
-  void draw(const Scene& scene, const Camera& camera, Framebuffer& target);
-  double last_frame_ms() const;
-
- private:
-  struct Impl;
-  std::unique_ptr<Impl> impl_;
+  virtual void draw(const Scene& scene, const Camera& camera, Framebuffer& target) = 0;
+  virtual double last_frame_ms() const = 0;
 };
+
+// Throws facet::Error, one line: the build has no OpenGL backend, its module is not installed,
+// or EGL cannot make a context here (what is missing).
+std::unique_ptr<GlBackend> make_gl_backend(const RenderSettings& settings);
 
 }  // namespace facet::cli

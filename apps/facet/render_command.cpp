@@ -197,7 +197,7 @@ int run_render(const RenderOptions& o) {
   }
   Renderer renderer(settings);
   std::unique_ptr<GlBackend> gl;
-  if (backend == Backend::gl) gl = std::make_unique<GlBackend>(settings);
+  if (backend == Backend::gl) gl = make_gl_backend(settings);
   FrameRenderer frames(renderer, animated, camera, job, size, gl.get());
   if (job.sequence) return render_sequence(job, frames, size);
 

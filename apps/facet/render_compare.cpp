@@ -110,7 +110,7 @@ Framebuffer render_comparison(const std::vector<CompareVariant>& variants, const
       for (Material& material : variant.materials) material.shading = v.shading;
     }
     if (v.backend == Backend::gl) {
-      if (!gl) gl = std::make_unique<GlBackend>(own);
+      if (!gl) gl = make_gl_backend(own);
       gl->render(variant, camera, panel);
     } else {
       if (!renderer) renderer = std::make_unique<Renderer>(own);

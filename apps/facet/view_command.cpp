@@ -1,25 +1,15 @@
-// `facet view` (see view_command.hpp): flags, the scene and the start camera; the frame loop
-// is view_loop.cpp.
+// `facet view` (see view_command.hpp): its flags; the rest is the view module's
+// (view/view_run.cpp: the window, the scene and the start camera; view/view_loop.cpp: the frames).
 #include "view_command.hpp"
 
 #include <CLI/CLI.hpp>
-#include <cmath>
-#include <cstdio>
-#include <memory>
 
-#include "animated_scene.hpp"
 #include "arguments.hpp"
-#include "facet/error.hpp"
-#include "facet/image_io.hpp"
-#include "facet/scene.hpp"
+#include "modules.hpp"
 #include "view_bindings.hpp"
-#include "view_loop.hpp"
-#include "view_window.hpp"
 
 namespace facet::cli {
 namespace {
-
-const std::string kBackground = "0.53,0.66,0.82";  // sRGB sky blue, as `facet render`
 
 std::string view_description() {
   std::string text =
@@ -62,66 +52,6 @@ CLI::App* add_view_command(CLI::App& app, ViewOptions& o) {
   return cmd;
 }
 
-int run_view(const ViewOptions& o) {
-  ImageSize size = parse_size("--size", o.size);
-  check_threads(o.threads);
-  check_msaa(o.msaa);
-  const ToneMapping tone_mapping = parse_tone_mapping(o.tone_mapping);
-  // Off unless asked: shadows cost several times a frame of the islands, reflections another.
-  RenderSettings passes;
-  apply_pass_options(o.passes, false, size, passes);
-  if (o.frames < 0) throw Error("--frames: must be 0 (until closed) or more");
-  if (o.time && !std::isfinite(*o.time)) throw Error("--time: must be a finite number of seconds");
-  if (!o.screenshot.empty()) check_writable(o.screenshot);
-  const Backend backend = parse_backend("--backend", o.backend);
-  glm::vec3 background = parse_color("--background", kBackground);
-  if (auto axis = o.scene.up ? parse_up_axis(*o.scene.up) : std::nullopt;
-      axis && *axis != glm::vec3(0.0f, 1.0f, 0.0f)) {
-    // The first-person and orbit controls turn about +Y; a view turned to another axis would
-    // flip back at the first move.
-    throw Error("--up " + *o.scene.up +
-                ": the viewer's controls keep +Y up; other model axes are for facet render");
-  }
-  ViewSetup setup;
-  if (!o.camera_path.empty()) setup.camera_path = CameraPath::load(o.camera_path);
-  // The window first: with no display the command fails before loading anything.
-  ViewWindow window("facet view", size.width, size.height);
-
-  // A model is posed by the clock (or --time): a glTF model's animation plays, looped
-  // (--animation picks which); the islands move through their world.
-  AnimatedScene loaded(o.scene, o.scene.model.empty() ? std::nullopt : std::optional(0.0));
-  Scene& scene = loaded.scene();
-  if (!o.scene.fog_color) scene.lighting.fog.color = background;
-  setup.scene = &scene;
-  setup.world = loaded.world();
-  setup.animated = &loaded;
-  setup.start = build_camera(o.scene, scene, static_cast<float>(size.width) / size.height);
-  setup.camera_mode = o.scene.model.empty() ? CameraMode::first_person : CameraMode::orbit;
-  setup.walk_speed = walking_speed(scene);
-  setup.settings.size = size;
-  setup.settings.threads = o.threads;
-  setup.settings.msaa = o.msaa;
-  setup.settings.tone_mapping = tone_mapping;
-  setup.passes = passes;
-  setup.settings.fov_degrees = setup.start.fov_y_degrees;
-  setup.settings.overlay = o.overlay == "on" || (o.overlay == "auto" && o.frames == 0);
-  setup.settings.fullscreen = o.fullscreen;
-  setup.settings.backend = backend == Backend::gl ? ViewBackend::gl : ViewBackend::facet;
-  setup.clear_color = glm::vec4(background, 1.0f);
-  setup.fixed_time = o.time;
-  setup.frames = o.frames;
-
-  auto begin = std::chrono::steady_clock::now();
-  ViewLoop loop(window, std::move(setup));
-  int frames = loop.run();
-  if (!o.screenshot.empty() && frames > 0) write_image(loop.last_frame(), o.screenshot);
-
-  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
-  double average_ms = frames ? seconds * 1000.0 / frames : 0.0;
-  std::printf("view: %d frames, %.2f ms/frame average (render %.2f ms), %.1f fps\n", frames,
-              average_ms, frames ? loop.render_ms() / frames : 0.0,
-              seconds > 0 ? frames / seconds : 0.0);
-  return 0;
-}
+int run_view(const ViewOptions& options) { return run_view_module(options); }
 
 }  // namespace facet::cli

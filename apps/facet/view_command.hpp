@@ -31,8 +31,8 @@ struct ViewOptions {
 // Adds the `view` subcommand and its flags to app; options are filled on parse.
 CLI::App* add_view_command(CLI::App& app, ViewOptions& options);
 
-// Opens the window and runs the loop; throws facet::Error on bad values or with no display.
-// Returns the exit code.
+// Opens the window and runs the loop (the view module's, modules.hpp); throws facet::Error on
+// bad values, with no display, or when the module is not installed. Returns the exit code.
 int run_view(const ViewOptions& options);
 
 }  // namespace facet::cli

@@ -2,7 +2,8 @@
 #   1. cmake --install BUILD_DIR into a scratch prefix
 #   2. check the headers, libraries (shared: their SONAME, and that libfacet.so needs no
 #      assimp, OpenAL or SDL), pkg-config files, man page, CMake package; run the installed
-#      `facet --version` and the thumbnailer's Exec line
+#      `facet --version`, the program's modules (shared: the viewer's, run with SDL's dummy
+#      drivers) and the thumbnailer's Exec line
 #   3. configure examples/ against the prefix with find_package(facet COMPONENTS core), with
 #      assimp and OpenAL made unfindable, build it and check hello_triangle needs neither
 #   4. build hello_triangle again with plain g++ $(pkg-config --cflags --libs facet)
@@ -132,6 +133,17 @@ execute_process(COMMAND ${prefix}/bin/facet --version OUTPUT_VARIABLE version_li
 if(NOT result STREQUAL "0" OR NOT version_line STREQUAL "facet ${VERSION}\n")
   message(FATAL_ERROR "install test: facet --version printed '${version_line}', not "
                       "'facet ${VERSION}'")
+endif()
+# A shared build's program starts without the viewer's libraries; its module, in lib/facet/,
+# runs `facet view` (SDL's dummy drivers: no display needed).
+if(SHARED)
+  require_file(${libdir}/facet/facet-view.so)
+  needed_libraries(${prefix}/bin/facet program_needed)
+  if(program_needed MATCHES "SDL|openal|EGL|OpenGL|facet-sound")
+    message(FATAL_ERROR "install test: bin/facet links the modules' libraries: ${program_needed}")
+  endif()
+  run_step("run the installed viewer module" ${CMAKE_COMMAND} -E env SDL_VIDEODRIVER=dummy
+           SDL_AUDIODRIVER=dummy ${prefix}/bin/facet view --frames 1 --size 16x16 --scene shapes)
 endif()
 # The thumbnailer's Exec line, run as a file manager would (%s %i %o filled in, `facet` found
 # in the prefix), must write a PNG thumbnail of a model.

@@ -13,6 +13,13 @@
 namespace facet::pipeline {
 namespace {
 
+// The debug views' resolve: the exposure, nothing mapped.
+Resolve exposure_only(float scale) {
+  Resolve resolve;
+  resolve.scale = scale;
+  return resolve;
+}
+
 // The heat ramp, sRGB display values: black, blue, green, yellow, red, white.
 constexpr std::array<glm::vec3, 6> kRamp = {{{0.0f, 0.0f, 0.0f},
                                              {0.1f, 0.2f, 0.9f},
@@ -64,7 +71,7 @@ void resolve_overdraw(const TileContext& tile, Framebuffer& target) {
 // rounded again by the row kernel.
 void resolve_tile_bins(const TileContext& tile, std::size_t bin_size, float scale,
                        Framebuffer& target) {
-  resolve_tile(tile, Resolve{scale}, target);
+  resolve_tile(tile, exposure_only(scale), target);
   const glm::vec3 tint = heat(static_cast<float>(bin_size), 10.0f);
   const int width = tile.x1 - tile.x0;
   const bool codes = target.format() == ColorFormat::rgba8_srgb;
@@ -111,7 +118,7 @@ void resolve_debug_tile(const TileContext& tile, DebugView view, std::size_t bin
   } else if (view == DebugView::tile_bins) {
     resolve_tile_bins(tile, bin_size, scale, target);
   } else {
-    resolve_tile(tile, Resolve{scale}, target);
+    resolve_tile(tile, exposure_only(scale), target);
   }
 }
 

@@ -56,7 +56,7 @@ ViewLoop::ViewLoop(ViewWindow& window, ViewSetup setup)
   apply_shading();
   make_renderer();
   // Asked for on the command line: no OpenGL is an error there (one line, exit code 2).
-  if (settings_.backend != ViewBackend::facet) gl_ = std::make_unique<GlBackend>(gl_settings());
+  if (settings_.backend != ViewBackend::facet) gl_ = make_gl_backend(gl_settings());
   if (setup_.world) sound_ = std::make_unique<IslandsSound>(*setup_.world);
   if (settings_.fullscreen) window_.set_fullscreen(true);
 }
@@ -75,7 +75,7 @@ RenderSettings ViewLoop::gl_settings() const {
 bool ViewLoop::make_gl() {
   if (gl_ || settings_.backend == ViewBackend::facet) return true;
   try {
-    gl_ = std::make_unique<GlBackend>(gl_settings());
+    gl_ = make_gl_backend(gl_settings());
     return true;
   } catch (const Error& error) {
     settings_.backend = ViewBackend::facet;

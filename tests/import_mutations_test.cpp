@@ -79,6 +79,8 @@ std::vector<Sample> samples() {
        {kSampleModels / "OBJ/cube_usemtl.mtl"},
        {},
        ""},
+      // Plain geometry, facet's own reader's (obj_plain.cpp) unless a mutation makes it more.
+      {"obj_plain", kSampleModels / "OBJ/multiple_spaces.obj", "spaces.obj", {}, {}, ""},
       {"stl_binary", kSampleModels / "STL/Spider_binary.stl", "spider.stl", {}, {80}, ""},
       {"stl_ascii",
        kSampleModels / "STL/triangle_with_two_solids.stl",

@@ -278,8 +278,9 @@ def test_load_reads_outside_files_only_when_allowed(tmp_path):
 
 
 def write_obj_triangle(folder):
-    path = folder / "triangle.obj"  # OBJ: read by assimp, so fenced
-    path.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")
+    # An OBJ with an object line: read by assimp, so fenced (plain geometry alone is facet's).
+    path = folder / "triangle.obj"
+    path.write_text("o triangle\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")
     return path
 
 

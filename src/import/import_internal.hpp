@@ -2,6 +2,7 @@
 // built from. import.cpp dispatches on the file type and finishes every scene the same way.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -36,6 +37,15 @@ Scene import_ply_scene(const std::string& path, const ImportOptions& options);
 // STL, binary or ASCII, welded into one indexed mesh (stl_*.cpp), in the material assimp's
 // reader gave it.
 Scene import_stl_scene(const std::string& path, const ImportOptions& options);
+
+// OBJ text of plain geometry (obj_plain.cpp says which) as one triangle mesh, a vertex per face
+// corner in face order with the corners' normals and texture coordinates, as assimp's reader
+// makes it; nothing when the file holds anything else, or anything assimp would change after
+// reading: assimp's reader then reads the whole file.
+std::optional<Mesh> read_plain_obj(std::string_view text);
+// OBJ: plain geometry read by read_plain_obj, in the scene assimp's reader gave it
+// (obj_import.cpp); every other file by assimp's reader.
+Scene import_obj_scene(const std::string& path, const ImportOptions& options);
 
 // glTF 2.0, .gltf and .glb, through tinygltf (gltf_*.cpp). The scene has meshes, materials,
 // nodes, lights and cameras, but no default camera yet (import_scene frames it).

@@ -31,6 +31,7 @@
 #include "support/render_helpers.hpp"
 #include "support/required_package.hpp"
 #include "support/sample_models.hpp"
+#include "support/scene_compare.hpp"
 
 #ifndef FACET_SANITIZE_THREAD
 #include <tbb/parallel_for.h>
@@ -159,73 +160,6 @@ TEST(ImportFence, TurnedOffTheChildIsNotStarted) {
   ImportOptions options = quiet();
   options.fence_assimp = false;
   EXPECT_EQ(import_error(kBox, options), "");
-}
-
-// What the fenced read hands back (assimp's binary dump of its scene, read back here) is what
-// assimp made reading the file here: every mesh attribute, material, node, camera and light.
-void expect_same_textures(const TextureMap& a, const TextureMap& b) {
-  ASSERT_EQ(a.texture == nullptr, b.texture == nullptr);
-  if (!a.texture) return;
-  EXPECT_EQ(a.texture->level(0).width, b.texture->level(0).width);
-  EXPECT_EQ(a.texture->level(0).rgba8, b.texture->level(0).rgba8);
-  EXPECT_EQ(a.transform, b.transform);
-}
-
-void expect_same_scene(const Scene& a, const Scene& b) {
-  ASSERT_EQ(a.meshes.size(), b.meshes.size());
-  for (std::size_t i = 0; i < a.meshes.size(); ++i) {
-    const Mesh &x = *a.meshes[i], &y = *b.meshes[i];
-    EXPECT_EQ(x.topology, y.topology);
-    EXPECT_EQ(x.positions, y.positions);
-    EXPECT_EQ(x.normals, y.normals);
-    EXPECT_EQ(x.texcoords, y.texcoords);
-    EXPECT_EQ(x.colors, y.colors);
-    EXPECT_EQ(x.tangents, y.tangents);
-    EXPECT_EQ(x.indices, y.indices);
-  }
-  ASSERT_EQ(a.materials.size(), b.materials.size());
-  for (std::size_t i = 0; i < a.materials.size(); ++i) {
-    const Material &x = a.materials[i], &y = b.materials[i];
-    EXPECT_EQ(x.name, y.name);
-    EXPECT_EQ(x.shading, y.shading);
-    EXPECT_EQ(x.base_color, y.base_color);
-    EXPECT_EQ(x.specular_color, y.specular_color);
-    EXPECT_EQ(x.shininess, y.shininess);
-    EXPECT_EQ(x.emissive, y.emissive);
-    EXPECT_EQ(x.cull, y.cull);
-    EXPECT_EQ(x.alpha_mode, y.alpha_mode);
-    expect_same_textures(x.base_color_map, y.base_color_map);
-    expect_same_textures(x.normal_map, y.normal_map);
-    expect_same_textures(x.specular_map, y.specular_map);
-  }
-  ASSERT_EQ(a.nodes.size(), b.nodes.size());
-  for (std::size_t i = 0; i < a.nodes.size(); ++i) {
-    EXPECT_EQ(a.nodes[i].name, b.nodes[i].name);
-    EXPECT_EQ(a.nodes[i].parent, b.nodes[i].parent);
-    EXPECT_EQ(a.nodes[i].transform, b.nodes[i].transform);
-    ASSERT_EQ(a.nodes[i].instances.size(), b.nodes[i].instances.size());
-    for (std::size_t k = 0; k < a.nodes[i].instances.size(); ++k) {
-      EXPECT_EQ(a.nodes[i].instances[k].mesh, b.nodes[i].instances[k].mesh);
-      EXPECT_EQ(a.nodes[i].instances[k].material, b.nodes[i].instances[k].material);
-    }
-  }
-  ASSERT_EQ(a.cameras.size(), b.cameras.size());
-  for (std::size_t i = 0; i < a.cameras.size(); ++i) {
-    EXPECT_EQ(a.cameras[i].eye, b.cameras[i].eye);
-    EXPECT_EQ(a.cameras[i].target, b.cameras[i].target);
-    EXPECT_EQ(a.cameras[i].fov_y_degrees, b.cameras[i].fov_y_degrees);
-    EXPECT_EQ(a.cameras[i].projection_kind, b.cameras[i].projection_kind);
-    EXPECT_EQ(a.cameras[i].view_height, b.cameras[i].view_height);
-  }
-  EXPECT_EQ(a.has_file_lights, b.has_file_lights);
-  ASSERT_EQ(a.lighting.lights.size(), b.lighting.lights.size());
-  for (std::size_t i = 0; i < a.lighting.lights.size(); ++i) {
-    EXPECT_EQ(a.lighting.lights[i].type, b.lighting.lights[i].type);
-    EXPECT_EQ(a.lighting.lights[i].position, b.lighting.lights[i].position);
-    EXPECT_EQ(a.lighting.lights[i].direction, b.lighting.lights[i].direction);
-    EXPECT_EQ(a.lighting.lights[i].color, b.lighting.lights[i].color);
-    EXPECT_EQ(a.lighting.lights[i].intensity, b.lighting.lights[i].intensity);
-  }
 }
 
 // Every file of assimp-testmodels that goes to assimp, models or not: the same scene, the same

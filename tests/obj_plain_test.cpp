@@ -5,12 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <bit>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <limits>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -20,6 +18,7 @@
 #include "import/import_internal.hpp"
 #include "support/required_package.hpp"
 #include "support/sample_models.hpp"
+#include "support/scene_compare.hpp"
 
 namespace facet::test {
 namespace {
@@ -27,77 +26,6 @@ namespace {
 namespace fs = std::filesystem;
 
 const std::string kBunny = "/usr/share/glmark2/models/bunny.obj";
-
-// How far apart two floats are, in units in the last place.
-std::int64_t ulps(float a, float b) {
-  const auto ordered = [](float f) {
-    const auto bits = std::bit_cast<std::int32_t>(f);
-    return bits < 0 ? std::int64_t{std::numeric_limits<std::int32_t>::min()} - bits
-                    : std::int64_t{bits};
-  };
-  return std::abs(ordered(a) - ordered(b));
-}
-
-template <class Vector>
-void expect_near(const std::vector<Vector>& ours, const std::vector<Vector>& theirs,
-                 std::int64_t max_ulps, const char* what) {
-  ASSERT_EQ(ours.size(), theirs.size()) << what;
-  std::int64_t worst = 0;
-  for (std::size_t i = 0; i < ours.size(); ++i) {
-    for (int c = 0; c < Vector::length(); ++c)
-      worst = std::max(worst, ulps(ours[i][c], theirs[i][c]));
-  }
-  EXPECT_LE(worst, max_ulps) << what;
-}
-
-// Scenes equal in what the renderer and the instance ids read; positions within `ulps` units in
-// the last place (assimp's reading of numbers, its own, is not always correctly rounded), and
-// so the normals made from them.
-void expect_same_scene(const Scene& ours, const Scene& theirs, std::int64_t max_ulps = 0) {
-  ASSERT_EQ(ours.nodes.size(), theirs.nodes.size());
-  for (std::size_t i = 0; i < ours.nodes.size(); ++i) {
-    const SceneNode &a = ours.nodes[i], &b = theirs.nodes[i];
-    EXPECT_EQ(a.name, b.name) << "node " << i;
-    EXPECT_EQ(a.parent, b.parent) << "node " << i;
-    EXPECT_EQ(a.transform, b.transform) << "node " << i;
-    ASSERT_EQ(a.instances.size(), b.instances.size()) << "node " << i;
-    for (std::size_t k = 0; k < a.instances.size(); ++k) {
-      EXPECT_EQ(a.instances[k].mesh, b.instances[k].mesh);
-      EXPECT_EQ(a.instances[k].material, b.instances[k].material);
-    }
-  }
-  ASSERT_EQ(ours.materials.size(), theirs.materials.size());
-  for (std::size_t i = 0; i < ours.materials.size(); ++i) {
-    const Material &a = ours.materials[i], &b = theirs.materials[i];
-    EXPECT_EQ(a.name, b.name);
-    EXPECT_EQ(a.shading, b.shading);
-    EXPECT_EQ(a.base_color, b.base_color);
-    EXPECT_EQ(a.use_vertex_colors, b.use_vertex_colors);
-    EXPECT_EQ(a.specular_color, b.specular_color);
-    EXPECT_EQ(a.shininess, b.shininess);
-    EXPECT_EQ(a.metallic, b.metallic);
-    EXPECT_EQ(a.roughness, b.roughness);
-    EXPECT_EQ(a.emissive, b.emissive);
-    EXPECT_EQ(a.reflectivity, b.reflectivity);
-    EXPECT_EQ(a.cull, b.cull);
-    EXPECT_EQ(a.alpha_mode, b.alpha_mode);
-    EXPECT_EQ(a.casts_shadows, b.casts_shadows);
-    EXPECT_FALSE(a.base_color_map || b.base_color_map);
-  }
-  EXPECT_EQ(ours.textures.size(), theirs.textures.size());
-  EXPECT_EQ(ours.has_file_lights, theirs.has_file_lights);
-  ASSERT_EQ(ours.meshes.size(), theirs.meshes.size());
-  for (std::size_t i = 0; i < ours.meshes.size(); ++i) {
-    const Mesh &a = *ours.meshes[i], &b = *theirs.meshes[i];
-    EXPECT_EQ(a.topology, b.topology);
-    expect_near(a.positions, b.positions, max_ulps, "positions");
-    expect_near(a.normals, b.normals, 2 * max_ulps, "normals");
-    expect_near(a.texcoords, b.texcoords, max_ulps, "texture coordinates");
-    EXPECT_EQ(a.colors, b.colors);
-    EXPECT_EQ(a.tangents, b.tangents);
-    EXPECT_EQ(a.indices, b.indices);
-  }
-}
 
 fs::path write_model(const std::string& name, const std::string& text) {
   const fs::path dir = fs::path(::testing::TempDir()) / "facet_obj_plain";

@@ -26,6 +26,7 @@ Scene import_obj_scene(const std::string& path, const ImportOptions& options) {
   material.base_color = glm::vec4(0.6f, 0.6f, 0.6f, 1.0f);
   finish_mesh(*mesh, material, options, path + ": mesh 0");
   Scene scene;
+  scene.lighting.lights.clear();  // the file has none (import_scene lights it)
   scene.materials.push_back(std::move(material));
   scene.meshes.push_back(std::make_shared<const Mesh>(std::move(*mesh)));
   SceneNode root;

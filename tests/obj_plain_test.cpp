@@ -143,6 +143,7 @@ TEST(ObjPlain, AnythingElseGoesToAssimp) {
       "v 0 0 0 1 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",  // a vertex color
       "v 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",          // two numbers
       "v 0 0 3.1+e2\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",   // assimp's own number reading
+      "v 0 0 +-1\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",      // two signs
       "v 0 0 inf\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",      // not finite
       "v 0 0 nan\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
       "v 0 0 1e39\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",      // beyond a float

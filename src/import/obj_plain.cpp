@@ -46,8 +46,9 @@ bool split(std::string_view line, std::string_view* tokens, int capacity, int& c
 
 // A number as the header says, the whole token, or nothing.
 std::optional<float> number(std::string_view token) {
-  if (!token.empty() && token.front() == '+') token.remove_prefix(1);  // from_chars takes '-' only
-  const std::size_t first = !token.empty() && token.front() == '-' ? 1 : 0;
+  const bool plus = !token.empty() && token.front() == '+';
+  if (plus) token.remove_prefix(1);  // from_chars takes '-' only
+  const std::size_t first = !plus && !token.empty() && token.front() == '-' ? 1 : 0;
   // Digits or a point first: no "inf", "nan" or hexadecimal.
   if (token.size() <= first || !(is_digit(token[first]) || token[first] == '.')) return {};
   float value = 0.0f;

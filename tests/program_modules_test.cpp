@@ -45,6 +45,12 @@ TEST(ProgramModules, WithoutThemTheProgramRendersAndSaysWhichIsMissing) {
   EXPECT_EQ(render.exit_code, 0) << render.stderr_text;
   EXPECT_TRUE(fs::exists(dir / "facet.png"));
 
+  // Bad flags are told first, as where the module is.
+  const CommandResult bad_flag = run_command(run + "view --msaa 3");
+  EXPECT_EQ(bad_flag.exit_code, kUsageError);
+  EXPECT_NE(bad_flag.stderr_text.find("--msaa"), std::string::npos) << bad_flag.stderr_text;
+  EXPECT_EQ(bad_flag.stderr_text.find("module"), std::string::npos) << bad_flag.stderr_text;
+
   const CommandResult view = run_command(run + "view --frames 1");
   EXPECT_EQ(view.exit_code, kUsageError);
   EXPECT_EQ(view.stderr_text.rfind("facet: error: facet view needs the module facet-view.so, "

@@ -3,13 +3,18 @@
 #include "view_command.hpp"
 
 #include <CLI/CLI.hpp>
+#include <cmath>
 
 #include "arguments.hpp"
+#include "facet/error.hpp"
+#include "facet/image_io.hpp"
 #include "modules.hpp"
 #include "view_bindings.hpp"
 
 namespace facet::cli {
 namespace {
+
+const std::string kBackground = "0.53,0.66,0.82";  // sRGB sky blue, as `facet render`
 
 std::string view_description() {
   std::string text =
@@ -52,6 +57,32 @@ CLI::App* add_view_command(CLI::App& app, ViewOptions& o) {
   return cmd;
 }
 
-int run_view(const ViewOptions& options) { return run_view_module(options); }
+ViewArguments view_arguments(const ViewOptions& o) {
+  ViewArguments a;
+  a.size = parse_size("--size", o.size);
+  check_threads(o.threads);
+  check_msaa(o.msaa);
+  a.tone_mapping = parse_tone_mapping(o.tone_mapping);
+  // Off unless asked: shadows cost several times a frame of the islands, reflections another.
+  apply_pass_options(o.passes, false, a.size, a.passes);
+  if (o.frames < 0) throw Error("--frames: must be 0 (until closed) or more");
+  if (o.time && !std::isfinite(*o.time)) throw Error("--time: must be a finite number of seconds");
+  if (!o.screenshot.empty()) check_writable(o.screenshot);
+  a.backend = parse_backend("--backend", o.backend);
+  a.background = parse_color("--background", kBackground);
+  if (auto axis = o.scene.up ? parse_up_axis(*o.scene.up) : std::nullopt;
+      axis && *axis != glm::vec3(0.0f, 1.0f, 0.0f)) {
+    // The first-person and orbit controls turn about +Y; a view turned to another axis would
+    // flip back at the first move.
+    throw Error("--up " + *o.scene.up +
+                ": the viewer's controls keep +Y up; other model axes are for facet render");
+  }
+  return a;
+}
+
+int run_view(const ViewOptions& options) {
+  view_arguments(options);  // bad flags are told before the module is looked for
+  return run_view_module(options);
+}
 
 }  // namespace facet::cli

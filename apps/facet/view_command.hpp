@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cli_fwd.hpp"
+#include "render_backend.hpp"
 #include "render_command.hpp"
 #include "scene_options.hpp"
 
@@ -30,6 +31,17 @@ struct ViewOptions {
 
 // Adds the `view` subcommand and its flags to app; options are filled on parse.
 CLI::App* add_view_command(CLI::App& app, ViewOptions& options);
+
+// The flags' values, checked: throws facet::Error naming the first bad flag. run_view checks them
+// before it loads the view module, which reads them here again.
+struct ViewArguments {
+  ImageSize size;
+  ToneMapping tone_mapping = ToneMapping::pbr_neutral;
+  RenderSettings passes;  // --shadows, its map size and cascades, --reflections
+  Backend backend = Backend::facet;
+  glm::vec3 background{0.0f};  // the clear color and the fog's, as parse_color reads them
+};
+ViewArguments view_arguments(const ViewOptions& options);
 
 // Opens the window and runs the loop (the view module's, modules.hpp); throws facet::Error on
 // bad values, with no display, or when the module is not installed. Returns the exit code.

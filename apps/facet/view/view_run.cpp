@@ -2,13 +2,10 @@
 // (view_command.cpp): the window, the scene and the start camera; then the frames
 // (view_loop.cpp).
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <memory>
 
 #include "animated_scene.hpp"
-#include "arguments.hpp"
-#include "facet/error.hpp"
 #include "facet/image_io.hpp"
 #include "facet/scene.hpp"
 #include "modules.hpp"
@@ -19,54 +16,34 @@
 namespace facet::cli {
 namespace {
 
-const std::string kBackground = "0.53,0.66,0.82";  // sRGB sky blue, as `facet render`
-
 int open_viewer(const ViewOptions& o) {
-  ImageSize size = parse_size("--size", o.size);
-  check_threads(o.threads);
-  check_msaa(o.msaa);
-  const ToneMapping tone_mapping = parse_tone_mapping(o.tone_mapping);
-  // Off unless asked: shadows cost several times a frame of the islands, reflections another.
-  RenderSettings passes;
-  apply_pass_options(o.passes, false, size, passes);
-  if (o.frames < 0) throw Error("--frames: must be 0 (until closed) or more");
-  if (o.time && !std::isfinite(*o.time)) throw Error("--time: must be a finite number of seconds");
-  if (!o.screenshot.empty()) check_writable(o.screenshot);
-  const Backend backend = parse_backend("--backend", o.backend);
-  glm::vec3 background = parse_color("--background", kBackground);
-  if (auto axis = o.scene.up ? parse_up_axis(*o.scene.up) : std::nullopt;
-      axis && *axis != glm::vec3(0.0f, 1.0f, 0.0f)) {
-    // The first-person and orbit controls turn about +Y; a view turned to another axis would
-    // flip back at the first move.
-    throw Error("--up " + *o.scene.up +
-                ": the viewer's controls keep +Y up; other model axes are for facet render");
-  }
+  const ViewArguments a = view_arguments(o);
   ViewSetup setup;
   if (!o.camera_path.empty()) setup.camera_path = CameraPath::load(o.camera_path);
   // The window first: with no display the command fails before loading anything.
-  ViewWindow window("facet view", size.width, size.height);
+  ViewWindow window("facet view", a.size.width, a.size.height);
 
   // A model is posed by the clock (or --time): a glTF model's animation plays, looped
   // (--animation picks which); the islands move through their world.
   AnimatedScene loaded(o.scene, o.scene.model.empty() ? std::nullopt : std::optional(0.0));
   Scene& scene = loaded.scene();
-  if (!o.scene.fog_color) scene.lighting.fog.color = background;
+  if (!o.scene.fog_color) scene.lighting.fog.color = a.background;
   setup.scene = &scene;
   setup.world = loaded.world();
   setup.animated = &loaded;
-  setup.start = build_camera(o.scene, scene, static_cast<float>(size.width) / size.height);
+  setup.start = build_camera(o.scene, scene, static_cast<float>(a.size.width) / a.size.height);
   setup.camera_mode = o.scene.model.empty() ? CameraMode::first_person : CameraMode::orbit;
   setup.walk_speed = walking_speed(scene);
-  setup.settings.size = size;
+  setup.settings.size = a.size;
   setup.settings.threads = o.threads;
   setup.settings.msaa = o.msaa;
-  setup.settings.tone_mapping = tone_mapping;
-  setup.passes = passes;
+  setup.settings.tone_mapping = a.tone_mapping;
+  setup.passes = a.passes;
   setup.settings.fov_degrees = setup.start.fov_y_degrees;
   setup.settings.overlay = o.overlay == "on" || (o.overlay == "auto" && o.frames == 0);
   setup.settings.fullscreen = o.fullscreen;
-  setup.settings.backend = backend == Backend::gl ? ViewBackend::gl : ViewBackend::facet;
-  setup.clear_color = glm::vec4(background, 1.0f);
+  setup.settings.backend = a.backend == Backend::gl ? ViewBackend::gl : ViewBackend::facet;
+  setup.clear_color = glm::vec4(a.background, 1.0f);
   setup.fixed_time = o.time;
   setup.frames = o.frames;
 

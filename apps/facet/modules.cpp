@@ -3,10 +3,12 @@
 
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <string>
 
 #include "facet/error.hpp"
+#include "render_backend.hpp"
 
 #if !FACET_MODULES_BUILT_IN
 #include <dlfcn.h>
@@ -55,24 +57,24 @@ Function* module_entry(const std::string& name, const char* symbol, const std::s
 
 }  // namespace
 
-int run_view_module(const ViewOptions& options) {
+int run_view_module(const ViewOptions& options, const ViewArguments& arguments) {
 #if FACET_MODULES_BUILT_IN
-  return facet_view_run(options);
+  return facet_view_run(options, arguments);
 #else
-  return module_entry<decltype(facet_view_run)>("facet-view", "facet_view_run",
-                                                "facet view")(options);
+  return module_entry<decltype(facet_view_run)>("facet-view", "facet_view_run", "facet view")(
+      options, arguments);
 #endif
 }
 
-GlBackend* new_gl_backend(const RenderSettings& settings) {
+std::unique_ptr<GlBackend> make_gl_backend(const RenderSettings& settings) {
 #if !FACET_HAS_GL
   (void)settings;
   throw Error("--backend gl: this facet was built without the OpenGL backend (FACET_BUILD_GL=OFF)");
 #elif FACET_MODULES_BUILT_IN
-  return facet_gl_backend_new(settings);
+  return std::unique_ptr<GlBackend>(facet_gl_backend_new(settings));
 #else
-  return module_entry<decltype(facet_gl_backend_new)>("facet-gl", "facet_gl_backend_new",
-                                                      "--backend gl")(settings);
+  return std::unique_ptr<GlBackend>(module_entry<decltype(facet_gl_backend_new)>(
+      "facet-gl", "facet_gl_backend_new", "--backend gl")(settings));
 #endif
 }
 

@@ -1,8 +1,8 @@
 // The program's parts that need a desktop's libraries are modules of their own, loaded by the
 // commands that use them: `facet view` (view/: SDL2's window, OpenAL's sound; facet-view.so) and
 // the OpenGL twin (gl/: EGL and OpenGL; facet-gl.so, for --backend gl and the viewer's B key).
-// Every other command starts without those libraries (some sixty with theirs: about 12 ms of
-// start-up instead of 20) and runs where they are not installed, as on a headless server.
+// Every other command starts without loading those libraries, and the dozens they load in
+// turn, and runs where they are not installed, as on a headless server.
 //
 // Found next to the program (the build tree), else in the library folder's facet/ (installed:
 // lib/facet/ beside lib/libfacet.so). Builds with static libraries link both modules in: a
@@ -14,18 +14,19 @@
 namespace facet::cli {
 
 struct ViewOptions;
+struct ViewArguments;
 class GlBackend;
 
-// facet_view_run in the view module. Throws facet::Error, one line, when it cannot be loaded.
-int run_view_module(const ViewOptions& options);
-// facet_gl_backend_new in the OpenGL module (the caller owns the backend). Throws facet::Error,
-// one line, when the build has no OpenGL twin or the module cannot be loaded.
-GlBackend* new_gl_backend(const RenderSettings& settings);
+// facet_view_run in the view module, with the flags and their checked values. Throws
+// facet::Error, one line, when it cannot be loaded. (The OpenGL module's entry is called by
+// make_gl_backend, render_backend.hpp.)
+int run_view_module(const ViewOptions& options, const ViewArguments& arguments);
 
 }  // namespace facet::cli
 
 // The modules' entry points, found by these names in a shared build.
 extern "C" {
-int facet_view_run(const facet::cli::ViewOptions& options);                          // view/
+int facet_view_run(const facet::cli::ViewOptions& options,
+                   const facet::cli::ViewArguments& arguments);                      // view/
 facet::cli::GlBackend* facet_gl_backend_new(const facet::RenderSettings& settings);  // gl/
 }

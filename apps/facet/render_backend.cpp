@@ -2,7 +2,6 @@
 #include "render_backend.hpp"
 
 #include "facet/error.hpp"
-#include "modules.hpp"
 
 namespace facet::cli {
 
@@ -13,9 +12,5 @@ Backend parse_backend(const std::string& flag, const std::string& text) {
 }
 
 const char* backend_name(Backend backend) { return backend == Backend::gl ? "gl" : "facet"; }
-
-std::unique_ptr<GlBackend> make_gl_backend(const RenderSettings& settings) {
-  return std::unique_ptr<GlBackend>(new_gl_backend(settings));
-}
 
 }  // namespace facet::cli

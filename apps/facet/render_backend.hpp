@@ -34,8 +34,9 @@ class GlBackend {
   virtual double last_frame_ms() const = 0;
 };
 
-// Throws facet::Error, one line: the build has no OpenGL backend, its module is not installed,
-// or EGL cannot make a context here (what is missing).
+// The OpenGL module's backend (modules.cpp). Throws facet::Error, one line: the build has no
+// OpenGL backend, its module is not installed, or EGL cannot make a context here (what is
+// missing).
 std::unique_ptr<GlBackend> make_gl_backend(const RenderSettings& settings);
 
 }  // namespace facet::cli

@@ -81,8 +81,8 @@ ViewArguments view_arguments(const ViewOptions& o) {
 }
 
 int run_view(const ViewOptions& options) {
-  view_arguments(options);  // bad flags are told before the module is looked for
-  return run_view_module(options);
+  // Bad flags are told before the module is looked for.
+  return run_view_module(options, view_arguments(options));
 }
 
 }  // namespace facet::cli

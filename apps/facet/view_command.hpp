@@ -33,7 +33,7 @@ struct ViewOptions {
 CLI::App* add_view_command(CLI::App& app, ViewOptions& options);
 
 // The flags' values, checked: throws facet::Error naming the first bad flag. run_view checks them
-// before it loads the view module, which reads them here again.
+// before it loads the view module and hands them to it.
 struct ViewArguments {
   ImageSize size;
   ToneMapping tone_mapping = ToneMapping::pbr_neutral;

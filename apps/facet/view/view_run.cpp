@@ -16,8 +16,7 @@
 namespace facet::cli {
 namespace {
 
-int open_viewer(const ViewOptions& o) {
-  const ViewArguments a = view_arguments(o);
+int open_viewer(const ViewOptions& o, const ViewArguments& a) {
   ViewSetup setup;
   if (!o.camera_path.empty()) setup.camera_path = CameraPath::load(o.camera_path);
   // The window first: with no display the command fails before loading anything.
@@ -63,6 +62,7 @@ int open_viewer(const ViewOptions& o) {
 }  // namespace
 }  // namespace facet::cli
 
-extern "C" int facet_view_run(const facet::cli::ViewOptions& options) {
-  return facet::cli::open_viewer(options);
+extern "C" int facet_view_run(const facet::cli::ViewOptions& options,
+                              const facet::cli::ViewArguments& arguments) {
+  return facet::cli::open_viewer(options, arguments);
 }

@@ -71,8 +71,8 @@ TEST(ObjPlain, EveryCornerFormGivesAssimpsScene) {
   }
 }
 
-// The bunny's 104,505 numbers: four are a unit in the last place off in assimp's reading, and
-// each of ours is the float nearest the number written (strtof's).
+// assimp reads numbers its own way, not always correctly rounded: positions may be a unit in the
+// last place off; each of ours is the float nearest the number written (strtof's).
 TEST(ObjPlain, TheSampleFilesOfPlainGeometryGiveAssimpsScene) {
   FACET_REQUIRE_PACKAGE(fs::exists(kBunny), kBunny << " is not installed (glmark2-data)");
   FACET_REQUIRE_PACKAGE(fs::exists(kSampleModels), "assimp-testmodels is not installed");

@@ -68,9 +68,9 @@ Scene import_scene(const std::string& path, const ImportOptions& options) {
   io::check_model_file(path);
   const std::string extension = io::lower_case(std::filesystem::path(path).extension().string());
   // facet's own readers where it has one (PLY: assimp 5.2's hangs and crashes on damaged files;
-  // STL: assimp's takes 460 bytes a triangle and one thread; OBJ of plain geometry: without
-  // assimp's fenced child, 5 times as fast; glTF through tinygltf, a reader made for it:
-  // gltf_scene.cpp).
+  // STL: assimp's takes 460 bytes a triangle and one thread; OBJ of plain geometry, read
+  // without assimp's fenced child, other OBJ by assimp; glTF through tinygltf, a reader made for
+  // it: gltf_scene.cpp).
   Scene scene = extension == ".d"     ? io::import_d_scene(path, options)
                 : extension == ".ply" ? io::import_ply_scene(path, options)
                 : extension == ".stl" ? io::import_stl_scene(path, options)

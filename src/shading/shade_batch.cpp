@@ -118,16 +118,20 @@ HWY_INLINE Vec3V DiffuseLight(const DrawUniforms& u, const Vec3V& normal, const 
   return light;
 }
 
-// Distance fog at pixels j.. of `in`: the color mixed with the fog color, keeping FogKeep's
-// share (fog_batch-inl.h).
-HWY_INLINE void Fogged(const Fog& fog, const ViewDepth& depth, const ShadeInput& in, int j,
-                       FloatV color[3]) {
+// The color mixed with the fog color, keeping `keep` of it.
+HWY_INLINE void FoggedBy(const Fog& fog, FloatV keep, FloatV color[3]) {
   const FloatTag d;
-  const FloatV keep = FogKeep(fog, depth, in, j);
   const FloatV lose = hn::Sub(hn::Set(d, 1.0f), keep);
   for (int c = 0; c < 3; ++c) {
     color[c] = hn::Add(hn::Mul(hn::Set(d, fog.color[c]), lose), hn::Mul(color[c], keep));
   }
+}
+
+// Distance fog at pixels j.. of `in`: the color mixed with the fog color, keeping FogKeep's
+// share (fog_batch-inl.h).
+HWY_INLINE void Fogged(const Fog& fog, const ViewDepth& depth, const ShadeInput& in, int j,
+                       FloatV color[3]) {
+  FoggedBy(fog, FogKeep(fog, depth, in, j), color);
 }
 
 // Phong's and Blinn-Phong's light: albedo x ambient, plus for each light facing the surface
@@ -320,6 +324,14 @@ void ShadeModel(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
   const Albedo base{{hn::Set(d, m.base_color.r), hn::Set(d, m.base_color.g),
                      hn::Set(d, m.base_color.b), hn::Set(d, m.base_color.a)}};
   const Vec3V emissive_factor = Set3(m.emissive);
+  // Fog's shares first, in a loop of their own: its polynomial is a long chain of dependent
+  // operations, which a loop this short overlaps across vectors and the shading loop would not.
+  alignas(64) float fog_keep[kShadeBatch];
+  if (fogged) {
+    for (int j = 0; j < in.count; j += lanes) {
+      hn::Store(FogKeep(*in.fog, u.frame->view_depth, in, j), d, fog_keep + j);
+    }
+  }
   for (int j = 0; j < in.count; j += lanes) {
     const Albedo albedo = LoadAlbedo(in, j, kConstantColor ? &base : nullptr);
     Vec3V emission = emissive_factor;
@@ -386,7 +398,7 @@ void ShadeModel(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
       color[3] = albedo.c[3];
     }
     if (in.opaque) color[3] = hn::Set(d, 1.0f);
-    if (fogged) Fogged(*in.fog, u.frame->view_depth, in, j, color);
+    if (fogged) FoggedBy(*in.fog, hn::Load(d, fog_keep + j), color);
     StoreColors(color, ColorAt(rgba, in.rgba_row_stride, j));
   }
 }

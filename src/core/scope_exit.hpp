@@ -9,5 +9,8 @@ struct ScopeExit {
   F f;
   ~ScopeExit() { f(); }
 };
+// (C++20 deduces an aggregate's arguments without it; clang before 17 does not.)
+template <class F>
+ScopeExit(F) -> ScopeExit<F>;
 
 }  // namespace facet

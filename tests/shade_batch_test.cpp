@@ -59,7 +59,7 @@ void fill(std::mt19937& rng, Inputs& in) {
 struct Draw {
   Material material;
   Lighting lighting;
-  shading::LightData lights[3];
+  shading::LightData lights[6];
   shading::IrradianceHarmonics environment_light{};
   shading::ShadingKernels kernels;
   shading::FrameUniforms frame;
@@ -399,6 +399,67 @@ TEST(ShadeBatch, PhongAndBlinnPhongPeakAtTheMirrorDirection) {
     const float off = blinn ? shade_pixel<shading::BlinnPhongShading>(in, draw).r
                             : shade_pixel<shading::PhongShading>(in, draw).r;
     EXPECT_LT(off, 0.1f) << blinn;
+  }
+}
+
+// Each light adds its own highlight, whatever its kind and its place among the lights (the first
+// directional lights' highlights are found ahead of the shading loop, the others in it): a batch
+// of pixels of different normals and places under six lights of different strengths, a point
+// light among them, against the sum written out.
+TEST(ShadeBatch, PhongAndBlinnPhongAddEachLightsHighlight) {
+  const glm::vec3 eye(0, 0, 10), lamp_at(1, -1, 3);
+  const std::vector<shading::LightData> lights = {sun(glm::normalize(glm::vec3(1, 0, 2)), 1.0f),
+                                                  lamp(lamp_at, 4.0f),
+                                                  sun(glm::normalize(glm::vec3(0, 1, 1)), 2.0f),
+                                                  sun(glm::normalize(glm::vec3(-1, 1, 3)), 0.25f),
+                                                  sun(glm::normalize(glm::vec3(1, 1, 1)), 3.0f),
+                                                  sun(glm::normalize(glm::vec3(-2, -1, 2)), 0.75f)};
+  for (bool blinn : {false, true}) {
+    Inputs in;
+    Draw draw;
+    plain_draw(draw, {});
+    std::copy(lights.begin(), lights.end(), draw.lights);
+    draw.frame.light_count = static_cast<int>(lights.size());
+    draw.material.specular_color = glm::vec3(1.0f);
+    draw.frame.eye = eye;
+    glm::vec3 normal[kShadeBatch], position[kShadeBatch];
+    for (int n = 0; n < kShadeBatch; ++n) {
+      normal[n] = glm::normalize(glm::vec3((n % 8 - 3.5f) * 0.2f, (n / 8 - 3.5f) * 0.2f, 1.0f));
+      position[n] = glm::vec3(n % 8 - 3.5f, n / 8 - 3.5f, 0.0f) * 0.25f;
+      for (int c = 0; c < 3; ++c) {
+        in.v[shading::kNormalSlot + c][n] = normal[n][c];
+        in.v[shading::kPositionSlot + c][n] = position[n][c];
+      }
+      for (int c = 0; c < 4; ++c) in.v[shading::kColorSlot + c][n] = draw.material.base_color[c];
+    }
+    alignas(64) float rgba[kShadeBatch][4];
+    const shading::ShadeInput input =
+        blinn ? shade_input<shading::BlinnPhongShading>(in, kShadeBatch, draw)
+              : shade_input<shading::PhongShading>(in, kShadeBatch, draw);
+    if (blinn) {
+      shading::BlinnPhongShading::fragment_batch(draw.uniforms, input, rgba);
+    } else {
+      shading::PhongShading::fragment_batch(draw.uniforms, input, rgba);
+    }
+    for (int n = 0; n < kShadeBatch; ++n) {
+      const glm::vec3 view = glm::normalize(eye - position[n]);
+      float expected = 0.5f * 0.25f;  // albedo x ambient
+      for (const shading::LightData& l : lights) {
+        glm::vec3 to_light = l.to_light;
+        float radiance = l.radiance.x;
+        if (l.type == LightType::point) {
+          const glm::vec3 d = l.position - position[n];
+          to_light = glm::normalize(d);
+          radiance /= glm::dot(d, d);
+        }
+        const float n_dot_l = glm::dot(normal[n], to_light);
+        if (n_dot_l <= 0.0f) continue;
+        const float along = blinn ? glm::dot(normal[n], glm::normalize(to_light + view))
+                                  : glm::dot(glm::reflect(-to_light, normal[n]), view);
+        expected += radiance * (0.5f * n_dot_l + std::pow(std::max(along, 0.0f), 32.0f));
+      }
+      EXPECT_NEAR(rgba[n][0], expected, 1e-4f * expected) << (blinn ? "Blinn" : "Phong") << n;
+    }
   }
 }
 

@@ -134,26 +134,6 @@ HWY_INLINE void Fogged(const Fog& fog, const ViewDepth& depth, const ShadeInput&
   FoggedBy(fog, FogKeep(fog, depth, in, j), color);
 }
 
-// The highlight of a light in direction to_light before its radiance: max(0, N.H)^shininess
-// with H the half vector (Blinn), or max(0, R.V)^shininess with R the light's mirror direction.
-HWY_INLINE FloatV Highlight(const Material& m, bool blinn, const Vec3V& n, const Vec3V& view,
-                            const Vec3V& to_light) {
-  const FloatTag d;
-  if (m.shininess == 0.0f) return hn::Set(d, 1.0f);
-  const FloatV along =
-      blinn ? Dot(n, Normalize({hn::Add(to_light.x, view.x), hn::Add(to_light.y, view.y),
-                                hn::Add(to_light.z, view.z)}))
-            : Dot(Reflect(Negate(to_light), n), view);
-  return PortablePow(StdMax(along, hn::Zero(d)), m.shininess);
-}
-
-// Highlights found before the shading loop (ShadeModel), of the batch's first lights: for each,
-// a row of kShadeBatch, or null where the loop finds them.
-inline constexpr int kHighlightsAhead = 4;
-struct HighlightsAhead {
-  const float* of[kHighlightsAhead] = {};
-};
-
 // Phong's and Blinn-Phong's light at pixels j..: albedo x ambient, plus for each light facing
 // the surface radiance x (albedo N.L + specular x highlight), the radiance after the light's
 // shadow at `position` (active: the batch's lanes); the highlights found ahead taken as found.
@@ -170,9 +150,8 @@ HWY_INLINE Vec3V SpecularLight(const DrawUniforms& u, bool blinn, const Vec3V& n
     IncidentV in = Incident(l, position);
     const Vec3V& to_light = in.direction;
     const FloatV n_dot_l = Dot(n, to_light);
-    const FloatV highlight = i < kHighlightsAhead && ahead.of[i] != nullptr
-                                 ? hn::Load(d, ahead.of[i] + j)
-                                 : Highlight(m, blinn, n, view, to_light);
+    const FloatV highlight =
+        ahead.at(i, j, [&]() HWY_ATTR { return Highlight(m, blinn, n, view, to_light); });
     const auto lit = hn::Not(hn::Le(n_dot_l, hn::Zero(d)));  // facing the light (not NaN)
     in.radiance = ReceivedRadiance(l, in, position, n, hn::And(lit, active));
     const FloatV* a = albedo.c;
@@ -365,24 +344,17 @@ void ShadeModel(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
       }
     }
   }
-  // And the highlights of the first directional lights, where the normals are the unit ones
-  // (no normal map bends them): a power is a chain of multiplications.
+  // And the highlights of the first directional lights (light_batch-inl.h), where no normal map
+  // bends the normals.
   alignas(64) float highlights[kPhong ? kHighlightsAhead : 1][kPhong ? kShadeBatch : 1];
   HighlightsAhead ahead;
   if constexpr (kPhong) {
-    const bool blinn = kModel == BatchModel::blinn_phong;
-    const bool bent = (kMapsRead & map_bit(kNormalMap)) != 0 && in.map_texel[kNormalMap] != nullptr;
-    if (!bent) {
-      for (int i = 0; i < std::min(u.frame->light_count, kHighlightsAhead); ++i) {
-        const LightData& l = u.frame->lights[i];
-        if (l.type != LightType::directional) continue;
-        const Vec3V to_light = Set3(l.to_light);
-        for (int j = 0; j < in.count; j += lanes) {
-          hn::Store(Highlight(m, blinn, load_unit(0, j), load_unit(3, j), to_light), d,
-                    highlights[i] + j);
-        }
-        ahead.of[i] = highlights[i];
-      }
+    if ((kMapsRead & map_bit(kNormalMap)) == 0 || in.map_texel[kNormalMap] == nullptr) {
+      ahead = FindHighlightsAhead(
+          u, kModel == BatchModel::blinn_phong, in.count,
+          [&](int j, Vec3V& n, Vec3V& view)
+              HWY_ATTR { n = load_unit(0, j), view = load_unit(3, j); },
+          highlights);
     }
   }
   for (int j = 0; j < in.count; j += lanes) {

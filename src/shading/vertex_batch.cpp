@@ -44,13 +44,7 @@ HWY_INLINE void LightVertices(const DrawUniforms& u, const Vec3V& p, const Vec3V
     const BatchV n_dot_l = Dot(n, in.direction);
     const BatchMask lit = hn::Not(hn::Le(n_dot_l, hn::Zero(d)));  // NaN lights nothing either
     const Vec3V received = ReceivedRadiance(light, in, p, n, hn::And(lit, active));
-    // The half vector, normalized, then the power (x^0 = 1).
-    const Vec3V half = Normalize({hn::Add(in.direction.x, view.x), hn::Add(in.direction.y, view.y),
-                                  hn::Add(in.direction.z, view.z)});
-    const BatchV highlight =
-        material.shininess == 0.0f
-            ? hn::Set(d, 1.0f)
-            : PortablePow(StdMax(Dot(n, half), hn::Zero(d)), material.shininess);
+    const BatchV highlight = Highlight(material, true, n, view, in.direction);
     const BatchV radiance[3] = {received.x, received.y, received.z};
     for (int c = 0; c < channels; ++c) {
       diffuse[c] =

@@ -325,23 +325,13 @@ void ShadeModel(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
   }
   // So too the surface point's unit normal and view (a square root and a division each).
   constexpr bool kSurface = !kUnlit && !kGouraud;
-  alignas(64) float unit[kSurface ? 6 : 1][kSurface ? kShadeBatch : 1];
-  auto load_unit = [&](int first, int j) HWY_ATTR {
-    return Vec3V{hn::Load(d, unit[first] + j), hn::Load(d, unit[first + 1] + j),
-                 hn::Load(d, unit[first + 2] + j)};
-  };
-  if constexpr (kSurface) {
-    auto store_unit = [&](const Vec3V& v, int first, int j) HWY_ATTR {
-      const FloatV parts[3] = {v.x, v.y, v.z};
-      for (int c = 0; c < 3; ++c) hn::Store(parts[c], d, unit[first + c] + j);
-    };
-    for (int j = 0; j < in.count; j += lanes) {
-      store_unit(SafeNormalize(Load3(in.v, kNormalSlot, j)), 0, j);
-      if constexpr (kNeedsView) {  // (and so needs_position)
-        const Vec3V p = Load3(in.v, kPositionSlot, j);
-        store_unit(SafeNormalize({hn::Sub(eye.x, p.x), hn::Sub(eye.y, p.y), hn::Sub(eye.z, p.z)}),
-                   3, j);
-      }
+  alignas(64) float unit[6][kShadeBatch];  // normal, view
+  for (int j = 0; kSurface && j < in.count; j += lanes) {
+    Store3(SafeNormalize(Load3(in.v, kNormalSlot, j)), unit, 0, j);
+    if constexpr (kNeedsView) {  // (and so needs_position)
+      const Vec3V p = Load3(in.v, kPositionSlot, j);
+      Store3(SafeNormalize({hn::Sub(eye.x, p.x), hn::Sub(eye.y, p.y), hn::Sub(eye.z, p.z)}), unit,
+             3, j);
     }
   }
   // And the highlights of the first directional lights (light_batch-inl.h), where no normal map
@@ -353,7 +343,7 @@ void ShadeModel(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
       ahead = FindHighlightsAhead(
           u, kModel == BatchModel::blinn_phong, in.count,
           [&](int j, Vec3V& n, Vec3V& view)
-              HWY_ATTR { n = load_unit(0, j), view = load_unit(3, j); },
+              HWY_ATTR { n = Load3(unit, 0, j), view = Load3(unit, 3, j); },
           highlights);
     }
   }
@@ -388,9 +378,9 @@ void ShadeModel(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
       Vec3V position = view;
       if (needs_position) position = Load3(in.v, kPositionSlot, j);
       if constexpr (kNeedsView) {
-        view = load_unit(3, j);
+        view = Load3(unit, 3, j);
       }
-      Vec3V n = load_unit(0, j);
+      Vec3V n = Load3(unit, 0, j);
       if constexpr ((kMapsRead & map_bit(kNormalMap)) != 0) {
         if (in.map_texel[kNormalMap] != nullptr) n = MappedNormal(m, in, j, n);
       }

@@ -188,6 +188,40 @@ HWY_INLINE void RefractBatch(const DrawUniforms& u, const ShadeInput& in, Displa
   }
 }
 
+// glmark2's phong shader, in passes: the unit vectors, the diffuse and specular terms, then the
+// colours. In passes of their own the CPU overlaps each vector's long chains of dependent
+// operations (square roots, divisions, the power) with the next vector's; in one loop it would
+// not.
+HWY_INLINE void PhongBatch(const DrawUniforms& u, const ShadeInput& in, DisplayOut& out) {
+  const BatchTag d;
+  const int lanes = static_cast<int>(hn::Lanes(d));
+  alignas(64) float unit[9][shading::kShadeBatch];  // eye, light, normal
+  for (int j = 0; j < in.count; j += lanes) {
+    const Vec3V p = Load3(in.v, PhongShading::kPosition, j);
+    const Vec3V eye = Normalize(Negate(p));
+    const Vec3V light = Normalize(
+        {hn::Sub(hn::Zero(d), p.x), hn::Sub(hn::Set(d, 1.0f), p.y), hn::Sub(hn::Zero(d), p.z)});
+    Store3(eye, unit, 0, j), Store3(light, unit, 3, j);
+    Store3(Normalize(Load3(in.v, 0, j)), unit, 6, j);
+  }
+  alignas(64) float terms[2][shading::kShadeBatch];  // specular, diffuse
+  for (int j = 0; j < in.count; j += lanes) {
+    const Vec3V eye = Load3(unit, 0, j), light = Load3(unit, 3, j), n = Load3(unit, 6, j);
+    const Vec3V reflection = Reflect(Negate(light), n);
+    hn::Store(hn::Mul(hn::Set(d, 0.8f), Pow100(StdMax(hn::Zero(d), Dot(reflection, eye)))), d,
+              terms[0] + j);
+    hn::Store(StdMax(hn::Zero(d), Dot(n, light)), d, terms[1] + j);
+  }
+  for (int j = 0; j < in.count; j += lanes) {
+    const BatchV lit = hn::Mul(hn::Set(d, 0.8f), hn::Load(d, terms[1] + j));
+    const BatchV base = hn::Add(hn::Load(d, terms[0] + j), hn::Set(d, 0.02f));
+    StoreDisplay({hn::Add(base, hn::Mul(lit, hn::Set(d, u.material->base_color.r))),
+                  hn::Add(base, hn::Mul(lit, hn::Set(d, u.material->base_color.g))),
+                  hn::Add(base, hn::Mul(lit, hn::Set(d, u.material->base_color.b)))},
+                 j, out);
+  }
+}
+
 void ShadeGlmark2Batch(BatchShader shader, const DrawUniforms& u, const ShadeInput& in,
                        float (*rgba)[4]) {
   using Shader = BatchShader;
@@ -197,11 +231,33 @@ void ShadeGlmark2Batch(BatchShader shader, const DrawUniforms& u, const ShadeInp
   // channel: the codes are stored per vector, then decoded once for the batch (or, into a tile of
   // codes, stored as they are: StoreDisplay).
   DisplayOut display(*u.frame, in, rgba);
-  // The shaders that look textures up at coordinates they compute: all lookups of a kind at once.
-  const bool looks_up = shader == Shader::shadow_ground || shader == Shader::refract;
+  // The shaders shaded in passes of their own: those that look textures up at coordinates they
+  // compute (all lookups of a kind at once), and phong (for its chains of dependent operations).
+  const bool in_passes =
+      shader == Shader::shadow_ground || shader == Shader::refract || shader == Shader::phong;
   if (shader == Shader::shadow_ground) ShadowGround(u, in, display);
   if (shader == Shader::refract) RefractBatch(u, in, display);
-  for (int j = 0; !looks_up && j < in.count; j += lanes) {
+  if (shader == Shader::phong) PhongBatch(u, in, display);
+  // The unit normals of the shaders that start from them, in a loop of their own (as PhongBatch's
+  // passes, for the square roots' and divisions' chains).
+  alignas(64) float unit_normal[3][shading::kShadeBatch];
+  const bool unit_normals =
+      shader == Shader::blinn_phong_inf || shader == Shader::cel || shader == Shader::bump_poly;
+  for (int j = 0; unit_normals && j < in.count; j += lanes) {
+    Store3(Normalize(Load3(in.v, 0, j)), unit_normal, 0, j);
+  }
+  // Cel's light and view directions and the light's attenuation, so too.
+  alignas(64) float cel[7][shading::kShadeBatch];
+  for (int j = 0; shader == Shader::cel && j < in.count; j += lanes) {
+    const Vec3V p = Load3(in.v, CelShading::kPosition, j);
+    const Vec3V to_light{hn::Sub(hn::Set(d, 4.0f), p.x), hn::Sub(hn::Set(d, 3.0f), p.y),
+                         hn::Sub(hn::Set(d, 1.0f), p.z)};
+    Store3(Normalize(to_light), cel, 0, j);
+    Store3(Normalize(Negate(p)), cel, 3, j);
+    hn::Store(hn::Div(hn::Set(d, CelShading::kLightLength), hn::Sqrt(Dot(to_light, to_light))), d,
+              cel[6] + j);
+  }
+  for (int j = 0; !in_passes && j < in.count; j += lanes) {
     switch (shader) {
       case Shader::basic_light: {
         const Vec3V light = Load3(in.v, 0, j);
@@ -217,7 +273,7 @@ void ShadeGlmark2Batch(BatchShader shader, const DrawUniforms& u, const ShadeInp
         break;
       }
       case Shader::blinn_phong_inf: {
-        const Vec3V n = Normalize(Load3(in.v, 0, j));
+        const Vec3V n = Load3(unit_normal, 0, j);
         const BatchV diffuse =
             hn::Mul(hn::Set(d, 0.8f), StdMax(Dot(n, Set3(kLightDirection)), hn::Zero(d)));
         const BatchV specular =
@@ -226,38 +282,16 @@ void ShadeGlmark2Batch(BatchShader shader, const DrawUniforms& u, const ShadeInp
         StoreDisplay({gray, gray, hn::Add(gray, diffuse)}, j, display);
         break;
       }
-      case Shader::phong: {
-        const Vec3V p = Load3(in.v, PhongShading::kPosition, j);
-        const Vec3V eye = Normalize(Negate(p));
-        const Vec3V light = Normalize(
-            {hn::Sub(hn::Zero(d), p.x), hn::Sub(hn::Set(d, 1.0f), p.y), hn::Sub(hn::Zero(d), p.z)});
-        const Vec3V n = Normalize(Load3(in.v, 0, j));
-        const Vec3V reflection = Reflect(Negate(light), n);
-        const BatchV specular =
-            hn::Mul(hn::Set(d, 0.8f), Pow100(StdMax(hn::Zero(d), Dot(reflection, eye))));
-        const BatchV diffuse = StdMax(hn::Zero(d), Dot(n, light));
-        const BatchV lit = hn::Mul(hn::Set(d, 0.8f), diffuse);
-        const BatchV base = hn::Add(specular, hn::Set(d, 0.02f));
-        StoreDisplay({hn::Add(base, hn::Mul(lit, hn::Set(d, u.material->base_color.r))),
-                      hn::Add(base, hn::Mul(lit, hn::Set(d, u.material->base_color.g))),
-                      hn::Add(base, hn::Mul(lit, hn::Set(d, u.material->base_color.b)))},
-                     j, display);
-        break;
-      }
       case Shader::cel: {
-        const Vec3V p = Load3(in.v, CelShading::kPosition, j);
-        const Vec3V to_light{hn::Sub(hn::Set(d, 4.0f), p.x), hn::Sub(hn::Set(d, 3.0f), p.y),
-                             hn::Sub(hn::Set(d, 1.0f), p.z)};
-        const Vec3V n = Normalize(Load3(in.v, 0, j));
-        const Vec3V l = Normalize(to_light);
+        const Vec3V n = Load3(unit_normal, 0, j);
+        const Vec3V l = Load3(cel, 0, j);
         const BatchV n_dot_l = Dot(n, l);
         const BatchV max_n_dot_l = StdMax(n_dot_l, hn::Zero(d));
-        const BatchV attenuation =
-            hn::Div(hn::Set(d, CelShading::kLightLength), hn::Sqrt(Dot(to_light, to_light)));
+        const BatchV attenuation = hn::Load(d, cel[6] + j);
         // Two-tone green, black where the surface turns away (mix(0.1, 0.4, max N.L)).
         BatchV green = hn::IfThenElse(hn::Ge(hn::Mul(attenuation, max_n_dot_l), hn::Set(d, 0.1f)),
                                       hn::Set(d, 0.6f), hn::Set(d, 0.3f));
-        const Vec3V v = Normalize(Negate(p));
+        const Vec3V v = Load3(cel, 3, j);
         const BatchV edge =
             hn::Add(hn::Mul(hn::Set(d, 0.1f), hn::Sub(hn::Set(d, 1.0f), max_n_dot_l)),
                     hn::Mul(hn::Set(d, 0.4f), max_n_dot_l));
@@ -276,7 +310,7 @@ void ShadeGlmark2Batch(BatchShader shader, const DrawUniforms& u, const ShadeInp
         break;
       }
       case Shader::bump_poly:
-        StoreDisplay(BumpLight(Normalize(Load3(in.v, 0, j))), j, display);
+        StoreDisplay(BumpLight(Load3(unit_normal, 0, j)), j, display);
         break;
       case Shader::bump_normals: {
         // normalize(normal_matrix * (texel * 2 - 1))
@@ -299,8 +333,9 @@ void ShadeGlmark2Batch(BatchShader shader, const DrawUniforms& u, const ShadeInp
       case Shader::refract_back_normal:
         StoreDisplay(Load3(in.v, 0, j), j, display);
         break;
-      case Shader::shadow_ground:  // shaded above
+      case Shader::shadow_ground:  // shaded above, in passes
       case Shader::refract:
+      case Shader::phong:
         break;
     }
   }

@@ -246,6 +246,21 @@ void ShadeGlmark2Batch(BatchShader shader, const DrawUniforms& u, const ShadeInp
   for (int j = 0; unit_normals && j < in.count; j += lanes) {
     Store3(Normalize(Load3(in.v, 0, j)), unit_normal, 0, j);
   }
+  // bump's normal map: normalize(normal_matrix * (texel * 2 - 1)), so too.
+  for (int j = 0; shader == Shader::bump_normals && j < in.count; j += lanes) {
+    BatchV t[4];
+    hn::LoadInterleaved4(d, &in.base_texel[j][0], t[0], t[1], t[2], t[3]);
+    BatchV raw[3];
+    for (int c = 0; c < 3; ++c) raw[c] = hn::Sub(hn::Mul(t[c], hn::Set(d, 2.0f)), hn::Set(d, 1.0f));
+    const glm::mat3& m = u.normal_matrix;
+    BatchV turned[3];
+    for (int r = 0; r < 3; ++r) {
+      turned[r] = hn::Add(
+          hn::Add(hn::Mul(hn::Set(d, m[0][r]), raw[0]), hn::Mul(hn::Set(d, m[1][r]), raw[1])),
+          hn::Mul(hn::Set(d, m[2][r]), raw[2]));
+    }
+    Store3(Normalize({turned[0], turned[1], turned[2]}), unit_normal, 0, j);
+  }
   // Cel's light and view directions and the light's attenuation, so too.
   alignas(64) float cel[7][shading::kShadeBatch];
   for (int j = 0; shader == Shader::cel && j < in.count; j += lanes) {
@@ -310,26 +325,9 @@ void ShadeGlmark2Batch(BatchShader shader, const DrawUniforms& u, const ShadeInp
         break;
       }
       case Shader::bump_poly:
+      case Shader::bump_normals:  // (the normal map's normals found above)
         StoreDisplay(BumpLight(Load3(unit_normal, 0, j)), j, display);
         break;
-      case Shader::bump_normals: {
-        // normalize(normal_matrix * (texel * 2 - 1))
-        BatchV t[4];
-        hn::LoadInterleaved4(d, &in.base_texel[j][0], t[0], t[1], t[2], t[3]);
-        BatchV raw[3];
-        for (int c = 0; c < 3; ++c) {
-          raw[c] = hn::Sub(hn::Mul(t[c], hn::Set(d, 2.0f)), hn::Set(d, 1.0f));
-        }
-        const glm::mat3& m = u.normal_matrix;
-        BatchV turned[3];
-        for (int r = 0; r < 3; ++r) {
-          turned[r] = hn::Add(
-              hn::Add(hn::Mul(hn::Set(d, m[0][r]), raw[0]), hn::Mul(hn::Set(d, m[1][r]), raw[1])),
-              hn::Mul(hn::Set(d, m[2][r]), raw[2]));
-        }
-        StoreDisplay(BumpLight(Normalize({turned[0], turned[1], turned[2]})), j, display);
-        break;
-      }
       case Shader::refract_back_normal:
         StoreDisplay(Load3(in.v, 0, j), j, display);
         break;

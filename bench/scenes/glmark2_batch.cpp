@@ -189,7 +189,7 @@ HWY_INLINE void RefractBatch(const DrawUniforms& u, const ShadeInput& in, Displa
 }
 
 // glmark2's phong shader, in passes: the unit vectors, the diffuse and specular terms, then the
-// colours. In passes of their own the CPU overlaps each vector's long chains of dependent
+// colors. In passes of their own the CPU overlaps each vector's long chains of dependent
 // operations (square roots, divisions, the power) with the next vector's; in one loop it would
 // not.
 HWY_INLINE void PhongBatch(const DrawUniforms& u, const ShadeInput& in, DisplayOut& out) {

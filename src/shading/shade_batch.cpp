@@ -340,11 +340,12 @@ void ShadeModel(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
   HighlightsAhead ahead;
   if constexpr (kPhong) {
     if ((kMapsRead & map_bit(kNormalMap)) == 0 || in.map_texel[kNormalMap] == nullptr) {
-      ahead = FindHighlightsAhead(
-          u, kModel == BatchModel::blinn_phong, in.count,
-          [&](int j, Vec3V& n, Vec3V& view)
-              HWY_ATTR { n = Load3(unit, 0, j), view = Load3(unit, 3, j); },
-          highlights);
+      const auto units = [&](int j, Vec3V& n, Vec3V& view) HWY_ATTR {
+        n = Load3(unit, 0, j);
+        view = Load3(unit, 3, j);
+      };
+      ahead =
+          FindHighlightsAhead(u, kModel == BatchModel::blinn_phong, in.count, units, highlights);
     }
   }
   for (int j = 0; j < in.count; j += lanes) {

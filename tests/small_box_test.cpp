@@ -8,6 +8,7 @@
 #include <hwy/targets.h>
 
 #include <algorithm>
+#include <cstring>
 #include <random>
 #include <tuple>
 #include <vector>
@@ -140,6 +141,66 @@ TEST(SmallBoxes, DepthOnlySearchWritesTheDepthsOfThePixelsItFinds) {
   }
   EXPECT_GT(tried, 2000);
   EXPECT_GT(written, tried / 4);
+}
+
+// interpolate_runs (the waiting pixels' interpolation, one call a batch) gives each run's pixels
+// what interpolate_pixels gives them run by run, bits and all, on every target: small triangles'
+// pixels packed one run after another, with varying planes of their own.
+TEST(SmallBoxes, InterpolatingRunsIsInterpolatingEachRun) {
+  std::mt19937 rng(20261206);
+  std::uniform_real_distribution<float> any(-4.0f, 4.0f);
+  constexpr int kVaryings = 5, kRoom = pipeline::kBlockPixels + pipeline::kBoxSearchSlack;
+  int compared = 0;
+  for (std::int64_t target : simd_targets()) {
+    ForcedTarget forced(target);
+    const pipeline::RasterKernels kernels = pipeline::raster_kernels(chosen_simd_target());
+    for (int batch = 0; batch < 200; ++batch) {
+      std::vector<SetupTriangle> triangles;
+      std::vector<pipeline::Plane> planes;
+      std::vector<pipeline::InterpolationRun> runs;
+      std::int16_t xs[kRoom] = {}, ys[kRoom] = {};
+      int count = 0;
+      triangles.reserve(pipeline::kBlockPixels);  // runs point into it
+      while (count < pipeline::kBlockPixels - 16) {
+        float cx, cy;
+        SetupTriangle t;
+        if (!random_triangle(rng, 12.0f, cx, cy, t)) continue;
+        t.varying_planes = static_cast<std::uint32_t>(planes.size());
+        for (int k = 0; k < kVaryings; ++k) planes.push_back({any(rng), any(rng), any(rng)});
+        const int width = std::min(t.max_x - t.min_x + 1, 4);
+        const int height = std::min(t.max_y - t.min_y + 1, 4);
+        const int n = std::min(width * height, pipeline::kBlockPixels - 16 - count);
+        for (int k = 0; k < n; ++k) {
+          xs[count + k] = static_cast<std::int16_t>(t.min_x + k % width);
+          ys[count + k] = static_cast<std::int16_t>(t.min_y + k / width);
+        }
+        triangles.push_back(t);
+        runs.push_back({&triangles.back(), n});
+        count += n;
+      }
+      alignas(64) float z[pipeline::kBlockPixels], w[pipeline::kBlockPixels];
+      alignas(64) float v[kVaryings][pipeline::kBlockPixels];
+      alignas(64) float want_z[pipeline::kBlockPixels], want_w[pipeline::kBlockPixels];
+      alignas(64) float want_v[kVaryings][pipeline::kBlockPixels];
+      kernels.interpolate_runs(runs.data(), static_cast<int>(runs.size()), planes.data(), kVaryings,
+                               xs, ys, z, w, v);
+      int first = 0;
+      for (const pipeline::InterpolationRun& run : runs) {
+        kernels.interpolate_pixels(*run.triangle, planes.data() + run.triangle->varying_planes,
+                                   kVaryings, first, run.count, xs, ys, want_z, want_w, want_v);
+        first += run.count;
+      }
+      for (int n = 0; n < count; ++n) {
+        ASSERT_EQ(std::memcmp(&z[n], &want_z[n], 4), 0) << hwy::TargetName(target) << " " << n;
+        ASSERT_EQ(std::memcmp(&w[n], &want_w[n], 4), 0) << hwy::TargetName(target) << " " << n;
+        for (int k = 0; k < kVaryings; ++k) {
+          ASSERT_EQ(std::memcmp(&v[k][n], &want_v[k][n], 4), 0) << hwy::TargetName(target);
+        }
+        ++compared;
+      }
+    }
+  }
+  EXPECT_GT(compared, 200 * 40);
 }
 
 // The raster loops call the kernels through pointers fetched per tile (RasterKernels): each

@@ -161,9 +161,9 @@ void CoverBlock(const BlockInput& in, BlockFragments& out) {
   }
 }
 
-void InterpolatePixels(const SetupTriangle& t, const Plane* planes, int varyings, int first,
-                       int count, const std::int16_t* xs, const std::int16_t* ys, float* z,
-                       float* w, float (*v)[kBlockPixels]) {
+HWY_INLINE void InterpolateRun(const SetupTriangle& t, const Plane* planes, int varyings, int first,
+                               int count, const std::int16_t* xs, const std::int16_t* ys, float* z,
+                               float* w, float (*v)[kBlockPixels]) {
   const FloatTag df;
   const IntTag di;
   const hn::Rebind<std::int16_t, FloatTag> d16;
@@ -184,6 +184,23 @@ void InterpolatePixels(const SetupTriangle& t, const Plane* planes, int varyings
     hn::StoreU(clip_w, df, w + j);
     for (int k = 0; k < varyings; ++k)
       hn::StoreU(hn::Mul(evaluate(planes[k]), clip_w), df, v[k] + j);
+  }
+}
+
+void InterpolatePixels(const SetupTriangle& t, const Plane* planes, int varyings, int first,
+                       int count, const std::int16_t* xs, const std::int16_t* ys, float* z,
+                       float* w, float (*v)[kBlockPixels]) {
+  InterpolateRun(t, planes, varyings, first, count, xs, ys, z, w, v);
+}
+
+void InterpolateRuns(const InterpolationRun* runs, int run_count, const Plane* planes, int varyings,
+                     const std::int16_t* xs, const std::int16_t* ys, float* z, float* w,
+                     float (*v)[kBlockPixels]) {
+  int first = 0;  // each run starts where the one before ends
+  for (int r = 0; r < run_count; ++r) {
+    const SetupTriangle& t = *runs[r].triangle;
+    InterpolateRun(t, planes + t.varying_planes, varyings, first, runs[r].count, xs, ys, z, w, v);
+    first += runs[r].count;
   }
 }
 
@@ -521,6 +538,7 @@ namespace facet::pipeline {
 HWY_EXPORT(CoverBlock);
 HWY_EXPORT(TargetName);
 HWY_EXPORT(InterpolatePixels);
+HWY_EXPORT(InterpolateRuns);
 HWY_EXPORT(FindBoxPixels);
 HWY_EXPORT(WriteBoxDepths);
 HWY_EXPORT(FindBoxSamples);
@@ -534,6 +552,7 @@ const char* simd_target_name() { return HWY_DISPATCH_TABLE(TargetName)[chosen_si
 RasterKernels raster_kernels(SimdTarget index) {
   return {HWY_DISPATCH_TABLE(CoverBlock)[index],
           HWY_DISPATCH_TABLE(InterpolatePixels)[index],
+          HWY_DISPATCH_TABLE(InterpolateRuns)[index],
           HWY_DISPATCH_TABLE(FindBoxPixels)[index],
           HWY_DISPATCH_TABLE(WriteBoxDepths)[index],
           HWY_DISPATCH_TABLE(FindBoxSamples)[index],

@@ -103,6 +103,12 @@ struct SampleColorWrite {
   int samples;
 };
 
+// A run of waiting pixels (small_triangles.hpp): `count` consecutive entries of one triangle's.
+struct InterpolationRun {
+  const SetupTriangle* triangle;
+  int count;
+};
+
 // The raster's SIMD kernels (block_raster.cpp, compiled for every target Highway supports) for
 // the target chosen now, as plain function pointers: the raster loops call them a triangle or
 // a block at a time, so dispatching each call (asking libhwy for the chosen target, then
@@ -122,6 +128,12 @@ struct RasterKernels {
   void (*interpolate_pixels)(const SetupTriangle& t, const Plane* varying_planes, int varyings,
                              int first, int count, const std::int16_t* x, const std::int16_t* y,
                              float* z, float* w, float (*v)[kBlockPixels]);
+  // interpolate_pixels for runs of pixels of one triangle each, one after the other from entry 0
+  // on, each triangle's varying planes at its varying_planes in `planes` (the frame's): one call
+  // for a batch of small triangles' pixels instead of one a triangle.
+  void (*interpolate_runs)(const InterpolationRun* runs, int run_count, const Plane* planes,
+                           int varyings, const std::int16_t* x, const std::int16_t* y, float* z,
+                           float* w, float (*v)[kBlockPixels]);
   // The small-triangle path's pixel search (small_triangles.hpp): the pixels of the box of
   // `width` x `height` pixels at frame pixel (x0, y0) whose centres triangle t covers and, if
   // depth_test, whose depth is less than the tile's there (`depth` points at the box's first

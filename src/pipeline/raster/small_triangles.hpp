@@ -81,11 +81,7 @@ struct WaitingPixels {
   // the one before ends. Their varyings are interpolated when they are shaded (write_waiting),
   // not as each triangle's pixels are found: read right after the search stored them, the
   // positions' loads would span several of its row stores and wait for them to retire.
-  struct Run {
-    const SetupTriangle* triangle;
-    int count;
-  };
-  Run runs[PackedPixels::kCapacity];
+  InterpolationRun runs[PackedPixels::kCapacity];
   int run_count = 0;
 };
 
@@ -135,14 +131,8 @@ void write_waiting(TileContext& tile) {
   WaitingPixels& waiting = *tile.waiting;
   PackedPixels& pixels = waiting.pixels;
   const Plane* planes = tile.frame->planes.data();
-  int first = 0;  // each run starts where the one before ends
-  for (int r = 0; r < waiting.run_count; ++r) {
-    const WaitingPixels::Run& run = waiting.runs[r];
-    tile.kernels.interpolate_pixels(*run.triangle, planes + run.triangle->varying_planes,
-                                    Shading::kVaryings, first, run.count, pixels.x, pixels.y,
-                                    pixels.z, pixels.w, pixels.v);
-    first += run.count;
-  }
+  tile.kernels.interpolate_runs(waiting.runs, waiting.run_count, planes, Shading::kVaryings,
+                                pixels.x, pixels.y, pixels.z, pixels.w, pixels.v);
   for (int n = pixels.count; n % 8 != 0; ++n) {  // read by the SIMD sampler, then ignored
     for (auto& slope : waiting.slopes) slope[n] = 0.0f;
   }
@@ -232,7 +222,7 @@ void add_waiting_band(TileContext& tile, const SetupTriangle& t, const SampleSte
     first = 0;
   }
   pixels.count = first + found;
-  WaitingPixels::Run& run = waiting.runs[waiting.run_count++];
+  InterpolationRun& run = waiting.runs[waiting.run_count++];
   run.triangle = &t;
   run.count = found;
   if constexpr (base_color_texcoord<Shading>() >= 0) {

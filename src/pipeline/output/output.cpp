@@ -109,6 +109,7 @@ void fill_background(TileContext& tile, const Background& background) {
                      background.height};
   const SkyRowKernel sky_row = tile.frame->kernels->sky_row;
   const SampleAtKernel sample_at = tile.frame->kernels->shading.sample_at;
+  static_assert(kMaxTileSize <= kMaxSkyRow, "a tile row is one sky_row call");
   for (int y = 0; y < tile.y1 - tile.y0; ++y) {
     sky_row(view, environment, sample_at, tile.x0, tile.y0 + y, tile.x1 - tile.x0,
             tile.depth + static_cast<std::ptrdiff_t>(y) * tile.stride, kClearDepth,

@@ -20,10 +20,13 @@ struct SkyView {
   int width, height;  // framebuffer size
 };
 
-// For pixels (x0 + i, y), i in [0, count), whose depth[i] equals clear_depth: colors[i] = (the
-// environment's radiance, 1) through the pixel's centre, seen from the eye along the direction to
-// the centre's point on the far plane (unprojected); an image environment at its level 0, read
-// with sample_at (the frame's texture lookups).
+// The most pixels a row call takes: a tile's row (raster/tile_context.hpp's kMaxTileSize).
+inline constexpr int kMaxSkyRow = 128;
+
+// For pixels (x0 + i, y), i in [0, count <= kMaxSkyRow), whose depth[i] equals clear_depth:
+// colors[i] = (the environment's radiance, 1) through the pixel's centre, seen from the eye along
+// the direction to the centre's point on the far plane (unprojected); an image environment at its
+// level 0, read with sample_at (the frame's texture lookups).
 using SkyRowKernel = void (*)(const SkyView& view, const Environment& environment,
                               SampleAtKernel sample_at, int x0, int y, int count,
                               const float* depth, float clear_depth, glm::vec4* colors);

@@ -89,44 +89,6 @@ HWY_INLINE BatchV Highlight(const Material& m, bool blinn, const Vec3V& n, const
   return PortablePow(StdMax(along, hn::Zero(d)), m.shininess);
 }
 
-// Highlights found before a lighting loop, in a loop of their own: there the CPU overlaps a
-// power's chain of multiplications across vectors, in the lighting loop it would not. For each
-// of the first kHighlightsAhead lights, a row of the batch's highlights, or null where the
-// lighting loop finds them (lights other than directional ones, whose direction it finds).
-inline constexpr int kHighlightsAhead = 4;
-struct HighlightsAhead {
-  const float* of[kHighlightsAhead] = {};
-
-  // Light i's highlights at lanes j.., as found ahead or by `find`.
-  template <class Find>
-  HWY_INLINE BatchV at(int i, int j, const Find& find) const {
-    if (i < kHighlightsAhead && of[i] != nullptr) return hn::Load(BatchTag(), of[i] + j);
-    return find();
-  }
-};
-
-// Fills rows with the highlights of the first directional lights at the batch's `count` points,
-// whose unit normals and views units(j, n, view) gives a vector at a time.
-template <std::size_t kRow, class Units>
-HWY_INLINE HighlightsAhead FindHighlightsAhead(const DrawUniforms& u, bool blinn, int count,
-                                               const Units& units, float (*rows)[kRow]) {
-  const BatchTag d;
-  const int lanes = static_cast<int>(hn::Lanes(d));
-  HighlightsAhead ahead;
-  for (int i = 0; i < std::min(u.frame->light_count, kHighlightsAhead); ++i) {
-    const LightData& light = u.frame->lights[i];
-    if (light.type != LightType::directional) continue;
-    const Vec3V to_light = Set3(light.to_light);
-    for (int j = 0; j < count; j += lanes) {
-      Vec3V n, view;
-      units(j, n, view);
-      hn::Store(Highlight(*u.material, blinn, n, view, to_light), d, rows[i] + j);
-    }
-    ahead.of[i] = rows[i];
-  }
-  return ahead;
-}
-
 }  // namespace facet::shading::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
 

@@ -134,6 +134,36 @@ HWY_INLINE void Fogged(const Fog& fog, const ViewDepth& depth, const ShadeInput&
   FoggedBy(fog, FogKeep(fog, depth, in, j), color);
 }
 
+// Highlights found before the shading loop (ShadeModel), in a loop of their own: there the CPU
+// overlaps a power's chain of multiplications across vectors, in the shading loop it would not.
+// For each of the first kHighlightsAhead lights, a row of the batch's highlights, or null where
+// the shading loop finds them (lights other than directional ones, whose direction it finds).
+inline constexpr int kHighlightsAhead = 4;
+struct HighlightsAhead {
+  const float* of[kHighlightsAhead] = {};
+};
+
+// Fills rows with the highlights of the first directional lights at the batch's `count` pixels,
+// whose unit normals and views `unit` holds (slots 0..2 and 3..5).
+HWY_INLINE HighlightsAhead FindHighlightsAhead(const DrawUniforms& u, bool blinn, int count,
+                                               const float (*unit)[kShadeBatch],
+                                               float (*rows)[kShadeBatch]) {
+  const FloatTag d;
+  const int lanes = static_cast<int>(hn::Lanes(d));
+  HighlightsAhead ahead;
+  for (int i = 0; i < std::min(u.frame->light_count, kHighlightsAhead); ++i) {
+    const LightData& light = u.frame->lights[i];
+    if (light.type != LightType::directional) continue;
+    const Vec3V to_light = Set3(light.to_light);
+    for (int j = 0; j < count; j += lanes) {
+      hn::Store(Highlight(*u.material, blinn, Load3(unit, 0, j), Load3(unit, 3, j), to_light), d,
+                rows[i] + j);
+    }
+    ahead.of[i] = rows[i];
+  }
+  return ahead;
+}
+
 // Phong's and Blinn-Phong's light at pixels j..: albedo x ambient, plus for each light facing
 // the surface radiance x (albedo N.L + specular x highlight), the radiance after the light's
 // shadow at `position` (active: the batch's lanes); the highlights found ahead taken as found.
@@ -150,8 +180,9 @@ HWY_INLINE Vec3V SpecularLight(const DrawUniforms& u, bool blinn, const Vec3V& n
     IncidentV in = Incident(l, position);
     const Vec3V& to_light = in.direction;
     const FloatV n_dot_l = Dot(n, to_light);
-    const FloatV highlight =
-        ahead.at(i, j, [&]() HWY_ATTR { return Highlight(m, blinn, n, view, to_light); });
+    const FloatV highlight = i < kHighlightsAhead && ahead.of[i] != nullptr
+                                 ? hn::Load(d, ahead.of[i] + j)
+                                 : Highlight(m, blinn, n, view, to_light);
     const auto lit = hn::Not(hn::Le(n_dot_l, hn::Zero(d)));  // facing the light (not NaN)
     in.radiance = ReceivedRadiance(l, in, position, n, hn::And(lit, active));
     const FloatV* a = albedo.c;
@@ -334,18 +365,12 @@ void ShadeModel(const DrawUniforms& u, const ShadeInput& in, float (*rgba)[4]) {
              3, j);
     }
   }
-  // And the highlights of the first directional lights (light_batch-inl.h), where no normal map
-  // bends the normals.
-  alignas(64) float highlights[kPhong ? kHighlightsAhead : 1][kPhong ? kShadeBatch : 1];
+  // And the highlights of the first directional lights, where no normal map bends the normals.
+  alignas(64) float highlights[kHighlightsAhead][kShadeBatch];
   HighlightsAhead ahead;
   if constexpr (kPhong) {
     if ((kMapsRead & map_bit(kNormalMap)) == 0 || in.map_texel[kNormalMap] == nullptr) {
-      const auto units = [&](int j, Vec3V& n, Vec3V& view) HWY_ATTR {
-        n = Load3(unit, 0, j);
-        view = Load3(unit, 3, j);
-      };
-      ahead =
-          FindHighlightsAhead(u, kModel == BatchModel::blinn_phong, in.count, units, highlights);
+      ahead = FindHighlightsAhead(u, kModel == BatchModel::blinn_phong, in.count, unit, highlights);
     }
   }
   for (int j = 0; j < in.count; j += lanes) {

@@ -5,9 +5,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <glm/gtc/matrix_transform.hpp>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -187,6 +190,57 @@ TEST(RenderTexture, DepthOnlyTargetsKeepCutOutsAndBlendedDrawsOut) {
   const float opaque_depth = alone[(kHeight / 2) * kWidth + kWidth / 4];
   EXPECT_LT(opaque_depth, 1.0f);
   for (const float d : alone) EXPECT_TRUE(d == 1.0f || d == opaque_depth) << d;
+}
+
+// A quad a quarter of the view wide at x in an orthographic view; none when x is NaN.
+std::vector<float> render_quad_depth(RenderTexture& target, float x, int threads) {
+  const float aspect = static_cast<float>(target.width()) / target.height();
+  RenderSettings settings;
+  settings.tile_size = 16;
+  settings.threads = threads;
+  Renderer renderer(settings);
+  renderer.begin_frame(
+      Camera::orthographic({0, 0, 1}, {0, 0, 0}, {0, 1, 0}, 2.0f, aspect, 0.5f, 1.5f));
+  static const Mesh quad = screen(1.0f);
+  if (!std::isnan(x)) {
+    glm::mat4 transform = glm::translate(glm::mat4(1.0f), {x, 0.1f * x, 0.2f * x});
+    renderer.draw(quad, Material{}, glm::scale(transform, {0.25f, 0.5f, 1.0f}));
+  }
+  renderer.finish(target);
+  return target.depth_texture()->level(0).r32f;
+}
+
+// A depth-only target's renders skip the tiles its buffer's earlier render left cleared: each
+// image is still the one a new target gets, as the quad moves over and off the tiles.
+TEST(RenderTexture, DepthOnlyTargetsRenderedAgainHoldEachNewImage) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  for (int threads : {1, 2}) {
+    RenderTexture target(kWidth, kHeight, {.depth = true, .color = false});
+    int frame = 0;
+    for (float x : {-0.8f, 0.7f, nan, -0.2f, 0.8f, nan, nan, -0.5f, -0.5f, 0.3f}) {
+      RenderTexture fresh(kWidth, kHeight, {.depth = true, .color = false});
+      const std::vector<float> expected = render_quad_depth(fresh, x, threads);
+      EXPECT_EQ(render_quad_depth(target, x, threads), expected)
+          << "frame " << frame << ", " << threads << " threads";
+      ++frame;
+    }
+  }
+}
+
+// What is written through framebuffer() is shown by update(), and the renders after it clear it
+// wherever they draw nothing: writing it forgets which of its tiles were cleared.
+TEST(RenderTexture, DepthOnlyTargetsWrittenByHandAreClearedAgain) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const std::vector<float> cleared(kWidth * kHeight, 1.0f);
+  RenderTexture target(kWidth, kHeight, {.depth = true, .color = false});
+  // Both buffers rendered empty: every tile of each known to be cleared.
+  for (int i = 0; i < 3; ++i) ASSERT_EQ(render_quad_depth(target, nan, 1), cleared);
+  Framebuffer& mine = target.framebuffer();
+  std::fill(mine.depth().begin(), mine.depth().end(), 0.5f);
+  target.update();
+  EXPECT_EQ(target.depth_texture()->level(0).r32f, std::vector<float>(kWidth * kHeight, 0.5f));
+  EXPECT_EQ(render_quad_depth(target, nan, 1), cleared);
+  EXPECT_EQ(render_quad_depth(target, nan, 1), cleared);  // into the buffer written by hand
 }
 
 // A framebuffer of depth alone: no color image, the clear depth, and one error from what would

@@ -15,6 +15,8 @@
 
 namespace facet {
 
+struct ClearTiles;  // the renderer's record of a depth-only target's cleared tiles
+
 struct RenderTextureOptions {
   // rgba8_srgb: an 8-bit sRGB texture, as a framebuffer's PNG; rgba32f: linear float color.
   ColorFormat format = ColorFormat::rgba8_srgb;
@@ -41,6 +43,9 @@ class RenderTexture {
   // Throws facet::Error if a side is outside [1, Framebuffer::kMaxSize], or for options that
   // keep neither color nor depth.
   RenderTexture(int width, int height, const RenderTextureOptions& options = {});
+  ~RenderTexture();
+  RenderTexture(RenderTexture&&) noexcept;
+  RenderTexture& operator=(RenderTexture&&) noexcept;
 
   int width() const { return framebuffer_.width(); }
   int height() const { return framebuffer_.height(); }
@@ -49,8 +54,10 @@ class RenderTexture {
   // What Renderer::finish renders into (its extra outputs: none). update() then moves the image
   // into the textures by trading buffers, so afterwards the framebuffer holds an earlier image,
   // for the next render to overwrite: what was rendered is read through texture() and
-  // depth_texture() (Texture::level(0), rows top first as here).
-  Framebuffer& framebuffer() { return framebuffer_; }
+  // depth_texture() (Texture::level(0), rows top first as here). A depth-only target's renders
+  // leave alone the tiles that still hold the clear depth from an earlier render of the same
+  // buffer; the non-const framebuffer() forgets which those are, since you may write it.
+  Framebuffer& framebuffer();
   const Framebuffer& framebuffer() const { return framebuffer_; }
   // The color image, as a texture for materials (TextureMap) and environments; null for a
   // depth-only target.
@@ -68,9 +75,15 @@ class RenderTexture {
   void update();
 
  private:
+  friend class Renderer;  // renders into framebuffer_ without forgetting its cleared tiles
+  void trade_buffers();   // update() without the forgetting
+
   RenderTextureOptions options_;
   Framebuffer framebuffer_;
   std::shared_ptr<Texture> color_texture_, depth_texture_;  // rewritten by update()
+  // A depth-only target's cleared tiles: the framebuffer's buffer's, and the depth texture's,
+  // traded with the buffers. Null for targets with color.
+  std::unique_ptr<ClearTiles> framebuffer_clear_, texture_clear_;
 };
 
 }  // namespace facet

@@ -3,6 +3,7 @@
 
 #include <utility>
 
+#include "core/clear_tiles.hpp"
 #include "facet/error.hpp"
 
 namespace facet {
@@ -25,7 +26,20 @@ RenderTexture::RenderTexture(int width, int height, const RenderTextureOptions& 
     depth_texture_ = Texture::render_target(width, height, Texture::Format::r32f, false, false,
                                             "render texture depth");
   }
-  update();
+  if (!options.color) {
+    framebuffer_clear_ = std::make_unique<ClearTiles>();
+    texture_clear_ = std::make_unique<ClearTiles>();
+  }
+  trade_buffers();
+}
+
+RenderTexture::~RenderTexture() = default;
+RenderTexture::RenderTexture(RenderTexture&&) noexcept = default;
+RenderTexture& RenderTexture::operator=(RenderTexture&&) noexcept = default;
+
+Framebuffer& RenderTexture::framebuffer() {
+  if (framebuffer_clear_) framebuffer_clear_->forget();
+  return framebuffer_;
 }
 
 bool RenderTexture::owns(const Texture* texture) const {
@@ -33,6 +47,11 @@ bool RenderTexture::owns(const Texture* texture) const {
 }
 
 void RenderTexture::update() {
+  if (framebuffer_clear_) framebuffer_clear_->forget();  // written by its caller
+  trade_buffers();
+}
+
+void RenderTexture::trade_buffers() {
   // The framebuffer's image and the textures' base levels trade buffers: no copy, and the
   // framebuffer keeps buffers of the right size for the next render.
   if (color_texture_) {
@@ -46,6 +65,7 @@ void RenderTexture::update() {
   }
   if (!depth_texture_) return;
   std::swap(depth_texture_->base_level().r32f, framebuffer_.depth());
+  std::swap(framebuffer_clear_, texture_clear_);
   depth_texture_->refresh_from_base_level();
 }
 

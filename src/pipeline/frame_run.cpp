@@ -139,6 +139,9 @@ void Renderer::Impl::run(Framebuffer& target) {
   auto start = Clock::now();
   frame.stats = {};
   prepare_tiles(target);
+  if (map_clear_tiles) {
+    map_clear_tiles->fit(frame.tile_size, static_cast<std::size_t>(frame.tiles_x) * frame.tiles_y);
+  }
   // Per-draw pointers into frame-wide data, set now that the draw list no longer grows.
   frame.lights.clear();
   for (const Light& light : lighting.lights) frame.lights.push_back(shading::prepare_light(light));

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "core/scope_exit.hpp"
 #include "facet/error.hpp"
 #include "pipeline/output/debug_view.hpp"
 #include "pipeline/record/custom_draw.hpp"
@@ -233,7 +234,7 @@ void Renderer::finish(Framebuffer& target) {
   impl_->finish(target, false);
 }
 
-void Renderer::Impl::finish(Framebuffer& target, bool depth_only) {
+void Renderer::Impl::finish(Framebuffer& target, bool depth_only, ClearTiles* clear_tiles) {
   require_recording("finish()");
   if (target.extra_outputs().any()) check_extra_outputs(target);
   arena.execute([&] {
@@ -241,8 +242,12 @@ void Renderer::Impl::finish(Framebuffer& target, bool depth_only) {
     if (!depth_only) run_reflection_passes(target);
     if (depth_only) use_depth_only_models();
     depth_only_pass = depth_only;
+    map_clear_tiles = clear_tiles;
+    const ScopeExit restore{[&] {
+      depth_only_pass = false;
+      map_clear_tiles = nullptr;
+    }};
     run(target);
-    depth_only_pass = false;
     frame.stats.ms_shadows = shadow_ms;
     frame.stats.ms_reflections = reflection_ms;
     frame.stats.ms_total += shadow_ms + reflection_ms;
@@ -286,8 +291,8 @@ void Renderer::finish(RenderTexture& target) {
         "renderer: a draw samples the render texture it would be rendered into; render that "
         "texture with an earlier finish()");
   }
-  impl_->finish(target.framebuffer(), !target.options().color);
-  impl_->arena.execute([&] { target.update(); });  // on the renderer's threads
+  impl_->finish(target.framebuffer_, !target.options().color, target.framebuffer_clear_.get());
+  impl_->arena.execute([&] { target.trade_buffers(); });  // on the renderer's threads
 }
 
 struct RendererAccess {

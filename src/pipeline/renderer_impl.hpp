@@ -16,6 +16,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "core/clear_tiles.hpp"
 #include "facet/render_texture.hpp"
 #include "facet/renderer.hpp"
 #include "pipeline/frame.hpp"
@@ -83,12 +84,6 @@ struct Renderer::Impl {
   // since they may still cast shadows into it (shadow_passes.cpp).
   bool frame_shadows = false;
   std::vector<pipeline::DrawRecord> outside_view_draws;
-  // A map's tiles that hold the clear depth alone: cleared by an earlier frame's pass and not
-  // drawn since. A pass leaves them as they are where nothing is drawn again.
-  struct ClearTiles {
-    int tile_size = 0;
-    std::vector<std::uint8_t> clear;  // per tile, in the frame's order
-  };
   // Each light's shadow maps (by its index in lighting.lights): the depth targets of its passes
   // and what the lit models read of them; `maps.count` 0 when the light has none this frame.
   struct LightShadow {
@@ -102,7 +97,8 @@ struct Renderer::Impl {
   // A shadow pass's map's reach (shadow_reach.hpp): run() leaves the tiles outside it as they
   // were, since no lookup reads them. None: every tile is drawn.
   const pipeline::ShadowReach* map_reach = nullptr;
-  // A shadow pass's map's ClearTiles: run() skips clearing them again, and keeps them current.
+  // The depth-only target's ClearTiles (a shadow map's, a depth-only render texture's): run()
+  // fits it to the frame's tiles, skips clearing those it names again, and keeps it current.
   ClearTiles* map_clear_tiles = nullptr;
   // run() stores light only, never display values, whatever the target (a reflection pass,
   // whose image the mirrors read as light).
@@ -171,7 +167,7 @@ struct Renderer::Impl {
   void run(Framebuffer& target);
   // Renderer::finish: the shadow passes, then run() (writing depth alone when depth_only),
   // then the extra outputs; ends the frame.
-  void finish(Framebuffer& target, bool depth_only);
+  void finish(Framebuffer& target, bool depth_only, ClearTiles* clear_tiles = nullptr);
   // For a pass that writes depth alone: the draws whose depths are an opaque surface's (filled
   // triangles of opaque materials whose model tests and writes depth) take DepthOnlyShading,
   // as the shadow passes' casters do, and shade nothing; the others keep their models.

@@ -231,15 +231,8 @@ void Renderer::Impl::run_shadow_passes() {
       ClearTiles& clear_tiles = shadow.clear_tiles[c];
       if (!target || target->width() != size) {
         target = Framebuffer::depth_only(size, size);
-        clear_tiles.clear.clear();
+        clear_tiles.forget();
       }
-      const int tile_size = frame_tile_size(*target);
-      const int tiles_across = (size + tile_size - 1) / tile_size;
-      if (clear_tiles.tile_size != tile_size) {
-        clear_tiles.tile_size = tile_size;
-        clear_tiles.clear.clear();
-      }
-      clear_tiles.clear.resize(static_cast<std::size_t>(tiles_across) * tiles_across);
       camera = views[c];
       frame.view_projection = views[c].view_projection();
       // Each pass draws the casters its view takes in, as recording does for the camera's.

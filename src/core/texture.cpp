@@ -17,6 +17,7 @@
 #include "core/srgb_row.hpp"
 #include "core/texel.hpp"
 #include "core/texture_sampler.hpp"
+#include "core/unorm8_mip_row.hpp"
 #include "facet/error.hpp"
 
 namespace facet {
@@ -196,34 +197,17 @@ void downsample(const Texture::Level& src, const Reader& read, const LevelWriter
   });
 }
 
-// downsample() of an 8-bit level read as unorm (not sRGB) whose sides are both above 1, in
-// integers: (a + b + c + d + 2) >> 2 per channel. For every combination of four codes it is
-// exactly what the float average of their decoded values rounds to (checked exhaustively over
-// all 2^32), at a fraction of the cost. Two source texels (8 bytes) are one 64-bit word: the
-// channels r, b and g, a are summed in 16-bit lanes, which hold the largest sum (1022) with
-// room to spare.
+// downsample() of an 8-bit level read as unorm (not sRGB) whose sides are both above 1: a row
+// at a time from the two above (unorm8_mip_row.hpp: exactly the rounded float average, in
+// integers), in bands of rows.
 void downsample_unorm8(const Texture::Level& src, Texture::Level& dst) {
-  static_assert(std::endian::native == std::endian::little, "texels loaded as 64-bit words");
-  constexpr std::uint64_t kLanes = 0x00FF00FF00FF00FFull;
+  const HalveUnorm8RowKernel halve = halve_unorm8_row_kernel(chosen_simd_target());
   const std::size_t src_stride = static_cast<std::size_t>(src.width) * 4;
   for_each_band(dst.height, [&](int first_row, int end_row) {
     for (int y = first_row; y < end_row; ++y) {
-      const std::uint8_t* row0 = src.rgba8.data() + 2 * static_cast<std::size_t>(y) * src_stride;
-      const std::uint8_t* row1 = row0 + src_stride;
-      std::uint8_t* out = dst.rgba8.data() + static_cast<std::size_t>(y) * dst.width * 4;
-      for (int x = 0; x < dst.width; ++x) {
-        std::uint64_t top, bottom;
-        std::memcpy(&top, row0 + 8 * static_cast<std::size_t>(x), 8);
-        std::memcpy(&bottom, row1 + 8 * static_cast<std::size_t>(x), 8);
-        const std::uint64_t rb = (top & kLanes) + (bottom & kLanes);
-        const std::uint64_t ga = ((top >> 8) & kLanes) + ((bottom >> 8) & kLanes);
-        // The left texel's sums plus the right one's, in the low 32 bits.
-        const auto rb_sum = static_cast<std::uint32_t>(rb + (rb >> 32));
-        const auto ga_sum = static_cast<std::uint32_t>(ga + (ga >> 32));
-        const std::uint32_t texel = (((rb_sum + 0x00020002u) >> 2) & 0x00FF00FFu) |
-                                    ((((ga_sum + 0x00020002u) >> 2) & 0x00FF00FFu) << 8);
-        std::memcpy(out + 4 * static_cast<std::size_t>(x), &texel, 4);
-      }
+      const std::uint8_t* top = src.rgba8.data() + 2 * static_cast<std::size_t>(y) * src_stride;
+      halve(top, top + src_stride, dst.width,
+            dst.rgba8.data() + static_cast<std::size_t>(y) * dst.width * 4);
     }
   });
 }

@@ -192,12 +192,11 @@ TEST(RenderTexture, DepthOnlyTargetsKeepCutOutsAndBlendedDrawsOut) {
   for (const float d : alone) EXPECT_TRUE(d == 1.0f || d == opaque_depth) << d;
 }
 
-// A quad a quarter of the view wide at x in an orthographic view; none when x is NaN.
-std::vector<float> render_quad_depth(RenderTexture& target, float x, int threads) {
+// A quad a quarter of the view wide at x in an orthographic view (none when x is NaN), over
+// settings' clear color, into target; returns the target's depth image.
+std::vector<float> render_quad(RenderTexture& target, float x, RenderSettings settings) {
   const float aspect = static_cast<float>(target.width()) / target.height();
-  RenderSettings settings;
   settings.tile_size = 16;
-  settings.threads = threads;
   Renderer renderer(settings);
   renderer.begin_frame(
       Camera::orthographic({0, 0, 1}, {0, 0, 0}, {0, 1, 0}, 2.0f, aspect, 0.5f, 1.5f));
@@ -210,19 +209,39 @@ std::vector<float> render_quad_depth(RenderTexture& target, float x, int threads
   return target.depth_texture()->level(0).r32f;
 }
 
-// A depth-only target's renders skip the tiles its buffer's earlier render left cleared: each
-// image is still the one a new target gets, as the quad moves over and off the tiles.
-TEST(RenderTexture, DepthOnlyTargetsRenderedAgainHoldEachNewImage) {
+std::vector<float> render_quad_depth(RenderTexture& target, float x, int threads) {
+  RenderSettings settings;
+  settings.threads = threads;
+  return render_quad(target, x, settings);
+}
+
+// A target's renders skip the tiles its buffers' earlier render left cleared: each image is
+// still the one a new target gets, as the quad moves over and off the tiles, and as the clear
+// color and the exposure change; depth alone, and color with depth, 8-bit and float.
+TEST(RenderTexture, TargetsRenderedAgainHoldEachNewImage) {
   const float nan = std::numeric_limits<float>::quiet_NaN();
-  for (int threads : {1, 2}) {
-    RenderTexture target(kWidth, kHeight, {.depth = true, .color = false});
-    int frame = 0;
-    for (float x : {-0.8f, 0.7f, nan, -0.2f, 0.8f, nan, nan, -0.5f, -0.5f, 0.3f}) {
-      RenderTexture fresh(kWidth, kHeight, {.depth = true, .color = false});
-      const std::vector<float> expected = render_quad_depth(fresh, x, threads);
-      EXPECT_EQ(render_quad_depth(target, x, threads), expected)
-          << "frame " << frame << ", " << threads << " threads";
-      ++frame;
+  const RenderTextureOptions kinds[] = {{.depth = true, .color = false},
+                                        {.depth = true},
+                                        {.format = ColorFormat::rgba32f, .depth = true}};
+  const float xs[] = {-0.8f, 0.7f, nan, -0.2f, 0.8f, nan, nan, -0.5f, -0.5f, 0.3f, nan, nan};
+  for (const RenderTextureOptions& options : kinds) {
+    for (int threads : {1, 2}) {
+      RenderTexture target(kWidth, kHeight, options);
+      for (int frame = 0; frame < static_cast<int>(std::size(xs)); ++frame) {
+        RenderSettings settings;
+        settings.threads = threads;
+        if (frame >= 8) settings.clear_color = {0.2f, 0.4f, 0.6f, 1.0f};
+        if (frame >= 10) settings.exposure = 1.0f;
+        RenderTexture fresh(kWidth, kHeight, options);
+        const std::vector<float> expected = render_quad(fresh, xs[frame], settings);
+        const std::string where = "frame " + std::to_string(frame) + ", " +
+                                  std::to_string(threads) + " threads, color " +
+                                  std::to_string(options.color);
+        EXPECT_EQ(render_quad(target, xs[frame], settings), expected) << where;
+        if (!options.color) continue;
+        EXPECT_EQ(target.texture()->level(0).rgba8, fresh.texture()->level(0).rgba8) << where;
+        EXPECT_EQ(target.texture()->level(0).rgba32f, fresh.texture()->level(0).rgba32f) << where;
+      }
     }
   }
 }

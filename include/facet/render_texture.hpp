@@ -15,7 +15,7 @@
 
 namespace facet {
 
-struct ClearTiles;  // the renderer's record of a depth-only target's cleared tiles
+struct ClearTiles;  // the renderer's record of a target's cleared tiles
 
 struct RenderTextureOptions {
   // rgba8_srgb: an 8-bit sRGB texture, as a framebuffer's PNG; rgba32f: linear float color.
@@ -54,9 +54,10 @@ class RenderTexture {
   // What Renderer::finish renders into (its extra outputs: none). update() then moves the image
   // into the textures by trading buffers, so afterwards the framebuffer holds an earlier image,
   // for the next render to overwrite: what was rendered is read through texture() and
-  // depth_texture() (Texture::level(0), rows top first as here). A depth-only target's renders
-  // leave alone the tiles that still hold the clear depth from an earlier render of the same
-  // buffer; the non-const framebuffer() forgets which those are, since you may write it.
+  // depth_texture() (Texture::level(0), rows top first as here). Renders leave alone the tiles
+  // where they draw nothing that still hold the same clear values from an earlier render into
+  // the same buffers; the non-const framebuffer() forgets which those are, since you may write
+  // it.
   Framebuffer& framebuffer();
   const Framebuffer& framebuffer() const { return framebuffer_; }
   // The color image, as a texture for materials (TextureMap) and environments; null for a
@@ -81,8 +82,8 @@ class RenderTexture {
   RenderTextureOptions options_;
   Framebuffer framebuffer_;
   std::shared_ptr<Texture> color_texture_, depth_texture_;  // rewritten by update()
-  // A depth-only target's cleared tiles: the framebuffer's buffer's, and the depth texture's,
-  // traded with the buffers. Null for targets with color.
+  // Which tiles hold the clear values alone: the framebuffer's buffers', and the textures',
+  // traded with the buffers.
   std::unique_ptr<ClearTiles> framebuffer_clear_, texture_clear_;
 };
 

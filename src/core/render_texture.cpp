@@ -26,10 +26,8 @@ RenderTexture::RenderTexture(int width, int height, const RenderTextureOptions& 
     depth_texture_ = Texture::render_target(width, height, Texture::Format::r32f, false, false,
                                             "render texture depth");
   }
-  if (!options.color) {
-    framebuffer_clear_ = std::make_unique<ClearTiles>();
-    texture_clear_ = std::make_unique<ClearTiles>();
-  }
+  framebuffer_clear_ = std::make_unique<ClearTiles>();
+  texture_clear_ = std::make_unique<ClearTiles>();
   trade_buffers();
 }
 
@@ -52,6 +50,7 @@ void RenderTexture::update() {
 }
 
 void RenderTexture::trade_buffers() {
+  std::swap(framebuffer_clear_, texture_clear_);
   // The framebuffer's image and the textures' base levels trade buffers: no copy, and the
   // framebuffer keeps buffers of the right size for the next render.
   if (color_texture_) {
@@ -65,7 +64,6 @@ void RenderTexture::trade_buffers() {
   }
   if (!depth_texture_) return;
   std::swap(depth_texture_->base_level().r32f, framebuffer_.depth());
-  std::swap(framebuffer_clear_, texture_clear_);
   depth_texture_->refresh_from_base_level();
 }
 

@@ -140,7 +140,8 @@ void Renderer::Impl::run(Framebuffer& target) {
   frame.stats = {};
   prepare_tiles(target);
   if (map_clear_tiles) {
-    map_clear_tiles->fit(frame.tile_size, static_cast<std::size_t>(frame.tiles_x) * frame.tiles_y);
+    map_clear_tiles->fit(frame.tile_size, static_cast<std::size_t>(frame.tiles_x) * frame.tiles_y,
+                         settings.clear_color, settings.exposure);
   }
   // Per-draw pointers into frame-wide data, set now that the draw list no longer grows.
   frame.lights.clear();

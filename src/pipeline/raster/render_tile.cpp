@@ -69,12 +69,14 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
     // Lazy clear: nothing drawn here, write the clear values directly.
     const std::uint64_t resolve_start = tick_count();
     if (map_clear_tiles && map_clear_tiles->clear[index]) {
-      // A shadow map's tile that holds the clear depth already.
-    } else if (background.depth_only) {
-      pipeline::resolve_depth_tile(tile, true, target);
-      if (map_clear_tiles) map_clear_tiles->clear[index] = 1;
+      // A tile that holds the clear values already.
     } else {
-      pipeline::resolve_cleared_tile(tile, settings.clear_color, resolve.scale, target);
+      if (background.depth_only) {
+        pipeline::resolve_depth_tile(tile, true, target);
+      } else {
+        pipeline::resolve_cleared_tile(tile, settings.clear_color, resolve.scale, target);
+      }
+      if (map_clear_tiles) map_clear_tiles->clear[index] = 1;
     }
     tile_resolve_ticks[index] = ticks_since(resolve_start);
     return;
@@ -145,9 +147,9 @@ void Renderer::Impl::render_tile(int index, int worker, Framebuffer& target) {
   pipeline::flush_waiting(tile);
   if (background_pending) pipeline::fill_background(tile, background);
   const std::uint64_t resolve_start = tick_count();
+  if (map_clear_tiles) map_clear_tiles->clear[index] = 0;
   if (background.depth_only) {
     pipeline::resolve_depth_tile(tile, false, target);
-    if (map_clear_tiles) map_clear_tiles->clear[index] = 0;
   } else if (debug == DebugView::none) {
     pipeline::resolve_tile(tile, resolve, target);
   } else {

@@ -1,13 +1,17 @@
 // Tiles where nothing is drawn write the clear color and depth only where the framebuffer does not
 // hold them already, or into a large framebuffer with streaming stores
-// (pipeline/output/framebuffer_rows.hpp): a framebuffer drawn into again, whatever it held, must
+// (pipeline/output/framebuffer_rows.hpp), or not at all where a framebuffer that keeps its
+// cleared tiles knows they hold them: a framebuffer drawn into again, whatever it held, must
 // end exactly as a new one does, and the rows written either way hold the same bytes.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <iterator>
+#include <limits>
 #include <numeric>
+#include <string>
 #include <vector>
 
 #include "facet/renderer.hpp"
@@ -66,6 +70,84 @@ TEST(ClearedRows, ALargeFramebufferStreamedIntoAgainEndsAsANewOne) {
   const int width = 1503, height = 1101;
   ASSERT_TRUE(pipeline::streams_cleared_rows(static_cast<std::size_t>(width) * height * 4));
   expect_reused_ends_as_new(width, height);
+}
+
+// A quad at x (none when x is NaN) over `clear` at `exposure`, with `samples` a pixel, into
+// `target` in 16-pixel tiles.
+void render_quad_at(float x, const glm::vec4& clear, float exposure, int samples,
+                    Framebuffer& target) {
+  RenderSettings settings;
+  settings.clear_color = clear;
+  settings.exposure = exposure;
+  settings.msaa = samples;
+  settings.tile_size = 16;
+  settings.threads = 2;
+  Renderer renderer(settings);
+  Material material;
+  material.shading = ShadingModel::unlit;
+  material.base_color = {1.0f, 0.5f, 0.0f, 1.0f};
+  const Mesh quad = soup_quad(x - 0.4f, -0.3f, x + 0.4f, 0.5f, -5.0f);
+  renderer.begin_frame(test_camera(target.width(), target.height()), Lighting{});
+  if (!std::isnan(x)) renderer.draw(quad, material);
+  renderer.finish(target);
+}
+
+void expect_same_images(const Framebuffer& a, const Framebuffer& b, const std::string& where) {
+  EXPECT_EQ(a.rgba8(), b.rgba8()) << where;
+  EXPECT_EQ(a.rgba32f(), b.rgba32f()) << where;
+  EXPECT_EQ(a.depth(), b.depth()) << where;
+}
+
+// A framebuffer that keeps its cleared tiles leaves them alone where nothing is drawn again:
+// each frame still ends as in a new framebuffer, as the quad moves over and off the tiles and
+// the clear color and the exposure change; 8-bit and float, one sample and four.
+TEST(ClearedRows, AFramebufferKeepingItsClearedTilesEndsAsANewOne) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float xs[] = {-1.0f, 1.2f, nan, 0.0f, 1.5f, nan, nan, -0.6f, -0.6f, 0.4f, nan, nan};
+  for (ColorFormat format : {ColorFormat::rgba8_srgb, ColorFormat::rgba32f}) {
+    for (int samples : {1, 4}) {
+      Framebuffer kept(96, 64, format);
+      kept.keep_cleared_tiles(true);
+      for (int frame = 0; frame < static_cast<int>(std::size(xs)); ++frame) {
+        const glm::vec4 clear = frame < 8 ? glm::vec4(0.1f, 0.2f, 0.6f, 1.0f) : glm::vec4(0.5f);
+        const float exposure = frame < 10 ? 0.0f : 1.0f;
+        Framebuffer fresh(96, 64, format);
+        render_quad_at(xs[frame], clear, exposure, samples, fresh);
+        render_quad_at(xs[frame], clear, exposure, samples, kept);
+        ASSERT_TRUE(kept.keeps_cleared_tiles());
+        expect_same_images(kept, fresh,
+                           "frame " + std::to_string(frame) + ", " + std::to_string(samples) +
+                               " samples, format " + std::to_string(static_cast<int>(format)));
+      }
+    }
+  }
+}
+
+// What is written through its accessors after a render, or given it by assignment, is cleared
+// again by the next render wherever it draws nothing: either forgets which tiles were cleared.
+TEST(ClearedRows, AFramebufferKeepingItsClearedTilesForgetsThemWhenWritten) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const glm::vec4 clear(0.1f, 0.2f, 0.6f, 1.0f);
+  Framebuffer fresh(96, 64);
+  render_quad_at(nan, clear, 0.0f, 1, fresh);
+  Framebuffer kept(96, 64);
+  kept.keep_cleared_tiles(true);
+  render_quad_at(nan, clear, 0.0f, 1, kept);  // every tile known to be cleared
+  std::fill(kept.rgba8().begin(), kept.rgba8().end(), std::uint8_t{0x5A});
+  render_quad_at(nan, clear, 0.0f, 1, kept);
+  expect_same_images(kept, fresh, "color written");
+  std::fill(kept.depth().begin(), kept.depth().end(), 0.25f);
+  render_quad_at(nan, clear, 0.0f, 1, kept);
+  expect_same_images(kept, fresh, "depth written");
+  Framebuffer other(96, 64);
+  std::fill(other.rgba8().begin(), other.rgba8().end(), std::uint8_t{0x5A});
+  other.keep_cleared_tiles(true);
+  kept = other;
+  ASSERT_TRUE(kept.keeps_cleared_tiles());
+  render_quad_at(nan, clear, 0.0f, 1, kept);
+  expect_same_images(kept, fresh, "assigned");
+  kept.keep_cleared_tiles(false);
+  EXPECT_FALSE(kept.keeps_cleared_tiles());
 }
 
 // Rows of 4-byte values at every alignment and length up to a few cache lines, written streamed

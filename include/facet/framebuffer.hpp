@@ -6,9 +6,12 @@
 #include <cstddef>
 #include <cstdint>
 #include <glm/vec4.hpp>
+#include <memory>
 #include <vector>
 
 namespace facet {
+
+struct ClearTiles;  // the renderer's record of a target's cleared tiles
 
 enum class ColorFormat {
   rgba8_srgb,  // 8 bits per channel, sRGB-encoded color, linear alpha
@@ -80,15 +83,33 @@ class Framebuffer {
 
   // Row-major, top row first, 4 values per pixel. Only the one matching format() is non-empty
   // (neither, for depth_only()).
-  std::vector<std::uint8_t>& rgba8() { return rgba8_; }
+  std::vector<std::uint8_t>& rgba8() {
+    forget_cleared_tiles();
+    return rgba8_;
+  }
   const std::vector<std::uint8_t>& rgba8() const { return rgba8_; }
-  std::vector<float>& rgba32f() { return rgba32f_; }
+  std::vector<float>& rgba32f() {
+    forget_cleared_tiles();
+    return rgba32f_;
+  }
   const std::vector<float>& rgba32f() const { return rgba32f_; }
   // Window depth per pixel, row-major, top row first; empty for DepthImage::none. 0 is the
   // camera's near plane and 1 its far plane (OpenGL's glDepthRange(0, 1)), not linear in
   // distance: Camera::view_distance turns it into scene units. 1 where nothing was drawn.
-  std::vector<float>& depth() { return depth_; }
+  std::vector<float>& depth() {
+    forget_cleared_tiles();
+    return depth_;
+  }
   const std::vector<float>& depth() const { return depth_; }
+
+  // For a framebuffer rendered into frame after frame that nothing else writes (a viewer's, a
+  // benchmark's): with keep true, each frame leaves alone the tiles that an earlier frame
+  // cleared and that get nothing drawn again, instead of clearing them again. The non-const
+  // rgba8(), rgba32f() and depth() forget which tiles those are, since you may write through
+  // them: write the images only through such a call made after the last render, never through
+  // a reference or pointer kept from before it. Off by default; a copy knows no tiles.
+  void keep_cleared_tiles(bool keep);
+  bool keeps_cleared_tiles() const { return cleared_tiles_.tiles != nullptr; }
   bool has_depth() const { return !depth_.empty(); }
 
   // The extra outputs asked for when the framebuffer was made; each image below is empty
@@ -117,6 +138,23 @@ class Framebuffer {
   float depth_at(int x, int y) const;
 
  private:
+  friend class Renderer;  // renders with the cleared tiles taken out, then hands them back
+  // The record of keep_cleared_tiles(), or null; a copy gets an empty record.
+  struct KeptTiles {
+    std::unique_ptr<ClearTiles> tiles;
+    KeptTiles();
+    KeptTiles(const KeptTiles& other);
+    KeptTiles(KeptTiles&& other) noexcept;
+    KeptTiles& operator=(const KeptTiles& other);
+    KeptTiles& operator=(KeptTiles&& other) noexcept;
+    ~KeptTiles();
+  };
+  void forget_cleared_tiles() {
+    if (cleared_tiles_.tiles) forget_kept_tiles();
+  }
+  void forget_kept_tiles();
+
+  KeptTiles cleared_tiles_;
   int width_;
   int height_;
   ColorFormat format_;

@@ -15,8 +15,6 @@
 
 namespace facet {
 
-struct ClearTiles;  // the renderer's record of a target's cleared tiles
-
 struct RenderTextureOptions {
   // rgba8_srgb: an 8-bit sRGB texture, as a framebuffer's PNG; rgba32f: linear float color.
   ColorFormat format = ColorFormat::rgba8_srgb;

@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "core/clear_tiles.hpp"
 #include "core/color.hpp"
 #include "facet/error.hpp"
 
@@ -39,6 +40,24 @@ Framebuffer::Framebuffer(int width, int height, ColorFormat format, ColorImage c
   if (extra.barycentrics) barycentrics_.assign(pixels * 3, 0.0f);
   if (extra.albedo) albedo_.assign(pixels * 4, 0.0f);
 }
+
+Framebuffer::KeptTiles::KeptTiles() = default;
+Framebuffer::KeptTiles::KeptTiles(const KeptTiles& other)
+    : tiles(other.tiles ? std::make_unique<ClearTiles>() : nullptr) {}
+Framebuffer::KeptTiles::KeptTiles(KeptTiles&& other) noexcept = default;
+Framebuffer::KeptTiles& Framebuffer::KeptTiles::operator=(const KeptTiles& other) {
+  tiles = other.tiles ? std::make_unique<ClearTiles>() : nullptr;
+  return *this;
+}
+Framebuffer::KeptTiles& Framebuffer::KeptTiles::operator=(KeptTiles&& other) noexcept = default;
+Framebuffer::KeptTiles::~KeptTiles() = default;
+
+void Framebuffer::keep_cleared_tiles(bool keep) {
+  if (keep == keeps_cleared_tiles()) return;
+  cleared_tiles_.tiles = keep ? std::make_unique<ClearTiles>() : nullptr;
+}
+
+void Framebuffer::forget_kept_tiles() { cleared_tiles_.tiles->forget(); }
 
 std::size_t Framebuffer::checked_index(int x, int y, const char* what) const {
   if (x < 0 || y < 0 || x >= width_ || y >= height_) {

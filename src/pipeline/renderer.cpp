@@ -231,7 +231,11 @@ void Renderer::finish(Framebuffer& target) {
         "renderer: finish into a depth-only framebuffer; render depth alone into a RenderTexture "
         "whose options keep no color");
   }
-  impl_->finish(target, false);
+  // The kept record is out of the framebuffer while the frame writes it, which it does through
+  // the non-const accessors that would forget the record.
+  std::unique_ptr<ClearTiles> kept = std::move(target.cleared_tiles_.tiles);
+  const ScopeExit hand_back{[&] { target.cleared_tiles_.tiles = std::move(kept); }};
+  impl_->finish(target, false, kept.get());
 }
 
 void Renderer::Impl::finish(Framebuffer& target, bool depth_only, ClearTiles* clear_tiles) {

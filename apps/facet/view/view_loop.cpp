@@ -52,6 +52,7 @@ ViewLoop::ViewLoop(ViewWindow& window, ViewSetup setup)
       frame_(settings_.size.width, settings_.size.height, ColorFormat::rgba8_srgb,
              DepthImage::none),
       gl_frame_(frame_) {
+  frame_.keep_cleared_tiles(true);  // rendered frame after frame
   for (const Material& m : setup_.scene->materials) own_shading_.push_back(m.shading);
   apply_shading();
   make_renderer();
@@ -123,6 +124,7 @@ void ViewLoop::apply(const SettingUpdate& update) {
       window_.set_render_size(settings_.size.width, settings_.size.height);
       frame_ = Framebuffer(settings_.size.width, settings_.size.height, ColorFormat::rgba8_srgb,
                            DepthImage::none);  // shown and saved as color only
+      frame_.keep_cleared_tiles(true);
       gl_frame_ = frame_;
       break;
     case SettingChange::backend:

@@ -101,6 +101,7 @@ class Framebuffer {
     return depth_;
   }
   const std::vector<float>& depth() const { return depth_; }
+  bool has_depth() const { return !depth_.empty(); }
 
   // For a framebuffer rendered into frame after frame that nothing else writes (a viewer's, a
   // benchmark's): with keep true, each frame leaves alone the tiles that an earlier frame
@@ -110,7 +111,6 @@ class Framebuffer {
   // a reference or pointer kept from before it. Off by default; a copy knows no tiles.
   void keep_cleared_tiles(bool keep);
   bool keeps_cleared_tiles() const { return cleared_tiles_.tiles != nullptr; }
-  bool has_depth() const { return !depth_.empty(); }
 
   // The extra outputs asked for when the framebuffer was made; each image below is empty
   // unless asked for. Row-major, top row first, the count of values per pixel given.

@@ -97,8 +97,9 @@ struct Renderer::Impl {
   // A shadow pass's map's reach (shadow_reach.hpp): run() leaves the tiles outside it as they
   // were, since no lookup reads them. None: every tile is drawn.
   const pipeline::ShadowReach* map_reach = nullptr;
-  // The depth-only target's ClearTiles (a shadow map's, a depth-only render texture's): run()
-  // fits it to the frame's tiles, skips clearing those it names again, and keeps it current.
+  // The target's ClearTiles (a shadow map's, a render texture's, a framebuffer's that keeps
+  // them): run() fits it to the frame's tiles, skips clearing those it names again, and keeps
+  // it current. None: every empty tile is cleared.
   ClearTiles* map_clear_tiles = nullptr;
   // run() stores light only, never display values, whatever the target (a reflection pass,
   // whose image the mirrors read as light).

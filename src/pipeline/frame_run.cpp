@@ -140,8 +140,13 @@ void Renderer::Impl::run(Framebuffer& target) {
   frame.stats = {};
   prepare_tiles(target);
   if (map_clear_tiles) {
-    map_clear_tiles->fit(frame.tile_size, static_cast<std::size_t>(frame.tiles_x) * frame.tiles_y,
-                         settings.clear_color, settings.exposure);
+    // Depth alone is cleared to the far plane whatever the clear color and exposure.
+    const std::size_t tiles = static_cast<std::size_t>(frame.tiles_x) * frame.tiles_y;
+    if (depth_only_pass) {
+      map_clear_tiles->fit(frame.tile_size, tiles, glm::vec4(0.0f), 0.0f);
+    } else {
+      map_clear_tiles->fit(frame.tile_size, tiles, settings.clear_color, settings.exposure);
+    }
   }
   // Per-draw pointers into frame-wide data, set now that the draw list no longer grows.
   frame.lights.clear();
